@@ -1,0 +1,135 @@
+"""Reading YAML input with one-line errors that name the file, the key and what was expected.
+
+:func:`load_yaml` reads a file with ``yaml.safe_load``; :class:`Node` wraps a
+mapping (or a list) together with its file and key path and offers typed
+getters, so every loader reports bad input the same way (:class:`InputError`).
+"""
+
+from pathlib import Path
+
+import numpy as np
+import yaml
+
+from .errors import InputError
+from .units import to_si
+
+
+def load_yaml(path):
+    """Parse ``path`` with ``yaml.safe_load``; return a :class:`Node` over its top-level mapping."""
+    path = Path(path)
+    try:
+        text = path.read_text()
+    except OSError as exc:
+        raise InputError(path, "(file)", f"a readable YAML file ({exc.strerror})") from None
+    try:
+        data = yaml.safe_load(text)
+    except yaml.YAMLError as exc:
+        mark = getattr(exc, "problem_mark", None)
+        where = f"line {mark.line + 1}" if mark else "(file)"
+        raise InputError(path, where, f"valid YAML ({getattr(exc, 'problem', exc)})") from None
+    node = Node(data, path, "")
+    if not isinstance(data, dict):
+        node.fail("a YAML mapping at the top level")
+    return node
+
+
+class Node:
+    """A value read from YAML with its origin (file and dotted key path)."""
+
+    def __init__(self, value, source, key):
+        self.value, self.source, self.key = value, source, key
+
+    # -- navigation ---------------------------------------------------------
+    def fail(self, expected, key=None):
+        """Raise :class:`InputError` for this node (or for ``key`` below it)."""
+        raise InputError(self.source, self._path(key) if key is not None else (self.key or "(top)"), expected)
+
+    def _path(self, key):
+        return f"{self.key}.{key}" if self.key else str(key)
+
+    def mapping(self):
+        """This value as a dict, or an error."""
+        if not isinstance(self.value, dict):
+            self.fail(f"a mapping, got {type(self.value).__name__}")
+        return self.value
+
+    def has(self, key):
+        return key in self.mapping()
+
+    def get(self, key, default=None):
+        """Child node ``key``; if absent return ``default`` wrapped (``None`` allowed)."""
+        m = self.mapping()
+        return Node(m.get(key, default), self.source, self._path(key))
+
+    def __getitem__(self, key):
+        m = self.mapping()
+        if key not in m:
+            self.fail("a required key that is missing", key)
+        return Node(m[key], self.source, self._path(key))
+
+    def items(self):
+        """(key, child node) pairs of a mapping."""
+        return [(k, Node(v, self.source, self._path(k))) for k, v in self.mapping().items()]
+
+    def elements(self):
+        """Child nodes of a list."""
+        if not isinstance(self.value, list):
+            self.fail(f"a list, got {type(self.value).__name__}")
+        return [Node(v, self.source, f"{self.key}[{i}]") for i, v in enumerate(self.value)]
+
+    def check_keys(self, required=(), optional=()):
+        """Fail on a missing required key or on any key not in ``required`` + ``optional``."""
+        m = self.mapping()
+        for k in required:
+            if k not in m:
+                self.fail("a required key that is missing", k)
+        allowed = set(required) | set(optional)
+        for k in m:
+            if k not in allowed:
+                self.fail(f"no such key (allowed: {', '.join(sorted(allowed))})", k)
+        return self
+
+    # -- typed values -------------------------------------------------------
+    @property
+    def missing(self):
+        return self.value is None
+
+    def number(self, positive=False, nonnegative=False):
+        """A float in SI (``"<number> <unit>"`` strings converted)."""
+        try:
+            x = to_si(self.value)
+        except ValueError as exc:
+            self.fail(str(exc))
+        if not np.isfinite(x):
+            self.fail(f"a finite number, got {self.value!r}")
+        if positive and not x > 0:
+            self.fail(f"a positive number, got {self.value!r}")
+        if nonnegative and x < 0:
+            self.fail(f"a number >= 0, got {self.value!r}")
+        return x
+
+    def vector(self, size=3):
+        """A float array of length ``size`` (each entry may carry a unit)."""
+        if not isinstance(self.value, list) or len(self.value) != size:
+            self.fail(f"a list of {size} numbers, got {self.value!r}")
+        return np.array([e.number() for e in self.elements()])
+
+    def matrix(self, shape):
+        """A float array of ``shape`` (rows of numbers)."""
+        rows = self.elements()
+        if len(rows) != shape[0]:
+            self.fail(f"a {shape[0]}x{shape[1]} matrix (list of {shape[0]} rows)")
+        return np.array([r.vector(shape[1]) for r in rows])
+
+    def string(self, choices=None):
+        """A string, optionally one of ``choices``."""
+        if not isinstance(self.value, str):
+            self.fail(f"a string, got {self.value!r}")
+        if choices is not None and self.value not in choices:
+            self.fail(f"one of {', '.join(choices)}, got {self.value!r}")
+        return self.value
+
+    def boolean(self):
+        if not isinstance(self.value, bool):
+            self.fail(f"true or false, got {self.value!r}")
+        return self.value

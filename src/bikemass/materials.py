@@ -1,0 +1,39 @@
+"""Materials: Young's modulus E (Pa), Poisson's ratio nu, density (kg/m^3)."""
+
+from dataclasses import dataclass
+
+from .config import load_yaml
+from .paths import frames_dir
+
+
+@dataclass(frozen=True)
+class Material:
+    """An isotropic material (SI)."""
+
+    key: str
+    name: str
+    E: float
+    nu: float
+    density: float
+
+    @property
+    def G(self):
+        """Shear modulus E / (2 (1 + nu)) (Pa)."""
+        return self.E / (2 * (1 + self.nu))
+
+
+def load_materials(path=None):
+    """``{key or alias: Material}`` from a materials YAML file (default ``frames/materials.yaml``)."""
+    root = load_yaml(path or frames_dir() / "materials.yaml")
+    table = {}
+    for key, node in root.items():
+        node.check_keys(required=("E", "nu", "density"), optional=("name", "aliases"))
+        nu = node["nu"].number(positive=True)
+        if nu >= 0.5:
+            node.fail("a Poisson's ratio below 0.5", "nu")
+        mat = Material(key, node.get("name", key).string(), node["E"].number(positive=True),
+                       nu, node["density"].number(positive=True))
+        table[key] = mat
+        for alias in node.get("aliases", []).elements():
+            table[alias.string()] = mat
+    return table

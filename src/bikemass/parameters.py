@@ -1,0 +1,92 @@
+"""The Meijaard et al. (2007) benchmark parameter set (SI, radians, benchmark frame).
+
+Names follow the paper: ``w c lam g rR mR IRxx IRyy xB zB mB IBxx IByy IBzz
+IBxz xH zH mH IHxx IHyy IHzz IHxz rF mF IFxx IFyy``.  B is the rear frame
+(with rider), H the front frame (fork and handlebar), R and F the wheels.
+"""
+
+from dataclasses import asdict, dataclass, fields, replace
+
+import numpy as np
+
+DESCRIPTIONS = {
+    "w": "wheelbase [m]", "c": "trail [m]", "lam": "steer-axis tilt [rad]",
+    "g": "gravity [m/s^2]", "rR": "rear wheel radius [m]", "mR": "rear wheel mass [kg]",
+    "IRxx": "rear wheel Ixx [kg m^2]", "IRyy": "rear wheel Iyy [kg m^2]",
+    "xB": "rear frame CoM x [m]", "zB": "rear frame CoM z [m]", "mB": "rear frame mass [kg]",
+    "IBxx": "rear frame Ixx [kg m^2]", "IByy": "rear frame Iyy [kg m^2]",
+    "IBzz": "rear frame Izz [kg m^2]", "IBxz": "rear frame Ixz [kg m^2]",
+    "xH": "front frame CoM x [m]", "zH": "front frame CoM z [m]", "mH": "front frame mass [kg]",
+    "IHxx": "front frame Ixx [kg m^2]", "IHyy": "front frame Iyy [kg m^2]",
+    "IHzz": "front frame Izz [kg m^2]", "IHxz": "front frame Ixz [kg m^2]",
+    "rF": "front wheel radius [m]", "mF": "front wheel mass [kg]",
+    "IFxx": "front wheel Ixx [kg m^2]", "IFyy": "front wheel Iyy [kg m^2]",
+}
+
+
+@dataclass(frozen=True)
+class BenchmarkParameters:
+    """One benchmark parameter set; every field SI (see :data:`DESCRIPTIONS`)."""
+
+    w: float
+    c: float
+    lam: float
+    g: float
+    rR: float
+    mR: float
+    IRxx: float
+    IRyy: float
+    xB: float
+    zB: float
+    mB: float
+    IBxx: float
+    IByy: float
+    IBzz: float
+    IBxz: float
+    xH: float
+    zH: float
+    mH: float
+    IHxx: float
+    IHyy: float
+    IHzz: float
+    IHxz: float
+    rF: float
+    mF: float
+    IFxx: float
+    IFyy: float
+
+    def to_dict(self):
+        """Plain ``{name: float}`` in the Meijaard order."""
+        return {k: float(v) for k, v in asdict(self).items()}
+
+    def replace(self, **changes):
+        """A copy with some parameters changed."""
+        return replace(self, **changes)
+
+    def inertia(self, body):
+        """3x3 inertia tensor of ``body`` in 'RBHF' (wheels: Izz = Ixx by symmetry)."""
+        d = self.to_dict()
+        if body in "RF":
+            return np.diag([d[f"I{body}xx"], d[f"I{body}yy"], d[f"I{body}xx"]])
+        xx, yy, zz, xz = (d[f"I{body}{k}"] for k in ("xx", "yy", "zz", "xz"))
+        return np.array([[xx, 0.0, xz], [0.0, yy, 0.0], [xz, 0.0, zz]])
+
+
+NAMES = tuple(f.name for f in fields(BenchmarkParameters))
+"""The 26 parameter names in the Meijaard order."""
+
+
+def from_node(node):
+    """Build :class:`BenchmarkParameters` from a config :class:`~bikemass.config.Node` with the 26 names."""
+    node.check_keys(required=NAMES, optional=("name", "description", "source"))
+    values = {}
+    for k in NAMES:
+        positive = k not in ("lam", "xB", "zB", "xH", "zH", "IBxz", "IHxz", "c")
+        values[k] = node[k].number(positive=positive)
+    return BenchmarkParameters(**values)
+
+
+def is_parameter_file(node):
+    """True if a YAML/JSON mapping looks like a benchmark parameter set (has all 26 names)."""
+    m = node.value
+    return isinstance(m, dict) and all(k in m for k in NAMES)

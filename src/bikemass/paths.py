@@ -1,0 +1,45 @@
+"""Where the shipped data lives and how names resolve to files.
+
+``bodies/`` (anthropometry, poses) and ``frames/`` (bicycles, materials) sit at
+the repository root; set ``BIKEMASS_DATA`` to a folder holding both to use
+another copy.  A name that is an existing file path is used as it is.
+"""
+
+import os
+from pathlib import Path
+
+from .errors import InputError
+
+
+def data_root() -> Path:
+    """Folder holding ``bodies/`` and ``frames/``."""
+    env = os.environ.get("BIKEMASS_DATA")
+    return Path(env) if env else Path(__file__).resolve().parents[2]
+
+
+def bodies_dir() -> Path:
+    return data_root() / "bodies"
+
+
+def frames_dir() -> Path:
+    return data_root() / "frames"
+
+
+def resolve(name, folder: Path, what: str) -> Path:
+    """Path for ``name``: an existing file, else ``folder/<name>.yaml`` (``-`` and ``_`` alike)."""
+    p = Path(name)
+    if p.suffix in (".yaml", ".yml", ".json") or p.exists():
+        if not p.is_file():
+            raise InputError(p, "(file)", f"an existing {what} file")
+        return p
+    for stem in (name, name.replace("-", "_"), name.replace("_", "-")):
+        candidate = folder / f"{stem}.yaml"
+        if candidate.is_file():
+            return candidate
+    known = ", ".join(available(folder))
+    raise InputError(name, "(name)", f"a {what} file or one of: {known}")
+
+
+def available(folder: Path):
+    """Names of the shipped YAML files in ``folder`` (``_`` shown as ``-``)."""
+    return sorted(p.stem.replace("_", "-") for p in folder.glob("*.yaml"))
