@@ -1,0 +1,73 @@
+"""The rider: an anthropometry (``bodies/*.yaml``) placed in a pose (``bodies/poses/*.yaml``).
+
+``load_rider("relaxed")`` builds the Williams (2015) rider of Table 3-3 (errata
+applied; ``as_printed=True`` uses the printed Table 3-3); ``load_rider("relaxed-thesis")``
+is the published Table 3-4 rider as one lumped body.  See :mod:`bikemass.rider.pose`
+for the file format.
+"""
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..config import load_yaml
+from ..parts import METHODS, OVERLAPS, body_properties
+from ..paths import available, bodies_dir, resolve
+from .pose import read_pose
+
+THESIS_POSES = ("no-hands", "relaxed", "on-hoods", "aerobars", "aero-tuck")
+"""The five poses of Williams (2015), Table 3-3, in the thesis's order."""
+
+PUBLISHED_SUFFIX = "-thesis"
+"""``<pose>-thesis`` is the published Table 3-4 rider of ``<pose>`` as a lumped body."""
+
+
+def poses_dir() -> Path:
+    return bodies_dir() / "poses"
+
+
+def shipped_poses() -> list[str]:
+    """Shipped pose names: the five thesis poses in thesis order, then any others (no ``-thesis``)."""
+    others = [n for n in available(poses_dir())
+              if n not in THESIS_POSES and not n.endswith(PUBLISHED_SUFFIX)]
+    return [n for n in THESIS_POSES if (poses_dir() / f"{n.replace('-', '_')}.yaml").is_file()] + others
+
+
+@dataclass(frozen=True, eq=False)
+class Rider:
+    """A posed rider: ``pose`` as asked for, display ``name``, and its ``parts`` (tuple of Part)."""
+
+    pose: str
+    name: str
+    parts: tuple
+
+    def properties(self, method="mesh", overlap="sum"):
+        """Total :class:`~bikemass.inertia.MassProperties` (trimesh ``mesh`` or ``exact``;
+        overlapping parts ``sum``-med as in the thesis or counted once with ``union``)."""
+        _check(method, METHODS, "method")
+        _check(overlap, OVERLAPS, "overlap")
+        return body_properties(self.parts, method, overlap)
+
+    def breakdown(self, method="mesh"):
+        """[(part name, frame body, MassProperties)] of every part (in the benchmark frame)."""
+        _check(method, METHODS, "method")
+        return [(p.name, p.body, p.mass_properties(method)) for p in self.parts]
+
+    def to_dict(self, method="mesh", overlap="sum"):
+        """``{"pose": str, "mass": kg, "com": [x, y, z], "inertia": [[3x3]]}``."""
+        return {"pose": self.pose, **self.properties(method, overlap).to_dict()}
+
+
+def _check(value, choices, what):
+    if value not in choices:
+        raise ValueError(f"{what} must be one of {', '.join(choices)}, got {value!r}")
+
+
+def load_rider(pose: str, as_printed: bool = False) -> Rider:
+    """The rider in ``pose``: a shipped pose name or a pose YAML file.
+
+    ``as_printed=True`` replaces every corrected value by its ``printed:`` value.
+    Bad input raises :class:`~bikemass.errors.InputError`.
+    """
+    node = load_yaml(resolve(pose, poses_dir(), "pose"))
+    name, parts = read_pose(node, as_printed)
+    return Rider(str(pose), name, parts)

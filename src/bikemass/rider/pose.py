@@ -1,0 +1,119 @@
+"""A pose: where each segment of an anthropometry sits, read from ``bodies/poses/<name>.yaml``.
+
+Pose file (metres, degrees; Williams 2015, Table 3-3 conventions)::
+
+    name: Relaxed
+    body: thesis_rider            # an anthropometry in bodies/
+    segments:
+      head:      {location: [0.402, 0.0, -1.895], angle: 15.362}
+      upper_arm: {location: [0.322, 0.238, -1.609], angle: -20.251, mirror: true}
+
+* ``location``: centre of the segment's top plane in the benchmark frame;
+* ``angle``: clockwise about y seen from +y with x to the right; the segment's
+  axis is ``(-sin a, 0, cos a)`` (0 = hanging straight down);
+* ``mirror: true``: a pair (``pair: true`` in the anthropometry) at +y and -y;
+* ``frame: front``: the segment moves with the front frame (default ``rear``);
+* ``printed: {location: [...], angle: ...}``: the value as published, used instead
+  with ``as_printed=True`` (records an erratum machine-readably).
+
+A segment with ``mass``, ``com`` and ``inertia`` (kg, m, kg m^2 about the com,
+tensor products) is a lumped body and needs no anthropometry.
+"""
+
+import numpy as np
+
+from ..inertia import MassProperties
+from ..parts import Part
+from ..placement import Placement
+from ..solids import Lumped
+from .anthropometry import find_anthropometry, load_anthropometry
+
+FRAMES = {"rear": "rear_frame", "front": "front_frame"}
+"""Pose ``frame`` value -> :attr:`Part.body`."""
+
+PLACED_KEYS = ("location", "angle")
+LUMPED_KEYS = ("mass", "com", "inertia")
+MIRROR_Y = np.diag([1.0, -1.0, 1.0])
+
+
+def read_pose(node, as_printed=False):
+    """(name, parts) of the pose in the YAML ``node`` (see the module docstring)."""
+    node.check_keys(required=("segments",), optional=("name", "body", "source"))
+    segments = node["segments"]
+    if not segments.mapping():
+        segments.fail("at least one segment")
+    placed = [(k, s) for k, s in segments.items() if not (isinstance(s.value, dict) and "mass" in s.value)]
+    body = None
+    if placed:
+        if not node.has("body"):
+            placed[0][1].fail("a lumped body with mass, com, inertia (placed segments need a "
+                              "top-level body: naming their anthropometry)")
+        body = load_anthropometry(find_anthropometry(node["body"]))
+        _check_all_placed(segments, body, [k for k, _ in placed])
+    parts = []
+    for key, seg in segments.items():
+        if body is not None and key in body.segments:
+            parts += _placed_parts(seg, body.segments[key], as_printed)
+        elif isinstance(seg.value, dict) and "mass" in seg.value:
+            parts.append(_lumped_part(key, seg))
+        else:
+            known = ", ".join(body.segments) if body else "none"
+            seg.fail(f"a segment of the anthropometry ({known}) or a lumped body with {', '.join(LUMPED_KEYS)}")
+    name = node.get("name", str(node.source)).string()
+    return name, tuple(parts)
+
+
+def _check_all_placed(segments, body, placed):
+    missing = [k for k in body.segments if k not in placed]
+    if missing:
+        segments.fail(f"a placement for every segment of {body.source.name} (missing: {', '.join(missing)})")
+
+
+def _frame(seg):
+    return FRAMES[seg.get("frame", "rear").string(choices=tuple(FRAMES))]
+
+
+def angle_deg(node):
+    """An angle in degrees: a plain number is degrees, ``"<x> rad"``/``"<x> deg"`` converted."""
+    value = node.number()
+    return np.degrees(value) if isinstance(node.value, str) and " " in node.value.strip() else value
+
+
+def _placed_parts(seg, segment, as_printed):
+    """The part (or the +y/-y pair) of body ``segment`` placed by the pose node ``seg``."""
+    seg.check_keys(required=PLACED_KEYS, optional=("mirror", "frame", "printed"))
+    values = {"location": seg["location"].vector(3), "angle": angle_deg(seg["angle"])}
+    if seg.has("printed"):
+        printed = seg["printed"]
+        printed.check_keys(optional=PLACED_KEYS)
+        if as_printed:
+            for k, v in printed.items():
+                values[k] = v.vector(3) if k == "location" else angle_deg(v)
+    mirror = seg.get("mirror", False).boolean()
+    if mirror != segment.pair:
+        what = "a pair (pair: true)" if segment.pair else "a single segment (no pair: true)"
+        seg.fail(f"mirror: {str(segment.pair).lower()} ({segment.name} is {what} in the anthropometry)",
+                 "mirror")
+    frame = _frame(seg)
+    placement = Placement.thesis_segment(values["location"], values["angle"])
+    if not mirror:
+        return [Part(segment.name, segment.solid, segment.mass, placement, frame)]
+    y = values["location"][1]
+    if y == 0:
+        seg.fail("a nonzero y for a mirrored pair (the copies sit at +y and -y)", "location")
+    other = Placement(MIRROR_Y @ placement.rotation @ MIRROR_Y, MIRROR_Y @ placement.translation)
+    return [Part(f"{segment.name}_{'right' if p.translation[1] > 0 else 'left'}",
+                 segment.solid, segment.mass, p, frame) for p in (placement, other)]
+
+
+def _lumped_part(key, seg):
+    """A lumped body (mass, com, central inertia) as one part."""
+    seg.check_keys(required=LUMPED_KEYS, optional=("frame",))
+    inertia = seg["inertia"].matrix((3, 3))
+    if not np.allclose(inertia, inertia.T, rtol=0, atol=1e-12):
+        seg.fail("a symmetric 3x3 inertia tensor (kg m^2)", "inertia")
+    if np.linalg.eigvalsh(inertia).min() < -1e-12 * max(1.0, np.abs(inertia).max()):
+        seg.fail("a positive semi-definite inertia tensor (kg m^2)", "inertia")
+    props = MassProperties(seg["mass"].number(positive=True), seg["com"].vector(3), inertia)
+    return Part(key, Lumped(props), props.mass, Placement.identity(), _frame(seg))
+
