@@ -1,0 +1,99 @@
+"""``bikemass stiffness`` and ``bikemass modes``: the rear frame's beam model (S and natural frequencies)."""
+
+import sys
+
+BEAMS = ("timoshenko", "euler-bernoulli")
+
+
+def load_structure(bike):
+    """The structural rear frame (:class:`~bikemass.tubes.Structure`) of bicycle ``bike``."""
+    from ..bicycle import load_bicycle
+    from ..errors import InputError
+
+    structure = getattr(load_bicycle(bike), "structure", None)
+    if structure is None:
+        raise InputError(bike, "(frame)", "a bicycle whose frame names its structural tubes, dropouts "
+                                          "and head tube")
+    return structure
+
+
+def _material(args):
+    from ..fe import resolve_material
+    return None if args.material is None else resolve_material(args.material)
+
+
+def _common(parser):
+    parser.add_argument("bike", metavar="BIKE", help="shipped bicycle name or bicycle YAML file")
+    parser.add_argument("--material", metavar="M", default=None,
+                        help="steel, titanium, aluminum or a one-material YAML file "
+                             "(default: the frame's own materials); geometry is unchanged")
+    parser.add_argument("--beam", choices=BEAMS, default="timoshenko",
+                        help="beam theory (default timoshenko: shear deformation + rotary inertia)")
+    parser.add_argument("--format", choices=("table", "json"), default="table")
+
+
+def register(subparsers):
+    from ..fe.boundary import BOUNDARY_CONDITIONS
+    from ..fe.model import DEFAULT_ELEMENT_SIZE
+    from ..fe.stiffness import PROCEDURES
+
+    p = subparsers.add_parser(
+        "stiffness", help="equivalent rear-frame stiffness S (roll, steer) at the head tube",
+        description="2x2 stiffness S (N m/rad) on roll and steer rotations at the bottom head-tube "
+                    "keypoint with the dropouts clamped (beam finite elements of the frame tubes).")
+    _common(p)
+    p.add_argument("--procedure", choices=PROCEDURES, default="condensed",
+                   help="condensed: consistent Schur complement (default); thesis: Williams (2015) "
+                        "Eq. 3.31-3.34 unit rotations")
+    p.set_defaults(run=run_stiffness)
+
+    p = subparsers.add_parser(
+        "modes", help="natural frequencies of the rear frame",
+        description="Lowest natural frequencies (Hz) of the rear frame's beam model; free-free "
+                    "skips the six rigid-body modes.")
+    _common(p)
+    p.add_argument("--bc", choices=BOUNDARY_CONDITIONS, default="free",
+                   help="free, fix-rear (dropouts clamped), fix-head (head tube clamped), fix-both")
+    p.add_argument("-n", type=int, default=10, metavar="N", help="number of modes (default 10)")
+    p.add_argument("--element-size", type=float, default=DEFAULT_ELEMENT_SIZE, metavar="M",
+                   help=f"beam element length in m (default {DEFAULT_ELEMENT_SIZE})")
+    p.add_argument("--plot", metavar="FILE.png", help="draw the mode shapes on the frame")
+    p.set_defaults(run=run_modes)
+
+
+def run_stiffness(args):
+    from ..fe import equivalent_stiffness
+    from ..output import dumps, table
+
+    S = equivalent_stiffness(load_structure(args.bike), _material(args), args.procedure,
+                             timoshenko=args.beam == "timoshenko")
+    if args.format == "json":
+        sys.stdout.write(dumps({"S": S, "units": "N m/rad"}, "json"))
+        return
+    sys.stdout.write(f"S (N m/rad), procedure {args.procedure}\n")
+    sys.stdout.write(table(["", "roll", "steer"], [["roll", *S[0]], ["steer", *S[1]]], "{:.1f}"))
+
+
+def run_modes(args):
+    from ..errors import InputError
+    from ..fe import frame_modes
+    from ..output import dumps, table, write_atomic
+
+    if args.n < 1:
+        raise InputError("-n", "(option)", "a positive number of modes")
+    if not args.element_size > 0:
+        raise InputError("--element-size", "(option)", "a positive element length in m")
+    try:
+        modes = frame_modes(load_structure(args.bike), args.bc, args.n, _material(args),
+                            args.element_size, timoshenko=args.beam == "timoshenko")
+    except ValueError as exc:
+        raise InputError(args.bike, "(model)", str(exc)) from None
+    if args.plot:
+        from ..fe.plot import mode_shape_png
+        write_atomic(args.plot, mode_shape_png(modes))
+    if args.format == "json":
+        sys.stdout.write(dumps(modes.to_dict(), "json"))
+        return
+    sys.stdout.write(f"natural frequencies, {args.bc}\n")
+    rows = [[i + 1, f] for i, f in enumerate(modes.frequencies_hz)]
+    sys.stdout.write(table(["mode", "frequency (Hz)"], rows, "{:.3f}"))
