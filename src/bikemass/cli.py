@@ -7,6 +7,7 @@ import sys
 from .errors import InputError
 
 COMMAND_MODULES = (
+    "rider",
     "frame",
 )
 """Modules under ``bikemass.commands`` whose ``register(subparsers)`` adds sub-commands."""

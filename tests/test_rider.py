@@ -1,0 +1,287 @@
+"""The rider model against Williams (2015), Tables 3-2, 3-3 and 3-4.
+
+Reference numbers are read from tests/reference/rider_tables.yaml (checked
+transcriptions of the thesis); nothing here is computed from them in the package.
+"""
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+import yaml
+
+from bikemass.errors import InputError
+from bikemass.rider import THESIS_POSES, load_rider, shipped_poses
+
+REF = yaml.safe_load((Path(__file__).parent / "reference" / "rider_tables.yaml").read_text())
+POSE_KEYS = dict(zip(THESIS_POSES, REF["poses"]))      # "no-hands" -> "no_hands"
+PAIRED = [k for k, v in REF["table_3_2"].items() if v.get("count") == 2]
+
+
+def table_3_4(pose):
+    """(mass, com, {Ixx, Ixz, Iyy, Izz}) of ``pose`` as printed in Table 3-4."""
+    i = REF["poses"].index(POSE_KEYS[pose])
+    t = REF["table_3_4"]
+    com = np.array([t["x_m"][i], t["y_m"][i], t["z_m"][i]])
+    inertia = {k: t[f"{k}_kgm2"][i] for k in ("Ixx", "Ixz", "Iyy", "Izz")}
+    return t["mass_kg"][i], com, inertia
+
+
+def entries(props):
+    I = props.inertia
+    return {"Ixx": I[0, 0], "Ixz": I[0, 2], "Iyy": I[1, 1], "Izz": I[2, 2]}
+
+
+@pytest.fixture(scope="module")
+def riders():
+    return {p: load_rider(p) for p in THESIS_POSES}
+
+
+def test_shipped_poses_are_the_thesis_poses_in_order():
+    assert shipped_poses()[:5] == list(THESIS_POSES)
+    assert not any(p.endswith("-thesis") for p in shipped_poses())
+
+
+# -- Table 3-2: anthropometry ---------------------------------------------------
+
+def test_segment_masses_and_volumes_match_table_3_2(riders):
+    """Exact volumes equal the printed volumes to their 3 printed decimals (1e-3 of 1e-3 m^3)."""
+    parts = {p.name: p for p in riders["relaxed"].parts}
+    total = 0.0
+    for name, row in REF["table_3_2"].items():
+        if name == "total":
+            continue
+        copies = [p for n, p in parts.items() if n in (name, f"{name}_right", f"{name}_left")]
+        assert len(copies) == row["count"]
+        for part in copies:
+            assert part.mass == pytest.approx(row["mass_kg"], rel=1e-12)
+            assert part.solid.volume * 1e3 == pytest.approx(row["volume_1e-3_m3"], abs=5e-4)
+            total += part.mass
+    assert total == pytest.approx(REF["table_3_2"]["total"]["mass_kg"], rel=1e-12)
+
+
+# -- Table 3-3: the pose files hold the printed table and its corrections ----
+
+def _placements(rider):
+    """{segment name: (location, angle_deg)} of the +y copy (or the single part)."""
+    out = {}
+    for part in rider.parts:
+        name = part.name.removesuffix("_right")
+        if part.name.endswith("_left"):
+            continue
+        axis = part.placement.rotation @ [0.0, 0.0, 1.0]
+        out[name] = (part.placement.translation, np.degrees(np.arctan2(-axis[0], axis[2])))
+    return out
+
+
+@pytest.mark.parametrize("as_printed", [True, False])
+@pytest.mark.parametrize("pose", THESIS_POSES)
+def test_pose_files_reproduce_table_3_3(pose, as_printed):
+    """As printed: every Table 3-3 value; corrected: the same with the reference corrections."""
+    i = REF["poses"].index(POSE_KEYS[pose])
+    expected = {seg: {f: vals[f][i] for f in ("x_m", "y_m", "z_m", "angle_deg")}
+                for seg, vals in REF["table_3_3"].items()}
+    if not as_printed:
+        for c in REF["corrections"]:
+            if c["pose"] == POSE_KEYS[pose]:
+                expected[c["part"]][c["field"]] = c["corrected"]
+    got = _placements(load_rider(pose, as_printed=as_printed))
+    assert set(got) == set(expected)
+    for seg, e in expected.items():
+        loc, angle = got[seg]
+        np.testing.assert_allclose(loc, [e["x_m"], e["y_m"], e["z_m"]], rtol=0, atol=1e-12)
+        assert angle == pytest.approx(e["angle_deg"], abs=1e-9)
+
+
+def test_paired_limbs_are_mirror_images(riders):
+    for rider in riders.values():
+        parts = {p.name: p for p in rider.parts}
+        for seg in PAIRED:
+            right, left = parts[f"{seg}_right"].exact(), parts[f"{seg}_left"].exact()
+            assert right.com[1] > 0
+            np.testing.assert_allclose(left.com, right.com * [1, -1, 1], atol=1e-15)
+            S = np.diag([1.0, -1.0, 1.0])
+            np.testing.assert_allclose(left.inertia, S @ right.inertia @ S, atol=1e-15)
+
+
+# -- Table 3-4: the validation ------------------------------------------------
+# Tolerances: the thesis's Creo values are printed to 3 decimals, and its geometry
+# (Table 3-3) to 1 mm / 0.001 deg.  THESIS_NOTES.md records the reproduction as
+# <= 0.26 % relative, CoM <= 0.5 mm, inertia <= 0.014 kg m^2; we assert just above
+# those (0.3 %, 0.5 mm = half the last printed digit, 0.015 kg m^2), well inside the
+# issue's 0.5 % / 1 mm, so a regression of a few tenths of a percent is caught.
+
+REL, COM_MM, INERTIA_ABS = 3e-3, 0.5e-3 + 1e-9, 0.015
+
+
+@pytest.mark.parametrize("method", ["mesh", "exact"])
+@pytest.mark.parametrize("pose", THESIS_POSES)
+def test_table_3_4_reproduced(riders, pose, method):
+    props = riders[pose].properties(method=method)
+    mass, com, inertia = table_3_4(pose)
+    assert props.mass == pytest.approx(mass, rel=1e-12)
+    assert np.abs(props.com - com).max() <= COM_MM
+    for k, v in entries(props).items():
+        assert abs(v - inertia[k]) <= REL * abs(inertia[k]), (k, v, inertia[k])
+        assert abs(v - inertia[k]) <= INERTIA_ABS, (k, v, inertia[k])
+    I = props.inertia
+    assert abs(I[0, 1]) < 1e-9 and abs(I[1, 2]) < 1e-9                 # symmetric rider
+
+
+def test_table_3_4_worst_cases_are_as_recorded(riders):
+    """The worst agreement is the documented one (Relaxed Izz +0.26 %, On Hoods Iyy -0.0136)."""
+    worst_rel, worst_abs = 0.0, 0.0
+    for pose, rider in riders.items():
+        _, _, inertia = table_3_4(pose)
+        for k, v in entries(rider.properties("exact")).items():
+            worst_rel = max(worst_rel, abs(v - inertia[k]) / abs(inertia[k]))
+            worst_abs = max(worst_abs, abs(v - inertia[k]))
+    assert 0.0025 < worst_rel < 0.0026
+    assert 0.013 < worst_abs < 0.014
+
+
+# -- the printed Table 3-3 (--as-printed) ---------------------------------------
+
+def test_as_printed_changes_only_the_three_errata_poses(riders):
+    for pose in ("relaxed", "aerobars"):
+        a, b = riders[pose].properties("exact"), load_rider(pose, as_printed=True).properties("exact")
+        np.testing.assert_array_equal(a.com, b.com)
+        np.testing.assert_array_equal(a.inertia, b.inertia)
+
+
+def test_as_printed_misses_table_3_4():
+    """The printed Table 3-3 misses Table 3-4 badly where the errata are.
+
+    No Hands: head 1.9 m below the ground -> CoM z -0.898 m instead of -1.220,
+    Ixx 77.0 instead of 12.96 kg m^2.  On Hoods: Ixz -13.8 %, Izz -4.3 %.
+    Aero Tuck: Ixz -7.0 %, CoM z 2.5 mm off.
+    """
+    def printed(pose):
+        return load_rider(pose, as_printed=True).properties("exact")
+
+    p, (_, com, inertia) = printed("no-hands"), table_3_4("no-hands")
+    assert p.com[2] == pytest.approx(-0.8976, abs=1e-4) and com[2] == -1.220
+    assert entries(p)["Ixx"] == pytest.approx(76.96, abs=0.01)
+    p, (_, _, inertia) = printed("on-hoods"), table_3_4("on-hoods")
+    assert (entries(p)["Ixz"] - inertia["Ixz"]) / inertia["Ixz"] == pytest.approx(-0.138, abs=1e-3)
+    assert (entries(p)["Izz"] - inertia["Izz"]) / inertia["Izz"] == pytest.approx(-0.043, abs=1e-3)
+    p, (_, com, inertia) = printed("aero-tuck"), table_3_4("aero-tuck")
+    assert (entries(p)["Ixz"] - inertia["Ixz"]) / inertia["Ixz"] == pytest.approx(-0.070, abs=1e-3)
+    assert p.com[2] - com[2] == pytest.approx(0.0025, abs=1e-4)
+
+
+# -- published riders, methods and overlaps -------------------------------------
+
+@pytest.mark.parametrize("pose", THESIS_POSES)
+def test_published_riders_are_table_3_4_exactly(pose):
+    rider = load_rider(pose + "-thesis")
+    assert len(rider.parts) == 1
+    for method in ("mesh", "exact"):
+        props = rider.properties(method)
+        mass, com, inertia = table_3_4(pose)
+        assert props.mass == mass
+        np.testing.assert_allclose(props.com, com, rtol=1e-15, atol=1e-15)
+        assert entries(props) == inertia
+
+
+def test_mesh_and_exact_agree_for_every_rider(riders):
+    """Equal-area tessellation: mesh mass exact to round-off, inertia within 1e-5 of the largest."""
+    for rider in riders.values():
+        mesh, exact = rider.properties("mesh"), rider.properties("exact")
+        assert mesh.mass == pytest.approx(exact.mass, rel=1e-9)
+        np.testing.assert_allclose(mesh.com, exact.com, rtol=0, atol=1e-9)
+        scale = np.abs(exact.inertia).max()
+        assert np.abs(mesh.inertia - exact.inertia).max() <= 1e-5 * scale
+
+
+def test_breakdown_adds_up_to_the_total(riders):
+    from bikemass.inertia import combine
+    rider = riders["aero-tuck"]
+    rows = rider.breakdown("exact")
+    assert [name for name, _, _ in rows][:2] == ["head", "torso"]
+    assert {body for _, body, _ in rows} == {"rear_frame"}
+    total = combine(mp for _, _, mp in rows)
+    np.testing.assert_allclose(total.inertia, rider.properties("exact").inertia, atol=1e-12)
+
+
+def _union_bounds(rider):
+    """Bounds on the mass the union removes: overlap volume times the min/max density."""
+    import trimesh
+    meshes = [p.mesh() for p in rider.parts]
+    overlap = sum(m.volume for m in meshes) - trimesh.boolean.union(meshes, engine="manifold").volume
+    densities = [p.density for p in rider.parts]
+    return overlap, overlap * min(densities), overlap * max(densities)
+
+
+@pytest.mark.parametrize("pose", ["relaxed", "aero-tuck"])
+def test_union_counts_overlaps_once(riders, pose):
+    rider = riders[pose]
+    summed, united = rider.properties(), rider.properties(overlap="union")
+    overlap, low, high = _union_bounds(rider)
+    assert overlap > 1e-4                                   # the thesis rider's segments do overlap
+    assert low - 1e-9 <= summed.mass - united.mass <= high + 1e-9
+
+
+def test_union_equals_sum_without_overlaps(tmp_path):
+    pose = tmp_path / "apart.yaml"
+    pose.write_text(_spread_pose())
+    rider = load_rider(str(pose))
+    summed, united = rider.properties(), rider.properties(overlap="union")
+    # manifold3d's booleans keep vertices to ~1e-7 of the model's size: 1e-6 relative.
+    assert united.mass == pytest.approx(summed.mass, rel=1e-6)
+    np.testing.assert_allclose(united.com, summed.com, rtol=0, atol=1e-6)
+    np.testing.assert_allclose(united.inertia, summed.inertia, rtol=1e-6)
+
+
+def _spread_pose():
+    """Every thesis segment hanging straight down, 0.6 m apart along x: nothing overlaps."""
+    lines = ["name: Spread out", "body: thesis_rider", "segments:"]
+    for i, seg in enumerate(REF["table_3_2"]):
+        if seg == "total":
+            continue
+        mirror = ", mirror: true" if seg in PAIRED else ""
+        lines.append(f"  {seg}: {{location: [{0.6 * i}, 0.3, -1.0], angle: 0{mirror}}}")
+    return "\n".join(lines) + "\n"
+
+
+# -- user pose files ---------------------------------------------------------------
+
+def test_user_pose_file_front_frame_units_and_printed(tmp_path):
+    """A copy of Relaxed written by hand, hands on the bars, units, and a printed value."""
+    text = (Path(__file__).parents[1] / "bodies" / "poses" / "relaxed.yaml").read_text()
+    text = text.replace("lower_arm: {location: [0.450, 0.238, -1.312], angle: -48.829, mirror: true}",
+                        "lower_arm: {location: ['450 mm', 0.238, -1.312], angle: '-0.852232 rad', "
+                        "mirror: true, frame: front, printed: {angle: 0}}")
+    assert "frame: front" in text
+    pose = tmp_path / "my_pose.yaml"
+    pose.write_text(text)
+    rider = load_rider(str(pose))
+    bodies = {p.name: p.body for p in rider.parts}
+    assert bodies["lower_arm_left"] == bodies["lower_arm_right"] == "front_frame"
+    assert bodies["head"] == "rear_frame"
+    mine, shipped = rider.properties("exact"), load_rider("relaxed").properties("exact")
+    np.testing.assert_allclose(mine.inertia, shipped.inertia, atol=2e-5)   # -0.852232 rad = -48.829 deg
+    printed = load_rider(str(pose), as_printed=True).properties("exact")
+    # printed angle 0: both forearms (2 x 1.9 kg, CoM 0.2395 m from the elbow) hang straight down.
+    shift = 2 * 1.9 * 0.2395 * (1 - np.cos(0.852232)) / 82.15
+    assert printed.com[2] - mine.com[2] == pytest.approx(shift, rel=1e-9)
+
+
+def test_user_pose_with_own_anthropometry_and_lumped_load(tmp_path):
+    """body: a .yaml next to the pose; a lumped segment (backpack) beside placed ones."""
+    (tmp_path / "stick.yaml").write_text(
+        "name: stick\nsegments:\n  pole: {shape: cylinder, diameter: 0.1, length: 2.0, mass: 3.0}\n")
+    (tmp_path / "pose.yaml").write_text(
+        "body: stick.yaml\nsegments:\n  pole: {location: [0, 0, -2], angle: 90}\n"
+        "  pack: {mass: 1.0, com: [-1.0, 0, -2.0], inertia: [[0, 0, 0], [0, 0, 0], [0, 0, 0]]}\n")
+    props = load_rider(str(tmp_path / "pose.yaml")).properties("exact")
+    # pole axis (-sin 90, 0, cos 90) = -x: from x = 0 back to x = -2, CoM at x = -1.
+    np.testing.assert_allclose(props.com, [-1.0, 0.0, -2.0], atol=1e-12)
+    m, r, L = 3.0, 0.05, 2.0
+    np.testing.assert_allclose(np.diag(props.inertia), [m * r**2 / 2, m * (3 * r**2 + L**2) / 12,
+                                                         m * (3 * r**2 + L**2) / 12], rtol=1e-12)
+
+
+def test_unknown_pose_name_lists_the_shipped_ones():
+    with pytest.raises(InputError, match="relaxed"):
+        load_rider("sprinting")
