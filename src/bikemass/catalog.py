@@ -9,8 +9,7 @@ stiffness S (N m/rad) or ``None`` for a rigid frame.
 import numpy as np
 
 from .config import load_yaml
-from .parameters import from_node, is_parameter_file
-from .paths import frames_dir, resolve
+from .errors import InputError
 
 COMBINE_CHOICES = ("exact", "thesis")
 """Rider + rear frame: 'exact' = parallel-axis theorem; 'thesis' = inertias added (Eq. 3.6)."""
@@ -18,18 +17,38 @@ COMBINE_CHOICES = ("exact", "thesis")
 
 def parameters(bike, rider=None, combine="exact"):
     """Benchmark parameter set for ``bike`` (+ ``rider``), see the module docstring."""
-    node = load_yaml(resolve(bike, frames_dir(), "bicycle"))
-    if is_parameter_file(node):
-        if rider not in (None, "none"):
-            node.fail("a bicycle without rider for a parameter file (its rear frame already has one)")
-        return from_node(node)
-    node.fail("a benchmark parameter file (bicycle YAML support comes with the bicycle model)")
+    from .bicycle import bicycle_parameters
+    return bicycle_parameters(bicycle(bike), load_rider(rider), combine)
+
+
+def bicycle(bike):
+    """The :class:`~bikemass.bicycle.Bicycle` named ``bike`` (shipped name, YAML or parameter file)."""
+    from .bicycle import load_bicycle
+    return load_bicycle(bike)
+
+
+def load_rider(pose):
+    """The rider in ``pose`` (shipped pose name or pose file), or ``None`` for None/'none'."""
+    if pose in (None, "none"):
+        return None
+    from .rider import load_rider as load
+    return load(pose)
 
 
 def stiffness(bike, which):
-    """2x2 S (N m/rad) named ``which`` for ``bike``: 'infinite' -> None, or a YAML file with key S."""
+    """2x2 S (N m/rad) named ``which`` for ``bike``: 'infinite' -> None, a material name
+    (the bicycle's published ``stiffness:`` for it), or a YAML file with key S."""
     if which in (None, "infinite", "rigid"):
         return None
+    from .materials import load_materials
+    materials = load_materials()
+    if which in materials:
+        model = bicycle(bike)
+        S = model.published_stiffness(materials[which])
+        if S is None:
+            raise InputError(model.source, "stiffness", f"a published stiffness for {which} "
+                             "(no published stiffness for this bicycle)")
+        return S
     node = load_yaml(which)
     node.check_keys(required=("S",), optional=("units", "source", "name"))
     S = node["S"].matrix((2, 2))

@@ -1,0 +1,58 @@
+"""A bicycle (+ rider) -> the Meijaard et al. (2007) benchmark parameter set.
+
+Rider parts whose ``body`` is ``front_frame`` (e.g. hands on the bars) join the
+front frame, the others the rear frame.  ``combine``:
+
+* ``exact``: every part of a frame body and of the rider combined with the
+  parallel-axis theorem (physically right; the default);
+* ``thesis``: Williams (2015) Eq. 3.4-3.6 as printed: the frame body and the
+  rider's part on that body are each reduced to their own CoM inertia and these
+  two inertias are simply added (no parallel-axis terms); masses summed, CoM
+  mass-weighted.  This reproduces the thesis's stability tables.
+"""
+
+import numpy as np
+
+from ..inertia import combine as combine_exact
+from ..inertia import combine_without_parallel_axis
+from ..parameters import BenchmarkParameters
+from ..parts import body_properties
+
+COMBINE_CHOICES = ("exact", "thesis")
+
+
+def bicycle_parameters(bicycle, rider=None, combine="exact", method="mesh"):
+    """:class:`~bikemass.parameters.BenchmarkParameters` of ``bicycle`` with ``rider`` (or none).
+
+    ``method``: ``mesh`` (trimesh meshes of the solids) or ``exact`` (closed form).
+    A bicycle read from a parameter file without a rider returns that file's values exactly.
+    """
+    if combine not in COMBINE_CHOICES:
+        raise ValueError(f"combine must be one of {', '.join(COMBINE_CHOICES)}, got {combine!r}")
+    if rider is None and bicycle.published is not None:
+        return bicycle.published
+    bodies = bicycle.bodies(method)
+    if rider is not None:
+        merge = combine_exact if combine == "exact" else combine_without_parallel_axis
+        for body in ("rear_frame", "front_frame"):
+            parts = [p for p in rider.parts if p.body == body]
+            if parts:
+                bodies[body] = merge((bodies[body], body_properties(parts, method)))
+    g = bicycle.geometry
+    R, B, H, F = (bodies[b] for b in ("rear_wheel", "rear_frame", "front_frame", "front_wheel"))
+    _check_wheel(R, g.rear_axle, "rear")
+    _check_wheel(F, g.front_axle, "front")
+    return BenchmarkParameters(
+        w=g.wheelbase, c=g.trail, lam=g.lam, g=g.gravity,
+        rR=g.rear_wheel_radius, mR=R.mass, IRxx=R.inertia[0, 0], IRyy=R.inertia[1, 1],
+        xB=B.com[0], zB=B.com[2], mB=B.mass,
+        IBxx=B.inertia[0, 0], IByy=B.inertia[1, 1], IBzz=B.inertia[2, 2], IBxz=B.inertia[0, 2],
+        xH=H.com[0], zH=H.com[2], mH=H.mass,
+        IHxx=H.inertia[0, 0], IHyy=H.inertia[1, 1], IHzz=H.inertia[2, 2], IHxz=H.inertia[0, 2],
+        rF=g.front_wheel_radius, mF=F.mass, IFxx=F.inertia[0, 0], IFyy=F.inertia[1, 1])
+
+
+def _check_wheel(props, axle, which):
+    """A wheel must be balanced on its axle (the benchmark model has no wheel offset)."""
+    if np.linalg.norm(props.com - axle) > 1e-9:
+        raise ValueError(f"{which} wheel CoM {props.com.tolist()} is not on its axle {axle.tolist()}")

@@ -1,0 +1,119 @@
+"""The geometry the benchmark model needs, and its consistency with a frame's keypoints.
+
+All lengths in m, angles in rad, benchmark frame (x forward, y right, z down,
+origin at the rear contact).  The steer axis meets the ground at ``x = w + c``
+and is tilted back from vertical by ``lam = pi/2 - head_angle``.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..convention import steer_axis, steer_axis_tilt
+
+STEER_AXIS_TOLERANCE = 0.002
+"""How far (m) a head-tube keypoint may sit from the steer axis of wheelbase/trail/head angle."""
+HEAD_ANGLE_TOLERANCE = 0.002
+"""How far (rad) the head-tube keypoints' angle may differ from ``head_angle`` (3-decimal rounding)."""
+AXLE_TOLERANCE = 0.001
+"""How far (m) ``rear_axle``/``front_axle`` keypoints and wheel tire radii may be off."""
+DEFAULT_GRAVITY = 9.81
+"""m/s^2, as Meijaard et al. (2007)."""
+
+
+@dataclass(frozen=True)
+class Geometry:
+    """Wheelbase ``w``, trail ``c``, head angle, wheel radii (m, rad) and gravity (m/s^2)."""
+
+    wheelbase: float
+    trail: float
+    head_angle: float
+    rear_wheel_radius: float
+    front_wheel_radius: float
+    gravity: float = DEFAULT_GRAVITY
+
+    @property
+    def lam(self):
+        """Steer-axis tilt (rad)."""
+        return steer_axis_tilt(self.head_angle)
+
+    @property
+    def rear_axle(self):
+        return np.array([0.0, 0.0, -self.rear_wheel_radius])
+
+    @property
+    def front_axle(self):
+        return np.array([self.wheelbase, 0.0, -self.front_wheel_radius])
+
+    @property
+    def steer_ground_point(self):
+        """Where the steer axis meets the ground, (w + c, 0, 0)."""
+        return np.array([self.wheelbase + self.trail, 0.0, 0.0])
+
+    def fork_offset(self):
+        """Perpendicular distance of the front axle ahead of the steer axis (m)."""
+        return self.front_wheel_radius * np.sin(self.lam) - self.trail * np.cos(self.lam)
+
+    def distance_from_steer_axis(self, point):
+        """Distance (m) of ``point`` from the steer axis."""
+        d = np.asarray(point, dtype=float) - self.steer_ground_point
+        axis = steer_axis(self.lam)
+        return float(np.linalg.norm(d - (d @ axis) * axis))
+
+
+def read_geometry(node):
+    """:class:`Geometry` from the ``geometry`` mapping; checks ``fork_offset`` against the trail."""
+    node.check_keys(required=("wheelbase", "trail", "head_angle", "rear_wheel_radius",
+                              "front_wheel_radius"),
+                    optional=("fork_offset", "gravity", "axle_tolerance"))
+    head_angle = node["head_angle"].number(positive=True)
+    if head_angle > np.pi / 2:
+        node.fail(f"a head angle in (0, pi/2] rad, got {head_angle!r}", "head_angle")
+    geometry = Geometry(node["wheelbase"].number(positive=True), node["trail"].number(),
+                        head_angle, node["rear_wheel_radius"].number(positive=True),
+                        node["front_wheel_radius"].number(positive=True),
+                        node["gravity"].number(positive=True) if node.has("gravity") else DEFAULT_GRAVITY)
+    if node.has("fork_offset"):
+        offset = node["fork_offset"].number()
+        if abs(offset - geometry.fork_offset()) > AXLE_TOLERANCE:
+            node.fail(f"a trail consistent with head_angle, front_wheel_radius and fork_offset "
+                      f"(they give {(geometry.front_wheel_radius * np.sin(geometry.lam) - offset) / np.cos(geometry.lam):.4f} m, "
+                      f"not {geometry.trail:.4f} m)", "trail")
+    return geometry
+
+
+def check_keypoints(geometry, node, keypoints, head_tube=None, dropouts=None):
+    """Fail (naming the ``geometry`` key) where the keypoints contradict the geometry.
+
+    * ``rear_axle`` / ``front_axle`` keypoints, if present, at (0, 0, -rR) / (w, 0, -rF);
+    * the ``head_tube`` keypoint pair on the steer axis and at the head angle;
+    * the ``dropouts`` midpoint within ``axle_tolerance`` (m, default 0.001) of the rear axle.
+    """
+    for key, expected, radius_key in (("rear_axle", geometry.rear_axle, "rear_wheel_radius"),
+                                      ("front_axle", geometry.front_axle, "front_wheel_radius")):
+        if key in keypoints and np.linalg.norm(keypoints[key] - expected) > AXLE_TOLERANCE:
+            node.fail(f"a value consistent with keypoint {key} {np.round(keypoints[key], 4).tolist()} "
+                      f"(the geometry puts the axle at {np.round(expected, 4).tolist()})", radius_key)
+    if head_tube:
+        top, bottom = (keypoints[k] for k in head_tube)
+        up = top - bottom
+        angle = np.arctan2(-up[2], abs(up[0]))
+        if abs(angle - geometry.head_angle) > HEAD_ANGLE_TOLERANCE:
+            node.fail(f"the head-tube keypoints' angle {angle:.4f} rad (within "
+                      f"{HEAD_ANGLE_TOLERANCE} rad), got {geometry.head_angle:.4f} rad", "head_angle")
+        for key in head_tube:
+            miss = geometry.distance_from_steer_axis(keypoints[key])
+            if miss > STEER_AXIS_TOLERANCE:
+                ground = bottom[0] + bottom[2] * up[0] / up[2]
+                node.fail(f"a trail putting the steer axis through the head-tube keypoints "
+                          f"(they meet the ground at x = {ground:.4f} m, so c = "
+                          f"{ground - geometry.wheelbase:.4f} m; keypoint {key} is "
+                          f"{miss * 1000:.1f} mm off the axis)", "trail")
+    if dropouts:
+        tolerance = node["axle_tolerance"].number(positive=True) if node.has("axle_tolerance") else AXLE_TOLERANCE
+        middle = (keypoints[dropouts[0]] + keypoints[dropouts[1]]) / 2
+        miss = np.linalg.norm(middle - geometry.rear_axle)
+        if miss > tolerance:
+            node.fail(f"a rear wheel radius putting the axle within axle_tolerance = {tolerance} m of "
+                      f"the dropouts' midpoint {np.round(middle, 4).tolist()} (it is {miss * 1000:.1f} mm away)",
+                      "rear_wheel_radius")

@@ -1,0 +1,173 @@
+"""Reading a bicycle: ``frames/<name>.yaml``, any bicycle YAML file, or a benchmark parameter file.
+
+The file format is described in docs/bicycles.md.  Every problem is reported as
+one :class:`~bikemass.errors.InputError` naming the file and the key.
+"""
+
+import numpy as np
+
+from ..config import Node, load_yaml
+from ..inertia import MassProperties
+from ..materials import load_materials
+from ..parameters import from_node, is_parameter_file
+from ..parts import Part
+from ..paths import frames_dir, resolve
+from ..placement import Placement
+from ..sections import RoundSection, SquareSection
+from ..solids import Lumped, RoundTube, SquareTube
+from ..tubes import Structure, Tube
+from .components import materials_lookup, read_component, read_wheel
+from .geometry import Geometry, check_keypoints, read_geometry
+from .model import Bicycle
+
+TOP_KEYS = ("name", "source", "description", "geometry", "keypoints", "material", "sections", "tubes",
+            "structure", "components", "loads", "wheels", "stiffness")
+
+
+def load_bicycle(name_or_path):
+    """:class:`Bicycle` for a shipped name (``frames/``), a bicycle YAML file or a parameter file."""
+    path = resolve(name_or_path, frames_dir(), "bicycle")
+    node = load_yaml(path)
+    if is_parameter_file(node):
+        return bicycle_from_parameters(from_node(node), node.get("name", path.stem).string(), str(path))
+    return read_bicycle(node, str(path))
+
+
+def read_bicycle(node, source):
+    """:class:`Bicycle` from the top-level mapping ``node`` of a bicycle YAML file."""
+    node.check_keys(required=("name", "geometry", "wheels"), optional=TOP_KEYS)
+    materials = load_materials()
+    geometry = read_geometry(node["geometry"])
+    keypoints = {str(k): v.vector() for k, v in node.get("keypoints", {}).items()}
+    tubes = _read_tubes(node, keypoints, materials)
+    structure = _read_structure(node, tubes, keypoints) if node.has("structure") else None
+    check_keypoints(geometry, node["geometry"], keypoints,
+                    structure.head_tube if structure else None, structure.dropouts if structure else None)
+    parts = [_tube_part(t) for t in tubes]
+    for key, default_body in (("components", None), ("loads", "rear_frame")):
+        for item in node.get(key, []).elements():
+            parts += read_component(item, materials, default_body)
+    wheels = node["wheels"]
+    wheels.check_keys(required=("rear", "front"))
+    parts += read_wheel(wheels["rear"], "rear_wheel", geometry.rear_axle, geometry.rear_wheel_radius,
+                        "rear_wheel_radius")
+    parts += read_wheel(wheels["front"], "front_wheel", geometry.front_axle, geometry.front_wheel_radius,
+                        "front_wheel_radius")
+    for body in ("rear_frame", "front_frame"):
+        if not any(p.body == body for p in parts):
+            node.fail(f"at least one tube or component with body {body}", "components")
+    stiffness = _read_stiffness(node["stiffness"], materials) if node.has("stiffness") else {}
+    return Bicycle(node["name"].string(), source, geometry, keypoints, tuple(tubes), tuple(parts),
+                   structure, stiffness)
+
+
+def _read_sections(node):
+    sections = {}
+    for name, s in node.get("sections", {}).items():
+        if s.has("side"):
+            s.check_keys(required=("side", "wall"), optional=("note",))
+            size, wall = s["side"].number(positive=True), s["wall"].number(positive=True)
+            if wall >= size / 2:
+                s.fail(f"a wall thinner than half the side {size} m, got {wall} m", "wall")
+            sections[name] = SquareSection(size, wall)
+        else:
+            s.check_keys(required=("outer_diameter", "wall"), optional=("note",))
+            size, wall = s["outer_diameter"].number(positive=True), s["wall"].number(positive=True)
+            if wall > size / 2:
+                s.fail(f"a wall no thicker than the radius {size / 2} m, got {wall} m", "wall")
+            sections[name] = RoundSection(size, wall)
+    return sections
+
+
+def _read_tubes(node, keypoints, materials):
+    sections = _read_sections(node)
+    default_material = node.get("material")
+    tubes, names = [], set()
+    for t in node.get("tubes", []).elements():
+        t.check_keys(required=("name", "from", "to", "section"), optional=("material", "body", "note"))
+        name = t["name"].string()
+        if name in names:
+            t.fail(f"a tube name not used before, got {name!r}", "name")
+        names.add(name)
+        ends = []
+        for key in ("from", "to"):
+            kp = t[key].string()
+            if kp not in keypoints:
+                t.fail(f"a keypoint defined under keypoints, got {kp!r}", key)
+            ends.append(kp)
+        start, end = keypoints[ends[0]], keypoints[ends[1]]
+        if np.linalg.norm(end - start) < 1e-6:
+            t.fail(f"a keypoint other than {ends[0]!r} (zero-length tube)", "to")
+        section = t["section"].string()
+        if section not in sections:
+            t.fail(f"a section defined under sections ({', '.join(sections)}), got {section!r}", "section")
+        material_node = t["material"] if t.has("material") else default_material
+        if material_node.missing:
+            t.fail("a required key that is missing (no top-level material either)", "material")
+        material = materials_lookup(material_node, materials)
+        body = t.get("body", "rear_frame").string(choices=("rear_frame", "front_frame"))
+        tubes.append(Tube(name, ends[0], ends[1], start, end, sections[section], material, body))
+    return tubes
+
+
+def _tube_part(tube):
+    s = tube.section
+    if isinstance(s, SquareSection):
+        solid = SquareTube(s.side, s.wall, tube.length)
+    else:
+        solid = RoundTube(s.outer_diameter, s.wall, tube.length)
+    return Part.from_density(tube.name, solid, tube.material.density,
+                             Placement.along(tube.start, tube.end - tube.start), tube.body)
+
+
+def _read_structure(node, tubes, keypoints):
+    s = node["structure"]
+    s.check_keys(required=("tubes", "dropouts", "head_tube"), optional=("note",))
+    rear = {t.name: t for t in tubes if t.body == "rear_frame"}
+    if s["tubes"].value == "all":
+        chosen = list(rear.values())
+    else:
+        chosen = []
+        for e in s["tubes"].elements():
+            if e.string() not in rear:
+                e.fail(f"a rear_frame tube name, got {e.value!r}")
+            chosen.append(rear[e.value])
+    supports = {}
+    for key in ("dropouts", "head_tube"):
+        pair = s[key].elements()
+        if len(pair) != 2:
+            s.fail("a list of two keypoint names", key)
+        for e in pair:
+            if e.string() not in keypoints:
+                e.fail(f"a keypoint defined under keypoints, got {e.value!r}")
+        supports[key] = tuple(e.value for e in pair)
+    used = {k for t in chosen for k in (t.start_key, t.end_key)} | set(supports["dropouts"]) | set(supports["head_tube"])
+    return Structure(tuple(chosen), supports["dropouts"], supports["head_tube"],
+                     {k: v for k, v in keypoints.items() if k in used})
+
+
+def _read_stiffness(node, materials):
+    table = {}
+    for name, m in node.items():
+        material = materials_lookup(Node(name, m.source, m.key), materials)
+        S = m.matrix((2, 2))
+        if S[0, 1] != S[1, 0]:
+            m.fail("a symmetric matrix (equal off-diagonal terms)")
+        if not np.all(np.linalg.eigvalsh(S) > 0):
+            m.fail("a positive definite 2x2 stiffness matrix (N m/rad)")
+        table[material.key] = S
+    return table
+
+
+def bicycle_from_parameters(params, name, source):
+    """A :class:`Bicycle` of four lumped bodies holding a benchmark parameter set."""
+    geometry = Geometry(params.w, params.c, np.pi / 2 - params.lam, params.rR, params.rF, params.g)
+    bodies = (
+        ("rear_wheel", params.mR, geometry.rear_axle, params.inertia("R")),
+        ("rear_frame", params.mB, [params.xB, 0.0, params.zB], params.inertia("B")),
+        ("front_frame", params.mH, [params.xH, 0.0, params.zH], params.inertia("H")),
+        ("front_wheel", params.mF, geometry.front_axle, params.inertia("F")),
+    )
+    parts = tuple(Part(body, Lumped(MassProperties(mass, np.zeros(3), inertia)), mass, Placement.at(at), body)
+                  for body, mass, at, inertia in bodies)
+    return Bicycle(name, source, geometry, {}, (), parts, None, {}, params)

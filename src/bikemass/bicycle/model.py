@@ -1,0 +1,56 @@
+"""The :class:`Bicycle` value: geometry, keypoints, tubes, parts by body, FE structure, published data."""
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from ..parts import body_properties
+from .components import BODIES
+
+
+@dataclass(frozen=True, eq=False)
+class Bicycle:
+    """A bicycle read from ``frames/<name>.yaml`` (or a benchmark parameter file).
+
+    ``parts`` holds every placed part (tubes, components, loads, wheel hoops, lumped
+    bodies), each with its ``body`` in :data:`BODIES`.  ``structure`` is the rear-frame
+    beam model (or ``None``), ``stiffness`` the published S matrices by material key
+    (N m/rad), ``published`` the parameter set of a benchmark parameter file (else ``None``).
+    """
+
+    name: str
+    source: str
+    geometry: object
+    keypoints: dict
+    tubes: tuple
+    parts: tuple
+    structure: object = None
+    stiffness: dict = None
+    published: object = None
+
+    def body_parts(self, body):
+        """Parts of ``body`` (one of :data:`BODIES`)."""
+        if body not in BODIES:
+            raise ValueError(f"body must be one of {', '.join(BODIES)}, got {body!r}")
+        return tuple(p for p in self.parts if p.body == body)
+
+    def bodies(self, method="mesh"):
+        """``{body: MassProperties}`` of the four bodies (parts summed, ``method`` mesh|exact)."""
+        return {b: body_properties(self.body_parts(b), method) for b in BODIES}
+
+    def with_material(self, material):
+        """The same bicycle with every tube (and the FE structure) in ``material``.
+
+        Geometry and the mass model are kept, as the thesis kept the steel frames'
+        mass properties for every material (Williams 2015, Sec. 3.2.2).
+        """
+        tubes = tuple(replace(t, material=material) for t in self.tubes)
+        structure = self.structure
+        if structure is not None:
+            structure = replace(structure, tubes=tuple(replace(t, material=material) for t in structure.tubes))
+        return replace(self, tubes=tubes, structure=structure)
+
+    def published_stiffness(self, material):
+        """Published 2x2 S (N m/rad) for ``material`` (a :class:`~bikemass.materials.Material`), or None."""
+        S = (self.stiffness or {}).get(material.key)
+        return None if S is None else np.array(S)
