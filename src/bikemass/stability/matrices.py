@@ -1,0 +1,82 @@
+"""Canonical matrices of the linearised Whipple bicycle (Meijaard et al. 2007, Appendix A).
+
+Equations of motion about the upright straight run at speed ``v`` (m/s)::
+
+    M q'' + v C1 q' + (g K0 + v**2 K2) q = f,     q = [roll phi, steer delta] (rad)
+
+``M`` in kg m^2, ``C1`` in kg m^2 (per m/s), ``K0`` in kg m (times g gives N m/rad),
+``K2`` in kg (times v**2 gives N m/rad).  ``K0`` is kept without g, as the paper
+prints it (and the thesis's Table 3-13).
+"""
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+
+@dataclass(frozen=True)
+class CanonicalMatrices:
+    """``M, C1, K0, K2`` (2x2 arrays) and gravity ``g`` (m/s^2) of one bicycle."""
+
+    M: np.ndarray
+    C1: np.ndarray
+    K0: np.ndarray
+    K2: np.ndarray
+    g: float
+
+    @property
+    def gK0(self):
+        """Static (gravity) stiffness ``g K0`` in N m/rad."""
+        return self.g * self.K0
+
+    def stiffness(self, v):
+        """``g K0 + v**2 K2`` for speeds ``v`` (array -> shape (n, 2, 2))."""
+        v = np.asarray(v, dtype=float)
+        return self.gK0 + v[..., None, None] ** 2 * self.K2
+
+    def replace(self, **changes):
+        """A copy with some matrices changed."""
+        return replace(self, **changes)
+
+    def to_dict(self):
+        """Plain nested lists, keys ``M C1 K0 K2 g``."""
+        return {"M": self.M.tolist(), "C1": self.C1.tolist(), "K0": self.K0.tolist(),
+                "K2": self.K2.tolist(), "g": float(self.g)}
+
+
+def canonical_matrices(p):
+    """:class:`CanonicalMatrices` of a :class:`~bikemass.parameters.BenchmarkParameters` set."""
+    sl, cl = np.sin(p.lam), np.cos(p.lam)
+    # whole bicycle (T) about the rear contact point
+    mT = p.mR + p.mB + p.mH + p.mF
+    xT = (p.xB * p.mB + p.xH * p.mH + p.w * p.mF) / mT
+    zT = (-p.rR * p.mR + p.zB * p.mB + p.zH * p.mH - p.rF * p.mF) / mT
+    ITxx = (p.IRxx + p.IBxx + p.IHxx + p.IFxx + p.mR * p.rR ** 2 + p.mB * p.zB ** 2
+            + p.mH * p.zH ** 2 + p.mF * p.rF ** 2)
+    ITxz = p.IBxz + p.IHxz - p.mB * p.xB * p.zB - p.mH * p.xH * p.zH + p.mF * p.w * p.rF
+    ITzz = (p.IRxx + p.IBzz + p.IHzz + p.IFxx + p.mB * p.xB ** 2 + p.mH * p.xH ** 2
+            + p.mF * p.w ** 2)   # wheels: Izz = Ixx
+    # front assembly (A = H + F) about its own centre of mass
+    mA = p.mH + p.mF
+    xA = (p.xH * p.mH + p.w * p.mF) / mA
+    zA = (p.zH * p.mH - p.rF * p.mF) / mA
+    IAxx = p.IHxx + p.IFxx + p.mH * (p.zH - zA) ** 2 + p.mF * (p.rF + zA) ** 2
+    IAxz = p.IHxz - p.mH * (p.xH - xA) * (p.zH - zA) + p.mF * (p.w - xA) * (p.rF + zA)
+    IAzz = p.IHzz + p.IFxx + p.mH * (p.xH - xA) ** 2 + p.mF * (p.w - xA) ** 2
+    uA = (xA - p.w - p.c) * cl - zA * sl          # front CoM distance ahead of the steer axis
+    IAll = mA * uA ** 2 + IAxx * sl ** 2 + 2 * IAxz * sl * cl + IAzz * cl ** 2
+    IAlx = -mA * uA * zA + IAxx * sl + IAxz * cl
+    IAlz = mA * uA * xA + IAxz * sl + IAzz * cl
+    mu = p.c / p.w * cl
+    SR, SF = p.IRyy / p.rR, p.IFyy / p.rF
+    ST = SR + SF
+    SA = mA * uA + mu * mT * xT
+
+    M = np.array([[ITxx, IAlx + mu * ITxz],
+                  [IAlx + mu * ITxz, IAll + 2 * mu * IAlz + mu ** 2 * ITzz]])
+    K0 = np.array([[mT * zT, -SA], [-SA, -SA * sl]])
+    K2 = np.array([[0.0, (ST - mT * zT) / p.w * cl],
+                   [0.0, (SA + SF * sl) / p.w * cl]])
+    C1 = np.array([[0.0, mu * ST + SF * cl + ITxz / p.w * cl - mu * mT * zT],
+                   [-(mu * ST + SF * cl), IAlz / p.w * cl + mu * (SA + ITzz / p.w * cl)]])
+    return CanonicalMatrices(M=M, C1=C1, K0=K0, K2=K2, g=float(p.g))
