@@ -36,10 +36,9 @@ def _common_options(p):
                    help="overlapping segments summed as in the thesis (default) or counted once")
 
 
-def _clean(x):
-    """Float for display: round-off below 1e-12 shown as 0."""
-    x = float(x)
-    return 0.0 if abs(x) < 1e-12 else x
+def _clean(x, digits=4):
+    """Float rounded for display, without a minus sign on a rounded zero."""
+    return round(float(x), digits) + 0.0
 
 
 def run_rider(args):
@@ -84,15 +83,14 @@ def run_riders(args):
         for p in poses:
             for label, get in TABLE_3_4_ROWS:
                 ours, theirs = get(props[p]), get(published[p])
-                diff = _clean(ours - theirs)
-                rel = f"{100 * diff / abs(theirs):+.3f}" if theirs else "-"
-                rows.append([p, label, _clean(ours), theirs, diff, rel])
+                rel = f"{_clean(100 * (ours - theirs) / abs(theirs), 3):+.3f}" if theirs else "-"
+                rows.append([p, label, _clean(ours), theirs, _clean(ours - theirs), rel])
         print(table(["pose", "quantity", "bikemass", "thesis", "difference", "relative (%)"], rows,
                     floatfmt="{:.4f}"), end="")
         return 0
     if args.format != "table":
         print(dumps({p: {"pose": p, **props[p].to_dict()} for p in poses}, args.format), end="")
         return 0
-    rows = [[label, *(_clean(get(props[p])) for p in poses)] for label, get in TABLE_3_4_ROWS]
+    rows = [[label, *(_clean(get(props[p]), 3) for p in poses)] for label, get in TABLE_3_4_ROWS]
     print(table(["", *poses], rows), end="")
     return 0
