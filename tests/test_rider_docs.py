@@ -1,0 +1,46 @@
+"""The worked example of docs/riders.md runs and prints what the page says."""
+
+import re
+from pathlib import Path
+
+import numpy as np
+
+from bikemass.cli import main
+from bikemass.rider import load_rider
+
+DOC = (Path(__file__).parents[1] / "docs" / "riders.md").read_text()
+
+
+def example_pose():
+    block = DOC.split("<!-- example-pose")[1]
+    return re.search(r"```yaml\n(.*?)```", block, re.S).group(1)
+
+
+def test_worked_example_loads_and_matches_the_page(tmp_path, capsys):
+    path = tmp_path / "upright.yaml"
+    path.write_text(example_pose())
+    rider = load_rider(str(path))
+    props = rider.properties()
+    np.testing.assert_allclose(props.com, [0.2988, 0.0, -1.2281], atol=5e-5)      # as printed on the page
+    assert round(props.inertia[0, 2], 2) == -2.25
+    assert {p.body for p in rider.parts if p.name.startswith("lower_arm")} == {"front_frame"}
+    assert main(["rider", str(path)]) == 0
+    shown = capsys.readouterr().out.splitlines()[1:]
+    page = DOC.split("$ bikemass rider upright.yaml\n")[1].split("```")[0].splitlines()[1:]
+    assert shown == page                                    # the page shows the real output
+
+
+def test_error_example_is_the_real_message(tmp_path, capsys):
+    path = tmp_path / "upright.yaml"
+    path.write_text(example_pose().replace("angle: -45.220, mirror: true", "angle: -45.220"))
+    assert main(["rider", str(path)]) == 2
+    err = capsys.readouterr().err
+    expected = [l for l in DOC.splitlines() if l.startswith("bikemass: error: upright.yaml")][0]
+    assert err.strip() == expected.replace("upright.yaml", str(path), 1)
+
+
+def test_page_tables_are_the_real_output(capsys):
+    """Every `$ bikemass riders ...` block on the page is what the command prints now."""
+    for command, block in re.findall(r"\$ (bikemass riders[^\n]*)\n(.*?)```", DOC, re.S):
+        assert main(command.split()[1:]) == 0
+        assert capsys.readouterr().out == block, command
