@@ -114,6 +114,10 @@ BAD_POSES = {
                                   "symmetric"),
     "placed without body": ("segments:\n  head: {location: [0, 0, -1.9], angle: 0}\n", None,
                             "segments.head", "body:"),
+    "angle in mm": (RELAXED.replace("angle: 15.362}", "angle: 15 mm}", 1), None, "segments.head.angle",
+                    "'<number> deg'"),
+    "bad printed value": (RELAXED.replace("angle: 15.362}", "angle: 15.362, printed: {angle: steep}}", 1),
+                          None, "segments.head.printed.angle", "number"),
     "bad yaml": ("segments: [unclosed\n", None, "line", "valid YAML"),
 }
 

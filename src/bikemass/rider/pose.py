@@ -74,9 +74,13 @@ def _frame(seg):
 
 
 def angle_deg(node):
-    """An angle in degrees: a plain number is degrees, ``"<x> rad"``/``"<x> deg"`` converted."""
+    """An angle in degrees: a plain number is degrees, ``"<x> deg"`` or ``"<x> rad"`` converted."""
     value = node.number()
-    return np.degrees(value) if isinstance(node.value, str) and " " in node.value.strip() else value
+    if not isinstance(node.value, str) or " " not in node.value.strip():
+        return value
+    if node.value.split()[-1] not in ("deg", "rad"):
+        node.fail(f"an angle in degrees, or '<number> deg' / '<number> rad', got {node.value!r}")
+    return np.degrees(value)
 
 
 def _placed_parts(seg, segment, as_printed):
@@ -86,9 +90,9 @@ def _placed_parts(seg, segment, as_printed):
     if seg.has("printed"):
         printed = seg["printed"]
         printed.check_keys(optional=PLACED_KEYS)
+        published = {k: v.vector(3) if k == "location" else angle_deg(v) for k, v in printed.items()}
         if as_printed:
-            for k, v in printed.items():
-                values[k] = v.vector(3) if k == "location" else angle_deg(v)
+            values.update(published)
     mirror = seg.get("mirror", False).boolean()
     if mirror != segment.pair:
         what = "a pair (pair: true)" if segment.pair else "a single segment (no pair: true)"
