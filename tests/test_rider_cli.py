@@ -83,6 +83,7 @@ BAD_POSES = {
     # name: (pose text, anthropometry text or None, key expected in the message, words expected)
     "unknown segment": (RELAXED + "  neck: {location: [0, 0, -1.8], angle: 0}\n", None,
                         "segments.neck", "segment of the anthropometry"),
+    "misspelt segment": (RELAXED.replace("  head:", "  haed:"), None, "segments.haed", "(head, torso,"),
     "missing key": (RELAXED.replace(", angle: 15.362}", "}", 1), None, "segments.head.angle", "missing"),
     "extra key": (RELAXED.replace("angle: 15.362}", "angle: 15.362, colour: red}", 1), None,
                   "segments.head.colour", "no such key"),

@@ -49,7 +49,6 @@ def read_pose(node, as_printed=False):
             placed[0][1].fail("a lumped body with mass, com, inertia (placed segments need a "
                               "top-level body: naming their anthropometry)")
         body = load_anthropometry(find_anthropometry(node["body"]))
-        _check_all_placed(segments, body, [k for k, _ in placed])
     parts = []
     for key, seg in segments.items():
         if body is not None and key in body.segments:
@@ -59,6 +58,8 @@ def read_pose(node, as_printed=False):
         else:
             known = ", ".join(body.segments) if body else "none"
             seg.fail(f"a segment of the anthropometry ({known}) or a lumped body with {', '.join(LUMPED_KEYS)}")
+    if body is not None:
+        _check_all_placed(segments, body, [k for k, _ in placed])
     name = node.get("name", str(node.source)).string()
     return name, tuple(parts)
 
