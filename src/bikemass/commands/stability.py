@@ -1,0 +1,158 @@
+"""``bikemass eig`` and ``bikemass stability``: eigenvalues over speed, critical speeds, stable ranges."""
+
+EIG_FORMATS = ("table", "csv", "json")
+STABILITY_FORMATS = ("table", "json")
+
+
+def register(sub):
+    eig = sub.add_parser(
+        "eig", help="eigenvalues of the labelled modes (weave, capsize, caster) against speed",
+        description="Eigenvalues of the linearised Whipple bicycle (Meijaard et al. 2007) at every "
+                    "speed, each followed across speed and labelled weave 1, weave 2, capsize, caster.")
+    _common(eig)
+    eig.add_argument("--format", choices=EIG_FORMATS, default="table",
+                     help="table (default), csv or json")
+    eig.set_defaults(run=run_eig)
+
+    stab = sub.add_parser(
+        "stability", help="weave and capsize speeds, stable speed ranges (strict and marginal)",
+        description="Critical speeds (roots, to 1e-13 m/s) and stable speed ranges, exact and on the "
+                    "speed grid, overall and per mode. Strict: every Re < 0; marginal: every "
+                    "eigenvalue has Re < 0 or modulus below --marginal.")
+    _common(stab)
+    stab.add_argument("--marginal", type=float, default=2.0, metavar="RAD_S",
+                      help="modulus (rad/s) below which an unstable eigenvalue counts as marginally "
+                           "stable (default 2.0, as the thesis)")
+    stab.add_argument("--format", choices=STABILITY_FORMATS, default="table", help="table (default) or json")
+    stab.set_defaults(run=run_stability)
+
+
+def _common(p):
+    p.add_argument("bike", metavar="BIKE", help="shipped bicycle name, bicycle YAML or parameter file")
+    p.add_argument("--rider", metavar="POSE", default="none",
+                   help="rider pose name or pose YAML file, or 'none' (default none)")
+    p.add_argument("--combine", choices=("exact", "thesis"), default="exact",
+                   help="rider + frame: parallel-axis theorem (exact, default) or the thesis's Eq. 3.6")
+    p.add_argument("--stiffness", metavar="S", default="infinite",
+                   help="rear-frame stiffness: infinite (rigid, default), steel, titanium, aluminum "
+                        "(the bicycle's published values) or a YAML file with S: [[..], [..]] in N m/rad")
+    p.add_argument("--speeds", metavar="START:STOP:STEP", default="0:30:0.05",
+                   help="speed grid in m/s (default 0:30:0.05, the thesis's)")
+    p.add_argument("--plot", metavar="FILE", help="also draw the eigenvalue figure (.png, .pdf, .svg)")
+    p.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of stdout")
+
+
+def parse_speeds(text):
+    """``"start:stop:step"`` -> speed grid (m/s); InputError if malformed."""
+    from ..errors import InputError
+    from ..stability import speed_grid
+
+    expected = "START:STOP:STEP in m/s with 0 <= START < STOP, STEP > 0 and at most 100000 speeds"
+    try:
+        start, stop, step = (float(x) for x in text.split(":"))
+    except ValueError:
+        raise InputError("--speeds", text, expected) from None
+    if not (0 <= start < stop and step > 0 and (stop - start) / step <= 1e5):
+        raise InputError("--speeds", text, expected)
+    return speed_grid(start, stop, step)
+
+
+def _matrices(args):
+    from .. import catalog
+    from ..stability import canonical_matrices, with_frame_stiffness
+
+    params = catalog.parameters(args.bike, args.rider, args.combine)
+    return with_frame_stiffness(canonical_matrices(params), catalog.stiffness(args.bike, args.stiffness))
+
+
+def _title(args):
+    return f"{args.bike}, rider {args.rider} ({args.combine}), stiffness {args.stiffness}"
+
+
+def _check_plot(path):
+    from pathlib import Path
+
+    from ..errors import InputError
+    if path and Path(path).suffix.lower() not in (".png", ".pdf", ".svg"):
+        raise InputError(path, "(file)", "an image file name ending in .png, .pdf or .svg")
+
+
+def _emit(args, text):
+    from ..output import write_atomic
+    if args.output:
+        write_atomic(args.output, text)
+    else:
+        print(text, end="")
+
+
+def run_eig(args):
+    from ..output import dumps
+    from ..stability import follow_modes
+
+    _check_plot(args.plot)
+    speeds = parse_speeds(args.speeds)
+    modes = follow_modes(_matrices(args), speeds)
+    if args.format == "json":
+        text = dumps(modes.to_dict(), "json")
+    else:
+        text = eig_table(modes, csv=args.format == "csv")
+    _emit(args, text)
+    if args.plot:
+        from ..plots.stability import plot_modes
+        plot_modes(modes, args.plot, title=_title(args))
+    return 0
+
+
+def eig_table(modes, csv=False):
+    """Speed and real/imaginary part of every mode, one row per speed (text table or CSV)."""
+    from ..output import table
+
+    headers = ["speed"] + [f"{label} {part}" for label in modes.labels for part in ("re", "im")]
+    rows = [[v] + [x for z in row for x in (z.real, z.imag)] for v, row in zip(modes.speeds, modes.eigenvalues)]
+    if csv:
+        lines = [",".join(h.replace(" ", "_") for h in headers)]
+        lines += [",".join(repr(float(x)) for x in r) for r in rows]
+        return "\n".join(lines) + "\n"
+    return table(headers, rows, floatfmt="{:.6f}")
+
+
+def run_stability(args):
+    from ..errors import InputError
+    from ..output import dumps
+    from ..stability import stability
+
+    _check_plot(args.plot)
+    if not args.marginal > 0:
+        raise InputError("--marginal", args.marginal, "a positive modulus in rad/s")
+    speeds = parse_speeds(args.speeds)
+    result = stability(_matrices(args), speeds, marginal=args.marginal)
+    text = dumps(result.to_dict(), "json") if args.format == "json" else stability_text(result, _title(args))
+    _emit(args, text)
+    if args.plot:
+        from ..plots.stability import plot_modes
+        plot_modes(result.modes, args.plot, stability=result, title=_title(args))
+    return 0
+
+
+def _ranges(rs, fmt):
+    return ", ".join(f"{fmt.format(a)}..{fmt.format(b)}" for a, b in rs) or "-"
+
+
+def stability_text(result, title):
+    """Human-readable report: critical speeds, then ranges overall and per mode."""
+    from ..output import table
+
+    v = result.modes.speeds
+    lines = [title, f"speeds {v[0]:g}..{v[-1]:g} m/s ({len(v)} points); marginal: |lambda| < "
+             f"{result.marginal:g} rad/s", ""]
+    for label, crossings in result.crossings.items():
+        text = ", ".join(f"{s:.12f} ({d})" for s, d in crossings) or "-"
+        lines.append(f"{label + ' Re=0 at (m/s):':26s} {text}")
+    rows = [["all modes"] + [_ranges(result.ranges[c][k], f) for c in ("strict", "marginal")
+                             for k, f in (("exact", "{:.6f}"), ("grid", "{:.2f}"))]]
+    for label, r in result.mode_ranges.items():
+        rows.append([label] + [_ranges(r[c][k], f) for c in ("strict", "marginal")
+                               for k, f in (("exact", "{:.6f}"), ("grid", "{:.2f}"))])
+    lines += ["", "stable speed ranges (m/s)",
+              table(["", "strict exact", "strict grid", "marginal exact", "marginal grid"], rows)]
+    return "\n".join(lines)

@@ -1,0 +1,88 @@
+"""Stability figures: the thesis's Fig. 4-4 layout and many-curve comparisons (Figs. 4-6, 5-2..5-15)."""
+
+import numpy as np
+
+from ..stability.labels import LABELS
+
+MODE_COLOURS = {"weave 1": "tab:blue", "weave 2": "tab:cyan", "capsize": "tab:red", "caster": "tab:green"}
+MODE_STYLES = {"weave 1": "-", "weave 2": "--", "capsize": "-.", "caster": ":"}
+
+
+def _figure(nrows, ncols, size):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    return plt.subplots(nrows, ncols, figsize=size, sharex=True, squeeze=False)
+
+
+def _save(fig, path):
+    from io import BytesIO
+
+    from ..output import write_atomic
+    buf = BytesIO()
+    fig.savefig(buf, format=str(path).rsplit(".", 1)[-1].lower(), dpi=150)
+    write_atomic(path, buf.getvalue())
+    import matplotlib.pyplot as plt
+    plt.close(fig)
+
+
+def _shade(ax, ranges, colour, label):
+    for i, (a, b) in enumerate(ranges):
+        ax.axvspan(a, b, color=colour, alpha=0.15, lw=0, label=label if i == 0 else None)
+
+
+def plot_modes(modes, path, stability=None, title=""):
+    """Real and imaginary parts (1/s), natural frequency (rad/s) and damping ratio against speed.
+
+    One colour per labelled mode; with a :class:`~bikemass.stability.analysis.Stability`
+    the strictly stable speeds are shaded green and the marginally stable ones grey.
+    """
+    fig, axes = _figure(2, 2, (11, 7.5))
+    panels = ((axes[0, 0], lambda z: z.real, "real part (1/s)"),
+              (axes[0, 1], lambda z: z.imag, "imaginary part (rad/s)"),
+              (axes[1, 0], np.abs, "natural frequency (rad/s)"),
+              (axes[1, 1], lambda z: -z.real / np.where(np.abs(z) > 0, np.abs(z), np.nan), "damping ratio"))
+    v = modes.speeds
+    for ax, part, ylabel in panels:
+        for label in LABELS:
+            ax.plot(v, part(modes[label]), MODE_STYLES[label], color=MODE_COLOURS[label], label=label)
+        if stability is not None:
+            _shade(ax, stability.ranges["marginal"]["exact"], "0.5", "marginally stable")
+            _shade(ax, stability.ranges["strict"]["exact"], "tab:green", "stable")
+        ax.axhline(0, color="k", lw=0.6)
+        ax.set_ylabel(ylabel)
+        ax.grid(alpha=0.3)
+    axes[0, 0].legend(fontsize=8, loc="best")
+    for ax in axes[1]:
+        ax.set_xlabel("speed (m/s)")
+    fig.suptitle(title)
+    fig.tight_layout()
+    _save(fig, path)
+
+
+def plot_comparison(curves, path, part="real", title=""):
+    """Many bicycles on one axis: ``curves`` = ``{name: Modes}``; one colour per name, one line style per mode.
+
+    ``part``: ``real`` (1/s), ``imag`` (rad/s), ``frequency`` (rad/s) or ``damping``.
+    """
+    fig, axes = _figure(1, 1, (9, 5.5))
+    ax = axes[0, 0]
+    get = {"real": lambda z: z.real, "imag": lambda z: z.imag, "frequency": np.abs,
+           "damping": lambda z: -z.real / np.where(np.abs(z) > 0, np.abs(z), np.nan)}[part]
+    from matplotlib.lines import Line2D
+
+    colours = [f"C{i % 10}" for i in range(len(curves))]
+    for colour, (name, modes) in zip(colours, curves.items()):
+        for label in LABELS:
+            ax.plot(modes.speeds, get(modes[label]), MODE_STYLES[label], color=colour)
+    handles = [Line2D([], [], color=c, label=name) for c, name in zip(colours, curves)]
+    handles += [Line2D([], [], color="k", ls=MODE_STYLES[label], label=label) for label in LABELS]
+    ax.axhline(0, color="k", lw=0.6)
+    ax.set_xlabel("speed (m/s)")
+    ax.set_ylabel({"real": "real part (1/s)", "imag": "imaginary part (rad/s)",
+                   "frequency": "natural frequency (rad/s)", "damping": "damping ratio"}[part])
+    ax.grid(alpha=0.3)
+    ax.legend(handles=handles, fontsize=8, ncol=2, loc="best")
+    ax.set_title(title)
+    fig.tight_layout()
+    _save(fig, path)

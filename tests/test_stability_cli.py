@@ -1,0 +1,108 @@
+"""``bikemass eig`` / ``bikemass stability`` on parameter files, stiffness files and bad input."""
+
+import json
+
+import numpy as np
+import pytest
+
+from bikemass.cli import main
+from bikemass.paths import frames_dir
+from bikemass.stability import canonical_matrices, follow_modes, speed_grid
+from bikemass.plots.stability import plot_comparison
+from thesis_sets import RIDERS, thesis_set
+
+BENCHMARK = str(frames_dir() / "benchmark.yaml")
+
+
+def run(capsys, *argv):
+    code = main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_stability_json_schema_and_meijaard_speeds(capsys):
+    code, out, _ = run(capsys, "stability", BENCHMARK, "--format", "json")
+    assert code == 0
+    d = json.loads(out)
+    assert d["weave_speeds"] == [pytest.approx(4.29238253634110, abs=1e-9)]
+    assert d["capsize_speeds"] == [pytest.approx(6.02426201538838, abs=1e-9)]
+    assert d["ranges"]["strict"]["grid"] == [[4.3, 6.0]]
+    assert d["ranges"]["marginal"]["grid"] == [[4.3, 30.0]]
+    assert d["modes"]["capsize"]["strict"]["grid"] == [[0.0, 6.0]]
+    assert set(d["modes"]) == {"weave 1", "weave 2", "capsize", "caster"}
+
+
+def test_eig_json_table_and_csv(capsys):
+    code, out, _ = run(capsys, "eig", BENCHMARK, "--speeds", "0:10:1", "--format", "json")
+    d = json.loads(out)
+    assert code == 0 and d["speeds"] == [float(v) for v in range(11)]
+    caster = next(m for m in d["modes"] if m["label"] == "caster")["eigenvalues"]
+    assert caster[10] == [pytest.approx(-24.62459635017404, abs=1e-12), 0.0]   # Meijaard 2007, Table 2
+    code, out, _ = run(capsys, "eig", BENCHMARK, "--speeds", "0:1:0.5", "--format", "csv")
+    lines = out.splitlines()
+    assert lines[0].startswith("speed,weave_1_re,weave_1_im") and len(lines) == 4
+    assert float(lines[1].split(",")[1]) == pytest.approx(3.13164324790656, abs=1e-12)
+    code, out, _ = run(capsys, "eig", BENCHMARK, "--speeds", "0:1:1")
+    assert code == 0 and "capsize re" in out and "-3.131643" in out
+
+
+def test_stiffness_file_changes_the_result_and_plots_are_written(capsys, tmp_path):
+    stiff = tmp_path / "s.yaml"
+    stiff.write_text("S: [[6538.4, 1234.9], [1234.9, 3622.1]]\n")
+    png = tmp_path / "eig.png"
+    code, out, _ = run(capsys, "stability", BENCHMARK, "--stiffness", str(stiff), "--format", "json",
+                       "--plot", str(png))
+    assert code == 0 and png.stat().st_size > 10_000
+    flexible = json.loads(out)["weave_speeds"][0]
+    assert 4.29238253634110 < flexible < 6                    # a softer frame delays weave stability
+    out_file = tmp_path / "eig.json"
+    assert run(capsys, "eig", BENCHMARK, "--speeds", "0:2:1", "--format", "json",
+               "-o", str(out_file))[0] == 0
+    assert json.loads(out_file.read_text())["speeds"] == [0.0, 1.0, 2.0]
+
+
+def test_comparison_plot(tmp_path):
+    curves = {r: follow_modes(canonical_matrices(thesis_set("Jamis", r)), speed_grid(0, 10, 0.1))
+              for r in ("Benchmark",) + RIDERS}
+    path = tmp_path / "riders.png"
+    plot_comparison(curves, path, title="Jamis, all riders")
+    assert path.stat().st_size > 10_000
+
+
+@pytest.mark.parametrize("argv,needle", [
+    (["eig", BENCHMARK, "--speeds", "0:x"], "--speeds"),
+    (["eig", BENCHMARK, "--speeds", "5:1:0.1"], "START:STOP:STEP"),
+    (["stability", BENCHMARK, "--marginal", "-1"], "--marginal"),
+    (["eig", BENCHMARK, "--plot", "out.txt"], ".png"),
+    (["stability", "no-such-bike"], "no-such-bike"),
+])
+def test_bad_input_is_one_line_exit_2(capsys, argv, needle):
+    code, out, err = run(capsys, *argv)
+    assert code == 2 and out == "" and len(err.strip().splitlines()) == 1 and needle in err
+    assert "Traceback" not in err
+
+
+def test_bad_stiffness_file(capsys, tmp_path):
+    bad = tmp_path / "s.yaml"
+    bad.write_text("S: [[1, 2], [2, 1]]\n")      # not positive definite
+    code, _, err = run(capsys, "stability", BENCHMARK, "--stiffness", str(bad))
+    assert code == 2 and "S" in err and "positive definite" in err
+
+
+@pytest.mark.parametrize("bike,rider,stiffness,table,material,row", [
+    ("jamis-thesis", "relaxed-thesis", "steel", "T5_1", "Steel", "Relaxed"),
+    ("cargo-loaded-thesis", "aero-tuck-thesis", "titanium", "T5_3", "Titanium", "Aero Tuck"),
+])
+def test_named_thesis_bicycles_reproduce_chapter_5_rows(capsys, bike, rider, stiffness, table,
+                                                        material, row):
+    from thesis_sets import TABLES
+    code, out, _ = run(capsys, "stability", bike, "--rider", rider, "--combine", "thesis",
+                       "--stiffness", stiffness, "--format", "json")
+    assert code == 0
+    d = json.loads(out)["ranges"]
+    got = []
+    for criterion in ("strict", "marginal"):
+        grid = d[criterion]["grid"]
+        got += [grid[0][0], grid[0][1], grid[0][1] - grid[0][0]] if grid else [None] * 3
+    for g, printed in zip(got, TABLES[table][material][row]):
+        assert (g is None and printed is None) or abs(g - printed) <= 0.05 + 1e-9
