@@ -15,10 +15,11 @@ COMBINE_CHOICES = ("exact", "thesis")
 """Rider + rear frame: 'exact' = parallel-axis theorem; 'thesis' = inertias added (Eq. 3.6)."""
 
 
-def parameters(bike, rider=None, combine="exact"):
-    """Benchmark parameter set for ``bike`` (+ ``rider``), see the module docstring."""
+def parameters(bike, rider=None, combine="exact", method="mesh"):
+    """Benchmark parameter set for ``bike`` (+ ``rider``), see the module docstring;
+    ``method`` mesh|exact: mass properties from trimesh meshes or closed-form solids."""
     from .bicycle import bicycle_parameters
-    return bicycle_parameters(bicycle(bike), load_rider(rider), combine)
+    return bicycle_parameters(bicycle(bike), load_rider(rider), combine, method)
 
 
 def bicycle(bike):

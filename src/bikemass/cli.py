@@ -7,8 +7,10 @@ import sys
 from .errors import InputError
 
 COMMAND_MODULES = (
+    "bicycle",
     "rider",
     "frame",
+    "stability",
 )
 """Modules under ``bikemass.commands`` whose ``register(subparsers)`` adds sub-commands."""
 

@@ -31,13 +31,7 @@ def bicycle_parameters(bicycle, rider=None, combine="exact", method="mesh"):
         raise ValueError(f"combine must be one of {', '.join(COMBINE_CHOICES)}, got {combine!r}")
     if rider is None and bicycle.published is not None:
         return bicycle.published
-    bodies = bicycle.bodies(method)
-    if rider is not None:
-        merge = combine_exact if combine == "exact" else combine_without_parallel_axis
-        for body in ("rear_frame", "front_frame"):
-            parts = [p for p in rider.parts if p.body == body]
-            if parts:
-                bodies[body] = merge((bodies[body], body_properties(parts, method)))
+    bodies = combined_bodies(bicycle, rider, combine, method)
     g = bicycle.geometry
     R, B, H, F = (bodies[b] for b in ("rear_wheel", "rear_frame", "front_frame", "front_wheel"))
     _check_wheel(R, g.rear_axle, "rear")
@@ -50,6 +44,20 @@ def bicycle_parameters(bicycle, rider=None, combine="exact", method="mesh"):
         xH=H.com[0], zH=H.com[2], mH=H.mass,
         IHxx=H.inertia[0, 0], IHyy=H.inertia[1, 1], IHzz=H.inertia[2, 2], IHxz=H.inertia[0, 2],
         rF=g.front_wheel_radius, mF=F.mass, IFxx=F.inertia[0, 0], IFyy=F.inertia[1, 1])
+
+
+def combined_bodies(bicycle, rider=None, combine="exact", method="mesh"):
+    """``{body: MassProperties}`` of the four bodies with the rider's parts merged (see module doc)."""
+    if combine not in COMBINE_CHOICES:
+        raise ValueError(f"combine must be one of {', '.join(COMBINE_CHOICES)}, got {combine!r}")
+    bodies = bicycle.bodies(method)
+    if rider is not None:
+        merge = combine_exact if combine == "exact" else combine_without_parallel_axis
+        for body in ("rear_frame", "front_frame"):
+            parts = [p for p in rider.parts if p.body == body]
+            if parts:
+                bodies[body] = merge((bodies[body], body_properties(parts, method)))
+    return bodies
 
 
 def _check_wheel(props, axle, which):

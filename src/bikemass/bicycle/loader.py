@@ -20,7 +20,7 @@ from .components import materials_lookup, read_component, read_wheel
 from .geometry import Geometry, check_keypoints, read_geometry
 from .model import Bicycle
 
-TOP_KEYS = ("name", "source", "description", "geometry", "keypoints", "material", "sections", "tubes",
+TOP_KEYS = ("name", "base", "source", "description", "geometry", "keypoints", "material", "sections", "tubes",
             "structure", "components", "loads", "wheels", "stiffness")
 
 
@@ -30,7 +30,23 @@ def load_bicycle(name_or_path):
     node = load_yaml(path)
     if is_parameter_file(node):
         return bicycle_from_parameters(from_node(node), node.get("name", path.stem).string(), str(path))
-    return read_bicycle(node, str(path))
+    return read_bicycle(_with_base(node), str(path))
+
+
+def _with_base(node, seen=()):
+    """``node`` on top of its ``base`` bicycle: the base's top-level keys, replaced by this file's.
+
+    The base file is first read on its own, so its errors name the base file.
+    """
+    if not node.has("base"):
+        return node
+    path = resolve(node["base"].string(), frames_dir(), "bicycle")
+    if path.resolve() in seen:
+        node.fail("a base bicycle that does not lead back to this file", "base")
+    base = _with_base(load_yaml(path), seen + (path.resolve(),))
+    read_bicycle(base, str(path))
+    merged = {**base.mapping(), **{k: v for k, v in node.mapping().items() if k != "base"}}
+    return Node(merged, node.source, node.key)
 
 
 def read_bicycle(node, source):

@@ -1,0 +1,106 @@
+"""``bikemass params``, ``bikemass draw`` and ``bikemass export``: a bicycle (+ rider) as
+benchmark parameters, a side-view drawing, or a 3D model."""
+
+from pathlib import Path
+
+PARAM_FORMATS = ("yaml", "json", "bicycleparameters")
+MODEL_FORMATS = ("glb", "stl", "obj")
+
+
+def _bicycles():
+    from ..paths import available, frames_dir
+    return ", ".join(n for n in available(frames_dir()) if n != "materials")
+
+
+def register(sub):
+    shipped = _bicycles()
+    params = sub.add_parser(
+        "params", help="benchmark parameters (Meijaard et al. 2007) of a bicycle with a rider",
+        description="The 26 benchmark parameters (SI, radians) of BIKE with an optional rider. "
+                    f"BIKE: a shipped bicycle ({shipped}), a bicycle YAML file (docs/bicycles.md) "
+                    "or a benchmark parameter file (YAML/JSON with the 26 names).")
+    _bike_and_rider(params, rider_default="none")
+    params.add_argument("--combine", choices=("exact", "thesis"), default="exact",
+                        help="rider + frame: parallel-axis theorem (exact, default) or the thesis's "
+                             "Eq. 3.6 (inertias added without parallel-axis terms)")
+    params.add_argument("--method", choices=("mesh", "exact"), default="mesh",
+                        help="mass properties from trimesh meshes (default) or closed-form solids")
+    params.add_argument("--format", choices=PARAM_FORMATS, default="yaml",
+                        help="yaml (default), json, or the BicycleParameters <Name>Benchmark.txt file")
+    params.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of stdout")
+    params.set_defaults(run=run_params)
+
+    draw = sub.add_parser("draw", help="side view: parts, body centres of mass, inertia ellipses",
+                          description="Side view (x-z plane) of BIKE with an optional rider: every part's "
+                                      "outline, each body's centre of mass and its ellipse of gyration; "
+                                      "axes in metres, height up.")
+    _bike_and_rider(draw, rider_default="none")
+    draw.add_argument("-o", "--output", metavar="FILE", required=True, help="image file (.png, .pdf, .svg)")
+    draw.set_defaults(run=run_draw)
+
+    export = sub.add_parser("export", help="the assembled 3D model (glb, stl, obj)",
+                            description="Write the assembled 3D model of BIKE (+ rider) in the benchmark "
+                                        "frame (x forward, y right, z down, metres); lumped bodies appear "
+                                        "as their equivalent uniform ellipsoids.")
+    _bike_and_rider(export, rider_default="none")
+    export.add_argument("-o", "--output", metavar="FILE", required=True,
+                        help="model file; the format follows the suffix (.glb, .stl, .obj)")
+    export.set_defaults(run=run_export)
+
+
+def _bike_and_rider(p, rider_default):
+    p.add_argument("bike", metavar="BIKE", help="shipped bicycle name, bicycle YAML or parameter file")
+    p.add_argument("--rider", metavar="POSE", default=rider_default,
+                   help="rider pose name or pose YAML file, or 'none' (default none)")
+
+
+def run_params(args):
+    from .. import catalog
+    from ..exporters import format_parameters
+    from ..output import write_atomic
+
+    params = catalog.parameters(args.bike, args.rider, args.combine, args.method)
+    title = f"{args.bike} with rider {args.rider} (combine {args.combine})"
+    text = format_parameters(params, args.format, title)
+    if args.output:
+        write_atomic(args.output, text)
+    else:
+        print(text, end="")
+    return 0
+
+
+def run_draw(args):
+    from .. import catalog
+    from ..bicycle.drawing import draw_side_view
+    from ..errors import InputError
+
+    if Path(args.output).suffix.lower() not in (".png", ".pdf", ".svg"):
+        raise InputError(args.output, "(file)", "an image file name ending in .png, .pdf or .svg")
+    bicycle, rider = catalog.bicycle(args.bike), catalog.load_rider(args.rider)
+    title = bicycle.name + (f" + rider {rider.name}" if rider is not None else "")
+    _write_figure(draw_side_view(bicycle, rider, title=title), args.output)
+    return 0
+
+
+def _write_figure(fig, path):
+    import io
+
+    from ..output import write_atomic
+
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format=Path(path).suffix[1:].lower(), dpi=150, bbox_inches="tight")
+    write_atomic(path, buffer.getvalue())
+
+
+def run_export(args):
+    from .. import catalog
+    from ..bicycle.scene import build_scene, export_scene
+    from ..errors import InputError
+    from ..output import write_atomic
+
+    fmt = Path(args.output).suffix.lower().lstrip(".")
+    if fmt not in MODEL_FORMATS:
+        raise InputError(args.output, "(file)", "a model file name ending in .glb, .stl or .obj")
+    bicycle, rider = catalog.bicycle(args.bike), catalog.load_rider(args.rider)
+    write_atomic(args.output, export_scene(build_scene(bicycle, rider), fmt))
+    return 0
