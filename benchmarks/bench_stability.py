@@ -1,0 +1,55 @@
+"""Time a 601-speed sweep (0..30 m/s, step 0.05) of the benchmark bicycle: bikemass vs BicycleParameters.
+
+Run by hand:  python benchmarks/bench_stability.py
+Both libraries run in this process on the same parameters; best of several repeats.
+"""
+
+import timeit
+
+import numpy as np
+
+from bikemass.catalog import parameters
+from bikemass.stability import canonical_matrices, eigen_sweep, follow_modes, speed_grid, stability
+
+
+def best(fn, number):
+    return min(timeit.repeat(fn, number=number, repeat=7)) / number
+
+
+def main():
+    from bicycleparameters.models import Meijaard2007Model, sort_eigenmodes
+    from bicycleparameters.parameter_sets import Meijaard2007ParameterSet
+
+    p = parameters("benchmark")
+    speeds = speed_grid()                       # 601 speeds
+    peer = Meijaard2007Model(Meijaard2007ParameterSet({**p.to_dict(), "v": 0.0}, True))
+
+    def ours_eig():
+        return eigen_sweep(canonical_matrices(p), speeds)
+
+    def ours_tracked():
+        return follow_modes(canonical_matrices(p), speeds)
+
+    def peer_eig():
+        return peer.calc_eigen(v=speeds)
+
+    def peer_tracked():
+        return sort_eigenmodes(*peer.calc_eigen(v=speeds))
+
+    # same numbers first
+    ref = np.sort_complex(np.round(peer_eig()[0], 9))
+    got = np.sort_complex(np.round(ours_eig().eigenvalues, 9))
+    assert np.allclose(got, ref, atol=1e-8), "eigenvalues differ"
+
+    rows = [("eigenvalues + eigenvectors", best(ours_eig, 50), best(peer_eig, 10)),
+            ("... + modes tracked (and labelled)", best(ours_tracked, 50), best(peer_tracked, 5))]
+    print(f"601-speed sweep, benchmark bicycle ({len(speeds)} speeds)")
+    print(f"{'':38s} {'bikemass':>10s} {'BicycleParameters':>18s} {'ratio':>7s}")
+    for name, ours, theirs in rows:
+        print(f"{name:38s} {ours * 1e3:8.2f}ms {theirs * 1e3:16.2f}ms {theirs / ours:6.1f}x")
+    full = best(lambda: stability(canonical_matrices(p)), 5)
+    print(f"full stability analysis (crossings, exact + grid ranges): {full * 1e3:.1f} ms")
+
+
+if __name__ == "__main__":
+    main()
