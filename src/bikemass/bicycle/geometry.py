@@ -104,7 +104,7 @@ def check_keypoints(geometry, node, keypoints, head_tube=None, dropouts=None):
         for key in head_tube:
             miss = geometry.distance_from_steer_axis(keypoints[key])
             if miss > STEER_AXIS_TOLERANCE:
-                ground = bottom[0] + bottom[2] * up[0] / up[2]
+                ground = bottom[0] - bottom[2] * up[0] / up[2]
                 node.fail(f"a trail putting the steer axis through the head-tube keypoints "
                           f"(they meet the ground at x = {ground:.4f} m, so c = "
                           f"{ground - geometry.wheelbase:.4f} m; keypoint {key} is "

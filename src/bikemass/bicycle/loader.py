@@ -84,13 +84,13 @@ def _read_sections(node):
             s.check_keys(required=("side", "wall"), optional=("note",))
             size, wall = s["side"].number(positive=True), s["wall"].number(positive=True)
             if wall >= size / 2:
-                s.fail(f"a wall thinner than half the side {size} m, got {wall} m", "wall")
+                s.fail(f"a wall thinner than half the side {size:.6g} m, got {wall:.6g} m", "wall")
             sections[name] = SquareSection(size, wall)
         else:
             s.check_keys(required=("outer_diameter", "wall"), optional=("note",))
             size, wall = s["outer_diameter"].number(positive=True), s["wall"].number(positive=True)
             if wall > size / 2:
-                s.fail(f"a wall no thicker than the radius {size / 2} m, got {wall} m", "wall")
+                s.fail(f"a wall no thicker than the radius {size / 2:.6g} m, got {wall:.6g} m", "wall")
             sections[name] = RoundSection(size, wall)
     return sections
 
