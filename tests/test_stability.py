@@ -82,7 +82,9 @@ def test_bicycleparameters_gives_same_matrices_and_eigenvalues_to_1e_10():
     models = pytest.importorskip("bicycleparameters.models")
     psets = pytest.importorskip("bicycleparameters.parameter_sets")
     speeds = np.linspace(0, 20, 41)
-    for name, p, _ in sets():
+    for name, p, S in sets():
+        if S is not None:       # BicycleParameters has no flexible frame
+            continue
         peer = models.Meijaard2007Model(psets.Meijaard2007ParameterSet({**p.to_dict(), "v": 0.0}, True))
         ours = canonical_matrices(p)
         for got, ref in zip((ours.M, ours.C1, ours.K0, ours.K2), peer.form_reduced_canonical_matrices()):

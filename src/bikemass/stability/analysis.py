@@ -7,7 +7,7 @@ import numpy as np
 from .critical import mode_crossings
 from .criteria import MARGINAL_THRESHOLD
 from .labels import LABELS
-from .modes import follow_modes
+from .modes import Modes, follow_modes
 from .ranges import mode_ranges, overall_ranges
 
 DEFAULT_SPEEDS = (0.0, 30.0, 0.05)
@@ -38,7 +38,7 @@ class Stability:
     or ``"marginal"`` (modulus below ``marginal`` rad/s also counts).
     """
 
-    modes: object
+    modes: Modes
     marginal: float
     crossings: dict
     ranges: dict

@@ -16,12 +16,12 @@ XTOL = 1e-13
 """Absolute speed tolerance (m/s) of the root finder."""
 
 
-def mode_margin(matrices, speeds, values, k, marginal=None):
-    """Function ``v -> margin`` of the mode whose tracked values are ``values`` in cell ``[k, k+1]``."""
-    v0, v1 = speeds[k], speeds[k + 1]
+def mode_margin(matrices, speeds, values, i, j, marginal=None):
+    """Function ``v -> margin`` on ``[speeds[i], speeds[j]]`` of the mode whose tracked values are ``values``."""
+    v0, v1 = speeds[i], speeds[j]
 
     def f(v):
-        guess = values[k] + (values[k + 1] - values[k]) * (v - v0) / (v1 - v0)
+        guess = values[i] + (values[j] - values[i]) * (v - v0) / (v1 - v0)
         roots = eigenvalues_at(matrices, v)
         return float(margin(roots[np.argmin(np.abs(roots - guess))], marginal))
     return f
@@ -57,8 +57,6 @@ def mode_crossings(matrices, modes, label):
     v, values = modes.speeds, modes[label]
     out = []
     for i, j in sign_changes(values.real):
-        # the crossing lies in one grid cell of [i, j]; find it
-        k = i + int(np.flatnonzero(np.sign(values.real[i + 1:j + 1]) != np.sign(values.real[i]))[0])
-        speed = root_in(mode_margin(matrices, v, values, k), v[k], v[k + 1])
+        speed = root_in(mode_margin(matrices, v, values, i, j), v[i], v[j])
         out.append((speed, "stabilising" if values.real[i] > 0 else "destabilising"))
     return out

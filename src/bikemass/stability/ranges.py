@@ -48,5 +48,5 @@ def mode_ranges(matrices, modes, label, marginal=None):
     values = modes[label]
     mask = is_stable(values, marginal)
     return {"exact": exact_ranges(modes.speeds, mask,
-                                  lambda k: mode_margin(matrices, modes.speeds, values, k, marginal)),
+                                  lambda k: mode_margin(matrices, modes.speeds, values, k, k + 1, marginal)),
             "grid": grid_ranges(modes.speeds, mask)}
