@@ -20,8 +20,9 @@ S is then built from ``K_r`` in two ways:
     rotated so that z' = s, moment about z').
 The condensed form holds the steer rotation while rolling and the roll while
 steering; the thesis lets them relax in ``K_pp`` and ``K_dd`` but not in
-``K_pd``, so its matrix is not the stiffness of any one energy: ``K_pp`` is
-about 2.5 % lower than the condensed value, ``K_dd`` about 0.1 %, ``K_pd`` equal
+``K_pd``, so its matrix is not the stiffness of any one energy.  ``K_pd`` is
+the same in both; for the Jamis the thesis's ``K_pp`` is 2.5 % and ``K_dd`` 0.1 %
+below the condensed values, for the more strongly coupled Cargo 2.7 % and 14 %
 (see docs/fe.md).
 """
 
