@@ -141,3 +141,12 @@ def test_base_file_errors_name_the_base(capsys, tmp_path):
     child.write_text(f"base: {base}\nname: child\n")
     code, _, err = run(capsys, "params", child)
     assert code == 2 and str(base) in err and "sections.seat_tube.wall" in err
+
+
+def test_compare_table_lists_every_parameter_with_its_difference(capsys):
+    code, out, _ = run(capsys, "params", "jamis", "--compare", "jamis-thesis", "--method", "exact")
+    assert code == 0
+    rows = {line.split()[0]: line.split() for line in out.splitlines()[2:]}
+    assert len(rows) == 26
+    mB = load_bicycle("jamis").bodies("exact")["rear_frame"].mass
+    assert rows["mB"][-5:] == [f"{mB:.4f}", "4.6150", f"{mB - 4.615:.4f}", f"{100 * (mB / 4.615 - 1):+.1f}", "%"]

@@ -4,6 +4,8 @@ The file format is described in docs/bicycles.md.  Every problem is reported as
 one :class:`~bikemass.errors.InputError` naming the file and the key.
 """
 
+from pathlib import Path
+
 import numpy as np
 
 from ..config import Node, load_yaml
@@ -33,6 +35,14 @@ def load_bicycle(name_or_path):
     return read_bicycle(_with_base(node), str(path))
 
 
+def _base_path(name, folder):
+    """A base bicycle: a file next to the referring file (``name`` or ``name.yaml``), else as any BIKE."""
+    for candidate in (folder / name, folder / f"{name.replace('-', '_')}.yaml"):
+        if candidate.is_file():
+            return candidate
+    return resolve(name, frames_dir(), "bicycle")
+
+
 def _with_base(node, seen=()):
     """``node`` on top of its ``base`` bicycle: the base's top-level keys, replaced by this file's.
 
@@ -40,7 +50,7 @@ def _with_base(node, seen=()):
     """
     if not node.has("base"):
         return node
-    path = resolve(node["base"].string(), frames_dir(), "bicycle")
+    path = _base_path(node["base"].string(), Path(node.source).parent)
     if path.resolve() in seen:
         node.fail("a base bicycle that does not lead back to this file", "base")
     base = _with_base(load_yaml(path), seen + (path.resolve(),))

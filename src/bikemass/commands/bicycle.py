@@ -27,6 +27,9 @@ def register(sub):
                         help="mass properties from trimesh meshes (default) or closed-form solids")
     params.add_argument("--format", choices=PARAM_FORMATS, default="yaml",
                         help="yaml (default), json, or the BicycleParameters <Name>Benchmark.txt file")
+    params.add_argument("--compare", metavar="BIKE2",
+                        help="print a table of every parameter beside BIKE2's (e.g. jamis vs "
+                             "jamis-thesis, the published values) with the differences")
     params.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of stdout")
     params.set_defaults(run=run_params)
 
@@ -60,13 +63,32 @@ def run_params(args):
     from ..output import write_atomic
 
     params = catalog.parameters(args.bike, args.rider, args.combine, args.method)
-    title = f"{args.bike} with rider {args.rider} (combine {args.combine})"
-    text = format_parameters(params, args.format, title)
+    if args.compare:
+        reference = catalog.parameters(args.compare, args.rider, args.combine, args.method)
+        text = comparison_table(params, reference, args.bike, args.compare)
+    else:
+        title = f"{args.bike} with rider {args.rider} (combine {args.combine})"
+        text = format_parameters(params, args.format, title)
     if args.output:
         write_atomic(args.output, text)
     else:
         print(text, end="")
     return 0
+
+
+def comparison_table(params, reference, name, reference_name):
+    """Plain-text table: each parameter of ``params`` beside ``reference`` and their difference."""
+    from ..output import table
+    from ..parameters import DESCRIPTIONS
+
+    ours, theirs = params.to_dict(), reference.to_dict()
+    rows = []
+    for key, description in DESCRIPTIONS.items():
+        a, b = ours[key], theirs[key]
+        relative = f"{100 * (a - b) / abs(b):+.1f} %" if b else "-"
+        rows.append([key, description, a, b, a - b, relative])
+    return table(["parameter", "meaning", name, reference_name, "difference", "relative"], rows,
+                 floatfmt="{:.4f}")
 
 
 def run_draw(args):
