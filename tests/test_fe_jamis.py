@@ -82,3 +82,14 @@ def test_free_free_skips_exactly_the_rigid_body_modes():
     assert np.all(every[:6] < 1e-3 * every[6])
     np.testing.assert_allclose(frame_modes(structure, "free", 4, element_size=0.05).frequencies_hz,
                                every[6:10], rtol=1e-8)
+
+
+def test_shipped_jamis_yaml_builds_the_same_beam_model():
+    """frames/jamis.yaml (geometry-driven bicycle) must give the thesis model's S and modes."""
+    from bikemass.bicycle import load_bicycle
+    shipped = load_bicycle("jamis").structure
+    for procedure in ("thesis", "condensed"):
+        np.testing.assert_allclose(equivalent_stiffness(shipped, procedure=procedure),
+                                   equivalent_stiffness(jamis_structure(), procedure=procedure), rtol=1e-9)
+    np.testing.assert_allclose(frame_modes(shipped, "fix-rear", 4).frequencies_hz,
+                               frame_modes(jamis_structure(), "fix-rear", 4).frequencies_hz, rtol=1e-9)
