@@ -20,7 +20,7 @@ root is the less damped one).
 import numpy as np
 
 LABELS = ("weave 1", "weave 2", "capsize", "caster")
-SPLIT_RANK = ("weave 1", "weave 2", "capsize", "caster")
+SPLIT_RANK = LABELS
 """After a split the earlier label takes the root with the larger real part."""
 
 _PAIRINGS = (((0, 1), (2, 3)), ((0, 2), (1, 3)), ((0, 3), (1, 2)))

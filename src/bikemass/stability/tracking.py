@@ -13,8 +13,12 @@ where eigenvalues cross (and, at ``v = 0``, between a root and its mirror image
 merge into a complex pair or a pair splits, both partners are equally good: which
 one continues which is settled by :mod:`~bikemass.stability.labels`.
 
-The optimal assignment of 4 eigenvalues is found for all speed steps at once by
-evaluating the 24 permutations (the same optimum ``scipy.optimize.linear_sum_assignment``
+Roots of a real polynomial move in complex-conjugate pairs, so a permutation that
+breaks a pair (one member continuing as a real root while the other stays complex, or
+a member changing partner) is penalised: otherwise, on a coarse grid, a pair passing
+close to a real root can trade a member with it.  The optimal assignment of 4
+eigenvalues is found for all speed steps at once by evaluating the 24 permutations
+(without broken pairs it is the optimum ``scipy.optimize.linear_sum_assignment``
 finds one step at a time).
 """
 
@@ -33,11 +37,40 @@ def step_costs(sweep):
     return dist / scale + (1.0 - mac)
 
 
-def best_permutations(costs):
-    """For each step, ``perm`` (n-1, m) minimising ``sum_i costs[k, i, perm[k, i]]``."""
+PAIR_PENALTY = 10.0
+"""Cost added per broken conjugate pair (the largest real cost is about 3)."""
+
+
+def partners(values):
+    """Index (n, m) of each root's complex-conjugate partner; a real root is its own partner."""
+    d = np.abs(values[:, :, None] - values[:, None, :].conj())
+    d[:, np.arange(values.shape[1]), np.arange(values.shape[1])] = np.inf
+    return np.where(values.imag == 0, np.arange(values.shape[1]), np.argmin(d, axis=2))
+
+
+def pair_violations(values, perms):
+    """Broken conjugate pairs (n-1, len(perms)) of each permutation at each step.
+
+    The roots of a real polynomial move in conjugate pairs: while ``i`` and its partner
+    stay complex their images must be partners again; a pair may only split into two
+    real roots, and real roots may only merge with each other.
+    """
+    part = partners(values)
+    cplx = values.imag != 0
+    k = np.arange(len(values) - 1)[:, None, None]
+    image = perms[None, :, :]                                   # (1, P, m): where i goes
+    image_of_partner = perms[np.arange(len(perms))[None, :, None], part[:-1][:, None, :]]
+    partner_of_image = part[1:][k, image]
+    broken = cplx[:-1][:, None, :] & cplx[1:][k, image] & (partner_of_image != image_of_partner)
+    return broken.sum(axis=2)
+
+
+def best_permutations(costs, values):
+    """For each step, ``perm`` (n-1, m) minimising ``sum_i costs[k, i, perm[k, i]]`` plus
+    :data:`PAIR_PENALTY` per conjugate pair it breaks (:func:`pair_violations`)."""
     m = costs.shape[-1]
     perms = np.array(list(permutations(range(m))))
-    total = costs[:, np.arange(m), perms].sum(axis=-1)          # (n-1, m!)
+    total = costs[:, np.arange(m), perms].sum(axis=-1) + PAIR_PENALTY * pair_violations(values, perms)
     return perms[np.argmin(total, axis=1)]
 
 
@@ -47,7 +80,7 @@ def track(sweep):
     Mode ``i`` starts as column ``i`` at the first speed.
     """
     n, m = sweep.eigenvalues.shape
-    steps = best_permutations(step_costs(sweep)).tolist()
+    steps = best_permutations(step_costs(sweep), sweep.eigenvalues).tolist()
     order = [list(range(m))]
     for perm in steps:
         order.append([perm[j] for j in order[-1]])
