@@ -53,16 +53,23 @@ def pair_violations(values, perms):
 
     The roots of a real polynomial move in conjugate pairs: while ``i`` and its partner
     stay complex their images must be partners again; a pair may only split into two
-    real roots, and real roots may only merge with each other.
+    real roots, and real roots may only merge with each other.  Only the pairing
+    pattern at the two speeds matters, so each distinct pattern is evaluated once.
     """
-    part = partners(values)
-    cplx = values.imag != 0
-    k = np.arange(len(values) - 1)[:, None, None]
-    image = perms[None, :, :]                                   # (1, P, m): where i goes
-    image_of_partner = perms[np.arange(len(perms))[None, :, None], part[:-1][:, None, :]]
-    partner_of_image = part[1:][k, image]
-    broken = cplx[:-1][:, None, :] & cplx[1:][k, image] & (partner_of_image != image_of_partner)
-    return broken.sum(axis=2)
+    part = partners(values)                        # a real root is its own partner
+    m = values.shape[1]
+    both = np.hstack([part[:-1], part[1:]])
+    _, first, which = np.unique(both @ m ** np.arange(2 * m), return_index=True, return_inverse=True)
+    patterns = both[first]
+    before, after = patterns[:, None, :m], patterns[:, None, m:]        # (u, 1, m)
+    u = np.arange(len(patterns))[:, None, None]
+    image = perms[None]                                                 # (1, P, m)
+    image_of_partner = perms[np.arange(len(perms))[None, :, None], before]
+    partner_of_image = after[u, 0, image]
+    cplx_before = before != np.arange(m)
+    cplx_after = after[u, 0, image] != image
+    broken = cplx_before & cplx_after & (partner_of_image != image_of_partner)
+    return broken.sum(axis=2)[which.ravel()]
 
 
 def best_permutations(costs, values):
