@@ -164,8 +164,18 @@ def test_structures_of_the_geometry_bicycles():
     sections = {t.name: round(t.section.outer_diameter / 0.0254, 3) for t in jamis.tubes}
     assert sections["seat_stay_left"] == 0.625 and sections["chain_stay_left"] == 0.750   # THESIS_NOTES swap
     cargo = load_bicycle("cargo").structure
-    assert len(cargo.keypoints) == 31   # the 39 Table 3-10 keypoints less hoops/linkage (26-29, 36-39)
+    assert len(cargo.keypoints) == 30   # the 39 of Table 3-10 less hoops/linkage (26-29, 36-39) and 8
     assert all(t.body == "rear_frame" for t in cargo.tubes)
+
+
+def test_shipped_cargo_structure_is_the_fe_reconstruction():
+    """frames/cargo.yaml holds the Cargo members fitted to Tables 3-12/5-5 (tests/thesis_frames.py)."""
+    from thesis_frames import cargo_structure
+
+    def members(structure):
+        return {frozenset(map(tuple, (t.start.round(6), t.end.round(6)))): t.section for t in structure.tubes}
+
+    assert members(load_bicycle("cargo").structure) == members(cargo_structure())
 
 
 def test_loaded_cargo_adds_the_200_lb_box_to_the_rear_frame_only():
