@@ -19,7 +19,7 @@ from bikemass.solids import Cylinder, Lumped
 
 from thesis_sets import RIDERS, stiffness as thesis_stiffness, thesis_set
 
-REFERENCE = Path(__file__).parent / "reference"
+REFERENCE = Path(__file__).parents[1] / "reference"
 FRAMES = yaml.safe_load((REFERENCE / "frame_tables.yaml").read_text())
 TABLE_3_9 = FRAMES["table_3_9"]
 COLUMN = {"jamis": TABLE_3_9["columns"].index("jamis"), "cargo": TABLE_3_9["columns"].index("cargo")}
@@ -94,9 +94,25 @@ def test_published_stiffness(bike, column, material):
     assert catalog.stiffness(bike, "infinite") is None
 
 
-def test_no_published_stiffness_is_an_input_error():
-    with pytest.raises(InputError, match="no published stiffness"):
-        catalog.stiffness("jamis", "steel")
+def test_geometry_bicycles_get_their_stiffness_from_the_beam_model():
+    """No published S on 'jamis': the FE of its own tubes gives it (condensed by default)."""
+    from bikemass.fe import equivalent_stiffness
+    from bikemass.materials import load_materials
+    steel = load_materials()["steel"]
+    structure = catalog.bicycle("jamis").structure
+    S = catalog.stiffness("jamis", "steel")
+    assert np.array_equal(S, equivalent_stiffness(structure, steel, "condensed"))
+    thesis = catalog.stiffness("jamis", "steel", procedure="thesis")
+    assert np.array_equal(thesis, equivalent_stiffness(structure, steel, "thesis"))
+    # Table 3-12 (thesis procedure) to the FE's +0.2 %
+    assert thesis == pytest.approx(np.array([[6538.4, 1234.9], [1234.9, 3622.1]]), rel=0.005)
+    with pytest.raises(InputError, match="published stiffness"):
+        catalog.stiffness("jamis", "steel", source="published")
+
+
+def test_no_stiffness_at_all_is_an_input_error():
+    with pytest.raises(InputError, match="no published stiffness and no rear-frame structure"):
+        catalog.stiffness("benchmark", "steel")
 
 
 def test_combine_exact_and_thesis_for_jamis_thesis_with_relaxed_rider():

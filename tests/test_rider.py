@@ -1,6 +1,6 @@
 """The rider model against Williams (2015), Tables 3-2, 3-3 and 3-4.
 
-Reference numbers are read from tests/reference/rider_tables.yaml (checked
+Reference numbers are read from reference/rider_tables.yaml (checked
 transcriptions of the thesis); nothing here is computed from them in the package.
 """
 
@@ -13,7 +13,7 @@ import yaml
 from bikemass.errors import InputError
 from bikemass.rider import THESIS_POSES, load_rider, shipped_poses
 
-REF = yaml.safe_load((Path(__file__).parent / "reference" / "rider_tables.yaml").read_text())
+REF = yaml.safe_load((Path(__file__).parents[1] / "reference" / "rider_tables.yaml").read_text())
 POSE_KEYS = dict(zip(THESIS_POSES, REF["poses"]))      # "no-hands" -> "no_hands"
 PAIRED = [k for k, v in REF["table_3_2"].items() if v.get("count") == 2]
 

@@ -1,6 +1,6 @@
 """Test support: the thesis's rear-frame beam models as :class:`bikemass.tubes.Structure` objects.
 
-Jamis: built from tests/reference/frame_tables.yaml: Table 3-11 keypoints and Table 3-5
+Jamis: built from reference/frame_tables.yaml: Table 3-11 keypoints and Table 3-5
 sections, with the seat- and chain-stay diameters swapped (seat stays 0.625 in,
 chain stays 0.750 in): the thesis's FE results come out only that way (see
 THESIS_NOTES.md, "Rear frames").
@@ -19,7 +19,7 @@ from bikemass.sections import RoundSection, SquareSection
 from bikemass.tubes import Structure, Tube
 from bikemass.units import INCH
 
-REFERENCE = Path(__file__).parent / "reference" / "frame_tables.yaml"
+REFERENCE = Path(__file__).parents[1] / "reference" / "frame_tables.yaml"
 
 JAMIS_MEMBERS = (  # name, from, to, section key of Table 3-5
     ("head_tube", "4", "5", "head_tube"),

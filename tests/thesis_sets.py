@@ -1,6 +1,6 @@
 """Test support: the thesis's stability parameter sets (Williams 2015, Chapters 4-5).
 
-Built from tests/reference/bicycle_parameters.yaml: the Table 3-9 bicycles, the
+Built from reference/bicycle_parameters.yaml: the Table 3-9 bicycles, the
 Table 3-4 riders and the Table 3-12 stiffnesses, combined as the thesis did
 (Eq. 3.4-3.6): masses summed, centre of mass mass-weighted, inertias **added
 without parallel-axis terms** (THESIS_NOTES.md, "Stability").  "No Rider" is the
@@ -18,7 +18,7 @@ import yaml
 
 from bikemass.parameters import BenchmarkParameters
 
-REFERENCE = Path(__file__).parent / "reference"
+REFERENCE = Path(__file__).parents[1] / "reference"
 TABLES = yaml.safe_load((REFERENCE / "stability_tables.yaml").read_text())
 _PARAMETERS = yaml.safe_load((REFERENCE / "bicycle_parameters.yaml").read_text())
 RIDERS = ("No Hands", "Relaxed", "On Hoods", "Aerobars", "Aero Tuck")

@@ -36,19 +36,28 @@ def load_rider(pose):
     return load(pose)
 
 
-def stiffness(bike, which):
+STIFFNESS_SOURCES = ("auto", "published", "computed")
+"""Where a material's S comes from: published values if the bicycle carries them, else the
+beam FE of its rear frame ('auto'); or only one of the two."""
+
+
+def stiffness(bike, which, source="auto", procedure="condensed"):
     """2x2 S (N m/rad) named ``which`` for ``bike``: 'infinite' -> None, a material name
-    (the bicycle's published ``stiffness:`` for it), or a YAML file with key S."""
+    (published ``stiffness:`` of the bicycle, or computed by the beam FE of its rear-frame
+    ``structure`` with ``procedure`` condensed|thesis, see ``source``), or a YAML file with key S."""
     if which in (None, "infinite", "rigid"):
         return None
     from .materials import load_materials
     materials = load_materials()
     if which in materials:
         model = bicycle(bike)
-        S = model.published_stiffness(materials[which])
+        S = None if source == "computed" else model.published_stiffness(materials[which])
+        if S is None and source != "published" and model.structure is not None:
+            from .fe import equivalent_stiffness
+            S = equivalent_stiffness(model.structure, materials[which], procedure)
         if S is None:
-            raise InputError(model.source, "stiffness", f"a published stiffness for {which} "
-                             "(no published stiffness for this bicycle)")
+            raise InputError(model.source, "stiffness", f"a {source} stiffness for {which} "
+                             "(no published stiffness and no rear-frame structure for the beam model)")
         return S
     node = load_yaml(which)
     node.check_keys(required=("S",), optional=("units", "source", "name"))
