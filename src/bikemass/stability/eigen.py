@@ -66,17 +66,8 @@ def _eigenvectors(matrices, speeds, s):
     return x / np.linalg.norm(x, axis=1, keepdims=True)
 
 
-@dataclass(frozen=True)
-class EigenSweep:
-    """Eigenvalues (n, 4) [1/s] and unit eigenvectors (n, 4, 4) [columns] at speeds (n,) [m/s].
-
-    Columns are in no particular order; :func:`~bikemass.stability.tracking.track`
-    orders them into modes.
-    """
-
-    speeds: np.ndarray
-    eigenvalues: np.ndarray
-    eigenvectors: np.ndarray
+class ModalQuantities:
+    """Natural frequency and damping ratio of an ``eigenvalues`` (n, 4) attribute."""
 
     @property
     def natural_frequency(self):
@@ -87,6 +78,19 @@ class EigenSweep:
     def damping_ratio(self):
         """``-Re(lambda) / |lambda|`` (dimensionless), shape (n, 4)."""
         return damping_ratio(self.eigenvalues)
+
+
+@dataclass(frozen=True)
+class EigenSweep(ModalQuantities):
+    """Eigenvalues (n, 4) [1/s] and unit eigenvectors (n, 4, 4) [columns] at speeds (n,) [m/s].
+
+    Columns are in no particular order; :func:`~bikemass.stability.tracking.track`
+    orders them into modes.
+    """
+
+    speeds: np.ndarray
+    eigenvalues: np.ndarray
+    eigenvectors: np.ndarray
 
     def to_dict(self):
         """Plain lists: speeds, eigenvalues as ``[re, im]`` pairs per speed."""

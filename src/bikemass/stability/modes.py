@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .eigen import damping_ratio, eigen_sweep, natural_frequency
+from .eigen import ModalQuantities, eigen_sweep
 from .labels import LABELS, settle_splits, standstill_labels
 from .tracking import reorder, track
 
@@ -21,7 +21,7 @@ START_STEP = 0.05
 
 
 @dataclass(frozen=True)
-class Modes:
+class Modes(ModalQuantities):
     """Eigenvalues (n, 4) [1/s] and unit state eigenvectors (n, 4, 4) of labelled modes.
 
     Column ``i`` of ``eigenvalues`` (and ``eigenvectors[:, :, i]``) is mode
@@ -37,16 +37,6 @@ class Modes:
     def __getitem__(self, label):
         """Eigenvalues (n,) of mode ``label``."""
         return self.eigenvalues[:, self.labels.index(label)]
-
-    @property
-    def natural_frequency(self):
-        """``|lambda|`` (rad/s), shape (n, 4)."""
-        return natural_frequency(self.eigenvalues)
-
-    @property
-    def damping_ratio(self):
-        """``-Re(lambda)/|lambda|``, shape (n, 4)."""
-        return damping_ratio(self.eigenvalues)
 
     def to_dict(self):
         """``{"speeds": [...], "modes": [{"label", "eigenvalues": [[re, im], ...]}, ...]}``."""
