@@ -40,6 +40,10 @@ def resolve(name, folder: Path, what: str) -> Path:
     raise InputError(name, "(name)", f"a {what} file or one of: {known}")
 
 
+SHARED_FILES = ("materials",)
+"""YAML files in ``frames/`` that are not bicycles."""
+
+
 def available(folder: Path):
-    """Names of the shipped YAML files in ``folder`` (``_`` shown as ``-``)."""
-    return sorted(p.stem.replace("_", "-") for p in folder.glob("*.yaml"))
+    """Names of the shipped YAML files in ``folder`` (``_`` shown as ``-``), shared files left out."""
+    return sorted(p.stem.replace("_", "-") for p in folder.glob("*.yaml") if p.stem not in SHARED_FILES)

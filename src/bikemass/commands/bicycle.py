@@ -9,7 +9,7 @@ MODEL_FORMATS = ("glb", "stl", "obj")
 
 def _bicycles():
     from ..paths import available, frames_dir
-    return ", ".join(n for n in available(frames_dir()) if n != "materials")
+    return ", ".join(available(frames_dir()))
 
 
 def register(sub):
