@@ -19,11 +19,12 @@ from ..sections import RoundSection, SquareSection
 from ..solids import Lumped, RoundTube, SquareTube
 from ..tubes import Structure, Tube
 from .components import materials_lookup, read_component, read_wheel
+from .contacts import read_contacts
 from .geometry import Geometry, check_keypoints, read_geometry
 from .model import Bicycle
 
 TOP_KEYS = ("name", "base", "source", "description", "geometry", "keypoints", "material", "sections", "tubes",
-            "structure", "components", "loads", "wheels", "stiffness")
+            "structure", "components", "loads", "wheels", "stiffness", "contacts")
 
 
 def load_bicycle(name_or_path):
@@ -83,8 +84,9 @@ def read_bicycle(node, source):
         if not any(p.body == body for p in parts):
             node.fail(f"at least one tube or component with body {body}", "components")
     stiffness = _read_stiffness(node["stiffness"], materials) if node.has("stiffness") else {}
+    contacts = read_contacts(node["contacts"], keypoints) if node.has("contacts") else None
     return Bicycle(node["name"].string(), source, geometry, keypoints, tuple(tubes), tuple(parts),
-                   structure, stiffness)
+                   structure, stiffness, contacts=contacts)
 
 
 def _read_sections(node):

@@ -15,7 +15,8 @@ class Bicycle:
     ``parts`` holds every placed part (tubes, components, loads, wheel hoops, lumped
     bodies), each with its ``body`` in :data:`BODIES`.  ``structure`` is the rear-frame
     beam model (or ``None``), ``stiffness`` the published S matrices by material key
-    (N m/rad), ``published`` the parameter set of a benchmark parameter file (else ``None``).
+    (N m/rad), ``published`` the parameter set of a benchmark parameter file (else ``None``),
+    ``contacts`` the rider contact points (:class:`~bikemass.bicycle.contacts.Contacts`) or ``None``.
     """
 
     name: str
@@ -27,6 +28,7 @@ class Bicycle:
     structure: object = None
     stiffness: dict = None
     published: object = None
+    contacts: object = None
 
     def body_parts(self, body):
         """Parts of ``body`` (one of :data:`BODIES`)."""

@@ -42,7 +42,7 @@ class Anthropometry:
 def load_anthropometry(path) -> Anthropometry:
     """Read an anthropometry YAML file (see ``bodies/thesis_rider.yaml``)."""
     node = load_yaml(path)
-    node.check_keys(required=("name", "segments"), optional=("source",))
+    node.check_keys(required=("name", "segments"), optional=("source", "joints"))
     segments = {}
     for name, seg in node["segments"].items():
         shape = seg["shape"].string(choices=tuple(SHAPES))
