@@ -11,6 +11,7 @@ COMMAND_MODULES = (
     "rider",
     "frame",
     "stability",
+    "pose",
 )
 """Modules under ``bikemass.commands`` whose ``register(subparsers)`` adds sub-commands."""
 

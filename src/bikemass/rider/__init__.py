@@ -66,8 +66,13 @@ def load_rider(pose: str, as_printed: bool = False) -> Rider:
     """The rider in ``pose``: a shipped pose name or a pose YAML file.
 
     ``as_printed=True`` replaces every corrected value by its ``printed:`` value.
+    A chain-form pose file (``chain:``, docs/poses.md) is solved on its bicycle.
     Bad input raises :class:`~bikemass.errors.InputError`.
     """
     node = load_yaml(resolve(pose, poses_dir(), "pose"))
+    if isinstance(node.value, dict) and "chain" in node.value:
+        from .chain_file import read_chain_pose
+        name, parts, _ = read_chain_pose(node)
+        return Rider(str(pose), name, parts)
     name, parts = read_pose(node, as_printed)
     return Rider(str(pose), name, parts)

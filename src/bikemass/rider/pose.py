@@ -12,6 +12,8 @@ Pose file (metres, degrees; Williams 2015, Table 3-3 conventions)::
 * ``angle``: clockwise about y seen from +y with x to the right; the segment's
   axis is ``(-sin a, 0, cos a)`` (0 = hanging straight down);
 * ``mirror: true``: a pair (``pair: true`` in the anthropometry) at +y and -y;
+* ``left: {location, angle}``: the -y copy of a pair placed on its own instead of as
+  the mirror image (e.g. legs on pedals at a crank angle, docs/poses.md);
 * ``frame: front``: the segment moves with the front frame (default ``rear``);
 * ``printed: {location: [...], angle: ...}``: the value as published, used instead
   with ``as_printed=True`` (records an erratum machine-readably).
@@ -86,7 +88,7 @@ def angle_deg(node):
 
 def _placed_parts(seg, segment, as_printed):
     """The part (or the +y/-y pair) of body ``segment`` placed by the pose node ``seg``."""
-    seg.check_keys(required=PLACED_KEYS, optional=("mirror", "frame", "printed"))
+    seg.check_keys(required=PLACED_KEYS, optional=("mirror", "frame", "printed", "left"))
     values = {"location": seg["location"].vector(3), "angle": angle_deg(seg["angle"])}
     if seg.has("printed"):
         printed = seg["printed"]
@@ -102,13 +104,26 @@ def _placed_parts(seg, segment, as_printed):
     frame = _frame(seg)
     placement = Placement.thesis_segment(values["location"], values["angle"])
     if not mirror:
+        if seg.has("left"):
+            seg.fail("no left: placement (only a mirrored pair has a left copy)", "left")
         return [Part(segment.name, segment.solid, segment.mass, placement, frame)]
     y = values["location"][1]
     if y == 0:
         seg.fail("a nonzero y for a mirrored pair (the copies sit at +y and -y)", "location")
     other = Placement(MIRROR_Y @ placement.rotation @ MIRROR_Y, MIRROR_Y @ placement.translation)
+    if seg.has("left"):
+        other = _left_placement(seg["left"], y)
     return [Part(f"{segment.name}_{'right' if p.translation[1] > 0 else 'left'}",
                  segment.solid, segment.mass, p, frame) for p in (placement, other)]
+
+
+def _left_placement(node, y):
+    """The -y copy of a pair placed on its own (``left: {location, angle}``, e.g. legs on pedals)."""
+    node.check_keys(required=PLACED_KEYS)
+    location = node["location"].vector(3)
+    if not location[1] * y < 0:
+        node.fail(f"a y on the other side from the pair's location (y = {y:g})", "location")
+    return Placement.thesis_segment(location, angle_deg(node["angle"]))
 
 
 def _lumped_part(key, seg):

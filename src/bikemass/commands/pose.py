@@ -1,0 +1,136 @@
+"""``bikemass pose BIKE``: a rider posed by joint angles on a bicycle's contacts;
+``bikemass pose-fit``: the thesis poses against their closest joined-up chain poses."""
+
+HANDS = ("tops", "hoods", "drops", "aero", "none")
+JOINT_HELP = "torso_lean, neck, shoulder, elbow, hip, knee"
+
+
+def register(sub):
+    p = sub.add_parser("pose", help="pose a rider by joint angles on a bicycle (hips, hands, feet)",
+                       description="Solve the rider's joint angles (scipy least squares) so that the hips "
+                                   "sit on the saddle, the hands on a grip and the feet on the pedals "
+                                   "of BIKE's contacts: section; write the pose in the placement form "
+                                   "(docs/poses.md).")
+    p.add_argument("bike", metavar="BIKE", help="shipped bicycle name or bicycle YAML file with contacts:")
+    p.add_argument("--body", default="thesis_rider", help="anthropometry with joints: (default thesis_rider)")
+    p.add_argument("--torso-lean", type=float, metavar="DEG",
+                   help="fix the torso lean from vertical (deg, forward positive); default: solved "
+                        "with the elbows bent 20 deg")
+    p.add_argument("--hands", choices=HANDS, help="grip of the bicycle (default hoods, else its first grip)")
+    p.add_argument("--crank", type=float, metavar="DEG",
+                   help="crank angle (deg, 0 = right crank forward, positive pedalling); each foot on "
+                        "its pedal.  Default: symmetric legs, feet on the crank axis (as the thesis)")
+    p.add_argument("--fix", action="append", default=[], metavar="JOINT=DEG",
+                   help=f"fix any joint angle ({JOINT_HELP}); repeatable")
+    p.add_argument("--name", help="pose name written to the file")
+    p.add_argument("--out", "-o", metavar="FILE", help="write the placement-form pose YAML here")
+    p.add_argument("--plot", metavar="FILE.png", help="side view of the posed rider on the bicycle")
+    p.set_defaults(run=run_pose)
+    f = sub.add_parser("pose-fit", help="thesis poses vs their closest joined-up chain poses",
+                       description="For each placement pose, fit the chain's joint angles and hip position "
+                                   "(least squares on the segment ends), then compare the joint gaps, the "
+                                   "rider's mass properties and BIKE's weave and capsize speeds.")
+    f.add_argument("poses", nargs="*", metavar="POSE", help="placement poses (default: the five thesis poses)")
+    f.add_argument("--bike", default="jamis-thesis", help="bicycle for the speeds (default jamis-thesis)")
+    f.add_argument("--combine", choices=("exact", "thesis"), default="exact",
+                   help="rider + rear frame: parallel-axis theorem (default) or the thesis's Eq. 3.6")
+    f.set_defaults(run=run_fit)
+
+
+def _fixed(args):
+    from ..errors import InputError
+    from ..rider.chain import JOINTS
+    fixed = {}
+    for item in args.fix:
+        joint, _, value = item.partition("=")
+        if joint not in JOINTS:
+            raise InputError("--fix", item, f"JOINT=DEG with JOINT one of {JOINT_HELP}")
+        try:
+            fixed[joint] = float(value)
+        except ValueError:
+            raise InputError("--fix", item, "JOINT=DEG with DEG a number of degrees") from None
+    if args.torso_lean is not None:
+        fixed["torso_lean"] = args.torso_lean
+    return fixed
+
+
+def _report(solution, gaps, hands, crank):
+    from ..output import table
+    from ..rider.chain import JOINTS
+    pose = solution.pose
+    legs = "symmetric legs, feet on the crank axis" if crank is None else f"crank {crank:g} deg"
+    order = sorted(pose.angles, key=lambda j: (JOINTS.index(j.replace("_left", "")), j))
+    rows = [(j.replace("_", " "), pose.angles[j], "solved" if j in solution.free else "fixed") for j in order]
+    lines = [f"Chain pose: hands {hands}, {legs}; hip joints at x = {pose.root[0]:.4f} m, "
+             f"z = {pose.root[1]:.4f} m", "", table(("joint", "angle (deg)", ""), rows, "{:.2f}")]
+    rows = [(t.name, t.target[0], t.target[1], solution.residuals[t.name] * 1000, t.key) for t in solution.targets]
+    lines += [table(("contact", "x (m)", "z (m)", "residual (mm)", "bicycle key"), rows, "{:.4f}"),
+              f"largest gap at a joint: {max(gaps.values()) * 1000:.2e} mm"]
+    return "\n".join(lines)
+
+
+def run_pose(args):
+    from ..config import Node
+    import yaml
+
+    from ..output import plain, write_atomic
+    from ..rider.anthropometry import find_anthropometry
+    from ..rider.chain import load_chain_body, joint_gaps
+    from ..rider.chain_file import bicycle_contacts, default_hands, warn
+    from ..rider.solve import solve_on_bicycle
+    from ..rider import Rider
+    from ..rider.pose import read_pose
+
+    bicycle = bicycle_contacts(args.bike, Node(args.bike, args.bike, "BIKE"))
+    body_node = Node(args.body, "--body", "--body")
+    body = load_chain_body(find_anthropometry(body_node), args.body)
+    hands = args.hands or default_hands(bicycle.contacts)
+    solution = solve_on_bicycle(body, bicycle.contacts, hands, args.crank, _fixed(args)).check_reachable()
+    for line in solution.pose.warnings():
+        warn(line)
+    right, _ = solution.pose.placements()
+    print(_report(solution, joint_gaps(right, body), hands, args.crank))
+    name = args.name or f"{hands} on {args.bike}"
+    document = solution.pose.placement_form(name, args.body)
+    if args.out:
+        header = "".join(f"# {line}\n" for line in (
+            f"Chain pose written by: bikemass pose {args.bike} --hands {hands}"
+            + (f" --crank {args.crank:g}" if args.crank is not None else ""),
+            "joint angles (deg): " + ", ".join(f"{k} {v:.3f}" for k, v in sorted(solution.pose.angles.items())),
+            "placement form (docs/riders.md): location = top-plane centre (m), angle (deg)"))
+        write_atomic(args.out, header + yaml.safe_dump(plain(document), sort_keys=False, default_flow_style=None))
+        print(f"wrote {args.out}")
+    if args.plot:
+        from ..plots.pose import draw_pose
+        _, parts = read_pose(Node(document, args.out or "pose", None))
+        draw_pose(bicycle, Rider(name, name, parts), solution, args.plot, f"{name}: chain pose")
+        print(f"wrote {args.plot}")
+    return 0
+
+
+def run_fit(args):
+    from ..output import table
+    from ..rider import THESIS_POSES
+    from ..rider.chain_file import warn
+    from ..rider.thesis_fit import compare_with_chain, first
+
+    rows, props = [], []
+    for pose in args.poses or THESIS_POSES:
+        r = compare_with_chain(pose, args.bike, args.combine)
+        for line in r["warnings"]:
+            warn(f"{pose} chain fit: {line}")
+        worst = max(r["plane_gaps"], key=r["plane_gaps"].get)
+        (wt, tc), (wc, cc) = ((first(w), first(c)) for w, c in (r["speeds"]["thesis"], r["speeds"]["chain"]))
+        rows.append((pose, f"{worst} {r['plane_gaps'][worst] * 1000:.1f}", r["rms"] * 1000, r["max"] * 1000,
+                     f"{max(r['chain_gaps'].values()):.1e}", wt, wc, wc - wt, tc, cc, cc - tc))
+        t, c = r["thesis"], r["fitted"]
+        d = c.com - t.com
+        props.append((pose, d[0] * 1000, d[2] * 1000, *(c.inertia[i, j] - t.inertia[i, j]
+                                                        for i, j in ((0, 0), (1, 1), (2, 2), (0, 2))),
+                      *(100 * (c.inertia[i, i] / t.inertia[i, i] - 1) for i in range(3))))
+    print(f"Placement poses vs closest chain poses; speeds of {args.bike} (combine {args.combine})")
+    print(table(("pose", "largest gap x-z (mm)", "fit rms (mm)", "fit max (mm)", "chain gap (m)",
+                 "weave", "chain", "change", "capsize", "chain", "change"), rows, "{:.3f}"))
+    print("Rider mass properties, chain minus placement pose (CoM in mm, inertia in kg m^2, % of the pose's)")
+    print(table(("pose", "dx", "dz", "dIxx", "dIyy", "dIzz", "dIxz", "Ixx %", "Iyy %", "Izz %"), props, "{:+.3f}"))
+    return 0

@@ -1,0 +1,193 @@
+"""The rider as a kinematic chain: segments joined end to end, posed by joint angles.
+
+The chain is planar and left/right symmetric, like the thesis's placement form
+(every segment turns about y only): a root point, the hip-joint midpoint ``root``
+(x, z in m), and joint angles in degrees (see :data:`JOINTS`).  The thesis segment
+angle ``a`` of each segment (axis ``(-sin a, 0, cos a)``, docs/riders.md) follows as
+
+* torso ``a = torso_lean`` (0 upright, positive leaning forward);
+* head ``a = torso_lean + neck`` (neck flexion, positive chin toward the chest);
+* upper arm ``a = torso_lean - shoulder`` (shoulder flexion: 0 along the torso,
+  positive raised forward); lower arm ``a = upper arm - elbow`` (elbow flexion, 0 straight);
+* thigh ``a = torso_lean - hip`` (hip flexion: 0 in line with the torso, 90 seated
+  upright); lower leg ``a = thigh + knee`` (knee flexion, 0 straight).
+
+Where the segments join comes from the anthropometry's ``joints:`` block (points in
+the torso's local frame: ``neck``, ``shoulder``, ``hip``; ``seat`` = the sit point's
+depth below the hip joints).  Each child starts exactly where its parent ends:
+head far end at the neck, upper arm at the shoulder, lower arm at the elbow (upper
+arm far end), thigh at the hip joint, lower leg at the knee (thigh far end).
+"""
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from ..config import load_yaml
+from ..convention import thesis_segment_axis, thesis_segment_rotation
+from .anthropometry import load_anthropometry
+
+CHAIN_SEGMENTS = ("head", "torso", "upper_arm", "lower_arm", "thigh", "lower_leg")
+"""Segments an anthropometry needs for a chain pose."""
+
+JOINTS = ("torso_lean", "neck", "shoulder", "elbow", "hip", "knee")
+"""Joint angles of the symmetric chain (deg).  ``hip_left``/``knee_left`` may differ
+from ``hip``/``knee`` (the right leg) when the feet are on pedals at a crank angle."""
+
+SIDED = ("hip", "knee")
+
+HUMAN_RANGES = {"torso_lean": (-20.0, 90.0), "neck": (-45.0, 45.0), "shoulder": (-60.0, 180.0),
+                "elbow": (0.0, 150.0), "hip": (-30.0, 120.0), "knee": (0.0, 135.0)}
+"""Typical adult ranges of motion (deg; AAOS-style averages, rounded): a pose outside
+them is warned about, not refused.  ``torso_lean`` is the trunk from vertical."""
+
+
+@dataclass(frozen=True, eq=False)
+class ChainBody:
+    """An anthropometry with its joints: segment ``lengths`` (m) and attachment points
+    (torso local frame, m: ``neck``, ``shoulder``, ``hip``; right-side y), ``seat`` depth (m)."""
+
+    name: str
+    source: Path
+    lengths: dict
+    neck: np.ndarray
+    shoulder: np.ndarray
+    hip: np.ndarray
+    seat: float
+
+
+def load_chain_body(path, name=None) -> ChainBody:
+    """:class:`ChainBody` of the anthropometry file ``path`` (needs a ``joints:`` block)."""
+    anthropometry = load_anthropometry(path)
+    node = load_yaml(path)
+    missing = [s for s in CHAIN_SEGMENTS if s not in anthropometry.segments]
+    if missing:
+        node["segments"].fail(f"the chain segments {', '.join(CHAIN_SEGMENTS)} (missing: {', '.join(missing)})")
+    if not node.has("joints"):
+        node.fail("a joints: block (neck, shoulder, hip, seat) for chain poses, see docs/poses.md", "joints")
+    joints = node["joints"].check_keys(required=("neck", "shoulder", "hip", "seat"), optional=("note",))
+    points = {k: joints[k].vector(3) for k in ("neck", "shoulder", "hip")}
+    for k in ("shoulder", "hip"):
+        if not points[k][1] > 0:
+            joints.fail(f"a positive y (the right-side joint; mirrored to -y), got {points[k][1]!r}", k)
+    lengths = {s: anthropometry.segments[s].solid.length for s in CHAIN_SEGMENTS}
+    return ChainBody(name or Path(path).stem, Path(path), lengths, points["neck"], points["shoulder"],
+                     points["hip"], joints["seat"].number(nonnegative=True))
+
+
+def _midplane(p):
+    return np.array([p[0], 0.0, p[2]])
+
+
+@dataclass(frozen=True, eq=False)
+class ChainPose:
+    """``body`` posed with hip-joint midpoint ``root`` = (x, z) (m) and joint ``angles`` (deg)."""
+
+    body: ChainBody
+    root: np.ndarray
+    angles: dict = field(default_factory=dict)
+
+    def angle(self, joint, side="right"):
+        """Joint angle (deg); ``side='left'`` gives ``hip_left``/``knee_left`` when set."""
+        if side == "left" and joint in SIDED:
+            return self.angles.get(f"{joint}_left", self.angles[joint])
+        return self.angles[joint]
+
+    @property
+    def symmetric(self):
+        return all(self.angle(j, "left") == self.angle(j) for j in SIDED)
+
+    def segment_angles(self, side="right"):
+        """Thesis segment angle (deg) of every chain segment (legs of ``side``)."""
+        t = self.angles["torso_lean"]
+        upper_arm = t - self.angles["shoulder"]
+        thigh = t - self.angle("hip", side)
+        return {"head": t + self.angles["neck"], "torso": t, "upper_arm": upper_arm,
+                "lower_arm": upper_arm - self.angles["elbow"], "thigh": thigh,
+                "lower_leg": thigh + self.angle("knee", side)}
+
+    def points(self, side="right"):
+        """Named points (m, benchmark frame) of the right limbs, or the left legs' with ``side``."""
+        a, L, b = self.segment_angles(side), self.body.lengths, self.body
+        sign = -1.0 if side == "left" else 1.0
+        R = thesis_segment_rotation(a["torso"])
+        hip_mid = np.array([self.root[0], 0.0, self.root[1]])
+        top = hip_mid - R @ _midplane(b.hip)
+        p = {"hip_centre": hip_mid, "seat": hip_mid + [0.0, 0.0, b.seat], "torso_top": top,
+             "neck": top + R @ b.neck}
+        p["head_top"] = p["neck"] - L["head"] * thesis_segment_axis(a["head"])
+        p["shoulder"] = top + R @ b.shoulder
+        p["elbow"] = p["shoulder"] + L["upper_arm"] * thesis_segment_axis(a["upper_arm"])
+        p["hand"] = p["elbow"] + L["lower_arm"] * thesis_segment_axis(a["lower_arm"])
+        p["hip"] = hip_mid + [0.0, sign * b.hip[1], 0.0]
+        p["knee"] = p["hip"] + L["thigh"] * thesis_segment_axis(a["thigh"])
+        p["foot"] = p["knee"] + L["lower_leg"] * thesis_segment_axis(a["lower_leg"])
+        return p
+
+    def placements(self):
+        """``{segment: (location, angle)}`` in the placement form (right copy of pairs), and
+        ``{segment: (location, angle)}`` of the left legs where they differ from the mirror image."""
+        a, p = self.segment_angles(), self.points()
+        right = {"head": (p["head_top"], a["head"]), "torso": (p["torso_top"], a["torso"]),
+                 "upper_arm": (p["shoulder"], a["upper_arm"]), "lower_arm": (p["elbow"], a["lower_arm"]),
+                 "thigh": (p["hip"], a["thigh"]), "lower_leg": (p["knee"], a["lower_leg"])}
+        left = {}
+        if not self.symmetric:
+            al, pl = self.segment_angles("left"), self.points("left")
+            left = {"thigh": (pl["hip"], al["thigh"]), "lower_leg": (pl["knee"], al["lower_leg"])}
+        return right, left
+
+    def placement_form(self, name, body):
+        """The pose as a placement-form pose document (docs/riders.md); ``body`` names the anthropometry."""
+        right, left = self.placements()
+        segments = {}
+        for seg, (location, angle) in right.items():
+            entry = {"location": [round(float(v), 6) + 0.0 for v in location], "angle": round(float(angle), 6)}
+            if seg not in ("head", "torso"):
+                entry["mirror"] = True
+            if seg in left:
+                loc, ang = left[seg]
+                entry["left"] = {"location": [round(float(v), 6) + 0.0 for v in loc], "angle": round(float(ang), 6)}
+            segments[seg] = entry
+        return {"name": name, "body": body, "segments": segments}
+
+    def warnings(self):
+        """One line per joint angle outside :data:`HUMAN_RANGES`."""
+        out = []
+        for joint, value in sorted(self.angles.items(), key=lambda kv: JOINTS.index(kv[0].replace("_left", ""))):
+            lo, hi = HUMAN_RANGES[joint.replace("_left", "")]
+            if not lo - 1e-9 <= value <= hi + 1e-9:
+                out.append(f"{joint.replace('_', ' ')} {value:.1f} deg is outside the typical human range "
+                           f"{lo:g}..{hi:g} deg")
+        return out
+
+
+JOINT_PAIRS = (("neck", "torso", "neck", "head"), ("shoulder", "torso", "shoulder", "upper_arm"),
+               ("elbow", "upper_arm", None, "lower_arm"), ("hip", "torso", "hip", "thigh"),
+               ("knee", "thigh", None, "lower_leg"))
+"""(joint, parent, attachment point of the parent or None = its far end, child)."""
+
+
+def joint_gaps(placements, body, plane=False):
+    """``{joint: gap}`` (m): distance between where a placement-form pose puts each child
+    segment's joint end and the point of its parent it should be joined to.
+
+    ``placements`` = ``{segment: (location, angle)}`` (right copies of pairs, any pose).
+    The head joins at its far end, every other child at its top plane.  ``plane=True``:
+    the distance in the x-z plane only (y differences left out).
+    """
+    gaps = {}
+    for joint, parent, attach, child in JOINT_PAIRS:
+        loc, ang = (np.asarray(v, dtype=float) if i == 0 else v for i, v in enumerate(placements[parent]))
+        if attach is None:
+            anchor = loc + body.lengths[parent] * thesis_segment_axis(ang)
+        else:
+            anchor = loc + thesis_segment_rotation(ang) @ getattr(body, attach)
+        c_loc, c_ang = placements[child]
+        end = np.asarray(c_loc, dtype=float)
+        if child == "head":
+            end = end + body.lengths["head"] * thesis_segment_axis(c_ang)
+        gap = end - anchor
+        gaps[joint] = float(np.linalg.norm(gap[[0, 2]] if plane else gap))
+    return gaps
