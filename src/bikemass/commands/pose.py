@@ -111,26 +111,33 @@ def run_pose(args):
 def run_fit(args):
     from ..output import table
     from ..rider import THESIS_POSES
+    from ..rider.chain import JOINTS
     from ..rider.chain_file import warn
     from ..rider.thesis_fit import compare_with_chain, first
 
-    rows, props = [], []
+    rows, props, angles = [], [], []
     for pose in args.poses or THESIS_POSES:
         r = compare_with_chain(pose, args.bike, args.combine)
         for line in r["warnings"]:
             warn(f"{pose} chain fit: {line}")
-        worst = max(r["plane_gaps"], key=r["plane_gaps"].get)
+        g = r["plane_gaps"]
         (wt, tc), (wc, cc) = ((first(w), first(c)) for w, c in (r["speeds"]["thesis"], r["speeds"]["chain"]))
-        rows.append((pose, f"{worst} {r['plane_gaps'][worst] * 1000:.1f}", r["rms"] * 1000, r["max"] * 1000,
+        rows.append((pose, g["elbow"] * 1000, g["knee"] * 1000, g["hip"] * 1000, r["rms"] * 1000, r["max"] * 1000,
                      f"{max(r['chain_gaps'].values()):.1e}", wt, wc, wc - wt, tc, cc, cc - tc))
+        angles.append((pose, r["chain"].root[0], r["chain"].root[1], *(r["chain"].angles[j] for j in JOINTS)))
         t, c = r["thesis"], r["fitted"]
         d = c.com - t.com
         props.append((pose, d[0] * 1000, d[2] * 1000, *(c.inertia[i, j] - t.inertia[i, j]
                                                         for i, j in ((0, 0), (1, 1), (2, 2), (0, 2))),
                       *(100 * (c.inertia[i, i] / t.inertia[i, i] - 1) for i in range(3))))
     print(f"Placement poses vs closest chain poses; speeds of {args.bike} (combine {args.combine})")
-    print(table(("pose", "largest gap x-z (mm)", "fit rms (mm)", "fit max (mm)", "chain gap (m)",
+    print("Gaps of the placement pose in the x-z plane (mm): elbow, knee, and hip* from the chain's assumed "
+          "hip joint (bodies/thesis_rider.yaml joints.hip); fit: distances of the segment ends (mm); "
+          "largest gap of the chain pose (m); critical speeds (m/s)")
+    print(table(("pose", "elbow", "knee", "hip*", "fit rms", "fit max", "chain gap",
                  "weave", "chain", "change", "capsize", "chain", "change"), rows, "{:.3f}"))
+    print("Closest chain poses: hip joints (m) and joint angles (deg)")
+    print(table(("pose", "hip x", "hip z", *(j.replace("_", " ") for j in JOINTS)), angles, "{:.3f}"))
     print("Rider mass properties, chain minus placement pose (CoM in mm, inertia in kg m^2, % of the pose's)")
     print(table(("pose", "dx", "dz", "dIxx", "dIyy", "dIzz", "dIxz", "Ixx %", "Iyy %", "Izz %"), props, "{:+.3f}"))
     return 0

@@ -76,6 +76,10 @@ def load_chain_body(path, name=None) -> ChainBody:
                      points["hip"], joints["seat"].number(nonnegative=True))
 
 
+def _numbers(v):
+    return [float(x) + 0.0 for x in v]
+
+
 def _midplane(p):
     return np.array([p[0], 0.0, p[2]])
 
@@ -139,16 +143,18 @@ class ChainPose:
         return right, left
 
     def placement_form(self, name, body):
-        """The pose as a placement-form pose document (docs/riders.md); ``body`` names the anthropometry."""
+        """The pose as a placement-form pose document (docs/riders.md); ``body`` names the anthropometry.
+
+        Numbers are written in full (YAML floats round-trip exactly), so the file's joints stay joined."""
         right, left = self.placements()
         segments = {}
         for seg, (location, angle) in right.items():
-            entry = {"location": [round(float(v), 6) + 0.0 for v in location], "angle": round(float(angle), 6)}
+            entry = {"location": _numbers(location), "angle": float(angle)}
             if seg not in ("head", "torso"):
                 entry["mirror"] = True
             if seg in left:
                 loc, ang = left[seg]
-                entry["left"] = {"location": [round(float(v), 6) + 0.0 for v in loc], "angle": round(float(ang), 6)}
+                entry["left"] = {"location": _numbers(loc), "angle": float(ang)}
             segments[seg] = entry
         return {"name": name, "body": body, "segments": segments}
 
