@@ -8,7 +8,6 @@ deg; reach limits against straight-limb distances to the printed 0.1 mm.
 
 import numpy as np
 import pytest
-import yaml
 
 from bikemass.bicycle import load_bicycle
 from bikemass.cli import main
@@ -16,7 +15,7 @@ from bikemass.config import Node
 from bikemass.convention import thesis_segment_rotation
 from bikemass.errors import InputError
 from bikemass.paths import bodies_dir
-from bikemass.rider import Rider, load_rider
+from bikemass.rider import Rider
 from bikemass.rider.chain import joint_gaps, load_chain_body
 from bikemass.rider.pose import read_pose
 from bikemass.rider.solve import solve_on_bicycle
