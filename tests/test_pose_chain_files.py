@@ -94,12 +94,15 @@ def test_bad_contacts_name_the_key(tmp_path, contacts, key):
     assert info.value.key == key
 
 
-def test_unreachable_chain_file_names_its_key(tmp_path):
+@pytest.mark.parametrize("chain,key", [("torso_lean: 0, hands: aero", "chain.hands"),
+                                       ("crank: 80", "chain.crank"), ("hands: bars", "chain.hands"),
+                                       ("torso_lean: 30, wrist: 3", "chain.wrist")])
+def test_bad_chain_file_names_its_key(tmp_path, chain, key):
     path = tmp_path / "far.yaml"
-    path.write_text(THREE_LINES.replace("torso_lean: 30, hands: hoods", "torso_lean: 0, hands: aero"))
+    path.write_text(THREE_LINES.replace("torso_lean: 30, hands: hoods", chain))
     with pytest.raises(InputError) as info:
         load_rider(str(path))
-    assert info.value.key == "chain.hands" and "out of reach by" in info.value.expected
+    assert info.value.key == key and str(path) == info.value.source
 
 
 def test_thesis_gaps_and_the_no_hands_fit():

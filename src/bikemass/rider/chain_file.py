@@ -65,7 +65,8 @@ def read_chain_pose(node):
     try:
         solution.check_reachable()
     except InputError as exc:
-        chain.fail(f"{exc.expected} [{exc.source}: {exc.key}]", "hands" if "grips" in exc.key else None)
+        key = "hands" if ".grips." in exc.key else "crank" if exc.key.endswith("crank_length") else None
+        chain.fail(f"{exc.expected} [{exc.source}: {exc.key}]", key)
     for line in solution.pose.warnings():
         warn(f"{node.source}: {line}")
     name = node.get("name", str(node.source)).string()
