@@ -12,6 +12,7 @@ COMMAND_MODULES = (
     "frame",
     "stability",
     "pose",
+    "study",
 )
 """Modules under ``bikemass.commands`` whose ``register(subparsers)`` adds sub-commands."""
 

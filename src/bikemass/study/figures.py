@@ -1,0 +1,93 @@
+"""The study's figures (PNG): one job per figure, so they can be drawn in parallel.
+
+* ``real_<bike>_<stiffness>[_corrected].png``: real parts of the eigenvalues of all six
+  rider positions on one axis (the thesis's Fig. 4-6 and Figs. 5-2..5-15);
+* ``modes_<bike>_<rider>_<stiffness>.png``: one configuration of the thesis-mode run in
+  the Fig. 4-4 layout (real and imaginary parts, natural frequency, damping ratio), the
+  stable speeds of the grid shaded;
+* ``pose_<pose>.png``: side view of each of the five poses on the geometry Jamis.
+"""
+
+from dataclasses import dataclass
+from io import BytesIO
+
+from ..rider import THESIS_POSES
+from .configurations import BICYCLES, STIFFNESSES, THESIS_NAMES, configurations
+
+DPI = 150
+
+
+@dataclass(frozen=True)
+class GridShading:
+    """What :func:`~bikemass.plots.stability.plot_modes` shades: ``ranges[criterion]["exact"]``.
+
+    The thesis-mode run has only grid ranges; they are handed over in that slot.
+    """
+
+    ranges: dict
+
+    @classmethod
+    def of(cls, outcome):
+        grid = outcome.ranges["grid"]
+        return cls({criterion: {"exact": grid[criterion]["overall"]} for criterion in grid})
+
+
+def comparison_jobs(outcomes, folder, suffix="", run_title="thesis run"):
+    """Jobs drawing the real parts of all riders per bicycle and stiffness."""
+    jobs = []
+    for bike in BICYCLES:
+        for stiffness in STIFFNESSES:
+            curves = {THESIS_NAMES[c.rider]: o.modes for c, o in outcomes.items()
+                      if c.bike == bike and c.stiffness == stiffness}
+            title = f"{bike}, {stiffness} rear frame: real parts, all riders ({run_title})"
+            jobs.append((draw_comparison, curves, folder / f"real_{bike}_{stiffness}{suffix}.png".replace("-", "_"),
+                         title))
+    return jobs
+
+
+def mode_jobs(outcomes, folder):
+    """Jobs drawing each configuration in the Fig. 4-4 layout."""
+    return [(draw_modes, o.modes, GridShading.of(o), folder / f"modes_{c.slug}.png",
+             f"{c.label} (thesis run; stable speeds on the 0.05 m/s grid shaded)")
+            for c, o in outcomes.items()]
+
+
+def pose_jobs(bicycle, riders, folder):
+    """Jobs drawing ``riders`` (``{pose: Rider}``) on ``bicycle``."""
+    return [(draw_pose, bicycle, rider, folder / f"pose_{pose.replace('-', '_')}.png",
+             f"{pose} on the {bicycle.name}") for pose, rider in riders.items()]
+
+
+def figure_count():
+    """How many figures the study draws (:func:`comparison_jobs` twice, :func:`mode_jobs`, :func:`pose_jobs`)."""
+    return 2 * len(BICYCLES) * len(STIFFNESSES) + len(configurations()) + len(THESIS_POSES)
+
+
+def draw_comparison(curves, path, title):
+    from ..plots.stability import plot_comparison
+    plot_comparison(curves, path, "real", title)
+
+
+def draw_modes(modes, shading, path, title):
+    from ..plots.stability import plot_modes
+    plot_modes(modes, path, shading, title)
+
+
+def draw_pose(bicycle, rider, path, title):
+    import matplotlib.pyplot as plt
+
+    from ..bicycle.drawing import draw_side_view
+    from ..output import write_atomic
+    fig = draw_side_view(bicycle, rider, title=title)
+    buf = BytesIO()
+    fig.savefig(buf, format="png", dpi=DPI, bbox_inches="tight")
+    plt.close(fig)
+    write_atomic(path, buf.getvalue())
+
+
+def run_job(job):
+    """Draw one figure: ``job`` = (function, *arguments); returns the file written."""
+    function, *args = job
+    function(*args)
+    return args[-2]
+

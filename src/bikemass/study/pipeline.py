@@ -1,0 +1,140 @@
+"""The whole study: inputs -> three stability runs and the frame models -> comparisons -> files."""
+
+import os
+from dataclasses import dataclass
+
+from ..output import dumps, write_atomic
+from ..rider import THESIS_POSES
+from . import corrections, figures
+from .body_tables import bicycle_table, rider_table
+from .configurations import BICYCLES, Configuration, configurations
+from .explain import explain
+from .frame_tables import modes_table, stiffness_table
+from .frames import FRAMES, MATERIALS, frame_results
+from .parallel import executor
+from .records import records
+from .report import render
+from .runs import CORRECTED, GEOMETRY, THESIS, Inputs, run
+from .stability_tables import CHAPTER4, CHAPTER5, compare, entry_table
+
+WORKERS = min(2, os.cpu_count() or 1)
+_INPUTS = None
+"""The study's :class:`~bikemass.study.runs.Inputs`, set before the pool forks (workers inherit it)."""
+
+
+@dataclass(frozen=True)
+class StudyResults:
+    """Everything the report and the files are made of."""
+
+    runs: dict
+    entries: list
+    explanations: dict
+    input_tables: list
+    correction_tables: list
+    correction_summary: list
+
+
+def _preload(inputs):
+    """Load what every run and job needs once, before the workers fork."""
+    for bike in BICYCLES:
+        for name in (bike, f"{bike}-thesis"):
+            inputs.bicycle(name)
+    inputs.bicycle("benchmark")
+    for pose in THESIS_POSES:
+        inputs.rider(pose)
+        inputs.rider(f"{pose}-thesis")
+    for frame in FRAMES:
+        for material in MATERIALS:
+            for procedure in ("thesis", "condensed"):
+                inputs.frame_stiffness(frame, material, procedure)
+
+
+def _run_part(spec, part):
+    return run(spec, part, _INPUTS)
+
+
+def _frames():
+    return frame_results(_INPUTS)
+
+
+def _by_bike(configs):
+    """Configurations grouped into jobs of about equal size (the benchmark joins the first bicycle)."""
+    groups = {bike: [c for c in configs if c.bike == bike] for bike in BICYCLES}
+    groups[BICYCLES[0]] = [c for c in configs if c.bike not in BICYCLES] + groups[BICYCLES[0]]
+    return list(groups.values())
+
+
+def compute(workers=WORKERS, step=lambda label: None, geometry=True):
+    """:class:`StudyResults`; ``step(label)`` is called after each unit of work (:func:`steps`)."""
+    global _INPUTS
+    inputs = Inputs()
+    _preload(inputs)
+    _INPUTS = inputs
+    configs = configurations()
+    exact_specs = (CORRECTED, GEOMETRY) if geometry else (CORRECTED,)
+    with executor(workers) as pool:
+        frames_job = pool.submit(_frames)
+        parts = [(spec, pool.submit(_run_part, spec, part)) for spec in exact_specs for part in _by_bike(configs)]
+        thesis = run(THESIS, configs, inputs, step)
+        entries = compare(thesis)
+        explanations = {e: explain(e, inputs).text() for e in entries if not e.match}
+        step("misses explained")
+        riders = {pose: inputs.rider(pose).properties("exact") for pose in THESIS_POSES}
+        bikes = {bike: inputs.parameters(GEOMETRY, Configuration(bike, "none", "infinite"))
+                 for bike in BICYCLES}
+        input_tables = [rider_table(riders), bicycle_table(bikes)]
+        step("Tables 3-4, 3-9")
+        runs = {"thesis": thesis}
+        for spec, job in parts:
+            runs.setdefault(spec.name, {}).update(job.result())
+            step(f"{spec.name} run")
+        frames = frames_job.result()
+        step("frame models")
+    published = {(f, m): inputs.bicycle(f"{f}-thesis").published_stiffness(inputs.material(m))
+                 for f in FRAMES for m in MATERIALS}
+    input_tables += [stiffness_table(frames, published), modes_table(frames, "jamis"), modes_table(frames, "cargo")]
+    corrected = runs["corrected"]
+    runs["corrected"] = {c: corrected[c] for c in configs}
+    if geometry:
+        runs["geometry"] = {c: runs["geometry"][c] for c in configs}
+    correction_tables = [corrections.inertia_table(thesis, runs["corrected"]),
+                         corrections.stiffness_table(thesis, runs["corrected"]),
+                         corrections.range_table(thesis, runs["corrected"], runs.get("geometry"))]
+    return StudyResults(runs, entries, explanations, input_tables, correction_tables,
+                        corrections.summary(thesis, runs["corrected"]))
+
+
+def steps(geometry=True, with_figures=True):
+    """How many times :func:`compute` (and :func:`draw`) call ``step``."""
+    n = len(configurations()) + 2 + len(BICYCLES) * (2 if geometry else 1) + 1
+    return n + (figures.figure_count() if with_figures else 0)
+
+
+def write_files(results, out):
+    """``report.md``, the ``stability_ranges*.json`` records and one CSV per table into ``out``."""
+    write_atomic(out / "report.md", render(results))
+    write_atomic(out / "stability_ranges.json", dumps(records(results.runs["thesis"], "grid"), "json"))
+    write_atomic(out / "stability_ranges_corrected.json",
+                 dumps(records(results.runs["corrected"], "exact"), "json"))
+    if "geometry" in results.runs:
+        write_atomic(out / "stability_ranges_geometry.json",
+                     dumps(records(results.runs["geometry"], "grid"), "json"))
+    tables = [entry_table(t, results.entries, results.explanations) for t in (*CHAPTER4, *CHAPTER5)]
+    for table in tables + results.input_tables + results.correction_tables:
+        write_atomic(out / f"{table.key}.csv", table.to_csv())
+
+
+def figure_jobs(results, inputs, folder):
+    """Every figure job of the study (see :mod:`~bikemass.study.figures`)."""
+    return (figures.comparison_jobs(results.runs["thesis"], folder)
+            + figures.comparison_jobs(results.runs["corrected"], folder, "_corrected", "corrected run")
+            + figures.mode_jobs(results.runs["thesis"], folder)
+            + figures.pose_jobs(inputs.bicycle("jamis"), {p: inputs.rider(p) for p in THESIS_POSES}, folder))
+
+
+def draw(results, out, workers=WORKERS, step=lambda label: None, jobs=None):
+    """Draw the figures into ``out/figures`` (``jobs``: a subset of :func:`figure_jobs`)."""
+    jobs = figure_jobs(results, _INPUTS or Inputs(), out / "figures") if jobs is None else jobs
+    with executor(workers) as pool:
+        for path in [pool.submit(figures.run_job, job) for job in jobs]:
+            step(path.result().name)

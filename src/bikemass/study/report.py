@@ -1,0 +1,95 @@
+"""``report.md``: the study's results beside the thesis's, readable on its own."""
+
+from .runs import RUNS
+from .stability_tables import CHAPTER4, CHAPTER5, TOLERANCE, title
+
+LEGEND = (f"Each cell: our value (m/s, first or last speed of the stable run on the 0..30 m/s grid, or "
+          f"its length; `-` = no stable run), the thesis's in brackets where it differs, then "
+          f"`ok` (within {TOLERANCE} m/s, one grid step) or **MISS**.")
+
+
+def _speed(v):
+    return "-" if v is None else f"{v:.2f}"
+
+
+def _cell(entry):
+    ours, thesis = _speed(entry.ours), _speed(entry.thesis)
+    text = ours if ours == thesis else f"{ours} ({thesis})"
+    if entry.several:
+        text += " several runs"
+    return f"{text} ok" if entry.match else f"**{text} MISS**"
+
+
+def stability_grid(table, entries):
+    """Markdown grid of one thesis table: its rows and columns, every cell ours vs thesis."""
+    mine = [e for e in entries if e.table == table]
+    columns = list(dict.fromkeys(e.column for e in mine))
+    rows = list(dict.fromkeys(e.row for e in mine))
+    cells = {(e.row, e.column): _cell(e) for e in mine}
+    lines = ["| rider | " + " | ".join(columns) + " |", "|---|" + "---:|" * len(columns)]
+    lines += [f"| {r} | " + " | ".join(cells[r, c] for c in columns) + " |" for r in rows]
+    return "\n".join(lines) + "\n"
+
+
+def _table_section(t, level="###"):
+    notes = "".join(f"\n{n}\n" for n in t.notes)
+    return f"{level} {t.title}\n\n{t.to_markdown()}{notes}\n(CSV: `{t.key}.csv`)\n"
+
+
+def match_counts(entries):
+    """``(matched, total)`` overall and for chapters 4 and 5."""
+    def count(prefix):
+        mine = [e for e in entries if e.table.startswith(prefix)]
+        return sum(e.match for e in mine), len(mine)
+    return {"all": count("T"), "chapter 4": count("T4"), "chapter 5": count("T5")}
+
+
+def render(results):
+    """The Markdown text of ``report.md`` for :class:`~bikemass.study.pipeline.StudyResults`."""
+    r = results
+    counts = match_counts(r.entries)
+    misses = [e for e in r.entries if not e.match]
+    explained = sum(r.explanations[e].startswith("explained") for e in misses)
+    out = ["# bikemass study: Williams (2015) reproduced, then corrected\n",
+           "Produced by `bikemass study` from the shipped bicycles (`frames/`), riders (`bodies/`) and "
+           "materials; the thesis's printed tables (`reference/*.yaml`) are read only to compare. "
+           "Thesis: R. Williams, *Influence of Frame Stiffness and Rider Position on Bicycle Dynamics: "
+           "an Analytical Study*, M.S. thesis, UW-Milwaukee, 2015.\n",
+           "## Summary\n",
+           f"* Tables 4-2..4-7 and 5-1..5-3 (thesis run): **{counts['all'][0]} of {counts['all'][1]}** "
+           f"entries within {TOLERANCE} m/s (Chapter 4: {counts['chapter 4'][0]}/{counts['chapter 4'][1]}, "
+           f"Chapter 5: {counts['chapter 5'][0]}/{counts['chapter 5'][1]}); {len(misses)} missed, "
+           f"{explained} of them explained by the rounding of the printed parameters (see Misses)."]
+    out += [f"* {t.title.split(':')[0]}: {t.notes[0]}" for t in r.input_tables if t.notes]
+    out += ["* Corrections (parallel-axis theorem, condensed S from the beam model, exact critical speeds): "
+            + " ".join(r.correction_summary), ""]
+    out += ["## The runs\n"]
+    out += [f"* **{spec.name}**: {spec.title}." for spec in RUNS if spec.name in r.runs]
+    out += ["", "The 73 configurations: the benchmark bicycle (Meijaard et al. 2007) and the Jamis, the "
+            "Cargo and the loaded Cargo, each with no rider and the five poses, each with a rigid "
+            "(infinite) rear frame and the frame in steel, titanium and aluminium. Mass properties of "
+            "geometry parts come from the closed-form solids. Per-mode columns need the modes followed "
+            "across speed: the thesis's \"weave 1\" and \"weave 2\" are the two roots that merge into the "
+            "weave oscillation (docs/stability.md).\n"]
+    out += ["## Stability tables: thesis run vs thesis\n", LEGEND + "\n"]
+    for table in list(CHAPTER4) + list(CHAPTER5):
+        out += [f"### {title(table)}\n", stability_grid(table, r.entries), f"(CSV: `table_{table[1:]}.csv`)\n"]
+    out += ["### Misses\n"]
+    out += [f"* {e.table[1:].replace('_', '-')}, {e.row}, {e.column}: ours {_speed(e.ours)}, thesis "
+            f"{_speed(e.thesis)} m/s: {r.explanations[e]}." for e in misses] or ["None."]
+    out += ["", "## Inputs: riders, bicycles, stiffness, frame modes\n"]
+    out += [_table_section(t) for t in r.input_tables]
+    out += ["## Corrections: what changes and by how much\n"]
+    out += [f"* {line}" for line in r.correction_summary] + [""]
+    out += [_table_section(t) for t in r.correction_tables]
+    out += ["## Files\n",
+            "* `stability_ranges.json` (thesis run, grid ranges) and `stability_ranges_corrected.json` "
+            "(corrected run, exact ranges): records `{bike, rider, stiffness, mode, criterion, start, stop, "
+            "range}`, speeds in m/s, `null` where there is no stable range; mode `weave` = both weave roots "
+            "stable." + (" `stability_ranges_geometry.json`: the run from geometry (grid ranges)."
+                         if "geometry" in r.runs else ""),
+            "* one CSV per table (named under each table above);",
+            "* `figures/` (unless `--no-figures`): `real_<bike>_<stiffness>.png` (all riders, thesis run) and "
+            "`..._corrected.png`, `modes_<bike>_<rider>_<stiffness>.png` (Fig. 4-4 layout, thesis run), "
+            "`pose_<pose>.png` (the poses on the Jamis).\n"]
+    return "\n".join(out)

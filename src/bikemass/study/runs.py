@@ -1,0 +1,186 @@
+"""The stability study run three ways, each configuration evaluated once per run.
+
+* ``thesis``: what the thesis computed: the published Table 3-9 bodies
+  (``<bike>-thesis``), the published Table 3-4 riders (``<pose>-thesis``) added with
+  Eq. 3.6 (``combine="thesis"``: no parallel-axis terms), the published Table 3-12 S,
+  ranges read off the 0..30 m/s grid (step 0.05) with the 2 rad/s marginal modulus.
+* ``corrected``: the same published bodies and riders, so that the difference isolates
+  the physical corrections: rider and frame combined with the parallel-axis theorem,
+  S condensed onto roll and steer (``procedure="condensed"``) from the beam model of the
+  geometry bicycle's rear frame (:data:`~bikemass.study.configurations.FE_FRAME`), and
+  critical speeds and range ends as exact roots.
+* ``geometry``: everything from geometry: the geometry bicycles and the Table 3-3 riders
+  (closed-form solids), combined and stiffened as ``corrected``; ranges on the grid.
+
+The benchmark bicycle is the same parameter file in every run.
+"""
+
+from dataclasses import dataclass
+
+from .. import catalog
+from ..fe import equivalent_stiffness
+from ..materials import load_materials
+from ..bicycle import bicycle_parameters
+from ..stability import canonical_matrices, follow_modes, speed_grid, stability, with_frame_stiffness
+from ..stability.criteria import MARGINAL_THRESHOLD, is_stable
+from ..stability.labels import LABELS
+from ..stability.ranges import grid_ranges
+from .configurations import BENCHMARK, FE_FRAME
+
+CRITERIA = ("strict", "marginal")
+MODES = ("overall",) + LABELS
+"""Range keys of an :class:`Outcome`: all modes together, then each labelled mode."""
+METHOD = "exact"
+"""Mass properties of geometry parts from closed-form solids (the meshes agree to ~1e-5)."""
+
+
+@dataclass(frozen=True)
+class RunSpec:
+    """How one run builds its parameter sets and stiffnesses and reads its ranges."""
+
+    name: str
+    title: str
+    published_bodies: bool
+    combine: str
+    stiffness_source: str
+    procedure: str
+    exact: bool
+
+    def bike_name(self, bike):
+        return bike if bike == BENCHMARK or not self.published_bodies else f"{bike}-thesis"
+
+    def rider_name(self, rider):
+        if rider in ("none", "included"):
+            return None
+        return f"{rider}-thesis" if self.published_bodies else rider
+
+
+THESIS = RunSpec("thesis", "thesis mode (published bodies and riders, Eq. 3.6, published S, 0.05 m/s grid)",
+                 published_bodies=True, combine="thesis", stiffness_source="published",
+                 procedure="thesis", exact=False)
+CORRECTED = RunSpec("corrected", "corrected (published bodies and riders, parallel axis, condensed S "
+                    "from the beam model, exact critical speeds)",
+                    published_bodies=True, combine="exact", stiffness_source="computed",
+                    procedure="condensed", exact=True)
+GEOMETRY = RunSpec("geometry", "from geometry (geometry bicycles and Table 3-3 riders, parallel axis, condensed "
+                   "S from the beam model; ranges on the 0.05 m/s grid)",
+                   published_bodies=False, combine="exact", stiffness_source="computed",
+                   procedure="condensed", exact=False)
+RUNS = (THESIS, CORRECTED, GEOMETRY)
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """Result of one configuration in one run.
+
+    ``ranges[kind][criterion][mode]`` = ``[[start, stop], ...]`` (m/s) with ``kind``
+    ``grid`` (always) or ``exact`` (exact runs), ``criterion`` in :data:`CRITERIA`,
+    ``mode`` in :data:`MODES`; ``weave_speeds`` / ``capsize_speeds`` (m/s) are the
+    exact crossings (``None`` in grid-only runs).
+    """
+
+    configuration: object
+    parameters: object
+    S: object
+    modes: object
+    ranges: dict
+    weave_speeds: list = None
+    capsize_speeds: list = None
+
+
+def grid_outcome_ranges(modes, marginal=MARGINAL_THRESHOLD):
+    """``{criterion: {mode: [[first, last], ...]}}``: runs of stable grid speeds of tracked ``modes``."""
+    out = {}
+    for criterion, threshold in zip(CRITERIA, (None, marginal)):
+        stable = is_stable(modes.eigenvalues, threshold)
+        out[criterion] = {"overall": grid_ranges(modes.speeds, stable.all(axis=1))}
+        out[criterion].update({label: grid_ranges(modes.speeds, stable[:, modes.labels.index(label)])
+                               for label in LABELS})
+    return out
+
+
+def _exact_ranges(st):
+    return {kind: {criterion: {"overall": st.ranges[criterion][kind],
+                               **{label: st.mode_ranges[label][criterion][kind] for label in LABELS}}
+                   for criterion in CRITERIA} for kind in ("grid", "exact")}
+
+
+def evaluate(matrices, configuration, parameters, S, exact, speeds=None):
+    """:class:`Outcome` of canonical ``matrices`` (rigid) with rear-frame stiffness ``S``."""
+    m = with_frame_stiffness(matrices, S)
+    speeds = speed_grid() if speeds is None else speeds
+    if exact:
+        st = stability(m, speeds)
+        return Outcome(configuration, parameters, S, st.modes, _exact_ranges(st),
+                       st.weave_speeds, st.capsize_speeds)
+    modes = follow_modes(m, speeds)
+    return Outcome(configuration, parameters, S, modes, {"grid": grid_outcome_ranges(modes)})
+
+
+class Inputs:
+    """Loads bicycles, riders, parameter sets and stiffnesses once and hands them to every run."""
+
+    def __init__(self):
+        self._bicycles, self._riders, self._parameters, self._stiffness = {}, {}, {}, {}
+        self._matrices, self._materials = {}, None
+
+    def bicycle(self, name):
+        if name not in self._bicycles:
+            self._bicycles[name] = catalog.bicycle(name)
+        return self._bicycles[name]
+
+    def rider(self, name):
+        if name is not None and name not in self._riders:
+            self._riders[name] = catalog.load_rider(name)
+        return self._riders.get(name)
+
+    def parameters(self, spec, configuration):
+        """Benchmark parameter set of ``configuration`` as ``spec`` builds it (cached)."""
+        key = (spec.bike_name(configuration.bike), spec.rider_name(configuration.rider), spec.combine)
+        if key not in self._parameters:
+            bike, rider, combine = key
+            self._parameters[key] = bicycle_parameters(self.bicycle(bike), self.rider(rider), combine, METHOD)
+        return self._parameters[key]
+
+    def matrices(self, spec, configuration):
+        """Rigid-frame canonical matrices of ``configuration`` in ``spec`` (cached)."""
+        p = self.parameters(spec, configuration)
+        if id(p) not in self._matrices:
+            self._matrices[id(p)] = canonical_matrices(p)
+        return self._matrices[id(p)]
+
+    def stiffness(self, spec, configuration):
+        """2x2 S (N m/rad) of ``configuration`` in ``spec``, ``None`` if rigid."""
+        if configuration.stiffness == "infinite":
+            return None
+        if spec.stiffness_source == "computed":
+            return self.frame_stiffness(FE_FRAME[configuration.bike], configuration.stiffness, spec.procedure)
+        bicycle = self.bicycle(spec.bike_name(configuration.bike))
+        S = bicycle.published_stiffness(self.material(configuration.stiffness))
+        if S is None:
+            raise ValueError(f"{bicycle.name} has no published {configuration.stiffness} stiffness")
+        return S
+
+    def material(self, name):
+        if self._materials is None:
+            self._materials = load_materials()
+        return self._materials[name]
+
+    def frame_stiffness(self, frame, material, procedure):
+        """S (N m/rad) of the rear-frame beam model of bicycle ``frame`` in ``material`` (cached)."""
+        key = (frame, material, procedure)
+        if key not in self._stiffness:
+            self._stiffness[key] = equivalent_stiffness(self.bicycle(frame).structure, self.material(material),
+                                                        procedure)
+        return self._stiffness[key]
+
+
+def run(spec, configurations, inputs, step=None):
+    """``{configuration: Outcome}`` of one run; ``step(label)`` is called after each configuration."""
+    out = {}
+    for c in configurations:
+        out[c] = evaluate(inputs.matrices(spec, c), c, inputs.parameters(spec, c),
+                          inputs.stiffness(spec, c), spec.exact)
+        if step is not None:
+            step(f"{spec.name}: {c.label}")
+    return out

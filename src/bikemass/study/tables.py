@@ -1,0 +1,48 @@
+"""A result table of the study: raw values for CSV, formatted values for the Markdown report."""
+
+import csv
+import io
+from dataclasses import dataclass, field
+
+
+@dataclass(frozen=True)
+class Table:
+    """``key`` (CSV file stem), ``title``, column ``headers``, ``rows`` of raw values.
+
+    ``formats`` maps a column index to a format string for the report (floats
+    default to ``{:.3f}``); ``None`` is written as an empty CSV cell and ``-`` in Markdown.
+    """
+
+    key: str
+    title: str
+    headers: tuple
+    rows: list
+    formats: dict = field(default_factory=dict)
+    notes: tuple = ()
+
+    def to_csv(self):
+        """CSV text, full precision (``repr`` of floats), header line first."""
+        buf = io.StringIO()
+        writer = csv.writer(buf, lineterminator="\n")
+        writer.writerow(self.headers)
+        for row in self.rows:
+            writer.writerow(["" if v is None else v for v in row])
+        return buf.getvalue()
+
+    def cell(self, column, value):
+        if value is None:
+            return "-"
+        if isinstance(value, bool):
+            return "yes" if value else "no"
+        if isinstance(value, float):
+            return self.formats.get(column, "{:.3f}").format(value)
+        return str(value)
+
+    def to_markdown(self):
+        """A GitHub-style Markdown table (numbers right-aligned)."""
+        numeric = [any(isinstance(r[i], (int, float)) and not isinstance(r[i], bool) for r in self.rows)
+                   for i in range(len(self.headers))]
+        lines = ["| " + " | ".join(self.headers) + " |",
+                 "|" + "|".join("---:" if n else "---" for n in numeric) + "|"]
+        lines += ["| " + " | ".join(self.cell(i, v) for i, v in enumerate(row)) + " |" for row in self.rows]
+        return "\n".join(lines) + "\n"

@@ -1,0 +1,193 @@
+"""``bikemass study``: one run without figures (module fixture) checked file by file.
+
+Tolerances: stability entries match within one grid step (0.05 m/s, the thesis's
+grid), Table 3-4 within 0.5 % and the Jamis frame within 1 % (issue 6); the
+reproduced count must be at least 880 of the 894 entries of Tables 4-2..5-3.
+"""
+
+import contextlib
+import csv
+import io
+import json
+import re
+
+import pytest
+
+from bikemass import catalog
+from bikemass.cli import main
+
+BIKES = {"benchmark", "jamis", "cargo", "cargo-loaded"}
+RIDERS = {"included", "none", "no-hands", "relaxed", "on-hoods", "aerobars", "aero-tuck"}
+STIFFNESSES = {"infinite", "steel", "titanium", "aluminum"}
+MODES = {"overall", "weave", "capsize", "caster"}
+KEYS = {"bike", "rider", "stiffness", "mode", "criterion", "start", "stop", "range"}
+
+
+@pytest.fixture(scope="module")
+def study(tmp_path_factory):
+    out = tmp_path_factory.mktemp("study")
+    stdout = io.StringIO()
+    with contextlib.redirect_stdout(stdout):
+        code = main(["study", "--out", str(out), "--no-figures"])
+    assert code == 0
+    return out, stdout.getvalue()
+
+
+def read_csv(path):
+    with open(path, newline="") as fh:
+        rows = list(csv.reader(fh))
+    return rows[0], rows[1:]
+
+
+def load(study, name):
+    return json.loads((study[0] / name).read_text())
+
+
+@pytest.mark.parametrize("name", ["stability_ranges.json", "stability_ranges_corrected.json",
+                                  "stability_ranges_geometry.json"])
+def test_range_records_schema(study, name):
+    records = load(study, name)
+    keys = set()
+    for r in records:
+        assert set(r) == KEYS
+        assert r["bike"] in BIKES and r["rider"] in RIDERS and r["stiffness"] in STIFFNESSES
+        assert r["mode"] in MODES and r["criterion"] in {"strict", "marginal"}
+        if r["start"] is None:
+            assert r["stop"] is None and r["range"] is None
+        else:
+            assert 0 <= r["start"] <= r["stop"] <= 30
+            assert r["range"] == pytest.approx(r["stop"] - r["start"], abs=1e-9)
+        keys.add(tuple(r[k] for k in ("bike", "rider", "stiffness", "mode", "criterion")))
+    # 73 configurations (benchmark + 3 bicycles x 6 riders x 4 stiffnesses) x 4 modes x 2 criteria
+    assert len(keys) == 73 * 4 * 2
+    assert len(records) >= len(keys)
+
+
+def test_thesis_run_records_are_grid_values_and_corrected_are_exact(study):
+    def overall(records, **where):
+        return [(r["start"], r["stop"]) for r in records if r["mode"] == "overall" and r["criterion"] == "strict"
+                and all(r[k] == v for k, v in where.items())]
+    benchmark = dict(bike="benchmark", rider="included", stiffness="infinite")
+    # Meijaard et al. (2007): weave speed 4.29238253634110, capsize 6.02426201538838 m/s
+    assert overall(load(study, "stability_ranges.json"), **benchmark) == [(4.3, 6.0)]
+    (start, stop), = overall(load(study, "stability_ranges_corrected.json"), **benchmark)
+    assert start == pytest.approx(4.29238253634110, abs=1e-9)
+    assert stop == pytest.approx(6.02426201538838, abs=1e-9)
+
+
+def test_weave_record_is_where_both_weave_roots_are_stable(study):
+    records = load(study, "stability_ranges.json")
+    # Table 4-5 (Cargo, marginal), No Hands: weave 1 stable 0..4.70, weave 2 2.95..4.70
+    weave = [(r["start"], r["stop"]) for r in records if (r["bike"], r["rider"], r["stiffness"], r["mode"],
+             r["criterion"]) == ("cargo", "no-hands", "infinite", "weave", "marginal")]
+    assert weave == [(2.95, 4.7)]
+
+
+def stability_entries(study):
+    rows = []
+    for path in sorted(study[0].glob("table_[45]_[0-9].csv")):
+        header, body = read_csv(path)
+        assert header == ["row", "column", "bikemass (m/s)", "thesis (m/s)", "match", "explanation"]
+        rows += [(path.stem, *r) for r in body]
+    return rows
+
+
+def test_at_least_880_of_894_entries_match_and_every_miss_is_explained(study):
+    rows = stability_entries(study)
+    assert len(rows) == 894
+    matched = sum(r[5] == "True" for r in rows)
+    assert matched >= 880
+    assert f"{matched} of 894 entries within 0.05 m/s" in study[1]
+    for table, row, column, ours, thesis, match, explanation in rows:
+        if match == "True":
+            assert explanation == ""
+            assert (ours == thesis == "") or abs(float(ours) - float(thesis)) <= 0.05 + 1e-9
+        else:
+            assert explanation.startswith(("explained", "not explained")), (table, row, column)
+            assert f"{row}, {column}: ours" in (study[0] / "report.md").read_text()
+
+
+def test_known_miss_is_explained_by_rounding(study):
+    """Table 5-2, steel Cargo, Relaxed, marginal range: 1.30 vs printed 1.20 (docs/stability.md)."""
+    misses = [r for r in stability_entries(study) if r[5] == "False"]
+    known = [r for r in misses if r[:3] == ("table_5_2", "Steel / Relaxed", "marginal range")]
+    assert known and known[0][6].startswith("explained by the rounding")
+
+
+def test_report_sections(study):
+    text = (study[0] / "report.md").read_text()
+    for heading in ["## Summary", "## The runs", "## Stability tables: thesis run vs thesis", "### Misses",
+                    "## Inputs", "## Corrections: what changes and by how much", "## Files"]:
+        assert heading in text
+    for number in ["4-2", "4-3", "4-4", "4-5", "4-6", "4-7", "5-1", "5-2", "5-3"]:
+        assert f"### Table {number}:" in text
+    for number in ["3-4", "3-9", "3-12", "5-4", "5-5"]:
+        assert re.search(rf"### Table {number}: ", text), number
+
+
+def test_every_csv_parses_into_a_rectangle(study):
+    paths = sorted(study[0].glob("*.csv"))
+    assert len(paths) >= 9 + 5 + 3
+    for path in paths:
+        header, body = read_csv(path)
+        assert body and all(len(r) == len(header) for r in body), path.name
+
+
+def test_table_3_4_within_half_a_percent(study):
+    header, body = read_csv(study[0] / "table_3_4_riders.csv")
+    assert len(body) == 5 * 8 and all(r[-1] == "True" for r in body)
+    assert max(abs(float(r[5])) for r in body if r[5]) <= 0.5
+
+
+def test_jamis_stiffness_and_modes_within_one_percent(study):
+    _, stiffness = read_csv(study[0] / "table_3_12_stiffness.csv")
+    jamis = [r for r in stiffness if r[0] == "jamis" and r[2] == "thesis"]
+    assert len(jamis) == 9 and all(abs(float(r[6])) <= 1.0 and r[7] == "match" for r in jamis)
+    cargo = [r for r in stiffness if r[0] == "cargo"]
+    assert len(cargo) == 18 and all(r[6] for r in cargo)      # errors shown for every entry
+    _, modes = read_csv(study[0] / "table_5_4_jamis_modes.csv")
+    assert len(modes) == 34 and all(r[-1] == "match" for r in modes)     # 34 rows x 3 materials = 102
+
+
+def test_corrected_run_adds_the_parallel_axis_terms(study):
+    """IBxx grows by the reduced mass times the squared height difference of the two CoMs."""
+    _, rows = read_csv(study[0] / "corrections_inertia.csv")
+    assert len(rows) == 15
+    for bike, rider, thesis_ixx, corrected_ixx, *_ in rows:
+        frame = catalog.parameters(f"{bike}-thesis")
+        person = catalog.load_rider(f"{rider}-thesis").properties("exact")
+        mu = frame.mB * person.mass / (frame.mB + person.mass)
+        expected = mu * (frame.zB - person.com[2]) ** 2
+        assert float(corrected_ixx) - float(thesis_ixx) == pytest.approx(expected, rel=1e-9)
+        assert float(corrected_ixx) > float(thesis_ixx)
+
+
+def test_corrected_stiffness_is_the_condensed_beam_model(study):
+    from bikemass.fe import equivalent_stiffness
+    from bikemass.materials import load_materials
+    _, rows = read_csv(study[0] / "corrections_stiffness.csv")
+    S = equivalent_stiffness(catalog.bicycle("cargo").structure, load_materials()["titanium"], "condensed")
+    row = next(r for r in rows if r[:3] == ["cargo-loaded", "titanium", "K_deltadelta"])
+    assert float(row[4]) == pytest.approx(S[1, 1], rel=1e-12)
+    assert float(row[3]) == 2207.0     # the published value as frames/cargo_loaded_thesis.yaml carries it
+
+
+def test_stdout_summary(study):
+    out = study[1]
+    assert "Tables 4-2..4-7, 5-1..5-3 (thesis run):" in out
+    assert "Table 3-4: 40 of 40 entries within 0.5 %" in out
+    assert out.rstrip().endswith("report.md")
+
+
+def test_help_is_for_newcomers(capsys):
+    with pytest.raises(SystemExit):
+        main(["study", "--help"])
+    text = capsys.readouterr().out
+    assert "report.md" in text and "--no-figures" in text and "--out DIR" in text
+
+
+@pytest.mark.parametrize("argv, key", [(["--jobs", "0"], "--jobs"), (["--out", __file__], "--out")])
+def test_bad_input_one_line_exit_2(capsys, argv, key):
+    assert main(["study", *argv]) == 2
+    _, err = capsys.readouterr()
+    assert err.count("\n") == 1 and key in err and "Traceback" not in err
