@@ -1,7 +1,7 @@
 """Chain poses: joined segments, contacts met, closed-form checks of the solver, bad input.
 
 Tolerances: joints and contacts are checked on the Rider's placed parts (not on the
-chain's own formulas) to 1e-9 m: the solver converges to ~1e-13 m and the placement
+chain's own formulas) to 1e-9 m: the solver converges to ~1e-14 m and the placement
 form keeps every digit.  Joint angles are checked against the law of cosines to 1e-7
 deg; reach limits against straight-limb distances to the printed 0.1 mm.
 """
