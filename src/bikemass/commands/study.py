@@ -71,7 +71,7 @@ def summary(results, counts, out):
     misses = [e for e in results.entries if not e.match]
     lines = [f"Tables 4-2..4-7, 5-1..5-3 (thesis run): {counts['all'][0]} of {counts['all'][1]} entries "
              f"within 0.05 m/s (chapter 4: {counts['chapter 4'][0]}/{counts['chapter 4'][1]}, "
-             f"chapter 5: {counts['chapter 5'][0]}/{counts['chapter 5'][1]})"]
+             f"chapter 5: {counts['chapter 5'][0]}/{counts['chapter 5'][1]}; {counts['identical']} identical)"]
     lines += [f"  miss: {e.table[1:].replace('_', '-')} {e.row} {e.column}: {results.explanations[e]}"
               for e in misses]
     lines += [f"{t.title.split(':')[0]}: {t.notes[0]}" for t in results.input_tables if t.notes]

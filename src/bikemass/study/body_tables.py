@@ -26,6 +26,7 @@ TABLE_3_9_NAMES = {"w": "w", "c": "t", "lam": "head_angle", "rR": "R_rw", "mR": 
                    "IFyy": "Dyy"}
 """Benchmark parameter name -> Table 3-9 row (``lam`` = pi/2 - head angle)."""
 TABLE_3_9_COLUMNS = {"jamis": "Jamis", "cargo": "Cargo", "cargo-loaded": "Cargo load"}
+WHEEL_PARAMETERS = ("rR", "mR", "IRxx", "IRyy", "rF", "mF", "IFxx", "IFyy")
 
 
 def _relative(ours, theirs):
@@ -72,7 +73,10 @@ def bicycle_table(parameters):
         rows.append(row)
     formats = {i: "{:+.1f}" for i in range(4, len(headers), 3)}
     formats.update({i: "{:.4f}" for i in range(2, len(headers)) if i not in formats})
+    mass = rows[list(TABLE_3_9_NAMES).index("mB")]
+    wheels = [abs(r[i]) for r in rows if r[0] in WHEEL_PARAMETERS for i in range(4, len(headers), 3)]
+    summary = (f"rear-frame mass {', '.join(f'{b} {mass[4 + 3 * k]:+.1f} %' for k, b in enumerate(TABLE_3_9_COLUMNS))}; "
+               f"wheels within {max(wheels):.1f} %. Shown, not asserted: the thesis's CAD models are not "
+               "published; docs/validation-bicycles.md says what each difference means.")
     return Table("table_3_9_bicycles", "Table 3-9: bicycles from geometry (mass properties of the parts) "
-                 "vs published", tuple(headers), rows, formats=formats,
-                 notes=("Shown, not asserted: the thesis's CAD models are not published; see "
-                        "docs/validation-bicycles.md for what each difference means.",))
+                 "vs published", tuple(headers), rows, formats=formats, notes=(summary,))

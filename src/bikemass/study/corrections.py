@@ -120,7 +120,8 @@ def summary(thesis, corrected):
     cargo = [(corrected[c].S[0, 1] - o.S[0, 1]) / o.S[0, 1] for c, o in thesis.items()
              if c.bike == "cargo" and o.S is not None]
     if cargo:
+        spread = sorted({f"{100 * x:+.0f} %" for x in cargo})
         lines.append(f"The Cargo's computed S also carries the error of its reconstructed beam model "
-                     f"(K_phidelta {100 * min(cargo):+.0f} to {100 * max(cargo):+.0f} % against Table 3-12): "
+                     f"(K_phidelta {' to '.join(spread[::len(spread) - 1 or 1])} against Table 3-12): "
                      "for the Cargo the flexible-frame results are a what-if on that model.")
     return lines

@@ -37,11 +37,12 @@ def _table_section(t, level="###"):
 
 
 def match_counts(entries):
-    """``(matched, total)`` overall and for chapters 4 and 5."""
+    """``(matched, total)`` overall and for chapters 4 and 5; ``identical``: equal to the printed 2 decimals."""
     def count(prefix):
         mine = [e for e in entries if e.table.startswith(prefix)]
         return sum(e.match for e in mine), len(mine)
-    return {"all": count("T"), "chapter 4": count("T4"), "chapter 5": count("T5")}
+    identical = sum(_speed(e.ours) == _speed(e.thesis) and not e.several for e in entries)
+    return {"all": count("T"), "chapter 4": count("T4"), "chapter 5": count("T5"), "identical": identical}
 
 
 def render(results):
@@ -58,11 +59,13 @@ def render(results):
            "## Summary\n",
            f"* Tables 4-2..4-7 and 5-1..5-3 (thesis run): **{counts['all'][0]} of {counts['all'][1]}** "
            f"entries within {TOLERANCE} m/s (Chapter 4: {counts['chapter 4'][0]}/{counts['chapter 4'][1]}, "
-           f"Chapter 5: {counts['chapter 5'][0]}/{counts['chapter 5'][1]}); {len(misses)} missed, "
+           f"Chapter 5: {counts['chapter 5'][0]}/{counts['chapter 5'][1]}; {counts['identical']} identical); "
+           f"{len(misses)} missed, "
            f"{explained} of them explained by the rounding of the printed parameters (see Misses)."]
     out += [f"* {t.title.split(':')[0]}: {t.notes[0]}" for t in r.input_tables if t.notes]
-    out += ["* Corrections (parallel-axis theorem, condensed S from the beam model, exact critical speeds): "
-            + " ".join(r.correction_summary), ""]
+    out += ["* Corrections (parallel-axis theorem, condensed S from the beam model, exact critical speeds; "
+            "see the section below):"]
+    out += [f"  * {line}" for line in r.correction_summary] + [""]
     out += ["## The runs\n"]
     out += [f"* **{spec.name}**: {spec.title}." for spec in RUNS if spec.name in r.runs]
     out += ["", "The 73 configurations: the benchmark bicycle (Meijaard et al. 2007) and the Jamis, the "

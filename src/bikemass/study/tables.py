@@ -35,7 +35,9 @@ class Table:
         if isinstance(value, bool):
             return "yes" if value else "no"
         if isinstance(value, float):
-            return self.formats.get(column, "{:.3f}").format(value)
+            fmt = self.formats.get(column, "{:.3f}")
+            text = fmt.format(value)
+            return fmt.format(0.0) if float(text.rstrip(" %")) == 0 else text   # no "-0.000"
         return str(value)
 
     def to_markdown(self):
