@@ -10,6 +10,7 @@ import csv
 import io
 import json
 import re
+from unittest import mock
 
 import pytest
 
@@ -23,14 +24,39 @@ MODES = {"overall", "weave", "capsize", "caster"}
 KEYS = {"bike", "rider", "stiffness", "mode", "criterion", "start", "stop", "range"}
 
 
+class CountingProgress:
+    """Stands in for the progress bar: records its total and every step."""
+
+    instances = []
+
+    def __init__(self, total, title):
+        self.total, self.labels = total, []
+        CountingProgress.instances.append(self)
+
+    def __enter__(self):
+        return self
+
+    def step(self, label=""):
+        self.labels.append(label)
+
+    def __exit__(self, *exc):
+        return False
+
+
 @pytest.fixture(scope="module")
 def study(tmp_path_factory):
     out = tmp_path_factory.mktemp("study")
     stdout = io.StringIO()
-    with contextlib.redirect_stdout(stdout):
+    with contextlib.redirect_stdout(stdout), mock.patch("bikemass.progress.Progress", CountingProgress):
         code = main(["study", "--out", str(out), "--no-figures"])
     assert code == 0
     return out, stdout.getvalue()
+
+
+def test_progress_bar_counts_every_step(study):
+    bar = CountingProgress.instances[-1]
+    assert len(bar.labels) == bar.total == 73 + 1 + 1 + 2 * 3 + 1
+    assert bar.labels[-1] == "frame models"
 
 
 def read_csv(path):

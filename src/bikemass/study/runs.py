@@ -105,10 +105,10 @@ def _exact_ranges(st):
                    for criterion in CRITERIA} for kind in ("grid", "exact")}
 
 
-def evaluate(matrices, configuration, parameters, S, exact, speeds=None):
-    """:class:`Outcome` of canonical ``matrices`` (rigid) with rear-frame stiffness ``S``."""
+def evaluate(matrices, configuration, parameters, S, exact):
+    """:class:`Outcome` of canonical ``matrices`` (rigid) with rear-frame stiffness ``S`` on the thesis's grid."""
     m = with_frame_stiffness(matrices, S)
-    speeds = speed_grid() if speeds is None else speeds
+    speeds = speed_grid()
     if exact:
         st = stability(m, speeds)
         return Outcome(configuration, parameters, S, st.modes, _exact_ranges(st),
