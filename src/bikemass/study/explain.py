@@ -110,6 +110,22 @@ class Explanation:
                 f"runs (largest effect: {movers})")
 
 
+def _largest_effects(base, values, names, half, count=3):
+    """``"name +h -> value"`` of the (at most ``count``) one-at-a-time runs moving the entry most.
+
+    ``values``: the entry after ``+half`` for every name, then after ``-half``; only runs
+    that move it by at least a grid step (or make it appear or vanish) are listed.
+    """
+    def shift(v):
+        if v is None or base is None:
+            return 0.0 if v is base else np.inf
+        return abs(v - base)
+    labels = [f"{name} {sign}{h:g}" for sign in "+-" for name, h in zip(names, half)]
+    moved = sorted(((shift(v), label, v) for label, v in zip(labels, values)), key=lambda m: -m[0])
+    return tuple(f"{label} -> {'none' if v is None else f'{v:.2f}'}"
+                 for d, label, v in moved[:count] if d > TOLERANCE / 2)
+
+
 def _value(entry, params, S, configuration):
     outcome = evaluate(canonical_matrices(params), configuration, params, S, exact=False)
     return single_run(outcome.ranges["grid"][entry.criterion][entry.mode], entry.part)[0]
@@ -136,10 +152,5 @@ def explain(entry, inputs):
         explained = none_reached
     else:
         explained = bool(numbers) and low - 1e-9 <= entry.thesis <= high + 1e-9
-    base = entry.ours
-    shifts = [(abs(v - base) if v is not None and base is not None else np.inf if (v is None) != (base is None)
-               else 0.0, name, sign) for (name, sign), v in
-              zip([(nm, "+") for nm in printed.names()] + [(nm, "-") for nm in printed.names()], values)]
-    movers = tuple(f"{name} {sign}" for shift, name, sign in sorted(shifts, key=lambda s: -s[0])[:3]
-                   if shift > TOLERANCE / 2)
+    movers = _largest_effects(entry.ours, values[:2 * n], printed.names(), half)
     return Explanation(explained, low, high, none_reached, len(values), movers)

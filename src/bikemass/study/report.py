@@ -1,7 +1,7 @@
 """``report.md``: the study's results beside the thesis's, readable on its own."""
 
 from .runs import RUNS
-from .stability_tables import CHAPTER4, CHAPTER5, TOLERANCE, title
+from .stability_tables import CHAPTER4, CHAPTER5, TOLERANCE, compare, title
 
 LEGEND = (f"Each cell: our value (m/s, first or last speed of the stable run on the 0..30 m/s grid, or "
           f"its length; `-` = no stable run), the thesis's in brackets where it differs, then "
@@ -62,6 +62,11 @@ def render(results):
            f"Chapter 5: {counts['chapter 5'][0]}/{counts['chapter 5'][1]}; {counts['identical']} identical); "
            f"{len(misses)} missed, "
            f"{explained} of them explained by the rounding of the printed parameters (see Misses)."]
+    others = [f"{name} run {m} of {n}" for name in ("corrected", "geometry") if name in r.runs
+              for m, n in [match_counts(compare(r.runs[name]))["all"]]]
+    if others:
+        out.append(f"* For contrast, against the same tables (grid values): {', '.join(others)}: the printed "
+                   "tables follow the thesis's own inputs and Eq. 3.6, not the corrected physics.")
     out += [f"* {t.title.split(':')[0]}: {t.notes[0]}" for t in r.input_tables if t.notes]
     out += ["* Corrections (parallel-axis theorem, condensed S from the beam model, exact critical speeds; "
             "see the section below):"]
