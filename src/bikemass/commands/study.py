@@ -57,7 +57,7 @@ def run_study(args):
         raise InputError("--jobs", str(args.jobs), "a number of processes >= 1")
     workers = args.jobs or pipeline.WORKERS
     figures = not args.no_figures
-    with Progress(pipeline.steps(with_figures=figures), "study") as bar:
+    with Progress(pipeline.steps(figures), "study") as bar:
         results = pipeline.compute(workers, bar.step)
         pipeline.write_files(results, out)
         if figures:

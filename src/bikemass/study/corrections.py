@@ -63,19 +63,18 @@ def _shift(a, b):
     return None, None
 
 
-def range_table(thesis, corrected, geometry=None):
-    """Overall stable ranges per configuration and criterion: thesis run (grid) vs corrected (exact)."""
+def range_table(thesis, corrected, geometry):
+    """Overall stable ranges per configuration and criterion: thesis run (grid) vs corrected (exact),
+    and the run from geometry (grid)."""
     rows = []
     for c, o in thesis.items():
         for criterion in CRITERIA:
             a = o.ranges["grid"][criterion]["overall"]
             b = corrected[c].ranges["exact"][criterion]["overall"]
-            row = [c.bike, c.rider, c.stiffness, criterion, _fmt(a), _fmt(b), *_shift(a, b)]
-            if geometry is not None:
-                row.append(_fmt(geometry[c].ranges["grid"][criterion]["overall"]))
-            rows.append(row)
+            rows.append([c.bike, c.rider, c.stiffness, criterion, _fmt(a), _fmt(b), *_shift(a, b),
+                         _fmt(geometry[c].ranges["grid"][criterion]["overall"])])
     headers = ["bike", "rider", "stiffness", "criterion", "thesis run (grid)", "corrected (exact)",
-               "start change", "stop change"] + (["from geometry (grid)"] if geometry is not None else [])
+               "start change", "stop change", "from geometry (grid)"]
     return Table("corrections_ranges", "Stable speed ranges (m/s, all modes): thesis run vs corrected run",
                  tuple(headers), rows, formats={6: "{:+.2f}", 7: "{:+.2f}"})
 

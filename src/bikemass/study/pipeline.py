@@ -64,17 +64,17 @@ def _by_bike(configs):
     return list(groups.values())
 
 
-def compute(workers=WORKERS, step=lambda label: None, geometry=True):
+def compute(workers=WORKERS, step=lambda label: None):
     """:class:`StudyResults`; ``step(label)`` is called after each unit of work (:func:`steps`)."""
     global _INPUTS
     inputs = Inputs()
     _preload(inputs)
     _INPUTS = inputs
     configs = configurations()
-    exact_specs = (CORRECTED, GEOMETRY) if geometry else (CORRECTED,)
     with executor(workers) as pool:
         frames_job = pool.submit(_frames)
-        parts = [(spec, pool.submit(_run_part, spec, part)) for spec in exact_specs for part in _by_bike(configs)]
+        parts = [(spec, pool.submit(_run_part, spec, part)) for spec in (CORRECTED, GEOMETRY)
+                 for part in _by_bike(configs)]
         thesis = run(THESIS, configs, inputs, step)
         entries = compare(thesis)
         explanations = {e: explain(e, inputs).text() for e in entries if not e.match}
@@ -93,20 +93,17 @@ def compute(workers=WORKERS, step=lambda label: None, geometry=True):
     published = {(f, m): inputs.bicycle(f"{f}-thesis").published_stiffness(inputs.material(m))
                  for f in FRAMES for m in MATERIALS}
     input_tables += [stiffness_table(frames, published), modes_table(frames, "jamis"), modes_table(frames, "cargo")]
-    corrected = runs["corrected"]
-    runs["corrected"] = {c: corrected[c] for c in configs}
-    if geometry:
-        runs["geometry"] = {c: runs["geometry"][c] for c in configs}
+    runs = {name: {c: outcomes[c] for c in configs} for name, outcomes in runs.items()}   # study order
     correction_tables = [corrections.inertia_table(thesis, runs["corrected"]),
                          corrections.stiffness_table(thesis, runs["corrected"]),
-                         corrections.range_table(thesis, runs["corrected"], runs.get("geometry"))]
+                         corrections.range_table(thesis, runs["corrected"], runs["geometry"])]
     return StudyResults(runs, entries, explanations, input_tables, correction_tables,
                         corrections.summary(thesis, runs["corrected"]))
 
 
-def steps(geometry=True, with_figures=True):
+def steps(with_figures=True):
     """How many times :func:`compute` (and :func:`draw`) call ``step``."""
-    n = len(configurations()) + 2 + len(BICYCLES) * (2 if geometry else 1) + 1
+    n = len(configurations()) + 2 + 2 * len(BICYCLES) + 1
     return n + (figures.figure_count() if with_figures else 0)
 
 
@@ -116,9 +113,7 @@ def write_files(results, out):
     write_atomic(out / "stability_ranges.json", dumps(records(results.runs["thesis"], "grid"), "json"))
     write_atomic(out / "stability_ranges_corrected.json",
                  dumps(records(results.runs["corrected"], "exact"), "json"))
-    if "geometry" in results.runs:
-        write_atomic(out / "stability_ranges_geometry.json",
-                     dumps(records(results.runs["geometry"], "grid"), "json"))
+    write_atomic(out / "stability_ranges_geometry.json", dumps(records(results.runs["geometry"], "grid"), "json"))
     tables = [entry_table(t, results.entries, results.explanations) for t in (*CHAPTER4, *CHAPTER5)]
     for table in tables + results.input_tables + results.correction_tables:
         write_atomic(out / f"{table.key}.csv", table.to_csv())
@@ -132,9 +127,9 @@ def figure_jobs(results, inputs, folder):
             + figures.pose_jobs(inputs.bicycle("jamis"), {p: inputs.rider(p) for p in THESIS_POSES}, folder))
 
 
-def draw(results, out, workers=WORKERS, step=lambda label: None, jobs=None):
-    """Draw the figures into ``out/figures`` (``jobs``: a subset of :func:`figure_jobs`)."""
-    jobs = figure_jobs(results, _INPUTS or Inputs(), out / "figures") if jobs is None else jobs
+def draw(results, out, workers=WORKERS, step=lambda label: None):
+    """Draw the figures into ``out/figures``."""
+    jobs = figure_jobs(results, _INPUTS or Inputs(), out / "figures")
     with executor(workers) as pool:
         for path in [pool.submit(figures.run_job, job) for job in jobs]:
             step(path.result().name)

@@ -62,17 +62,16 @@ def render(results):
            f"Chapter 5: {counts['chapter 5'][0]}/{counts['chapter 5'][1]}; {counts['identical']} identical); "
            f"{len(misses)} missed, "
            f"{explained} of them explained by the rounding of the printed parameters (see Misses)."]
-    others = [f"{name} run {m} of {n}" for name in ("corrected", "geometry") if name in r.runs
+    others = [f"{name} run {m} of {n}" for name in ("corrected", "geometry")
               for m, n in [match_counts(compare(r.runs[name]))["all"]]]
-    if others:
-        out.append(f"* For contrast, against the same tables (grid values): {', '.join(others)}: the printed "
-                   "tables follow the thesis's own inputs and Eq. 3.6, not the corrected physics.")
+    out.append(f"* For contrast, against the same tables (grid values): {', '.join(others)}: the printed "
+               "tables follow the thesis's own inputs and Eq. 3.6, not the corrected physics.")
     out += [f"* {t.title.split(':')[0]}: {t.notes[0]}" for t in r.input_tables if t.notes]
     out += ["* Corrections (parallel-axis theorem, condensed S from the beam model, exact critical speeds; "
             "see the section below):"]
     out += [f"  * {line}" for line in r.correction_summary] + [""]
     out += ["## The runs\n"]
-    out += [f"* **{spec.name}**: {spec.title}." for spec in RUNS if spec.name in r.runs]
+    out += [f"* **{spec.name}**: {spec.title}." for spec in RUNS]
     out += ["", "The 73 configurations: the benchmark bicycle (Meijaard et al. 2007) and the Jamis, the "
             "Cargo and the loaded Cargo, each with no rider and the five poses, each with a rigid "
             "(infinite) rear frame and the frame in steel, titanium and aluminium. Mass properties of "
@@ -94,8 +93,7 @@ def render(results):
             "* `stability_ranges.json` (thesis run, grid ranges) and `stability_ranges_corrected.json` "
             "(corrected run, exact ranges): records `{bike, rider, stiffness, mode, criterion, start, stop, "
             "range}`, speeds in m/s, `null` where there is no stable range; mode `weave` = both weave roots "
-            "stable." + (" `stability_ranges_geometry.json`: the run from geometry (grid ranges)."
-                         if "geometry" in r.runs else ""),
+            "stable. `stability_ranges_geometry.json`: the run from geometry (grid ranges).",
             "* one CSV per table (named under each table above);",
             "* `figures/` (unless `--no-figures`): `real_<bike>_<stiffness>.png` (all riders, thesis run) and "
             "`..._corrected.png`, `modes_<bike>_<rider>_<stiffness>.png` (Fig. 4-4 layout, thesis run), "
