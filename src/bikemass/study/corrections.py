@@ -1,6 +1,6 @@
 """What changes when the thesis's physical errors are corrected: inputs and stable ranges, side by side."""
 
-from .configurations import BENCHMARK, RIDERS
+from .configurations import BENCHMARK, BENCHMARK_RIDER, RIDERS
 from .frame_tables import ENTRIES
 from .frames import MATERIALS
 from .runs import CRITERIA
@@ -112,7 +112,7 @@ def summary(thesis, corrected):
                 text += f"; largest shift {worst[1].label} (start {worst[2]:+.2f}, stop {worst[3]:+.2f} m/s)"
             lines.append(text + ".")
     ratios = [corrected[c].parameters.IBxx / o.parameters.IBxx
-              for c, o in thesis.items() if c.rider not in ("none", "included")]
+              for c, o in thesis.items() if c.rider not in ("none", BENCHMARK_RIDER)]
     lines.append(f"Parallel-axis theorem: the rear frame + rider roll inertia IBxx grows by "
                  f"{100 * (min(ratios) - 1):.0f} to {100 * (max(ratios) - 1):.0f} % over the "
                  f"{len(RIDERS) - 1} riders on the three bicycles.")

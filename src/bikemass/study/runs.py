@@ -18,14 +18,14 @@ The benchmark bicycle is the same parameter file in every run.
 from dataclasses import dataclass
 
 from .. import catalog
+from ..bicycle import bicycle_parameters
 from ..fe import equivalent_stiffness
 from ..materials import load_materials
-from ..bicycle import bicycle_parameters
 from ..stability import canonical_matrices, follow_modes, speed_grid, stability, with_frame_stiffness
 from ..stability.criteria import MARGINAL_THRESHOLD, is_stable
 from ..stability.labels import LABELS
 from ..stability.ranges import grid_ranges
-from .configurations import BENCHMARK, FE_FRAME
+from .configurations import BENCHMARK, BENCHMARK_RIDER, FE_FRAME
 
 CRITERIA = ("strict", "marginal")
 MODES = ("overall",) + LABELS
@@ -50,7 +50,7 @@ class RunSpec:
         return bike if bike == BENCHMARK or not self.published_bodies else f"{bike}-thesis"
 
     def rider_name(self, rider):
-        if rider in ("none", "included"):
+        if rider in ("none", BENCHMARK_RIDER):
             return None
         return f"{rider}-thesis" if self.published_bodies else rider
 
