@@ -63,7 +63,8 @@ def plot_modes(modes, path, stability=None, title=""):
 def plot_comparison(curves, path, part="real", title=""):
     """Many bicycles on one axis: ``curves`` = ``{name: Modes}``; one colour per name, one line style per mode.
 
-    ``part``: ``real`` (1/s), ``imag`` (rad/s), ``frequency`` (rad/s) or ``damping``.
+    ``part``: ``real`` (1/s), ``imag`` (rad/s), ``frequency`` (rad/s) or ``damping``; the
+    real-part axis is scaled to the weave and capsize roots (the caster runs off it).
     """
     fig, axes = _figure(1, 1, (9, 5.5))
     ax = axes[0, 0]
@@ -77,6 +78,12 @@ def plot_comparison(curves, path, part="real", title=""):
             ax.plot(modes.speeds, get(modes[label]), MODE_STYLES[label], color=colour)
     handles = [Line2D([], [], color=c, label=name) for c, name in zip(colours, curves)]
     handles += [Line2D([], [], color="k", ls=MODE_STYLES[label], label=label) for label in LABELS]
+    if part == "real":   # scale to weave and capsize; the fast caster roots run off the axis
+        focus = np.concatenate([modes[label].real for modes in curves.values()
+                                for label in LABELS if label != "caster"])
+        lo, hi = np.nanmin(focus), np.nanmax(focus)
+        pad = 0.08 * (hi - lo) or 1.0
+        ax.set_ylim(lo - pad, hi + pad)
     ax.axhline(0, color="k", lw=0.6)
     ax.set_xlabel("speed (m/s)")
     ax.set_ylabel({"real": "real part (1/s)", "imag": "imaginary part (rad/s)",
