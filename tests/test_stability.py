@@ -10,6 +10,7 @@ from bikemass.catalog import parameters
 from bikemass.stability import (canonical_matrices, eigen_sweep, follow_modes, speed_grid,
                                 stability, state_matrices, static_stiffness, with_frame_stiffness)
 from bikemass.stability.quartic import quartic_roots
+from bikemass.stability.ranges import intersect
 from bikemass.stability.tracking import best_permutations, pair_violations, step_costs
 from thesis_sets import RIDERS, stiffness, thesis_set
 
@@ -261,7 +262,7 @@ def test_result_objects_serialise():
     d = st.to_dict()
     assert set(d) >= {"weave_speeds", "capsize_speeds", "ranges", "modes"}
     assert set(d["ranges"]) == {"strict", "marginal"} and set(d["ranges"]["strict"]) == {"exact", "grid"}
-    assert set(d["modes"]) == {"weave 1", "weave 2", "capsize", "caster"}
+    assert set(d["modes"]) == {"weave", "weave 1", "weave 2", "capsize", "caster"}
     m = st.modes.to_dict()
     assert len(m["speeds"]) == 21 and [x["label"] for x in m["modes"]] == list(st.modes.labels)
     assert len(m["modes"][0]["eigenvalues"][0]) == 2
@@ -273,3 +274,20 @@ def test_speeds_must_increase():
     for bad in ([1.0, 0.5], [-1.0, 2.0], [0.0, np.nan]):
         with pytest.raises(ValueError):
             follow_modes(m, bad)
+
+
+def test_intersect():
+    assert intersect([[0, 2], [3, 5]], [[1, 4]]) == [[1, 2], [3, 4]]
+    assert intersect([[0, 1]], [[2, 3]]) == []
+    assert intersect([[0, 30]], [[4.3, 30]]) == [[4.3, 30]]
+    assert intersect([], [[0, 1]]) == []
+
+
+def test_weave_ranges_in_json_are_where_both_weave_roots_are_stable():
+    """Issue 4's JSON: ``modes.weave`` = intersection of the two weave roots' ranges."""
+    st = stability(canonical_matrices(BENCHMARK))
+    doc = st.to_dict()
+    assert set(doc["modes"]) == {"weave", "weave 1", "weave 2", "capsize", "caster"}
+    strict = doc["modes"]["weave"]["strict"]
+    assert strict["exact"][0][0] == pytest.approx(4.29238253634110, abs=1e-9)
+    assert strict["grid"] == [[4.3, 30.0]]

@@ -28,7 +28,7 @@ def test_stability_json_schema_and_meijaard_speeds(capsys):
     assert d["ranges"]["strict"]["grid"] == [[4.3, 6.0]]
     assert d["ranges"]["marginal"]["grid"] == [[4.3, 30.0]]
     assert d["modes"]["capsize"]["strict"]["grid"] == [[0.0, 6.0]]
-    assert set(d["modes"]) == {"weave 1", "weave 2", "capsize", "caster"}
+    assert set(d["modes"]) == {"weave", "weave 1", "weave 2", "capsize", "caster"}
 
 
 def test_eig_json_table_and_csv(capsys):

@@ -10,7 +10,6 @@ from bikemass.stability import stability, with_frame_stiffness
 from bikemass.study import figures
 from bikemass.study.configurations import Configuration, configurations
 from bikemass.study.explain import PrintedInputs, half_unit_of_stiffness, with_rider
-from bikemass.study.records import intersect
 from bikemass.study.runs import CORRECTED, THESIS, Inputs, evaluate
 
 PNG = b"\x89PNG\r\n\x1a\n"
@@ -49,13 +48,6 @@ def test_runs_build_parameters_as_the_catalog_does(inputs):
     assert np.allclose(inputs.stiffness(THESIS, c), catalog.stiffness("jamis-thesis", "steel", "published"))
     assert np.allclose(inputs.stiffness(CORRECTED, c),
                        catalog.stiffness("jamis", "steel", "computed", "condensed"), rtol=1e-12)
-
-
-def test_intersect():
-    assert intersect([[0, 2], [3, 5]], [[1, 4]]) == [[1, 2], [3, 4]]
-    assert intersect([[0, 1]], [[2, 3]]) == []
-    assert intersect([[0, 30]], [[4.3, 30]]) == [[4.3, 30]]
-    assert intersect([], [[0, 1]]) == []
 
 
 @pytest.mark.parametrize("how", ["thesis", "exact"])

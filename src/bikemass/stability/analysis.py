@@ -8,7 +8,7 @@ from .critical import mode_crossings
 from .criteria import MARGINAL_THRESHOLD
 from .labels import LABELS
 from .modes import Modes, follow_modes
-from .ranges import mode_ranges, overall_ranges
+from .ranges import intersect, mode_ranges, overall_ranges
 
 DEFAULT_SPEEDS = (0.0, 30.0, 0.05)
 """The thesis's speed grid: start, stop, step (m/s)."""
@@ -56,8 +56,14 @@ class Stability:
     def capsize_speeds(self):
         return self.critical_speeds("capsize")
 
+    @property
+    def weave_ranges(self):
+        """``{criterion: {"exact"|"grid": [[start, stop], ...]}}`` where both weave roots are stable."""
+        w1, w2 = self.mode_ranges["weave 1"], self.mode_ranges["weave 2"]
+        return {c: {k: intersect(w1[c][k], w2[c][k]) for k in w1[c]} for c in w1}
+
     def to_dict(self):
-        """The ``bikemass stability --format json`` document."""
+        """The ``bikemass stability --format json`` document (``modes`` adds ``weave``: both roots)."""
         return {
             "weave_speeds": self.weave_speeds,
             "capsize_speeds": self.capsize_speeds,
@@ -66,7 +72,7 @@ class Stability:
                           for label in LABELS for s, d in self.crossings[label]],
             "marginal_threshold": self.marginal,
             "ranges": self.ranges,
-            "modes": self.mode_ranges,
+            "modes": {"weave": self.weave_ranges, **self.mode_ranges},
         }
 
 

@@ -35,6 +35,20 @@ def exact_ranges(speeds, mask, margin_in_cell):
     return out
 
 
+def intersect(a, b):
+    """Intersection of two sorted lists of closed intervals ``[[start, stop], ...]``."""
+    out, i, j = [], 0, 0
+    while i < len(a) and j < len(b):
+        lo, hi = max(a[i][0], b[j][0]), min(a[i][1], b[j][1])
+        if lo <= hi:
+            out.append([lo, hi])
+        if a[i][1] < b[j][1]:
+            i += 1
+        else:
+            j += 1
+    return out
+
+
 def overall_ranges(matrices, modes, marginal=None):
     """``{"exact": [...], "grid": [...]}`` where every eigenvalue meets the criterion."""
     mask = is_stable(modes.eigenvalues, marginal).all(axis=1)

@@ -7,25 +7,12 @@ where a mode has no stable range.  ``mode``: ``overall`` (every eigenvalue), ``w
 ``capsize``, ``caster``; ``criterion``: ``strict`` or ``marginal``.
 """
 
+from ..stability.ranges import intersect
 from .runs import CRITERIA
 
 RECORD_MODES = {"overall": ("overall",), "weave": ("weave 1", "weave 2"), "capsize": ("capsize",),
                 "caster": ("caster",)}
 """Record mode -> the labelled modes that must all be stable."""
-
-
-def intersect(a, b):
-    """Intersection of two sorted lists of closed intervals ``[[start, stop], ...]``."""
-    out, i, j = [], 0, 0
-    while i < len(a) and j < len(b):
-        lo, hi = max(a[i][0], b[j][0]), min(a[i][1], b[j][1])
-        if lo <= hi:
-            out.append([lo, hi])
-        if a[i][1] < b[j][1]:
-            i += 1
-        else:
-            j += 1
-    return out
 
 
 def mode_ranges(ranges, mode):
