@@ -105,3 +105,23 @@ def test_named_thesis_bicycles_reproduce_chapter_5_rows(capsys, bike, rider, sti
         got += [grid[0][0], grid[0][1], grid[0][1] - grid[0][0]] if grid else [None] * 3
     for g, printed in zip(got, TABLES[table][material][row]):
         assert (g is None and printed is None) or abs(g - printed) <= 0.05 + 1e-9
+
+
+def test_compare_plots_several_riders_and_stiffnesses(capsys, tmp_path):
+    out_png = tmp_path / "cmp.png"
+    code, out, _ = run(capsys, "compare", "jamis-thesis", "--riders", "none,relaxed-thesis",
+                       "--stiffnesses", "infinite,steel", "--combine", "thesis", "-o", str(out_png))
+    assert code == 0 and out_png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    rows = [line.split() for line in out.splitlines()[2:6]]
+    assert [r[:2] for r in rows] == [["none", "infinite"], ["none", "steel"],
+                                     ["relaxed-thesis", "infinite"], ["relaxed-thesis", "steel"]]
+    # Table 5-1, Jamis + Relaxed: strict stable 5.70..10.35 (rigid) and 5.85..8.30 (steel) on the
+    # 0.05 grid, so the exact ends lie within the grid step outside those points
+    for row, (start, stop) in zip(rows[2:], [(5.70, 10.35), (5.85, 8.30)]):
+        a, b = map(float, row[4].split(".."))
+        assert start - 0.05 < a <= start and stop <= b < stop + 0.05
+
+
+def test_compare_refuses_a_non_image_output(capsys, tmp_path):
+    code, _, err = run(capsys, "compare", BENCHMARK, "-o", str(tmp_path / "x.txt"))
+    assert code == 2 and err.count("\n") == 1 and not (tmp_path / "x.txt").exists()

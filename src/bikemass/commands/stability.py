@@ -26,6 +26,25 @@ def register(sub):
     stab.add_argument("--format", choices=STABILITY_FORMATS, default="table", help="table (default) or json")
     stab.set_defaults(run=run_stability)
 
+    comp = sub.add_parser(
+        "compare", help="several riders and/or stiffnesses on one eigenvalue plot",
+        description="One curve set per rider x stiffness on one axis (as the thesis's Figs. 4-6 "
+                    "and 5-2..5-15), and a table of their weave and capsize speeds.")
+    comp.add_argument("bike", metavar="BIKE", help="shipped bicycle name, bicycle YAML or parameter file")
+    comp.add_argument("--riders", metavar="POSES", default="none",
+                      help="comma-separated rider poses or pose files, 'none' for no rider "
+                           "(e.g. none,relaxed,aero-tuck)")
+    comp.add_argument("--stiffnesses", metavar="S", default="infinite",
+                      help="comma-separated stiffnesses as for --stiffness (e.g. infinite,steel,aluminum)")
+    comp.add_argument("--combine", choices=("exact", "thesis"), default="exact",
+                      help="rider + frame: parallel-axis theorem (exact, default) or the thesis's Eq. 3.6")
+    comp.add_argument("--speeds", metavar="START:STOP:STEP", default="0:30:0.05",
+                      help="speed grid in m/s (default 0:30:0.05)")
+    comp.add_argument("--part", choices=("real", "imag", "frequency", "damping"), default="real",
+                      help="what to plot against speed (default real parts)")
+    comp.add_argument("-o", "--output", metavar="FILE", required=True, help="figure (.png, .pdf, .svg)")
+    comp.set_defaults(run=run_compare)
+
 
 def _common(p):
     p.add_argument("bike", metavar="BIKE", help="shipped bicycle name, bicycle YAML or parameter file")
@@ -35,7 +54,8 @@ def _common(p):
                    help="rider + frame: parallel-axis theorem (exact, default) or the thesis's Eq. 3.6")
     p.add_argument("--stiffness", metavar="S", default="infinite",
                    help="rear-frame stiffness: infinite (rigid, default), steel, titanium, aluminum "
-                        "(the bicycle's published values) or a YAML file with S: [[..], [..]] in N m/rad")
+                        "(the bicycle's published S if it carries one, else the beam model of its rear "
+                        "frame, condensed) or a YAML file with S: [[..], [..]] in N m/rad")
     p.add_argument("--speeds", metavar="START:STOP:STEP", default="0:30:0.05",
                    help="speed grid in m/s (default 0:30:0.05, the thesis's)")
     p.add_argument("--plot", metavar="FILE", help="also draw the eigenvalue figure (.png, .pdf, .svg)")
@@ -57,12 +77,13 @@ def parse_speeds(text):
     return speed_grid(start, stop, step)
 
 
-def _matrices(args):
+def _matrices(args, rider=None, stiffness=None):
     from .. import catalog
     from ..stability import canonical_matrices, with_frame_stiffness
 
-    params = catalog.parameters(args.bike, args.rider, args.combine)
-    return with_frame_stiffness(canonical_matrices(params), catalog.stiffness(args.bike, args.stiffness))
+    params = catalog.parameters(args.bike, rider or args.rider, args.combine)
+    return with_frame_stiffness(canonical_matrices(params),
+                                catalog.stiffness(args.bike, stiffness or args.stiffness))
 
 
 def _title(args):
@@ -132,6 +153,34 @@ def run_stability(args):
         from ..plots.stability import plot_modes
         plot_modes(result.modes, args.plot, stability=result, title=_title(args))
     return 0
+
+
+def run_compare(args):
+    from ..output import table
+    from ..plots.stability import plot_comparison
+    from ..stability import stability
+
+    _check_plot(args.output)
+    speeds = parse_speeds(args.speeds)
+    riders = [r.strip() for r in args.riders.split(",") if r.strip()]
+    stiffnesses = [k.strip() for k in args.stiffnesses.split(",") if k.strip()]
+    curves, rows = {}, []
+    for rider in riders:
+        for stiffness in stiffnesses:
+            name = " / ".join(x for x, many in ((rider, len(riders) > 1), (stiffness, len(stiffnesses) > 1))
+                              if many) or rider
+            result = stability(_matrices(args, rider, stiffness), speeds)
+            curves[name] = result.modes
+            rows.append([rider, stiffness, _speeds(result.weave_speeds), _speeds(result.capsize_speeds),
+                         _ranges(result.ranges["strict"]["exact"], "{:.4f}")])
+    plot_comparison(curves, args.output, part=args.part, title=f"{args.bike} ({args.combine})")
+    text = table(["rider", "stiffness", "weave speeds", "capsize speeds", "stable (strict)"], rows)
+    print(text + f"wrote {args.output}")
+    return 0
+
+
+def _speeds(speeds):
+    return ", ".join(f"{v:.4f}" for v in speeds) or "-"
 
 
 def _ranges(rs, fmt):
