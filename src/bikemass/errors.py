@@ -5,9 +5,21 @@ one line and exits with status 2.
 """
 
 
+from pathlib import Path
+
+
+def _shown(source):
+    """A shipped file as ``frames/jamis.yaml`` rather than its absolute path."""
+    from .paths import data_root
+    try:
+        return str(Path(source).resolve().relative_to(data_root().resolve()))
+    except (ValueError, OSError):
+        return str(source)
+
+
 class InputError(Exception):
     """Bad input: names the file, the key and what was expected."""
 
     def __init__(self, source, key, expected):
-        self.source, self.key, self.expected = str(source), str(key), str(expected)
+        self.source, self.key, self.expected = _shown(source), str(key), str(expected)
         super().__init__(f"{self.source}: {self.key}: {self.expected}")
