@@ -45,6 +45,8 @@ def stiffness(bike, which, source="auto", procedure="condensed"):
     """2x2 S (N m/rad) named ``which`` for ``bike``: 'infinite' -> None, a material name
     (published ``stiffness:`` of the bicycle, or computed by the beam FE of its rear-frame
     ``structure`` with ``procedure`` condensed|thesis, see ``source``), or a YAML file with key S."""
+    if source not in STIFFNESS_SOURCES:
+        raise ValueError(f"source must be one of {STIFFNESS_SOURCES}, got {source!r}")
     if which in (None, "infinite", "rigid"):
         return None
     from .materials import load_materials

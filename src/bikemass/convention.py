@@ -16,11 +16,6 @@ segment hangs straight down (+z), so its axis is ``(-sin a, 0, cos a)``.
 
 import numpy as np
 
-X, Y, Z = np.eye(3)
-DOWN = Z
-"""Unit vector pointing down (gravity direction), +z."""
-
-
 def rotation_about_y(angle_rad: float) -> np.ndarray:
     """Right-handed rotation matrix about +y by ``angle_rad`` (rad)."""
     c, s = np.cos(angle_rad), np.sin(angle_rad)

@@ -15,7 +15,7 @@ COLOURS = {"rear_frame": [31, 119, 180, 255], "front_frame": [255, 127, 14, 255]
 
 def equivalent_ellipsoid(props):
     """Mesh of the uniform ellipsoid with ``props``' mass and central inertia, at its CoM."""
-    moments, axes = np.linalg.eigh(props.inertia)
+    moments, axes = props.principal()
     squares = 5 / (2 * props.mass) * (moments.sum() - 2 * moments)   # a_i^2 = 5/(2m) (I_j + I_k - I_i)
     mesh = trimesh.creation.icosphere(subdivisions=3)
     if props.mass > 0 and np.all(squares > 0):

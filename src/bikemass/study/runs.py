@@ -28,8 +28,6 @@ from ..stability.ranges import grid_ranges
 from .configurations import BENCHMARK, BENCHMARK_RIDER, FE_FRAME
 
 CRITERIA = ("strict", "marginal")
-MODES = ("overall",) + LABELS
-"""Range keys of an :class:`Outcome`: all modes together, then each labelled mode."""
 METHOD = "exact"
 """Mass properties of geometry parts from closed-form solids (the meshes agree to ~1e-5)."""
 
@@ -75,7 +73,7 @@ class Outcome:
 
     ``ranges[kind][criterion][mode]`` = ``[[start, stop], ...]`` (m/s) with ``kind``
     ``grid`` (always) or ``exact`` (exact runs), ``criterion`` in :data:`CRITERIA`,
-    ``mode`` in :data:`MODES`; ``weave_speeds`` / ``capsize_speeds`` (m/s) are the
+    ``mode`` ``overall`` (all modes together) or a mode label; ``weave_speeds`` / ``capsize_speeds`` (m/s) are the
     exact crossings (``None`` in grid-only runs).
     """
 
