@@ -150,3 +150,17 @@ def test_compare_table_lists_every_parameter_with_its_difference(capsys):
     assert len(rows) == 26
     mB = load_bicycle("jamis").bodies("exact")["rear_frame"].mass
     assert rows["mB"][-5:] == [f"{mB:.4f}", "4.6150", f"{mB - 4.615:.4f}", f"{100 * (mB / 4.615 - 1):+.1f}", "%"]
+
+
+def test_parameter_files_in_json_work_and_incomplete_ones_name_the_missing_key(capsys, tmp_path):
+    good = tmp_path / "measured.json"
+    good.write_text(json.dumps(MEIJAARD_2007))
+    code, out, _ = run(capsys, "params", good, "--format", "json")
+    assert code == 0 and json.loads(out) == MEIJAARD_2007
+    partial = dict(MEIJAARD_2007)
+    del partial["IBxz"]
+    bad = tmp_path / "partial.json"
+    bad.write_text(json.dumps(partial))
+    code, out, err = run(capsys, "params", bad)
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert "partial.json: IBxz: a required key that is missing" in err
