@@ -99,4 +99,4 @@ def test_figure_count_matches_the_jobs(tmp_path, inputs):
     run = {c: SimpleNamespace(modes=None, ranges=empty) for c in configurations()}
     jobs = figure_jobs(SimpleNamespace(runs={"thesis": run, "corrected": run}), inputs, tmp_path)
     assert len(jobs) == figures.figure_count() == 2 * 3 * 4 + 73 + 5
-    assert len({job[-2] for job in jobs}) == len(jobs)          # every figure has its own file
+    assert len({figures.job_path(job) for job in jobs}) == len(jobs)          # every figure has its own file

@@ -32,13 +32,12 @@ def _outline(mesh):
     return xz[ConvexHull(xz).vertices]
 
 
-def draw_side_view(bicycle, rider=None, path=None, title=None):
-    """Draw the side view; save it to ``path`` (png, pdf, svg) if given; return the figure."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+def plot_side_view(bicycle, rider=None, title=None, size=None, xlim=None, ylim=None):
+    """Figure: the side view of ``bicycle`` with an optional ``rider``; limits in metres."""
+    from ..plots.figure import new_figure
 
-    fig, ax = plt.subplots(figsize=(10, 6))
+    fig = new_figure(size or (10, 6))
+    ax = fig.subplots()
     parts = list(bicycle.parts) + (list(rider.parts) if rider is not None else [])
     for part in parts:
         mesh = part.mesh(SEGMENTS)
@@ -62,6 +61,8 @@ def draw_side_view(bicycle, rider=None, path=None, title=None):
     ax.set_title(title or bicycle.name)
     ax.legend(loc="upper right", fontsize="small")
     ax.grid(True, linewidth=0.3)
-    if path is not None:
-        fig.savefig(path, dpi=150, bbox_inches="tight")
+    if xlim:
+        ax.set_xlim(xlim)
+    if ylim:
+        ax.set_ylim(ylim)
     return fig

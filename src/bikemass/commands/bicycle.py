@@ -3,6 +3,8 @@ benchmark parameters, a side-view drawing, or a 3D model."""
 
 from pathlib import Path
 
+from .figure_options import add_figure_options, figure_options, write_figure
+
 PARAM_FORMATS = ("yaml", "json", "bicycleparameters")
 MODEL_FORMATS = ("glb", "stl", "obj")
 
@@ -39,6 +41,7 @@ def register(sub):
                                       "axes in metres, height up.")
     _bike_and_rider(draw, rider_default="none")
     draw.add_argument("-o", "--output", metavar="FILE", required=True, help="image file (.png, .pdf, .svg)")
+    add_figure_options(draw, "x forward, m", "height, m")
     draw.set_defaults(run=run_draw)
 
     export = sub.add_parser("export", help="the assembled 3D model (glb, stl, obj)",
@@ -93,25 +96,13 @@ def comparison_table(params, reference, name, reference_name):
 
 def run_draw(args):
     from .. import catalog
-    from ..bicycle.drawing import draw_side_view
-    from ..errors import InputError
+    from ..bicycle.drawing import plot_side_view
 
-    if Path(args.output).suffix.lower() not in (".png", ".pdf", ".svg"):
-        raise InputError(args.output, "(file)", "an image file name ending in .png, .pdf or .svg")
+    options = figure_options(args, args.output)
     bicycle, rider = catalog.bicycle(args.bike), catalog.load_rider(args.rider)
     title = bicycle.name + (f" + rider {rider.name}" if rider is not None else "")
-    _write_figure(draw_side_view(bicycle, rider, title=title), args.output)
+    write_figure(plot_side_view(bicycle, rider, title, options.size, **options.limits()), args.output, options)
     return 0
-
-
-def _write_figure(fig, path):
-    import io
-
-    from ..output import write_atomic
-
-    buffer = io.BytesIO()
-    fig.savefig(buffer, format=Path(path).suffix[1:].lower(), dpi=150, bbox_inches="tight")
-    write_atomic(path, buffer.getvalue())
 
 
 def run_export(args):

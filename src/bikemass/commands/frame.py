@@ -2,6 +2,8 @@
 
 import sys
 
+from .figure_options import add_figure_options, figure_options, write_figure
+
 BEAMS = ("timoshenko", "euler-bernoulli")
 
 
@@ -57,7 +59,8 @@ def register(subparsers):
     p.add_argument("-n", type=int, default=10, metavar="N", help="number of modes (default 10)")
     p.add_argument("--element-size", type=float, default=DEFAULT_ELEMENT_SIZE, metavar="M",
                    help=f"beam element length in m (default {DEFAULT_ELEMENT_SIZE})")
-    p.add_argument("--plot", metavar="FILE.png", help="draw the mode shapes on the frame")
+    p.add_argument("--plot", metavar="FILE", help="draw the mode shapes on the frame (.png, .pdf, .svg)")
+    add_figure_options(p)
     p.set_defaults(run=run_modes)
 
 
@@ -77,8 +80,9 @@ def run_stiffness(args):
 def run_modes(args):
     from ..errors import InputError
     from ..fe import frame_modes
-    from ..output import dumps, table, write_atomic
+    from ..output import dumps, table
 
+    options = figure_options(args, args.plot)
     if args.n < 1:
         raise InputError("-n", "(option)", "a positive number of modes")
     if not args.element_size > 0:
@@ -89,8 +93,8 @@ def run_modes(args):
     except ValueError as exc:
         raise InputError(args.bike, "(model)", str(exc)) from None
     if args.plot:
-        from ..fe.plot import mode_shape_png
-        write_atomic(args.plot, mode_shape_png(modes))
+        from ..fe.plot import plot_frame_modes
+        write_figure(plot_frame_modes(modes, size=options.size), args.plot, options)
     if args.format == "json":
         sys.stdout.write(dumps(modes.to_dict(), "json"))
         return

@@ -1,6 +1,8 @@
 """``bikemass pose BIKE``: a rider posed by joint angles on a bicycle's contacts;
 ``bikemass pose-fit``: the thesis poses against their closest joined-up chain poses."""
 
+from .figure_options import add_figure_options, figure_options, write_figure
+
 HANDS = ("tops", "hoods", "drops", "aero", "none")
 JOINT_HELP = "torso_lean, neck, shoulder, elbow, hip, knee"
 
@@ -24,7 +26,8 @@ def register(sub):
                    help=f"fix any joint angle ({JOINT_HELP}); repeatable")
     p.add_argument("--name", help="pose name written to the file")
     p.add_argument("--out", "-o", metavar="FILE", help="write the placement-form pose YAML here")
-    p.add_argument("--plot", metavar="FILE.png", help="side view of the posed rider on the bicycle")
+    p.add_argument("--plot", metavar="FILE", help="side view of the posed rider on the bicycle (.png, .pdf, .svg)")
+    add_figure_options(p, "x forward, m", "height, m")
     p.set_defaults(run=run_pose)
     f = sub.add_parser("pose-fit", help="thesis poses vs their closest joined-up chain poses",
                        description="For each placement pose, fit the chain's joint angles and hip position "
@@ -81,6 +84,7 @@ def run_pose(args):
     from ..rider import Rider
     from ..rider.pose import read_pose
 
+    options = figure_options(args, args.plot)
     bicycle = bicycle_contacts(args.bike, Node(args.bike, args.bike, "BIKE"))
     body_node = Node(args.body, "--body", "--body")
     body = load_chain_body(find_anthropometry(body_node), args.body)
@@ -101,9 +105,11 @@ def run_pose(args):
         write_atomic(args.out, header + yaml.safe_dump(plain(document), sort_keys=False, default_flow_style=None))
         print(f"wrote {args.out}")
     if args.plot:
-        from ..plots.pose import draw_pose
+        from ..plots.pose import plot_pose
         _, parts = read_pose(Node(document, args.out or "pose", None))
-        draw_pose(bicycle, Rider(name, name, parts), solution, args.plot, f"{name}: chain pose")
+        fig = plot_pose(bicycle, Rider(name, name, parts), solution, f"{name}: chain pose", options.size,
+                        **options.limits())
+        write_figure(fig, args.plot, options)
         print(f"wrote {args.plot}")
     return 0
 

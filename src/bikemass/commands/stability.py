@@ -1,6 +1,9 @@
 """``bikemass eig`` and ``bikemass stability``: eigenvalues over speed, critical speeds, stable ranges."""
 
+from .figure_options import add_figure_options, figure_options, write_figure
+
 EIG_FORMATS = ("table", "csv", "json")
+SPEED_LIMIT = "speed, m/s"
 STABILITY_FORMATS = ("table", "json")
 
 
@@ -10,8 +13,9 @@ def register(sub):
         description="Eigenvalues of the linearised Whipple bicycle (Meijaard et al. 2007) at every "
                     "speed, each followed across speed and labelled weave 1, weave 2, capsize, caster.")
     _common(eig)
-    eig.add_argument("--format", choices=EIG_FORMATS, default="table",
-                     help="table (default), csv or json")
+    eig.add_argument("--format", choices=EIG_FORMATS, default=None,
+                     help="table (default; not printed when only --plot is given), csv or json")
+    add_figure_options(eig, SPEED_LIMIT, "real parts, 1/s")
     eig.set_defaults(run=run_eig)
 
     stab = sub.add_parser(
@@ -24,6 +28,7 @@ def register(sub):
                       help="modulus (rad/s) below which an unstable eigenvalue counts as marginally "
                            "stable (default 2.0, as the thesis)")
     stab.add_argument("--format", choices=STABILITY_FORMATS, default="table", help="table (default) or json")
+    add_figure_options(stab, SPEED_LIMIT, "real parts, 1/s")
     stab.set_defaults(run=run_stability)
 
     comp = sub.add_parser(
@@ -43,6 +48,7 @@ def register(sub):
     comp.add_argument("--part", choices=("real", "imag", "frequency", "damping"), default="real",
                       help="what to plot against speed (default real parts)")
     comp.add_argument("-o", "--output", metavar="FILE", required=True, help="figure (.png, .pdf, .svg)")
+    add_figure_options(comp, SPEED_LIMIT, "the plotted part")
     comp.set_defaults(run=run_compare)
 
 
@@ -90,14 +96,6 @@ def _title(args):
     return f"{args.bike}, rider {args.rider} ({args.combine}), stiffness {args.stiffness}"
 
 
-def _check_plot(path):
-    from pathlib import Path
-
-    from ..errors import InputError
-    if path and Path(path).suffix.lower() not in (".png", ".pdf", ".svg"):
-        raise InputError(path, "(file)", "an image file name ending in .png, .pdf or .svg")
-
-
 def _emit(args, text):
     from ..output import write_atomic
     if args.output:
@@ -110,17 +108,18 @@ def run_eig(args):
     from ..output import dumps
     from ..stability import follow_modes
 
-    _check_plot(args.plot)
+    options = figure_options(args, args.plot)
     speeds = parse_speeds(args.speeds)
     modes = follow_modes(_matrices(args), speeds)
-    if args.format == "json":
-        text = dumps(modes.to_dict(), "json")
-    else:
-        text = eig_table(modes, csv=args.format == "csv")
-    _emit(args, text)
+    if args.format or args.output or not args.plot:      # only a figure asked for: no table
+        if args.format == "json":
+            text = dumps(modes.to_dict(), "json")
+        else:
+            text = eig_table(modes, csv=args.format == "csv")
+        _emit(args, text)
     if args.plot:
-        from ..plots.stability import plot_modes
-        plot_modes(modes, args.plot, title=_title(args))
+        from ..plots.stability import plot_eigenvalues
+        write_figure(plot_eigenvalues(modes, _title(args), options.size, **options.limits()), args.plot, options)
     return 0
 
 
@@ -142,7 +141,7 @@ def run_stability(args):
     from ..output import dumps
     from ..stability import stability
 
-    _check_plot(args.plot)
+    options = figure_options(args, args.plot)
     if not args.marginal > 0:
         raise InputError("--marginal", args.marginal, "a positive modulus in rad/s")
     speeds = parse_speeds(args.speeds)
@@ -150,8 +149,8 @@ def run_stability(args):
     text = dumps(result.to_dict(), "json") if args.format == "json" else stability_text(result, _title(args))
     _emit(args, text)
     if args.plot:
-        from ..plots.stability import plot_modes
-        plot_modes(result.modes, args.plot, stability=result, title=_title(args))
+        from ..plots.stability import plot_eigenvalues
+        write_figure(plot_eigenvalues(result, _title(args), options.size, **options.limits()), args.plot, options)
     return 0
 
 
@@ -160,7 +159,7 @@ def run_compare(args):
     from ..plots.stability import plot_comparison
     from ..stability import stability
 
-    _check_plot(args.output)
+    options = figure_options(args, args.output)
     speeds = parse_speeds(args.speeds)
     riders = [r.strip() for r in args.riders.split(",") if r.strip()]
     stiffnesses = [k.strip() for k in args.stiffnesses.split(",") if k.strip()]
@@ -173,7 +172,8 @@ def run_compare(args):
             curves[name] = result.modes
             rows.append([rider, stiffness, _speeds(result.weave_speeds), _speeds(result.capsize_speeds),
                          _ranges(result.ranges["strict"]["exact"], "{:.4f}")])
-    plot_comparison(curves, args.output, part=args.part, title=f"{args.bike} ({args.combine})")
+    fig = plot_comparison(curves, args.part, f"{args.bike} ({args.combine})", options.size, **options.limits())
+    write_figure(fig, args.output, options)
     text = table(["rider", "stiffness", "weave speeds", "capsize speeds", "stable (strict)"], rows)
     print(text + f"wrote {args.output}")
     return 0

@@ -1,6 +1,4 @@
-"""Mode shapes drawn on the frame (matplotlib, Agg backend): one 3D panel per mode."""
-
-import io
+"""Mode shapes drawn on the frame: one 3D panel per mode."""
 
 import numpy as np
 
@@ -12,27 +10,25 @@ def _polyline(points, elements):
     return np.concatenate([segments, gaps], axis=1).reshape(-1, 3)
 
 
-def mode_shape_png(modes, scale=0.12):
-    """PNG bytes: the undeformed frame (grey) and each mode shape (blue), height drawn upward.
+def plot_frame_modes(modes, scale=0.12, size=None):
+    """Figure: the undeformed frame (grey) and each mode shape (blue), height drawn upward.
 
     Each shape is scaled so that its largest nodal translation is ``scale`` times
     the frame's largest dimension.
     """
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from ..plots.figure import new_figure
 
     mesh = modes.mesh
     nodes = mesh.nodes
-    size = np.ptp(nodes, axis=0).max()
+    extent = np.ptp(nodes, axis=0).max()
     count = len(modes.frequencies_hz)
     cols = min(count, 4)
     rows = int(np.ceil(count / cols))
-    fig = plt.figure(figsize=(3.2 * cols, 3.0 * rows))
+    fig = new_figure(size or (3.2 * cols, 3.0 * rows))
     for i in range(count):
         shape = modes.shapes[:, i].reshape(-1, 6)[:, :3]
         peak = np.abs(shape).max()
-        moved = nodes + shape * (scale * size / peak if peak > 0 else 0.0)
+        moved = nodes + shape * (scale * extent / peak if peak > 0 else 0.0)
         ax = fig.add_subplot(rows, cols, i + 1, projection="3d")
         for points, style in ((nodes, dict(color="0.7", lw=1.0)), (moved, dict(color="tab:blue", lw=1.6))):
             line = _polyline(points, mesh.elements)
@@ -41,8 +37,4 @@ def mode_shape_png(modes, scale=0.12):
         ax.set_box_aspect(np.ptp(np.vstack([nodes, moved]), axis=0) + 1e-9)
         ax.set_axis_off()
     fig.suptitle(f"rear-frame modes, {modes.bc}", fontsize=10)
-    fig.tight_layout()
-    buffer = io.BytesIO()
-    fig.savefig(buffer, format="png", dpi=110)
-    plt.close(fig)
-    return buffer.getvalue()
+    return fig

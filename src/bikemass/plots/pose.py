@@ -13,17 +13,13 @@ def _xh(p):
     return p[0], -p[2]
 
 
-def draw_pose(bicycle, rider, solution, path, title=None):
-    """Save the side view of ``rider`` (solved :class:`~bikemass.rider.solve.Solution`) on
-    ``bicycle`` to ``path`` (png, pdf, svg): part outlines and CoMs (bikemass.bicycle.drawing),
+def plot_pose(bicycle, rider, solution, title=None, size=None, xlim=None, ylim=None):
+    """Figure: the side view of ``rider`` (solved :class:`~bikemass.rider.solve.Solution`) on
+    ``bicycle``: part outlines and CoMs (bikemass.bicycle.drawing),
     the chain's centre lines, joints (circles), hands and feet, and contact targets (crosses)."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from ..bicycle.drawing import plot_side_view
 
-    from ..bicycle.drawing import draw_side_view
-
-    fig = draw_side_view(bicycle, rider, None, title)
+    fig = plot_side_view(bicycle, rider, title, size, xlim, ylim)
     ax = fig.axes[0]
     pose = solution.pose
     sides = ("right", "left") if not pose.symmetric else ("right",)
@@ -41,5 +37,4 @@ def draw_pose(bicycle, rider, solution, path, title=None):
         ax.plot(target.target[0], -target.target[1], "x", color="red", markersize=9, mew=2, zorder=6,
                 label="contact targets" if i == 0 else None)
     ax.legend(loc="upper right", fontsize="small")
-    fig.savefig(path, dpi=150, bbox_inches="tight")
-    plt.close(fig)
+    return fig

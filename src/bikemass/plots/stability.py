@@ -3,27 +3,15 @@
 import numpy as np
 
 from ..stability.labels import LABELS
+from .figure import new_figure
 
 MODE_COLOURS = {"weave 1": "tab:blue", "weave 2": "tab:cyan", "capsize": "tab:red", "caster": "tab:green"}
 MODE_STYLES = {"weave 1": "-", "weave 2": "--", "capsize": "-.", "caster": ":"}
 
 
 def _figure(nrows, ncols, size):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    return plt.subplots(nrows, ncols, figsize=size, sharex=True, squeeze=False)
-
-
-def _save(fig, path):
-    from io import BytesIO
-
-    from ..output import write_atomic
-    buf = BytesIO()
-    fig.savefig(buf, format=str(path).rsplit(".", 1)[-1].lower(), dpi=150)
-    write_atomic(path, buf.getvalue())
-    import matplotlib.pyplot as plt
-    plt.close(fig)
+    fig = new_figure(size)
+    return fig, fig.subplots(nrows, ncols, sharex=True, squeeze=False)
 
 
 def _shade(ax, ranges, colour, label):
@@ -31,13 +19,16 @@ def _shade(ax, ranges, colour, label):
         ax.axvspan(a, b, color=colour, alpha=0.15, lw=0, label=label if i == 0 else None)
 
 
-def plot_modes(modes, path, stability=None, title=""):
-    """Real and imaginary parts (1/s), natural frequency (rad/s) and damping ratio against speed.
+def plot_eigenvalues(result, title="", size=None, xlim=None, ylim=None):
+    """Figure: real and imaginary parts (1/s), natural frequency (rad/s) and damping ratio against speed.
 
-    One colour per labelled mode; with a :class:`~bikemass.stability.analysis.Stability`
-    the strictly stable speeds are shaded green and the marginally stable ones grey.
+    ``result``: :class:`~bikemass.stability.modes.Modes`, or a
+    :class:`~bikemass.stability.analysis.Stability` whose strictly stable speeds are shaded
+    green and marginally stable ones grey.  ``xlim`` (m/s), ``ylim`` (1/s, real parts).
     """
-    fig, axes = _figure(2, 2, (11, 7.5))
+    stability = result if hasattr(result, "modes") else None
+    modes = result.modes if stability is not None else result
+    fig, axes = _figure(2, 2, size or (11, 7.5))
     panels = ((axes[0, 0], lambda z: z.real, "real part (1/s)"),
               (axes[0, 1], lambda z: z.imag, "imaginary part (rad/s)"),
               (axes[1, 0], np.abs, "natural frequency (rad/s)"),
@@ -56,17 +47,19 @@ def plot_modes(modes, path, stability=None, title=""):
     for ax in axes[1]:
         ax.set_xlabel("speed (m/s)")
     fig.suptitle(title)
-    fig.tight_layout()
-    _save(fig, path)
+    axes[0, 0].set_xlim(xlim or (v[0], v[-1]))
+    if ylim:
+        axes[0, 0].set_ylim(ylim)
+    return fig
 
 
-def plot_comparison(curves, path, part="real", title=""):
-    """Many bicycles on one axis: ``curves`` = ``{name: Modes}``; one colour per name, one line style per mode.
+def plot_comparison(curves, part="real", title="", size=None, xlim=None, ylim=None):
+    """Figure: many bicycles on one axis: ``curves`` = ``{name: Modes}``; one colour per name, one line style per mode.
 
     ``part``: ``real`` (1/s), ``imag`` (rad/s), ``frequency`` (rad/s) or ``damping``; the
     real-part axis is scaled to the weave and capsize roots (the caster runs off it).
     """
-    fig, axes = _figure(1, 1, (9, 5.5))
+    fig, axes = _figure(1, 1, size or (9, 5.5))
     ax = axes[0, 0]
     get = {"real": lambda z: z.real, "imag": lambda z: z.imag, "frequency": np.abs,
            "damping": lambda z: -z.real / np.where(np.abs(z) > 0, np.abs(z), np.nan)}[part]
@@ -91,5 +84,8 @@ def plot_comparison(curves, path, part="real", title=""):
     ax.grid(alpha=0.3)
     ax.legend(handles=handles, fontsize=8, ncol=2, loc="best")
     ax.set_title(title)
-    fig.tight_layout()
-    _save(fig, path)
+    if xlim:
+        ax.set_xlim(xlim)
+    if ylim:
+        ax.set_ylim(ylim)
+    return fig

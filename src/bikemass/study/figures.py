@@ -9,22 +9,24 @@
 """
 
 from dataclasses import dataclass
-from io import BytesIO
 
 from ..rider import THESIS_POSES
 from .configurations import BICYCLES, STIFFNESSES, THESIS_NAMES, configurations
 
-DPI = 150
-
 
 @dataclass(frozen=True)
 class GridShading:
-    """What :func:`~bikemass.plots.stability.plot_modes` shades: ``ranges[criterion]["exact"]``.
+    """What :func:`~bikemass.plots.stability.plot_eigenvalues` shades: ``ranges[criterion]["exact"]``.
 
     The thesis-mode run has only grid ranges; they are handed over in that slot.
     """
 
     ranges: dict
+    modes: object = None
+
+    def with_modes(self, modes):
+        """The same shading for the figure of ``modes``."""
+        return GridShading(self.ranges, modes)
 
     @classmethod
     def of(cls, outcome):
@@ -63,31 +65,30 @@ def figure_count():
     return 2 * len(BICYCLES) * len(STIFFNESSES) + len(configurations()) + len(THESIS_POSES)
 
 
-def draw_comparison(curves, path, title):
+def draw_comparison(curves, title):
     from ..plots.stability import plot_comparison
-    plot_comparison(curves, path, "real", title)
+    return plot_comparison(curves, "real", title)
 
 
-def draw_modes(modes, shading, path, title):
-    from ..plots.stability import plot_modes
-    plot_modes(modes, path, shading, title)
+def draw_modes(modes, shading, title):
+    from ..plots.stability import plot_eigenvalues
+    return plot_eigenvalues(shading.with_modes(modes), title)
 
 
-def draw_pose(bicycle, rider, path, title):
-    import matplotlib.pyplot as plt
+def draw_pose(bicycle, rider, title):
+    from ..bicycle.drawing import plot_side_view
+    return plot_side_view(bicycle, rider, title)
 
-    from ..bicycle.drawing import draw_side_view
-    from ..output import write_atomic
-    fig = draw_side_view(bicycle, rider, title=title)
-    buf = BytesIO()
-    fig.savefig(buf, format="png", dpi=DPI, bbox_inches="tight")
-    plt.close(fig)
-    write_atomic(path, buf.getvalue())
+
+def job_path(job):
+    """The file a job writes: ``job`` = (function, *arguments, path, title)."""
+    return job[-2]
 
 
 def run_job(job):
-    """Draw one figure: ``job`` = (function, *arguments); returns the file written."""
-    function, *args = job
-    function(*args)
-    return args[-2]
+    """Draw one figure and save it (PNG): ``job`` = (function, *arguments, path, title); returns the path."""
+    from ..plots.figure import save_figure
+    function, *args, path, title = job
+    save_figure(function(*args, title), path)
+    return path
 

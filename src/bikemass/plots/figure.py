@@ -1,0 +1,55 @@
+"""Figures without global state: a new :class:`matplotlib.figure.Figure`, the file formats
+matplotlib can write, and saving a figure with its text kept as text in vector files.
+
+No pyplot and no ``matplotlib.use``: the caller's backend and open figures are left alone.
+"""
+
+from io import BytesIO
+from pathlib import Path
+
+from matplotlib.backend_bases import FigureCanvasBase
+from matplotlib.figure import Figure
+
+DPI = 150
+"""Default resolution of raster output (dots per inch)."""
+
+VECTOR_TEXT = {"svg.fonttype": "none", "pdf.fonttype": 42, "ps.fonttype": 42}
+"""rc settings for saving: SVG text stays <text>, PDF/PS embed TrueType (editable, searchable)."""
+
+UNWRITABLE = {"pgf"}
+"""Formats matplotlib lists but that need outside tools (LaTeX) to write."""
+
+
+def new_figure(size):
+    """An empty :class:`~matplotlib.figure.Figure` of ``size`` = (width, height) in inches,
+    laid out by matplotlib's constrained layout."""
+    return Figure(figsize=size, layout="constrained")
+
+
+def figure_formats():
+    """``{suffix: description}`` of the image formats a figure can be saved as."""
+    return {k: v for k, v in FigureCanvasBase.get_supported_filetypes().items() if k not in UNWRITABLE}
+
+
+def figure_format(path):
+    """The format of figure file ``path`` from its suffix; ValueError naming the formats if unknown."""
+    suffix = Path(path).suffix.lower().lstrip(".")
+    if suffix not in figure_formats():
+        raise ValueError("an image file name ending in " + ", ".join(f".{k}" for k in sorted(figure_formats())))
+    return suffix
+
+
+def figure_bytes(fig, fmt="png", dpi=DPI):
+    """``fig`` rendered as ``fmt`` (bytes); text stays text in SVG and PDF."""
+    from matplotlib import rc_context
+
+    buffer = BytesIO()
+    with rc_context(VECTOR_TEXT):
+        fig.savefig(buffer, format=fmt, dpi=dpi)
+    return buffer.getvalue()
+
+
+def save_figure(fig, path, dpi=DPI):
+    """Write ``fig`` to ``path`` (format from the suffix) atomically: never half-written."""
+    from ..output import write_atomic
+    write_atomic(path, figure_bytes(fig, figure_format(path), dpi))
