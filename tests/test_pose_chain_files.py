@@ -82,7 +82,9 @@ def test_shipped_contacts():
 @pytest.mark.parametrize("contacts,key", [
     ("contacts: {saddle: [0.15, 0, -1], bottom_bracket: nowhere, crank_length: 0.17}", "contacts.bottom_bracket"),
     ("contacts: {saddle: [0.15, 0, -1], bottom_bracket: bottom_bracket, crank_length: -1}", "contacts.crank_length"),
-    ("contacts: {saddle: [0.15, 0, -1], bottom_bracket: bottom_bracket, crank_length: 0.17, grips: {bullhorn: bar_right}}",
+    ("contacts: {saddle: [0.15, 0, -1], bottom_bracket: bottom_bracket, crank_length: 0.17, grips: {none: bar_right}}",
+     "contacts.grips.none"),                                     # any word names a grip but 'none'
+    ("contacts: {saddle: [0.15, 0, -1], bottom_bracket: bottom_bracket, crank_length: 0.17, grips: {bullhorn: nowhere}}",
      "contacts.grips.bullhorn"),
 ])
 def test_bad_contacts_name_the_key(tmp_path, contacts, key):

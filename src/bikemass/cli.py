@@ -8,6 +8,7 @@ from .errors import InputError
 
 COMMAND_MODULES = (
     "bicycle",
+    "geometry",
     "rider",
     "frame",
     "stability",

@@ -24,7 +24,11 @@ class Material:
 
 def load_materials(path=None):
     """``{key or alias: Material}`` from a materials YAML file (default ``frames/materials.yaml``)."""
-    root = load_yaml(path or frames_dir() / "materials.yaml")
+    return read_materials(load_yaml(path or frames_dir() / "materials.yaml"))
+
+
+def read_materials(root):
+    """``{key or alias: Material}`` from a mapping node of material definitions."""
     table = {}
     for key, node in root.items():
         node.check_keys(required=("E", "nu", "density"), optional=("name", "aliases"))

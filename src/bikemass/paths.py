@@ -40,7 +40,7 @@ def resolve(name, folder: Path, what: str) -> Path:
     raise InputError(name, "(name)", f"a {what} file or one of: {known}")
 
 
-SHARED_FILES = ("materials",)
+SHARED_FILES = ("materials", "chart_defaults")
 """YAML files in ``frames/`` that are not bicycles."""
 
 

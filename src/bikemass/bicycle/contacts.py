@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 HAND_POSITIONS = ("tops", "hoods", "drops", "aero")
-"""Grip names a bicycle may define (``bikemass pose --hands``)."""
+"""The usual grip names (``bikemass pose --hands``); a bicycle may name others."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -53,8 +53,9 @@ def read_contacts(node, keypoints):
     node.check_keys(required=("saddle", "bottom_bracket", "crank_length"), optional=("grips", "note"))
     grips = {}
     for name, g in node.get("grips", {}).items():
-        if name not in HAND_POSITIONS:
-            node.fail(f"one of {', '.join(HAND_POSITIONS)}, got {name!r}", f"grips.{name}")
+        if not (isinstance(name, str) and name.isidentifier()) or name == "none":
+            node.fail(f"a grip name (a word such as {', '.join(HAND_POSITIONS)}; not 'none'), got {name!r}",
+                      f"grips.{name}")
         grips[name] = _point(g, keypoints)
     return Contacts(_point(node["saddle"], keypoints), _point(node["bottom_bracket"], keypoints),
                     node["crank_length"].number(positive=True), grips, str(node.source), node.key)

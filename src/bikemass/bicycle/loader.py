@@ -4,13 +4,14 @@ The file format is described in docs/bicycles.md.  Every problem is reported as
 one :class:`~bikemass.errors.InputError` naming the file and the key.
 """
 
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
 
 from ..config import Node, load_yaml
 from ..inertia import MassProperties
-from ..materials import load_materials
+from ..materials import load_materials, read_materials
 from ..parameters import from_node, is_parameter_file
 from ..parts import Part
 from ..paths import frames_dir, resolve
@@ -18,22 +19,49 @@ from ..placement import Placement
 from ..sections import RoundSection, SquareSection
 from ..solids import Lumped, RoundTube, SquareTube
 from ..tubes import Structure, Tube
+from .chart_build import expand_chart
 from .components import materials_lookup, read_component, read_wheel
 from .contacts import read_contacts
 from .geometry import Geometry, check_keypoints, read_geometry
 from .model import Bicycle
+from .sizes import select_size, size_names, split_size
 
 TOP_KEYS = ("name", "base", "source", "description", "geometry", "keypoints", "material", "sections", "tubes",
-            "structure", "components", "loads", "wheels", "stiffness", "contacts")
+            "structure", "components", "loads", "wheels", "stiffness", "contacts", "materials")
 
 
-def load_bicycle(name_or_path):
-    """:class:`Bicycle` for a shipped name (``frames/``), a bicycle YAML file or a parameter file."""
-    path = resolve(name_or_path, frames_dir(), "bicycle")
+def load_bicycle(name_or_path, size=None):
+    """:class:`Bicycle` for a shipped name (``frames/``), a bicycle YAML file or a parameter file.
+
+    A size run (``sizes:``) needs ``size``, or the name as ``BIKE@SIZE``.
+    """
+    name, at_size = split_size(name_or_path)
+    path = resolve(name, frames_dir(), "bicycle")
     node = load_yaml(path)
     if is_parameter_file(node):
+        select_size(node, size or at_size)
         return bicycle_from_parameters(from_node(node), node.get("name", path.stem).string(), str(path))
-    return read_bicycle(_with_base(node), str(path))
+    return _read_any(_with_base(node), str(path), size or at_size)
+
+
+def bicycle_sizes(name_or_path):
+    """The size names of a bicycle file's size run, ``()`` if it has none (``BIKE@SIZE``: that size)."""
+    name, at_size = split_size(name_or_path)
+    if at_size is not None:
+        return ()
+    node = load_yaml(resolve(name, frames_dir(), "bicycle"))
+    return size_names(node)
+
+
+def _read_any(node, source, size=None):
+    """A keypoints or chart bicycle (one size of a size run) from its merged top-level mapping."""
+    node = select_size(node, size)
+    if not node.has("chart"):
+        return read_bicycle(node, source)
+    if node.has("geometry"):
+        node.fail("either chart: (a geometry chart) or geometry: with keypoints:, not both", "geometry")
+    mapping, chart = expand_chart(node)
+    return replace(read_bicycle(mapping, source), chart=chart, size=size)
 
 
 def _base_path(name, folder):
@@ -55,7 +83,8 @@ def _with_base(node, seen=()):
     if path.resolve() in seen:
         node.fail("a base bicycle that does not lead back to this file", "base")
     base = _with_base(load_yaml(path), seen + (path.resolve(),))
-    read_bicycle(base, str(path))
+    if not size_names(base):
+        _read_any(base, str(path))
     merged = {**base.mapping(), **{k: v for k, v in node.mapping().items() if k != "base"}}
     return Node(merged, node.source, node.key)
 
@@ -63,7 +92,7 @@ def _with_base(node, seen=()):
 def read_bicycle(node, source):
     """:class:`Bicycle` from the top-level mapping ``node`` of a bicycle YAML file."""
     node.check_keys(required=("name", "geometry", "wheels"), optional=TOP_KEYS)
-    materials = load_materials()
+    materials = {**load_materials(), **_file_materials(node)}
     geometry = read_geometry(node["geometry"])
     keypoints = {str(k): v.vector() for k, v in node.get("keypoints", {}).items()}
     tubes = _read_tubes(node, keypoints, materials)
@@ -87,6 +116,20 @@ def read_bicycle(node, source):
     contacts = read_contacts(node["contacts"], keypoints) if node.has("contacts") else None
     return Bicycle(node["name"].string(), source, geometry, keypoints, tuple(tubes), tuple(parts),
                    structure, stiffness, contacts=contacts)
+
+
+def _file_materials(node):
+    """Materials of the bicycle file: ``materials:`` as a mapping in the format of
+    ``frames/materials.yaml``, or the path of such a file (relative to the bicycle file)."""
+    if not node.has("materials"):
+        return {}
+    m = node["materials"]
+    if isinstance(m.value, str):
+        path = Path(node.source).parent / m.value
+        if not path.is_file():
+            m.fail(f"a materials YAML file (as frames/materials.yaml), {path} does not exist")
+        return load_materials(path)
+    return read_materials(m)
 
 
 def _read_sections(node):

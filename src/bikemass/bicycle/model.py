@@ -16,7 +16,9 @@ class Bicycle:
     bodies), each with its ``body`` in :data:`BODIES`.  ``structure`` is the rear-frame
     beam model (or ``None``), ``stiffness`` the published S matrices by material key
     (N m/rad), ``published`` the parameter set of a benchmark parameter file (else ``None``),
-    ``contacts`` the rider contact points (:class:`~bikemass.bicycle.contacts.Contacts`) or ``None``.
+    ``contacts`` the rider contact points (:class:`~bikemass.bicycle.contacts.Contacts`) or ``None``;
+    ``chart`` the geometry chart it was built from (:class:`~bikemass.bicycle.chart.Chart`) or ``None``,
+    ``size`` the size picked from a size run.
     """
 
     name: str
@@ -29,6 +31,8 @@ class Bicycle:
     stiffness: dict = None
     published: object = None
     contacts: object = None
+    chart: object = None
+    size: str = None
 
     def body_parts(self, body):
         """Parts of ``body`` (one of :data:`BODIES`)."""

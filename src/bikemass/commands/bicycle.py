@@ -101,7 +101,11 @@ def run_draw(args):
     options = figure_options(args, args.output)
     bicycle, rider = catalog.bicycle(args.bike), catalog.load_rider(args.rider)
     title = bicycle.name + (f" + rider {rider.name}" if rider is not None else "")
-    write_figure(plot_side_view(bicycle, rider, title, options.size, **options.limits()), args.output, options)
+    fig = plot_side_view(bicycle, rider, title, options.size, **options.limits())
+    if bicycle.chart is not None:
+        from ..bicycle.chart_drawing import annotate_chart
+        annotate_chart(fig.axes[0], bicycle)
+    write_figure(fig, args.output, options)
     return 0
 
 

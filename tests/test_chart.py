@@ -1,0 +1,198 @@
+"""Bicycles from geometry charts: construction, checks, defaults, sizes, the geometry command."""
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+import yaml
+
+from bikemass.bicycle import bicycle_parameters, load_bicycle
+from bikemass.bicycle.derived_chart import derived_chart
+from bikemass.cli import main
+from bikemass.errors import InputError
+
+ROOT = Path(__file__).resolve().parents[1]
+SHIPPED_CHARTS = ("bmc_roadmachine",)
+
+ROAD = {  # a 56 cm road chart (mm, deg)
+    "stack": 590, "reach": 388, "head_tube_angle": 72, "seat_tube_angle": 74.2, "head_tube_length": 154,
+    "seat_tube_length": 522, "chainstay_length": 410, "bb_drop": 71, "fork_offset": 45,
+}
+
+
+def chart_file(tmp_path, chart=None, **top):
+    """A chart bicycle file with ``chart`` values (mm, deg) and extra top-level keys."""
+    values = {**ROAD, **(chart or {})}
+    doc = {"name": "test road", "chart": {"units": {"length": "mm", "angle": "deg"}, "wheel": "700c",
+                                          "tire_width": 28, **values}, **top}
+    path = tmp_path / "road.yaml"
+    path.write_text(yaml.safe_dump(doc))
+    return str(path)
+
+
+def closed_form_wheelbase(c, r):
+    """Wheelbase (m) from a chart (SI, rad): rear axle -> BB -> head-tube top -> steer axis -> axle."""
+    ha = c["head_tube_angle"]
+    return (np.sqrt(c["chainstay_length"] ** 2 - c["bb_drop"] ** 2) + c["reach"]
+            + (c["stack"] - c["bb_drop"]) / np.tan(ha) + c["fork_offset"] / np.sin(ha))
+
+
+def si(chart):
+    return {k: np.radians(v) if k.endswith("_angle") else v / 1000 for k, v in chart.items()}
+
+
+def test_construction_equals_the_closed_form(tmp_path):
+    bike = load_bicycle(chart_file(tmp_path))
+    r = 0.311 + 0.028                                     # 700c: BSD 622 mm, radius = BSD/2 + tire width
+    c = si(ROAD)
+    assert bike.geometry.rear_wheel_radius == pytest.approx(r, abs=1e-12)
+    assert bike.geometry.wheelbase == pytest.approx(closed_form_wheelbase(c, r), abs=1e-12)
+    ha = c["head_tube_angle"]
+    assert bike.geometry.trail == pytest.approx((r * np.cos(ha) - c["fork_offset"]) / np.sin(ha), abs=1e-12)
+    d = derived_chart(bike)
+    for key, value in c.items():
+        expected = np.degrees(value) if key.endswith("_angle") else value
+        assert d[key] == pytest.approx(expected, abs=1e-9), key
+    assert d["top_tube_length"] == pytest.approx(c["reach"] + c["stack"] / np.tan(c["seat_tube_angle"]), abs=1e-12)
+    assert d["mechanical_trail"] == pytest.approx(d["trail"] * np.sin(ha), abs=1e-12)
+
+
+def test_jamis_geometry_is_table_3_9():
+    out = subprocess.run([sys.executable, "-m", "bikemass.cli", "geometry", "jamis", "--format", "json"],
+                         capture_output=True, text=True, check=True).stdout
+    chart = json.loads(out)["jamis"]
+    assert chart["wheelbase"] == pytest.approx(0.988, abs=5e-4)      # Table 3-9, printed to 1 mm
+    assert chart["trail"] == pytest.approx(0.060, abs=5e-4)
+    assert chart["head_tube_angle"] == pytest.approx(np.degrees(1.274), abs=1e-9)
+    for key in ("front_center", "stack", "reach"):
+        assert chart[key] > 0
+
+
+@pytest.mark.parametrize("name", SHIPPED_CHARTS)
+def test_shipped_charts_match_their_published_redundant_values(name):
+    doc = yaml.safe_load((ROOT / "frames" / f"{name}.yaml").read_text())
+    sizes = [str(s) for s in doc["sizes"]]
+    for i, size in enumerate(sizes):
+        d = derived_chart(load_bicycle(name, size))
+        for key, tolerance in (("wheelbase", 5), ("trail", 3), ("front_center", 5), ("top_tube_length", 5)):
+            published = doc["chart"].get(key)
+            if published is None:
+                continue
+            value = published[i] if isinstance(published, list) else published
+            assert abs(d[key] * 1000 - value) <= tolerance, (size, key, d[key], value)
+
+
+def test_chart_road_bicycle_mass_and_parameters():
+    bike = load_bicycle("bmc-roadmachine", "56")
+    mass = sum(p.mass for p in bike.parts)
+    assert 6 < mass < 14
+    params = bicycle_parameters(bike)
+    assert params.w == pytest.approx(1.008, abs=0.005)
+    assert params.rR == params.rF == pytest.approx(0.339)
+    assert 0 < params.xB < params.w and params.zB < 0
+    assert bike.contacts is not None and set(bike.contacts.grips) >= {"tops", "hoods", "drops"}
+    assert bike.contacts.crank_length == pytest.approx(0.1725)
+
+
+def test_chain_pose_sits_on_a_chart_bicycle():
+    from bikemass.rider.anthropometry import find_anthropometry
+    from bikemass.rider.chain import load_chain_body
+    from bikemass.rider.solve import solve_on_bicycle
+    from bikemass.config import Node
+
+    bike = load_bicycle("bmc-roadmachine@54")
+    body = load_chain_body(find_anthropometry(Node("thesis_rider", "test", "body")), "thesis_rider")
+    solution = solve_on_bicycle(body, bike.contacts, "hoods", None, {})
+    assert max(solution.residuals.values()) < 1e-3
+
+
+def test_overrides_tubeset_components_grips_and_materials(tmp_path):
+    base = load_bicycle(chart_file(tmp_path))
+    steel = sum(p.mass for p in base.parts)
+    carbon = load_bicycle(chart_file(tmp_path, frame={"tubeset": "carbon"}))
+    assert sum(p.mass for p in carbon.parts) < steel - 0.5
+    lighter = load_bicycle(chart_file(tmp_path, components={"pedals": None, "crankset": {"mass": "0.5 kg"}}))
+    assert sum(p.mass for p in lighter.parts) == pytest.approx(steel - 0.3 - 0.2, abs=1e-9)
+    gripped = load_bicycle(chart_file(tmp_path, cockpit={"grips": {"bullhorn": ["60 mm", "10 mm"]}}))
+    clamp = gripped.keypoints["bar_clamp"]
+    np.testing.assert_allclose(gripped.contacts.grips["bullhorn"][[0, 2]], clamp[[0, 2]] + [0.06, -0.01], atol=1e-12)
+    own = load_bicycle(chart_file(tmp_path, frame={"material": "unobtainium"},
+                                  materials={"unobtainium": {"E": "100 GPa", "nu": 0.3, "density": "1 g/cm^3"}}))
+    assert sum(p.mass for p in own.parts) < sum(p.mass for p in carbon.parts)
+    saddle = load_bicycle(chart_file(tmp_path, saddle={"height": "720 mm"})).contacts.saddle
+    bb = base.keypoints["bottom_bracket"]
+    assert np.hypot(*(saddle - bb)[[0, 2]]) == pytest.approx(0.720, abs=1e-12)
+
+
+def test_size_run_every_size_or_one(tmp_path, capsys):
+    assert main(["geometry", "bmc-roadmachine", "--format", "json"]) == 0
+    every = json.loads(capsys.readouterr().out)["bmc-roadmachine"]
+    assert list(every) == ["47", "51", "54", "56", "58", "61"]
+    assert main(["geometry", "bmc-roadmachine", "--size", "56", "--format", "json"]) == 0
+    one = json.loads(capsys.readouterr().out)["bmc-roadmachine"]
+    assert one == every["56"]
+    assert one["stack"] == pytest.approx(0.590)
+    assert main(["geometry", "jamis", "bmc-roadmachine@47"]) == 0
+    table = capsys.readouterr().out
+    assert "bmc-roadmachine@47" in table and "988.0" in table
+
+
+BAD_CHARTS = [
+    ({"reach": -20}, "chart.reach"),
+    ({"head_tube_angle": 120}, "chart.head_tube_angle"),
+    ({"chainstay_length": 60}, "chart.chainstay_length"),
+    ({"wheelbase": 1030}, "chart.wheelbase"),
+    ({"trail": 40}, "chart.trail"),
+    ({"stack": 90000}, "chart.stack"),
+]
+
+
+@pytest.mark.parametrize("chart,key", BAD_CHARTS)
+def test_bad_charts_one_line_exit_2(tmp_path, capsys, chart, key):
+    path = chart_file(tmp_path, chart)
+    assert main(["geometry", path]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and f"road.yaml: {key}: " in err
+
+
+def test_inconsistent_wheelbase_names_both_values(tmp_path):
+    with pytest.raises(InputError) as info:
+        load_bicycle(chart_file(tmp_path, {"wheelbase": 1030}))
+    built = closed_form_wheelbase(si(ROAD), 0.339) * 1000
+    assert f"{built:.1f} mm" in info.value.expected and "got 1030.0 mm" in info.value.expected
+
+
+@pytest.mark.parametrize("doc,key", [
+    ({"chart": {**ROAD, "head_tube_angle": 72, "wheel": "700c", "tire_width": "28 mm"}}, "chart.head_tube_angle"),
+    ({"chart": {**{k: f"{v} mm" for k, v in ROAD.items()}, "wheel": "700c", "tire_width": "28 mm"}},
+     "chart.head_tube_angle"),
+    ({"chart": {"units": {"length": "mm", "angle": "deg"}, **ROAD, "wheel": "31c", "tire_width": 28}}, "chart.wheel"),
+    ({"chart": {"units": {"length": "mm", "angle": "deg"}, **ROAD, "wheel": "700c", "tire_width": 28},
+      "geometry": {}}, "geometry"),
+    ({"sizes": ["S", "M"], "chart": {"units": {"length": "mm", "angle": "deg"}, **ROAD, "stack": [500, 520, 540],
+                                     "wheel": "700c", "tire_width": 28}}, "chart.stack"),
+])
+def test_bad_chart_files_name_the_key(tmp_path, doc, key):
+    path = tmp_path / "bike.yaml"
+    path.write_text(yaml.safe_dump({"name": "bad", **doc}))
+    size = "S" if "sizes" in doc else None
+    with pytest.raises(InputError) as info:
+        load_bicycle(str(path), size)
+    assert info.value.key == key
+
+
+def test_size_must_exist(capsys):
+    assert main(["geometry", "bmc-roadmachine", "--size", "XXL"]) == 2
+    assert "sizes: one of 47, 51, 54, 56, 58, 61" in capsys.readouterr().err
+    assert main(["params", "bmc-roadmachine"]) == 2
+
+
+def test_draw_shows_the_chart_dimensions(tmp_path):
+    from bikemass.bicycle.chart_drawing import draw_chart
+    fig = draw_chart(load_bicycle("bmc-roadmachine@56"))
+    texts = {t.get_text() for t in fig.axes[0].texts}
+    assert {"stack 590", "reach 388", "wheelbase 1008", "trail 63", "72.0°", "74.2°"} <= texts
+    assert main(["draw", "bmc-roadmachine@56", "-o", str(tmp_path / "side.png")]) == 0
