@@ -99,7 +99,7 @@ def test_geometry_bicycles_get_their_stiffness_from_the_beam_model():
     from bikemass.fe import equivalent_stiffness
     from bikemass.materials import load_materials
     steel = load_materials()["steel"]
-    structure = catalog.bicycle("jamis").structure
+    structure = catalog.load_bicycle("jamis").structure
     S = catalog.stiffness("jamis", "steel")
     assert np.array_equal(S, equivalent_stiffness(structure, steel, "condensed"))
     thesis = catalog.stiffness("jamis", "steel", procedure="thesis")

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from bikemass import cli
-from bikemass.commands import frame
+from bikemass import frame
 from bikemass.fe import equivalent_stiffness, frame_modes
 from bikemass.materials import Material
 from thesis_frames import jamis_structure
@@ -19,7 +19,7 @@ from thesis_frames import jamis_structure
 
 @pytest.fixture(autouse=True)
 def jamis(monkeypatch):
-    monkeypatch.setattr(frame, "load_structure", lambda bike: jamis_structure())
+    monkeypatch.setattr(frame, "frame_structure", lambda bike: jamis_structure())
 
 
 def run(capsys, *argv):

@@ -123,10 +123,10 @@ def test_arms_too_short_for_the_aero_grips(capsys):
 
 @pytest.mark.parametrize("argv,where", [
     (["pose", "cargo", "--hands", "drops"], "contacts.grips.drops: a grip named drops (this bicycle has: tops)"),
-    (["pose", "benchmark"], "BIKE: a bicycle with a contacts: section"),
+    (["pose", "benchmark"], "frames/benchmark.yaml: contacts: a bicycle with a contacts: section"),
     (["pose", "jamis", "--fix", "wrist=10"], "--fix: wrist=10: JOINT=DEG"),
     (["pose", "jamis", "--fix", "knee=x"], "--fix: knee=x: JOINT=DEG with DEG a number"),
-    (["pose", "jamis", "--body", "nobody"], "--body: a shipped anthropometry"),
+    (["pose", "jamis", "--body", "nobody"], "body: a shipped anthropometry"),
 ])
 def test_bad_input_is_one_line_exit_2(capsys, argv, where):
     assert main(argv) == 2

@@ -192,7 +192,7 @@ def test_corrected_stiffness_is_the_condensed_beam_model(study):
     from bikemass.fe import equivalent_stiffness
     from bikemass.materials import load_materials
     _, rows = read_csv(study[0] / "corrections_stiffness.csv")
-    S = equivalent_stiffness(catalog.bicycle("cargo").structure, load_materials()["titanium"], "condensed")
+    S = equivalent_stiffness(catalog.load_bicycle("cargo").structure, load_materials()["titanium"], "condensed")
     row = next(r for r in rows if r[:3] == ["cargo-loaded", "titanium", "K_deltadelta"])
     assert float(row[4]) == pytest.approx(S[1, 1], rel=1e-12)
     assert float(row[3]) == 2207.0     # the published value as frames/cargo_loaded_thesis.yaml carries it

@@ -52,7 +52,7 @@ def test_runs_build_parameters_as_the_catalog_does(inputs):
 
 @pytest.mark.parametrize("how", ["thesis", "exact"])
 def test_with_rider_equals_the_bicycle_model(how):
-    bike, rider = catalog.bicycle("cargo-thesis"), catalog.load_rider("on-hoods-thesis")
+    bike, rider = catalog.load_bicycle("cargo-thesis"), catalog.load_rider("on-hoods-thesis")
     ours = with_rider(bicycle_parameters(bike, None), rider.properties("exact"), how)
     theirs = bicycle_parameters(bike, rider, how, "exact")
     for name, value in theirs.to_dict().items():

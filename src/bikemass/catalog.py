@@ -1,69 +1,222 @@
-"""Names -> models: turns the BIKE / POSE / stiffness arguments of every command into objects.
+"""Names, files, mappings -> models: what ``bm.load_bicycle``, ``bm.load_rider``,
+``bm.parameters`` and ``bm.stiffness`` do, and what every command calls with its
+BIKE / POSE / stiffness arguments.
 
-``parameters(bike, rider, combine)`` gives the benchmark parameter set of a
-bicycle (a shipped name, a bicycle YAML file or a benchmark parameter file),
-optionally with a rider; ``stiffness(bike, which)`` gives the 2x2 rear-frame
-stiffness S (N m/rad) or ``None`` for a rigid frame.
+A bicycle is a shipped name (``jamis``), a bicycle YAML file, a benchmark parameter
+file, a mapping holding either (as the YAML would), a
+:class:`~bikemass.parameters.BenchmarkParameters` set, or a :class:`Bicycle` already
+loaded.  A rider is a shipped pose name, a pose file, a mapping in any pose form the
+YAML accepts (placement, chain or lumped), a :class:`Rider`, or ``None``/``"none"``.
+Bad input raises :class:`~bikemass.errors.InputError` (a ValueError) naming the
+source (``<mapping>`` for Python values), the key and what was expected.
 """
+
+import os
+from collections.abc import Mapping
 
 import numpy as np
 
-from .config import load_yaml
+from .choices import RIGID, Beam, Combine, Method, Procedure, Source, check
 from .errors import InputError
 
-COMBINE_CHOICES = ("exact", "thesis")
+COMBINE_CHOICES = Combine.values()
 """Rider + rear frame: 'exact' = parallel-axis theorem; 'thesis' = inertias added (Eq. 3.6)."""
 
+MAPPING = "<mapping>"
+"""The source named in errors about a bicycle or rider given as a Python mapping."""
 
-def parameters(bike, rider=None, combine="exact", method="mesh"):
-    """Benchmark parameter set for ``bike`` (+ ``rider``), see the module docstring;
-    ``method`` mesh|exact: mass properties from trimesh meshes or closed-form solids."""
+
+def load_bicycle(bicycle, name=None, size=None):
+    """A bicycle from a name, a file, a mapping or a parameter set.
+
+    Parameters
+    ----------
+    bicycle : str, os.PathLike, Mapping, BenchmarkParameters or Bicycle
+        A shipped name (``"jamis"``, ``"benchmark"``; ``bikemass params --help`` lists
+        them), a bicycle YAML file or benchmark parameter file (YAML/JSON with the 26
+        Meijaard names, SI), a mapping with the content of either, or a parameter set.
+        A :class:`~bikemass.bicycle.Bicycle` is returned as it is.
+    name : str, optional
+        Display name for a mapping or parameter set (default: its ``name`` key).
+    size : str, optional
+        The size of a size run (``sizes:``); a name may also say ``"BIKE@SIZE"``.
+
+    Returns
+    -------
+    Bicycle
+        Immutable; ``bicycle.parts`` hold every placed solid in the benchmark frame (m, kg).
+
+    Raises
+    ------
+    InputError
+        Unknown name (the closest shipped name is suggested) or bad content.
+    """
+    from .bicycle import Bicycle
+    from .bicycle.loader import bicycle_from_mapping, bicycle_from_parameters
+    from .bicycle.loader import load_bicycle as load_file
+    from .parameters import BenchmarkParameters
+
+    if isinstance(bicycle, Bicycle):
+        return bicycle
+    if isinstance(bicycle, BenchmarkParameters):
+        return bicycle_from_parameters(bicycle, name or "parameters", name or "<parameters>")
+    if isinstance(bicycle, Mapping):
+        return bicycle_from_mapping(bicycle, name or MAPPING, size)
+    if isinstance(bicycle, (str, os.PathLike)):
+        return load_file(os.fspath(bicycle), size)
+    raise TypeError(f"a bicycle is a name, a file path, a mapping, a BenchmarkParameters or a Bicycle, "
+                    f"not {type(bicycle).__name__}")
+
+
+def load_rider(rider, as_printed=False, name=None):
+    """A rider from a pose name, a pose file or a mapping; ``None`` for no rider.
+
+    Parameters
+    ----------
+    rider : str, os.PathLike, Mapping, Rider or None
+        A shipped pose (``"relaxed"``; ``"relaxed-thesis"`` is the published Table 3-4
+        rider), a pose YAML file, or a mapping in any pose form the YAML accepts:
+        placement (``body`` + ``segments`` with ``location`` in m and ``angle`` in deg),
+        chain (``body``, ``bike``, ``chain`` joint angles in deg; solved on the bicycle's
+        contacts) or lumped segments (``mass`` kg, ``com`` m, ``inertia`` kg m^2).
+        Values may carry units as strings (``"1.2 m"``).  ``None`` or ``"none"``: no rider.
+    as_printed : bool
+        Use the values as printed in the thesis (``printed:`` keys) instead of the errata.
+    name : str, optional
+        Display name of a mapping's rider (default: its ``name`` key).
+
+    Returns
+    -------
+    Rider or None
+        Immutable; ``rider.properties()`` gives mass (kg), CoM (m), inertia (kg m^2).
+
+    Raises
+    ------
+    InputError
+        Unknown pose (the closest is suggested) or bad content.
+    """
+    from .rider import Rider, rider_from_mapping
+    from .rider import load_rider as load_file
+
+    if rider is None or (isinstance(rider, str) and rider == "none"):
+        return None
+    if isinstance(rider, Rider):
+        return rider
+    if isinstance(rider, Mapping):
+        return rider_from_mapping(rider, name or MAPPING, as_printed)
+    if isinstance(rider, (str, os.PathLike)):
+        return load_file(os.fspath(rider), as_printed=as_printed)
+    raise TypeError(f"a rider is a pose name, a file path, a mapping, a Rider or None, "
+                    f"not {type(rider).__name__}")
+
+
+def parameters(bicycle, rider=None, combine=Combine.EXACT, method=Method.MESH):
+    """The Meijaard et al. (2007) benchmark parameter set of a bicycle with a rider.
+
+    Parameters
+    ----------
+    bicycle
+        Anything :func:`load_bicycle` takes.
+    rider
+        Anything :func:`load_rider` takes; ``None`` (default) for no rider.
+    combine : {"exact", "thesis"}
+        Rider + frame body: parallel-axis theorem (``exact``, default) or the thesis's
+        Eq. 3.6 (central inertias added), see :class:`~bikemass.choices.Combine`.
+    method : {"mesh", "exact"}
+        Mass properties from trimesh meshes (default) or closed-form solids.
+
+    Returns
+    -------
+    BenchmarkParameters
+        Immutable; the 26 values as attributes (``p.w`` in m, ``p.lam`` in rad, ``p.IBxx``
+        in kg m^2, ...) and ``p.to_dict()`` as plain floats.  A parameter file without a
+        rider returns its own values exactly.
+    """
     from .bicycle import bicycle_parameters
-    return bicycle_parameters(bicycle(bike), load_rider(rider), combine, method)
+    combine, method = check(Combine, combine), check(Method, method)
+    return bicycle_parameters(load_bicycle(bicycle), load_rider(rider), combine.value, method.value)
 
 
-def bicycle(bike):
-    """The :class:`~bikemass.bicycle.Bicycle` named ``bike`` (shipped name, YAML or parameter file)."""
-    from .bicycle import load_bicycle
-    return load_bicycle(bike)
+def stiffness(bicycle, which, source=Source.AUTO, procedure=Procedure.CONDENSED, beam=Beam.TIMOSHENKO):
+    """The 2x2 rear-frame stiffness S (N m/rad) on roll and steer at the head tube.
 
+    Parameters
+    ----------
+    bicycle
+        Anything :func:`load_bicycle` takes (needed for a material name).
+    which : str, Material, array_like (2, 2) or None
+        ``"infinite"``/``"rigid"``/``None``: a rigid frame (returns ``None``); a material
+        (``"steel"``, ``"titanium"``, ``"aluminum"``, any key or alias of
+        ``frames/materials.yaml``, or a :class:`~bikemass.materials.Material`): the
+        bicycle's published S for it if it carries one, else the beam finite elements of
+        its rear frame in that material (see ``source``); a 2x2 symmetric positive definite
+        array (N m/rad); or a YAML file with key ``S``.
+    source : {"auto", "published", "computed"}
+        For a material: published S if any, else computed (``auto``), or only one of them.
+    procedure : {"condensed", "thesis"}
+        How S is condensed from the beam model (Schur complement, or the thesis's
+        Eq. 3.31-3.34).
+    beam : {"timoshenko", "euler-bernoulli"}
+        Beam theory of the finite elements.
 
-def load_rider(pose):
-    """The rider in ``pose`` (shipped pose name or pose file), or ``None`` for None/'none'."""
-    if pose in (None, "none"):
+    Returns
+    -------
+    numpy.ndarray of shape (2, 2), or None
+        S in N m/rad (rows and columns: roll, steer), ``None`` for a rigid frame.
+
+    Raises
+    ------
+    InputError
+        Unknown material or file, a bicycle with neither a published S nor a rear-frame
+        structure, or a matrix that is not symmetric positive definite.
+    """
+    from .materials import Material, load_materials
+    source, procedure, beam = check(Source, source), check(Procedure, procedure), check(Beam, beam)
+    if which is None or (isinstance(which, str) and which in (RIGID, "rigid")):
         return None
-    from .rider import load_rider as load
-    return load(pose)
-
-
-STIFFNESS_SOURCES = ("auto", "published", "computed")
-"""Where a material's S comes from: published values if the bicycle carries them, else the
-beam FE of its rear frame ('auto'); or only one of the two."""
-
-
-def stiffness(bike, which, source="auto", procedure="condensed"):
-    """2x2 S (N m/rad) named ``which`` for ``bike``: 'infinite' -> None, a material name
-    (published ``stiffness:`` of the bicycle, or computed by the beam FE of its rear-frame
-    ``structure`` with ``procedure`` condensed|thesis, see ``source``), or a YAML file with key S."""
-    if source not in STIFFNESS_SOURCES:
-        raise ValueError(f"source must be one of {STIFFNESS_SOURCES}, got {source!r}")
-    if which in (None, "infinite", "rigid"):
-        return None
-    from .materials import load_materials
+    if not isinstance(which, (str, os.PathLike, Material)):
+        return stiffness_matrix(which)
     materials = load_materials()
-    if which in materials:
-        model = bicycle(bike)
-        S = None if source == "computed" else model.published_stiffness(materials[which])
-        if S is None and source != "published" and model.structure is not None:
-            from .fe import equivalent_stiffness
-            S = equivalent_stiffness(model.structure, materials[which], procedure)
-        if S is None:
-            raise InputError(model.source, "stiffness", f"a {source} stiffness for {which} "
-                             "(no published stiffness and no rear-frame structure for the beam model)")
-        return S
-    node = load_yaml(which)
+    material = which if isinstance(which, Material) else materials.get(os.fspath(which))
+    if material is not None:
+        return _material_stiffness(load_bicycle(bicycle), material, source, procedure, beam)
+    from .config import load_yaml
+    from .paths import closest_name
+    path = os.fspath(which)
+    if not os.path.isfile(path):
+        names = sorted(materials)
+        raise InputError(path, "(stiffness)", f"{RIGID}, a material ({', '.join(names)}), a 2x2 matrix or "
+                                              f"a YAML file with S{closest_name(path, [RIGID, *names])}")
+    node = load_yaml(path)
     node.check_keys(required=("S",), optional=("units", "source", "name"))
     S = node["S"].matrix((2, 2))
-    if not np.all(np.linalg.eigvalsh((S + S.T) / 2) > 0):
-        node.fail("a positive definite 2x2 stiffness matrix (N m/rad)", "S")
+    if not _positive_definite(S):
+        node.fail("a symmetric positive definite 2x2 stiffness matrix (N m/rad)", "S")
+    return S
+
+
+def _material_stiffness(model, material, source, procedure, beam):
+    S = None if source is Source.COMPUTED else model.published_stiffness(material)
+    if S is None and source is not Source.PUBLISHED and model.structure is not None:
+        from .frame import frame_stiffness
+        S = frame_stiffness(model, material, procedure, beam)
+    if S is None:
+        raise InputError(model.source, "stiffness", f"a {source.value} stiffness for {material.key} "
+                         "(no published stiffness and no rear-frame structure for the beam model)")
+    return S
+
+
+def _positive_definite(S):
+    return bool(np.allclose(S, S.T, rtol=1e-12, atol=0) and np.all(np.linalg.eigvalsh((S + S.T) / 2) > 0))
+
+
+def stiffness_matrix(values):
+    """``values`` as a 2x2 float array (N m/rad); InputError unless symmetric positive definite."""
+    try:
+        S = np.array(values, dtype=float)
+    except (TypeError, ValueError):
+        S = None
+    if S is None or S.shape != (2, 2) or not np.all(np.isfinite(S)) or not _positive_definite(S):
+        raise InputError("stiffness", "(matrix)", "a symmetric positive definite 2x2 stiffness matrix "
+                                                  f"in N m/rad, got {values!r}")
     return S

@@ -3,6 +3,7 @@
 import argparse
 import importlib
 import sys
+import warnings
 
 from .errors import InputError
 
@@ -37,16 +38,25 @@ def build_parser():
     return parser
 
 
+def show_warning(message, category, filename, lineno, file=None, line=None):
+    """Every warning raised while a command runs, as one line on stderr."""
+    print(f"bikemass: warning: {message}", file=sys.stderr)
+
+
 def main(argv=None):
-    """Entry point: run one sub-command; bad input -> one line on stderr, exit status 2."""
+    """Entry point: run one sub-command; bad input -> one line on stderr, exit status 2;
+    warnings -> one ``bikemass: warning:`` line each."""
     args = build_parser().parse_args(argv)
-    try:
-        return args.run(args) or 0
-    except InputError as exc:
-        print(f"bikemass: error: {exc}", file=sys.stderr)
-        return 2
-    except BrokenPipeError:
-        return 0
+    with warnings.catch_warnings():
+        warnings.simplefilter("always")
+        warnings.showwarning = show_warning
+        try:
+            return args.run(args) or 0
+        except InputError as exc:
+            print(f"bikemass: error: {exc}", file=sys.stderr)
+            return 2
+        except BrokenPipeError:
+            return 0
 
 
 if __name__ == "__main__":

@@ -17,9 +17,14 @@ def _shown(source):
         return str(source)
 
 
-class InputError(Exception):
-    """Bad input: names the file, the key and what was expected."""
+class InputError(ValueError):
+    """Bad input: names the file, the key and what was expected (a ValueError)."""
 
     def __init__(self, source, key, expected):
         self.source, self.key, self.expected = _shown(source), str(key), str(expected)
         super().__init__(f"{self.source}: {self.key}: {self.expected}")
+
+
+class BikemassWarning(UserWarning):
+    """A result that is computed but worth a second look (e.g. a joint angle outside the
+    typical human range); the command line shows each as one ``bikemass: warning:`` line."""

@@ -36,8 +36,14 @@ def resolve(name, folder: Path, what: str) -> Path:
         candidate = folder / f"{stem}.yaml"
         if candidate.is_file():
             return candidate
-    known = ", ".join(available(folder))
-    raise InputError(name, "(name)", f"a {what} file or one of: {known}")
+    known = available(folder)
+    raise InputError(name, "(name)", f"a {what} file or one of: {', '.join(known)}{closest_name(name, known)}")
+
+
+def closest_name(name, names):
+    """``" (did you mean 'x'?)"`` for the entry of ``names`` closest to a misspelt ``name``, else ``""``."""
+    from .choices import closest
+    return closest(Path(str(name)).stem.replace("_", "-"), names)
 
 
 SHARED_FILES = ("materials", "chart_defaults")

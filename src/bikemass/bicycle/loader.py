@@ -12,6 +12,7 @@ import numpy as np
 from ..config import Node, load_yaml
 from ..inertia import MassProperties
 from ..materials import load_materials, read_materials
+from ..output import plain
 from ..parameters import from_node, is_parameter_file
 from ..parts import Part
 from ..paths import frames_dir, resolve
@@ -37,11 +38,24 @@ def load_bicycle(name_or_path, size=None):
     """
     name, at_size = split_size(name_or_path)
     path = resolve(name, frames_dir(), "bicycle")
-    node = load_yaml(path)
+    return _read_document(load_yaml(path), path.stem, str(path), size or at_size)
+
+
+def bicycle_from_mapping(mapping, source, size=None):
+    """:class:`Bicycle` from a Python mapping holding what a bicycle or parameter file holds;
+    errors name ``source``.  A ``base`` is looked up as a shipped name or relative to the
+    working folder."""
+    node = Node(plain(mapping), source, "")
+    if not isinstance(node.value, dict):
+        node.fail("a mapping of a bicycle or of the 26 benchmark parameters")
+    return _read_document(node, source, source, size)
+
+
+def _read_document(node, default_name, source, size):
     if is_parameter_file(node):
-        select_size(node, size or at_size)
-        return bicycle_from_parameters(from_node(node), node.get("name", path.stem).string(), str(path))
-    return _read_any(_with_base(node), str(path), size or at_size)
+        select_size(node, size)
+        return bicycle_from_parameters(from_node(node), node.get("name", default_name).string(), source)
+    return _read_any(_with_base(node), source, size)
 
 
 def bicycle_sizes(name_or_path):

@@ -99,7 +99,7 @@ def run_draw(args):
     from ..bicycle.drawing import plot_side_view
 
     options = figure_options(args, args.output)
-    bicycle, rider = catalog.bicycle(args.bike), catalog.load_rider(args.rider)
+    bicycle, rider = catalog.load_bicycle(args.bike), catalog.load_rider(args.rider)
     title = bicycle.name + (f" + rider {rider.name}" if rider is not None else "")
     fig = plot_side_view(bicycle, rider, title, options.size, **options.limits())
     if bicycle.chart is not None:
@@ -118,6 +118,6 @@ def run_export(args):
     fmt = Path(args.output).suffix.lower().lstrip(".")
     if fmt not in MODEL_FORMATS:
         raise InputError(args.output, "(file)", "a model file name ending in .glb, .stl or .obj")
-    bicycle, rider = catalog.bicycle(args.bike), catalog.load_rider(args.rider)
+    bicycle, rider = catalog.load_bicycle(args.bike), catalog.load_rider(args.rider)
     write_atomic(args.output, export_scene(build_scene(bicycle, rider), fmt))
     return 0

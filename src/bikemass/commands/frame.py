@@ -2,26 +2,9 @@
 
 import sys
 
+from ..choices import Beam, Procedure, Support
+from ..fe.defaults import DEFAULT_ELEMENT_SIZE
 from .figure_options import add_figure_options, figure_options, write_figure
-
-BEAMS = ("timoshenko", "euler-bernoulli")
-
-
-def load_structure(bike):
-    """The structural rear frame (:class:`~bikemass.tubes.Structure`) of bicycle ``bike``."""
-    from ..bicycle import load_bicycle
-    from ..errors import InputError
-
-    structure = getattr(load_bicycle(bike), "structure", None)
-    if structure is None:
-        raise InputError(bike, "(frame)", "a bicycle whose frame names its structural tubes, dropouts "
-                                          "and head tube")
-    return structure
-
-
-def _material(args):
-    from ..fe import resolve_material
-    return None if args.material is None else resolve_material(args.material)
 
 
 def _common(parser):
@@ -29,22 +12,18 @@ def _common(parser):
     parser.add_argument("--material", metavar="M", default=None,
                         help="steel, titanium, aluminum or a one-material YAML file "
                              "(default: the frame's own materials); geometry is unchanged")
-    parser.add_argument("--beam", choices=BEAMS, default="timoshenko",
+    parser.add_argument("--beam", choices=Beam.values(), default=Beam.TIMOSHENKO.value,
                         help="beam theory (default timoshenko: shear deformation + rotary inertia)")
     parser.add_argument("--format", choices=("table", "json"), default="table")
 
 
 def register(subparsers):
-    from ..fe.boundary import BOUNDARY_CONDITIONS
-    from ..fe.model import DEFAULT_ELEMENT_SIZE
-    from ..fe.stiffness import PROCEDURES
-
     p = subparsers.add_parser(
         "stiffness", help="equivalent rear-frame stiffness S (roll, steer) at the head tube",
         description="2x2 stiffness S (N m/rad) on roll and steer rotations at the bottom head-tube "
                     "keypoint with the dropouts clamped (beam finite elements of the frame tubes).")
     _common(p)
-    p.add_argument("--procedure", choices=PROCEDURES, default="condensed",
+    p.add_argument("--procedure", choices=Procedure.values(), default=Procedure.CONDENSED.value,
                    help="condensed: consistent Schur complement (default); thesis: Williams (2015) "
                         "Eq. 3.31-3.34 unit rotations")
     p.set_defaults(run=run_stiffness)
@@ -54,7 +33,7 @@ def register(subparsers):
         description="Lowest natural frequencies (Hz) of the rear frame's beam model; free-free "
                     "skips the six rigid-body modes.")
     _common(p)
-    p.add_argument("--bc", choices=BOUNDARY_CONDITIONS, default="free",
+    p.add_argument("--bc", choices=Support.values(), default=Support.FREE.value,
                    help="free, fix-rear (dropouts clamped), fix-head (head tube clamped), fix-both")
     p.add_argument("-n", type=int, default=10, metavar="N", help="number of modes (default 10)")
     p.add_argument("--element-size", type=float, default=DEFAULT_ELEMENT_SIZE, metavar="M",
@@ -65,11 +44,10 @@ def register(subparsers):
 
 
 def run_stiffness(args):
-    from ..fe import equivalent_stiffness
+    from ..frame import frame_stiffness
     from ..output import dumps, table
 
-    S = equivalent_stiffness(load_structure(args.bike), _material(args), args.procedure,
-                             timoshenko=args.beam == "timoshenko")
+    S = frame_stiffness(args.bike, args.material, args.procedure, args.beam)
     if args.format == "json":
         sys.stdout.write(dumps({"S": S, "units": "N m/rad"}, "json"))
         return
@@ -79,7 +57,7 @@ def run_stiffness(args):
 
 def run_modes(args):
     from ..errors import InputError
-    from ..fe import frame_modes
+    from ..frame import frame_modes
     from ..output import dumps, table
 
     options = figure_options(args, args.plot)
@@ -87,11 +65,7 @@ def run_modes(args):
         raise InputError("-n", "(option)", "a positive number of modes")
     if not args.element_size > 0:
         raise InputError("--element-size", "(option)", "a positive element length in m")
-    try:
-        modes = frame_modes(load_structure(args.bike), args.bc, args.n, _material(args),
-                            args.element_size, timoshenko=args.beam == "timoshenko")
-    except ValueError as exc:
-        raise InputError(args.bike, "(model)", str(exc)) from None
+    modes = frame_modes(args.bike, args.bc, args.n, args.material, args.element_size, args.beam)
     if args.plot:
         from ..fe.plot import plot_frame_modes
         write_figure(plot_frame_modes(modes, size=options.size), args.plot, options)

@@ -1,9 +1,11 @@
 """``bikemass pose BIKE``: a rider posed by joint angles on a bicycle's contacts;
 ``bikemass pose-fit``: the thesis poses against their closest joined-up chain poses."""
 
+import warnings
+
+from ..choices import Combine, Grip
 from .figure_options import add_figure_options, figure_options, write_figure
 
-HANDS = ("tops", "hoods", "drops", "aero", "none")
 JOINT_HELP = "torso_lean, neck, shoulder, elbow, hip, knee"
 
 
@@ -18,7 +20,7 @@ def register(sub):
     p.add_argument("--torso-lean", type=float, metavar="DEG",
                    help="fix the torso lean from vertical (deg, forward positive); default: solved "
                         "with the elbows bent 20 deg")
-    p.add_argument("--hands", choices=HANDS, help="grip of the bicycle (default hoods, else its first grip)")
+    p.add_argument("--hands", choices=Grip.values(), help="grip of the bicycle (default hoods, else its first grip)")
     p.add_argument("--crank", type=float, metavar="DEG",
                    help="crank angle (deg, 0 = right crank forward, positive pedalling); each foot on "
                         "its pedal.  Default: symmetric legs, feet on the crank axis (as the thesis)")
@@ -35,7 +37,7 @@ def register(sub):
                                    "rider's mass properties and BIKE's weave and capsize speeds.")
     f.add_argument("poses", nargs="*", metavar="POSE", help="placement poses (default: the five thesis poses)")
     f.add_argument("--bike", default="jamis-thesis", help="bicycle for the speeds (default jamis-thesis)")
-    f.add_argument("--combine", choices=("exact", "thesis"), default="exact",
+    f.add_argument("--combine", choices=Combine.values(), default=Combine.EXACT.value,
                    help="rider + rear frame: parallel-axis theorem (default) or the thesis's Eq. 3.6")
     f.set_defaults(run=run_fit)
 
@@ -73,41 +75,27 @@ def _report(solution, gaps, hands, crank):
 
 
 def run_pose(args):
-    from ..config import Node
     import yaml
 
     from ..output import plain, write_atomic
-    from ..rider.anthropometry import find_anthropometry
-    from ..rider.chain import load_chain_body, joint_gaps
-    from ..rider.chain_file import bicycle_contacts, default_hands, warn
-    from ..rider.solve import solve_on_bicycle
-    from ..rider import Rider
-    from ..rider.pose import read_pose
+    from ..posing import pose_rider
 
     options = figure_options(args, args.plot)
-    bicycle = bicycle_contacts(args.bike, Node(args.bike, args.bike, "BIKE"))
-    body_node = Node(args.body, "--body", "--body")
-    body = load_chain_body(find_anthropometry(body_node), args.body)
-    hands = args.hands or default_hands(bicycle.contacts)
-    solution = solve_on_bicycle(body, bicycle.contacts, hands, args.crank, _fixed(args)).check_reachable()
-    for line in solution.pose.warnings():
-        warn(line)
-    right, _ = solution.pose.placements()
-    print(_report(solution, joint_gaps(right, body), hands, args.crank))
-    name = args.name or f"{hands} on {args.bike}"
-    document = solution.pose.placement_form(name, args.body)
+    posed = pose_rider(args.bike, args.body, args.hands, args.crank, _fixed(args), args.name)
+    solution, hands = posed.solution, posed.hands
+    print(_report(solution, posed.gaps, hands, args.crank))
     if args.out:
         header = "".join(f"# {line}\n" for line in (
             f"Chain pose written by: bikemass pose {args.bike} --hands {hands}"
             + (f" --crank {args.crank:g}" if args.crank is not None else ""),
             "joint angles (deg): " + ", ".join(f"{k} {v:.3f}" for k, v in sorted(solution.pose.angles.items())),
             "placement form (docs/riders.md): location = top-plane centre (m), angle (deg)"))
-        write_atomic(args.out, header + yaml.safe_dump(plain(document), sort_keys=False, default_flow_style=None))
+        write_atomic(args.out, header + yaml.safe_dump(plain(posed.document), sort_keys=False,
+                                                       default_flow_style=None))
         print(f"wrote {args.out}")
     if args.plot:
         from ..plots.pose import plot_pose
-        _, parts = read_pose(Node(document, args.out or "pose", None))
-        fig = plot_pose(bicycle, Rider(name, name, parts), solution, f"{name}: chain pose", options.size,
+        fig = plot_pose(posed.bicycle, posed.rider, solution, f"{posed.rider.name}: chain pose", options.size,
                         **options.limits())
         write_figure(fig, args.plot, options)
         print(f"wrote {args.plot}")
@@ -118,14 +106,14 @@ def run_fit(args):
     from ..output import table
     from ..rider import THESIS_POSES
     from ..rider.chain import JOINTS
-    from ..rider.chain_file import warn
+    from ..errors import BikemassWarning
     from ..rider.thesis_fit import compare_with_chain, first
 
     rows, props, angles = [], [], []
     for pose in args.poses or THESIS_POSES:
         r = compare_with_chain(pose, args.bike, args.combine)
         for line in r["warnings"]:
-            warn(f"{pose} chain fit: {line}")
+            warnings.warn(f"{pose} chain fit: {line}", BikemassWarning)
         g = r["plane_gaps"]
         (wt, tc), (wc, cc) = ((first(w), first(c)) for w, c in (r["speeds"]["thesis"], r["speeds"]["chain"]))
         rows.append((pose, g["elbow"] * 1000, g["knee"] * 1000, g["hip"] * 1000, r["rms"] * 1000, r["max"] * 1000,

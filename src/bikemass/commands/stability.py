@@ -83,13 +83,13 @@ def parse_speeds(text):
     return speed_grid(start, stop, step)
 
 
-def _matrices(args, rider=None, stiffness=None):
-    from .. import catalog
-    from ..stability import canonical_matrices, with_frame_stiffness
+def _inputs(args, rider=None, stiffness=None):
+    """(parameter set, S or None) of BIKE with ``rider`` and ``stiffness`` (default: the options')."""
+    from ..catalog import load_bicycle, parameters, stiffness as frame_stiffness
 
-    params = catalog.parameters(args.bike, rider or args.rider, args.combine)
-    return with_frame_stiffness(canonical_matrices(params),
-                                catalog.stiffness(args.bike, stiffness or args.stiffness))
+    bike = load_bicycle(args.bike)
+    return (parameters(bike, rider or args.rider, args.combine),
+            frame_stiffness(bike, stiffness or args.stiffness))
 
 
 def _title(args):
@@ -105,12 +105,12 @@ def _emit(args, text):
 
 
 def run_eig(args):
+    from ..dynamics import eigenvalues
     from ..output import dumps
-    from ..stability import follow_modes
 
     options = figure_options(args, args.plot)
     speeds = parse_speeds(args.speeds)
-    modes = follow_modes(_matrices(args), speeds)
+    modes = eigenvalues(*_inputs(args), speeds)
     if args.format or args.output or not args.plot:      # only a figure asked for: no table
         if args.format == "json":
             text = dumps(modes.to_dict(), "json")
@@ -137,15 +137,15 @@ def eig_table(modes, csv=False):
 
 
 def run_stability(args):
+    from ..dynamics import stability
     from ..errors import InputError
     from ..output import dumps
-    from ..stability import stability
 
     options = figure_options(args, args.plot)
     if not args.marginal > 0:
         raise InputError("--marginal", args.marginal, "a positive modulus in rad/s")
     speeds = parse_speeds(args.speeds)
-    result = stability(_matrices(args), speeds, marginal=args.marginal)
+    result = stability(*_inputs(args), speeds, marginal=args.marginal)
     text = dumps(result.to_dict(), "json") if args.format == "json" else stability_text(result, _title(args))
     _emit(args, text)
     if args.plot:
@@ -155,9 +155,9 @@ def run_stability(args):
 
 
 def run_compare(args):
+    from ..dynamics import stability
     from ..output import table
     from ..plots.stability import plot_comparison
-    from ..stability import stability
 
     options = figure_options(args, args.output)
     speeds = parse_speeds(args.speeds)
@@ -168,7 +168,7 @@ def run_compare(args):
         for stiffness in stiffnesses:
             name = " / ".join(x for x, many in ((rider, len(riders) > 1), (stiffness, len(stiffnesses) > 1))
                               if many) or rider
-            result = stability(_matrices(args, rider, stiffness), speeds)
+            result = stability(*_inputs(args, rider, stiffness), speeds)
             curves[name] = result.modes
             rows.append([rider, stiffness, _speeds(result.weave_speeds), _speeds(result.capsize_speeds),
                          _ranges(result.ranges["strict"]["exact"], "{:.4f}")])

@@ -2,12 +2,27 @@
 
 ``equivalent_stiffness(structure, material, procedure)`` -> 2x2 S (N m/rad);
 ``frame_modes(structure, bc, count, material, element_size)`` -> :class:`Modes` (Hz).
+The names are imported on first use: ``bikemass.fe.defaults`` alone does not load scipy.
 """
 
-from .boundary import BOUNDARY_CONDITIONS
-from .model import DEFAULT_ELEMENT_SIZE, build_mesh, resolve_material, with_material
-from .modes import Modes, frame_modes, solve_modes
-from .stiffness import PROCEDURES, equivalent_stiffness
+import importlib
 
-__all__ = ["BOUNDARY_CONDITIONS", "DEFAULT_ELEMENT_SIZE", "PROCEDURES", "Modes", "build_mesh",
-           "equivalent_stiffness", "frame_modes", "resolve_material", "solve_modes", "with_material"]
+from ..choices import Procedure, Support
+from .defaults import DEFAULT_ELEMENT_SIZE
+
+BOUNDARY_CONDITIONS = Support.values()
+PROCEDURES = Procedure.values()
+
+_LAZY = {"build_mesh": "model", "resolve_material": "model", "with_material": "model",
+         "Modes": "modes", "frame_modes": "modes", "solve_modes": "modes",
+         "equivalent_stiffness": "stiffness"}
+
+__all__ = ["BOUNDARY_CONDITIONS", "DEFAULT_ELEMENT_SIZE", "PROCEDURES", *_LAZY]
+
+
+def __getattr__(name):
+    if name not in _LAZY:
+        raise AttributeError(f"module 'bikemass.fe' has no attribute {name!r}")
+    value = getattr(importlib.import_module(f"{__name__}.{_LAZY[name]}"), name)
+    globals()[name] = value
+    return value

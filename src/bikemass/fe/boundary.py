@@ -10,7 +10,7 @@ import numpy as np
 from scipy.sparse.csgraph import connected_components
 import scipy.sparse as sp
 
-BOUNDARY_CONDITIONS = ("free", "fix-rear", "fix-head", "fix-both")
+from . import BOUNDARY_CONDITIONS
 
 
 def clamped_keypoints(structure, bc):

@@ -14,8 +14,6 @@ from ..errors import InputError
 from ..materials import load_materials
 from .properties import beam_properties
 
-DEFAULT_ELEMENT_SIZE = 0.02
-"""Default element length for modal analysis (m); see docs/fe.md for the convergence study."""
 
 
 @dataclass(frozen=True)

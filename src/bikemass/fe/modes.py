@@ -16,7 +16,8 @@ import scipy.sparse.linalg as spla
 
 from .assembly import assemble
 from .boundary import clamped_keypoints, free_dofs, rigid_body_mode_count
-from .model import DEFAULT_ELEMENT_SIZE, build_mesh
+from .defaults import DEFAULT_ELEMENT_SIZE
+from .model import build_mesh
 
 DENSE_LIMIT = 400
 """Free-DOF count up to which the dense solver is used."""

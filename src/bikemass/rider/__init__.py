@@ -69,10 +69,26 @@ def load_rider(pose: str, as_printed: bool = False) -> Rider:
     A chain-form pose file (``chain:``, docs/poses.md) is solved on its bicycle.
     Bad input raises :class:`~bikemass.errors.InputError`.
     """
-    node = load_yaml(resolve(pose, poses_dir(), "pose"))
+    return _read_document(load_yaml(resolve(pose, poses_dir(), "pose")), str(pose), as_printed)
+
+
+def rider_from_mapping(mapping, source, as_printed=False):
+    """The rider of a Python mapping in any form a pose file takes (placement, chain or
+    lumped segments); errors name ``source``.  A chain pose's ``bike`` may also be a
+    :class:`~bikemass.bicycle.Bicycle`."""
+    from ..config import Node
+    from ..output import plain
+
+    node = Node(plain(mapping), source, "")
+    if not isinstance(node.value, dict):
+        node.fail("a mapping of a pose (segments: or chain:)")
+    return _read_document(node, source, as_printed)
+
+
+def _read_document(node, pose, as_printed):
     if isinstance(node.value, dict) and "chain" in node.value:
         from .chain_file import read_chain_pose
         name, parts, _ = read_chain_pose(node)
-        return Rider(str(pose), name, parts)
+        return Rider(pose, name, parts)
     name, parts = read_pose(node, as_printed)
-    return Rider(str(pose), name, parts)
+    return Rider(pose, name, parts)

@@ -12,21 +12,16 @@ symmetric, feet on the crank axis) and any joint angle to fix (deg, see
 :data:`~bikemass.rider.chain.JOINTS`).  ``name`` is optional.  See docs/poses.md.
 """
 
-import sys
+import warnings
 from pathlib import Path
 
 from ..config import Node
-from ..errors import InputError
+from ..errors import BikemassWarning, InputError
 from .anthropometry import find_anthropometry
 from .chain import JOINTS, load_chain_body
 from .pose import angle_deg, read_pose
 
 CHAIN_KEYS = ("hands", "crank", *JOINTS)
-
-
-def warn(line):
-    """One warning line on stderr (joint angles outside human ranges)."""
-    print(f"bikemass: warning: {line}", file=sys.stderr)
 
 
 def default_hands(contacts):
@@ -39,13 +34,21 @@ def default_hands(contacts):
 def bicycle_contacts(bike, node):
     """The ``contacts`` of bicycle ``bike`` (name or file; a relative file is looked up next
     to the pose file first); ``node`` is blamed if the bicycle has none."""
-    from ..bicycle import load_bicycle
-    here = Path(node.source).parent / bike
-    bicycle = load_bicycle(str(here) if here.is_file() else bike)
+    from ..bicycle import Bicycle, load_bicycle
+    if isinstance(bike, Bicycle):
+        bicycle = bike
+    else:
+        here = Path(node.source).parent / bike
+        bicycle = load_bicycle(str(here) if here.is_file() else bike)
     if bicycle.contacts is None:
         node.fail(f"a bicycle with a contacts: section (saddle, bottom_bracket, crank_length, grips); "
                   f"{bicycle.source} has none")
     return bicycle
+
+
+def _is_bicycle(value):
+    from ..bicycle import Bicycle
+    return isinstance(value, Bicycle)
 
 
 def read_chain_pose(node):
@@ -55,7 +58,8 @@ def read_chain_pose(node):
     chain = node["chain"]
     chain.check_keys(optional=CHAIN_KEYS)
     body = load_chain_body(find_anthropometry(node["body"]), node["body"].string())
-    bicycle = bicycle_contacts(node["bike"].string(), node["bike"])
+    bike = node["bike"]
+    bicycle = bicycle_contacts(bike.value if _is_bicycle(bike.value) else bike.string(), bike)
     contacts = bicycle.contacts
     choices = (*contacts.grips, "none")
     hands = chain["hands"].string(choices) if chain.has("hands") else default_hands(contacts)
@@ -68,7 +72,7 @@ def read_chain_pose(node):
         key = "hands" if ".grips." in exc.key else "crank" if exc.key.endswith("crank_length") else None
         chain.fail(f"{exc.expected} [{exc.source}: {exc.key}]", key)
     for line in solution.pose.warnings():
-        warn(f"{node.source}: {line}")
+        warnings.warn(f"{node.source}: {line}", BikemassWarning, stacklevel=2)
     name = node.get("name", str(node.source)).string()
     document = solution.pose.placement_form(name, node["body"].string())
     _, parts = read_pose(Node(document, node.source, None))

@@ -124,7 +124,7 @@ class Inputs:
 
     def bicycle(self, name):
         if name not in self._bicycles:
-            self._bicycles[name] = catalog.bicycle(name)
+            self._bicycles[name] = catalog.load_bicycle(name)
         return self._bicycles[name]
 
     def rider(self, name):

@@ -1,0 +1,110 @@
+"""The rear frame's beam model from Python: its structure, its equivalent stiffness S
+(``bm.frame_stiffness``; :func:`bikemass.stiffness` also knows published values) and its
+natural frequencies (``bm.frame_modes``)."""
+
+from .choices import Beam, Procedure, Support, check
+from .fe.defaults import DEFAULT_ELEMENT_SIZE
+
+
+def frame_structure(bicycle):
+    """The structural rear frame of a bicycle: tubes, dropouts and head tube.
+
+    Parameters
+    ----------
+    bicycle
+        Anything :func:`bikemass.load_bicycle` takes.
+
+    Returns
+    -------
+    Structure
+        ``.tubes``, ``.dropouts``, ``.head_tube`` and ``.keypoints`` (m).
+
+    Raises
+    ------
+    InputError
+        If the bicycle's file names no ``structure:`` (e.g. a parameter file).
+    """
+    from .catalog import load_bicycle
+    from .errors import InputError
+
+    model = load_bicycle(bicycle)
+    if model.structure is None:
+        raise InputError(model.source, "structure", "a bicycle whose frame names its structural tubes, "
+                                                    "dropouts and head tube")
+    return model.structure
+
+
+def frame_stiffness(bicycle, material=None, procedure=Procedure.CONDENSED, beam=Beam.TIMOSHENKO):
+    """The 2x2 stiffness S of a bicycle's rear frame from its beam finite elements.
+
+    Parameters
+    ----------
+    bicycle
+        Anything :func:`bikemass.load_bicycle` takes, with a rear-frame ``structure``.
+    material : str or Material, optional
+        Every tube in this material (a shipped name or a one-material YAML file);
+        default: the frame's own materials.
+    procedure : {"condensed", "thesis"}
+        Consistent Schur complement (default) or the thesis's Eq. 3.31-3.34.
+    beam : {"timoshenko", "euler-bernoulli"}
+        Beam theory.
+
+    Returns
+    -------
+    numpy.ndarray of shape (2, 2)
+        S in N m/rad on (roll, steer) at the bottom head-tube keypoint, dropouts clamped.
+    """
+    from .fe import equivalent_stiffness
+
+    procedure, beam = check(Procedure, procedure), check(Beam, beam)
+    return equivalent_stiffness(frame_structure(bicycle), _material(material), procedure.value,
+                                timoshenko=beam is Beam.TIMOSHENKO)
+
+
+def _material(material):
+    from .materials import Material
+    if material is None or isinstance(material, Material):
+        return material
+    from .fe import resolve_material
+    return resolve_material(str(material))
+
+
+def frame_modes(bicycle, support=Support.FREE, count=10, material=None, element_size=DEFAULT_ELEMENT_SIZE,
+                beam=Beam.TIMOSHENKO):
+    """The lowest natural frequencies and mode shapes of a bicycle's rear frame.
+
+    Parameters
+    ----------
+    bicycle
+        Anything :func:`bikemass.load_bicycle` takes, with a rear-frame ``structure``.
+    support : {"free", "fix-rear", "fix-head", "fix-both"}
+        Boundary condition; free-free skips the six rigid-body modes.
+    count : int
+        Number of modes (>= 1).
+    material : str or Material, optional
+        Every tube in this material (a shipped name or a one-material YAML file);
+        default: the frame's own materials.  Geometry is unchanged.
+    element_size : float
+        Beam element length (m), > 0.
+    beam : {"timoshenko", "euler-bernoulli"}
+        Beam theory.
+
+    Returns
+    -------
+    Modes
+        ``.frequencies_hz`` (count,) ascending, ``.shapes`` (n_dof, count) mass-normalised.
+    """
+    from .errors import InputError
+    from .fe import frame_modes as solve
+
+    support, beam = check(Support, support, "support"), check(Beam, beam)
+    if int(count) != count or count < 1:
+        raise InputError("count", count, "a positive number of modes")
+    if not element_size > 0:
+        raise InputError("element_size", element_size, "a positive element length in m")
+    structure, material = frame_structure(bicycle), _material(material)
+    try:
+        return solve(structure, support.value, int(count), material, element_size,
+                     timoshenko=beam is Beam.TIMOSHENKO)
+    except ValueError as exc:
+        raise InputError(str(bicycle), "(model)", str(exc)) from None

@@ -1,0 +1,106 @@
+"""A rider posed by joint angles on a bicycle's contacts (``bm.pose_rider``): hips on the
+saddle, hands on a grip, feet on the pedals, the free joint angles solved (scipy least
+squares, :mod:`bikemass.rider.solve`).  Joint angles outside typical human ranges are
+reported with :mod:`warnings` (:class:`~bikemass.errors.BikemassWarning`), not refused."""
+
+import warnings
+from dataclasses import dataclass
+
+from .choices import Grip, check
+from .frozen import freeze, short_repr
+
+DEFAULT_BODY = "thesis_rider"
+"""The anthropometry (``bodies/``) posed when none is named."""
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class PosedRider:
+    """A chain-posed rider and how it was solved.
+
+    Attributes
+    ----------
+    rider : Rider
+        The posed rider (use it anywhere a rider goes).
+    bicycle : Bicycle
+        The bicycle whose ``contacts`` it sits on.
+    solution : Solution
+        Joint angles (``solution.pose.angles``, deg), hip joints (``solution.pose.root``,
+        x and z in m), the contacts' residuals (m) and which joints were solved.
+    hands : str
+        The grip used (or ``"none"``); ``crank`` the crank angle (deg) or ``None``.
+    document : Mapping
+        The pose in the placement form (what ``bikemass pose -o`` writes; read-only).
+    gaps : Mapping
+        ``{joint: gap (m)}`` between the joined segment ends (zero to rounding).
+    """
+
+    rider: object
+    bicycle: object
+    solution: object
+    hands: str
+    crank: object
+    document: object
+    gaps: object
+
+    def __repr__(self):
+        angles = ", ".join(f"{k} {v:.1f}" for k, v in self.solution.pose.angles.items())
+        return short_repr(self, ("rider", repr(self.rider.name)), ("hands", self.hands),
+                          ("angles_deg", f"({angles})"))
+
+
+def pose_rider(bicycle, body=DEFAULT_BODY, hands=None, crank=None, fixed=None, name=None):
+    """Pose a rider by joint angles on a bicycle's contact points.
+
+    Parameters
+    ----------
+    bicycle
+        Anything :func:`bikemass.load_bicycle` takes, with a ``contacts:`` section.
+    body : str
+        Anthropometry with ``joints:`` (a name in ``bodies/`` or a YAML file).
+    hands : {"tops", "hoods", "drops", "aero", "none"}, optional
+        Grip; default ``hoods`` if the bicycle has them, else its first grip.
+    crank : float, optional
+        Crank angle (deg, 0 = right crank forward); default: symmetric legs with the feet
+        on the crank axis (as the thesis).
+    fixed : Mapping[str, float], optional
+        Joint angles to hold (deg): any of torso_lean, neck, shoulder, elbow, hip, knee.
+    name : str, optional
+        The pose's name (default ``"<hands> on <bicycle name as given, or its name:>"``).
+
+    Returns
+    -------
+    PosedRider
+
+    Raises
+    ------
+    InputError
+        A bicycle without contacts, an unknown grip or joint, or a contact out of reach.
+    """
+    from .catalog import load_bicycle
+    from .config import Node
+    from .errors import BikemassWarning, InputError
+    from .rider import Rider
+    from .rider.anthropometry import find_anthropometry
+    from .rider.chain import JOINTS, joint_gaps, load_chain_body
+    from .rider.chain_file import bicycle_contacts, default_hands
+    from .rider.pose import read_pose
+    from .rider.solve import solve_on_bicycle
+
+    model = load_bicycle(bicycle)
+    model = bicycle_contacts(model, Node(model.source, model.source, "contacts"))
+    chain_body = load_chain_body(find_anthropometry(Node(str(body), "body", "body")), str(body))
+    hands = default_hands(model.contacts) if hands is None else check(Grip, hands, "hands").value
+    fixed = dict(fixed or {})
+    for joint, value in fixed.items():
+        if joint not in JOINTS:
+            raise InputError("fixed", joint, f"a joint angle: one of {', '.join(JOINTS)}")
+        fixed[joint] = float(value)
+    solution = solve_on_bicycle(chain_body, model.contacts, hands, crank, fixed).check_reachable()
+    for line in solution.pose.warnings():
+        warnings.warn(line, BikemassWarning, stacklevel=2)
+    name = name or f"{hands} on {bicycle if isinstance(bicycle, str) else model.name}"
+    document = solution.pose.placement_form(name, str(body))
+    _, parts = read_pose(Node(document, name, None))
+    right, _ = solution.pose.placements()
+    return PosedRider(Rider(name, name, parts), model, solution, hands, crank, freeze(document),
+                      freeze(joint_gaps(right, chain_body)))
