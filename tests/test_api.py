@@ -156,3 +156,18 @@ def test_import_bikemass_loads_no_numpy():
     code = "import sys, bikemass; print(sorted(m for m in ('numpy', 'scipy', 'matplotlib', 'trimesh') if m in sys.modules))"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "[]"
+
+
+def test_plot_eigenvalues_returns_a_figure_and_leaves_the_backend_alone(jamis_relaxed_steel):
+    code = """
+import matplotlib
+matplotlib.use("svg")
+import matplotlib.pyplot as plt
+import bikemass as bm
+p = bm.parameters("benchmark")
+fig = bm.plot_eigenvalues(bm.stability(p, speeds=bm.speeds(0, 10, 0.5)), title="benchmark")
+from matplotlib.figure import Figure
+print(type(fig) is Figure, matplotlib.get_backend(), plt.get_fignums(), len(fig.axes))
+"""
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.split() == ["True", "svg", "[]", "4"]
