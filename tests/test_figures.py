@@ -22,15 +22,15 @@ from bikemass import catalog
 from bikemass.bicycle.drawing import plot_side_view
 from bikemass.fe import frame_modes
 from bikemass.fe.plot import plot_frame_modes
-from bikemass.commands.frame import load_structure
+from bikemass.frame import frame_structure
 from bikemass.plots.stability import plot_comparison, plot_eigenvalues
 from bikemass.stability import canonical_matrices, speed_grid, stability
 
 result = stability(canonical_matrices(catalog.parameters("benchmark", "none", "exact")), speed_grid(0, 8, 0.5))
 figures = [plot_eigenvalues(result, "benchmark"), plot_eigenvalues(result.modes),
            plot_comparison({"benchmark": result.modes}),
-           plot_side_view(catalog.bicycle("benchmark")),
-           plot_frame_modes(frame_modes(load_structure("jamis"), "fix-rear", 2))]
+           plot_side_view(catalog.load_bicycle("benchmark")),
+           plot_frame_modes(frame_modes(frame_structure("jamis"), "fix-rear", 2))]
 assert all(type(f) is Figure for f in figures), [type(f) for f in figures]
 assert matplotlib.get_backend() == "svg", matplotlib.get_backend()
 assert "matplotlib.pyplot" not in sys.modules, "pyplot imported"
@@ -69,7 +69,7 @@ def test_axis_limits_reach_the_axes(tmp_path, capsys):
     svg = tmp_path / "side.svg"
     from bikemass import catalog
     from bikemass.bicycle.drawing import plot_side_view
-    ax = plot_side_view(catalog.bicycle("benchmark"), xlim=(-0.5, 1.5), ylim=(0, 1.4)).axes[0]
+    ax = plot_side_view(catalog.load_bicycle("benchmark"), xlim=(-0.5, 1.5), ylim=(0, 1.4)).axes[0]
     assert ax.get_xlim() == pytest.approx((-0.5, 1.5)) and ax.get_ylim() == pytest.approx((0, 1.4))
     assert main(["draw", "benchmark", "-o", str(svg), "--xlim=-0.5:1.5"]) == 0
 
