@@ -15,6 +15,7 @@ COMMAND_MODULES = (
     "stability",
     "pose",
     "study",
+    "serve",
 )
 """Modules under ``bikemass.commands`` whose ``register(subparsers)`` adds sub-commands."""
 

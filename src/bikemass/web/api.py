@@ -1,0 +1,97 @@
+"""The JSON API and the downloads behind the page (Flask routes on the Dash server).
+
+``GET /api/stability?<state>`` returns the document of ``bikemass stability
+--format json`` and ``GET /api/params?<state>`` that of ``bikemass params
+--format json``; ``/download/<file>?<state>`` serves the parameter set (YAML,
+JSON, BicycleParameters), the eigenvalues (CSV) and the bicycle and pose YAML.
+A bad query answers 400 with ``{"error": "<one line>"}``.
+"""
+
+from ..errors import InputError
+from .state import PageState
+
+DOWNLOADS = {
+    "parameters.yaml": ("application/x-yaml", "the benchmark parameter set (YAML)"),
+    "parameters.json": ("application/json", "the benchmark parameter set (JSON)"),
+    "Benchmark.txt": ("text/plain", "the parameter set as a BicycleParameters file"),
+    "eigenvalues.csv": ("text/csv", "eigenvalues against speed (CSV)"),
+    "bicycle.yaml": ("application/x-yaml", "the bicycle file"),
+    "pose.yaml": ("application/x-yaml", "the rider's pose file"),
+}
+"""Download file names -> (MIME type, what the page calls them)."""
+
+
+def stability_document(evaluation):
+    """The ``bikemass stability --format json`` document of an :class:`~.engine.Evaluation`."""
+    from ..output import plain
+    return plain(evaluation.stability.to_dict())
+
+
+def parameters_document(params):
+    """The ``bikemass params --format json`` document of a parameter set."""
+    return params.to_dict()
+
+
+def download(engine, filename, state):
+    """``(bytes, mime type)`` of the download ``filename`` for ``state``; InputError if unknown."""
+    from ..exporters import format_parameters
+
+    if filename not in DOWNLOADS:
+        raise InputError("URL", "download", f"one of {', '.join(DOWNLOADS)}")
+    mime = DOWNLOADS[filename][0]
+    title = f"{state.bike} with rider {state.rider} (bikemass web page)"
+    if filename == "parameters.yaml":
+        text = format_parameters(engine.parameters(state), "yaml")
+    elif filename == "parameters.json":
+        text = format_parameters(engine.parameters(state), "json")
+    elif filename == "Benchmark.txt":
+        text = format_parameters(engine.parameters(state), "bicycleparameters", title)
+    elif filename == "eigenvalues.csv":
+        from ..commands.stability import eig_table
+        text = eig_table(engine.evaluate(state).stability.modes, csv=True)
+    elif filename == "bicycle.yaml":
+        text = _source_text(engine.bicycle(state.bike).source)
+    else:
+        rider = engine.rider(state.rider)
+        if rider is None:
+            raise InputError("URL", "rider", "a rider (this configuration has none)")
+        from ..paths import resolve
+        from ..rider import poses_dir
+        text = _source_text(resolve(rider.pose, poses_dir(), "pose"))
+    return text.encode(), mime
+
+
+def _source_text(path):
+    from pathlib import Path
+    return Path(path).read_text(encoding="utf-8")
+
+
+def register_routes(server, engine):
+    """Add the API and download routes to the Flask ``server``."""
+    from flask import Response, jsonify, request
+
+    def state_or_error():
+        return PageState.from_query(request.args.to_dict())
+
+    def answer(make):
+        try:
+            return make(state_or_error())
+        except InputError as exc:
+            return jsonify({"error": str(exc)}), 400
+
+    @server.route("/api/stability")
+    def api_stability():
+        return answer(lambda s: jsonify(stability_document(engine.evaluate(s))))
+
+    @server.route("/api/params")
+    def api_params():
+        return answer(lambda s: jsonify(parameters_document(engine.parameters(s))))
+
+    @server.route("/download/<filename>")
+    def api_download(filename):
+        def send(state):
+            data, mime = download(engine, filename, state)
+            name = f"{state.bike}-{filename}" if filename != "Benchmark.txt" else f"{state.bike}Benchmark.txt"
+            return Response(data, mimetype=mime,
+                            headers={"Content-Disposition": f'attachment; filename="{name}"'})
+        return answer(send)

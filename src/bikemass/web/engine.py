@@ -1,0 +1,142 @@
+"""What the web page computes, cached: one :class:`Engine` per server.
+
+Loading a bicycle or a rider builds meshes and costs tenths of a second; the
+beam model of a frame costs as much again.  They change only when the bicycle,
+rider or material changes, so they are cached; a typed-over benchmark parameter
+then costs one stability analysis (milliseconds).  Uploaded files live in the
+engine's own temporary folder under a name made from their content.
+"""
+
+import hashlib
+import tempfile
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+
+from ..errors import InputError
+from ..parameters import BenchmarkParameters
+from .state import PageState
+
+UPLOAD_LIMIT = 1_000_000
+"""Largest accepted upload (bytes)."""
+UPLOAD_SUFFIXES = (".yaml", ".yml", ".json", ".txt")
+"""Uploads: bicycle YAML/JSON (keypoints, chart or parameters) or a BicycleParameters text file."""
+UPLOAD_PREFIX = "upload-"
+"""Bicycle names that refer to an uploaded file: ``upload-<digest>``."""
+
+
+@dataclass(frozen=True)
+class Evaluation:
+    """One configuration's results: parameter set, stiffness S (None = rigid) and stability."""
+
+    parameters: BenchmarkParameters
+    stiffness: object
+    stability: object
+
+
+class Engine:
+    """Cached bicycles, riders, parameters and stiffnesses for the page and its JSON API."""
+
+    def __init__(self):
+        self._folder = tempfile.TemporaryDirectory(prefix="bikemass-web-")
+        self._uploads = {}
+        self.bicycle = lru_cache(maxsize=32)(self._bicycle)
+        self.rider = lru_cache(maxsize=32)(self._rider)
+        self.base_parameters = lru_cache(maxsize=64)(self._base_parameters)
+        self.stiffness = lru_cache(maxsize=64)(self._stiffness)
+
+    # -- inputs ---------------------------------------------------------------
+    def add_upload(self, filename, content):
+        """Store an uploaded bicycle file; return its name (``upload-<digest>``) once it loads.
+
+        Raises InputError (one line) for a file that is too large, of another kind,
+        not a bicycle, or that refers to any file but a shipped bicycle.
+        """
+        shown = Path(filename).name or "upload"
+        suffix = Path(shown).suffix.lower()
+        if suffix not in UPLOAD_SUFFIXES:
+            raise InputError(shown, "(file)", f"a bicycle file ending in {', '.join(UPLOAD_SUFFIXES)}")
+        if len(content) > UPLOAD_LIMIT:
+            raise InputError(shown, "(file)", f"at most {UPLOAD_LIMIT // 1000} kB")
+        digest = hashlib.sha256(content).hexdigest()[:16]
+        name = UPLOAD_PREFIX + digest
+        path = Path(self._folder.name) / digest / shown
+        path.parent.mkdir(exist_ok=True)
+        path.write_bytes(content)
+        _check_references(path)
+        self._uploads[name] = path
+        try:
+            self.bicycle(name)
+        except InputError:
+            del self._uploads[name]
+            raise
+        return name
+
+    def upload_label(self, name):
+        """The file name an uploaded bicycle came from."""
+        return self._uploads[name].name
+
+    def source(self, bike):
+        """The argument the loaders take for ``bike``: a shipped name or an uploaded file's path."""
+        if bike.startswith(UPLOAD_PREFIX):
+            if bike not in self._uploads:
+                raise InputError("URL", "bike", "a shipped bicycle or a file uploaded to this server")
+            return str(self._uploads[bike])
+        if "/" in bike or "\\" in bike or bike.startswith("."):
+            raise InputError("URL", "bike", "a shipped bicycle name (paths are not accepted)")
+        return bike
+
+    def _bicycle(self, bike):
+        from .. import catalog
+        return catalog.bicycle(self.source(bike))
+
+    def _rider(self, rider):
+        from .. import catalog
+        if "/" in rider or "\\" in rider or rider.startswith("."):
+            raise InputError("URL", "rider", "a shipped pose name (paths are not accepted)")
+        return catalog.load_rider(rider)
+
+    def _base_parameters(self, bike, rider, combine):
+        from ..bicycle import bicycle_parameters
+        return bicycle_parameters(self.bicycle(bike), self.rider(rider), combine, "mesh")
+
+    def _stiffness(self, bike, material):
+        from .. import catalog
+        return catalog.stiffness(self.source(bike), material)
+
+    def warm(self, states=(PageState(),)):
+        """Compute ``states`` (and so import what they need) ahead of the first request."""
+        for state in states:
+            try:
+                self.evaluate(state)
+            except InputError:
+                pass
+
+    # -- results --------------------------------------------------------------
+    def parameters(self, state: PageState):
+        """The benchmark parameter set of ``state``, typed-over values applied."""
+        base = self.base_parameters(state.bike, state.rider, state.combine)
+        return base.replace(**dict(state.overrides)) if state.overrides else base
+
+    def evaluate(self, state: PageState, speeds=None):
+        """:class:`Evaluation` of ``state`` over ``speeds`` (default grid)."""
+        from ..stability import canonical_matrices, stability, with_frame_stiffness
+
+        params = self.parameters(state)
+        S = self.stiffness(state.bike, state.stiffness)
+        return Evaluation(params, S, stability(with_frame_stiffness(canonical_matrices(params), S), speeds))
+
+
+def _check_references(path):
+    """An uploaded bicycle may build on a shipped bicycle (``base: jamis``), never on a file."""
+    from ..config import load_yaml
+    from ..paths import available, frames_dir
+
+    if path.suffix == ".txt":
+        return
+    node = load_yaml(path)
+    if node.has("base"):
+        base = node["base"].string()
+        if base.replace("_", "-") not in available(frames_dir()):
+            node.fail("the name of a shipped bicycle (an uploaded file cannot refer to other files)",
+                      "base")

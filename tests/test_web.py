@@ -1,0 +1,131 @@
+"""The web page's state, JSON API, downloads and uploads (Flask test client, no browser).
+
+The API must answer exactly what the command line prints, so each check runs the
+command in-process and compares the parsed numbers (tolerance 1e-12 m/s: the
+same code path, so only the JSON round trip may differ).
+"""
+
+import contextlib
+import io
+import json
+
+import numpy as np
+import pytest
+import yaml
+
+pytest.importorskip("dash")
+
+from bikemass.cli import main  # noqa: E402
+from bikemass.errors import InputError  # noqa: E402
+from bikemass.parameters import NAMES  # noqa: E402
+from bikemass.web import create_app  # noqa: E402
+from bikemass.web.state import PageState  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def client():
+    return create_app().server.test_client()
+
+
+def cli_json(*argv):
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        assert main(list(argv)) == 0
+    return json.loads(out.getvalue())
+
+
+def test_state_round_trips_through_the_query():
+    state = PageState(bike="cargo", rider="aero-tuck", stiffness="aluminum", combine="thesis",
+                      overrides=(("c", 0.0812), ("mB", 85.25)))
+    from urllib.parse import parse_qsl
+    assert PageState.from_query(dict(parse_qsl(state.to_query()))) == state
+
+
+@pytest.mark.parametrize("query, key", [
+    ({"stiffness": "rubber"}, "stiffness"), ({"combine": "guess"}, "combine"),
+    ({"c": "nan"}, "c"), ({"lam": "abc"}, "lam"), ({"color": "red"}, "color")])
+def test_bad_query_values_name_their_key(query, key):
+    with pytest.raises(InputError) as err:
+        PageState.from_query(query)
+    assert err.value.key == key and "\n" not in str(err.value)
+
+
+@pytest.mark.parametrize("bike, rider, stiffness", [
+    ("jamis", "relaxed", "steel"), ("benchmark", "none", "infinite"), ("cargo-loaded", "no-hands", "aluminum")])
+def test_api_stability_is_the_command_lines_json(client, bike, rider, stiffness):
+    reply = client.get(f"/api/stability?bike={bike}&rider={rider}&stiffness={stiffness}")
+    assert reply.status_code == 200
+    ours = reply.get_json()
+    cli = cli_json("stability", bike, "--rider", rider, "--stiffness", stiffness, "--format", "json")
+    assert ours.keys() == cli.keys()
+    for key in ("weave_speeds", "capsize_speeds"):
+        np.testing.assert_allclose(ours[key], cli[key], rtol=0, atol=1e-12)
+    assert [(c["mode"], c["direction"]) for c in ours["crossings"]] == \
+           [(c["mode"], c["direction"]) for c in cli["crossings"]]
+    assert ours["weave_speeds"] or ours["capsize_speeds"]
+
+
+def test_api_params_is_the_command_lines_json(client):
+    ours = client.get("/api/params?bike=jamis&rider=relaxed").get_json()
+    cli = cli_json("params", "jamis", "--rider", "relaxed", "--format", "json")
+    assert list(ours) == list(NAMES)
+    np.testing.assert_allclose([ours[k] for k in NAMES], [cli[k] for k in NAMES], rtol=1e-15)
+
+
+def test_a_typed_over_parameter_changes_the_answer_as_a_parameter_file_would(client, tmp_path):
+    """Trail 0.02 m on the benchmark: the API against the command line on the edited parameter file."""
+    params = cli_json("params", "benchmark", "--format", "json")
+    params["c"] = 0.02
+    edited = tmp_path / "edited.yaml"
+    edited.write_text(yaml.safe_dump(params))
+    cli = cli_json("stability", str(edited), "--format", "json")
+    ours = client.get("/api/stability?bike=benchmark&rider=none&c=0.02").get_json()
+    base = client.get("/api/stability?bike=benchmark&rider=none").get_json()
+    np.testing.assert_allclose(ours["weave_speeds"], cli["weave_speeds"], atol=1e-12)
+    assert ours["weave_speeds"] != base["weave_speeds"]
+
+
+@pytest.mark.parametrize("query", ["bike=nonesuch", "bike=../frames/jamis", "rider=/etc/passwd",
+                                   "stiffness=rubber", "w=inf"])
+def test_bad_queries_answer_400_with_one_line(client, query):
+    reply = client.get(f"/api/stability?{query}")
+    assert reply.status_code == 400
+    message = reply.get_json()["error"]
+    assert message and "\n" not in message and "Traceback" not in message
+
+
+def test_downloads_read_back(client, tmp_path):
+    query = "bike=jamis&rider=relaxed&stiffness=steel"
+    parameters = yaml.safe_load(client.get(f"/download/parameters.yaml?{query}").data)
+    api = client.get(f"/api/params?{query}").get_json()
+    assert parameters == pytest.approx(api, rel=1e-15)
+    bp = client.get(f"/download/Benchmark.txt?{query}").data.decode()
+    values = dict(line.split(" = ") for line in bp.splitlines() if not line.startswith("#"))
+    assert {k: float(v) for k, v in values.items()} == pytest.approx(api, rel=1e-15)
+    csv = client.get(f"/download/eigenvalues.csv?{query}").data.decode().splitlines()
+    assert csv[0].startswith("speed,") and len(csv) == 1 + 601
+    bicycle = tmp_path / "bicycle.yaml"
+    bicycle.write_bytes(client.get(f"/download/bicycle.yaml?{query}").data)
+    assert cli_json("params", str(bicycle), "--format", "json") == pytest.approx(
+        cli_json("params", "jamis", "--format", "json"), rel=1e-12)
+    assert b"segments" in client.get(f"/download/pose.yaml?{query}").data
+    assert client.get(f"/download/secrets.txt?{query}").status_code == 400
+
+
+def test_uploads_load_or_give_one_line(tmp_path):
+    engine = create_app().engine
+    params = cli_json("params", "benchmark", "--format", "json")
+    name = engine.add_upload("mine.yaml", yaml.safe_dump({**params, "c": 0.05}).encode())
+    assert engine.parameters(PageState(bike=name, rider="none")).c == 0.05
+    derived = engine.add_upload("derived.yaml", b"base: jamis\nname: my jamis\n")
+    assert engine.parameters(PageState(bike=derived, rider="none")).w == pytest.approx(
+        engine.parameters(PageState(bike="jamis", rider="none")).w)
+    for filename, content, fragment in [
+            ("escape.yaml", b"base: /etc/passwd\n", "shipped bicycle"),
+            ("up.yaml", b"base: ../../frames/jamis.yaml\n", "shipped bicycle"),
+            ("big.yaml", b"#" * 2_000_000, "kB"),
+            ("mine.exe", b"MZ", "ending in"),
+            ("broken.yaml", b"w: [1, 2\n", "YAML")]:
+        with pytest.raises(InputError) as err:
+            engine.add_upload(filename, content)
+        assert fragment in str(err.value) and "\n" not in str(err.value)

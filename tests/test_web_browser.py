@@ -1,0 +1,129 @@
+"""The web page in a real browser: headless Chromium (Debian's ``chromium`` and
+``chromium-driver``) driven through Selenium.
+
+Without a browser these tests skip and say why; with ``BIKEMASS_REQUIRE_BROWSER=1``
+(set by ``.ci/run``) that skip is a failure instead.
+"""
+
+import contextlib
+import io
+import json
+import os
+import shutil
+import threading
+
+import pytest
+
+pytest.importorskip("dash")
+
+CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
+CHROMEDRIVER = shutil.which("chromedriver")
+REQUIRED = os.environ.get("BIKEMASS_REQUIRE_BROWSER") == "1"
+
+
+def _missing():
+    try:
+        import selenium  # noqa: F401
+    except ImportError:
+        return "selenium is not installed (pip install 'bikemass[test]')"
+    if not (CHROMIUM and CHROMEDRIVER):
+        return "no chromium/chromedriver on PATH (Debian: apt-get install chromium chromium-driver)"
+    return None
+
+
+@pytest.fixture(scope="module")
+def server():
+    from werkzeug.serving import make_server
+
+    from bikemass.web import create_app
+    httpd = make_server("127.0.0.1", 0, create_app().server, threaded=True)
+    thread = threading.Thread(target=httpd.serve_forever, daemon=True)
+    thread.start()
+    yield f"http://127.0.0.1:{httpd.server_port}"
+    httpd.shutdown()
+
+
+@pytest.fixture(scope="module")
+def browser():
+    reason = _missing()
+    if reason:
+        if REQUIRED:
+            pytest.fail(f"BIKEMASS_REQUIRE_BROWSER=1 but {reason}")
+        pytest.skip(reason)
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+
+    options = webdriver.ChromeOptions()
+    options.binary_location = CHROMIUM
+    for flag in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
+                 "--window-size=1400,1000"):
+        options.add_argument(flag)
+    driver = webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
+    yield driver
+    driver.quit()
+
+
+def _cli_weave(*argv):
+    from bikemass.cli import main
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        main(["stability", *argv, "--format", "json"])
+    return json.loads(out.getvalue())["weave_speeds"][0]
+
+
+def _number_in(browser, element_id, timeout=60, differs_from=None):
+    """The number that the element's text starts with, once there (and changed, if asked)."""
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.support.ui import WebDriverWait
+
+    def ready(driver):
+        text = driver.find_element(By.ID, element_id).text.strip()
+        try:
+            value = float(text.split()[0])
+        except (IndexError, ValueError):
+            return False
+        return value if differs_from is None or abs(value - differs_from) > 1e-3 else False
+    return WebDriverWait(browser, timeout, poll_frequency=0.2).until(
+        ready, message=f"#{element_id} shows no (new) number within {timeout} s")
+
+
+def test_a_url_opens_its_configuration_and_a_change_updates_the_speeds(server, browser, tmp_path):
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.common.keys import Keys
+
+    browser.get(f"{server}/?bike=jamis&rider=relaxed&stiffness=steel")
+    shown = _number_in(browser, "weave-speed")
+    assert shown == pytest.approx(_cli_weave("jamis", "--rider", "relaxed", "--stiffness", "steel"), abs=1e-3)
+    text = browser.find_element(By.ID, "weave-speed").text
+    assert text.split()[1] == "m/s" and len(text.split()[0].split(".")[1]) >= 3
+
+    trail = browser.find_element(By.XPATH, """//input[@id='{"name":"c","type":"param"}']""")
+    trail.click()
+    trail.send_keys("0.09", Keys.ENTER)
+    changed = _number_in(browser, "weave-speed", differs_from=shown)
+    assert "c=0.09" in browser.current_url
+    import urllib.request
+    query = browser.current_url.split("?", 1)[1]
+    with urllib.request.urlopen(f"{server}/api/stability?{query}") as reply:
+        api = json.load(reply)
+    assert changed == pytest.approx(api["weave_speeds"][0], abs=1e-3)
+    capsize = browser.find_element(By.ID, "capsize-speed").text
+    if api["capsize_speeds"]:
+        assert float(capsize.split()[0]) == pytest.approx(api["capsize_speeds"][0], abs=1e-3)
+    else:
+        assert capsize.startswith("none")
+    screenshot = tmp_path / "page.png"
+    assert browser.save_screenshot(str(screenshot))
+    from PIL import Image
+    with Image.open(screenshot) as image:
+        assert image.size[0] >= 1000 and len(image.getcolors(1 << 20) or []) > 50
+
+
+def test_a_bad_url_shows_the_one_line_error(server, browser):
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.support.ui import WebDriverWait
+
+    browser.get(f"{server}/?bike=jamis&rider=relaxed&stiffness=rubber")
+    WebDriverWait(browser, 60).until(lambda d: d.find_element(By.ID, "error").text.strip())
+    message = browser.find_element(By.ID, "error").text
+    assert "stiffness" in message and "steel" in message
