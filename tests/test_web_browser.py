@@ -33,10 +33,14 @@ def _missing():
 
 @pytest.fixture(scope="module")
 def server():
-    from werkzeug.serving import make_server
+    from werkzeug.serving import WSGIRequestHandler, make_server
 
     from bikemass.web import create_app
-    httpd = make_server("127.0.0.1", 0, create_app().server, threaded=True)
+
+    class Quiet(WSGIRequestHandler):
+        def log_request(self, *args):
+            pass
+    httpd = make_server("127.0.0.1", 0, create_app().server, threaded=True, request_handler=Quiet)
     thread = threading.Thread(target=httpd.serve_forever, daemon=True)
     thread.start()
     yield f"http://127.0.0.1:{httpd.server_port}"
