@@ -28,7 +28,7 @@ def frames_dir() -> Path:
 def resolve(name, folder: Path, what: str) -> Path:
     """Path for ``name``: an existing file, else ``folder/<name>.yaml`` (``-`` and ``_`` alike)."""
     p = Path(name)
-    if p.suffix in (".yaml", ".yml", ".json") or p.is_file():
+    if p.suffix in (".yaml", ".yml", ".json", ".txt") or p.is_file():
         if not p.is_file():
             raise InputError(p, "(file)", f"an existing {what} file")
         return p

@@ -1,4 +1,7 @@
-"""Reading a bicycle: ``frames/<name>.yaml``, any bicycle YAML file, or a benchmark parameter file.
+"""Reading a bicycle: ``frames/<name>.yaml``, any bicycle YAML file, a benchmark parameter file
+(YAML/JSON with the 26 names, or BicycleParameters' ``name = value+/-std`` text), or a measured
+bicycle: a YAML file naming such a parameter file (``parameters:``) next to ``contacts:`` and
+``stiffness:``, so that riders can be posed on it.
 
 The file format is described in docs/bicycles.md.  Every problem is reported as
 one :class:`~bikemass.errors.InputError` naming the file and the key.
@@ -13,6 +16,7 @@ from ..config import Node, load_yaml
 from ..inertia import MassProperties
 from ..materials import load_materials, read_materials
 from ..output import plain
+from ..parameter_text import load_parameter_text, looks_like_parameter_text
 from ..parameters import from_node, is_parameter_file
 from ..parts import Part
 from ..paths import frames_dir, resolve
@@ -31,6 +35,10 @@ TOP_KEYS = ("name", "base", "source", "description", "geometry", "keypoints", "m
             "structure", "components", "loads", "wheels", "stiffness", "contacts", "materials")
 
 
+MEASURED_KEYS = ("name", "parameters", "contacts", "stiffness", "source", "description")
+"""Keys of a measured-bicycle file (a parameter file plus what a parameter set cannot hold)."""
+
+
 def load_bicycle(name_or_path, size=None):
     """:class:`Bicycle` for a shipped name (``frames/``), a bicycle YAML file or a parameter file.
 
@@ -38,6 +46,8 @@ def load_bicycle(name_or_path, size=None):
     """
     name, at_size = split_size(name_or_path)
     path = resolve(name, frames_dir(), "bicycle")
+    if _is_parameter_text(path):
+        return bicycle_from_parameters(load_parameter_text(path).parameters, path.stem, str(path))
     return _read_document(load_yaml(path), path.stem, str(path), size or at_size)
 
 
@@ -55,6 +65,8 @@ def _read_document(node, default_name, source, size):
     if is_parameter_file(node):
         select_size(node, size)
         return bicycle_from_parameters(from_node(node), node.get("name", default_name).string(), source)
+    if node.has("parameters"):
+        return _measured_bicycle(node, Path(source))
     return _read_any(_with_base(node), source, size)
 
 
@@ -76,6 +88,29 @@ def _read_any(node, source, size=None):
         node.fail("either chart: (a geometry chart) or geometry: with keypoints:, not both", "geometry")
     mapping, chart = expand_chart(node)
     return replace(read_bicycle(mapping, source), chart=chart, size=size)
+
+
+def _is_parameter_text(path):
+    if path.suffix.lower() == ".txt":
+        return True
+    try:
+        return looks_like_parameter_text(path.read_text())
+    except (OSError, UnicodeDecodeError):
+        return False                      # load_yaml names the problem
+
+
+def _measured_bicycle(node, path):
+    """A parameter file (``parameters:``, relative to this file) with contacts and published stiffness."""
+    node.check_keys(required=("parameters",), optional=MEASURED_KEYS)
+    target = Path(node["parameters"].string())
+    target = target if target.is_absolute() else path.parent / target
+    if not target.is_file():
+        node.fail(f"an existing parameter file, got {str(target)!r}", "parameters")
+    inner = load_bicycle(target)
+    stiffness = _read_stiffness(node["stiffness"], load_materials()) if node.has("stiffness") else {}
+    contacts = read_contacts(node["contacts"], {}) if node.has("contacts") else None
+    name = node["name"].string() if node.has("name") else path.stem
+    return bicycle_from_parameters(inner.published, name, str(path), stiffness, contacts)
 
 
 def _base_path(name, folder):
@@ -244,8 +279,9 @@ def _read_stiffness(node, materials):
     return table
 
 
-def bicycle_from_parameters(params, name, source):
-    """A :class:`Bicycle` of four lumped bodies holding a benchmark parameter set."""
+def bicycle_from_parameters(params, name, source, stiffness=None, contacts=None):
+    """A :class:`Bicycle` of four lumped bodies holding a benchmark parameter set
+    (optionally published ``stiffness`` by material and rider ``contacts``)."""
     geometry = Geometry(params.w, params.c, np.pi / 2 - params.lam, params.rR, params.rF, params.g)
     bodies = (
         ("rear_wheel", params.mR, geometry.rear_axle, params.inertia("R")),
@@ -255,4 +291,4 @@ def bicycle_from_parameters(params, name, source):
     )
     parts = tuple(Part(body, Lumped(MassProperties(mass, np.zeros(3), inertia)), mass, Placement.at(at), body)
                   for body, mass, at, inertia in bodies)
-    return Bicycle(name, source, geometry, {}, (), parts, None, {}, params)
+    return Bicycle(name, source, geometry, {}, (), parts, None, stiffness or {}, params, contacts)

@@ -1,0 +1,255 @@
+"""BicycleParameters' parameter text files, read as that package ships them.
+
+A file ``<Name>Benchmark.txt`` (BicycleParameters' ``bicycles/<Name>/Parameters/``)
+holds one ``name = value`` line per parameter; a value may carry a standard
+deviation (``0.08+/-0.01`` or ``0.08 ± 0.01``), several comma-separated values
+are averaged (their standard deviations combined as for a mean of independent
+measurements), ``#`` starts a comment.  Besides the 26 Meijaard names a file may hold:
+
+* a front frame split into handlebar ``G`` and fork ``S`` (``mG xG zG IGxx IGyy IGzz
+  IGxz`` and the same with ``S``): combined into ``H`` (parallel-axis theorem); where
+  the file also gives ``H``, the given ``H`` is used (as BicycleParameters does) and
+  checked against the combination;
+* ``IRzz``/``IFzz`` (checked equal to ``IRxx``/``IFxx``: the model's wheels are
+  axisymmetric) and lateral positions ``yB yH yG yS`` (checked zero: the model is
+  laterally symmetric);
+* anything else (a flywheel ``D``, ...), which the Whipple model has no place for:
+  reported and not used.
+
+Every such decision is kept in :attr:`MeasuredParameters.notes`; a check that fails
+is also issued as a :class:`ParameterFileWarning`.  Nominal values build the
+:class:`~bikemass.parameters.BenchmarkParameters`; the standard deviations are kept
+(:attr:`MeasuredParameters.std`, with ``H``'s propagated linearly from ``G`` and
+``S`` when combined) for uncertainty propagation.
+"""
+
+import re
+import warnings
+from dataclasses import dataclass
+from pathlib import Path
+from types import MappingProxyType
+
+import numpy as np
+
+from .config import Node
+from .errors import InputError
+from .inertia import MassProperties, combine
+from .parameters import NAMES, from_node
+
+BODY_KEYS = ("m", "x", "z", "Ixx", "Iyy", "Izz", "Ixz")
+"""A rigid body's seven planar mass properties: ``m{P} x{P} z{P} I{P}xx ...`` for body letter ``P``."""
+SPLIT_BODIES = {"G": "handlebar", "S": "fork"}
+"""The front frame's parts when BicycleParameters measured them apart."""
+AXISYMMETRIC = {"IRzz": "IRxx", "IFzz": "IFxx"}
+LATERAL = ("yB", "yH", "yG", "yS")
+CHECK_SIGMAS = 3.0
+"""A check passes when values differ by at most this many (combined) standard deviations
+plus what the printed digits can hide."""
+
+_NAME = re.compile(r"[A-Za-z_]\w*$")
+_VALUE = re.compile(r"^\s*([-+]?[\d.]+(?:[eE][-+]?\d+)?)\s*(?:(?:\+/-|±)\s*([\d.]+(?:[eE][-+]?\d+)?))?\s*$")
+
+
+class ParameterFileWarning(UserWarning):
+    """A BicycleParameters file is read, but something in it does not add up."""
+
+
+def _key(part, k):
+    return f"{k}{part}" if k in "mxz" else f"I{part}{k[1:]}"
+
+
+def body_names(part):
+    """The seven parameter names of body letter ``part`` (``mH xH zH IHxx IHyy IHzz IHxz``)."""
+    return tuple(_key(part, k) for k in BODY_KEYS)
+
+
+@dataclass(frozen=True)
+class ParameterText:
+    """Everything in one parameter text file: ``nominal[name]`` and ``std[name]``
+    (SI, radians; std 0 where the file gives none), ``resolution[name]`` (half a unit in
+    the last printed digit), ``lines[name]`` (1-based line number)."""
+
+    source: str
+    nominal: MappingProxyType
+    std: MappingProxyType
+    resolution: MappingProxyType
+    lines: MappingProxyType
+
+    def __repr__(self):
+        return f"ParameterText({self.source!r}, {len(self.nominal)} names)"
+
+
+def _resolution(text):
+    """Half a unit in the last printed digit of a number written as ``text``."""
+    mantissa, _, exponent = text.lower().partition("e")
+    decimals = len(mantissa.split(".")[1]) if "." in mantissa else 0
+    return 0.5 * 10.0 ** (int(exponent or 0) - decimals)
+
+
+def _parse_value(text, source, where):
+    """(nominal, std, resolution) of one right-hand side; several values are averaged."""
+    values = []
+    for item in text.split(","):
+        m = _VALUE.match(item)
+        if not m:
+            raise InputError(source, where, f"a number or number+/-std (comma-separated to average), "
+                                            f"got {text.strip()!r}")
+        nominal, std = float(m.group(1)), float(m.group(2) or 0.0)
+        if not (np.isfinite(nominal) and np.isfinite(std)):
+            raise InputError(source, where, f"finite numbers, got {text.strip()!r}")
+        values.append((nominal, std, _resolution(m.group(1))))
+    n = len(values)
+    return (sum(v[0] for v in values) / n, float(np.sqrt(sum(v[1] ** 2 for v in values))) / n,
+            max(v[2] for v in values))
+
+
+def parse_parameter_text(text, source="(text)"):
+    """:class:`ParameterText` of the text of a parameter file; :class:`InputError` on a bad line."""
+    nominal, std, lines, res = {}, {}, {}, {}
+    for number, raw in enumerate(text.splitlines(), start=1):
+        line = raw.split("#", 1)[0].strip()
+        if not line:
+            continue
+        where = f"line {number}"
+        name, eq, value = line.partition("=")
+        name = name.strip()
+        if not eq or not _NAME.match(name):
+            raise InputError(source, where, f"'name = value' or 'name = value+/-std', got {raw.strip()!r}")
+        if name in nominal:
+            raise InputError(source, where, f"{name} given once (also on line {lines[name]})")
+        nominal[name], std[name], res[name] = _parse_value(value, source, f"{where} ({name})")
+        lines[name] = number
+    if not nominal:
+        raise InputError(source, "(file)", "'name = value' lines (a BicycleParameters parameter file)")
+    return ParameterText(str(source), *(MappingProxyType(d) for d in (nominal, std, res, lines)))
+
+
+def read_parameter_text(path):
+    """:class:`ParameterText` of the file at ``path``."""
+    path = Path(path)
+    try:
+        text = path.read_text()
+    except (OSError, UnicodeDecodeError) as exc:
+        raise InputError(path, "(file)", f"a readable text file ({getattr(exc, 'strerror', None) or exc})") from None
+    return parse_parameter_text(text, str(path))
+
+
+def looks_like_parameter_text(text):
+    """True if every non-comment line of ``text`` is ``name = ...`` (a BicycleParameters file)."""
+    lines = [ln.split("#", 1)[0].strip() for ln in text.splitlines()]
+    lines = [ln for ln in lines if ln]
+    return bool(lines) and all(_NAME.match(ln.partition("=")[0].strip()) and "=" in ln for ln in lines)
+
+
+@dataclass(frozen=True)
+class MeasuredParameters:
+    """A measured bicycle: nominal :class:`~bikemass.parameters.BenchmarkParameters`,
+    ``std[name]`` for the 26 names (SI), and ``notes``: how every key beyond the 26 was used."""
+
+    parameters: object
+    std: MappingProxyType
+    notes: tuple
+    source: str
+
+    def __repr__(self):
+        return f"MeasuredParameters({self.source!r}, {len(self.notes)} notes)"
+
+
+def _body(values, part):
+    m, x, z, xx, yy, zz, xz = (values[n] for n in body_names(part))
+    return MassProperties(m, [x, 0.0, z], [[xx, 0.0, xz], [0.0, yy, 0.0], [xz, 0.0, zz]])
+
+
+def combined_front_frame(values):
+    """The seven ``H`` values (dict) of handlebar ``G`` + fork ``S`` in ``values`` (parallel-axis theorem)."""
+    H = combine([_body(values, "G"), _body(values, "S")])
+    return dict(zip(body_names("H"), (H.mass, H.com[0], H.com[2], H.inertia[0, 0], H.inertia[1, 1],
+                                      H.inertia[2, 2], H.inertia[0, 2])))
+
+
+def _linear_spread(f, values, spreads, inputs):
+    """Linear propagation of ``spreads`` of ``inputs`` through ``f`` (dict -> dict):
+    ``(root-sum-square, sum of absolute contributions)`` per output."""
+    rss, total = {}, {}
+    for name in inputs:
+        h = 1e-7 * max(abs(values[name]), 1e-3)
+        up, down = f({**values, name: values[name] + h}), f({**values, name: values[name] - h})
+        for out in up:
+            d = (up[out] - down[out]) / (2 * h) * spreads[name]
+            rss[out] = rss.get(out, 0.0) + d * d
+            total[out] = total.get(out, 0.0) + abs(d)
+    return {k: float(np.sqrt(v)) for k, v in rss.items()}, total
+
+
+def _front_frame(pt, values, std, notes):
+    """Combine or check the split front frame in place; returns nothing."""
+    split = [n for part in SPLIT_BODIES for n in body_names(part)]
+    present = [n for n in split if n in pt.nominal]
+    if not present:
+        return
+    missing = [n for n in split if n not in pt.nominal]
+    if missing:
+        raise InputError(pt.source, missing[0], "every handlebar G and fork S name when either is given "
+                                                f"({', '.join(split)})")
+    inputs = {n: pt.nominal[n] for n in split}
+    combined = combined_front_frame(inputs)
+    spread, rounding = _linear_spread(combined_front_frame, inputs, pt.std, split)
+    _, digits = _linear_spread(combined_front_frame, inputs, pt.resolution, split)
+    given = [n for n in body_names("H") if n in pt.nominal]
+    if len(given) < 7:
+        for n in body_names("H"):
+            values[n], std[n] = combined[n], spread[n]
+        notes.append("front frame H = handlebar G + fork S (parallel-axis theorem)"
+                     + (f"; the file's {', '.join(given)} not used: H is incomplete" if given else ""))
+        return
+    off = []
+    for n in given:
+        tol = CHECK_SIGMAS * np.hypot(pt.std[n], spread[n]) + pt.resolution[n] + digits[n]
+        if abs(pt.nominal[n] - combined[n]) > tol:
+            off.append(f"{n} {pt.nominal[n]:.6g} vs {combined[n]:.6g}")
+    if off:
+        message = (f"{pt.source}: the front frame H given differs from handlebar G + fork S combined "
+                   f"({'; '.join(off)}); the given H is used, as BicycleParameters does")
+        warnings.warn(message, ParameterFileWarning, stacklevel=3)
+        notes.append("front frame H given, checked against handlebar G + fork S: differs (" + "; ".join(off) + ")")
+    else:
+        notes.append("front frame H given, checked against handlebar G + fork S: agrees "
+                     f"(within {CHECK_SIGMAS:g} std and the printed digits)")
+
+
+def _checked_extra(pt, name, expected, what, notes):
+    tol = CHECK_SIGMAS * np.hypot(pt.std[name], pt.std.get(what, 0.0)) + pt.resolution[name]
+    if abs(pt.nominal[name] - expected) > tol:
+        message = (f"{pt.source}: {name} = {pt.nominal[name]:.6g} but the model needs {expected:.6g} "
+                   f"({'= ' + what if what else 'lateral symmetry'}); not used")
+        warnings.warn(message, ParameterFileWarning, stacklevel=4)
+        notes.append(f"{name} differs from {expected:.6g}: not used")
+    else:
+        notes.append(f"{name} checked: equals {what or '0'} as the model assumes")
+
+
+def measured_parameters(pt):
+    """:class:`MeasuredParameters` of a :class:`ParameterText` (see the module docstring)."""
+    values = {n: pt.nominal[n] for n in NAMES if n in pt.nominal}
+    std = {n: pt.std[n] for n in NAMES if n in pt.nominal}
+    notes = []
+    _front_frame(pt, values, std, notes)
+    for name, partner in AXISYMMETRIC.items():
+        if name in pt.nominal and partner in pt.nominal:
+            _checked_extra(pt, name, pt.nominal[partner], partner, notes)
+    for name in LATERAL:
+        if name in pt.nominal:
+            _checked_extra(pt, name, 0.0, "", notes)
+    known = set(NAMES) | set(AXISYMMETRIC) | set(LATERAL) | {n for p in SPLIT_BODIES for n in body_names(p)}
+    unknown = [n for n in pt.nominal if n not in known]
+    if unknown:
+        message = f"{pt.source}: not used by the Whipple model: {', '.join(unknown)}"
+        warnings.warn(message, ParameterFileWarning, stacklevel=3)
+        notes.append(f"not used (no place in the Whipple model): {', '.join(unknown)}")
+    params = from_node(Node(values, pt.source, ""))
+    return MeasuredParameters(params, MappingProxyType({n: std[n] for n in NAMES}), tuple(notes), pt.source)
+
+
+def load_parameter_text(path):
+    """:class:`MeasuredParameters` of the BicycleParameters file at ``path``."""
+    return measured_parameters(read_parameter_text(path))
