@@ -217,18 +217,19 @@ def test_zero_eigenvalues_at_standstill_do_not_break_tracking():
     assert sorted(np.abs(modes.eigenvalues[0])) [:2] == [0.0, 0.0]
     assert np.all(np.isfinite(modes.eigenvectors))
     st = stability(singular, speed_grid(0, 10, 0.05))
-    assert all(np.isfinite(s) for label in st.crossings for s, _ in st.crossings[label])
+    assert all(np.isfinite(c.speed) for c in st.crossings)
 
 
 def test_several_crossings_are_all_reported():
-    # loaded Cargo, no rider: weave becomes stable near 7.75 m/s, one weave root unstable near 22.1
+    # loaded Cargo, no rider: weave becomes stable near 7.75 m/s; the pair splits and one of
+    # its real roots (tracked as weave 1) turns unstable near 22.1 m/s: a capsize-like crossing
     st = stability(canonical_matrices(thesis_set("Cargo load", "No Rider")))
-    dirs = {label: [d for _, d in st.crossings[label]] for label in st.crossings}
+    dirs = {label: [c.direction for c in st.mode_crossings(label)] for label in st.modes.labels}
     assert dirs["weave 1"] == ["stabilising", "destabilising"]
     assert dirs["weave 2"] == ["stabilising"]
-    w = st.weave_speeds
-    assert len(w) == 2 and 7.70 < w[0] < 7.75 and 22.05 < w[1] < 22.15
-    assert st.ranges["strict"]["exact"] == [[w[0], w[1]]]
+    w, c = st.weave_speeds, st.capsize_speeds
+    assert len(w) == 1 and 7.70 < w[0] < 7.75 and len(c) == 1 and 22.05 < c[0] < 22.15
+    assert st.ranges["strict"]["exact"] == [[w[0], c[0]]]
 
 
 def test_exact_ranges_lie_between_the_grid_points():

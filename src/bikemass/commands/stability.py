@@ -179,29 +179,51 @@ def run_compare(args):
     return 0
 
 
-def _speeds(speeds):
-    return ", ".join(f"{v:.4f}" for v in speeds) or "-"
+def _speeds(speeds, digits=4):
+    return ", ".join(f"{v:.{digits}f}" for v in speeds) or "-"
 
 
 def _ranges(rs, fmt):
     return ", ".join(f"{fmt.format(a)}..{fmt.format(b)}" for a, b in rs) or "-"
 
 
+KIND_WORDS = {"oscillatory": "an oscillatory pair (weave-like)", "real": "a real root (capsize-like)"}
+
+
+def _crossing_rows(result):
+    """One row per crossing speed: a pair's two members on one row, named by what the root is."""
+    import numpy as np
+
+    names = result.modes.names()
+    rows = []
+    for c in result.crossings:
+        if rows and abs(rows[-1][0] - c.speed) < 1e-8 and rows[-1][2] == c.direction:
+            rows[-1][3] += f", {c.mode}"
+            continue
+        k = min(np.searchsorted(result.modes.speeds, c.speed), len(names) - 1)
+        name = names[k, result.modes.labels.index(c.mode)]
+        rows.append([c.speed, KIND_WORDS[c.kind], c.direction, c.mode, name])
+    return rows
+
+
 def stability_text(result, title):
-    """Human-readable report: critical speeds, then ranges overall and per mode."""
+    """Human-readable report: critical speeds in words, every crossing, then ranges overall and per mode."""
     from ..output import table
 
     v = result.modes.speeds
     lines = [title, f"speeds {v[0]:g}..{v[-1]:g} m/s ({len(v)} points); marginal: |lambda| < "
-             f"{result.marginal:g} rad/s", ""]
-    for label, crossings in result.crossings.items():
-        text = ", ".join(f"{s:.12f} ({d})" for s, d in crossings) or "-"
-        lines.append(f"{label + ' Re=0 at (m/s):':26s} {text}")
+             f"{result.marginal:g} rad/s", "",
+             f"weave speeds (an oscillatory pair crosses Re = 0):  {_speeds(result.weave_speeds, 12)}",
+             f"capsize speeds (a real root crosses Re = 0):        {_speeds(result.capsize_speeds, 12)}", ""]
+    rows = [[f"{s:.12f}", kind, d, modes, name] for s, kind, d, modes, name in _crossing_rows(result)]
+    lines += ["crossings of Re = 0",
+              table(["speed (m/s)", "the root that crosses", "direction", "tracked mode", "named"], rows).rstrip("\n")
+              if rows else "  none", ""]
     rows = [["all modes"] + [_ranges(result.ranges[c][k], f) for c in ("strict", "marginal")
                              for k, f in (("exact", "{:.6f}"), ("grid", "{:.2f}"))]]
     for label, r in result.mode_ranges.items():
         rows.append([label] + [_ranges(r[c][k], f) for c in ("strict", "marginal")
                                for k, f in (("exact", "{:.6f}"), ("grid", "{:.2f}"))])
-    lines += ["", "stable speed ranges (m/s)",
+    lines += ["stable speed ranges (m/s; per tracked mode)",
               table(["", "strict exact", "strict grid", "marginal exact", "marginal grid"], rows)]
     return "\n".join(lines)

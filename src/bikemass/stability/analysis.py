@@ -4,7 +4,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .critical import mode_crossings
+from .critical import SpeedEigenvalues, all_crossings, speeds_of_kind
 from .criteria import MARGINAL_THRESHOLD
 from .labels import LABELS
 from .modes import Modes, follow_modes
@@ -20,19 +20,12 @@ def speed_grid(start=DEFAULT_SPEEDS[0], stop=DEFAULT_SPEEDS[1], step=DEFAULT_SPE
     return np.round(start + step * np.arange(n), 12)
 
 
-def _unique(speeds, tol=1e-8):
-    out = []
-    for s in sorted(speeds):
-        if not out or s - out[-1] > tol:
-            out.append(s)
-    return out
-
-
 @dataclass(frozen=True)
 class Stability:
     """Critical speeds (m/s) and stable ranges of one bicycle.
 
-    ``crossings[label]`` = ``[(speed, "stabilising" | "destabilising"), ...]``;
+    ``crossings``: every :class:`~bikemass.stability.critical.Crossing` of ``Re = 0`` by
+    speed (``speed``, ``kind`` oscillatory|real, ``direction``, tracked ``mode`` label);
     ``ranges[criterion]`` and ``mode_ranges[label][criterion]`` =
     ``{"exact": [[start, stop], ...], "grid": [...]}`` with criterion ``"strict"``
     or ``"marginal"`` (modulus below ``marginal`` rad/s also counts).
@@ -40,21 +33,23 @@ class Stability:
 
     modes: Modes
     marginal: float
-    crossings: dict
+    crossings: tuple
     ranges: dict
     mode_ranges: dict
 
-    def critical_speeds(self, *labels):
-        """Sorted speeds (m/s) where any of ``labels`` crosses Re = 0 (pair members counted once)."""
-        return _unique(s for label in labels for s, _ in self.crossings[label])
-
     @property
     def weave_speeds(self):
-        return self.critical_speeds("weave 1", "weave 2")
+        """Sorted speeds (m/s) where an oscillatory pair crosses ``Re = 0``, whatever its label."""
+        return speeds_of_kind(self.crossings, "oscillatory")
 
     @property
     def capsize_speeds(self):
-        return self.critical_speeds("capsize")
+        """Sorted speeds (m/s) where a real root crosses ``Re = 0`` (also a branch of a split weave pair)."""
+        return speeds_of_kind(self.crossings, "real")
+
+    def mode_crossings(self, label):
+        """The crossings of the tracked mode ``label``."""
+        return [c for c in self.crossings if c.mode == label]
 
     @property
     def weave_ranges(self):
@@ -67,9 +62,7 @@ class Stability:
         return {
             "weave_speeds": self.weave_speeds,
             "capsize_speeds": self.capsize_speeds,
-            "caster_speeds": self.critical_speeds("caster"),
-            "crossings": [{"mode": label, "speed": s, "direction": d}
-                          for label in LABELS for s, d in self.crossings[label]],
+            "crossings": [c.to_dict() for c in self.crossings],
             "marginal_threshold": self.marginal,
             "ranges": self.ranges,
             "modes": {"weave": self.weave_ranges, **self.mode_ranges},
@@ -79,10 +72,10 @@ class Stability:
 def stability(matrices, speeds=None, marginal=MARGINAL_THRESHOLD):
     """:class:`Stability` of ``matrices`` over ``speeds`` (default: the 0..30 m/s, 0.05 grid)."""
     modes = follow_modes(matrices, speed_grid() if speeds is None else speeds)
+    at = SpeedEigenvalues(matrices)
     criteria = {"strict": None, "marginal": marginal}
     return Stability(
-        modes=modes, marginal=marginal,
-        crossings={label: mode_crossings(matrices, modes, label) for label in LABELS},
-        ranges={name: overall_ranges(matrices, modes, m) for name, m in criteria.items()},
-        mode_ranges={label: {name: mode_ranges(matrices, modes, label, m)
+        modes=modes, marginal=marginal, crossings=tuple(all_crossings(at, modes)),
+        ranges={name: overall_ranges(at, modes, m) for name, m in criteria.items()},
+        mode_ranges={label: {name: mode_ranges(at, modes, label, m)
                              for name, m in criteria.items()} for label in LABELS})

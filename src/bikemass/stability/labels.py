@@ -19,6 +19,8 @@ root is the less damped one).
 
 import numpy as np
 
+from .tracking import partners
+
 LABELS = ("weave 1", "weave 2", "capsize", "caster")
 SPLIT_RANK = LABELS
 """After a split the earlier label takes the root with the larger real part."""
@@ -70,3 +72,37 @@ def settle_splits(values, labels):
                     values[k:, [i, j]] = values[k:, [j, i]]
                     order[k:, [i, j]] = order[k:, [j, i]]
     return order
+
+
+WEAVE = ("weave 1", "weave 2")
+"""The two tracked labels whose roots make up the weave oscillation."""
+
+
+def mode_names(values, labels):
+    """What each root is at every speed, for people to read: array (n, 4) of str.
+
+    ``"weave"`` for both members of the weave pair while it is a complex pair; after
+    it splits (or before the two roots merge at low speed) ``"weave, real (upper)"``
+    and ``"weave, real (lower)"`` by real part; ``"capsize"`` and ``"caster"`` as
+    tracked; any other complex pair ``"<label> + <label> oscillation"``.  ``values``
+    (n, 4) are tracked roots, column ``c`` carrying ``labels[c]``.
+    """
+    values = np.asarray(values)
+    partner = partners(values)
+    names = np.empty(values.shape, dtype=object)
+    weave = [labels.index(w) for w in WEAVE]
+    for c, label in enumerate(labels):
+        p = partner[:, c]
+        names[:, c] = label
+        paired = p != c
+        for k in np.flatnonzero(paired):
+            other = labels[p[k]]
+            names[k, c] = "weave" if {label, other} == set(WEAVE) else " + ".join(sorted((label, other))) + " oscillation"
+    for c in weave:
+        other = weave[1] if c == weave[0] else weave[0]
+        real = (partner[:, c] == c) & (partner[:, other] == other)
+        upper = (values[:, c].real > values[:, other].real) | (
+            (values[:, c].real == values[:, other].real) & (c < other))
+        names[real & upper, c] = "weave, real (upper)"
+        names[real & ~upper, c] = "weave, real (lower)"
+    return names.astype(str)

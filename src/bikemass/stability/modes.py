@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .eigen import ModalQuantities, eigen_sweep
-from .labels import LABELS, settle_splits, standstill_labels
+from .labels import LABELS, mode_names, settle_splits, standstill_labels
 from .tracking import reorder, track
 
 START_STEP = 0.05
@@ -37,6 +37,12 @@ class Modes(ModalQuantities):
     def __getitem__(self, label):
         """Eigenvalues (n,) of mode ``label``."""
         return self.eigenvalues[:, self.labels.index(label)]
+
+    def names(self):
+        """What each root is at every speed (array (n, 4) of str, columns as ``labels``):
+        ``weave`` while the weave roots are a pair, ``weave, real (upper|lower)`` when
+        they are real, ``capsize``, ``caster`` (:func:`~bikemass.stability.labels.mode_names`)."""
+        return mode_names(self.eigenvalues, self.labels)
 
     def to_dict(self):
         """``{"speeds": [...], "modes": [{"label", "eigenvalues": [[re, im], ...]}, ...]}``."""

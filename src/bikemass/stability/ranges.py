@@ -8,7 +8,7 @@ margin in the neighbouring grid step (:mod:`~bikemass.stability.critical`).
 
 import numpy as np
 
-from .critical import mode_margin, overall_margin, root_in
+from .critical import evaluator, mode_margin, overall_margin, root_in
 from .criteria import is_stable
 
 
@@ -49,18 +49,20 @@ def intersect(a, b):
     return out
 
 
-def overall_ranges(matrices, modes, marginal=None):
-    """``{"exact": [...], "grid": [...]}`` where every eigenvalue meets the criterion."""
+def overall_ranges(at, modes, marginal=None):
+    """``{"exact": [...], "grid": [...]}`` where every eigenvalue meets the criterion
+    (``at``: canonical matrices or their :class:`~bikemass.stability.critical.SpeedEigenvalues`)."""
     mask = is_stable(modes.eigenvalues, marginal).all(axis=1)
-    f = overall_margin(matrices, marginal)
+    f = overall_margin(at, marginal)
     return {"exact": exact_ranges(modes.speeds, mask, lambda k: f),
             "grid": grid_ranges(modes.speeds, mask)}
 
 
-def mode_ranges(matrices, modes, label, marginal=None):
+def mode_ranges(at, modes, label, marginal=None):
     """``{"exact": [...], "grid": [...]}`` where mode ``label`` meets the criterion."""
+    at = evaluator(at)
     values = modes[label]
     mask = is_stable(values, marginal)
     return {"exact": exact_ranges(modes.speeds, mask,
-                                  lambda k: mode_margin(matrices, modes.speeds, values, k, k + 1, marginal)),
+                                  lambda k: mode_margin(at, modes.speeds, values, k, k + 1, marginal)),
             "grid": grid_ranges(modes.speeds, mask)}
