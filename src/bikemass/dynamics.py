@@ -158,23 +158,26 @@ class StabilityResult:
 
     @property
     def weave_speeds(self):
-        """Speeds (m/s) where a weave root's real part crosses zero, ascending."""
+        """Speeds (m/s) where an oscillatory pair crosses ``Re = 0`` (weave-like), ascending."""
         return tuple(float(v) for v in self.analysis.weave_speeds)
 
     @property
     def capsize_speeds(self):
-        """Speeds (m/s) where the capsize root's real part crosses zero, ascending."""
+        """Speeds (m/s) where a real root crosses ``Re = 0`` (capsize-like; also a branch of a
+        split weave pair), ascending."""
         return tuple(float(v) for v in self.analysis.capsize_speeds)
 
     @property
     def caster_speeds(self):
-        """Speeds (m/s) where the caster root's real part crosses zero, ascending."""
-        return tuple(float(v) for v in self.analysis.critical_speeds("caster"))
+        """Speeds (m/s) where the root tracked as the caster mode crosses ``Re = 0``, ascending."""
+        return tuple(c.speed for c in self.analysis.mode_crossings("caster"))
 
     @property
     def crossings(self):
-        """``{label: ((speed m/s, direction), ...)}``: every zero crossing of each mode's real part."""
-        return freeze(self.analysis.crossings)
+        """Every crossing of ``Re = 0`` by speed: :class:`~bikemass.stability.Crossing` with
+        ``speed`` (m/s), ``kind`` (oscillatory|real: the root that crosses), ``direction``
+        (stabilising|destabilising) and ``mode`` (the tracked label)."""
+        return self.analysis.crossings
 
     @property
     def ranges(self):

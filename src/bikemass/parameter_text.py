@@ -32,7 +32,7 @@ from types import MappingProxyType
 import numpy as np
 
 from .config import Node
-from .errors import InputError
+from .errors import BikemassWarning, InputError
 from .inertia import MassProperties, combine
 from .parameters import NAMES, from_node
 
@@ -50,7 +50,7 @@ _NAME = re.compile(r"[A-Za-z_]\w*$")
 _VALUE = re.compile(r"^\s*([-+]?[\d.]+(?:[eE][-+]?\d+)?)\s*(?:(?:\+/-|±)\s*([\d.]+(?:[eE][-+]?\d+)?))?\s*$")
 
 
-class ParameterFileWarning(UserWarning):
+class ParameterFileWarning(BikemassWarning):
     """A BicycleParameters file is read, but something in it does not add up."""
 
 

@@ -2,6 +2,7 @@
 critical speeds, stable ranges, rear-frame flexibility (Meijaard et al. 2007; Williams 2015)."""
 
 from .analysis import DEFAULT_SPEEDS, Stability, speed_grid, stability
+from .critical import Crossing, SpeedEigenvalues
 from .eigen import EigenSweep, eigen_sweep, state_matrices
 from .flexible import static_stiffness, with_frame_stiffness
 from .labels import LABELS
@@ -10,4 +11,4 @@ from .modes import Modes, follow_modes
 
 __all__ = ["CanonicalMatrices", "canonical_matrices", "state_matrices", "EigenSweep", "eigen_sweep",
            "Modes", "follow_modes", "LABELS", "Stability", "stability", "speed_grid",
-           "DEFAULT_SPEEDS", "static_stiffness", "with_frame_stiffness"]
+           "DEFAULT_SPEEDS", "static_stiffness", "with_frame_stiffness", "Crossing", "SpeedEigenvalues"]
