@@ -174,3 +174,13 @@ def test_measured_bicycle_companion_poses_a_chain_rider(tmp_path, capsys):
     missing.write_text("parameters: nowhere.txt\n")
     assert main(["stability", str(missing)]) == 2
     assert "parameters: an existing parameter file" in capsys.readouterr().err
+
+
+def test_bikemass_export_reads_back_bit_for_bit(tmp_path):
+    from bikemass import catalog
+    from bikemass.exporters import format_parameters
+    params = catalog.parameters("jamis-thesis", "relaxed-thesis")
+    f = tmp_path / "JamisBenchmark.txt"
+    f.write_text(format_parameters(params, "bicycleparameters", "Jamis"))
+    back = load_parameter_text(f)
+    assert back.parameters == params and set(back.std.values()) == {0.0} and back.notes == ()

@@ -19,7 +19,8 @@ import pytest
 
 from bikemass import catalog
 from bikemass.cli import main
-from bikemass.stability import canonical_matrices, follow_modes, stability, state_matrices, with_frame_stiffness
+from bikemass.stability import (canonical_matrices, critical_speeds, follow_modes, stability, state_matrices,
+                                with_frame_stiffness)
 from bikemass.stability.analysis import speed_grid
 from bikemass.stability.critical import SpeedEigenvalues
 from bikemass.stability.roots import brent
@@ -139,6 +140,7 @@ def test_critical_speeds_equal_the_previous_implementation_to_1e_12(key):
     for ranges, expected in ((st.ranges["strict"]["exact"], strict), (st.ranges["marginal"]["exact"], marginal)):
         assert np.allclose(ranges, expected, rtol=0, atol=1e-12) and len(ranges) == len(expected)
     assert set(st.weave_speeds) == {c.speed for c in st.crossings if c.kind == "oscillatory"}
+    assert critical_speeds(m) == st.crossings
 
 
 def test_mode_names_one_weave_while_a_pair_and_real_branches_after_the_split():

@@ -69,6 +69,13 @@ class Stability:
         }
 
 
+def critical_speeds(matrices, speeds=None):
+    """Every :class:`~bikemass.stability.critical.Crossing` of ``Re = 0`` (tuple by speed), without
+    the ranges: the part of :func:`stability` a sweep over many configurations needs."""
+    modes = follow_modes(matrices, speed_grid() if speeds is None else speeds)
+    return tuple(all_crossings(SpeedEigenvalues(matrices), modes))
+
+
 def stability(matrices, speeds=None, marginal=MARGINAL_THRESHOLD):
     """:class:`Stability` of ``matrices`` over ``speeds`` (default: the 0..30 m/s, 0.05 grid)."""
     modes = follow_modes(matrices, speed_grid() if speeds is None else speeds)
