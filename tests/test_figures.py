@@ -10,6 +10,8 @@ from pathlib import Path
 import pytest
 
 from bikemass.cli import main
+from bikemass.plots.critical_speeds import plot_critical_speeds
+from bikemass.plots.stability import plot_eigenvalues
 
 SRC = Path(__file__).parents[1] / "src"
 
@@ -23,12 +25,13 @@ from bikemass.bicycle.drawing import plot_side_view
 from bikemass.fe import frame_modes
 from bikemass.fe.plot import plot_frame_modes
 from bikemass.frame import frame_structure
-from bikemass.plots.stability import plot_comparison, plot_eigenvalues
+from bikemass.plots.critical_speeds import plot_critical_speeds
+from bikemass.plots.stability import plot_eigenvalues
 from bikemass.stability import canonical_matrices, speed_grid, stability
 
 result = stability(canonical_matrices(catalog.parameters("benchmark", "none", "exact")), speed_grid(0, 8, 0.5))
 figures = [plot_eigenvalues(result, "benchmark"), plot_eigenvalues(result.modes),
-           plot_comparison({"benchmark": result.modes}),
+           plot_critical_speeds({"no rider": {"rigid": result}}),
            plot_side_view(catalog.load_bicycle("benchmark")),
            plot_frame_modes(frame_modes(frame_structure("jamis"), "fix-rear", 2))]
 assert all(type(f) is Figure for f in figures), [type(f) for f in figures]
@@ -99,3 +102,75 @@ def test_eig_with_only_a_figure_prints_no_table(tmp_path, capsys):
     assert capsys.readouterr().out == "" and svg.stat().st_size > 0
     assert main(["eig", "benchmark", "--speeds", "0:1:1", "--plot", str(svg), "--format", "csv"]) == 0
     assert capsys.readouterr().out.startswith("speed,weave_1_re")      # a table asked for: printed
+
+
+def _svg_texts(path):
+    """The characters of every <text> element, whitespace between glyph spans removed."""
+    return ["".join(part.strip() for part in e.itertext()) for e in ET.parse(path).iter() if e.tag.endswith("}text")]
+
+
+def test_eig_figure_names_the_weave_and_capsize_speeds(tmp_path, capsys):
+    svg = tmp_path / "eig.svg"
+    assert main(["eig", "benchmark", "--plot", str(svg)]) == 0
+    texts = _svg_texts(svg)
+    # Meijaard et al. (2007): v_w = 4.292 m/s, v_c = 6.024 m/s; the symbol (mathtext) is drawn
+    # just before its value (one plain string, editable as text)
+    for symbol, value in (("vw", "= 4.29 m/s"), ("vc", "= 6.02 m/s")):
+        assert texts[texts.index(value) + 1] == symbol
+
+
+@pytest.fixture(scope="module")
+def benchmark_stability():
+    from bikemass import catalog
+    from bikemass.stability import canonical_matrices, speed_grid, stability
+    return stability(canonical_matrices(catalog.parameters("benchmark", "none", "exact")), speed_grid(0, 30, 0.05))
+
+
+def _lines(ax, label):
+    return [line for line in ax.lines if line.get_label() == label]
+
+
+def test_eig_figure_is_zoomed_to_the_crossings_with_one_weave(benchmark_stability):
+    import numpy as np
+    ax = plot_eigenvalues(benchmark_stability).axes[0]
+    assert ax.get_xlim() == (0.0, 10.0)                  # about 1.6 x the capsize speed, as Meijaard's Fig. 3
+    low, high = ax.get_ylim()
+    assert -15 < low < -10 and 10 < high < 15            # the caster (-25 1/s at 10 m/s) is clipped ...
+    assert any("caster mode below the axis" in t.get_text() for t in ax.texts)     # ... and says so
+    spans = [p for p in ax.patches if p.get_label().startswith("stable")]
+    start, stop = spans[0].get_x(), spans[0].get_x() + spans[0].get_width()
+    assert (start, stop) == pytest.approx((4.2924, 6.0243), abs=1e-4)     # Meijaard et al. (2007)
+    weave, = _lines(ax, "weave")                         # one curve for the pair, not weave 1 and weave 2
+    speeds, real = weave.get_data()
+    drawn = speeds[np.isfinite(real)]
+    assert 0.6 < drawn.min() < 0.75 and drawn.max() == pytest.approx(30)   # the pair forms at ~0.68 m/s
+    split, = _lines(ax, "weave as real roots")
+    assert np.nanmax(np.where(np.isfinite(split.get_ydata()), split.get_xdata(), np.nan)) < 0.75
+    assert {"capsize", "caster", "real part", "imaginary part"} <= {line.get_label() for line in ax.lines}
+
+
+def test_eig_figure_limits_can_be_set(benchmark_stability):
+    ax = plot_eigenvalues(benchmark_stability, xlim=(2, 8), ylim=(-5, 5)).axes[0]
+    assert ax.get_xlim() == (2, 8) and ax.get_ylim() == (-5, 5)
+    assert [t.get_text().strip() for t in ax.texts if t.get_text().startswith(("=", " $v"))] == [
+        "= 4.29 m/s", "$v_\\mathrm{w}$", "= 6.02 m/s", "$v_\\mathrm{c}$"]
+
+
+def test_compare_figure_shows_each_configurations_speeds(tmp_path, capsys):
+    """Jamis + relaxed rider as the thesis (Eq. 3.6, published S): the capsize speed moves from
+    10.38 m/s (rigid) to 8.35 m/s (steel frame), the stable speeds shrink with it."""
+    import numpy as np
+    from bikemass.commands import stability as command
+    from bikemass.stability import stability
+    results = {"relaxed": {s: stability(command._matrices(_Args(), "relaxed-thesis", s)) for s in ("infinite", "steel")}}
+    ax = plot_critical_speeds(results).axes[0]
+    squares = [line for line in ax.lines if line.get_marker() == "s" and len(line.get_xdata())]
+    assert sorted(float(x) for line in squares for x in line.get_xdata()) == pytest.approx([8.3514, 10.3803], abs=1e-3)
+    bars = [line for line in ax.lines if line.get_linewidth() > 4 and len(line.get_xdata())]
+    assert [tuple(np.round(line.get_xdata(), 2)) for line in bars] == [(5.68, 10.38), (5.83, 8.35)]
+    assert [t.get_text() for t in ax.get_yticklabels()] == ["relaxed"]
+    assert {"10.38", "8.35"} <= {t.get_text() for t in ax.texts}
+
+
+class _Args:
+    bike, combine = "jamis-thesis", "thesis"

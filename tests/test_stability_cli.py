@@ -9,7 +9,6 @@ import pytest
 from bikemass.cli import main
 from bikemass.paths import frames_dir
 from bikemass.stability import canonical_matrices, follow_modes, speed_grid
-from bikemass.plots.stability import plot_comparison
 from thesis_sets import RIDERS, thesis_set
 
 BENCHMARK = str(frames_dir() / "benchmark.yaml")
@@ -60,13 +59,6 @@ def test_stiffness_file_changes_the_result_and_plots_are_written(capsys, tmp_pat
     assert run(capsys, "eig", BENCHMARK, "--speeds", "0:2:1", "--format", "json",
                "-o", str(out_file))[0] == 0
     assert json.loads(out_file.read_text())["speeds"] == [0.0, 1.0, 2.0]
-
-
-def test_comparison_plot(tmp_path):
-    curves = {r: follow_modes(canonical_matrices(thesis_set("Jamis", r)), speed_grid(0, 10, 0.1))
-              for r in ("Benchmark",) + RIDERS}
-    fig = plot_comparison(curves, title="Jamis, all riders")
-    assert len(fig.axes[0].lines) >= 4 * len(curves)
 
 
 @pytest.mark.parametrize("argv,needle", [

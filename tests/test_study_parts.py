@@ -78,12 +78,11 @@ def test_half_units_of_printed_values():
 
 def test_one_configurations_figures(tmp_path, inputs):
     c = Configuration("jamis", "relaxed", "infinite")
-    outcomes = {c: evaluate(inputs.matrices(THESIS, c), c, None, None, exact=False)}
-    jobs = (figures.mode_jobs(outcomes, tmp_path)
-            + [(figures.draw_comparison, {"Relaxed": outcomes[c].modes}, tmp_path / "real.png", "one rider")]
+    outcomes = {c: evaluate(inputs.matrices(THESIS, c), c, None, None, exact=True)}
+    jobs = (figures.eigenvalue_jobs(outcomes, tmp_path) + figures.critical_jobs(outcomes, tmp_path)[:1]
             + figures.pose_jobs(inputs.bicycle("jamis"), {"relaxed": inputs.rider("relaxed")}, tmp_path))
     written = [figures.run_job(job) for job in jobs]
-    assert [p.name for p in written] == ["modes_jamis_relaxed_infinite.png", "real.png", "pose_relaxed.png"]
+    assert [p.name for p in written] == ["eig_jamis_relaxed_infinite.png", "critical_jamis.png", "pose_relaxed.png"]
     for path in written:
         data = path.read_bytes()
         assert data.startswith(PNG) and len(data) > 10_000
@@ -96,7 +95,7 @@ def test_figure_count_matches_the_jobs(tmp_path, inputs):
 
     from bikemass.study.pipeline import figure_jobs
     empty = {"grid": {"strict": {"overall": []}, "marginal": {"overall": []}}}
-    run = {c: SimpleNamespace(modes=None, ranges=empty) for c in configurations()}
+    run = {c: SimpleNamespace(modes=None, ranges=empty, weave_speeds=None) for c in configurations()}
     jobs = figure_jobs(SimpleNamespace(runs={"thesis": run, "corrected": run}), inputs, tmp_path)
-    assert len(jobs) == figures.figure_count() == 2 * 3 * 4 + 73 + 5
+    assert len(jobs) == figures.figure_count() == 2 * 3 + 73 + 5
     assert len({figures.job_path(job) for job in jobs}) == len(jobs)          # every figure has its own file

@@ -27,7 +27,7 @@ _API = {
     "StabilityResult": "dynamics",
     "frame_modes": "frame", "frame_stiffness": "frame", "frame_structure": "frame",
     "pose_rider": "posing", "PosedRider": "posing",
-    "plot_eigenvalues": "plots.stability", "plot_comparison": "plots.stability",
+    "plot_eigenvalues": "plots.stability", "plot_critical_speeds": "plots.critical_speeds",
     "plot_side_view": "bicycle.drawing", "plot_pose": "plots.pose", "plot_frame_modes": "fe.plot",
     "save_figure": "plots.figure",
     "Combine": "choices", "Method": "choices", "Overlap": "choices", "Procedure": "choices",

@@ -32,9 +32,10 @@ def register(sub):
     stab.set_defaults(run=run_stability)
 
     comp = sub.add_parser(
-        "compare", help="several riders and/or stiffnesses on one eigenvalue plot",
-        description="One curve set per rider x stiffness on one axis (as the thesis's Figs. 4-6 "
-                    "and 5-2..5-15), and a table of their weave and capsize speeds.")
+        "compare", help="several riders and/or stiffnesses compared by their weave and capsize speeds",
+        description="Weave and capsize speeds and the stable speeds of every rider x stiffness: a "
+                    "figure with one line per configuration (riders as rows, stiffnesses as colours) "
+                    "and a table.")
     comp.add_argument("bike", metavar="BIKE", help="shipped bicycle name, bicycle YAML or parameter file")
     comp.add_argument("--riders", metavar="POSES", default="none",
                       help="comma-separated rider poses or pose files, 'none' for no rider "
@@ -45,10 +46,8 @@ def register(sub):
                       help="rider + frame: parallel-axis theorem (exact, default) or the thesis's Eq. 3.6")
     comp.add_argument("--speeds", metavar="START:STOP:STEP", default="0:30:0.05",
                       help="speed grid in m/s (default 0:30:0.05)")
-    comp.add_argument("--part", choices=("real", "imag", "frequency", "damping"), default="real",
-                      help="what to plot against speed (default real parts)")
     comp.add_argument("-o", "--output", metavar="FILE", required=True, help="figure (.png, .pdf, .svg)")
-    add_figure_options(comp, SPEED_LIMIT, "the plotted part")
+    add_figure_options(comp, SPEED_LIMIT)
     comp.set_defaults(run=run_compare)
 
 
@@ -92,8 +91,21 @@ def _inputs(args, rider=None, stiffness=None):
             frame_stiffness(bike, stiffness or args.stiffness))
 
 
+def _rider_name(rider):
+    return "no rider" if rider == "none" else rider
+
+
+def _stiffness_name(stiffness):
+    return "rigid frame" if stiffness == "infinite" else f"{stiffness} frame"
+
+
+def _combine(combine):
+    return "rider added as the thesis did" if combine == "thesis" else "rider added with the parallel-axis theorem"
+
+
 def _title(args):
-    return f"{args.bike}, rider {args.rider} ({args.combine}), stiffness {args.stiffness}"
+    thesis = " (rider added as the thesis did)" if args.rider != "none" and args.combine == "thesis" else ""
+    return f"{args.bike}, {_rider_name(args.rider)}, {_stiffness_name(args.stiffness)}{thesis}"
 
 
 def _emit(args, text):
@@ -118,8 +130,10 @@ def run_eig(args):
             text = eig_table(modes, csv=args.format == "csv")
         _emit(args, text)
     if args.plot:
+        from ..dynamics import stability
         from ..plots.stability import plot_eigenvalues
-        write_figure(plot_eigenvalues(modes, _title(args), options.size, **options.limits()), args.plot, options)
+        result = stability(*_inputs(args), speeds)          # marks v_w, v_c and shades the stable speeds
+        write_figure(plot_eigenvalues(result, _title(args), options.size, **options.limits()), args.plot, options)
     return 0
 
 
@@ -157,22 +171,21 @@ def run_stability(args):
 def run_compare(args):
     from ..dynamics import stability
     from ..output import table
-    from ..plots.stability import plot_comparison
+    from ..plots.critical_speeds import plot_critical_speeds
 
     options = figure_options(args, args.output)
     speeds = parse_speeds(args.speeds)
     riders = [r.strip() for r in args.riders.split(",") if r.strip()]
     stiffnesses = [k.strip() for k in args.stiffnesses.split(",") if k.strip()]
-    curves, rows = {}, []
+    results, rows = {}, []
     for rider in riders:
         for stiffness in stiffnesses:
-            name = " / ".join(x for x, many in ((rider, len(riders) > 1), (stiffness, len(stiffnesses) > 1))
-                              if many) or rider
             result = stability(*_inputs(args, rider, stiffness), speeds)
-            curves[name] = result.modes
+            results.setdefault(_rider_name(rider), {})[_stiffness_name(stiffness)] = result
             rows.append([rider, stiffness, _speeds(result.weave_speeds), _speeds(result.capsize_speeds),
                          _ranges(result.ranges["strict"]["exact"], "{:.4f}")])
-    fig = plot_comparison(curves, args.part, f"{args.bike} ({args.combine})", options.size, **options.limits())
+    fig = plot_critical_speeds(results, f"{args.bike}: weave and capsize speeds ({_combine(args.combine)})",
+                               options.size, options.xlim)
     write_figure(fig, args.output, options)
     text = table(["rider", "stiffness", "weave speeds", "capsize speeds", "stable (strict)"], rows)
     print(text + f"wrote {args.output}")

@@ -36,7 +36,7 @@ def register(sub):
     p.add_argument("--out", metavar="DIR", default="study",
                    help="output folder (default: study/; created if missing, files replaced)")
     p.add_argument("--no-figures", action="store_true",
-                   help="skip the ~100 PNG figures (the slow part)")
+                   help="skip the ~85 PNG figures (the slow part)")
     p.add_argument("--jobs", type=int, default=None, metavar="N",
                    help="worker processes (default: up to 2, the cores of the reference machine)")
     p.set_defaults(run=run_study)

@@ -1,91 +1,183 @@
-"""Stability figures: the thesis's Fig. 4-4 layout and many-curve comparisons (Figs. 4-6, 5-2..5-15)."""
+"""Eigenvalues against speed in the field's convention (Meijaard et al. 2007, Fig. 3): real
+parts (solid) and imaginary parts (dashed) of every mode on one axis, zoomed to where the
+modes cross zero, the fast caster root clipped with a note, the weave and capsize speeds
+marked with their values and the stable speeds shaded."""
+
+from dataclasses import dataclass
 
 import numpy as np
 
-from ..stability.labels import LABELS
 from .figure import new_figure
+from .mode_names import curve_names
 
-MODE_COLOURS = {"weave 1": "tab:blue", "weave 2": "tab:cyan", "capsize": "tab:red", "caster": "tab:green"}
-MODE_STYLES = {"weave 1": "-", "weave 2": "--", "capsize": "-.", "caster": ":"}
+SIZE = (7.0, 4.6)
+"""Default figure size (inches): a journal's two-column width."""
+
+REAL_WEAVE = "weave as real roots"
+COLOURS = {"weave": "tab:blue", REAL_WEAVE: "tab:purple", "capsize": "tab:red", "caster": "tab:green"}
+OTHER_COLOUR = "tab:orange"
+LEGEND_ORDER = ("weave", REAL_WEAVE, "capsize", "caster")
 
 
-def _figure(nrows, ncols, size):
-    fig = new_figure(size)
-    return fig, fig.subplots(nrows, ncols, sharex=True, squeeze=False)
+def legend_name(name):
+    """The name a reader sees: the weave's real branches as one entry, tracking numbers dropped."""
+    if name.startswith("weave, real"):
+        return REAL_WEAVE
+    return name.replace("weave 1", "weave").replace("weave 2", "weave")
+STABLE_COLOUR = "tab:green"
+CLIPPED = "caster"
+"""The mode whose fast, strongly damped root runs off the zoomed axis."""
 
 
-def _shade(ax, ranges, colour, label):
-    for i, (a, b) in enumerate(ranges):
-        ax.axvspan(a, b, color=colour, alpha=0.15, lw=0, label=label if i == 0 else None)
+@dataclass(frozen=True)
+class CriticalSpeeds:
+    """What the figures mark: ``weave`` and ``capsize`` speeds (m/s, where an oscillatory or a
+    real root crosses Re = 0) and the ``stable`` speed ranges ``[[start, stop], ...]`` (m/s)."""
+
+    weave: tuple = ()
+    capsize: tuple = ()
+    stable: tuple = ()
+
+    @classmethod
+    def of(cls, stability):
+        """From a :class:`~bikemass.stability.analysis.Stability` (exact speeds, strict ranges)."""
+        return cls(tuple(stability.weave_speeds), tuple(stability.capsize_speeds),
+                   tuple(map(tuple, stability.ranges["strict"]["exact"])))
 
 
 def plot_eigenvalues(result, title="", size=None, xlim=None, ylim=None):
-    """Figure: real and imaginary parts (1/s), natural frequency (rad/s) and damping ratio against speed.
+    """Figure: eigenvalues (1/s) of ``result`` against speed (m/s).
 
-    ``result``: :class:`~bikemass.stability.modes.Modes`, or a
-    :class:`~bikemass.stability.analysis.Stability` whose strictly stable speeds are shaded
-    green and marginally stable ones grey.  ``xlim`` (m/s), ``ylim`` (1/s, real parts).
+    ``result``: a :class:`~bikemass.stability.analysis.Stability` (weave and capsize speeds
+    marked, stable speeds shaded) or bare :class:`~bikemass.stability.modes.Modes`.
+    ``xlim`` (m/s) and ``ylim`` (1/s) override the automatic zoom.
     """
-    stability = result if hasattr(result, "modes") else None
-    modes = result.modes if stability is not None else result
-    fig, axes = _figure(2, 2, size or (11, 7.5))
-    panels = ((axes[0, 0], lambda z: z.real, "real part (1/s)"),
-              (axes[0, 1], lambda z: z.imag, "imaginary part (rad/s)"),
-              (axes[1, 0], np.abs, "natural frequency (rad/s)"),
-              (axes[1, 1], lambda z: -z.real / np.where(np.abs(z) > 0, np.abs(z), np.nan), "damping ratio"))
-    v = modes.speeds
-    for ax, part, ylabel in panels:
-        for label in LABELS:
-            ax.plot(v, part(modes[label]), MODE_STYLES[label], color=MODE_COLOURS[label], label=label)
-        if stability is not None:
-            _shade(ax, stability.ranges["marginal"]["exact"], "0.5", "marginally stable")
-            _shade(ax, stability.ranges["strict"]["exact"], "tab:green", "stable")
-        ax.axhline(0, color="k", lw=0.6)
-        ax.set_ylabel(ylabel)
-        ax.grid(alpha=0.3)
-    axes[0, 0].legend(fontsize=8, loc="best")
-    for ax in axes[1]:
-        ax.set_xlabel("speed (m/s)")
-    fig.suptitle(title)
-    axes[0, 0].set_xlim(xlim or (v[0], v[-1]))
-    if ylim:
-        axes[0, 0].set_ylim(ylim)
-    return fig
+    if hasattr(result, "modes"):
+        return eigenvalue_figure(result.modes, CriticalSpeeds.of(result), title, size, xlim, ylim)
+    return eigenvalue_figure(result, CriticalSpeeds(), title, size, xlim, ylim)
 
 
-def plot_comparison(curves, part="real", title="", size=None, xlim=None, ylim=None):
-    """Figure: many bicycles on one axis: ``curves`` = ``{name: Modes}``; one colour per name, one line style per mode.
+def default_xlim(speeds, critical):
+    """Speed range (m/s) shown: from the first speed to about 1.6 times the last critical speed
+    (whole metres per second), or the whole sweep if nothing crosses."""
+    marks = [*critical.weave, *critical.capsize]
+    if not marks:
+        return float(speeds[0]), float(speeds[-1])
+    return float(speeds[0]), float(min(speeds[-1], max(np.ceil(1.6 * max(marks)), speeds[0] + 1)))
 
-    ``part``: ``real`` (1/s), ``imag`` (rad/s), ``frequency`` (rad/s) or ``damping``; the
-    real-part axis is scaled to the weave and capsize roots (the caster runs off it).
-    """
-    fig, axes = _figure(1, 1, size or (9, 5.5))
-    ax = axes[0, 0]
-    get = {"real": lambda z: z.real, "imag": lambda z: z.imag, "frequency": np.abs,
-           "damping": lambda z: -z.real / np.where(np.abs(z) > 0, np.abs(z), np.nan)}[part]
-    from matplotlib.lines import Line2D
 
-    colours = [f"C{i % 10}" for i in range(len(curves))]
-    for colour, (name, modes) in zip(colours, curves.items()):
-        for label in LABELS:
-            ax.plot(modes.speeds, get(modes[label]), MODE_STYLES[label], color=colour)
-    handles = [Line2D([], [], color=c, label=name) for c, name in zip(colours, curves)]
-    handles += [Line2D([], [], color="k", ls=MODE_STYLES[label], label=label) for label in LABELS]
-    if part == "real":   # scale to weave and capsize; the fast caster roots run off the axis
-        focus = np.concatenate([modes[label].real for modes in curves.values()
-                                for label in LABELS if label != "caster"])
-        lo, hi = np.nanmin(focus), np.nanmax(focus)
-        pad = 0.08 * (hi - lo) or 1.0
-        ax.set_ylim(lo - pad, hi + pad)
-    ax.axhline(0, color="k", lw=0.6)
-    ax.set_xlabel("speed (m/s)")
-    ax.set_ylabel({"real": "real part (1/s)", "imag": "imaginary part (rad/s)",
-                   "frequency": "natural frequency (rad/s)", "damping": "damping ratio"}[part])
-    ax.grid(alpha=0.3)
-    ax.legend(handles=handles, fontsize=8, ncol=2, loc="best")
-    ax.set_title(title)
-    if xlim:
-        ax.set_xlim(xlim)
-    if ylim:
-        ax.set_ylim(ylim)
+def default_ylim(speeds, eigenvalues, names, xlim):
+    """Eigenvalue range (1/s) shown, symmetric about zero: every real and imaginary part in
+    ``xlim`` except the clipped caster root, with a margin."""
+    inside = (speeds >= xlim[0]) & (speeds <= xlim[1])
+    keep = names[inside] != CLIPPED
+    values = eigenvalues[inside][keep]
+    reach = 1.08 * max(np.abs(values.real).max(initial=0), np.abs(values.imag).max(initial=0)) or 1.0
+    return -reach, reach
+
+
+def _grown(mask):
+    """``mask`` with one more point at both ends of every run, so neighbouring pieces join."""
+    out = mask.copy()
+    out[1:] |= mask[:-1]
+    out[:-1] |= mask[1:]
+    return out
+
+
+def _draw_curves(ax, speeds, eigenvalues, names):
+    """Real (solid) and positive imaginary (dashed) parts, one colour per physical name."""
+    drawn = {}
+    for name in dict.fromkeys(names.ravel()):
+        legend = legend_name(name)
+        colour = COLOURS.get(legend, OTHER_COLOUR)
+        for c in range(eigenvalues.shape[1]):
+            mask = names[:, c] == name
+            if not mask.any():
+                continue
+            z = eigenvalues[:, c]
+            oscillating = mask & (z.imag != 0)
+            if oscillating.any() and (z.imag[oscillating] < 0).all():
+                continue                       # the lower member of a pair: its mirror is drawn
+            shown = _grown(mask)
+            label = legend if legend not in drawn else None
+            line, = ax.plot(speeds, np.where(shown, z.real, np.nan), "-", color=colour, lw=1.6, label=label)
+            drawn.setdefault(legend, line)
+            if oscillating.any():
+                ax.plot(speeds, np.where(_grown(oscillating), np.abs(z.imag), np.nan), "--", color=colour, lw=1.2)
+    return drawn
+
+
+def _caster_note(ax, speeds, eigenvalues, names, xlim, ylim):
+    """A note where the caster root leaves the axis (where it does)."""
+    columns = [c for c in range(names.shape[1]) if (names[:, c] == CLIPPED).any()]
+    if not columns:
+        return None
+    z = eigenvalues[:, columns[0]]
+    inside = (speeds >= xlim[0]) & (speeds <= xlim[1]) & (names[:, columns[0]] == CLIPPED)
+    below = inside & (z.real < ylim[0])
+    if not below.any():
+        return None
+    start = speeds[below][0]
+    low = f"{z.real[inside].min():.0f}".replace("-", "\u2212")
+    text = (f"caster mode below the axis from {start:.1f} m/s\n(Re $\\lambda$ down to {low} 1/s)"
+            if start > xlim[0] else f"caster mode below the axis\n(Re $\\lambda$ down to {low} 1/s)")
+    return ax.annotate(text, xy=(min(max(start, xlim[0]), xlim[1]), ylim[0]), xycoords="data",
+                       xytext=(6, 10), textcoords="offset points", fontsize=8, color=COLOURS[CLIPPED],
+                       ha="left", va="bottom", arrowprops=dict(arrowstyle="->", color=COLOURS[CLIPPED], lw=0.8))
+
+
+def _mark(ax, speed, symbol, xlim):
+    """A dotted vertical line at a critical speed with its symbol and value at the top of the
+    axis, reading upwards: the symbol (mathtext) and the value (plain text, so that the number
+    stays one editable string in SVG and PDF)."""
+    ax.axvline(speed, color="0.25", lw=0.8, ls=":")
+    side = "left" if speed < xlim[0] + 0.85 * (xlim[1] - xlim[0]) else "right"
+    box = dict(facecolor="white", edgecolor="none", alpha=0.8, pad=0.4)
+    value = ax.text(speed, 0.98, f"= {speed:.2f} m/s ", transform=ax.get_xaxis_transform(), rotation=90,
+                    ha=side, va="top", fontsize=8, bbox=box)
+    name = ax.annotate(f" ${symbol}$ ", xy=(0.5, 0.0), xycoords=value, rotation=90, ha="center", va="top",
+                       fontsize=8, bbox=box)
+    return value, name
+
+
+def mark_critical_speeds(ax, critical, xlim):
+    """Mark the weave (v_w) and capsize (v_c) speeds inside ``xlim``; return the value texts."""
+    texts = []
+    for speeds, letter in ((critical.weave, "w"), (critical.capsize, "c")):
+        for i, v in enumerate(speeds):
+            if xlim[0] <= v <= xlim[1]:
+                subscript = letter if len(speeds) == 1 else f"{letter},{i + 1}"
+                texts.append(_mark(ax, v, f"v_\\mathrm{{{subscript}}}", xlim)[0])
+    return texts
+
+
+def eigenvalue_figure(modes, critical, title="", size=None, xlim=None, ylim=None):
+    """Figure: the Meijaard-style eigenvalue plot of ``modes`` with :class:`CriticalSpeeds` ``critical``."""
+    speeds, eigenvalues = modes.speeds, modes.eigenvalues
+    names = curve_names(modes)
+    xlim = tuple(xlim or default_xlim(speeds, critical))
+    ylim = tuple(ylim or default_ylim(speeds, eigenvalues, names, xlim))
+    fig = new_figure(size or SIZE)
+    ax = fig.subplots()
+    for i, (a, b) in enumerate(critical.stable):
+        ax.axvspan(a, b, color=STABLE_COLOUR, alpha=0.12, lw=0,
+                   label="stable: every Re $\\lambda$ < 0" if i == 0 else None)
+    _draw_curves(ax, speeds, eigenvalues, names)
+    ax.axhline(0, color="k", lw=0.7)
+    ax.set_xlim(xlim)
+    ax.set_ylim(ylim)
+    mark_critical_speeds(ax, critical, xlim)
+    _caster_note(ax, speeds, eigenvalues, names, xlim, ylim)
+    ax.plot([], [], "-", color="0.3", label="real part")
+    ax.plot([], [], "--", color="0.3", label="imaginary part")
+    handles, labels = ax.get_legend_handles_labels()
+    rank = {label: LEGEND_ORDER.index(label) if label in LEGEND_ORDER else len(LEGEND_ORDER) + i
+            for i, label in enumerate(labels)}
+    order = sorted(range(len(labels)), key=lambda i: rank[labels[i]])
+    ax.set_xlabel("forward speed $v$ (m/s)")
+    ax.set_ylabel("eigenvalue $\\lambda$ (1/s)")
+    ax.legend([handles[i] for i in order], [labels[i] for i in order], fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0, frameon=False)
+    ax.grid(alpha=0.25, lw=0.5)
+    if title:
+        ax.set_title(title, fontsize=10)
     return fig

@@ -1,56 +1,53 @@
 """The study's figures (PNG): one job per figure, so they can be drawn in parallel.
 
-* ``real_<bike>_<stiffness>[_corrected].png``: real parts of the eigenvalues of all six
-  rider positions on one axis (the thesis's Fig. 4-6 and Figs. 5-2..5-15);
-* ``modes_<bike>_<rider>_<stiffness>.png``: one configuration of the thesis-mode run in
-  the Fig. 4-4 layout (real and imaginary parts, natural frequency, damping ratio), the
-  stable speeds of the grid shaded;
+* ``critical_<bike>.png``: every rider and stiffness of one bicycle by its weave and capsize
+  speeds and stable speeds (corrected run, exact speeds); ``critical_<bike>_thesis.png``: the
+  stable speeds of the thesis run (0.05 m/s grid, the tables' numbers);
+* ``eig_<bike>_<rider>_<stiffness>.png``: one configuration's eigenvalues against speed
+  (Meijaard et al. 2007, Fig. 3 style; corrected run, v_w and v_c marked);
 * ``pose_<pose>.png``: side view of each of the five poses on the geometry Jamis.
+
+A job is ``(function, *arguments, path, title)``; ``function(*arguments, title)`` returns
+the Figure.
 """
 
-from dataclasses import dataclass
-
 from ..rider import THESIS_POSES
-from .configurations import BICYCLES, STIFFNESSES, THESIS_NAMES, configurations
+from .configurations import BICYCLES, THESIS_NAMES, configurations
+
+STIFFNESS_NAMES = {"infinite": "rigid frame", "steel": "steel frame", "titanium": "titanium frame",
+                   "aluminum": "aluminium frame"}
 
 
-@dataclass(frozen=True)
-class GridShading:
-    """What :func:`~bikemass.plots.stability.plot_eigenvalues` shades: ``ranges[criterion]["exact"]``.
-
-    The thesis-mode run has only grid ranges; they are handed over in that slot.
-    """
-
-    ranges: dict
-    modes: object = None
-
-    def with_modes(self, modes):
-        """The same shading for the figure of ``modes``."""
-        return GridShading(self.ranges, modes)
-
-    @classmethod
-    def of(cls, outcome):
-        grid = outcome.ranges["grid"]
-        return cls({criterion: {"exact": grid[criterion]["overall"]} for criterion in grid})
+def critical_speeds(outcome):
+    """:class:`~bikemass.plots.stability.CriticalSpeeds` of a study outcome: exact speeds and
+    ranges where the run has them, else the stable runs of the grid."""
+    from ..plots.stability import CriticalSpeeds
+    if outcome.weave_speeds is not None:
+        return CriticalSpeeds(tuple(outcome.weave_speeds), tuple(outcome.capsize_speeds),
+                              tuple(map(tuple, outcome.ranges["exact"]["strict"]["overall"])))
+    return CriticalSpeeds(stable=tuple(map(tuple, outcome.ranges["grid"]["strict"]["overall"])))
 
 
-def comparison_jobs(outcomes, folder, suffix="", run_title="thesis run"):
-    """Jobs drawing the real parts of all riders per bicycle and stiffness."""
-    jobs = []
-    for bike in BICYCLES:
-        for stiffness in STIFFNESSES:
-            curves = {THESIS_NAMES[c.rider]: o.modes for c, o in outcomes.items()
-                      if c.bike == bike and c.stiffness == stiffness}
-            title = f"{bike}, {stiffness} rear frame: real parts, all riders ({run_title})"
-            jobs.append((draw_comparison, curves, folder / f"real_{bike}_{stiffness}{suffix}.png".replace("-", "_"),
-                         title))
-    return jobs
+def bike_results(outcomes, bike):
+    """``{rider: {stiffness: CriticalSpeeds}}`` of one bicycle (thesis names, study order)."""
+    results = {}
+    for c, o in outcomes.items():
+        if c.bike == bike:
+            results.setdefault(THESIS_NAMES[c.rider], {})[STIFFNESS_NAMES[c.stiffness]] = critical_speeds(o)
+    return results
 
 
-def mode_jobs(outcomes, folder):
-    """Jobs drawing each configuration in the Fig. 4-4 layout."""
-    return [(draw_modes, o.modes, GridShading.of(o), folder / f"modes_{c.slug}.png",
-             f"{c.label} (thesis run; stable speeds on the 0.05 m/s grid shaded)")
+def critical_jobs(outcomes, folder, suffix="", run_title="corrected run"):
+    """Jobs drawing each bicycle's configurations by their critical speeds."""
+    return [(draw_critical, bike_results(outcomes, bike), folder / f"critical_{bike}{suffix}.png".replace("-", "_"),
+             f"{THESIS_NAMES[bike]}: stable speeds of every rider and frame ({run_title})") for bike in BICYCLES]
+
+
+def eigenvalue_jobs(outcomes, folder):
+    """Jobs drawing each configuration's eigenvalues against speed."""
+    return [(draw_eigenvalues, o.modes, critical_speeds(o), folder / f"eig_{c.slug}.png",
+             f"{THESIS_NAMES[c.bike]}, {THESIS_NAMES[c.rider].lower()} rider, {STIFFNESS_NAMES[c.stiffness]}"
+             if not c.is_benchmark else "Benchmark bicycle (Meijaard et al. 2007)")
             for c, o in outcomes.items()]
 
 
@@ -61,18 +58,18 @@ def pose_jobs(bicycle, riders, folder):
 
 
 def figure_count():
-    """How many figures the study draws (:func:`comparison_jobs` twice, :func:`mode_jobs`, :func:`pose_jobs`)."""
-    return 2 * len(BICYCLES) * len(STIFFNESSES) + len(configurations()) + len(THESIS_POSES)
+    """How many figures the study draws (:func:`critical_jobs` twice, :func:`eigenvalue_jobs`, :func:`pose_jobs`)."""
+    return 2 * len(BICYCLES) + len(configurations()) + len(THESIS_POSES)
 
 
-def draw_comparison(curves, title):
-    from ..plots.stability import plot_comparison
-    return plot_comparison(curves, "real", title)
+def draw_critical(results, title):
+    from ..plots.critical_speeds import plot_critical_speeds
+    return plot_critical_speeds(results, title)
 
 
-def draw_modes(modes, shading, title):
-    from ..plots.stability import plot_eigenvalues
-    return plot_eigenvalues(shading.with_modes(modes), title)
+def draw_eigenvalues(modes, critical, title):
+    from ..plots.stability import eigenvalue_figure
+    return eigenvalue_figure(modes, critical, title)
 
 
 def draw_pose(bicycle, rider, title):
@@ -81,14 +78,13 @@ def draw_pose(bicycle, rider, title):
 
 
 def job_path(job):
-    """The file a job writes: ``job`` = (function, *arguments, path, title)."""
+    """The file a job writes."""
     return job[-2]
 
 
 def run_job(job):
-    """Draw one figure and save it (PNG): ``job`` = (function, *arguments, path, title); returns the path."""
+    """Draw one figure and save it (PNG); returns the path."""
     from ..plots.figure import save_figure
     function, *args, path, title = job
     save_figure(function(*args, title), path)
     return path
-

@@ -121,9 +121,9 @@ def write_files(results, out):
 
 def figure_jobs(results, inputs, folder):
     """Every figure job of the study (see :mod:`~bikemass.study.figures`)."""
-    return (figures.comparison_jobs(results.runs["thesis"], folder)
-            + figures.comparison_jobs(results.runs["corrected"], folder, "_corrected", "corrected run")
-            + figures.mode_jobs(results.runs["thesis"], folder)
+    return (figures.critical_jobs(results.runs["corrected"], folder)
+            + figures.critical_jobs(results.runs["thesis"], folder, "_thesis", "thesis run, 0.05 m/s grid")
+            + figures.eigenvalue_jobs(results.runs["corrected"], folder)
             + figures.pose_jobs(inputs.bicycle("jamis"), {p: inputs.rider(p) for p in THESIS_POSES}, folder))
 
 

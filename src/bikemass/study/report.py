@@ -95,7 +95,8 @@ def render(results):
             "range}`, speeds in m/s, `null` where there is no stable range; mode `weave` = both weave roots "
             "stable. `stability_ranges_geometry.json`: the run from geometry (grid ranges).",
             "* one CSV per table (named under each table above);",
-            "* `figures/` (unless `--no-figures`): `real_<bike>_<stiffness>.png` (all riders, thesis run) and "
-            "`..._corrected.png`, `modes_<bike>_<rider>_<stiffness>.png` (Fig. 4-4 layout, thesis run), "
+            "* `figures/` (unless `--no-figures`): `critical_<bike>.png` (every rider and frame by its weave "
+            "and capsize speeds, corrected run) and `critical_<bike>_thesis.png` (stable speeds of the thesis "
+            "run), `eig_<bike>_<rider>_<stiffness>.png` (eigenvalues against speed, corrected run), "
             "`pose_<pose>.png` (the poses on the Jamis).\n"]
     return "\n".join(out)

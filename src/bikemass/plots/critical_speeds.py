@@ -1,0 +1,82 @@
+"""Many configurations compared by their result: a dot plot of each one's weave and capsize
+speeds and the stable speeds between them (one row per configuration, one colour per series)."""
+
+import numpy as np
+
+from .figure import new_figure
+from .stability import CriticalSpeeds
+
+WEAVE_MARKER, CAPSIZE_MARKER = "o", "s"
+
+
+def _critical(result):
+    return result if isinstance(result, CriticalSpeeds) else CriticalSpeeds.of(result)
+
+
+def series_colours(count):
+    """``count`` colours of one sequential scale, dark to light (rigid to softest frame, say)."""
+    from matplotlib import colormaps
+    return [colormaps["viridis"](x) for x in np.linspace(0.0, 0.8, count)] if count > 1 else ["tab:blue"]
+
+
+def _write_values(ax, speeds, y, xlim):
+    """Each speed beside its mark: the first to the left, the others to the right."""
+    for k, v in enumerate(speeds):
+        if xlim[0] <= v <= xlim[1]:
+            ax.annotate(f"{v:.2f}", (v, y), xytext=(5 if k else -5, 0), textcoords="offset points",
+                        ha="left" if k else "right", va="center", fontsize=6.5)
+
+
+def plot_critical_speeds(results, title="", size=None, xlim=None, values=True):
+    """Figure: ``results`` = ``{row: {series: result}}`` (e.g. rider -> stiffness ->
+    :class:`~bikemass.stability.analysis.Stability` or
+    :class:`~bikemass.plots.stability.CriticalSpeeds`), rows top to bottom.
+
+    Each configuration is a line: a bar over its stable speeds, a circle at each weave speed,
+    a square at each capsize speed, the speeds written beside the marks (or the bar's ends
+    where no crossing speeds are given) if ``values``.
+    ``xlim``: speed range (m/s); default from 0 to beyond the largest critical speed.
+    """
+    rows = list(results)
+    series = list(dict.fromkeys(s for row in results.values() for s in row))
+    colours = dict(zip(series, series_colours(len(series))))
+    height = 0.8 / len(series)
+    fig = new_figure(size or (7.0, 1.2 + 0.22 * len(rows) * len(series)))
+    ax = fig.subplots()
+    marks = [v for row in results.values() for r in row.values()
+             for v in (*_critical(r).weave, *_critical(r).capsize)]
+    xlim = tuple(xlim or (0.0, 1.12 * max(marks, default=10.0) + 0.5))
+    for i, row in enumerate(rows):
+        for j, name in enumerate(series):
+            if name not in results[row]:
+                continue
+            c, colour = _critical(results[row][name]), colours[name]
+            y = i + (j - (len(series) - 1) / 2) * height
+            for a, b in c.stable:
+                ax.plot([a, b], [y, y], "-", color=colour, lw=4.5, alpha=0.45, solid_capstyle="butt")
+            for speeds, marker in ((c.weave, WEAVE_MARKER), (c.capsize, CAPSIZE_MARKER)):
+                ax.plot(speeds, [y] * len(speeds), marker, color=colour, markeredgecolor="k", markersize=5,
+                        markeredgewidth=0.6, zorder=3, linestyle="none")
+            if values:
+                _write_values(ax, sorted((*c.weave, *c.capsize)) or [v for r in c.stable for v in r], y, xlim)
+            if not (c.weave or c.capsize or c.stable):
+                ax.annotate("no stable speed, no crossing", (xlim[0], y), xytext=(4, 0),
+                            textcoords="offset points", va="center", fontsize=6.5, color="0.4")
+    if len(rows) > 1:
+        for i in range(len(rows) - 1):
+            ax.axhline(i + 0.5, color="0.85", lw=0.6)
+    ax.set_yticks(range(len(rows)), [str(r) for r in rows])
+    ax.set_ylim(len(rows) - 0.5, -0.5)
+    ax.set_xlim(xlim)
+    ax.set_xlabel("forward speed (m/s)")
+    ax.grid(axis="x", alpha=0.25, lw=0.5)
+    ax.tick_params(axis="y", length=0)
+    for name in series if len(series) > 1 else ():
+        ax.plot([], [], "-", lw=4.5, alpha=0.6, color=colours[name], label=str(name))
+    ax.plot([], [], WEAVE_MARKER, color="0.7", markeredgecolor="k", label="weave speed $v_\\mathrm{w}$")
+    ax.plot([], [], CAPSIZE_MARKER, color="0.7", markeredgecolor="k", label="capsize speed $v_\\mathrm{c}$")
+    ax.plot([], [], "-", lw=4.5, alpha=0.45, color="0.5", label="stable speeds")
+    ax.legend(fontsize=7.5, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0, frameon=False)
+    if title:
+        ax.set_title(title, fontsize=10)
+    return fig
