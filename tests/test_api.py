@@ -170,4 +170,4 @@ from matplotlib.figure import Figure
 print(type(fig) is Figure, matplotlib.get_backend(), plt.get_fignums(), len(fig.axes))
 """
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
-    assert out.split() == ["True", "svg", "[]", "4"]
+    assert out.split() == ["True", "svg", "[]", "1"]

@@ -160,9 +160,10 @@ def test_compare_figure_shows_each_configurations_speeds(tmp_path, capsys):
     """Jamis + relaxed rider as the thesis (Eq. 3.6, published S): the capsize speed moves from
     10.38 m/s (rigid) to 8.35 m/s (steel frame), the stable speeds shrink with it."""
     import numpy as np
-    from bikemass.commands import stability as command
-    from bikemass.stability import stability
-    results = {"relaxed": {s: stability(command._matrices(_Args(), "relaxed-thesis", s)) for s in ("infinite", "steel")}}
+    import bikemass as bm
+    bike = bm.load_bicycle("jamis-thesis")
+    p = bm.parameters(bike, "relaxed-thesis", combine="thesis")
+    results = {"relaxed": {s: bm.stability(p, stiffness=bm.stiffness(bike, s)) for s in ("rigid", "steel")}}
     ax = plot_critical_speeds(results).axes[0]
     squares = [line for line in ax.lines if line.get_marker() == "s" and len(line.get_xdata())]
     assert sorted(float(x) for line in squares for x in line.get_xdata()) == pytest.approx([8.3514, 10.3803], abs=1e-3)
@@ -170,7 +171,3 @@ def test_compare_figure_shows_each_configurations_speeds(tmp_path, capsys):
     assert [tuple(np.round(line.get_xdata(), 2)) for line in bars] == [(5.68, 10.38), (5.83, 8.35)]
     assert [t.get_text() for t in ax.get_yticklabels()] == ["relaxed"]
     assert {"10.38", "8.35"} <= {t.get_text() for t in ax.texts}
-
-
-class _Args:
-    bike, combine = "jamis-thesis", "thesis"
