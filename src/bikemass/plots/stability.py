@@ -8,7 +8,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from .figure import new_figure
-from .mode_names import curve_names
 
 SIZE = (7.0, 4.6)
 """Default figure size (inches): a journal's two-column width."""
@@ -20,8 +19,10 @@ LEGEND_ORDER = ("weave", REAL_WEAVE, "capsize", "caster")
 
 
 def legend_name(name):
-    """The name a reader sees: the weave's real branches as one entry, tracking numbers dropped."""
-    if name.startswith("weave, real"):
+    """The name a reader sees for a name of :meth:`~bikemass.stability.modes.Modes.names`: the
+    weave's real branches as one entry (a tracked weave label alone is a real root whose
+    partner has paired elsewhere), tracking numbers dropped from other pairs."""
+    if name.startswith("weave, real") or name in ("weave 1", "weave 2"):
         return REAL_WEAVE
     return name.replace("weave 1", "weave").replace("weave 2", "weave")
 STABLE_COLOUR = "tab:green"
@@ -154,7 +155,7 @@ def mark_critical_speeds(ax, critical, xlim):
 def eigenvalue_figure(modes, critical, title="", size=None, xlim=None, ylim=None):
     """Figure: the Meijaard-style eigenvalue plot of ``modes`` with :class:`CriticalSpeeds` ``critical``."""
     speeds, eigenvalues = modes.speeds, modes.eigenvalues
-    names = curve_names(modes)
+    names = modes.names()
     xlim = tuple(xlim or default_xlim(speeds, critical))
     ylim = tuple(ylim or default_ylim(speeds, eigenvalues, names, xlim))
     fig = new_figure(size or SIZE)

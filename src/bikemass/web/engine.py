@@ -88,7 +88,7 @@ class Engine:
 
     def _bicycle(self, bike):
         from .. import catalog
-        return catalog.bicycle(self.source(bike))
+        return catalog.load_bicycle(self.source(bike))
 
     def _rider(self, rider):
         from .. import catalog
