@@ -196,3 +196,14 @@ def test_critical_speeds_need_no_scipy_optimize():
             "print(st.weave_speeds[0], 'scipy.optimize' in sys.modules)\n")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split()
     assert float(out[0]) == pytest.approx(4.29238253634110, abs=1e-9) and out[1] == "False"
+
+
+def test_eig_table_shows_the_weave_as_one_mode(capsys):
+    assert main(["eig", "cargo-loaded-thesis", "--speeds", "0:30:6"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[0].split()[:5] == ["speed", "weave", "re", "weave", "im"] and "weave 1" not in lines[0]
+    rows = {float(line.split()[0]): line for line in lines[2:]}
+    assert rows[6.0].split()[1:3] == ["0.893508", "+-1.969310"]           # the pair, once
+    assert rows[24.0].split()[1:4] == ["0.009079,", "-6.479137", "real"]   # two real roots, larger first
+    assert main(["eig", "cargo-loaded-thesis", "--speeds", "0:30:6", "--format", "csv"]) == 0
+    assert capsys.readouterr().out.startswith("speed,weave_1_re,weave_1_im,weave_2_re")   # CSV: every root
