@@ -13,6 +13,7 @@
 import json
 import subprocess
 import sys
+from functools import lru_cache
 
 import numpy as np
 import pytest
@@ -63,12 +64,17 @@ def check_crossings(matrices):
 JAMIS_RIDERS = ("no-hands-thesis", "relaxed-thesis", "on-hoods-thesis", "aerobars-thesis", "aero-tuck-thesis")
 
 
+@lru_cache(maxsize=None)
+def jamis_matrices(rider):
+    return canonical_matrices(catalog.parameters("jamis", rider))
+
+
 @pytest.mark.parametrize("material", ("steel", "titanium", "aluminum"))
 def test_jamis_frames_with_thesis_riders(material):
     S = catalog.stiffness("jamis", material)
     kinds = set()
     for rider in JAMIS_RIDERS:
-        m = with_frame_stiffness(canonical_matrices(catalog.parameters("jamis", rider)), S)
+        m = with_frame_stiffness(jamis_matrices(rider), S)
         st, found = check_crossings(m)
         kinds |= {k for _, _, k in found}
     assert "oscillatory" in kinds
