@@ -1,8 +1,6 @@
 """Bicycles from geometry charts: construction, checks, defaults, sizes, the geometry command."""
 
 import json
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -60,10 +58,9 @@ def test_construction_equals_the_closed_form(tmp_path):
     assert d["mechanical_trail"] == pytest.approx(d["trail"] * np.sin(ha), abs=1e-12)
 
 
-def test_jamis_geometry_is_table_3_9():
-    out = subprocess.run([sys.executable, "-m", "bikemass.cli", "geometry", "jamis", "--format", "json"],
-                         capture_output=True, text=True, check=True).stdout
-    chart = json.loads(out)["jamis"]
+def test_jamis_geometry_is_table_3_9(capsys):
+    assert main(["geometry", "jamis", "--format", "json"]) == 0
+    chart = json.loads(capsys.readouterr().out)["jamis"]
     assert chart["wheelbase"] == pytest.approx(0.988, abs=5e-4)      # Table 3-9, printed to 1 mm
     assert chart["trail"] == pytest.approx(0.060, abs=5e-4)
     assert chart["head_tube_angle"] == pytest.approx(np.degrees(1.274), abs=1e-9)
@@ -184,10 +181,23 @@ def test_bad_chart_files_name_the_key(tmp_path, doc, key):
     assert info.value.key == key
 
 
-def test_size_must_exist(capsys):
+def test_size_must_exist(tmp_path, capsys):
     assert main(["geometry", "bmc-roadmachine", "--size", "XXL"]) == 2
     assert "sizes: one of 47, 51, 54, 56, 58, 61" in capsys.readouterr().err
-    assert main(["params", "bmc-roadmachine"]) == 2
+    assert main(["draw", "bmc-roadmachine", "-o", str(tmp_path / "x.png")]) == 2      # one size to draw
+    assert "sizes: a size (BIKE@SIZE" in capsys.readouterr().err
+    assert not (tmp_path / "x.png").exists()
+
+
+def test_params_every_size_or_one(capsys):
+    assert main(["params", "bmc-roadmachine", "--format", "json"]) == 0
+    every = json.loads(capsys.readouterr().out)
+    assert list(every) == ["47", "51", "54", "56", "58", "61"]
+    assert main(["params", "bmc-roadmachine", "--size", "54", "--format", "json"]) == 0
+    assert json.loads(capsys.readouterr().out) == every["54"]
+    assert main(["params", "bmc-roadmachine@54", "--format", "json"]) == 0
+    assert json.loads(capsys.readouterr().out) == every["54"]
+    assert [round(every[s]["w"], 3) for s in every] == [0.982, 0.993, 0.997, 1.008, 1.021, 1.036]
 
 
 def test_draw_shows_the_chart_dimensions(tmp_path):
@@ -196,3 +206,60 @@ def test_draw_shows_the_chart_dimensions(tmp_path):
     texts = {t.get_text() for t in fig.axes[0].texts}
     assert {"stack 590", "reach 388", "wheelbase 1008", "trail 63", "72.0°", "74.2°"} <= texts
     assert main(["draw", "bmc-roadmachine@56", "-o", str(tmp_path / "side.png")]) == 0
+
+
+def _chart_bicycle(tmp_path, chart, name="bike.yaml"):
+    path = tmp_path / name
+    path.write_text(yaml.safe_dump({"name": "round trip", "chart": chart}))
+    return load_bicycle(str(path))
+
+
+def test_jamis_round_trip_keypoints(tmp_path):
+    """Keypoints bicycle -> derived chart -> chart bicycle: the frame points come back (0.5 mm:
+    the Jamis's head-tube keypoints sit up to 0.09 mm off its steer axis and 0.002 rad off its
+    head angle, which a chart cannot hold)."""
+    from bikemass.bicycle.derived_chart import chart_mapping
+    jamis = load_bicycle("jamis")
+    again = _chart_bicycle(tmp_path, chart_mapping(derived_chart(jamis)))
+    pairs = {"bottom_bracket": "bottom_bracket", "head_top": "head_top", "head_bottom": "head_bottom",
+             "seat_top": "seat_top", "rear_axle": "rear_axle", "front_axle": "front_axle"}
+    for ours, theirs in pairs.items():
+        np.testing.assert_allclose(again.keypoints[ours], jamis.keypoints[theirs], atol=5e-4, err_msg=ours)
+    assert again.geometry.wheelbase == pytest.approx(0.988, abs=2e-4)
+    assert again.geometry.trail == pytest.approx(0.060, abs=2e-4)
+
+
+chart_values = {
+    "stack": (0.45, 0.75), "reach": (0.33, 0.46), "head_tube_angle": (67.0, 75.0),
+    "seat_tube_angle": (71.0, 76.0), "head_tube_length": (0.09, 0.25), "seat_tube_length": (0.42, 0.62),
+    "chainstay_length": (0.40, 0.48), "bb_drop": (0.03, 0.085), "fork_offset": (0.035, 0.06),
+    "wheel_radius": (0.30, 0.37),
+}
+
+
+def test_round_trip_on_generated_charts(tmp_path):
+    """Property: chart -> keypoints bicycle -> derived chart -> chart bicycle gives the same
+    keypoints (1e-9 m) and the same chart (1e-9 m, 1e-9 deg), on seeded generated charts."""
+    from hypothesis import given, settings
+    from hypothesis import strategies as st
+
+    from bikemass.bicycle.derived_chart import chart_mapping
+
+    @settings(max_examples=12, derandomize=True, deadline=None, database=None)
+    @given(st.fixed_dictionaries({k: st.floats(*r) for k, r in chart_values.items()}))
+    def check(values):
+        chart = {k: f"{v!r} {'deg' if k.endswith('_angle') else 'm'}" for k, v in values.items()}
+        first = _chart_bicycle(tmp_path, chart, "first.yaml")
+        derived = derived_chart(first)
+        second = _chart_bicycle(tmp_path, chart_mapping(derived), "second.yaml")
+        assert first.keypoints.keys() == second.keypoints.keys()
+        for key, point in first.keypoints.items():
+            np.testing.assert_allclose(second.keypoints[key], point, atol=1e-9, err_msg=key)
+        again = derived_chart(second)
+        for key, value in values.items():
+            if key != "wheel_radius":
+                assert derived[key] == pytest.approx(value if "angle" not in key else value, abs=1e-9)
+            assert again.get(key, again["rear_wheel_radius"]) == pytest.approx(
+                derived.get(key, derived["rear_wheel_radius"]), abs=1e-9)
+
+    check()

@@ -9,6 +9,7 @@ keypoints, tubes, components, wheels, a rear-frame beam structure and ``contacts
 """
 
 import copy
+import functools
 
 import numpy as np
 
@@ -34,13 +35,23 @@ FORK_HALF_WIDTH = 0.05
 """m: fork blades either side of the centre plane at the crown and at the axle."""
 HUB_DIAMETER = 0.05
 """m: hub hoop diameter (and the spokes' inner diameter)."""
+MIN_POST = 0.05
+"""m: seat post showing above the seat tube at least, where the default saddle height would leave less."""
 HOOP_THICKNESS = 0.02
 """m: axial thickness of the spoke and rim hoops."""
 
 
 def load_defaults():
     """The chart defaults (``frames/chart_defaults.yaml``) as a :class:`~bikemass.config.Node`."""
-    return load_yaml(frames_dir() / "chart_defaults.yaml")
+    path = frames_dir() / "chart_defaults.yaml"
+    node = _parsed(path, path.stat().st_mtime_ns)
+    return Node(copy.deepcopy(node.value), node.source, node.key)
+
+
+@functools.lru_cache(maxsize=4)
+def _parsed(path, mtime):
+    """The parsed defaults file (kept while the file is unchanged: parsing it dominates a load)."""
+    return load_yaml(path)
 
 
 def _xyz(p, y=0.0):
@@ -216,7 +227,11 @@ def _saddle(chart, points, s):
     """Saddle top point and seat post top (x, height)."""
     sa = chart.seat_tube_angle
     along = np.array([-np.cos(sa), np.sin(sa)])
-    height = _length(s["height"]) if s.has("height") else s["height_per_stack"].number(positive=True) * chart.stack
+    shortest = chart.seat_tube_length + _length(s["stack"]) + MIN_POST
+    if s.has("height"):
+        height = _length(s["height"])
+    else:
+        height = max(s["height_per_stack"].number(positive=True) * chart.stack, shortest)
     post = height - _length(s["stack"])
     if post <= chart.seat_tube_length:
         s.fail(f"a saddle height above the seat tube's top plus the saddle's stack "

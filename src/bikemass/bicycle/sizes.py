@@ -49,7 +49,7 @@ def select_size(node, size):
             node.fail(f"a bicycle with sizes: to pick size {size!r} from (this file has no size run)", "sizes")
         return node
     if size is None:
-        node.fail(f"a size (BIKE@SIZE or --size): one of {', '.join(names)}", "sizes")
+        node.fail(f"a size (BIKE@SIZE, or --size/--bike-size): one of {', '.join(names)}", "sizes")
     if str(size) not in names:
         node.fail(f"one of {', '.join(names)}, got size {size!r}", "sizes")
     index = names.index(str(size))

@@ -4,6 +4,7 @@ benchmark parameters, a side-view drawing, or a 3D model."""
 from pathlib import Path
 
 from .figure_options import add_figure_options, figure_options, write_figure
+from .sizes import add_size_option, every_size
 
 PARAM_FORMATS = ("yaml", "json", "bicycleparameters")
 MODEL_FORMATS = ("glb", "stl", "obj")
@@ -33,7 +34,8 @@ def register(sub):
                         help="print a table of every parameter beside BIKE2's (e.g. jamis vs "
                              "jamis-thesis, the published values) with the differences")
     params.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of stdout")
-    params.set_defaults(run=run_params)
+    add_size_option(params, "--size", "--bike-size")
+    params.set_defaults(run=every_size(run_params))
 
     draw = sub.add_parser("draw", help="side view: parts, body centres of mass, inertia ellipses",
                           description="Side view (x-z plane) of BIKE with an optional rider: every part's "
@@ -42,7 +44,8 @@ def register(sub):
     _bike_and_rider(draw, rider_default="none")
     draw.add_argument("-o", "--output", metavar="FILE", required=True, help="image file (.png, .pdf, .svg)")
     add_figure_options(draw, "x forward, m", "height, m")
-    draw.set_defaults(run=run_draw)
+    add_size_option(draw, "--bike-size")
+    draw.set_defaults(run=every_size(run_draw, many=False))
 
     export = sub.add_parser("export", help="the assembled 3D model (glb, stl, obj)",
                             description="Write the assembled 3D model of BIKE (+ rider) in the benchmark "
@@ -51,7 +54,8 @@ def register(sub):
     _bike_and_rider(export, rider_default="none")
     export.add_argument("-o", "--output", metavar="FILE", required=True,
                         help="model file; the format follows the suffix (.glb, .stl, .obj)")
-    export.set_defaults(run=run_export)
+    add_size_option(export, "--bike-size")
+    export.set_defaults(run=every_size(run_export, many=False))
 
 
 def _bike_and_rider(p, rider_default):

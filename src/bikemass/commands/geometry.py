@@ -14,7 +14,7 @@ def register(sub):
     p.add_argument("bikes", metavar="BIKE", nargs="+",
                    help="shipped bicycle name, bicycle YAML (chart or keypoints) or parameter file; "
                         "BIKE@SIZE picks one size of a size run")
-    p.add_argument("--size", metavar="SIZE", help="the size to report of size-run files (default: every size)")
+    p.add_argument("--size", "--bike-size", dest="size", metavar="SIZE", help="the size to report of size-run files (default: every size)")
     p.add_argument("--format", choices=FORMATS, default="table",
                    help="table (default, mm and deg), csv (mm and deg), json or yaml (m and deg, an object "
                         "keyed by each BIKE as given; a size run: by size within it)")

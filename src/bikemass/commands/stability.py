@@ -1,6 +1,7 @@
 """``bikemass eig`` and ``bikemass stability``: eigenvalues over speed, critical speeds, stable ranges."""
 
 from .figure_options import add_figure_options, figure_options, write_figure
+from .sizes import add_size_option, every_size
 
 EIG_FORMATS = ("table", "csv", "json")
 SPEED_LIMIT = "speed, m/s"
@@ -16,7 +17,8 @@ def register(sub):
     eig.add_argument("--format", choices=EIG_FORMATS, default=None,
                      help="table (default; not printed when only --plot is given), csv or json")
     add_figure_options(eig, SPEED_LIMIT, "real parts, 1/s")
-    eig.set_defaults(run=run_eig)
+    add_size_option(eig, "--bike-size")
+    eig.set_defaults(run=every_size(run_eig))
 
     stab = sub.add_parser(
         "stability", help="weave and capsize speeds, stable speed ranges (strict and marginal)",
@@ -29,7 +31,8 @@ def register(sub):
                            "stable (default 2.0, as the thesis)")
     stab.add_argument("--format", choices=STABILITY_FORMATS, default="table", help="table (default) or json")
     add_figure_options(stab, SPEED_LIMIT, "real parts, 1/s")
-    stab.set_defaults(run=run_stability)
+    add_size_option(stab, "--bike-size")
+    stab.set_defaults(run=every_size(run_stability))
 
     comp = sub.add_parser(
         "compare", help="several riders and/or stiffnesses compared by their weave and capsize speeds",

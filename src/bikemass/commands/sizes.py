@@ -1,0 +1,60 @@
+"""Size runs on the command line: pick one size (``BIKE@SIZE`` or an option) or run every size.
+
+:func:`every_size` wraps a command's ``run(args)``: for a size-run BIKE without a size it
+runs once per size and joins the outputs, JSON/YAML as one object keyed by size, text
+under a ``size NAME`` heading each.
+"""
+
+import contextlib
+import io
+from copy import copy
+
+DATA_FORMATS = ("json", "yaml")
+
+
+def add_size_option(parser, *flags):
+    """Add the size option (``flags``, e.g. ``--size``/``--bike-size``) to ``parser``."""
+    parser.add_argument(*flags, dest="bike_size", metavar="SIZE",
+                        help="size of a size-run bicycle file (default: every size; same as BIKE@SIZE)")
+
+
+def every_size(run, many=True):
+    """``run`` for one bicycle, or once per size of a size run with the outputs joined
+    (``many=False``: the size must be picked)."""
+    def wrapped(args):
+        from ..bicycle.loader import bicycle_sizes
+        from ..errors import InputError
+        from ..output import dumps, write_atomic
+
+        if args.bike_size is not None:
+            args.bike = f"{args.bike}@{args.bike_size}"
+            return run(args)
+        sizes = bicycle_sizes(args.bike) if many else ()
+        if not sizes:
+            return run(args)
+        fmt = getattr(args, "format", "table")
+        if getattr(args, "plot", None) or getattr(args, "compare", None) or fmt not in DATA_FORMATS + ("table",):
+            raise InputError(args.bike, "sizes", f"one size (BIKE@SIZE or --bike-size) for this output: "
+                                                 f"one of {', '.join(sizes)}")
+        outputs = {}
+        for size in sizes:
+            one = copy(args)
+            one.bike, one.output = f"{args.bike}@{size}", None
+            buffer = io.StringIO()
+            with contextlib.redirect_stdout(buffer):
+                run(one)
+            outputs[size] = buffer.getvalue()
+        if fmt in DATA_FORMATS:
+            import json
+
+            import yaml
+            load = json.loads if fmt == "json" else yaml.safe_load
+            text = dumps({size: load(out) for size, out in outputs.items()}, fmt)
+        else:
+            text = "\n".join(f"size {size}\n{out}" for size, out in outputs.items())
+        if args.output:
+            write_atomic(args.output, text)
+        else:
+            print(text, end="")
+        return 0
+    return wrapped
