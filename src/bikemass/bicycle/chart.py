@@ -121,7 +121,8 @@ def read_chart(node):
         node.fail(f"a chainstay longer than the bb_drop {v['bb_drop'] * 1000:.1f} mm "
                   f"(got {v['chainstay_length'] * 1000:.1f} mm)", "chainstay_length")
     radius, tire = _wheel(node, units)
-    checks = tuple((k, _value(node[k], "length", units)) for k in CHECKED_KEYS if node.has(k))
+    checks = tuple((k, _value(node[k], "length", units)) for k in CHECKED_KEYS
+                   if node.has(k) and not node[k].missing)     # null: not published (for this size)
     tolerances = {}
     if node.has("tolerances"):
         t = node["tolerances"]
