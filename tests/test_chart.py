@@ -264,3 +264,49 @@ def test_round_trip_on_generated_charts(tmp_path):
                 derived.get(key, derived["rear_wheel_radius"]), abs=1e-9)
 
     check()
+
+
+def _docs_yaml_after(heading):
+    text = (ROOT / "docs" / "bicycles.md").read_text()
+    block = text.split(heading, 1)[1].split("```yaml\n", 1)[1].split("```", 1)[0]
+    return yaml.safe_load(block)
+
+
+def test_docs_examples_load(tmp_path):
+    """The chart example and the overrides example of docs/bicycles.md build bicycles."""
+    example = _docs_yaml_after("## Geometry charts")
+    path = tmp_path / "example.yaml"
+    path.write_text(yaml.safe_dump(example))
+    bike = load_bicycle(str(path))
+    assert bike.geometry.wheelbase == pytest.approx(1.0078, abs=1e-4)
+    overrides = _docs_yaml_after("### Defaults and how to override them")
+    overrides["materials"] = {"my_alloy": {"E": "72 GPa", "nu": 0.33, "density": "2.8 g/cm^3"}}
+    path.write_text(yaml.safe_dump({**example, **overrides}))
+    custom = load_bicycle(str(path))
+    assert "bar_ends" in custom.contacts.grips and "pedals" not in {p.name for p in custom.parts}
+    assert {t.material.key for t in custom.tubes if t.name == "down_tube"} == {"my_alloy"}
+
+
+def test_docs_tables_hold_the_defaults():
+    """The tubeset, wheel and component tables of docs/bicycles.md list chart_defaults.yaml."""
+    text = (ROOT / "docs" / "bicycles.md").read_text()
+    d = yaml.safe_load((ROOT / "frames" / "chart_defaults.yaml").read_text())
+    for name, tubeset in d["tubesets"].items():
+        row = next(line for line in text.splitlines() if line.startswith(f"| `{name}` |"))
+        for spec in tubeset["sections"].values():
+            assert f"{spec['outer_diameter'].split()[0]} x {spec['wall'].split()[0]}" in row
+    for bsd, wheel in d["wheels"]["sizes"].items():
+        row = next(line for line in text.splitlines() if line.startswith(f"| {bsd} |"))
+        assert all(wheel[k].split()[0] in row for k in ("rim", "spokes", "tire", "reference_width"))
+    for name, component in d["components"].items():
+        row = next(line for line in text.splitlines() if line.startswith(f"| `{name}` |"))
+        assert component["mass"].split()[0] in row
+
+
+def test_geometry_plot_and_quiet(tmp_path, capsys):
+    path = tmp_path / "chart.svg"
+    assert main(["geometry", "bmc-roadmachine", "--size", "56", "--plot", str(path), "--quiet"]) == 0
+    assert capsys.readouterr().out == "" and "stack 590" in path.read_text()
+    assert main(["geometry", "jamis", "--format", "csv"]) == 0
+    rows = {r.split(",")[0]: r.split(",") for r in capsys.readouterr().out.splitlines()}
+    assert rows["wheelbase"][1:] == ["mm", "988.000"]

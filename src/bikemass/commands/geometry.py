@@ -14,7 +14,7 @@ def register(sub):
     p.add_argument("bikes", metavar="BIKE", nargs="+",
                    help="shipped bicycle name, bicycle YAML (chart or keypoints) or parameter file; "
                         "BIKE@SIZE picks one size of a size run")
-    p.add_argument("--size", "--bike-size", dest="size", metavar="SIZE", help="the size to report of size-run files (default: every size)")
+    p.add_argument("--size", "--bike-size", dest="bike_size", metavar="SIZE", help="the size to report of size-run files (default: every size)")
     p.add_argument("--format", choices=FORMATS, default="table",
                    help="table (default, mm and deg), csv (mm and deg), json or yaml (m and deg, an object "
                         "keyed by each BIKE as given; a size run: by size within it)")
@@ -80,7 +80,7 @@ def run_geometry(args):
         raise InputError("--plot", args.plot, "one BIKE to draw (got several)")
     if args.plot:
         _plot(args)
-    result = charts(args.bikes, args.size)
+    result = charts(args.bikes, args.bike_size)
     if args.format in ("json", "yaml"):
         text = dumps(result, args.format)
     else:
@@ -100,7 +100,7 @@ def _plot(args):
 
     options = figure_options(args, args.plot)
     bike = args.bikes[0]
-    sizes = bicycle_sizes(bike) if args.size is None else ()
+    sizes = bicycle_sizes(bike) if args.bike_size is None else ()
     if sizes:
         raise InputError(bike, "--size", f"one size to draw: one of {', '.join(sizes)}")
-    write_figure(draw_chart(load_bicycle(bike, args.size)), args.plot, options)
+    write_figure(draw_chart(load_bicycle(bike, args.bike_size)), args.plot, options)
