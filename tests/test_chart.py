@@ -202,8 +202,8 @@ def test_params_every_size_or_one(capsys):
 
 
 def test_draw_shows_the_chart_dimensions(tmp_path):
-    from bikemass.bicycle.chart_drawing import draw_chart
-    fig = draw_chart(load_bicycle("bmc-roadmachine@56"))
+    from bikemass.bicycle.chart_drawing import plot_chart
+    fig = plot_chart(load_bicycle("bmc-roadmachine@56"))
     texts = {t.get_text() for t in fig.axes[0].texts}
     assert {"stack 590", "reach 388", "wheelbase 1008", "trail 63", "72.0°", "74.2°"} <= texts
     assert main(["draw", "bmc-roadmachine@56", "-o", str(tmp_path / "side.png")]) == 0
@@ -310,3 +310,12 @@ def test_geometry_plot_and_quiet(tmp_path, capsys):
     assert main(["geometry", "jamis", "--format", "csv"]) == 0
     rows = {r.split(",")[0]: r.split(",") for r in capsys.readouterr().out.splitlines()}
     assert rows["wheelbase"][1:] == ["mm", "988.000"]
+
+
+def test_python_api_example_prints_what_the_docs_say(capsys):
+    text = (ROOT / "docs" / "bicycles.md").read_text()
+    block = text.split("Geometry charts from Python", 1)[1].split("```python\n", 1)[1].split("```", 1)[0]
+    exec(compile(block, "docs/bicycles.md", "exec"), {})
+    printed = [float(x) for x in capsys.readouterr().out.split()]
+    claimed = [float(x) for x in block.split("# ", 1)[1].split()]
+    np.testing.assert_allclose(printed, claimed, atol=1e-4)

@@ -29,7 +29,7 @@ _API = {
     "pose_rider": "posing", "PosedRider": "posing",
     "plot_eigenvalues": "plots.stability", "plot_critical_speeds": "plots.critical_speeds",
     "plot_side_view": "bicycle.drawing", "plot_pose": "plots.pose", "plot_frame_modes": "fe.plot",
-    "save_figure": "plots.figure",
+    "save_figure": "plots.figure", "geometry_chart": "bicycle.derived_chart", "plot_chart": "bicycle.chart_drawing",
     "Combine": "choices", "Method": "choices", "Overlap": "choices", "Procedure": "choices",
     "Beam": "choices", "Source": "choices", "Support": "choices", "MaterialName": "choices",
     "Grip": "choices", "EigenPart": "choices", "Format": "choices",

@@ -2,7 +2,7 @@
 
 :func:`annotate_chart` adds the dimension lines of :func:`~.derived_chart.derived_chart` to
 any matplotlib axes showing the bicycle side on (``bikemass draw`` of a chart bicycle);
-:func:`draw_chart` makes a figure of the frame's centre lines, the wheels and the
+:func:`plot_chart` makes a figure of the frame's centre lines, the wheels and the
 dimensions (``bikemass geometry --plot``, the figure of docs/bicycles.md).
 """
 
@@ -74,7 +74,7 @@ def annotate_chart(ax, bicycle):
     return chart
 
 
-def draw_chart(bicycle, title=None, size=None):
+def plot_chart(bicycle, title=None, size=None):
     """Figure: frame centre lines, wheels, steer axis and the chart's dimensions (m, height up)."""
     from ..plots.figure import new_figure
 

@@ -93,7 +93,7 @@ def run_geometry(args):
 
 
 def _plot(args):
-    from ..bicycle.chart_drawing import draw_chart
+    from ..bicycle.chart_drawing import plot_chart
     from ..bicycle.loader import bicycle_sizes, load_bicycle
     from ..errors import InputError
     from .figure_options import figure_options, write_figure
@@ -103,4 +103,4 @@ def _plot(args):
     sizes = bicycle_sizes(bike) if args.bike_size is None else ()
     if sizes:
         raise InputError(bike, "--size", f"one size to draw: one of {', '.join(sizes)}")
-    write_figure(draw_chart(load_bicycle(bike, args.bike_size)), args.plot, options)
+    write_figure(plot_chart(load_bicycle(bike, args.bike_size)), args.plot, options)
