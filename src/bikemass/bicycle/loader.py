@@ -75,8 +75,10 @@ def bicycle_sizes(name_or_path):
     name, at_size = split_size(name_or_path)
     if at_size is not None:
         return ()
-    node = load_yaml(resolve(name, frames_dir(), "bicycle"))
-    return size_names(node)
+    path = resolve(name, frames_dir(), "bicycle")
+    if _is_parameter_text(path):
+        return ()
+    return size_names(load_yaml(path))
 
 
 def _read_any(node, source, size=None):
