@@ -129,3 +129,17 @@ def test_uploads_load_or_give_one_line(tmp_path):
         with pytest.raises(InputError) as err:
             engine.add_upload(filename, content)
         assert fragment in str(err.value) and "\n" not in str(err.value)
+
+
+def test_chart_edits_and_sizes_rebuild_the_bicycle(client):
+    """A head angle typed over the BMC's chart tilts the steer axis by exactly that angle."""
+    base = client.get("/api/params?bike=bmc-roadmachine&size=56&rider=none").get_json()
+    edited = client.get("/api/params?bike=bmc-roadmachine&size=56&rider=none&chart.head_tube_angle=70.5").get_json()
+    assert base["lam"] == pytest.approx(np.radians(90 - 72), abs=1e-12)
+    assert edited["lam"] == pytest.approx(np.radians(90 - 70.5), abs=1e-12)
+    assert edited["c"] > base["c"]            # slacker head, same offset: more trail
+    small = client.get("/api/params?bike=bmc-roadmachine&size=47&rider=none").get_json()
+    assert small["w"] < base["w"]
+    reply = client.get("/api/params?bike=jamis&rider=none&chart.stack=600")
+    assert reply.status_code == 400 and "chart" in reply.get_json()["error"]
+    assert client.get("/api/params?bike=bmc-roadmachine&chart.reach=abc").status_code == 400

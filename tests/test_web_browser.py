@@ -101,7 +101,7 @@ def test_a_url_opens_its_configuration_and_a_change_updates_the_speeds(server, b
     text = browser.find_element(By.ID, "weave-speed").text
     assert text.split()[1] == "m/s" and len(text.split()[0].split(".")[1]) >= 3
 
-    trail = browser.find_element(By.XPATH, """//input[@id='{"name":"c","type":"param"}']""")
+    trail = browser.find_element(By.XPATH, """//input[@id='{"key":"c","type":"param"}']""")
     trail.click()
     trail.send_keys("0.09", Keys.ENTER)
     changed = _number_in(browser, "weave-speed", differs_from=shown)

@@ -49,8 +49,13 @@ def download(engine, filename, state):
     elif filename == "eigenvalues.csv":
         from ..commands.stability import eig_table
         text = eig_table(engine.evaluate(state).stability.modes, csv=True)
+    elif filename == "bicycle.yaml" and state.chart:
+        import yaml
+
+        from .engine import edited_chart
+        text = yaml.safe_dump(edited_chart(engine.source(state.bike), dict(state.chart)), sort_keys=False)
     elif filename == "bicycle.yaml":
-        text = _source_text(engine.bicycle(state.bike).source)
+        text = _source_text(engine.bicycle(state.bicycle_key).source)
     else:
         rider = engine.rider(state.rider)
         if rider is None:

@@ -66,7 +66,7 @@ class Engine:
         _check_references(path)
         self._uploads[name] = path
         try:
-            self.bicycle(name)
+            self.bicycle((name, "", ()))
         except InputError:
             del self._uploads[name]
             raise
@@ -86,23 +86,42 @@ class Engine:
             raise InputError("URL", "bike", "a shipped bicycle name (paths are not accepted)")
         return bike
 
-    def _bicycle(self, bike):
-        from .. import catalog
-        return catalog.load_bicycle(self.source(bike))
+    def sizes(self, bike):
+        """The size names of ``bike``'s size run, ``()`` if it has none."""
+        from ..bicycle.loader import bicycle_sizes
+        return bicycle_sizes(self.source(bike))
+
+    def is_chart(self, bike):
+        """True if ``bike`` is written as a geometry chart (so the page can edit its chart)."""
+        from ..config import load_yaml
+        from ..paths import frames_dir, resolve
+
+        path = resolve(self.source(bike), frames_dir(), "bicycle")
+        return path.suffix != ".txt" and load_yaml(path).has("chart")
+
+    def _bicycle(self, key):
+        """The bicycle of a :attr:`PageState.bicycle_key`: ``(bike, size, chart edits)``."""
+        from ..catalog import load_bicycle
+
+        bike, size, chart = key
+        size = size or None
+        if not chart:
+            return load_bicycle(self.source(bike), size=size)
+        return load_bicycle(edited_chart(self.source(bike), dict(chart)), size=size)
 
     def _rider(self, rider):
-        from .. import catalog
+        from ..catalog import load_rider
         if "/" in rider or "\\" in rider or rider.startswith("."):
             raise InputError("URL", "rider", "a shipped pose name (paths are not accepted)")
-        return catalog.load_rider(rider)
+        return load_rider(rider)
 
-    def _base_parameters(self, bike, rider, combine):
-        from ..bicycle import bicycle_parameters
-        return bicycle_parameters(self.bicycle(bike), self.rider(rider), combine, "mesh")
+    def _base_parameters(self, key, rider, combine):
+        from ..catalog import parameters
+        return parameters(self.bicycle(key), self.rider(rider), combine)
 
-    def _stiffness(self, bike, material):
-        from .. import catalog
-        return catalog.stiffness(self.source(bike), material)
+    def _stiffness(self, key, material):
+        from ..catalog import stiffness
+        return stiffness(self.bicycle(key), material)
 
     def warm(self, states=(PageState(),)):
         """Compute ``states`` (and so import what they need) ahead of the first request."""
@@ -115,16 +134,41 @@ class Engine:
     # -- results --------------------------------------------------------------
     def parameters(self, state: PageState):
         """The benchmark parameter set of ``state``, typed-over values applied."""
-        base = self.base_parameters(state.bike, state.rider, state.combine)
+        base = self.base_parameters(state.bicycle_key, state.rider, state.combine)
         return base.replace(**dict(state.overrides)) if state.overrides else base
 
     def evaluate(self, state: PageState, speeds=None):
         """:class:`Evaluation` of ``state`` over ``speeds`` (default grid)."""
-        from ..stability import canonical_matrices, stability, with_frame_stiffness
+        from ..dynamics import stability
 
         params = self.parameters(state)
-        S = self.stiffness(state.bike, state.stiffness)
-        return Evaluation(params, S, stability(with_frame_stiffness(canonical_matrices(params), S), speeds))
+        S = self.stiffness(state.bicycle_key, state.stiffness)
+        return Evaluation(params, S, stability(params, S, speeds))
+
+
+def edited_chart(source, edits):
+    """The mapping of chart bicycle ``source`` with ``edits`` (``{key: mm or deg}``) typed over
+    its chart; the published redundant values (wheelbase, trail, ...) are dropped, since they
+    describe the unedited frame."""
+    import copy
+
+    from ..bicycle.chart import CHECKED_KEYS
+    from ..config import load_yaml
+    from ..paths import frames_dir, resolve
+    from .state import CHART_ANGLES
+
+    path = resolve(source, frames_dir(), "bicycle")
+    node = load_yaml(path)
+    if not node.has("chart"):
+        node.fail("a geometry chart (chart:) to edit; this bicycle is given by keypoints or parameters",
+                  "chart")
+    mapping = copy.deepcopy(node.mapping())
+    chart = {k: v for k, v in mapping["chart"].items() if k not in CHECKED_KEYS}
+    for key, value in edits.items():
+        chart[key] = f"{value!r} {'deg' if key in CHART_ANGLES else 'mm'}"
+    mapping["chart"] = chart
+    mapping.setdefault("name", path.stem)
+    return mapping
 
 
 def _check_references(path):

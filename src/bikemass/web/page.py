@@ -11,7 +11,8 @@ import io
 from ..errors import InputError
 from ..parameters import DESCRIPTIONS, NAMES
 from .api import DOWNLOADS
-from .state import COMBINE_CHOICES, STIFFNESS_CHOICES, PageState
+from .engine import UPLOAD_LIMIT
+from .state import CHART_ANGLES, CHART_KEYS, STIFFNESS_CHOICES, PageState
 
 STYLE = """
 body { font-family: system-ui, sans-serif; margin: 0; color: #222; background: #fafafa; }
@@ -79,13 +80,16 @@ def _layout(query):
     except InputError as exc:
         state, error = PageState(), str(exc)
     bikes, riders = _shipped()
-    bike_options = bikes + [b for b in [state.bike] if b not in bikes]
-    overrides = dict(state.overrides)
+    chart, overrides = dict(state.chart), dict(state.overrides)
     controls = html.Div(className="controls", children=[
         html.Label("Bicycle", htmlFor="bike"),
-        dcc.Dropdown(id="bike", options=bike_options, value=state.bike, clearable=False),
+        dcc.Dropdown(id="bike", options=bikes + [b for b in [state.bike] if b not in bikes],
+                     value=state.bike, clearable=False),
         dcc.Upload(id="upload", children=html.A("or upload a bicycle file (YAML, chart, BicycleParameters)"),
-                   max_size=1_000_000, style={"fontSize": "12px", "cursor": "pointer"}),
+                   max_size=UPLOAD_LIMIT, style={"fontSize": "12px", "cursor": "pointer"}),
+        html.Label("Size", htmlFor="size"),
+        dcc.Dropdown(id="size", options=[state.size] if state.size else [], value=state.size or None,
+                     placeholder="one size only"),
         html.Label("Rear-frame stiffness", htmlFor="stiffness"),
         dcc.Dropdown(id="stiffness", options=list(STIFFNESS_CHOICES), value=state.stiffness, clearable=False),
         html.Label("Rider", htmlFor="rider"),
@@ -94,14 +98,10 @@ def _layout(query):
         dcc.RadioItems(id="combine", value=state.combine, inline=True, options=[
             {"label": " parallel-axis (exact) ", "value": "exact"},
             {"label": " thesis Eq. 3.6", "value": "thesis"}]),
-        html.Details(open=True, children=[
-            html.Summary("Benchmark parameters: type a value to override, empty = computed"),
-            html.Table(className="params", children=[
-                html.Tr([html.Td(name, title=DESCRIPTIONS[name]),
-                         html.Td(dcc.Input(id={"type": "param", "name": name}, type="text", debounce=True,
-                                           value=_shown(overrides.get(name)), inputMode="decimal")),
-                         html.Td(DESCRIPTIONS[name].split("[")[-1].rstrip("]"))])
-                for name in NAMES])]),
+        _editor("Geometry chart (chart bicycles): type a value to change the frame", "chart", CHART_KEYS,
+                chart, lambda k: "deg" if k in CHART_ANGLES else "mm", lambda k: k.replace("_", " ")),
+        _editor("Benchmark parameters: type a value to override, empty = computed", "param", NAMES,
+                overrides, lambda k: DESCRIPTIONS[k].split("[")[-1].rstrip("]"), lambda k: k),
     ])
     results = html.Div(className="results", children=[
         html.Div(id="error", className="error", children=error),
@@ -109,40 +109,55 @@ def _layout(query):
             _number("weave speed", "weave-speed"), _number("capsize speed", "capsize-speed"),
             _number("stable speeds", "stable-range"), _number("total mass", "total-mass")])),
         html.Div(className="grid2", children=[
-            html.Div(className="figure", children=dcc.Loading(html.Img(id="eig-figure", alt="eigenvalues"))),
-            html.Div(className="figure", children=dcc.Loading(html.Img(id="side-view", alt="side view")))]),
+            _panel("Eigenvalues against speed", dcc.Loading(html.Img(id="eig-figure", alt="eigenvalues"))),
+            _panel("Side view", dcc.Loading(html.Img(id="side-view", alt="side view")))]),
         html.Div(className="grid2", children=[
-            html.Div(className="figure", children=[html.H4("Frame stiffness S (N m/rad)"),
-                                                    html.Pre(id="stiffness-matrix")]),
-            html.Div(className="figure", children=[html.H4("Downloads"),
-                                                    html.Div(id="downloads", className="downloads")])]),
+            _panel("Bodies (benchmark frame: x forward, z down; principal inertias)", html.Div(id="bodies")),
+            _panel("Geometry (as built)", html.Div(id="geometry"))]),
+        html.Div(className="grid2", children=[
+            _panel("Rear-frame stiffness S (N m/rad)", html.Pre(id="stiffness-matrix")),
+            _panel("Downloads", html.Div(id="downloads", className="downloads"))]),
     ])
     return html.Div([
         dcc.Location(id="url", refresh=False),
-        dcc.Store(id="uploaded"),
         html.Header([html.H1("bikemass"), html.Span("a bicycle and its rider: parameters and stability")]),
         html.Div(className="columns", children=[controls, results]),
     ])
+
+
+def _editor(summary, kind, keys, values, unit, label):
+    """A table of text inputs ``{"type": kind, "key": key}``, empty = the computed value."""
+    from dash import dcc, html
+    return html.Details(open=True, children=[
+        html.Summary(summary),
+        html.Table(className="params", children=[
+            html.Tr([html.Td(label(key)),
+                     html.Td(dcc.Input(id={"type": kind, "key": key}, type="text", debounce=True,
+                                       value=_shown(values.get(key)), inputMode="decimal",
+                                       style={"width": "130px"})),
+                     html.Td(unit(key))]) for key in keys])])
+
+
+def _panel(title, content):
+    from dash import html
+    return html.Div(className="figure", children=[html.H4(title), content])
 
 
 def _shown(value):
     return "" if value is None else repr(value)
 
 
-def _parse_overrides(values):
-    """``{name: float or None}`` from the typed texts; InputError names a bad one."""
+def _parse(keys, texts, prefix=""):
+    """``{key: float or None}`` from typed texts (empty = None); InputError names a bad one."""
     from .state import SOURCE
 
     out = {}
-    for name, text in zip(NAMES, values):
+    for key, text in zip(keys, texts):
         text = (text or "").strip()
-        if not text:
-            out[name] = None
-            continue
         try:
-            out[name] = float(text)
+            out[key] = float(text) if text else None
         except ValueError:
-            raise InputError(SOURCE, name, f"a number in SI units ({DESCRIPTIONS[name]})") from None
+            raise InputError(SOURCE, prefix + key, "a number") from None
     return out
 
 
@@ -166,11 +181,44 @@ def _svg_uri(fig):
     return "data:image/svg+xml;base64," + base64.b64encode(buffer.getvalue()).decode()
 
 
-def _callbacks(app, engine):
-    from dash import ALL, Input, Output, State, ctx, no_update
+def _html_table(headers, rows):
+    from dash import html
+    return html.Table(className="params", children=[html.Tr([html.Th(h) for h in headers])]
+                      + [html.Tr([html.Td(c) for c in row]) for row in rows])
 
-    @app.callback(Output("bike", "options"), Output("bike", "value"), Output("error", "children",
-                                                                              allow_duplicate=True),
+
+def _bodies_table(p):
+    """Mass, CoM and principal moments of inertia of the four benchmark bodies."""
+    import numpy as np
+
+    com = {"R": (0.0, -p.rR), "B": (p.xB, p.zB), "H": (p.xH, p.zH), "F": (p.w, -p.rF)}
+    names = {"R": "rear wheel", "B": "rear frame (+ rider)", "H": "front frame", "F": "front wheel"}
+    rows = []
+    for body in "RBHF":
+        moments = np.linalg.eigvalsh(p.inertia(body))
+        rows.append([names[body], f"{getattr(p, 'm' + body):.3f}", f"{com[body][0]:.3f}", f"{com[body][1]:.3f}",
+                     "  ".join(f"{m:.4f}" for m in moments)])
+    return _html_table(["body", "mass (kg)", "x (m)", "z (m)", "principal I (kg m^2)"], rows)
+
+
+def _geometry_table(chart):
+    from ..bicycle.derived_chart import ANGLES, CHART_ORDER
+    rows = [[key.replace("_", " "), f"{chart[key]:.1f} deg" if key in ANGLES else f"{1000 * chart[key]:.1f} mm"]
+            for key in CHART_ORDER if chart.get(key) is not None]
+    return _html_table(["quantity", "value"], rows)
+
+
+def _state(bike, size, rider, stiffness, combine, chart_texts, param_texts):
+    state = PageState(bike=bike, size=size or "", rider=rider, stiffness=stiffness, combine=combine)
+    state = state.with_chart(_parse(CHART_KEYS, chart_texts, "chart."))
+    return state.with_overrides(_parse(NAMES, param_texts))
+
+
+def _callbacks(app, engine):
+    from dash import ALL, Input, Output, State, ctx, html, no_update
+
+    @app.callback(Output("bike", "options"), Output("bike", "value"),
+                  Output("error", "children", allow_duplicate=True),
                   Input("upload", "contents"), State("upload", "filename"), State("bike", "options"),
                   prevent_initial_call=True)
     def upload(contents, filename, options):
@@ -184,45 +232,73 @@ def _callbacks(app, engine):
         label = {"label": f"{engine.upload_label(name)} (uploaded)", "value": name}
         return [o for o in options if o != name] + [label], name, ""
 
+    @app.callback(Output("size", "options"), Output("size", "value"), Output("size", "disabled"),
+                  Output({"type": "chart", "key": ALL}, "value"), Output({"type": "param", "key": ALL}, "value"),
+                  Input("bike", "value"), State("size", "value"))
+    def bike_changed(bike, size):
+        try:
+            sizes = list(engine.sizes(bike))
+        except InputError:
+            sizes = []
+        if ctx.triggered_id is None:      # the page opened: keep what the URL said
+            return sizes, size if size in sizes else (sizes[0] if sizes else None), not sizes, \
+                [no_update] * len(CHART_KEYS), [no_update] * len(NAMES)
+        return sizes, sizes[0] if sizes else None, not sizes, [""] * len(CHART_KEYS), [""] * len(NAMES)
+
     @app.callback(Output("weave-speed", "children"), Output("capsize-speed", "children"),
                   Output("stable-range", "children"), Output("total-mass", "children"),
                   Output("eig-figure", "src"), Output("stiffness-matrix", "children"),
+                  Output("bodies", "children"), Output("geometry", "children"),
                   Output("downloads", "children"), Output("url", "search"),
-                  Output({"type": "param", "name": ALL}, "placeholder"),
+                  Output({"type": "param", "key": ALL}, "placeholder"),
+                  Output({"type": "chart", "key": ALL}, "placeholder"),
+                  Output({"type": "chart", "key": ALL}, "disabled"),
                   Output("error", "children"),
-                  Input("bike", "value"), Input("rider", "value"), Input("stiffness", "value"),
-                  Input("combine", "value"), Input({"type": "param", "name": ALL}, "value"))
-    def update(bike, rider, stiffness, combine, values):
-        from dash import html
+                  Input("bike", "value"), Input("size", "value"), Input("rider", "value"),
+                  Input("stiffness", "value"), Input("combine", "value"),
+                  Input({"type": "chart", "key": ALL}, "value"), Input({"type": "param", "key": ALL}, "value"))
+    def update(bike, size, rider, stiffness, combine, chart_texts, param_texts):
+        from ..bicycle.derived_chart import derived_chart
 
-        state = PageState(bike=bike, rider=rider, stiffness=stiffness, combine=combine)
-        blank = ("-",) * 4 + ("", "", [], no_update, [None] * len(NAMES))
+        blank = ("-",) * 4 + ("", "", "", "", [], no_update, [""] * len(NAMES), [""] * len(CHART_KEYS),
+                 [False] * len(CHART_KEYS))
         try:
-            state = state.with_overrides(_parse_overrides(values))
+            state = _state(bike, size, rider, stiffness, combine, chart_texts, param_texts)
             evaluation = engine.evaluate(state)
-            base = engine.base_parameters(state.bike, state.rider, state.combine).to_dict()
+            base = engine.base_parameters(state.bicycle_key, state.rider, state.combine).to_dict()
+            bicycle = engine.bicycle(state.bicycle_key)
         except InputError as exc:
             return blank + (str(exc),)
-        result, p = evaluation.stability, evaluation.parameters
-        figure = _eigenvalue_figure(result, state)
-        S = evaluation.stiffness
+        chart = derived_chart(bicycle)
+        editable = engine.is_chart(state.bike)
+        result, p, S = evaluation.stability, evaluation.parameters, evaluation.stiffness
         matrix = "rigid (infinite)" if S is None else "\n".join("  ".join(f"{x:12.1f}" for x in row) for row in S)
         query = state.to_query()
         links = [html.A(DOWNLOADS[name][1], href=f"/download/{name}?{query}", download="")
                  for name in DOWNLOADS if name != "pose.yaml" or state.rider != "none"]
-        mass = p.mB + p.mH + p.mR + p.mF
+        shown = [_placeholder(k, chart.get(k)) if editable else "" for k in CHART_KEYS]
         message = no_update if ctx.triggered_id is None else ""
         return (_speed_text(result.weave_speeds, "weave"), _speed_text(result.capsize_speeds, "capsize"),
-                _range_text(result.ranges["strict"]["exact"]), f"{mass:.2f} kg", _svg_uri(figure), matrix,
-                links, "?" + query, [f"{base[n]:.6g}" for n in NAMES], message)
+                _range_text(result.ranges["strict"]["exact"]), f"{p.mB + p.mH + p.mR + p.mF:.2f} kg",
+                _svg_uri(_eigenvalue_figure(result, state)), matrix, _bodies_table(p), _geometry_table(chart),
+                links, "?" + query, [f"{base[n]:.6g}" for n in NAMES], shown,
+                [not editable] * len(CHART_KEYS), message)
 
-    @app.callback(Output("side-view", "src"), Input("bike", "value"), Input("rider", "value"))
-    def side_view(bike, rider):
+    @app.callback(Output("side-view", "src"), Input("bike", "value"), Input("size", "value"),
+                  Input("rider", "value"), Input({"type": "chart", "key": ALL}, "value"))
+    def side_view(bike, size, rider, chart_texts):
         try:
-            return _svg_uri(_side_view_figure(engine.bicycle(bike), engine.rider(rider)))
+            state = _state(bike, size, rider, "infinite", "exact", chart_texts, [""] * len(NAMES))
+            return _svg_uri(_side_view_figure(engine.bicycle(state.bicycle_key), engine.rider(rider)))
         except InputError:
             return ""
 
+
+def _placeholder(key, value):
+    """A derived chart value as the editor shows it: mm, or degrees for angles."""
+    if value is None:
+        return ""
+    return f"{value:.2f}" if key in CHART_ANGLES else f"{1000 * value:.1f}"
 
 
 def _eigenvalue_figure(result, state):
