@@ -120,6 +120,10 @@ def test_uploads_load_or_give_one_line(tmp_path):
     derived = engine.add_upload("derived.yaml", b"base: jamis\nname: my jamis\n")
     assert engine.parameters(PageState(bike=derived, rider="none")).w == pytest.approx(
         engine.parameters(PageState(bike="jamis", rider="none")).w)
+    exported = create_app().server.test_client().get("/download/Benchmark.txt?bike=jamis&rider=relaxed").data
+    measured = engine.add_upload("JamisBenchmark.txt", exported)
+    assert engine.parameters(PageState(bike=measured, rider="none")).to_dict() == pytest.approx(
+        engine.parameters(PageState(bike="jamis", rider="relaxed")).to_dict(), rel=1e-15)
     for filename, content, fragment in [
             ("escape.yaml", b"base: /etc/passwd\n", "shipped bicycle"),
             ("up.yaml", b"base: ../../frames/jamis.yaml\n", "shipped bicycle"),
