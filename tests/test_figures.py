@@ -171,3 +171,68 @@ def test_compare_figure_shows_each_configurations_speeds(tmp_path, capsys):
     assert [tuple(np.round(line.get_xdata(), 2)) for line in bars] == [(5.68, 10.38), (5.83, 8.35)]
     assert [t.get_text() for t in ax.get_yticklabels()] == ["relaxed"]
     assert {"10.38", "8.35"} <= {t.get_text() for t in ax.texts}
+
+
+def test_frame_modes_figure_shows_supports_views_and_mode_types():
+    import numpy as np
+    from bikemass.fe import frame_modes
+    from bikemass.fe.plot import classify, clamped_nodes, plot_frame_modes
+    from bikemass.frame import frame_structure
+    structure = frame_structure("jamis")
+    modes = frame_modes(structure, "fix-rear", 3)
+    dropouts = sorted(modes.mesh.keypoint_nodes[k] for k in structure.dropouts)
+    assert list(clamped_nodes(modes)) == dropouts
+    fig = plot_frame_modes(modes)
+    assert len(fig.axes) == 6                                   # side and top view per mode
+    assert [ax.get_title(loc="left").split(", ")[-1] for ax in fig.axes[::2]] == [
+        classify(modes.shapes[:, i].reshape(-1, 6)) for i in range(3)]
+    assert "in-plane bending" in fig.axes[0].get_title(loc="left")      # the Jamis's first fix-rear mode
+    assert "lateral" in fig.axes[2].get_title(loc="left")
+    assert all(ax.get_xlabel() or i < 4 for i, ax in enumerate(fig.axes))
+    markers = [line for line in fig.axes[0].lines if line.get_marker() == "^"]
+    assert len(markers[0].get_xdata()) == 2                     # both dropouts drawn as supports
+    assert "mm" in fig._suptitle.get_text()                      # the deformation scale is stated
+    assert not len(clamped_nodes(frame_modes(structure, "free", 2)))
+
+
+def test_classify_on_made_up_shapes():
+    import numpy as np
+    shape = np.zeros((4, 6))
+    shape[:, 0] = [0, 1, 2, 1]                                   # x and z translations only
+    shape[:, 2] = 0.5
+    assert classify_(shape) == "in-plane bending"
+    twist = np.zeros((4, 6))
+    twist[:, 1], twist[:, 3] = 1.0, 2.0                          # lateral, rotation about x
+    assert classify_(twist) == "out-of-plane torsion"
+    twist[:, 5] = 3.0                                            # rotation about z dominates
+    assert classify_(twist) == "out-of-plane lateral bending"
+
+
+def classify_(shape):
+    from bikemass.fe.plot import classify
+    return classify(shape)
+
+
+def test_side_view_draws_wheels_for_a_parameter_file_and_colours_by_body():
+    from matplotlib.colors import to_rgba
+    from bikemass import catalog
+    from bikemass.bicycle.drawing import COLOURS, plot_side_view
+    ax = plot_side_view(catalog.load_bicycle("jamis-thesis")).axes[0]
+    g = catalog.load_bicycle("jamis-thesis").geometry
+    for body, axle, radius in (("rear_wheel", g.rear_axle, g.rear_wheel_radius),
+                               ("front_wheel", g.front_axle, g.front_wheel_radius)):
+        tyres = [line for line in ax.lines if line.get_color() == COLOURS[body] and line.get_linewidth() == 1.6]
+        x, h = tyres[0].get_data()
+        assert max(x) - min(x) == pytest.approx(2 * radius, rel=1e-3) and min(h) == pytest.approx(0, abs=1e-3)
+    import yaml
+    pose = yaml.safe_load((SRC.parent / "bodies" / "poses" / "relaxed.yaml").read_text())
+    pose["segments"]["lower_arm"]["frame"] = "front"             # forearms moving with the handlebar
+    rider = catalog.load_rider(pose)
+    ax = plot_side_view(catalog.load_bicycle("jamis"), rider).axes[0]
+    assert any(t.get_text().startswith("rear frame + rider") for t in ax.texts)
+    labels = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert any("ellipse of gyration" in t for t in labels)
+    assert any(t.get_text().startswith("front frame + rider") for t in ax.texts)
+    forearms = [p for p in ax.patches if p.get_facecolor() == pytest.approx(to_rgba(COLOURS["front_frame"], 0.3))]
+    assert len(forearms) == 2 and all(p.get_edgecolor()[:3] == pytest.approx(to_rgba(COLOURS["front_frame"])[:3])
+                                      for p in forearms)                 # in the front frame's colour

@@ -6,9 +6,14 @@ from .benchmark import combined_bodies
 from .components import BODIES
 
 COLOURS = {"rear_frame": "tab:blue", "front_frame": "tab:orange",
-           "rear_wheel": "tab:gray", "front_wheel": "tab:gray"}
+           "rear_wheel": "tab:purple", "front_wheel": "tab:brown"}
+RIDER_COLOUR = "tab:green"
+NAMES = {"rear_frame": "rear frame", "front_frame": "front frame",
+         "rear_wheel": "rear wheel", "front_wheel": "front wheel"}
+WHEELS = ("rear_wheel", "front_wheel")
 SEGMENTS = 24
 """Polygon sides of round sections in the drawing (outlines only)."""
+SPOKES = 12
 
 
 def gyration_ellipse(props, samples=100):
@@ -32,37 +37,95 @@ def _outline(mesh):
     return xz[ConvexHull(xz).vertices]
 
 
+def draw_wheel(ax, centre, radius, colour, tyre=0.025):
+    """A wheel seen side on at ``centre`` (x, height) of outer ``radius`` (m): tyre and rim
+    circles, spokes and hub, unfilled so that what lies behind stays visible."""
+    t = np.linspace(0, 2 * np.pi, 181)
+    ring = np.column_stack([np.cos(t), np.sin(t)])
+    for r, width in ((radius, 1.6), (radius - tyre, 0.9)):
+        ax.plot(*(centre + r * ring).T, color=colour, linewidth=width)
+    angles = np.linspace(0, 2 * np.pi, SPOKES, endpoint=False)
+    ends = centre + (radius - tyre) * np.column_stack([np.cos(angles), np.sin(angles)])
+    spokes = np.stack([np.broadcast_to(centre, ends.shape), ends, np.full(ends.shape, np.nan)], 1).reshape(-1, 2)
+    ax.plot(*spokes.T, color=colour, linewidth=0.4, alpha=0.6)
+    ax.plot(*(centre + 0.03 * ring).T, color=colour, linewidth=1.0)
+
+
+def _rider_body(rider, part):
+    return rider is not None and part in rider.parts
+
+
 def plot_side_view(bicycle, rider=None, title=None, size=None, xlim=None, ylim=None):
-    """Figure: the side view of ``bicycle`` with an optional ``rider``; limits in metres."""
+    """Figure: the side view (x forward, height up, m) of ``bicycle`` with an optional ``rider``.
+
+    Parts are filled outlines in their body's colour (a rider's parts green, edged in the
+    colour of the body they move with), wheels drawn as wheels from the geometry (also for
+    parameter-file bicycles), each body's centre of mass labelled with its name and mass,
+    its ellipse of gyration (semi-axes = radii of gyration sqrt(I/m) about the principal axes
+    in the x-z plane) drawn round it, the steer axis dashed; the legend sits below the axes.
+    """
     from ..plots.figure import new_figure
 
-    fig = new_figure(size or (10, 6))
+    fig = new_figure(size or (6.5, 7.2))
     ax = fig.subplots()
-    parts = list(bicycle.parts) + (list(rider.parts) if rider is not None else [])
-    for part in parts:
+    g = bicycle.geometry
+    drawn = set()
+    for part in list(bicycle.parts) + (list(rider.parts) if rider is not None else []):
+        if part.body in WHEELS:
+            continue                                   # drawn as wheels below
         mesh = part.mesh(SEGMENTS)
-        if mesh is not None:
-            colour = "tab:green" if rider is not None and part in rider.parts else COLOURS[part.body]
-            ax.fill(*_outline(mesh).T, facecolor=colour, edgecolor=colour, alpha=0.25, linewidth=0.6)
+        if mesh is None:
+            continue
+        drawn.add("rider" if _rider_body(rider, part) else part.body)
+        if _rider_body(rider, part):
+            face, edge, alpha = RIDER_COLOUR if part.body == "rear_frame" else COLOURS[part.body], \
+                COLOURS[part.body], 0.3
+        else:
+            face, edge, alpha = COLOURS[part.body], COLOURS[part.body], 0.35
+        ax.fill(*_outline(mesh).T, facecolor=face, edgecolor=edge, alpha=alpha, linewidth=0.6)
+    for body, axle, radius in (("rear_wheel", g.rear_axle, g.rear_wheel_radius),
+                               ("front_wheel", g.front_axle, g.front_wheel_radius)):
+        draw_wheel(ax, np.array([axle[0], -axle[2]]), radius, COLOURS[body])
+    ground = g.steer_ground_point
+    top = ground + 1.25 * np.array([-np.sin(g.lam), 0, -np.cos(g.lam)])
+    ax.plot([ground[0], top[0]], [0, -top[2]], "--", color="0.2", linewidth=0.8, label="steer axis")
     bodies = combined_bodies(bicycle, rider, "exact", "exact")
     for body in BODIES:
         props = bodies[body]
-        ax.plot(*gyration_ellipse(props).T, color=COLOURS[body], linewidth=1.2)
-        ax.plot(props.com[0], -props.com[2], "o", color=COLOURS[body], markersize=6,
-                markeredgecolor="black", label=f"{body}: {props.mass:.3f} kg")
-    g = bicycle.geometry
-    ground = g.steer_ground_point
-    top = ground + 1.2 * np.array([-np.sin(g.lam), 0, -np.cos(g.lam)])
-    ax.plot([ground[0], top[0]], [0, -top[2]], "k--", linewidth=0.8, label="steer axis")
+        ax.plot(*gyration_ellipse(props).T, color=COLOURS[body], linewidth=1.1)
+        ax.plot(props.com[0], -props.com[2], "o", color=COLOURS[body], markersize=6, markeredgecolor="black",
+                zorder=5)
+        name = NAMES[body] + (" + rider" if rider is not None and any(
+            p.body == body for p in rider.parts) else "")
+        ax.annotate(f"{name}\n{props.mass:.2f} kg", (props.com[0], -props.com[2]), xytext=(6, 6),
+                    textcoords="offset points", fontsize=7.5, color="black", zorder=6,
+                    bbox=dict(facecolor="white", edgecolor=COLOURS[body], linewidth=0.6, alpha=0.85, pad=1.5))
+    ax.plot([], [], "o", color="0.8", markeredgecolor="black", label="centre of mass of a body")
+    ax.plot([], [], "-", color="0.4", linewidth=1.1,
+            label="ellipse of gyration: semi-axes =\nradii of gyration $\\sqrt{I/m}$ about the\n"
+                  "principal axes in the x-z plane")
+    from matplotlib.patches import Patch
+    handles = [Patch(facecolor=COLOURS[b], alpha=0.5, label=NAMES[b]) for b in ("rear_frame", "front_frame")
+               if b in drawn]
+    if "rider" in drawn:
+        handles.append(Patch(facecolor=RIDER_COLOUR, alpha=0.5, label="rider (edge: body it moves with)"))
+    if not drawn:
+        ax.text(0.02, 0.98, "bodies known by mass, centre of mass and inertia only:\nno parts to draw",
+                transform=ax.transAxes, va="top", fontsize=7.5, color="0.3")
     ax.axhline(0, color="black", linewidth=0.8)
     ax.set_aspect("equal")
-    ax.set_xlabel("x (m, forward)")
-    ax.set_ylabel("height = -z (m)")
-    ax.set_title(title or bicycle.name)
-    ax.legend(loc="upper right", fontsize="small")
+    ax.set_xlabel("x, forward from the rear contact (m)")
+    ax.set_ylabel("height above the ground (m)")
+    ax.set_title(title or bicycle.name, fontsize=10)
+    lines, labels = ax.get_legend_handles_labels()
+    ax.legend(handles + lines, [h.get_label() for h in handles] + labels, fontsize=7.5, loc="upper center",
+              bbox_to_anchor=(0.5, -0.1), ncol=2, frameon=False)
     ax.grid(True, linewidth=0.3)
     if xlim:
         ax.set_xlim(xlim)
     if ylim:
         ax.set_ylim(ylim)
+    if size is None:                                   # height to suit the drawing's proportions
+        (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+        fig.set_size_inches(6.5, min(10.0, 2.4 + 5.4 * (y1 - y0) / (x1 - x0)))
     return fig
