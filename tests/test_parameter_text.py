@@ -48,6 +48,14 @@ def test_shipped_bicycle_gives_bicycleparameters_eigenvalues_to_1e_9(name, capsy
     assert gap.max() < 1e-9
 
 
+def test_top_level_api_reads_nominal_values_and_standard_deviations():
+    import bikemass as bm
+    measured = bm.load_parameter_text(bp_file("Browser"))
+    assert isinstance(measured, bm.MeasuredParameters)
+    assert measured.parameters.c == 0.0686 and measured.std["c"] == 0.00169464113488
+    assert measured.std["g"] == 0.01 and len(measured.std) == 26
+
+
 def test_values_uncertainties_comments_and_averages():
     pt = parse_parameter_text("# a comment\nw = 1.02+/-0.01  # wheelbase\n\nc=0.08\n"
                               "lam = 0.3 ± 0.002\nt = 0.1+/-0.03, 0.12+/-0.04\n", "x.txt")

@@ -35,6 +35,8 @@ _API = {
     "Grip": "choices", "EigenPart": "choices", "Format": "choices",
     "Bicycle": "bicycle", "Rider": "rider", "BenchmarkParameters": "parameters",
     "PARAMETER_NAMES": "parameters", "InputError": "errors", "BikemassWarning": "errors",
+    "load_parameter_text": "parameter_text", "MeasuredParameters": "parameter_text",
+    "ParameterFileWarning": "parameter_text",
 }
 """Public name -> the module (under ``bikemass``) that defines it."""
 
