@@ -56,6 +56,11 @@ class ChainBody:
     hip: np.ndarray
     seat: float
 
+    @property
+    def inseam(self):
+        """Floor-to-crotch length (m) of the straight leg: hip joint to foot less the seat depth."""
+        return self.lengths["thigh"] + self.lengths["lower_leg"] - self.seat
+
 
 def load_chain_body(path, name=None) -> ChainBody:
     """:class:`ChainBody` of the anthropometry file ``path`` (needs a ``joints:`` block)."""
@@ -142,14 +147,17 @@ class ChainPose:
             left = {"thigh": (pl["hip"], al["thigh"]), "lower_leg": (pl["knee"], al["lower_leg"])}
         return right, left
 
-    def placement_form(self, name, body):
-        """The pose as a placement-form pose document (docs/riders.md); ``body`` names the anthropometry.
+    def placement_form(self, name, body, front=()):
+        """The pose as a placement-form pose document (docs/riders.md); ``body`` names the anthropometry
+        (a name or a body mapping); the segments in ``front`` move with the front frame.
 
         Numbers are written in full (YAML floats round-trip exactly), so the file's joints stay joined."""
         right, left = self.placements()
         segments = {}
         for seg, (location, angle) in right.items():
             entry = {"location": _numbers(location), "angle": float(angle)}
+            if seg in front:
+                entry["frame"] = "front"
             if seg not in ("head", "torso"):
                 entry["mirror"] = True
             if seg in left:

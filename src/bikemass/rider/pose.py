@@ -28,7 +28,7 @@ from ..inertia import MassProperties
 from ..parts import Part
 from ..placement import Placement
 from ..solids import Lumped
-from .anthropometry import find_anthropometry, load_anthropometry
+from .body import load_body
 
 FRAMES = {"rear": "rear_frame", "front": "front_frame"}
 """Pose ``frame`` value -> :attr:`Part.body`."""
@@ -40,7 +40,7 @@ MIRROR_Y = np.diag([1.0, -1.0, 1.0])
 
 def read_pose(node, as_printed=False):
     """(name, parts) of the pose in the YAML ``node`` (see the module docstring)."""
-    node.check_keys(required=("segments",), optional=("name", "body", "source"))
+    node.check_keys(required=("segments",), optional=("name", "body", "source", "posture"))
     segments = node["segments"]
     if not segments.mapping():
         segments.fail("at least one segment")
@@ -50,7 +50,7 @@ def read_pose(node, as_printed=False):
         if not node.has("body"):
             placed[0][1].fail("a lumped body with mass, com, inertia (placed segments need a "
                               "top-level body: naming their anthropometry)")
-        body = load_anthropometry(find_anthropometry(node["body"]))
+        body = load_body(node["body"]).anthropometry
     parts = []
     for key, seg in segments.items():
         if body is not None and key in body.segments:
