@@ -122,7 +122,7 @@ def test_arms_too_short_for_the_aero_grips(capsys):
 
 
 @pytest.mark.parametrize("argv,where", [
-    (["pose", "cargo", "--hands", "drops"], "contacts.grips.drops: a grip named drops (this bicycle has: tops)"),
+    (["pose", "cargo", "--hands", "drops"], "contacts.grips.drops: a grip named drops (this bicycle has: tops, hoods)"),
     (["pose", "benchmark"], "frames/benchmark.yaml: contacts: a bicycle with a contacts: section"),
     (["pose", "jamis", "--fix", "wrist=10"], "--fix: wrist=10: JOINT=DEG"),
     (["pose", "jamis", "--fix", "knee=x"], "--fix: knee=x: JOINT=DEG with DEG a number"),

@@ -75,7 +75,7 @@ def test_shipped_contacts():
     thesis = load_bicycle("jamis-thesis").contacts
     for name, point in jamis.contacts.grips.items():                  # same points written out
         np.testing.assert_array_equal(thesis.grips[name], point)
-    assert load_bicycle("cargo-loaded").contacts.grips.keys() == {"tops"}   # inherited via base:
+    assert load_bicycle("cargo-loaded").contacts.grips.keys() == {"tops", "hoods"}   # inherited via base:
     np.testing.assert_allclose(jamis.contacts.pedal(90), jamis.contacts.bottom_bracket + [0, 0, 0.17], atol=1e-15)
 
 

@@ -110,7 +110,7 @@ def load_rider(rider, as_printed=False, name=None):
                     f"not {type(rider).__name__}")
 
 
-def parameters(bicycle, rider=None, combine=Combine.EXACT, method=Method.MESH):
+def parameters(bicycle, rider=None, combine=Combine.EXACT, method=Method.MESH, allow_off_contact=False):
     """The Meijaard et al. (2007) benchmark parameter set of a bicycle with a rider.
 
     Parameters
@@ -118,7 +118,9 @@ def parameters(bicycle, rider=None, combine=Combine.EXACT, method=Method.MESH):
     bicycle
         Anything :func:`load_bicycle` takes.
     rider
-        Anything :func:`load_rider` takes; ``None`` (default) for no rider.
+        Anything :func:`load_rider` takes; ``None`` (default) for no rider.  The rider is
+        seated on the bicycle (:func:`seated_rider`): a contact off the bicycle is an error
+        unless ``allow_off_contact``.
     combine : {"exact", "thesis"}
         Rider + frame body: parallel-axis theorem (``exact``, default) or the thesis's
         Eq. 3.6 (central inertias added), see :class:`~bikemass.choices.Combine`.
@@ -134,7 +136,44 @@ def parameters(bicycle, rider=None, combine=Combine.EXACT, method=Method.MESH):
     """
     from .bicycle import bicycle_parameters
     combine, method = check(Combine, combine), check(Method, method)
-    return bicycle_parameters(load_bicycle(bicycle), load_rider(rider), combine.value, method.value)
+    model = load_bicycle(bicycle)
+    return bicycle_parameters(model, seated_rider(model, rider, allow_off_contact), combine.value, method.value)
+
+
+def seated_rider(bicycle, rider, allow_off_contact=False, as_printed=False):
+    """The rider seated on the bicycle (:mod:`bikemass.rider.seating`), or ``None`` for no rider.
+
+    Parameters
+    ----------
+    bicycle
+        Anything :func:`load_bicycle` takes.
+    rider
+        Anything :func:`load_rider` takes.  A chain pose without ``bike:`` is solved on this
+        bicycle; a shipped pose is used as written where it meets the contacts within 1 mm,
+        else re-seated by its posture.
+    allow_off_contact : bool
+        Use the pose as written even off the contacts (the thesis's riders).
+
+    Returns
+    -------
+    Rider or None
+
+    Raises
+    ------
+    InputError
+        A contact further than 1 mm from the bicycle's (without ``allow_off_contact``), out
+        of reach, or bad input.  Gaps allowed, and contacts that cannot be checked, are
+        :class:`~bikemass.errors.BikemassWarning` s.
+    """
+    import warnings
+    from .errors import BikemassWarning
+    from .rider.seating import seat_rider
+    if rider is None or (isinstance(rider, str) and rider == "none"):
+        return None
+    seated = seat_rider(rider, load_bicycle(bicycle), as_printed, allow_off_contact)
+    for line in seated.warnings:
+        warnings.warn(line, BikemassWarning, stacklevel=2)
+    return seated.rider
 
 
 def stiffness(bicycle, which, source=Source.AUTO, procedure=Procedure.CONDENSED, beam=Beam.TIMOSHENKO):

@@ -24,6 +24,17 @@ class InputError(ValueError):
         self.source, self.key, self.expected = _shown(source), str(key), str(expected)
         super().__init__(f"{self.source}: {self.key}: {self.expected}")
 
+    def __reduce__(self):
+        """Picklable (raised in worker processes of the study)."""
+        return (_rebuilt, (self.source, self.key, self.expected))
+
+
+def _rebuilt(source, key, expected):
+    error = InputError.__new__(InputError)
+    error.source, error.key, error.expected = source, key, expected
+    ValueError.__init__(error, f"{source}: {key}: {expected}")
+    return error
+
 
 class BikemassWarning(UserWarning):
     """A result that is computed but worth a second look (e.g. a joint angle outside the

@@ -11,6 +11,11 @@
         hoods: hood_right
 
 Only x and z matter to the planar rider chain (docs/poses.md); y is kept for drawings.
+
+Where the bicycle does not fix the saddle, ``saddle: {fit: lemond, seat_tube_angle: 73 deg}``
+(or ``towards: KEYPOINT`` for the seat tube's direction from the bottom bracket) puts the
+sit point on the seat-tube line through the bottom bracket at LeMond's saddle height,
+0.883 x the rider's inseam from the crank axis (:data:`SADDLE_RULES`).
 """
 
 from dataclasses import dataclass
@@ -19,6 +24,10 @@ import numpy as np
 
 HAND_POSITIONS = ("tops", "hoods", "drops", "aero")
 """The usual grip names (``bikemass pose --hands``); a bicycle may name others."""
+
+SADDLE_RULES = {"lemond": 0.883}
+"""Saddle height (crank axis to the sit point along the seat tube) as a fraction of the
+rider's inseam: LeMond & Gordis (1987), "Greg LeMond's Complete Book of Bicycling"."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -31,6 +40,16 @@ class Contacts:
     grips: dict
     source: str
     key: str = "contacts"
+    saddle_fit: tuple = None
+    """``(rule, unit direction from the crank axis up the seat tube)`` when ``saddle`` is fitted
+    to the rider (then ``saddle`` is None), else None."""
+
+    def sit_point(self, inseam):
+        """The saddle point (m) for a rider of ``inseam`` (m): fixed, or fitted by the rule."""
+        if self.saddle_fit is None:
+            return self.saddle
+        rule, direction = self.saddle_fit
+        return self.bottom_bracket + SADDLE_RULES[rule] * inseam * direction
 
     def pedal(self, crank_deg, side="right"):
         """Pedal spindle centre at crank angle ``crank_deg`` (deg, 0 = right crank forward,
@@ -57,5 +76,30 @@ def read_contacts(node, keypoints):
             node.fail(f"a grip name (a word such as {', '.join(HAND_POSITIONS)}; not 'none'), got {name!r}",
                       f"grips.{name}")
         grips[name] = _point(g, keypoints)
-    return Contacts(_point(node["saddle"], keypoints), _point(node["bottom_bracket"], keypoints),
-                    node["crank_length"].number(positive=True), grips, str(node.source), node.key)
+    bottom_bracket = _point(node["bottom_bracket"], keypoints)
+    saddle, fit = None, None
+    if isinstance(node["saddle"].value, dict):
+        fit = _saddle_fit(node["saddle"], keypoints, bottom_bracket)
+    else:
+        saddle = _point(node["saddle"], keypoints)
+    return Contacts(saddle, bottom_bracket, node["crank_length"].number(positive=True), grips,
+                    str(node.source), node.key, fit)
+
+
+def _saddle_fit(node, keypoints, bottom_bracket):
+    """(rule, direction) of a fitted saddle: ``{fit, seat_tube_angle}`` or ``{fit, towards}``."""
+    node.check_keys(required=("fit",), optional=("seat_tube_angle", "towards", "note"))
+    rule = node["fit"].string(tuple(SADDLE_RULES))
+    if node.has("seat_tube_angle") == node.has("towards"):
+        node.fail("exactly one of seat_tube_angle (from horizontal) or towards (a keypoint on the seat tube)")
+    if node.has("seat_tube_angle"):
+        from ..rider.pose import angle_deg
+        a = np.radians(angle_deg(node["seat_tube_angle"]))
+        if not 0 < a < np.pi:
+            node.fail("a seat tube angle between 0 and 180 deg from horizontal", "seat_tube_angle")
+        return rule, np.array([-np.cos(a), 0.0, -np.sin(a)])
+    d = _point(node["towards"], keypoints) - bottom_bracket
+    d[1] = 0.0
+    if not d[2] < 0:
+        node.fail("a keypoint above the bottom bracket (up the seat tube)", "towards")
+    return rule, d / np.linalg.norm(d)

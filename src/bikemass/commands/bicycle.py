@@ -61,7 +61,22 @@ def register(sub):
 def _bike_and_rider(p, rider_default):
     p.add_argument("bike", metavar="BIKE", help="shipped bicycle name, bicycle YAML or parameter file")
     p.add_argument("--rider", metavar="POSE", default=rider_default,
-                   help="rider pose name or pose YAML file, or 'none' (default none)")
+                   help="rider pose name or pose YAML file, or 'none' (default none); seated on BIKE")
+    allow_off_contact_option(p)
+
+
+def allow_off_contact_option(p):
+    """``--allow-off-contact``: use a rider pose as written even off the bicycle's contacts."""
+    p.add_argument("--allow-off-contact", action="store_true",
+                   help="use the pose as written even where it misses the bicycle's saddle, grips or "
+                        "pedals by more than 1 mm (the thesis's riders; each gap is warned about)")
+
+
+def _seated(args):
+    """(bicycle, rider seated on it or None) of BIKE and --rider."""
+    from .. import catalog
+    bicycle = catalog.load_bicycle(args.bike)
+    return bicycle, catalog.seated_rider(bicycle, args.rider, args.allow_off_contact)
 
 
 def run_params(args):
@@ -69,9 +84,9 @@ def run_params(args):
     from ..exporters import format_parameters
     from ..output import write_atomic
 
-    params = catalog.parameters(args.bike, args.rider, args.combine, args.method)
+    params = catalog.parameters(args.bike, args.rider, args.combine, args.method, args.allow_off_contact)
     if args.compare:
-        reference = catalog.parameters(args.compare, args.rider, args.combine, args.method)
+        reference = catalog.parameters(args.compare, args.rider, args.combine, args.method, args.allow_off_contact)
         text = comparison_table(params, reference, args.bike, args.compare)
     else:
         title = f"{args.bike} with rider {args.rider} (combine {args.combine})"
@@ -103,7 +118,7 @@ def run_draw(args):
     from ..bicycle.drawing import plot_side_view
 
     options = figure_options(args, args.output)
-    bicycle, rider = catalog.load_bicycle(args.bike), catalog.load_rider(args.rider)
+    bicycle, rider = _seated(args)
     title = bicycle.name + (f" + rider {rider.name}" if rider is not None else "")
     fig = plot_side_view(bicycle, rider, title, options.size, **options.limits())
     if bicycle.chart is not None:
@@ -122,6 +137,6 @@ def run_export(args):
     fmt = Path(args.output).suffix.lower().lstrip(".")
     if fmt not in MODEL_FORMATS:
         raise InputError(args.output, "(file)", "a model file name ending in .glb, .stl or .obj")
-    bicycle, rider = catalog.load_bicycle(args.bike), catalog.load_rider(args.rider)
+    bicycle, rider = _seated(args)
     write_atomic(args.output, export_scene(build_scene(bicycle, rider), fmt))
     return 0

@@ -15,6 +15,12 @@ def register(sub):
                                      "on-hoods, aerobars, aero-tuck; <pose>-thesis = the published "
                                      "Table 3-4 rider) or a pose YAML file (docs/riders.md).")
     one.add_argument("pose", metavar="POSE", help="shipped pose name or pose YAML file")
+    one.add_argument("--bike", metavar="BIKE",
+                     help="seat the rider on this bicycle (its contacts: section) and report the contacts")
+    one.add_argument("--segments", action="store_true",
+                     help="json/yaml: add each segment's mass, centre of mass and inertia")
+    from .bicycle import allow_off_contact_option
+    allow_off_contact_option(one)
     _common_options(one)
     one.set_defaults(run=run_rider)
     many = sub.add_parser("riders", help="Table 3-4 style table of all shipped poses",
@@ -41,14 +47,50 @@ def _clean(x, digits=4):
     return round(float(x), digits) + 0.0
 
 
+def _seated(args):
+    """(rider, SeatedRider or None) of ``args.pose`` (seated on ``args.bike`` if given)."""
+    import warnings
+
+    from ..errors import BikemassWarning
+    from ..rider import load_rider
+    if args.bike is None:
+        return load_rider(args.pose, as_printed=args.as_printed), None
+    from ..bicycle import load_bicycle
+    from ..rider.seating import seat_rider
+    seated = seat_rider(args.pose, load_bicycle(args.bike), args.as_printed, args.allow_off_contact)
+    for line in seated.warnings:
+        warnings.warn(line, BikemassWarning, stacklevel=2)
+    return seated.rider, seated
+
+
+def rider_document(rider, props, seated, method, segments):
+    """``{pose, mass, com, inertia}`` + ``segments: {name: {mass, com, inertia}}`` (if ``segments``)
+    + ``contacts: {name: {residual}}`` (m, if seated on a bicycle)."""
+    data = {"pose": rider.pose, **props.to_dict()}
+    if segments:
+        data["segments"] = {name: mp.to_dict() for name, _, mp in rider.breakdown(method)}
+    if seated is not None:
+        data["contacts"] = {name: {"residual": gap} for name, gap in seated.residuals().items()}
+    return data
+
+
+def _contacts_table(seated):
+    from ..errors import _shown
+    from ..output import table
+    rows = [(name, gap * 1000, key) for name, (gap, key) in seated.contacts.items()]
+    head = (f"On {seated.bicycle.name} ({_shown(seated.bicycle.source)}): pose {seated.how}"
+            + ("" if seated.solution is None else " by the chain, joint angles (deg): "
+               + ", ".join(f"{k} {v:.1f}" for k, v in seated.solution.pose.angles.items())))
+    return head + "\n" + table(["contact", "residual (mm)", "bicycle key"], rows, floatfmt="{:.4f}")
+
+
 def run_rider(args):
     from ..output import dumps, table
-    from ..rider import load_rider
 
-    rider = load_rider(args.pose, as_printed=args.as_printed)
+    rider, seated = _seated(args)
     props = rider.properties(args.method, args.overlap)
     if args.format != "table":
-        print(dumps({"pose": rider.pose, **props.to_dict()}, args.format), end="")
+        print(dumps(rider_document(rider, props, seated, args.method, args.segments), args.format), end="")
         return 0
     I = props.inertia
     lines = [f"Rider {rider.name!r} (pose {rider.pose}; method {args.method}, overlap {args.overlap}"
@@ -64,6 +106,8 @@ def run_rider(args):
     print("Per segment (centre of mass in the benchmark frame; inertia about the segment's own com):")
     print(table(["segment", "frame", "mass (kg)", "x (m)", "y (m)", "z (m)",
                  "Ixx", "Iyy", "Izz", "Ixz"], rows, floatfmt="{:.4f}"), end="")
+    if seated is not None and seated.contacts:
+        print("\n" + _contacts_table(seated), end="")
     return 0
 
 

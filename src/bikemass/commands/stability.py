@@ -43,6 +43,7 @@ def register(sub):
     comp.add_argument("--riders", metavar="POSES", default="none",
                       help="comma-separated rider poses or pose files, 'none' for no rider "
                            "(e.g. none,relaxed,aero-tuck)")
+    _allow(comp)
     comp.add_argument("--stiffnesses", metavar="S", default="infinite",
                       help="comma-separated stiffnesses as for --stiffness (e.g. infinite,steel,aluminum)")
     comp.add_argument("--combine", choices=("exact", "thesis"), default="exact",
@@ -54,10 +55,16 @@ def register(sub):
     comp.set_defaults(run=run_compare)
 
 
+def _allow(p):
+    from .bicycle import allow_off_contact_option
+    allow_off_contact_option(p)
+
+
 def _common(p):
     p.add_argument("bike", metavar="BIKE", help="shipped bicycle name, bicycle YAML or parameter file")
     p.add_argument("--rider", metavar="POSE", default="none",
                    help="rider pose name or pose YAML file, or 'none' (default none)")
+    _allow(p)
     p.add_argument("--combine", choices=("exact", "thesis"), default="exact",
                    help="rider + frame: parallel-axis theorem (exact, default) or the thesis's Eq. 3.6")
     p.add_argument("--stiffness", metavar="S", default="infinite",
@@ -90,7 +97,7 @@ def _inputs(args, rider=None, stiffness=None):
     from ..catalog import load_bicycle, parameters, stiffness as frame_stiffness
 
     bike = load_bicycle(args.bike)
-    return (parameters(bike, rider or args.rider, args.combine),
+    return (parameters(bike, rider or args.rider, args.combine, allow_off_contact=args.allow_off_contact),
             frame_stiffness(bike, stiffness or args.stiffness))
 
 

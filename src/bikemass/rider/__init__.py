@@ -88,7 +88,7 @@ def rider_from_mapping(mapping, source, as_printed=False):
 def _read_document(node, pose, as_printed):
     if isinstance(node.value, dict) and "chain" in node.value:
         from .chain_file import read_chain_pose
-        name, parts, _ = read_chain_pose(node)
+        name, parts, _, _ = read_chain_pose(node)
         return Rider(pose, name, parts)
     name, parts = read_pose(node, as_printed)
     return Rider(pose, name, parts)

@@ -1,15 +1,17 @@
-"""Chain-form pose files: a pose given by joint angles and a bicycle, solved on load.
+"""Chain-form pose files: a pose given by joint angles, solved on a bicycle when loaded.
 
 ::
 
-    body: thesis_rider
-    bike: jamis
-    chain: {torso_lean: 30, hands: hoods}
+    body: thesis_rider            # or {height: 1.80 m, mass: 75 kg, sex: male}, {yeadon: PATH}
+    bike: jamis                   # optional: without it the pose is solved on the bicycle
+    chain: {torso_lean: 30, hands: hoods}   # it is used with (bikemass stability cargo --rider ...)
 
-``chain`` keys: ``hands`` (a grip of the bicycle's ``contacts:`` or ``none``; default
-``hoods`` if the bicycle has them, else its first grip), ``crank`` (deg; default: legs
-symmetric, feet on the crank axis) and any joint angle to fix (deg, see
-:data:`~bikemass.rider.chain.JOINTS`).  ``name`` is optional.  See docs/poses.md.
+``chain`` keys: ``hands`` (a grip of the bicycle's ``contacts:``, a list of grips (the first
+the bicycle has) or ``none``; default ``hoods`` if the bicycle has them, else its first
+grip), ``crank`` (deg; default: legs symmetric, feet on the crank axis), ``front`` (the
+segments that move with the front frame, e.g. ``[lower_arm]`` for hands holding the bars)
+and any joint angle to fix (deg, see :data:`~bikemass.rider.chain.JOINTS`).  ``name`` is
+optional.  The same keys form the ``posture:`` of a placement-form pose.  See docs/poses.md.
 """
 
 import warnings
@@ -17,11 +19,11 @@ from pathlib import Path
 
 from ..config import Node
 from ..errors import BikemassWarning, InputError
-from .anthropometry import find_anthropometry
-from .chain import JOINTS, load_chain_body
+from .body import chain_of, load_body
+from .chain import CHAIN_SEGMENTS, JOINTS
 from .pose import angle_deg, read_pose
 
-CHAIN_KEYS = ("hands", "crank", *JOINTS)
+CHAIN_KEYS = ("hands", "crank", "front", *JOINTS)
 
 
 def default_hands(contacts):
@@ -32,8 +34,8 @@ def default_hands(contacts):
 
 
 def bicycle_contacts(bike, node):
-    """The ``contacts`` of bicycle ``bike`` (name or file; a relative file is looked up next
-    to the pose file first); ``node`` is blamed if the bicycle has none."""
+    """The bicycle ``bike`` (a Bicycle, or a name or file; a relative file is looked up next to
+    the pose file first) with its ``contacts``; ``node`` is blamed if the bicycle has none."""
     from ..bicycle import Bicycle, load_bicycle
     if isinstance(bike, Bicycle):
         bicycle = bike
@@ -51,29 +53,63 @@ def _is_bicycle(value):
     return isinstance(value, Bicycle)
 
 
-def read_chain_pose(node):
-    """(name, parts, Solution) of a chain-form pose file (see the module docstring)."""
-    from .solve import solve_on_bicycle
-    node.check_keys(required=("body", "bike", "chain"), optional=("name", "source"))
-    chain = node["chain"]
-    chain.check_keys(optional=CHAIN_KEYS)
-    body = load_chain_body(find_anthropometry(node["body"]), node["body"].string())
-    bike = node["bike"]
-    bicycle = bicycle_contacts(bike.value if _is_bicycle(bike.value) else bike.string(), bike)
-    contacts = bicycle.contacts
+def _hands(node, contacts):
+    """The grip named by ``node`` (a name, ``none`` or a list of names: the first the bicycle has)."""
     choices = (*contacts.grips, "none")
-    hands = chain["hands"].string(choices) if chain.has("hands") else default_hands(contacts)
+    if isinstance(node.value, list):
+        names = [e.string() for e in node.elements()]
+        found = [n for n in names if n in choices]
+        if not found:
+            from ..errors import _shown
+            node.fail(f"a grip of {_shown(contacts.source)} ({', '.join(choices)}), got {', '.join(names)}")
+        return found[0]
+    if not isinstance(node.value, str) or node.value not in choices:
+        from ..errors import _shown
+        node.fail(f"a grip of {_shown(contacts.source)} ({', '.join(choices)}), got {node.value!r}")
+    return node.value
+
+
+def chain_settings(chain, contacts):
+    """(hands, crank, fixed joint angles, front segments) of a ``chain:``/``posture:`` node."""
+    chain.check_keys(optional=CHAIN_KEYS)
+    hands = _hands(chain["hands"], contacts) if chain.has("hands") else default_hands(contacts)
     crank = angle_deg(chain["crank"]) if chain.has("crank") else None
     fixed = {k: angle_deg(chain[k]) for k in JOINTS if chain.has(k)}
-    solution = solve_on_bicycle(body, contacts, hands, crank, fixed)
+    front = tuple(e.string(CHAIN_SEGMENTS) for e in chain["front"].elements()) if chain.has("front") else ()
+    return hands, crank, fixed, front
+
+
+def solve_chain(chain, body, bicycle):
+    """:class:`~bikemass.rider.solve.Solution` of the ``chain``/``posture`` node for ``body``
+    (:class:`~bikemass.rider.chain.ChainBody`) on ``bicycle``; an unreachable contact is an
+    error naming the chain key and the bicycle key."""
+    from .solve import solve_on_bicycle
+    hands, crank, fixed, front = chain_settings(chain, bicycle.contacts)
+    solution = solve_on_bicycle(body, bicycle.contacts, hands, crank, fixed)
     try:
         solution.check_reachable()
     except InputError as exc:
         key = "hands" if ".grips." in exc.key else "crank" if exc.key.endswith("crank_length") else None
         chain.fail(f"{exc.expected} [{exc.source}: {exc.key}]", key)
+    return solution, front
+
+
+def read_chain_pose(node, bicycle=None):
+    """(name, parts, Solution, bicycle) of a chain-form pose file, solved on ``bicycle``
+    (default: the file's ``bike:``; one of the two is needed)."""
+    node.check_keys(required=("body", "chain"), optional=("name", "source", "bike"))
+    body = load_body(node["body"])
+    chain_body = chain_of(body, node["body"])
+    if bicycle is None:
+        if not node.has("bike"):
+            node.fail("a bike: to solve the chain pose on, or a bicycle to use it with "
+                      "(bikemass rider POSE --bike BIKE)", "bike")
+        bike = node["bike"]
+        bicycle = bicycle_contacts(bike.value if _is_bicycle(bike.value) else bike.string(), bike)
+    solution, front = solve_chain(node["chain"], chain_body, bicycle)
     for line in solution.pose.warnings():
         warnings.warn(f"{node.source}: {line}", BikemassWarning, stacklevel=2)
     name = node.get("name", str(node.source)).string()
-    document = solution.pose.placement_form(name, node["body"].string())
+    document = solution.pose.placement_form(name, body.label, front)
     _, parts = read_pose(Node(document, node.source, None))
-    return name, parts, solution
+    return name, parts, solution, bicycle

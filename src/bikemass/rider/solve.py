@@ -93,7 +93,7 @@ def _xz(v):
 def contact_targets(body, contacts, hands, crank):
     """The :class:`Target` list for ``hands`` (a grip name or ``"none"``) and ``crank`` (deg or None)."""
     src = contacts.source
-    targets = [Target("hips", lambda p: p.points()["seat"], _xz(contacts.saddle), src,
+    targets = [Target("hips", lambda p: p.points()["seat"], _xz(contacts.sit_point(body.inseam)), src,
                       f"{contacts.key}.saddle", "the sit point is fixed to the saddle")]
     if hands != "none":
         if hands not in contacts.grips:
@@ -127,7 +127,7 @@ def solve_on_bicycle(body, contacts, hands="hoods", crank=None, fixed=None):
     elif "torso_lean" not in fixed:
         fixed.setdefault("elbow", DEFAULT_ELBOW)
     names = ["root_x", "root_z", *JOINTS] + (["hip_left", "knee_left"] if crank is not None else [])
-    hip = contacts.saddle - [0.0, 0.0, body.seat]
+    hip = contacts.sit_point(body.inseam) - [0.0, 0.0, body.seat]
     fixed_rad = {"root_x": hip[0], "root_z": hip[2], **{k: np.radians(v) for k, v in fixed.items()}}
     free = _variables(fixed_rad, names)
     targets = contact_targets(body, contacts, hands, crank)

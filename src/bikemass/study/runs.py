@@ -127,17 +127,22 @@ class Inputs:
             self._bicycles[name] = catalog.load_bicycle(name)
         return self._bicycles[name]
 
-    def rider(self, name):
-        if name is not None and name not in self._riders:
-            self._riders[name] = catalog.load_rider(name)
-        return self._riders.get(name)
+    def rider(self, name, bike=None):
+        """The rider ``name`` (None: no rider); with ``bike``, seated on it as the thesis placed it:
+        its contacts are checked and each gap is warned about, the pose kept as written."""
+        key = (name, bike)
+        if name is not None and key not in self._riders:
+            self._riders[key] = (catalog.load_rider(name) if bike is None else
+                                 catalog.seated_rider(self.bicycle(bike), name, allow_off_contact=True))
+        return self._riders.get(key)
 
     def parameters(self, spec, configuration):
         """Benchmark parameter set of ``configuration`` as ``spec`` builds it (cached)."""
         key = (spec.bike_name(configuration.bike), spec.rider_name(configuration.rider), spec.combine)
         if key not in self._parameters:
             bike, rider, combine = key
-            self._parameters[key] = bicycle_parameters(self.bicycle(bike), self.rider(rider), combine, METHOD)
+            self._parameters[key] = bicycle_parameters(self.bicycle(bike), self.rider(rider, bike), combine,
+                                                       METHOD)
         return self._parameters[key]
 
     def matrices(self, spec, configuration):
