@@ -46,7 +46,7 @@ def test_result_is_immutable_and_short(jamis_relaxed_steel):
     with pytest.raises(AttributeError):
         r.analysis = None
     assert isinstance(r.weave_speeds, tuple) and isinstance(r.ranges["strict"]["exact"], tuple)
-    assert len(repr(r)) < 300 and "weave_speeds=(5.71" in repr(r)
+    assert len(repr(r)) < 300 and "weave_speeds=(5.74" in repr(r)   # Relaxed re-seated on the Jamis
     # the weave range is where both weave roots are stable; the overall strict range lies inside it
     (a, b), = r.stable_speeds
     assert any(lo <= a and b <= hi for lo, hi in r.weave_ranges["strict"]["exact"])

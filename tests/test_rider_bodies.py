@@ -238,3 +238,18 @@ def test_rider_on_a_bicycle_table_lists_the_contacts(capsys):
     assert "pose solved by the chain" in out
     for name in ("hips", "right hand", "left foot"):
         assert f"\n{name} " in out
+
+
+def test_bicycle_without_contacts(capsys, tmp_path):
+    path = _chain_pose(tmp_path, "male", 1.80, 75.0)
+    code, out, err = run(capsys, "params", "benchmark", "--rider", path)
+    assert code == 2 and "chain: a bicycle with a contacts: section" in err and "frames/benchmark.yaml" in err
+    code, out, err = run(capsys, "params", "benchmark", "--rider", "relaxed")
+    assert code == 0 and "not checked (frames/benchmark.yaml has no contacts: section)" in err
+
+
+def test_chart_bicycle_seats_from_its_contacts(capsys, tmp_path):
+    path = _chain_pose(tmp_path, "female", 1.65, 58.0)
+    code, out, err = run(capsys, "rider", path, "--bike", "bmc-roadmachine@51", "--format", "json", "--method", "exact")
+    assert code == 0 and err == ""
+    assert max(c["residual"] for c in json.loads(out)["contacts"].values()) <= CONTACT

@@ -4,6 +4,7 @@ squares, :mod:`bikemass.rider.solve`).  Joint angles outside typical human range
 reported with :mod:`warnings` (:class:`~bikemass.errors.BikemassWarning`), not refused."""
 
 import warnings
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 from .choices import Grip, check
@@ -55,8 +56,9 @@ def pose_rider(bicycle, body=DEFAULT_BODY, hands=None, crank=None, fixed=None, n
     ----------
     bicycle
         Anything :func:`bikemass.load_bicycle` takes, with a ``contacts:`` section.
-    body : str
-        Anthropometry with ``joints:`` (a name in ``bodies/`` or a YAML file).
+    body : str or Mapping
+        Anthropometry with ``joints:`` (a name in ``bodies/`` or a YAML file), or a body
+        mapping: ``{height, mass, sex}`` or ``{yeadon: FILE}`` (docs/riders.md).
     hands : {"tops", "hoods", "drops", "aero", "none"}, optional
         Grip; default ``hoods`` if the bicycle has them, else its first grip.
     crank : float, optional
@@ -80,15 +82,17 @@ def pose_rider(bicycle, body=DEFAULT_BODY, hands=None, crank=None, fixed=None, n
     from .config import Node
     from .errors import BikemassWarning, InputError
     from .rider import Rider
-    from .rider.anthropometry import find_anthropometry
-    from .rider.chain import JOINTS, joint_gaps, load_chain_body
+    from .rider.body import chain_of, load_body
+    from .rider.chain import JOINTS, joint_gaps
     from .rider.chain_file import bicycle_contacts, default_hands
     from .rider.pose import read_pose
     from .rider.solve import solve_on_bicycle
 
     model = load_bicycle(bicycle)
     model = bicycle_contacts(model, Node(model.source, model.source, "contacts"))
-    chain_body = load_chain_body(find_anthropometry(Node(str(body), "body", "body")), str(body))
+    body_node = Node(dict(body) if isinstance(body, Mapping) else str(body), "body", "body")
+    loaded = load_body(body_node)
+    chain_body = chain_of(loaded, body_node)
     hands = default_hands(model.contacts) if hands is None else check(Grip, hands, "hands").value
     fixed = dict(fixed or {})
     for joint, value in fixed.items():
@@ -99,8 +103,11 @@ def pose_rider(bicycle, body=DEFAULT_BODY, hands=None, crank=None, fixed=None, n
     for line in solution.pose.warnings():
         warnings.warn(line, BikemassWarning, stacklevel=2)
     name = name or f"{hands} on {bicycle if isinstance(bicycle, str) else model.name}"
-    document = solution.pose.placement_form(name, str(body))
-    _, parts = read_pose(Node(document, name, None))
+    document = solution.pose.placement_form(name, loaded.label)
+    node = Node(document, name, None)
+    _, parts = read_pose(node)
+    # a body named or given inline can be read again from the document: bicycles re-check it
+    spec = (node, False) if isinstance(body, Mapping) or not str(body).endswith((".yaml", ".yml")) else None
     right, _ = solution.pose.placements()
-    return PosedRider(Rider(name, name, parts), model, solution, hands, crank, freeze(document),
+    return PosedRider(Rider(name, name, parts, spec), model, solution, hands, crank, freeze(document),
                       freeze(joint_gaps(right, chain_body)))

@@ -6,7 +6,7 @@ is the published Table 3-4 rider as one lumped body.  See :mod:`bikemass.rider.p
 for the file format.
 """
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..config import load_yaml
@@ -34,11 +34,14 @@ def shipped_poses() -> list[str]:
 
 @dataclass(frozen=True, eq=False)
 class Rider:
-    """A posed rider: ``pose`` as asked for, display ``name``, and its ``parts`` (tuple of Part)."""
+    """A posed rider: ``pose`` as asked for, display ``name``, and its ``parts`` (tuple of Part);
+    ``spec`` = (pose node, as_printed) it was read from, which lets a bicycle re-seat it
+    (:mod:`bikemass.rider.seating`), or None."""
 
     pose: str
     name: str
     parts: tuple
+    spec: object = field(default=None, repr=False)
 
     def properties(self, method="mesh", overlap="sum"):
         """Total :class:`~bikemass.inertia.MassProperties` (trimesh ``mesh`` or ``exact``;
@@ -89,6 +92,6 @@ def _read_document(node, pose, as_printed):
     if isinstance(node.value, dict) and "chain" in node.value:
         from .chain_file import read_chain_pose
         name, parts, _, _ = read_chain_pose(node)
-        return Rider(pose, name, parts)
+        return Rider(pose, name, parts, (node, as_printed))
     name, parts = read_pose(node, as_printed)
-    return Rider(pose, name, parts)
+    return Rider(pose, name, parts, (node, as_printed))

@@ -43,8 +43,9 @@ def bicycle_contacts(bike, node):
         here = Path(node.source).parent / bike
         bicycle = load_bicycle(str(here) if here.is_file() else bike)
     if bicycle.contacts is None:
+        from ..errors import _shown
         node.fail(f"a bicycle with a contacts: section (saddle, bottom_bracket, crank_length, grips); "
-                  f"{bicycle.source} has none")
+                  f"{_shown(bicycle.source)} has none")
     return bicycle
 
 

@@ -116,11 +116,13 @@ def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, toleran
     from .chain_file import chain_settings, read_chain_pose, solve_chain
     from .pose import read_pose
 
-    if isinstance(pose, Rider):
+    if isinstance(pose, Rider) and pose.spec is None:
         return SeatedRider(pose, bicycle, "unchecked", {}, None,
-                           (f"{pose.name}: contacts with {bicycle.name} not checked (a Rider object "
-                            "carries no body to seat; pass its pose instead)",))
-    if isinstance(pose, Mapping):
+                           (f"{pose.name}: contacts with {bicycle.name} not checked (a Rider built "
+                            "from parts carries no body to seat; pass its pose instead)",))
+    if isinstance(pose, Rider):
+        (node, as_printed), source, pose = pose.spec, pose.spec[0].source, pose.pose
+    elif isinstance(pose, Mapping):
         from ..catalog import MAPPING
         from ..output import plain
         source, node = MAPPING, Node(plain(pose), MAPPING, "")
@@ -132,6 +134,9 @@ def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, toleran
     if not isinstance(node.value, dict):
         node.fail("a pose (a mapping with segments: or chain:)")
     lumped_only = "chain" not in node.value and "body" not in node.value
+    if contacts is None and "chain" in node.value and not node.has("bike"):
+        from .chain_file import bicycle_contacts
+        bicycle_contacts(bicycle, node["chain"])      # the error: a bicycle with a contacts: section
     if contacts is None or lumped_only:
         rider = _load(pose, node, as_printed)
         from ..errors import _shown
@@ -176,9 +181,14 @@ def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, toleran
 
 
 def _load(pose, node, as_printed):
+    """The rider of a pose node as written (a chain pose solved on its own ``bike:``)."""
     from . import Rider
+    from .chain_file import read_chain_pose
     from .pose import read_pose
-    name, parts = read_pose(node, as_printed)
+    if "chain" in node.value:
+        name, parts, _, _ = read_chain_pose(node)
+    else:
+        name, parts = read_pose(node, as_printed)
     return Rider(str(pose), name, parts)
 
 
