@@ -112,6 +112,8 @@ def test_body_file_under_bodies_and_inline_give_the_same_rider(tmp_path):
     ("{height: 1.8, mass: 75, sex: male, girths: {torso: 1}}", "body.girths.torso: no such key"),
     ("{height: 1.8, mass: 75}", "body.sex: a required key"),
     ("{size: 3}", "body: an anthropometry name or file"),
+    ("{height: 1.8, mass: 75, sex: male, girths: {thigh: 1 cm}}", "body.girths.thigh: a girth giving a density"),
+    ("{height: 1.8, mass: 75, sex: male, density: 5000}", "body.density: a body density between 700 and 1500"),
 ])
 def test_bad_body_is_one_line(capsys, tmp_path, body, needle):
     pose = tmp_path / "bad.yaml"

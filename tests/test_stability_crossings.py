@@ -87,15 +87,16 @@ def test_benchmark_and_cargo(bike, rider):
 
 
 def test_issue_cases_a_split_weave_pair_destabilises_as_a_real_root(capsys):
-    # the issue's loaded Cargo: 20.785 m/s was listed as a weave speed; a real root crosses there
-    assert main(["stability", "cargo-loaded", "--rider", "no-hands", "--format", "json"]) == 0
+    # the issue's loaded Cargo (No Hands as the thesis placed it): 20.785 m/s was listed as a weave
+    # speed; a real root crosses there
+    assert main(["stability", "cargo-loaded", "--rider", "no-hands", "--allow-off-contact", "--format", "json"]) == 0
     d = json.loads(capsys.readouterr().out)
     assert d["weave_speeds"] == [pytest.approx(11.707856716414494, abs=1e-9)]
     assert d["capsize_speeds"] == [pytest.approx(20.785440946227254, abs=1e-9)]
     split = [c for c in d["crossings"] if c["speed"] > 20]
     assert split == [{"speed": pytest.approx(20.785440946227254, abs=1e-9), "kind": "real",
                       "direction": "destabilising", "mode": "weave 1"}]
-    assert main(["stability", "cargo-loaded", "--rider", "no-hands"]) == 0
+    assert main(["stability", "cargo-loaded", "--rider", "no-hands", "--allow-off-contact"]) == 0
     text = capsys.readouterr().out
     assert "capsize speeds (a real root crosses Re = 0):        20.785440946227" in text
     assert "weave, real (upper)" in text

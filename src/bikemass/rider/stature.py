@@ -37,6 +37,8 @@ SEXES = ("male", "female")
 SPEC_KEYS = ("height", "mass", "sex")
 OPTIONAL_KEYS = ("name", "inseam", "arm_length", "shoulder_width", "girths", "density", "source", "note")
 CYLINDERS = ("head", "upper_arm", "lower_arm", "thigh", "lower_leg")
+DENSITY_RANGE = (700.0, 1500.0)
+"""Plausible tissue densities (kg/m^3): a density or a girth implying one outside is refused."""
 
 
 @dataclass(frozen=True)
@@ -163,9 +165,19 @@ def read_spec(node):
         girths = {k: v.number(positive=True) for k, v in g.items()}
     if "inseam" in optional and not optional["inseam"] < height * tables().fractions["shoulder_height"]:
         node.fail(f"an inseam below the shoulder height, got {node['inseam'].value!r}", "inseam")
+    lo, hi = DENSITY_RANGE
+    if "density" in optional and not lo <= optional["density"] <= hi:
+        node.fail(f"a body density between {lo:g} and {hi:g} kg/m^3, got {node['density'].value!r}", "density")
     try:
         body = build(height, mass, sex, girths=girths, **optional)
     except ValueError as exc:
         node.fail(str(exc))
+    for kind in girths:
+        d = body.diameters[kind]
+        implied = body.masses[kind] / (np.pi * d * d / 4 * body.lengths[kind])
+        if not lo <= implied <= hi:
+            node.fail(f"a girth giving a density between {lo:g} and {hi:g} kg/m^3 for the segment's "
+                      f"de Leva mass ({body.masses[kind]:.2f} kg over {body.lengths[kind]:.3f} m), got "
+                      f"{node['girths'][kind].value!r}: {implied:.0f} kg/m^3", f"girths.{kind}")
     default = f"{sex} {height:.2f} m {mass:g} kg"
     return node.get("name", default).string(), body
