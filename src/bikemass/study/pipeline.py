@@ -1,7 +1,7 @@
 """The whole study: inputs -> three stability runs and the frame models -> comparisons -> files."""
 
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from ..output import dumps, write_atomic
 from ..rider import THESIS_POSES
@@ -32,6 +32,8 @@ class StudyResults:
     input_tables: list
     correction_tables: list
     correction_summary: list
+    contacts: dict = field(default_factory=dict)
+    """``{(pose, bike): {contact: (gap m, key)}}``: the geometry riders as the thesis placed them."""
 
 
 def _preload(inputs):
@@ -43,6 +45,8 @@ def _preload(inputs):
     for pose in THESIS_POSES:
         inputs.rider(pose)
         inputs.rider(f"{pose}-thesis")
+        for bike in BICYCLES:                    # the geometry run's riders on its bicycles
+            inputs.rider(GEOMETRY.rider_name(pose), GEOMETRY.bike_name(bike))
     for frame in FRAMES:
         for material in MATERIALS:
             for procedure in ("thesis", "condensed"):
@@ -98,7 +102,7 @@ def compute(workers=WORKERS, step=lambda label: None):
                          corrections.stiffness_table(thesis, runs["corrected"]),
                          corrections.range_table(thesis, runs["corrected"], runs["geometry"])]
     return StudyResults(runs, entries, explanations, input_tables, correction_tables,
-                        corrections.summary(thesis, runs["corrected"]))
+                        corrections.summary(thesis, runs["corrected"]), dict(inputs.contacts))
 
 
 def steps(with_figures=True):

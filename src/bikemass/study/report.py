@@ -86,6 +86,7 @@ def render(results):
             f"{_speed(e.thesis)} m/s: {r.explanations[e]}." for e in misses] or ["None."]
     out += ["", "## Inputs: riders, bicycles, stiffness, frame modes\n"]
     out += [_table_section(t) for t in r.input_tables]
+    out += _contact_section(r.contacts)
     out += ["## Corrections: what changes and by how much\n"]
     out += [f"* {line}" for line in r.correction_summary] + [""]
     out += [_table_section(t) for t in r.correction_tables]
@@ -100,3 +101,21 @@ def render(results):
             "run), `eig_<bike>_<rider>_<stiffness>.png` (eigenvalues against speed, corrected run), "
             "`pose_<pose>.png` (the poses on the Jamis).\n"]
     return "\n".join(out)
+
+
+def _contact_section(contacts):
+    """How far the thesis's riders sit from each bicycle's saddle, grips and pedals (kept as placed)."""
+    if not contacts:
+        return []
+    rows = ["| rider | bicycle | hips (mm) | hands (mm) | feet (mm) |", "| --- | --- | --- | --- | --- |"]
+    for (pose, bike), found in contacts.items():
+        if not found:                     # lumped published riders: no contact points
+            continue
+        worst = {part: max((gap for name, (gap, _) in found.items() if name.endswith(part)), default=None)
+                 for part in ("hips", "hand", "foot")}
+        rows.append(f"| {pose} | {bike} | " + " | ".join("-" if g is None else f"{g * 1000:.1f}"
+                                                        for g in worst.values()) + " |")
+    return ["### Rider contacts as the thesis placed them\n",
+            "The geometry run keeps the Table 3-3 riders where the thesis put them "
+            "(`--allow-off-contact`, docs/riders.md); their largest distances from each bicycle's "
+            "contacts (hands: the nearest grip; \"-\": hands free):\n", *rows, ""]

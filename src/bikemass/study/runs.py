@@ -120,6 +120,8 @@ class Inputs:
 
     def __init__(self):
         self._bicycles, self._riders, self._parameters, self._stiffness = {}, {}, {}, {}
+        self.contacts = {}
+        """``{(rider, bike): {contact: (gap m, bicycle key)}}`` of every rider seated so far."""
         self._matrices, self._materials = {}, None
 
     def bicycle(self, name):
@@ -128,12 +130,16 @@ class Inputs:
         return self._bicycles[name]
 
     def rider(self, name, bike=None):
-        """The rider ``name`` (None: no rider); with ``bike``, seated on it as the thesis placed it:
-        its contacts are checked and each gap is warned about, the pose kept as written."""
+        """The rider ``name`` (None: no rider); with ``bike``, on it as the thesis placed it: its
+        contacts are measured (:attr:`contacts`, for the report) and the pose kept as written."""
         key = (name, bike)
         if name is not None and key not in self._riders:
-            self._riders[key] = (catalog.load_rider(name) if bike is None else
-                                 catalog.seated_rider(self.bicycle(bike), name, allow_off_contact=True))
+            if bike is None:
+                self._riders[key] = catalog.load_rider(name)
+            else:
+                from ..rider.seating import seat_rider
+                seated = seat_rider(name, self.bicycle(bike), allow_off_contact=True)
+                self._riders[key], self.contacts[key] = seated.rider, seated.contacts
         return self._riders.get(key)
 
     def parameters(self, spec, configuration):
