@@ -102,7 +102,14 @@ def _human_class():
 
 def human(path):
     """(``yeadon.Human`` of measurement file ``path``, standing, limbs averaged; the factor that
-    scales its masses to the file's ``totalmass`` (1 without one))."""
+    scales its masses to the file's ``totalmass`` (1 without one)).  Cached per file content
+    (a pose is read up to three times when it is seated); the Human is not to be changed."""
+    p = Path(path).resolve()
+    return _human_of(str(p), p.stat().st_mtime_ns, p.stat().st_size)
+
+
+@lru_cache(maxsize=16)
+def _human_of(path, mtime_ns, size):
     measurements, mass = read_measurements(path)
     with contextlib.redirect_stdout(io.StringIO()):
         try:
