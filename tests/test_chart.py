@@ -319,3 +319,14 @@ def test_python_api_example_prints_what_the_docs_say(capsys):
     printed = [float(x) for x in capsys.readouterr().out.split()]
     claimed = [float(x) for x in block.split("# ", 1)[1].split()]
     np.testing.assert_allclose(printed, claimed, atol=1e-4)
+
+
+def test_frame_commands_take_a_size(capsys):
+    assert main(["stiffness", "specialized-diverge", "--material", "carbon", "--format", "json"]) == 0
+    every = json.loads(capsys.readouterr().out)
+    assert list(every) == ["48", "52", "54", "56", "58", "61", "64"]
+    S = np.array(every["56"]["S"])
+    assert np.all(np.linalg.eigvalsh(S) > 0)                 # the chart bicycle's beam model is sound
+    assert main(["stiffness", "specialized-diverge", "--bike-size", "56", "--material", "carbon",
+                 "--format", "json"]) == 0
+    np.testing.assert_array_equal(json.loads(capsys.readouterr().out)["S"], S)

@@ -5,6 +5,7 @@ import sys
 from ..choices import Beam, Procedure, Support
 from ..fe.defaults import DEFAULT_ELEMENT_SIZE
 from .figure_options import add_figure_options, figure_options, write_figure
+from .sizes import add_size_option, every_size
 
 
 def _common(parser):
@@ -26,7 +27,8 @@ def register(subparsers):
     p.add_argument("--procedure", choices=Procedure.values(), default=Procedure.CONDENSED.value,
                    help="condensed: consistent Schur complement (default); thesis: Williams (2015) "
                         "Eq. 3.31-3.34 unit rotations")
-    p.set_defaults(run=run_stiffness)
+    add_size_option(p, "--bike-size")
+    p.set_defaults(run=every_size(run_stiffness))
 
     p = subparsers.add_parser(
         "modes", help="natural frequencies of the rear frame",
@@ -40,7 +42,8 @@ def register(subparsers):
                    help=f"beam element length in m (default {DEFAULT_ELEMENT_SIZE})")
     p.add_argument("--plot", metavar="FILE", help="draw the mode shapes on the frame (.png, .pdf, .svg)")
     add_figure_options(p)
-    p.set_defaults(run=run_modes)
+    add_size_option(p, "--bike-size")
+    p.set_defaults(run=every_size(run_modes, many=False))
 
 
 def run_stiffness(args):

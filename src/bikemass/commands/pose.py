@@ -5,6 +5,7 @@ import warnings
 
 from ..choices import Combine, Grip
 from .figure_options import add_figure_options, figure_options, write_figure
+from .sizes import add_size_option, every_size
 
 JOINT_HELP = "torso_lean, neck, shoulder, elbow, hip, knee"
 
@@ -30,7 +31,8 @@ def register(sub):
     p.add_argument("--out", "-o", metavar="FILE", help="write the placement-form pose YAML here")
     p.add_argument("--plot", metavar="FILE", help="side view of the posed rider on the bicycle (.png, .pdf, .svg)")
     add_figure_options(p, "x forward, m", "height, m")
-    p.set_defaults(run=run_pose)
+    add_size_option(p, "--bike-size")
+    p.set_defaults(run=every_size(run_pose, many=False))
     f = sub.add_parser("pose-fit", help="thesis poses vs their closest joined-up chain poses",
                        description="For each placement pose, fit the chain's joint angles and hip position "
                                    "(least squares on the segment ends), then compare the joint gaps, the "

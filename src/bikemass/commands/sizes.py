@@ -52,7 +52,7 @@ def every_size(run, many=True):
             text = dumps({size: load(out) for size, out in outputs.items()}, fmt)
         else:
             text = "\n".join(f"size {size}\n{out}" for size, out in outputs.items())
-        if args.output:
+        if getattr(args, "output", None):
             write_atomic(args.output, text)
         else:
             print(text, end="")

@@ -52,7 +52,8 @@ def register(sub):
                       help="speed grid in m/s (default 0:30:0.05)")
     comp.add_argument("-o", "--output", metavar="FILE", required=True, help="figure (.png, .pdf, .svg)")
     add_figure_options(comp, SPEED_LIMIT)
-    comp.set_defaults(run=run_compare)
+    add_size_option(comp, "--bike-size")
+    comp.set_defaults(run=every_size(run_compare, many=False))
 
 
 def _allow(p):
