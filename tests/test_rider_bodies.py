@@ -255,3 +255,11 @@ def test_chart_bicycle_seats_from_its_contacts(capsys, tmp_path):
     code, out, err = run(capsys, "rider", path, "--bike", "bmc-roadmachine@51", "--format", "json", "--method", "exact")
     assert code == 0 and err == ""
     assert max(c["residual"] for c in json.loads(out)["contacts"].values()) <= CONTACT
+
+
+def test_top_level_api_seats_a_mapping():
+    import bikemass as bm
+    me = {"body": {"height": "1.65 m", "mass": "58 kg", "sex": "female"}, "chain": {"hands": "hoods"}}
+    rider = bm.seated_rider("cargo", me)
+    assert rider.properties("exact").mass == pytest.approx(58.0, rel=1e-12)
+    assert bm.parameters("cargo", me).to_dict() == bicycle_parameters(load_bicycle("cargo"), rider).to_dict()

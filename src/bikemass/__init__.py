@@ -26,7 +26,7 @@ _API = {
     "stability": "dynamics", "eigenvalues": "dynamics", "matrices": "dynamics", "speeds": "dynamics",
     "StabilityResult": "dynamics",
     "frame_modes": "frame", "frame_stiffness": "frame", "frame_structure": "frame",
-    "pose_rider": "posing", "PosedRider": "posing",
+    "pose_rider": "posing", "PosedRider": "posing", "seated_rider": "catalog",
     "plot_eigenvalues": "plots.stability", "plot_critical_speeds": "plots.critical_speeds",
     "plot_side_view": "bicycle.drawing", "plot_pose": "plots.pose", "plot_frame_modes": "fe.plot",
     "save_figure": "plots.figure", "geometry_chart": "bicycle.derived_chart", "plot_chart": "bicycle.chart_drawing",
