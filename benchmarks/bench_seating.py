@@ -15,8 +15,9 @@ Prints best-of-N wall times (s) and their ratio to yeadon building a Human from 
 import argparse
 import contextlib
 import io
-import time
 from pathlib import Path
+
+from bench_riders import best_time          # the sibling script (run from benchmarks/ or by path)
 
 from bikemass.bicycle import load_bicycle
 from bikemass.config import Node
@@ -26,16 +27,6 @@ from bikemass.rider.seating import seat_rider
 from bikemass.rider.yeadon_body import _human_of
 
 JASON = Path(__file__).parents[1] / "tests" / "data" / "yeadon" / "JasonYeadonMeas.txt"
-
-
-def best_time(fn, repeat):
-    """Best wall time of ``repeat`` calls (s)."""
-    times = []
-    for _ in range(repeat):
-        t = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t)
-    return min(times)
 
 
 def main():
