@@ -147,3 +147,26 @@ def test_chart_edits_and_sizes_rebuild_the_bicycle(client):
     reply = client.get("/api/params?bike=jamis&rider=none&chart.stack=600")
     assert reply.status_code == 400 and "chart" in reply.get_json()["error"]
     assert client.get("/api/params?bike=bmc-roadmachine&chart.reach=abc").status_code == 400
+
+
+def test_a_body_rider_from_height_mass_and_sex_is_seated_on_each_bicycle(client):
+    """The API's body rider equals the command line's chain pose file of the same person."""
+    query = "rider=body&height=1.8&mass=75.0&sex=male&hands=hoods&stiffness=infinite"
+    jamis = client.get(f"/api/params?bike=jamis&{query}").get_json()
+    cargo = client.get(f"/api/params?bike=cargo&{query}").get_json()
+    bare = client.get("/api/params?bike=jamis&rider=none").get_json()
+    assert jamis["mB"] - bare["mB"] == pytest.approx(75.0, abs=1e-9)
+    pose = client.get(f"/download/pose.yaml?bike=jamis&{query}").data
+    assert yaml.safe_load(pose)["body"] == {"height": "1.8 m", "mass": "75.0 kg", "sex": "male"}
+    assert jamis["xB"] != pytest.approx(cargo["xB"] * jamis["w"] / cargo["w"], abs=1e-3)
+    assert client.get("/api/params?bike=jamis&rider=body&height=4").status_code == 400
+    assert client.get("/api/params?bike=jamis&rider=body&sex=robot").status_code == 400
+
+
+def test_a_body_rider_matches_the_command_line(client, tmp_path):
+    query = "bike=jamis&rider=body&height=1.65&mass=58.0&sex=female&hands=tops&stiffness=steel"
+    pose = tmp_path / "me.yaml"
+    pose.write_bytes(client.get(f"/download/pose.yaml?{query}").data)
+    cli = cli_json("stability", "jamis", "--rider", str(pose), "--stiffness", "steel", "--format", "json")
+    ours = client.get(f"/api/stability?{query}").get_json()
+    np.testing.assert_allclose(ours["weave_speeds"], cli["weave_speeds"], atol=1e-12)

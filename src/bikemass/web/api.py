@@ -57,7 +57,10 @@ def download(engine, filename, state):
     elif filename == "bicycle.yaml":
         text = _source_text(engine.bicycle(state.bicycle_key).source)
     else:
-        rider = engine.rider(state.rider)
+        rider = engine.rider(state.rider_key)
+        if isinstance(rider, dict):
+            import yaml
+            return yaml.safe_dump(rider, sort_keys=False).encode(), mime
         if rider is None:
             raise InputError("URL", "rider", "a rider (this configuration has none)")
         from ..paths import resolve

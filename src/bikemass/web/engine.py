@@ -42,6 +42,7 @@ class Engine:
         self._uploads = {}
         self.bicycle = lru_cache(maxsize=32)(self._bicycle)
         self.rider = lru_cache(maxsize=32)(self._rider)
+        self.seated = lru_cache(maxsize=64)(self._seated)
         self.base_parameters = lru_cache(maxsize=64)(self._base_parameters)
         self.stiffness = lru_cache(maxsize=64)(self._stiffness)
 
@@ -109,15 +110,24 @@ class Engine:
             return load_bicycle(self.source(bike), size=size)
         return load_bicycle(edited_chart(self.source(bike), dict(chart)), size=size)
 
-    def _rider(self, rider):
+    def _rider(self, key):
+        """The rider of a :attr:`PageState.rider_key` as loaded (a body rider: its pose mapping,
+        which only a bicycle can solve)."""
         from ..catalog import load_rider
-        if "/" in rider or "\\" in rider or rider.startswith("."):
+        if isinstance(key, tuple):
+            return body_pose(key)
+        if "/" in key or "\\" in key or key.startswith("."):
             raise InputError("URL", "rider", "a shipped pose name (paths are not accepted)")
-        return load_rider(rider)
+        return load_rider(key)
+
+    def _seated(self, bicycle_key, rider_key):
+        """The rider seated on the bicycle (None for no rider); InputError if it cannot sit."""
+        from ..catalog import seated_rider
+        return seated_rider(self.bicycle(bicycle_key), self.rider(rider_key))
 
     def _base_parameters(self, key, rider, combine):
         from ..catalog import parameters
-        return parameters(self.bicycle(key), self.rider(rider), combine)
+        return parameters(self.bicycle(key), self.seated(key, rider), combine)
 
     def _stiffness(self, key, material):
         from ..catalog import stiffness
@@ -134,7 +144,7 @@ class Engine:
     # -- results --------------------------------------------------------------
     def parameters(self, state: PageState):
         """The benchmark parameter set of ``state``, typed-over values applied."""
-        base = self.base_parameters(state.bicycle_key, state.rider, state.combine)
+        base = self.base_parameters(state.bicycle_key, state.rider_key, state.combine)
         return base.replace(**dict(state.overrides)) if state.overrides else base
 
     def evaluate(self, state: PageState, speeds=None):
@@ -144,6 +154,15 @@ class Engine:
         params = self.parameters(state)
         S = self.stiffness(state.bicycle_key, state.stiffness)
         return Evaluation(params, S, stability(params, S, speeds))
+
+
+def body_pose(key):
+    """The chain-form pose mapping of a body rider key ``("body", height m, mass kg, sex, hands)``:
+    the body from height, mass and sex, hands on the grip, solved on whichever bicycle it meets."""
+    _, height, mass, sex, hands = key
+    return {"name": f"{sex}, {height:g} m, {mass:g} kg, hands on the {hands}",
+            "body": {"height": f"{height!r} m", "mass": f"{mass!r} kg", "sex": sex},
+            "chain": {"hands": hands}}
 
 
 def edited_chart(source, edits):

@@ -12,7 +12,7 @@ from ..errors import InputError
 from ..parameters import DESCRIPTIONS, NAMES
 from .api import DOWNLOADS
 from .engine import UPLOAD_LIMIT
-from .state import CHART_ANGLES, CHART_KEYS, STIFFNESS_CHOICES, PageState
+from .state import BODY_RIDER, CHART_ANGLES, CHART_KEYS, HANDS, SEXES, STIFFNESS_CHOICES, PageState
 
 STYLE = """
 body { font-family: system-ui, sans-serif; margin: 0; color: #222; background: #fafafa; }
@@ -68,7 +68,8 @@ def create_app(engine=None):
 def _shipped():
     from ..paths import available, frames_dir
     from ..rider import shipped_poses
-    return available(frames_dir()), ["none"] + shipped_poses()
+    body = {"label": "a body from height, mass and sex", "value": BODY_RIDER}
+    return available(frames_dir()), ["none"] + shipped_poses() + [body]
 
 
 def _layout(query):
@@ -94,12 +95,24 @@ def _layout(query):
         dcc.Dropdown(id="stiffness", options=list(STIFFNESS_CHOICES), value=state.stiffness, clearable=False),
         html.Label("Rider", htmlFor="rider"),
         dcc.Dropdown(id="rider", options=riders, value=state.rider, clearable=False),
+        html.Div(id="body-controls", style={} if state.rider == BODY_RIDER else {"display": "none"}, children=[
+            html.Table(className="params", children=[
+                html.Tr([html.Td("height"), html.Td(dcc.Input(id="height", type="text", debounce=True,
+                                                              value=repr(state.height), style={"width": "130px"})),
+                         html.Td("m")]),
+                html.Tr([html.Td("mass"), html.Td(dcc.Input(id="mass", type="text", debounce=True,
+                                                            value=repr(state.mass), style={"width": "130px"})),
+                         html.Td("kg")])]),
+            dcc.RadioItems(id="sex", options=list(SEXES), value=state.sex, inline=True),
+            html.Label("Hands on the", htmlFor="hands"),
+            dcc.Dropdown(id="hands", options=list(HANDS), value=state.hands, clearable=False)]),
         html.Label("Rider + rear frame"),
         dcc.RadioItems(id="combine", value=state.combine, inline=True, options=[
             {"label": " parallel-axis (exact) ", "value": "exact"},
             {"label": " thesis Eq. 3.6", "value": "thesis"}]),
-        _editor("Geometry chart (chart bicycles): type a value to change the frame", "chart", CHART_KEYS,
-                chart, lambda k: "deg" if k in CHART_ANGLES else "mm", lambda k: k.replace("_", " ")),
+        html.Div(id="chart-editor", children=_editor(
+            "Geometry chart: type a value to change the frame", "chart", CHART_KEYS, chart,
+            lambda k: "deg" if k in CHART_ANGLES else "mm", lambda k: k.replace("_", " "))),
         _editor("Benchmark parameters: type a value to override, empty = computed", "param", NAMES,
                 overrides, lambda k: DESCRIPTIONS[k].split("[")[-1].rstrip("]"), lambda k: k),
     ])
@@ -208,8 +221,11 @@ def _geometry_table(chart):
     return _html_table(["quantity", "value"], rows)
 
 
-def _state(bike, size, rider, stiffness, combine, chart_texts, param_texts):
+def _state(bike, size, rider, body, stiffness, combine, chart_texts, param_texts):
+    """The :class:`PageState` of the controls' values; InputError names a bad typed value."""
     state = PageState(bike=bike, size=size or "", rider=rider, stiffness=stiffness, combine=combine)
+    if rider == BODY_RIDER:
+        state = state.with_body(*body)
     state = state.with_chart(_parse(CHART_KEYS, chart_texts, "chart."))
     return state.with_overrides(_parse(NAMES, param_texts))
 
@@ -252,20 +268,22 @@ def _callbacks(app, engine):
                   Output("downloads", "children"), Output("url", "search"),
                   Output({"type": "param", "key": ALL}, "placeholder"),
                   Output({"type": "chart", "key": ALL}, "placeholder"),
-                  Output({"type": "chart", "key": ALL}, "disabled"),
+                  Output("chart-editor", "style"),
                   Output("error", "children"),
                   Input("bike", "value"), Input("size", "value"), Input("rider", "value"),
+                  Input("height", "value"), Input("mass", "value"), Input("sex", "value"), Input("hands", "value"),
                   Input("stiffness", "value"), Input("combine", "value"),
                   Input({"type": "chart", "key": ALL}, "value"), Input({"type": "param", "key": ALL}, "value"))
-    def update(bike, size, rider, stiffness, combine, chart_texts, param_texts):
+    def update(bike, size, rider, height, mass, sex, hands, stiffness, combine, chart_texts, param_texts):
         from ..bicycle.derived_chart import derived_chart
 
         blank = ("-",) * 4 + ("", "", "", "", [], no_update, [""] * len(NAMES), [""] * len(CHART_KEYS),
-                 [False] * len(CHART_KEYS))
+                 no_update)
         try:
-            state = _state(bike, size, rider, stiffness, combine, chart_texts, param_texts)
+            state = _state(bike, size, rider, (height, mass, sex, hands), stiffness, combine, chart_texts,
+                           param_texts)
             evaluation = engine.evaluate(state)
-            base = engine.base_parameters(state.bicycle_key, state.rider, state.combine).to_dict()
+            base = engine.base_parameters(state.bicycle_key, state.rider_key, state.combine).to_dict()
             bicycle = engine.bicycle(state.bicycle_key)
         except InputError as exc:
             return blank + (str(exc),)
@@ -282,16 +300,23 @@ def _callbacks(app, engine):
                 _range_text(result.ranges["strict"]["exact"]), f"{p.mB + p.mH + p.mR + p.mF:.2f} kg",
                 _svg_uri(_eigenvalue_figure(result, state)), matrix, _bodies_table(p), _geometry_table(chart),
                 links, "?" + query, [f"{base[n]:.6g}" for n in NAMES], shown,
-                [not editable] * len(CHART_KEYS), message)
+                {} if editable else {"display": "none"}, message)
 
     @app.callback(Output("side-view", "src"), Input("bike", "value"), Input("size", "value"),
-                  Input("rider", "value"), Input({"type": "chart", "key": ALL}, "value"))
-    def side_view(bike, size, rider, chart_texts):
+                  Input("rider", "value"), Input("height", "value"), Input("mass", "value"),
+                  Input("sex", "value"), Input("hands", "value"), Input({"type": "chart", "key": ALL}, "value"))
+    def side_view(bike, size, rider, height, mass, sex, hands, chart_texts):
         try:
-            state = _state(bike, size, rider, "infinite", "exact", chart_texts, [""] * len(NAMES))
-            return _svg_uri(_side_view_figure(engine.bicycle(state.bicycle_key), engine.rider(rider)))
+            state = _state(bike, size, rider, (height, mass, sex, hands), "infinite", "exact", chart_texts,
+                           [""] * len(NAMES))
+            bicycle = engine.bicycle(state.bicycle_key)
+            return _svg_uri(_side_view_figure(bicycle, engine.seated(state.bicycle_key, state.rider_key)))
         except InputError:
             return ""
+
+    @app.callback(Output("body-controls", "style"), Input("rider", "value"))
+    def body_controls(rider):
+        return {} if rider == BODY_RIDER else {"display": "none"}
 
 
 def _placeholder(key, value):
@@ -303,7 +328,9 @@ def _placeholder(key, value):
 
 def _eigenvalue_figure(result, state):
     from ..plots.stability import plot_eigenvalues
-    return plot_eigenvalues(result, title=f"{state.bike}, rider {state.rider}, stiffness {state.stiffness}")
+    rider = (f"a {state.sex} rider of {state.height:g} m and {state.mass:g} kg" if state.rider == BODY_RIDER
+             else "no rider" if state.rider == "none" else f"rider {state.rider}")
+    return plot_eigenvalues(result, title=f"{state.bike}, {rider}, stiffness {state.stiffness}")
 
 
 def _side_view_figure(bicycle, rider):

@@ -18,8 +18,14 @@ STIFFNESS_CHOICES = ("infinite", "steel", "titanium", "aluminum")
 """Rear-frame stiffness choices offered by the page (a rigid frame or a shipped material)."""
 COMBINE_CHOICES = ("exact", "thesis")
 """Rider + rear frame: parallel-axis theorem, or the thesis's Eq. 3.6."""
-TEXT_KEYS = ("bike", "size", "rider", "stiffness", "combine")
+TEXT_KEYS = ("bike", "size", "rider", "stiffness", "combine", "sex", "hands")
 """Query keys holding names."""
+BODY_RIDER = "body"
+"""``rider=body``: a rider built from ``height`` (m), ``mass`` (kg), ``sex`` and the grip ``hands``."""
+BODY_NUMBERS = {"height": ("m", 1.0, 2.5), "mass": ("kg", 20.0, 250.0)}
+"""Body query numbers: unit and the accepted range."""
+SEXES = ("male", "female")
+HANDS = ("tops", "hoods", "drops", "aero")
 CHART_PREFIX = "chart."
 CHART_KEYS = ("stack", "reach", "head_tube_angle", "seat_tube_angle", "head_tube_length",
               "seat_tube_length", "chainstay_length", "bb_drop", "fork_offset")
@@ -37,6 +43,13 @@ class PageState:
     rider: str = "relaxed"
     stiffness: str = "infinite"
     combine: str = "exact"
+    height: float = 1.80
+    """Rider height (m) when ``rider`` is ``body``."""
+    mass: float = 75.0
+    """Rider mass (kg) when ``rider`` is ``body``."""
+    sex: str = "male"
+    hands: str = "hoods"
+    """The grip the hands hold when ``rider`` is ``body``."""
     size: str = ""
     """Size of a size-run bicycle file ("" = its first size)."""
     chart: tuple = field(default=())
@@ -48,11 +61,17 @@ class PageState:
     def from_query(cls, query):
         """State from a mapping of query keys to strings; InputError names a bad key."""
         for key in query:
-            if key not in TEXT_KEYS + NAMES and key.removeprefix(CHART_PREFIX) not in CHART_KEYS:
-                raise InputError(SOURCE, key, "one of bike, size, rider, stiffness, combine, a benchmark "
-                                 "parameter name (w, c, lam, ..., IFyy) or chart.<key> (chart.stack, ...)")
+            if key not in TEXT_KEYS + NAMES + tuple(BODY_NUMBERS) and \
+                    key.removeprefix(CHART_PREFIX) not in CHART_KEYS:
+                raise InputError(SOURCE, key, "one of bike, size, rider, stiffness, combine, height, mass, "
+                                 "sex, hands, a benchmark parameter name (w, c, lam, ..., IFyy) or "
+                                 "chart.<key> (chart.stack, ...)")
         values = {k: str(query[k]).strip() for k in TEXT_KEYS if k in query}
+        values.update({k: _body_number(k, query[k]) for k in BODY_NUMBERS if str(query.get(k, "")).strip()})
         state = cls(**{k: v for k, v in values.items() if v})
+        for key, choices in (("sex", SEXES), ("hands", HANDS)):
+            if getattr(state, key) not in choices:
+                raise InputError(SOURCE, key, f"one of {', '.join(choices)}")
         if state.stiffness not in STIFFNESS_CHOICES:
             raise InputError(SOURCE, "stiffness", f"one of {', '.join(STIFFNESS_CHOICES)}")
         if state.combine not in COMBINE_CHOICES:
@@ -66,7 +85,11 @@ class PageState:
     def to_query(self):
         """The query string (without ``?``) that :meth:`from_query` reads back to this state."""
         pairs = [("bike", self.bike)] + ([("size", self.size)] if self.size else [])
-        pairs += [("rider", self.rider), ("stiffness", self.stiffness)]
+        pairs += [("rider", self.rider)]
+        if self.rider == BODY_RIDER:
+            pairs += [("height", repr(self.height)), ("mass", repr(self.mass)), ("sex", self.sex),
+                      ("hands", self.hands)]
+        pairs += [("stiffness", self.stiffness)]
         if self.combine != "exact":
             pairs.append(("combine", self.combine))
         pairs += [(CHART_PREFIX + key, repr(value)) for key, value in self.chart]
@@ -78,6 +101,21 @@ class PageState:
         """``(bike, size, chart)``: what fixes the bicycle (hashable, for caches)."""
         return self.bike, self.size, self.chart
 
+    @property
+    def rider_key(self):
+        """The rider's pose name, or for a body rider ``("body", height, mass, sex, hands)``."""
+        if self.rider == BODY_RIDER:
+            return BODY_RIDER, self.height, self.mass, self.sex, self.hands
+        return self.rider
+
+    def with_body(self, height, mass, sex, hands):
+        """A copy with the body rider's height (m), mass (kg), sex and grip (texts or numbers)."""
+        for key, value, choices in (("sex", sex, SEXES), ("hands", hands, HANDS)):
+            if value not in choices:
+                raise InputError(SOURCE, key, f"one of {', '.join(choices)}")
+        return replace(self, height=_body_number("height", height), mass=_body_number("mass", mass),
+                       sex=sex, hands=hands)
+
     def with_overrides(self, values):
         """A copy whose overrides are ``values`` (``{name: float or None}``, None = computed)."""
         kept = tuple((n, _number(n, values[n])) for n in NAMES if values.get(n) is not None)
@@ -87,6 +125,14 @@ class PageState:
         """A copy whose chart edits are ``values`` (``{key: mm or deg, or None}``, None = the file's)."""
         kept = tuple((k, _number(CHART_PREFIX + k, values[k])) for k in CHART_KEYS if values.get(k) is not None)
         return replace(self, chart=kept)
+
+
+def _body_number(name, text):
+    unit, low, high = BODY_NUMBERS[name]
+    value = _number(name, text)
+    if not low <= value <= high:
+        raise InputError(SOURCE, name, f"a {name} between {low:g} and {high:g} {unit}")
+    return value
 
 
 def _number(name, text):
