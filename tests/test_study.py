@@ -10,6 +10,7 @@ import csv
 import io
 import json
 import re
+from html.parser import HTMLParser
 from unittest import mock
 
 import pytest
@@ -45,12 +46,21 @@ class CountingProgress:
 
 @pytest.fixture(scope="module")
 def study(tmp_path_factory):
+    from bikemass.study import pipeline
     out = tmp_path_factory.mktemp("study")
     stdout = io.StringIO()
-    with contextlib.redirect_stdout(stdout), mock.patch("bikemass.progress.Progress", CountingProgress):
+    kept = {}
+
+    def keep(results, folder, paths=()):           # the results object, for the report.html test
+        kept["results"] = results
+        return write_html(results, folder, paths)
+
+    write_html = pipeline.write_html
+    with contextlib.redirect_stdout(stdout), mock.patch("bikemass.progress.Progress", CountingProgress), \
+            mock.patch.object(pipeline, "write_html", keep):
         code = main(["study", "--out", str(out), "--no-figures"])
     assert code == 0
-    return out, stdout.getvalue()
+    return out, stdout.getvalue(), kept["results"]
 
 
 def test_progress_bar_counts_every_step(study):
@@ -202,7 +212,7 @@ def test_stdout_summary(study):
     out = study[1]
     assert "Tables 4-2..4-7, 5-1..5-3 (thesis run):" in out
     assert "Table 3-4: 40 of 40 entries within 0.5 %" in out
-    assert out.rstrip().endswith("report.md")
+    assert out.rstrip().endswith("report.md)") and "report.html" in out
 
 
 def test_help_is_for_newcomers(capsys):
@@ -217,3 +227,45 @@ def test_bad_input_one_line_exit_2(capsys, argv, key):
     assert main(["study", *argv]) == 2
     _, err = capsys.readouterr()
     assert err.count("\n") == 1 and key in err and "Traceback" not in err
+
+
+class _Images(HTMLParser):
+    """Every <img> src and every attribute that could load something from elsewhere."""
+
+    def __init__(self):
+        super().__init__()
+        self.images, self.external = [], []
+
+    def handle_starttag(self, tag, attrs):
+        for key, value in attrs:
+            if tag == "img" and key == "src":
+                self.images.append(value)
+            elif key in ("src", "href") and not (value or "").startswith("#"):
+                self.external.append((tag, key, value))
+
+
+def test_report_html_is_one_self_contained_file_with_the_figures(study, tmp_path):
+    """report.html: findings first, then the reproduction, then the details; every figure
+    embedded as PNG data (at least 10), nothing loaded from outside."""
+    import base64
+
+    from bikemass.study import figures, pipeline
+    from bikemass.study.runs import Inputs
+    text = (study[0] / "report.html").read_text()            # the --no-figures run: the text alone
+    assert "<img" not in text and "--no-figures" in text
+    reported = ("critical_", "eig_benchmark", "eig_jamis_relaxed", "pose_relaxed")
+    jobs = [j for j in pipeline.figure_jobs(study[2], Inputs(), tmp_path / "figures")
+            if figures.job_path(j).name.startswith(reported)]
+    pipeline.write_html(study[2], tmp_path, [figures.run_job(j) for j in jobs])
+    text = (tmp_path / "report.html").read_text()
+    parser = _Images()
+    parser.feed(text)
+    assert len(parser.images) >= 10 and parser.external == []
+    for src in parser.images:
+        head, data = src.split(",", 1)
+        assert head == "data:image/png;base64" and base64.b64decode(data)[:8] == b"\x89PNG\r\n\x1a\n"
+    assert not re.search(r"https?://|<link|<script|@import|url\(", text)
+    order = [text.index(h) for h in ("<h2>Findings", "<h2>The reproduction", "id='misses'", "<h2>Details")]
+    assert order == sorted(order)
+    findings = text[order[0]:order[1]]
+    assert "of 894</b>" in findings and "Jamis, rigid frame" in findings and findings.count("<img") >= 3

@@ -14,7 +14,8 @@ What it does, in order:
        corrected  the same inputs with the physics fixed (parallel-axis theorem, condensed S
                   from the beam model, exact critical speeds);
        geometry   everything from geometry.
-It writes into --out: report.md (start there), stability_ranges.json (thesis run),
+It writes into --out: report.html (start there: findings, figures, tables in one file that
+opens offline), report.md (the same text for diffs), stability_ranges.json (thesis run),
 stability_ranges_corrected.json, stability_ranges_geometry.json, one CSV per table and,
 unless --no-figures, PNG figures in figures/.  A summary of the match counts is printed.
 Takes a few seconds without figures, under a minute with them (2 cores).
@@ -60,8 +61,7 @@ def run_study(args):
     with Progress(pipeline.steps(figures), "study") as bar:
         results = pipeline.compute(workers, bar.step)
         pipeline.write_files(results, out)
-        if figures:
-            pipeline.draw(results, out, workers, bar.step)
+        pipeline.write_html(results, out, pipeline.draw(results, out, workers, bar.step) if figures else ())
     print(summary(results, match_counts(results.entries), out))
     return 0
 
@@ -75,5 +75,5 @@ def summary(results, counts, out):
     lines += [f"  miss: {e.table[1:].replace('_', '-')} {e.row} {e.column}: {results.explanations[e]}"
               for e in misses]
     lines += [f"{t.title.split(':')[0]}: {t.notes[0]}" for t in results.input_tables if t.notes]
-    lines.append(f"report: {out / 'report.md'}")
+    lines.append(f"report: {out / 'report.html'} (the same as Markdown: {out / 'report.md'})")
     return "\n".join(lines)

@@ -45,7 +45,8 @@ def plot_critical_speeds(results, title="", size=None, xlim=None, values=True):
     ax = fig.subplots()
     marks = [v for row in results.values() for r in row.values()
              for v in (*_critical(r).weave, *_critical(r).capsize)]
-    xlim = tuple(xlim or (0.0, 1.12 * max(marks, default=10.0) + 0.5))
+    ends = [v for row in results.values() for r in row.values() for span in _critical(r).stable for v in span]
+    xlim = tuple(xlim or (0.0, 1.12 * max(marks + ends, default=10.0) + 0.5))
     for i, row in enumerate(rows):
         for j, name in enumerate(series):
             if name not in results[row]:
@@ -59,8 +60,8 @@ def plot_critical_speeds(results, title="", size=None, xlim=None, values=True):
                         markeredgewidth=0.6, zorder=3, linestyle="none")
             if values:
                 _write_values(ax, sorted((*c.weave, *c.capsize)) or [v for r in c.stable for v in r], y, xlim)
-            if not (c.weave or c.capsize or c.stable):
-                ax.annotate("no stable speed, no crossing", (xlim[0], y), xytext=(4, 0),
+            if not c.stable:
+                ax.annotate("no stable speed", (xlim[0], y), xytext=(4, 0),
                             textcoords="offset points", va="center", fontsize=6.5, color="0.4")
     if len(rows) > 1:
         for i in range(len(rows) - 1):
@@ -73,8 +74,9 @@ def plot_critical_speeds(results, title="", size=None, xlim=None, values=True):
     ax.tick_params(axis="y", length=0)
     for name in series if len(series) > 1 else ():
         ax.plot([], [], "-", lw=4.5, alpha=0.6, color=colours[name], label=str(name))
-    ax.plot([], [], WEAVE_MARKER, color="0.7", markeredgecolor="k", label="weave speed $v_\\mathrm{w}$")
-    ax.plot([], [], CAPSIZE_MARKER, color="0.7", markeredgecolor="k", label="capsize speed $v_\\mathrm{c}$")
+    if marks:
+        ax.plot([], [], WEAVE_MARKER, color="0.7", markeredgecolor="k", label="weave speed $v_\\mathrm{w}$")
+        ax.plot([], [], CAPSIZE_MARKER, color="0.7", markeredgecolor="k", label="capsize speed $v_\\mathrm{c}$")
     ax.plot([], [], "-", lw=4.5, alpha=0.45, color="0.5", label="stable speeds")
     ax.legend(fontsize=7.5, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0, frameon=False)
     if title:

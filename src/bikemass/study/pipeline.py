@@ -132,8 +132,17 @@ def figure_jobs(results, inputs, folder):
 
 
 def draw(results, out, workers=WORKERS, step=lambda label: None):
-    """Draw the figures into ``out/figures``."""
+    """Draw the figures into ``out/figures``; returns the paths written."""
     jobs = figure_jobs(results, _INPUTS or Inputs(), out / "figures")
+    paths = []
     with executor(workers) as pool:
-        for path in [pool.submit(figures.run_job, job) for job in jobs]:
-            step(path.result().name)
+        for future in [pool.submit(figures.run_job, job) for job in jobs]:
+            paths.append(future.result())
+            step(paths[-1].name)
+    return paths
+
+
+def write_html(results, out, figure_paths=()):
+    """``report.html`` with the figures at ``figure_paths`` (PNG) embedded."""
+    from .report_html import render_html
+    write_atomic(out / "report.html", render_html(results, {p.name: p.read_bytes() for p in figure_paths}))
