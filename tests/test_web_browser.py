@@ -41,10 +41,14 @@ def server():
         def log_request(self, *args):
             pass
     httpd = make_server("127.0.0.1", 0, create_app().server, threaded=True, request_handler=Quiet)
-    thread = threading.Thread(target=httpd.serve_forever, daemon=True)
+    httpd.daemon_threads = False      # server_close() then waits for requests still being answered,
+    httpd.block_on_close = True       # so no thread is inside numpy/trimesh when the interpreter exits
+    thread = threading.Thread(target=httpd.serve_forever)
     thread.start()
     yield f"http://127.0.0.1:{httpd.server_port}"
     httpd.shutdown()
+    httpd.server_close()
+    thread.join()
 
 
 @pytest.fixture(scope="module")
