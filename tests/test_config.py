@@ -39,7 +39,7 @@ def test_errors_name_file_key_and_expectation(tmp_path):
 def test_bad_yaml_and_missing_file(tmp_path):
     with pytest.raises(InputError, match="line 2: valid YAML"):
         load_yaml(write(tmp_path, "a: [1, 2\n"))
-    with pytest.raises(InputError, match="readable YAML"):
+    with pytest.raises(InputError, match="an existing file"):
         load_yaml(tmp_path / "missing.yaml")
     with pytest.raises(InputError, match="mapping at the top"):
         load_yaml(write(tmp_path, "- 1\n"))

@@ -1,6 +1,6 @@
 """Reading YAML input with one-line errors that name the file, the key and what was expected.
 
-:func:`load_yaml` reads a file with ``yaml.safe_load``; :class:`Node` wraps a
+:func:`load_yaml` reads a file through the input gate (:mod:`bikemass.gate`); :class:`Node` wraps a
 mapping (or a list) together with its file and key path and offers typed
 getters, so every loader reports bad input the same way (:class:`InputError`).
 """
@@ -8,25 +8,21 @@ getters, so every loader reports bad input the same way (:class:`InputError`).
 from pathlib import Path
 
 import numpy as np
-import yaml
 
-from .errors import InputError
+from .errors import InputError, short
+from .gate import load_data
 from .units import to_si
+
+MAX_MAGNITUDE = 1e12
+"""Largest magnitude of any number read (SI): above every physical input (a steel's E is 2e11 Pa),
+below where products and squares of inputs overflow."""
 
 
 def load_yaml(path):
-    """Parse ``path`` with ``yaml.safe_load``; return a :class:`Node` over its top-level mapping."""
+    """Read ``path`` through the input gate (:func:`bikemass.gate.load_data`); return a
+    :class:`Node` over its top-level mapping."""
     path = Path(path)
-    try:
-        text = path.read_text()
-    except OSError as exc:
-        raise InputError(path, "(file)", f"a readable YAML file ({exc.strerror})") from None
-    try:
-        data = yaml.safe_load(text)
-    except yaml.YAMLError as exc:
-        mark = getattr(exc, "problem_mark", None)
-        where = f"line {mark.line + 1}" if mark else "(file)"
-        raise InputError(path, where, f"valid YAML ({getattr(exc, 'problem', exc)})") from None
+    data = load_data(path)
     node = Node(data, path, "")
     if not isinstance(data, dict):
         node.fail("a YAML mapping at the top level")
@@ -95,23 +91,26 @@ class Node:
         return self.value is None
 
     def number(self, positive=False, nonnegative=False):
-        """A float in SI (``"<number> <unit>"`` strings converted)."""
+        """A float in SI (``"<number> <unit>"`` strings converted), finite and of magnitude
+        at most :data:`MAX_MAGNITUDE`."""
         try:
             x = to_si(self.value)
-        except ValueError as exc:
+        except (ValueError, OverflowError) as exc:
             self.fail(str(exc))
         if not np.isfinite(x):
-            self.fail(f"a finite number, got {self.value!r}")
+            self.fail(f"a finite number, got {short(self.value)}")
+        if abs(x) > MAX_MAGNITUDE:
+            self.fail(f"a number of magnitude at most {MAX_MAGNITUDE:g} (SI), got {short(self.value)}")
         if positive and not x > 0:
-            self.fail(f"a positive number, got {self.value!r}")
+            self.fail(f"a positive number, got {short(self.value)}")
         if nonnegative and x < 0:
-            self.fail(f"a number >= 0, got {self.value!r}")
+            self.fail(f"a number >= 0, got {short(self.value)}")
         return x
 
     def vector(self, size=3):
         """A float array of length ``size`` (each entry may carry a unit)."""
         if not isinstance(self.value, list) or len(self.value) != size:
-            self.fail(f"a list of {size} numbers, got {self.value!r}")
+            self.fail(f"a list of {size} numbers, got {short(self.value)}")
         return np.array([e.number() for e in self.elements()])
 
     def matrix(self, shape):
@@ -124,12 +123,12 @@ class Node:
     def string(self, choices=None):
         """A string, optionally one of ``choices``."""
         if not isinstance(self.value, str):
-            self.fail(f"a string, got {self.value!r}")
+            self.fail(f"a string, got {short(self.value)}")
         if choices is not None and self.value not in choices:
-            self.fail(f"one of {', '.join(choices)}, got {self.value!r}")
+            self.fail(f"one of {', '.join(choices)}, got {short(self.value)}")
         return self.value
 
     def boolean(self):
         if not isinstance(self.value, bool):
-            self.fail(f"true or false, got {self.value!r}")
+            self.fail(f"true or false, got {short(self.value)}")
         return self.value

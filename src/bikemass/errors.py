@@ -1,11 +1,28 @@
 """The one exception type for bad user input.
 
 Every loader raises :class:`InputError`; the command line prints its message as
-one line and exits with status 2.
+one line and exits with status 2.  The message is always one line: control
+characters (a newline in a key, say) are escaped and long parts are cut, so a
+hostile value can neither split the line nor flood the terminal.
 """
 
 
 from pathlib import Path
+
+MAX_PART = 300
+"""Longest file name, key or expectation shown in a message (characters)."""
+
+
+def short(value, limit=60):
+    """``repr`` of ``value`` cut to about ``limit`` characters (never more than one line)."""
+    text = repr(value)
+    return one_line(text if len(text) <= limit else text[:limit - 5] + "...", limit)
+
+
+def one_line(text, limit=MAX_PART):
+    """``text`` with control characters escaped, cut to ``limit`` characters."""
+    text = "".join(c if c.isprintable() else repr(c)[1:-1] for c in str(text))
+    return text if len(text) <= limit else text[:limit - 3] + "..."
 
 
 def _shown(source):
@@ -13,7 +30,7 @@ def _shown(source):
     from .paths import data_root
     try:
         return str(Path(source).resolve().relative_to(data_root().resolve()))
-    except (ValueError, OSError):
+    except (ValueError, OSError, RuntimeError):
         return str(source)
 
 
@@ -21,7 +38,8 @@ class InputError(ValueError):
     """Bad input: names the file, the key and what was expected (a ValueError)."""
 
     def __init__(self, source, key, expected):
-        self.source, self.key, self.expected = _shown(source), str(key), str(expected)
+        self.source, self.key = one_line(_shown(source)), one_line(key)
+        self.expected = one_line(expected, 2 * MAX_PART)
         super().__init__(f"{self.source}: {self.key}: {self.expected}")
 
     def __reduce__(self):

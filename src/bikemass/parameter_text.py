@@ -126,12 +126,9 @@ def parse_parameter_text(text, source="(text)"):
 
 def read_parameter_text(path):
     """:class:`ParameterText` of the file at ``path``."""
+    from .gate import read_text
     path = Path(path)
-    try:
-        text = path.read_text()
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(path, "(file)", f"a readable text file ({getattr(exc, 'strerror', None) or exc})") from None
-    return parse_parameter_text(text, str(path))
+    return parse_parameter_text(read_text(path), str(path))
 
 
 def looks_like_parameter_text(text):

@@ -29,9 +29,9 @@ def resolve(name, folder: Path, what: str) -> Path:
     """Path for ``name``: an existing file, else ``folder/<name>.yaml`` (``-`` and ``_`` alike)."""
     p = Path(name)
     if p.suffix in (".yaml", ".yml", ".json", ".txt") or p.is_file():
-        if not p.is_file():
+        if not os.path.lexists(p):
             raise InputError(p, "(file)", f"an existing {what} file")
-        return p
+        return p   # not necessarily a regular file: the input gate says what it is
     for stem in (name, name.replace("-", "_"), name.replace("_", "-")):
         candidate = folder / f"{stem}.yaml"
         if candidate.is_file():

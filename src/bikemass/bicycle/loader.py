@@ -13,6 +13,8 @@ from pathlib import Path
 import numpy as np
 
 from ..config import Node, load_yaml
+from ..gate import read_text
+from ..errors import InputError, short
 from ..inertia import MassProperties
 from ..materials import load_materials, read_materials
 from ..output import plain
@@ -96,8 +98,8 @@ def _is_parameter_text(path):
     if path.suffix.lower() == ".txt":
         return True
     try:
-        return looks_like_parameter_text(path.read_text())
-    except (OSError, UnicodeDecodeError):
+        return looks_like_parameter_text(read_text(path))
+    except InputError:
         return False                      # load_yaml names the problem
 
 
@@ -115,12 +117,21 @@ def _measured_bicycle(node, path):
     return bicycle_from_parameters(inner.published, name, str(path), stiffness, contacts)
 
 
-def _base_path(name, folder):
-    """A base bicycle: a file next to the referring file (``name`` or ``name.yaml``), else as any BIKE."""
+MAX_BASE_CHAIN = 16
+"""Most ``base:`` files one bicycle may stand on."""
+
+
+def _base_path(node):
+    """A base bicycle: a file next to the referring file (``name`` or ``name.yaml``), else as any BIKE;
+    a missing one is blamed on the ``base`` key of the referring file."""
+    name, folder = node.string(), Path(node.source).parent
     for candidate in (folder / name, folder / f"{name.replace('-', '_')}.yaml"):
         if candidate.is_file():
             return candidate
-    return resolve(name, frames_dir(), "bicycle")
+    try:
+        return resolve(name, frames_dir(), "bicycle")
+    except InputError as exc:
+        node.fail(f"{exc.expected}, got {short(name)}")
 
 
 def _with_base(node, seen=()):
@@ -130,9 +141,10 @@ def _with_base(node, seen=()):
     """
     if not node.has("base"):
         return node
-    path = _base_path(node["base"].string(), Path(node.source).parent)
-    if path.resolve() in seen:
-        node.fail("a base bicycle that does not lead back to this file", "base")
+    path = _base_path(node["base"])
+    if path.resolve() in seen or len(seen) >= MAX_BASE_CHAIN:
+        node.fail("a base bicycle that does not lead back to this file" if path.resolve() in seen else
+                  f"a chain of at most {MAX_BASE_CHAIN} base files", "base")
     base = _with_base(load_yaml(path), seen + (path.resolve(),))
     if not size_names(base):
         _read_any(base, str(path))
@@ -257,12 +269,15 @@ def _read_structure(node, tubes, keypoints):
     supports = {}
     for key in ("dropouts", "head_tube"):
         pair = s[key].elements()
-        if len(pair) != 2:
-            s.fail("a list of two keypoint names", key)
+        if len(pair) != 2 or pair[0].value == pair[1].value:
+            s.fail(f"a list of two different keypoint names, got {short(s[key].value)}", key)
         for e in pair:
             if e.string() not in keypoints:
                 e.fail(f"a keypoint defined under keypoints, got {e.value!r}")
         supports[key] = tuple(e.value for e in pair)
+        if np.linalg.norm(keypoints[pair[0].value] - keypoints[pair[1].value]) < 1e-6:
+            s.fail(f"two keypoints at different places, got {supports[key]} both at "
+                   f"{np.round(keypoints[pair[0].value], 4).tolist()}", key)
     used = {k for t in chosen for k in (t.start_key, t.end_key)} | set(supports["dropouts"]) | set(supports["head_tube"])
     return Structure(tuple(chosen), supports["dropouts"], supports["head_tube"],
                      {k: v for k, v in keypoints.items() if k in used})

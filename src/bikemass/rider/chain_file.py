@@ -41,7 +41,12 @@ def bicycle_contacts(bike, node):
         bicycle = bike
     else:
         here = Path(node.source).parent / bike
-        bicycle = load_bicycle(str(here) if here.is_file() else bike)
+        try:
+            bicycle = load_bicycle(str(here) if here.is_file() else bike)
+        except InputError as exc:
+            if exc.key not in ("(name)", "(file)") or exc.source not in (str(bike), str(here)):
+                raise
+            node.fail(f"{exc.expected} [{exc.source}]")
     if bicycle.contacts is None:
         from ..errors import _shown
         node.fail(f"a bicycle with a contacts: section (saddle, bottom_bracket, crank_length, grips); "

@@ -6,9 +6,9 @@ explanation of misses), never by the code that computes a result.
 
 from functools import lru_cache
 
-import yaml
-
+from ..gate import load_data
 from ..paths import data_root
+
 
 def reference_dir():
     return data_root() / "reference"
@@ -16,7 +16,7 @@ def reference_dir():
 
 @lru_cache(maxsize=None)
 def _load(name):
-    return yaml.safe_load((reference_dir() / f"{name}.yaml").read_text())
+    return load_data(reference_dir() / f"{name}.yaml")
 
 
 def stability_tables():

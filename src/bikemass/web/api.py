@@ -70,8 +70,8 @@ def download(engine, filename, state):
 
 
 def _source_text(path):
-    from pathlib import Path
-    return Path(path).read_text(encoding="utf-8")
+    from ..gate import read_text
+    return read_text(path)
 
 
 def register_routes(server, engine):

@@ -1,0 +1,194 @@
+"""The input gate: every input file is read and parsed here, and nowhere else.
+
+:func:`read_text` opens a file without ever blocking (a FIFO, a terminal or
+``/dev/zero`` is refused before a byte is read), refuses anything that is not
+a regular file or is larger than :data:`MAX_BYTES`, and decodes UTF-8, naming
+the byte offset of the first bad byte.  :func:`parse_yaml` builds the YAML
+tree itself from libyaml's event stream (pure-Python events where libyaml is
+missing), iteratively, so that it can refuse what ``yaml.safe_load`` would let
+through: aliases and anchors (no "billion laughs"), nesting deeper than
+:data:`MAX_DEPTH`, more than :data:`MAX_VALUES` values, integers longer than
+:data:`MAX_INT_DIGITS` digits, non-scalar keys, a second document, and a key
+given twice in one mapping (named with both lines).  Every refusal is one
+:class:`~bikemass.errors.InputError` naming the file and the line.
+"""
+
+import os
+import stat
+from pathlib import Path
+
+import yaml
+from yaml.events import (AliasEvent, DocumentEndEvent, MappingEndEvent, ScalarEvent, SequenceEndEvent,
+                         SequenceStartEvent, StreamEndEvent)
+from yaml.nodes import MappingNode, ScalarNode, SequenceNode
+
+from .errors import InputError, short as _short
+
+MAX_BYTES = 1_000_000
+"""Largest input file read (bytes); the largest shipped file is under 20 kB."""
+MAX_DEPTH = 64
+"""Deepest nesting of YAML mappings and lists."""
+MAX_VALUES = 100_000
+"""Most YAML values (scalars, lists and mappings) in one file."""
+MAX_INT_DIGITS = 30
+"""Longest integer literal; a longer one is refused rather than rounded or overflowed."""
+
+_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+"""libyaml's parser where it is installed (about 7x faster), the pure-Python one otherwise."""
+_INT_TAG = "tag:yaml.org,2002:int"
+_FILE_KINDS = ((stat.S_ISDIR, "a folder"), (stat.S_ISFIFO, "a FIFO (named pipe)"),
+               (stat.S_ISCHR, "a character device"), (stat.S_ISBLK, "a block device"),
+               (stat.S_ISSOCK, "a socket"))
+
+
+def file_kind(mode):
+    """What a non-regular file is, in words (``"a folder"``, ``"a FIFO (named pipe)"``, ...)."""
+    return next((name for test, name in _FILE_KINDS if test(mode)), "not a regular file")
+
+
+def read_bytes(path, limit=MAX_BYTES):
+    """The bytes of the regular file ``path`` (at most ``limit``); :class:`InputError` otherwise.
+
+    The file is opened non-blocking and checked with ``fstat`` before anything is read.
+    """
+    path = Path(path)
+    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0)
+    try:
+        fd = os.open(path, flags)
+    except FileNotFoundError:
+        raise InputError(path, "(file)", "an existing file (no such file)") from None
+    except OSError as exc:
+        raise InputError(path, "(file)", f"a readable file ({exc.strerror})") from None
+    with os.fdopen(fd, "rb") as fh:
+        info = os.fstat(fd)
+        if not stat.S_ISREG(info.st_mode):
+            raise InputError(path, "(file)", f"a regular file, got {file_kind(info.st_mode)}")
+        if info.st_size > limit:
+            raise InputError(path, "(file)", f"a file of at most {limit} bytes, got {info.st_size} bytes")
+        try:
+            data = fh.read(limit + 1)
+        except OSError as exc:
+            raise InputError(path, "(file)", f"a readable file ({exc.strerror})") from None
+    if len(data) > limit:
+        raise InputError(path, "(file)", f"a file of at most {limit} bytes (it grew while being read)")
+    return data
+
+
+def decode(data, source):
+    """``data`` as text: UTF-8 (a leading byte-order mark is dropped), no NUL bytes."""
+    if data.startswith((b"\xff\xfe", b"\xfe\xff")):
+        raise InputError(source, "byte 0", "UTF-8 text, got a UTF-16 byte-order mark (save the file as UTF-8)")
+    try:
+        text = data.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        offset = exc.start + (3 if data.startswith(b"\xef\xbb\xbf") else 0)
+        raise InputError(source, f"byte {offset}", f"UTF-8 text, got the byte 0x{data[offset]:02x} "
+                                                   "(binary data or another encoding)") from None
+    nul = text.find("\0")
+    if nul >= 0:
+        raise InputError(source, f"byte {len(text[:nul].encode())}", "text, got a NUL byte (binary data)")
+    return text
+
+
+def read_text(path, limit=MAX_BYTES):
+    """The UTF-8 text of the regular file ``path`` (see :func:`read_bytes` and :func:`decode`)."""
+    return decode(read_bytes(path, limit), path)
+
+
+def load_data(path, limit=MAX_BYTES):
+    """The YAML (or JSON) document in ``path`` as plain Python data, through the whole gate."""
+    return parse_yaml(read_text(path, limit), path)
+
+
+def parse_yaml(text, source):
+    """The single YAML document in ``text`` as plain Python data (``None`` if empty); see module doc."""
+    loader = _LOADER(text)
+    try:
+        root = _compose(loader, source)
+        return None if root is None else loader.construct_document(root)
+    except yaml.YAMLError as exc:
+        mark = getattr(exc, "problem_mark", None) or getattr(exc, "context_mark", None)
+        where = f"line {mark.line + 1}" if mark else "(file)"
+        problem = getattr(exc, "problem", None) or str(exc).splitlines()[0]
+        raise InputError(source, where, f"valid YAML ({problem})") from None
+    except (ValueError, TypeError, OverflowError) as exc:   # e.g. a timestamp out of range
+        raise InputError(source, "(file)", f"valid YAML values ({exc})") from None
+    finally:
+        loader.dispose()
+
+
+def _fail(source, event, expected):
+    raise InputError(source, f"line {event.start_mark.line + 1}", expected)
+
+
+def _compose(loader, source):
+    """The document's node tree, built without recursion from the parser's events."""
+    loader.get_event()                                    # stream start
+    if loader.check_event(StreamEndEvent):
+        return None
+    loader.get_event()                                    # document start
+    root, stack, count = None, [], 0
+    while True:
+        event = loader.get_event()
+        if isinstance(event, (SequenceEndEvent, MappingEndEvent)):
+            stack.pop()[0].end_mark = event.end_mark
+            continue
+        if isinstance(event, DocumentEndEvent):
+            break
+        if isinstance(event, AliasEvent):
+            _fail(source, event, f"no YAML aliases (*{event.anchor}); write the value out in full")
+        if event.anchor is not None:
+            _fail(source, event, f"no YAML anchors (&{event.anchor}); write the value out in full")
+        count += 1
+        if count > MAX_VALUES:
+            _fail(source, event, f"at most {MAX_VALUES} values in one file")
+        node = _node(loader, source, event)
+        if stack:
+            _attach(source, stack[-1], node)
+        else:
+            root = node
+        if not isinstance(node, ScalarNode):
+            if len(stack) >= MAX_DEPTH:
+                _fail(source, event, f"YAML nested at most {MAX_DEPTH} levels deep")
+            stack.append([node, None, {}])
+    if not loader.check_event(StreamEndEvent):
+        _fail(source, loader.peek_event(), "a single YAML document (no second '---')")
+    return root
+
+
+def _node(loader, source, event):
+    if isinstance(event, ScalarEvent):
+        tag = event.tag
+        if tag is None or tag == "!":
+            tag = loader.resolve(ScalarNode, event.value, event.implicit)
+        if tag == _INT_TAG and len(event.value) > MAX_INT_DIGITS:
+            _fail(source, event, f"a number, got an integer of {len(event.value)} characters "
+                                 f"(at most {MAX_INT_DIGITS}; write large values as e.g. 1.5e20)")
+        return ScalarNode(tag, event.value, event.start_mark, event.end_mark, style=event.style)
+    kind = SequenceNode if isinstance(event, SequenceStartEvent) else MappingNode
+    tag = event.tag
+    if tag is None or tag == "!":
+        tag = loader.resolve(kind, None, event.implicit)
+    return kind(tag, [], event.start_mark, None, flow_style=event.flow_style)
+
+
+def _attach(source, parent, node):
+    """Add ``node`` to the open collection ``parent`` = [node, pending key, {key: line}]."""
+    collection, key, seen = parent
+    if isinstance(collection, SequenceNode):
+        collection.value.append(node)
+        return
+    if key is None:
+        if not isinstance(node, ScalarNode):
+            raise InputError(source, f"line {node.start_mark.line + 1}", "a plain key, got a list or mapping")
+        line, name = node.start_mark.line + 1, (node.tag, node.value)
+        if name in seen:
+            raise InputError(source, f"line {line}", f"each key once per mapping, got {_short(node.value)} "
+                                                     f"again (first at line {seen[name]})")
+        seen[name] = line
+        parent[1] = node
+    else:
+        collection.value.append((key, node))
+        parent[1] = None
+
+
