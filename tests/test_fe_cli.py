@@ -62,9 +62,9 @@ def test_modes_table(capsys):
 
 @pytest.mark.parametrize("argv, words", [
     (["stiffness", "jamis", "--material", "unobtainium"], "unobtainium: (material): a material YAML file"),
-    (["modes", "jamis", "-n", "0"], "-n: (option): a positive number of modes"),
-    (["modes", "jamis", "--element-size", "-1"], "--element-size: (option): a positive element length"),
-    (["modes", "jamis", "-n", "5000", "--element-size", "1"], "jamis: (model): 5000 modes asked"),
+    (["modes", "jamis", "-n", "0"], "argument -n: a number of modes (finite, at least 1"),
+    (["modes", "jamis", "--element-size", "-1"], "argument --element-size: an element length in m (finite, above 0"),
+    (["modes", "jamis", "-n", "5000", "--element-size", "1"], "-n: 5000: at most 200 modes (raise with --max-modes)"),
 ])
 def test_bad_input_is_one_line_exit_2(capsys, argv, words):
     status, out, err = run(capsys, *argv)

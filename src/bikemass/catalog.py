@@ -18,6 +18,7 @@ import numpy as np
 
 from .choices import RIGID, Beam, Combine, Method, Procedure, Source, check
 from .errors import InputError
+from .plausibility import check_stiffness
 
 COMBINE_CHOICES = Combine.values()
 """Rider + rear frame: 'exact' = parallel-axis theorem; 'thesis' = inertias added (Eq. 3.6)."""
@@ -222,16 +223,13 @@ def stiffness(bicycle, which, source=Source.AUTO, procedure=Procedure.CONDENSED,
     from .config import load_yaml
     from .paths import closest_name
     path = os.fspath(which)
-    if not os.path.isfile(path):
+    if not os.path.lexists(path):          # an existing non-file reaches the input gate, which says what it is
         names = sorted(materials)
         raise InputError(path, "(stiffness)", f"{RIGID}, a material ({', '.join(names)}), a 2x2 matrix or "
                                               f"a YAML file with S{closest_name(path, [RIGID, *names])}")
     node = load_yaml(path)
     node.check_keys(required=("S",), optional=("units", "source", "name"))
-    S = node["S"].matrix((2, 2))
-    if not _positive_definite(S):
-        node.fail("a symmetric positive definite 2x2 stiffness matrix (N m/rad)", "S")
-    return S
+    return check_stiffness(node["S"])
 
 
 def _material_stiffness(model, material, source, procedure, beam):

@@ -2,10 +2,12 @@
 
 import argparse
 import importlib
+import os
 import sys
 import warnings
 
-from .errors import InputError
+from .errors import BikemassWarning, InputError, one_line
+from .stopping import Terminated, stop_on_signals
 
 COMMAND_MODULES = (
     "bicycle",
@@ -24,11 +26,22 @@ Bicycles: a shipped name (bikemass params --help lists them) or a YAML file.
 Riders:   a shipped pose name or a pose YAML file; see README.md.
 All output is SI in the benchmark frame: x forward, y right, z down, origin at
 the rear contact; products of inertia are tensor elements.
+Bad input: one line naming the file, the key and what was expected, exit status 2.
+Unusual input (negative trail, a rider far from the bicycle, ...): one warning line
+each on stderr (and under "warnings" in JSON output); --strict makes them errors.
+Interrupted: exit status 130 (Ctrl-C) or 143 (SIGTERM), no files half-written.
 """
 
 
+class Parser(argparse.ArgumentParser):
+    """argparse with its errors on one line (the usage is one ``--help`` away)."""
+
+    def error(self, message):
+        self.exit(2, f"{self.prog}: error: {one_line(message, 600)} (see {self.prog} --help)\n")
+
+
 def build_parser():
-    parser = argparse.ArgumentParser(
+    parser = Parser(
         prog="bikemass",
         description="Bicycle + rider geometry (YAML) -> mass properties, benchmark "
                     "parameters, frame stiffness and stability.",
@@ -36,28 +49,66 @@ def build_parser():
     sub = parser.add_subparsers(title="commands", metavar="COMMAND", required=True)
     for name in COMMAND_MODULES:
         importlib.import_module(f"bikemass.commands.{name}").register(sub)
+    for command in sub.choices.values():
+        command.add_argument("--strict", action="store_true",
+                             help="treat warnings about unusual input as errors (exit status 2)")
     return parser
 
 
-def show_warning(message, category, filename, lineno, file=None, line=None):
-    """Every warning raised while a command runs, as one line on stderr."""
-    print(f"bikemass: warning: {message}", file=sys.stderr)
-
-
 def main(argv=None):
-    """Entry point: run one sub-command; bad input -> one line on stderr, exit status 2;
-    warnings -> one ``bikemass: warning:`` line each."""
-    args = build_parser().parse_args(argv)
-    with warnings.catch_warnings():
+    """Entry point: run one sub-command and return its exit status; bad input (options included)
+    -> one line on stderr, status 2; warnings -> one ``bikemass: warning:`` line each.
+    ``--help`` exits (SystemExit 0) as argparse does."""
+    try:
+        args = build_parser().parse_args(argv)
+    except SystemExit as exc:
+        if not exc.code:
+            raise
+        return exc.code
+    except InputError as exc:          # the shipped data listed in --help cannot be found
+        return _error(exc)
+    with stop_on_signals():
+        return _run(args)
+
+
+def _run(args):
+    from .gate import track_inputs
+    from .options import check_outputs
+    from .output import collect_warnings
+    status = 0
+    with warnings.catch_warnings(record=True) as caught, collect_warnings(caught), track_inputs():
         warnings.simplefilter("always")
-        warnings.showwarning = show_warning
+        warnings.simplefilter("ignore", DeprecationWarning)
+        if getattr(args, "strict", False):
+            warnings.simplefilter("error", BikemassWarning)
         try:
-            return args.run(args) or 0
+            check_outputs(args)
+            status = args.run(args) or 0
         except InputError as exc:
-            print(f"bikemass: error: {exc}", file=sys.stderr)
-            return 2
+            return _error(exc)
+        except BikemassWarning as exc:
+            return _error(f"{exc} (an error under --strict)")
+        except KeyboardInterrupt:
+            return _error("interrupted", 130)
+        except Terminated:
+            return _error("terminated", 143)
         except BrokenPipeError:
             return 0
+        except MemoryError:
+            return _error("out of memory", 1)
+        except Exception as exc:           # a bug: one line unless BIKEMASS_DEBUG asks for the traceback
+            if os.environ.get("BIKEMASS_DEBUG"):
+                raise
+            return _error(f"internal error {type(exc).__name__}: {exc} (please report it; set "
+                          "BIKEMASS_DEBUG=1 for the traceback)", 1)
+    for warning in caught:
+        print(f"bikemass: warning: {one_line(warning.message, 600)}", file=sys.stderr)
+    return status
+
+
+def _error(message, status=2):
+    print(f"bikemass: error: {one_line(message, 900)}", file=sys.stderr)
+    return status
 
 
 if __name__ == "__main__":

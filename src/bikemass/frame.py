@@ -56,9 +56,14 @@ def frame_stiffness(bicycle, material=None, procedure=Procedure.CONDENSED, beam=
     """
     from .fe import equivalent_stiffness
 
+    from .errors import InputError
+
     procedure, beam = check(Procedure, procedure), check(Beam, beam)
-    return equivalent_stiffness(frame_structure(bicycle), _material(material), procedure.value,
-                                timoshenko=beam is Beam.TIMOSHENKO)
+    structure, material = frame_structure(bicycle), _material(material)
+    try:
+        return equivalent_stiffness(structure, material, procedure.value, timoshenko=beam is Beam.TIMOSHENKO)
+    except ValueError as exc:           # a structure its dropouts do not hold
+        raise InputError(getattr(bicycle, "source", str(bicycle)), "structure", str(exc)) from None
 
 
 def _material(material):

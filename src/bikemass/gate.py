@@ -13,6 +13,8 @@ given twice in one mapping (named with both lines).  Every refusal is one
 :class:`~bikemass.errors.InputError` naming the file and the line.
 """
 
+import contextlib
+import contextvars
 import os
 import stat
 from pathlib import Path
@@ -33,6 +35,9 @@ MAX_VALUES = 100_000
 MAX_INT_DIGITS = 30
 """Longest integer literal; a longer one is refused rather than rounded or overflowed."""
 
+_READ = contextvars.ContextVar("bikemass_inputs", default=None)
+"""(device, inode) of every file read while :func:`track_inputs` is active."""
+
 _LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 """libyaml's parser where it is installed (about 7x faster), the pure-Python one otherwise."""
 _INT_TAG = "tag:yaml.org,2002:int"
@@ -44,6 +49,26 @@ _FILE_KINDS = ((stat.S_ISDIR, "a folder"), (stat.S_ISFIFO, "a FIFO (named pipe)"
 def file_kind(mode):
     """What a non-regular file is, in words (``"a folder"``, ``"a FIFO (named pipe)"``, ...)."""
     return next((name for test, name in _FILE_KINDS if test(mode)), "not a regular file")
+
+
+@contextlib.contextmanager
+def track_inputs():
+    """Remember every file read through the gate while active (see :func:`was_read`)."""
+    token = _READ.set(set())
+    try:
+        yield
+    finally:
+        _READ.reset(token)
+
+
+def was_read(path):
+    """Whether ``path`` is a file read through the gate under the active :func:`track_inputs`."""
+    seen = _READ.get()
+    try:
+        info = os.stat(path)
+    except OSError:
+        return False
+    return bool(seen) and (info.st_dev, info.st_ino) in seen
 
 
 def read_bytes(path, limit=MAX_BYTES):
@@ -59,10 +84,13 @@ def read_bytes(path, limit=MAX_BYTES):
         raise InputError(path, "(file)", "an existing file (no such file)") from None
     except OSError as exc:
         raise InputError(path, "(file)", f"a readable file ({exc.strerror})") from None
+    info = os.fstat(fd)
+    if not stat.S_ISREG(info.st_mode):
+        os.close(fd)
+        raise InputError(path, "(file)", f"a regular file, got {file_kind(info.st_mode)}")
+    if _READ.get() is not None:
+        _READ.get().add((info.st_dev, info.st_ino))
     with os.fdopen(fd, "rb") as fh:
-        info = os.fstat(fd)
-        if not stat.S_ISREG(info.st_mode):
-            raise InputError(path, "(file)", f"a regular file, got {file_kind(info.st_mode)}")
         if info.st_size > limit:
             raise InputError(path, "(file)", f"a file of at most {limit} bytes, got {info.st_size} bytes")
         try:
@@ -106,6 +134,8 @@ def parse_yaml(text, source):
     try:
         root = _compose(loader, source)
         return None if root is None else loader.construct_document(root)
+    except InputError:
+        raise
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None) or getattr(exc, "context_mark", None)
         where = f"line {mark.line + 1}" if mark else "(file)"

@@ -1,13 +1,42 @@
-"""Writing results: JSON/YAML of plain data, text tables, and atomic file writes."""
+"""Writing results: JSON/YAML of plain data, text tables, and atomic file writes.
 
+Every file is written whole or not at all (a temporary file in the same folder,
+then ``os.replace``); an existing file keeps its permissions, a symbolic link
+stays a link (its target is replaced), and a file this run has read as input
+is never replaced.  :func:`check_output` refuses a bad output path before any
+work is done; :func:`new_folder` gives a folder that appears complete or not
+at all.
+"""
+
+import contextlib
+import contextvars
 import json
 import os
+import shutil
+import stat
 import tempfile
 from collections.abc import Mapping
 from pathlib import Path
 
 import numpy as np
 import yaml
+
+from .errors import InputError, short
+from .stopping import deferred
+
+_WARNINGS = contextvars.ContextVar("bikemass_warnings", default=None)
+"""The list of recorded warnings the command line collects (``None`` outside it)."""
+
+
+@contextlib.contextmanager
+def collect_warnings(caught):
+    """While active, :func:`dumps` adds the messages of the recorded ``caught`` warnings to a JSON
+    mapping under ``warnings`` (YAML output stays a file bikemass reads back)."""
+    token = _WARNINGS.set(caught)
+    try:
+        yield caught
+    finally:
+        _WARNINGS.reset(token)
 
 
 def plain(obj):
@@ -26,6 +55,9 @@ def plain(obj):
 def dumps(obj, fmt):
     """Serialise plain data as ``json`` or ``yaml`` text."""
     data = plain(obj)
+    caught = _WARNINGS.get()
+    if caught and fmt == "json" and isinstance(data, dict):
+        data = {**data, "warnings": [str(w.message) for w in caught]}
     if fmt == "json":
         return json.dumps(data, indent=2) + "\n"
     if fmt == "yaml":
@@ -50,18 +82,127 @@ def table(headers, rows, floatfmt="{:.3f}"):
 
 
 def write_atomic(path, data):
-    """Write ``data`` (str or bytes) to ``path`` via a temporary file and rename: never half-written."""
+    """Write ``data`` (str or bytes) to ``path`` via a temporary file and rename: never half-written.
+
+    An existing file keeps its permission bits; a symbolic link keeps pointing where it did and
+    its target is replaced.  A file read as input in this run (:func:`bikemass.gate.was_read`)
+    is refused.
+    """
+    from .gate import was_read
+
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
+    check_output(path)
+    target = Path(os.path.realpath(path))
+    if was_read(target):
+        raise InputError(path, "(output)", "a file other than the command's input (it would be overwritten)")
     mode = "wb" if isinstance(data, bytes) else "w"
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
     try:
-        with os.fdopen(fd, mode) as fh:
-            fh.write(data)
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)
-        os.replace(tmp, path)
+        target.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(dir=target.parent, prefix=f".{target.name}.", suffix=".tmp")
+    except OSError as exc:
+        raise InputError(path, "(output)", f"a file in a writable folder ({exc.strerror})") from None
+    with deferred():                     # a stop signal waits the few ms until the file is in place
+        try:
+            with os.fdopen(fd, mode) as fh:
+                fh.write(data)
+            os.chmod(tmp, _mode_for(target))
+            os.replace(tmp, target)
+        except BaseException:
+            os.unlink(tmp)
+            raise
+
+
+def _mode_for(target):
+    """Permission bits for a file written at ``target``: its present ones, else 0666 less the umask."""
+    try:
+        return stat.S_IMODE(os.stat(target).st_mode)
+    except OSError:
+        return 0o666 & ~_umask()
+
+
+def check_output(path, suffixes=None, inputs=(), what="an output file", option="(file)"):
+    """Refuse (:class:`InputError`) an output path that cannot be written, before any work:
+    a folder, a parent that is a file or not writable, a suffix not in ``suffixes``, or one of
+    the command's ``inputs`` (paths or names; those that are existing files are compared)."""
+    path = Path(path)
+    if suffixes is not None and path.suffix.lower() not in suffixes:
+        raise InputError(path, option, f"{what} name ending in {', '.join(suffixes)}, "
+                                         f"got {short(path.suffix or path.name, 30)}")
+    target = Path(os.path.realpath(path))
+    if target.is_dir():
+        raise InputError(path, option, f"{what}, got a folder")
+    if target.exists() and not target.is_file():
+        raise InputError(path, option, f"{what}, got something that is not a regular file")
+    for source in inputs:
+        if source and target.exists() and os.path.isfile(source) and os.path.samefile(source, target):
+            raise InputError(path, option, f"{what} other than the input {short(str(source), 80)} "
+                                             "(it would be overwritten)")
+    _check_folder(target.parent, path, option)
+
+
+def _check_folder(folder, path, option):
+    """The nearest existing ancestor of ``folder`` must be a folder we may create files in."""
+    existing = folder
+    while not existing.exists():
+        if existing == existing.parent:
+            break
+        existing = existing.parent
+    if not existing.is_dir():
+        raise InputError(path, option, f"a path inside a folder, but {short(str(existing), 80)} is a file")
+    try:
+        fd, probe = tempfile.mkstemp(dir=existing, prefix=".bikemass-probe-")   # the only sure test
+        os.close(fd)
+        os.unlink(probe)
+    except OSError as exc:
+        raise InputError(path, option, f"a path in a writable folder, but {short(str(existing), 80)} "
+                                       f"is not ({exc.strerror or type(exc).__name__})") from None
+
+
+STUDY_MARK = "report.md"
+"""A folder holding this file is taken to be an earlier run's output, which :func:`new_folder` may replace."""
+
+
+def check_folder(out, mark=STUDY_MARK, option="(folder)"):
+    """Refuse an output folder that :func:`new_folder` could not replace safely."""
+    out = Path(out)
+    if out.exists() or out.is_symlink():
+        if not out.is_dir():
+            raise InputError(out, option, "an output folder, got a file")
+        if any(out.iterdir()) and not (out / mark).is_file():
+            raise InputError(out, option, f"a new or empty folder, or an earlier output folder holding "
+                                              f"{mark} (this one holds other files; nothing was changed)")
+    _check_folder(out.resolve().parent, out, option)
+
+
+@contextlib.contextmanager
+def new_folder(out, mark=STUDY_MARK):
+    """Yield a temporary folder next to ``out`` to write into; on success it replaces ``out`` (an
+    earlier output folder is removed), on any failure or interruption it is removed instead.
+    So ``out`` is always one run's complete output, never a mix of two or a partial one."""
+    out = Path(out)
+    check_folder(out, mark)
+    parent = out.resolve().parent
+    parent.mkdir(parents=True, exist_ok=True)
+    tmp = Path(tempfile.mkdtemp(dir=parent, prefix=f".{out.name}.", suffix=".tmp"))
+    try:
+        yield tmp
+        with deferred():
+            os.chmod(tmp, 0o777 & ~_umask())
+            old = None
+            if out.exists():
+                check_folder(out, mark)
+                old = Path(tempfile.mkdtemp(dir=parent, prefix=f".{out.name}.", suffix=".old"))
+                os.replace(out, old / "previous")
+            os.replace(tmp, out)
+            if old is not None:
+                shutil.rmtree(old, ignore_errors=True)
     except BaseException:
-        os.unlink(tmp)
+        with deferred():
+            shutil.rmtree(tmp, ignore_errors=True)
         raise
+
+
+def _umask():
+    umask = os.umask(0)
+    os.umask(umask)
+    return umask

@@ -51,5 +51,10 @@ SHARED_FILES = ("materials", "chart_defaults")
 
 
 def available(folder: Path):
-    """Names of the shipped YAML files in ``folder`` (``_`` shown as ``-``), shared files left out."""
+    """Names of the shipped YAML files in ``folder`` (``_`` shown as ``-``), shared files left out;
+    a missing folder is an error (a wrong ``BIKEMASS_DATA`` must not look like an empty list)."""
+    if not folder.is_dir():
+        env = os.environ.get("BIKEMASS_DATA")
+        raise InputError(f"BIKEMASS_DATA={env}" if env else "bikemass", str(folder),
+                         "a folder of shipped files (BIKEMASS_DATA must name a folder holding bodies/ and frames/)")
     return sorted(p.stem.replace("_", "-") for p in folder.glob("*.yaml") if p.stem not in SHARED_FILES)

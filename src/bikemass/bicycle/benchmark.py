@@ -15,7 +15,9 @@ import numpy as np
 
 from ..inertia import combine as combine_exact
 from ..inertia import combine_without_parallel_axis
+from ..errors import InputError
 from ..parameters import BenchmarkParameters
+from ..plausibility import warn_parameters, warn_rider
 from ..parts import body_properties
 
 COMBINE_CHOICES = ("exact", "thesis")
@@ -30,13 +32,14 @@ def bicycle_parameters(bicycle, rider=None, combine="exact", method="mesh"):
     if combine not in COMBINE_CHOICES:
         raise ValueError(f"combine must be one of {', '.join(COMBINE_CHOICES)}, got {combine!r}")
     if rider is None and bicycle.published is not None:
+        warn_parameters(bicycle.published, bicycle.source)
         return bicycle.published
     bodies = combined_bodies(bicycle, rider, combine, method)
     g = bicycle.geometry
     R, B, H, F = (bodies[b] for b in ("rear_wheel", "rear_frame", "front_frame", "front_wheel"))
-    _check_wheel(R, g.rear_axle, "rear")
-    _check_wheel(F, g.front_axle, "front")
-    return BenchmarkParameters(
+    _check_wheel(R, g.rear_axle, "rear", bicycle.source)
+    _check_wheel(F, g.front_axle, "front", bicycle.source)
+    params = BenchmarkParameters(
         w=g.wheelbase, c=g.trail, lam=g.lam, g=g.gravity,
         rR=g.rear_wheel_radius, mR=R.mass, IRxx=R.inertia[0, 0], IRyy=R.inertia[1, 1],
         xB=B.com[0], zB=B.com[2], mB=B.mass,
@@ -44,6 +47,8 @@ def bicycle_parameters(bicycle, rider=None, combine="exact", method="mesh"):
         xH=H.com[0], zH=H.com[2], mH=H.mass,
         IHxx=H.inertia[0, 0], IHyy=H.inertia[1, 1], IHzz=H.inertia[2, 2], IHxz=H.inertia[0, 2],
         rF=g.front_wheel_radius, mF=F.mass, IFxx=F.inertia[0, 0], IFyy=F.inertia[1, 1])
+    warn_parameters(params, bicycle.source)
+    return params
 
 
 def combined_bodies(bicycle, rider=None, combine="exact", method="mesh"):
@@ -57,10 +62,13 @@ def combined_bodies(bicycle, rider=None, combine="exact", method="mesh"):
             parts = [p for p in rider.parts if p.body == body]
             if parts:
                 bodies[body] = merge((bodies[body], body_properties(parts, method)))
+        warn_rider(body_properties(rider.parts, "exact").com, bicycle.geometry, bicycle.source, rider.name)
     return bodies
 
 
-def _check_wheel(props, axle, which):
+def _check_wheel(props, axle, which, source):
     """A wheel must be balanced on its axle (the benchmark model has no wheel offset)."""
     if np.linalg.norm(props.com - axle) > 1e-9:
-        raise ValueError(f"{which} wheel CoM {props.com.tolist()} is not on its axle {axle.tolist()}")
+        raise InputError(source, "components", f"parts with body {which}_wheel centred on its axle "
+                         f"{np.round(axle, 4).tolist()} m; together they put the wheel's centre of mass at "
+                         f"{np.round(props.com, 4).tolist()} m")

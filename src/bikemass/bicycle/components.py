@@ -12,6 +12,7 @@ import numpy as np
 
 from ..convention import thesis_segment_rotation
 from ..inertia import MassProperties
+from ..plausibility import check_inertia
 from ..parts import Part
 from ..placement import Placement
 from ..solids import Box, Cylinder, Hoop, Lumped, PointMass, RoundTube, SquareTube, TrapezoidalPrism
@@ -39,10 +40,7 @@ def read_inertia(node):
     node.check_keys(required=("xx", "yy", "zz"), optional=("xy", "xz", "yz"))
     v = {k: node[k].number() if node.has(k) else 0.0 for k in INERTIA_KEYS}
     tensor = np.array([[v["xx"], v["xy"], v["xz"]], [v["xy"], v["yy"], v["yz"]], [v["xz"], v["yz"], v["zz"]]])
-    moments = np.linalg.eigvalsh(tensor)
-    if moments[0] < -1e-12 or moments[2] > moments[0] + moments[1] + 1e-12:
-        node.fail("an inertia tensor whose principal moments are >= 0 and obey the triangle inequality")
-    return tensor
+    return check_inertia(tensor, node)
 
 
 def _solid(node, shape):
@@ -128,6 +126,7 @@ def read_wheel(node, body, axle, radius, radius_key):
         inertia = lumped["inertia"]
         inertia.check_keys(required=("xx", "yy"))
         ixx, iyy = inertia["xx"].number(positive=True), inertia["yy"].number(positive=True)
+        check_inertia(np.diag([ixx, iyy, ixx]), inertia, "yy")
         props = MassProperties(lumped["mass"].number(positive=True), np.zeros(3), np.diag([ixx, iyy, ixx]))
         return [Part(body, Lumped(props), props.mass, Placement.at(axle), body)]
     placement = Placement.along(axle, [0.0, 1.0, 0.0])

@@ -7,6 +7,7 @@ The file format is described in docs/bicycles.md.  Every problem is reported as
 one :class:`~bikemass.errors.InputError` naming the file and the key.
 """
 
+import os
 from dataclasses import replace
 from pathlib import Path
 
@@ -23,6 +24,7 @@ from ..parameters import from_node, is_parameter_file
 from ..parts import Part
 from ..paths import frames_dir, resolve
 from ..placement import Placement
+from ..plausibility import check_parameter_node, check_stiffness
 from ..sections import RoundSection, SquareSection
 from ..solids import Lumped, RoundTube, SquareTube
 from ..tubes import Structure, Tube
@@ -66,7 +68,9 @@ def bicycle_from_mapping(mapping, source, size=None):
 def _read_document(node, default_name, source, size):
     if is_parameter_file(node):
         select_size(node, size)
-        return bicycle_from_parameters(from_node(node), node.get("name", default_name).string(), source)
+        params = from_node(node)
+        check_parameter_node(params, node)
+        return bicycle_from_parameters(params, node.get("name", default_name).string(), source)
     if node.has("parameters"):
         return _measured_bicycle(node, Path(source))
     return _read_any(_with_base(node), source, size)
@@ -126,7 +130,7 @@ def _base_path(node):
     a missing one is blamed on the ``base`` key of the referring file."""
     name, folder = node.string(), Path(node.source).parent
     for candidate in (folder / name, folder / f"{name.replace('-', '_')}.yaml"):
-        if candidate.is_file():
+        if os.path.lexists(candidate):     # the input gate says if it is not a regular file
             return candidate
     try:
         return resolve(name, frames_dir(), "bicycle")
@@ -287,12 +291,7 @@ def _read_stiffness(node, materials):
     table = {}
     for name, m in node.items():
         material = materials_lookup(Node(name, m.source, m.key), materials)
-        S = m.matrix((2, 2))
-        if S[0, 1] != S[1, 0]:
-            m.fail("a symmetric matrix (equal off-diagonal terms)")
-        if not np.all(np.linalg.eigvalsh(S) > 0):
-            m.fail("a positive definite 2x2 stiffness matrix (N m/rad)")
-        table[material.key] = S
+        table[material.key] = check_stiffness(m)
     return table
 
 

@@ -19,6 +19,8 @@ def _common(parser):
 
 
 def register(subparsers):
+    from ..options import MAX_ELEMENTS, MAX_MODES, count, number
+
     p = subparsers.add_parser(
         "stiffness", help="equivalent rear-frame stiffness S (roll, steer) at the head tube",
         description="2x2 stiffness S (N m/rad) on roll and steer rotations at the bottom head-tube "
@@ -37,9 +39,16 @@ def register(subparsers):
     _common(p)
     p.add_argument("--bc", choices=Support.values(), default=Support.FREE.value,
                    help="free, fix-rear (dropouts clamped), fix-head (head tube clamped), fix-both")
-    p.add_argument("-n", type=int, default=10, metavar="N", help="number of modes (default 10)")
-    p.add_argument("--element-size", type=float, default=DEFAULT_ELEMENT_SIZE, metavar="M",
-                   help=f"beam element length in m (default {DEFAULT_ELEMENT_SIZE})")
+    p.add_argument("-n", type=count(what="a number of modes"), default=10, metavar="N",
+                   help=f"number of modes (default 10, at most --max-modes = {MAX_MODES})")
+    p.add_argument("--element-size", type=number(0, 10, open_low=True, what="an element length in m"),
+                   default=DEFAULT_ELEMENT_SIZE, metavar="M",
+                   help=f"beam element length in m (default {DEFAULT_ELEMENT_SIZE}; at most "
+                        f"--max-elements = {MAX_ELEMENTS} elements in all)")
+    p.add_argument("--max-modes", type=count(), default=MAX_MODES, metavar="N",
+                   help=f"raise the limit on -n (default {MAX_MODES})")
+    p.add_argument("--max-elements", type=count(), default=MAX_ELEMENTS, metavar="N",
+                   help=f"raise the limit on the model's beam elements (default {MAX_ELEMENTS})")
     p.add_argument("--plot", metavar="FILE", help="draw the mode shapes on the frame (.png, .pdf, .svg)")
     add_figure_options(p)
     add_size_option(p, "--bike-size")
@@ -59,16 +68,21 @@ def run_stiffness(args):
 
 
 def run_modes(args):
+    from ..catalog import load_bicycle
     from ..errors import InputError
-    from ..frame import frame_modes
+    from ..fe.model import element_count
+    from ..frame import frame_modes, frame_structure
     from ..output import dumps, table
 
     options = figure_options(args, args.plot)
-    if args.n < 1:
-        raise InputError("-n", "(option)", "a positive number of modes")
-    if not args.element_size > 0:
-        raise InputError("--element-size", "(option)", "a positive element length in m")
-    modes = frame_modes(args.bike, args.bc, args.n, args.material, args.element_size, args.beam)
+    if args.n > args.max_modes:
+        raise InputError("-n", args.n, f"at most {args.max_modes} modes (raise with --max-modes)")
+    bicycle = load_bicycle(args.bike)
+    elements = element_count(frame_structure(bicycle), args.element_size)
+    if elements > args.max_elements:
+        raise InputError("--element-size", args.element_size, f"a model of at most {args.max_elements} "
+                         f"elements, got {elements} (raise with --max-elements)")
+    modes = frame_modes(bicycle, args.bc, args.n, args.material, args.element_size, args.beam)
     if args.plot:
         from ..fe.plot import plot_frame_modes
         write_figure(plot_frame_modes(modes, size=options.size), args.plot, options)

@@ -11,6 +11,8 @@ JOINT_HELP = "torso_lean, neck, shoulder, elbow, hip, knee"
 
 
 def register(sub):
+    from ..options import angle
+
     p = sub.add_parser("pose", help="pose a rider by joint angles on a bicycle (hips, hands, feet)",
                        description="Solve the rider's joint angles (scipy least squares) so that the hips "
                                    "sit on the saddle, the hands on a grip and the feet on the pedals "
@@ -18,11 +20,11 @@ def register(sub):
                                    "(docs/poses.md).")
     p.add_argument("bike", metavar="BIKE", help="shipped bicycle name or bicycle YAML file with contacts:")
     p.add_argument("--body", default="thesis_rider", help="anthropometry with joints: (default thesis_rider)")
-    p.add_argument("--torso-lean", type=float, metavar="DEG",
+    p.add_argument("--torso-lean", type=angle(180), metavar="DEG",
                    help="fix the torso lean from vertical (deg, forward positive); default: solved "
                         "with the elbows bent 20 deg")
     p.add_argument("--hands", choices=Grip.values(), help="grip of the bicycle (default hoods, else its first grip)")
-    p.add_argument("--crank", type=float, metavar="DEG",
+    p.add_argument("--crank", type=angle(360), metavar="DEG",
                    help="crank angle (deg, 0 = right crank forward, positive pedalling); each foot on "
                         "its pedal.  Default: symmetric legs, feet on the crank axis (as the thesis)")
     p.add_argument("--fix", action="append", default=[], metavar="JOINT=DEG",
@@ -45,7 +47,10 @@ def register(sub):
 
 
 def _fixed(args):
+    from argparse import ArgumentTypeError
+
     from ..errors import InputError
+    from ..options import angle
     from ..rider.chain import JOINTS
     fixed = {}
     for item in args.fix:
@@ -53,9 +58,9 @@ def _fixed(args):
         if joint not in JOINTS:
             raise InputError("--fix", item, f"JOINT=DEG with JOINT one of {JOINT_HELP}")
         try:
-            fixed[joint] = float(value)
-        except ValueError:
-            raise InputError("--fix", item, "JOINT=DEG with DEG a number of degrees") from None
+            fixed[joint] = angle(360)(value)
+        except ArgumentTypeError:
+            raise InputError("--fix", item, "JOINT=DEG with DEG a number of degrees in [-360, 360]") from None
     if args.torso_lean is not None:
         fixed["torso_lean"] = args.torso_lean
     return fixed

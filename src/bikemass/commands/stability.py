@@ -9,6 +9,8 @@ STABILITY_FORMATS = ("table", "json")
 
 
 def register(sub):
+    from ..options import number
+
     eig = sub.add_parser(
         "eig", help="eigenvalues of the labelled modes (weave, capsize, caster) against speed",
         description="Eigenvalues of the linearised Whipple bicycle (Meijaard et al. 2007) at every "
@@ -26,7 +28,8 @@ def register(sub):
                     "speed grid, overall and per mode. Strict: every Re < 0; marginal: every "
                     "eigenvalue has Re < 0 or modulus below --marginal.")
     _common(stab)
-    stab.add_argument("--marginal", type=float, default=2.0, metavar="RAD_S",
+    stab.add_argument("--marginal", type=number(0, 1e6, open_low=True, what="a modulus in rad/s"),
+                      default=2.0, metavar="RAD_S",
                       help="modulus (rad/s) below which an unstable eigenvalue counts as marginally "
                            "stable (default 2.0, as the thesis)")
     stab.add_argument("--format", choices=STABILITY_FORMATS, default="table", help="table (default) or json")
@@ -50,6 +53,7 @@ def register(sub):
                       help="rider + frame: parallel-axis theorem (exact, default) or the thesis's Eq. 3.6")
     comp.add_argument("--speeds", metavar="START:STOP:STEP", default="0:30:0.05",
                       help="speed grid in m/s (default 0:30:0.05)")
+    _max_speeds(comp)
     comp.add_argument("-o", "--output", metavar="FILE", required=True, help="figure (.png, .pdf, .svg)")
     add_figure_options(comp, SPEED_LIMIT)
     add_size_option(comp, "--bike-size")
@@ -74,22 +78,36 @@ def _common(p):
                         "frame, condensed) or a YAML file with S: [[..], [..]] in N m/rad")
     p.add_argument("--speeds", metavar="START:STOP:STEP", default="0:30:0.05",
                    help="speed grid in m/s (default 0:30:0.05, the thesis's)")
+    _max_speeds(p)
     p.add_argument("--plot", metavar="FILE", help="also draw the eigenvalue figure (.png, .pdf, .svg)")
     p.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of stdout")
 
 
-def parse_speeds(text):
-    """``"start:stop:step"`` -> speed grid (m/s); InputError if malformed."""
-    from ..errors import InputError
+def _max_speeds(p):
+    from ..options import MAX_SPEEDS, count
+    p.add_argument("--max-speeds", type=count(), default=MAX_SPEEDS, metavar="N",
+                   help=f"raise the limit on the speeds in the grid (default {MAX_SPEEDS})")
+
+
+def parse_speeds(text, max_speeds=None):
+    """``"start:stop:step"`` -> speed grid (m/s); InputError if malformed or over ``max_speeds``."""
+    from ..errors import InputError, short
+    from ..options import MAX_SPEED, MAX_SPEEDS, MIN_SPEED_STEP
     from ..stability import speed_grid
 
-    expected = "START:STOP:STEP in m/s with 0 <= START < STOP, STEP > 0 and at most 100000 speeds"
+    limit = max_speeds or MAX_SPEEDS
+    expected = (f"START:STOP:STEP in m/s with 0 <= START < STOP <= {MAX_SPEED:g}, "
+                f"{MIN_SPEED_STEP:g} <= STEP <= STOP - START")
     try:
         start, stop, step = (float(x) for x in text.split(":"))
     except ValueError:
         raise InputError("--speeds", text, expected) from None
-    if not (0 <= start < stop and step > 0 and (stop - start) / step <= 1e5):
+    if not (0 <= start < stop <= MAX_SPEED and MIN_SPEED_STEP <= step <= stop - start):
         raise InputError("--speeds", text, expected)
+    count = int(round((stop - start) / step)) + 1
+    if count > limit:
+        raise InputError("--speeds", text, f"at most {limit} speeds, got {count} "
+                                                      "(raise with --max-speeds)")
     return speed_grid(start, stop, step)
 
 
@@ -132,7 +150,7 @@ def run_eig(args):
     from ..output import dumps
 
     options = figure_options(args, args.plot)
-    speeds = parse_speeds(args.speeds)
+    speeds = parse_speeds(args.speeds, args.max_speeds)
     modes = eigenvalues(*_inputs(args), speeds)
     if args.format or args.output or not args.plot:      # only a figure asked for: no table
         if args.format == "json":
@@ -185,9 +203,7 @@ def run_stability(args):
     from ..output import dumps
 
     options = figure_options(args, args.plot)
-    if not args.marginal > 0:
-        raise InputError("--marginal", args.marginal, "a positive modulus in rad/s")
-    speeds = parse_speeds(args.speeds)
+    speeds = parse_speeds(args.speeds, args.max_speeds)
     result = stability(*_inputs(args), speeds, marginal=args.marginal)
     text = dumps(result.to_dict(), "json") if args.format == "json" else stability_text(result, _title(args))
     _emit(args, text)
@@ -199,13 +215,17 @@ def run_stability(args):
 
 def run_compare(args):
     from ..dynamics import stability
+    from ..errors import InputError, short
     from ..output import table
     from ..plots.critical_speeds import plot_critical_speeds
 
     options = figure_options(args, args.output)
-    speeds = parse_speeds(args.speeds)
+    speeds = parse_speeds(args.speeds, args.max_speeds)
     riders = [r.strip() for r in args.riders.split(",") if r.strip()]
     stiffnesses = [k.strip() for k in args.stiffnesses.split(",") if k.strip()]
+    for option, items in (("--riders", riders), ("--stiffnesses", stiffnesses)):
+        if not items:
+            raise InputError(option, short(getattr(args, option[2:]), 40), "a comma-separated list of at least one name")
     results, rows = {}, []
     for rider in riders:
         for stiffness in stiffnesses:

@@ -31,6 +31,8 @@ examples:
 def register(sub):
     import argparse
 
+    from ..options import jobs
+
     p = sub.add_parser("study", help="reproduce the thesis end to end and write a report (the main job)",
                        description=DESCRIPTION, epilog=EPILOG,
                        formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -38,30 +40,27 @@ def register(sub):
                    help="output folder (default: study/; created if missing, files replaced)")
     p.add_argument("--no-figures", action="store_true",
                    help="skip the ~85 PNG figures (the slow part)")
-    p.add_argument("--jobs", type=int, default=None, metavar="N",
-                   help="worker processes (default: up to 2, the cores of the reference machine)")
-    p.set_defaults(run=run_study)
+    p.add_argument("--jobs", type=jobs, default=None, metavar="N",
+                   help="worker processes (default: up to 2, the cores of the reference machine; "
+                        "capped at this machine's CPU count)")
+    p.set_defaults(run=run_study, folder_outputs=("out",))
 
 
 def run_study(args):
     from pathlib import Path
 
-    from ..errors import InputError
+    from ..output import new_folder
     from ..progress import Progress
     from ..study import pipeline
     from ..study.report import match_counts
 
     out = Path(args.out)
-    if out.exists() and not out.is_dir():
-        raise InputError(out, "--out", "a folder (this is a file)")
-    if args.jobs is not None and args.jobs < 1:
-        raise InputError("--jobs", str(args.jobs), "a number of processes >= 1")
     workers = args.jobs or pipeline.WORKERS
     figures = not args.no_figures
-    with Progress(pipeline.steps(figures), "study") as bar:
+    with Progress(pipeline.steps(figures), "study") as bar, new_folder(out) as folder:
         results = pipeline.compute(workers, bar.step)
-        pipeline.write_files(results, out)
-        pipeline.write_html(results, out, pipeline.draw(results, out, workers, bar.step) if figures else ())
+        pipeline.write_files(results, folder)
+        pipeline.write_html(results, folder, pipeline.draw(results, folder, workers, bar.step) if figures else ())
     print(summary(results, match_counts(results.entries), out))
     return 0
 

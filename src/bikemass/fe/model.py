@@ -73,6 +73,15 @@ def _check(structure):
             raise ValueError(f"support keypoint {key!r} is not in the structure")
 
 
+def _element_count(length, element_size):
+    return 1 if element_size is None else max(1, int(np.ceil(length / element_size - 1e-9)))
+
+
+def element_count(structure, element_size=None):
+    """Number of beam elements :func:`build_mesh` makes of ``structure`` at ``element_size`` (m)."""
+    return sum(_element_count(t.length, element_size) for t in structure.tubes)
+
+
 def build_mesh(structure, material=None, element_size=None):
     """:class:`FrameMesh` of ``structure`` (optionally with ``material`` for all tubes)."""
     structure = with_material(structure, material)
@@ -82,7 +91,7 @@ def build_mesh(structure, material=None, element_size=None):
     nodes = [np.asarray(structure.keypoints[name], float) for name in names]
     elements, tube_index, props = [], [], []
     for t, tube in enumerate(structure.tubes):
-        count = 1 if element_size is None else max(1, int(np.ceil(tube.length / element_size - 1e-9)))
+        count = _element_count(tube.length, element_size)
         a, b = keypoint_nodes[tube.start_key], keypoint_nodes[tube.end_key]
         frac = np.arange(1, count)[:, None] / count
         first = len(nodes)

@@ -41,7 +41,8 @@ def _lowest(K, M, count, shift):
     if K.shape[0] <= DENSE_LIMIT:
         values, vectors = scipy.linalg.eigh(K.toarray(), M.toarray(), subset_by_index=[0, count - 1])
     else:
-        values, vectors = spla.eigsh(K.tocsc(), k=count, M=M.tocsc(), sigma=shift, which="LM")
+        start = np.random.default_rng(0).standard_normal(K.shape[0])   # fixed: same result every run
+        values, vectors = spla.eigsh(K.tocsc(), k=count, M=M.tocsc(), sigma=shift, which="LM", v0=start)
         order = np.argsort(values)
         values, vectors = values[order], vectors[:, order]
     return values, vectors

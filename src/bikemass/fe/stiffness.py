@@ -51,7 +51,13 @@ def rotational_stiffness(mesh, timoshenko=True):
     rot = np.searchsorted(free, 6 * node + np.arange(3, 6))
     load = np.zeros((len(free), 3))
     load[rot, np.arange(3)] = 1.0
-    flexibility = spla.splu(K).solve(load)[rot]
+    try:
+        flexibility = spla.splu(K).solve(load)[rot]
+    except RuntimeError:        # SuperLU: "Factor is exactly singular"
+        raise ValueError("a structure held by its dropouts (some tubes can move freely: is every tube "
+                         "joined to the others at a shared keypoint?)") from None
+    if not np.all(np.isfinite(flexibility)):
+        raise ValueError("a structure held by its dropouts (its stiffness matrix is singular)")
     flexibility = (flexibility + flexibility.T) / 2
     return np.linalg.inv(flexibility)
 

@@ -25,6 +25,7 @@ tensor products) is a lumped body and needs no anthropometry.
 import numpy as np
 
 from ..inertia import MassProperties
+from ..plausibility import check_inertia
 from ..parts import Part
 from ..placement import Placement
 from ..solids import Lumped
@@ -129,11 +130,7 @@ def _left_placement(node, y):
 def _lumped_part(key, seg):
     """A lumped body (mass, com, central inertia) as one part."""
     seg.check_keys(required=LUMPED_KEYS, optional=("frame",))
-    inertia = seg["inertia"].matrix((3, 3))
-    if not np.allclose(inertia, inertia.T, rtol=0, atol=1e-12):
-        seg.fail("a symmetric 3x3 inertia tensor (kg m^2)", "inertia")
-    if np.linalg.eigvalsh(inertia).min() < -1e-12 * max(1.0, np.abs(inertia).max()):
-        seg.fail("a positive semi-definite inertia tensor (kg m^2)", "inertia")
+    inertia = check_inertia(seg["inertia"].matrix((3, 3)), seg, "inertia")
     props = MassProperties(seg["mass"].number(positive=True), seg["com"].vector(3), inertia)
     return Part(key, Lumped(props), props.mass, Placement.identity(), _frame(seg))
 

@@ -1,0 +1,93 @@
+"""Argument types and limits of the command line: every number finite and in range, every output
+path checked before any work is done.
+
+An ``argparse`` type from :func:`number` refuses ``nan``, ``inf`` and values outside its stated
+range with one line.  The work limits below keep an accidental option from exhausting the
+machine; each is stated in ``--help`` and raised by an explicit flag.
+"""
+
+import argparse
+import math
+import os
+
+from .errors import short
+
+MAX_SPEEDS = 100_000
+"""Most speeds in one grid (``--max-speeds`` raises it)."""
+MAX_SPEED = 1000.0
+"""Highest speed of a grid (m/s)."""
+MIN_SPEED_STEP = 1e-6
+"""Finest speed step (m/s): finer steps print as duplicate speeds."""
+MAX_ELEMENTS = 5000
+"""Most beam elements in a frame-mode model (``--max-elements`` raises it)."""
+MAX_MODES = 200
+"""Most natural frequencies asked for at once (``--max-modes`` raises it)."""
+
+
+def number(low=-math.inf, high=math.inf, integer=False, open_low=False, what="a number"):
+    """An argparse type: a finite float (or int) in [low, high] (``open_low``: above ``low``)."""
+    def parse(text):
+        try:
+            value = int(text) if integer else float(text)
+        except (ValueError, OverflowError):
+            raise argparse.ArgumentTypeError(f"{what}, got {short(text, 40)}") from None
+        inside = (value > low if open_low else value >= low) and value <= high
+        if not (math.isfinite(value) and inside):
+            bounds = f"{'above' if open_low else 'at least'} {low:g}" if math.isfinite(low) else ""
+            if math.isfinite(high):
+                bounds += (" and " if bounds else "") + f"at most {high:g}"
+            raise argparse.ArgumentTypeError(f"{what} (finite{', ' + bounds if bounds else ''}), "
+                                             f"got {short(text, 40)}")
+        return value
+    parse.__name__ = what     # argparse names the type in its messages
+    return parse
+
+
+def count(low=1, high=10**9, what="a whole number"):
+    """An argparse type: an int in [low, high]."""
+    return number(low, high, integer=True, what=what)
+
+
+def jobs(text):
+    """``--jobs``: a number of processes >= 1, capped at this machine's CPU count."""
+    return min(count(1, what="a number of processes")(text), os.cpu_count() or 1)
+
+
+def angle(limit):
+    """An argparse type: an angle in degrees within [-limit, limit]."""
+    return number(-limit, limit, what="an angle in degrees")
+
+
+OUTPUT_OPTIONS = ("output", "plot", "out")
+"""Attributes of parsed arguments that name an output file (a folder where a command says so)."""
+
+
+def check_outputs(args):
+    """Refuse bad output paths of ``args`` before the command runs (:func:`bikemass.output.check_output`):
+    folders where files are wanted, unwritable places, and the command's own input files."""
+    from .output import check_folder, check_output
+
+    folders = getattr(args, "folder_outputs", ())
+    inputs = [v for key, value in vars(args).items() if key not in OUTPUT_OPTIONS
+              for v in (value if isinstance(value, list) else [value]) if isinstance(v, str)]
+    for key in OUTPUT_OPTIONS:
+        path = getattr(args, key, None)
+        if not isinstance(path, str) or not path:
+            continue
+        option = "-o" if key == "output" else f"--{key}"
+        if key in folders:
+            check_folder(path, option=option)
+        elif key == "plot":
+            _check_figure_name(path, option)
+            check_output(path, None, inputs, "a figure file", option)
+        else:
+            check_output(path, None, inputs, "an output file", option)
+
+
+def _check_figure_name(path, option):
+    from .errors import InputError
+    from .plots.figure import figure_format
+    try:
+        figure_format(path)
+    except ValueError as exc:
+        raise InputError(path, option, f"{exc}, got {short(os.path.basename(path), 30)}") from None

@@ -1,0 +1,103 @@
+"""Physical plausibility: errors where the model is undefined, warnings where the input is legal
+but unusual.
+
+Errors (:class:`~bikemass.errors.InputError`, naming the file and key): a steer-axis tilt
+``lam`` outside (0, pi/2), an inertia tensor that is not symmetric, not positive
+semi-definite or violates the triangle inequality, a stiffness matrix that is not
+symmetric or not positive definite.  Warnings (:class:`~bikemass.errors.BikemassWarning`,
+one line each): negative trail, a centre of mass below the ground (z > 0), a rider far from
+the bicycle, masses beyond any bicycle.  The thresholds are stated below.
+"""
+
+import warnings
+
+import numpy as np
+
+from .errors import BikemassWarning
+
+RELATIVE_TOLERANCE = 1e-9
+"""Asymmetry, negative moments and triangle excess below this fraction of the largest moment pass."""
+MAX_MASS = 500.0
+"""A total mass above this (kg) is warned about: no bicycle with rider weighs that much."""
+RIDER_REACH = 1.0
+"""A rider's centre of mass more than this (m) ahead of the front or behind the rear contact,
+or more than 3 m above the ground, is warned about."""
+RIDER_HEIGHT = 3.0
+"""Highest plausible rider centre of mass above the ground (m)."""
+
+
+def warn(message):
+    """Issue one :class:`BikemassWarning` (shown as one line by the command line)."""
+    warnings.warn(message, BikemassWarning, stacklevel=3)
+
+
+def inertia_problem(tensor):
+    """Why the 3x3 ``tensor`` (kg m^2) is not an inertia tensor, or ``None`` if it is one."""
+    tensor = np.asarray(tensor, float)
+    scale = max(np.abs(tensor).max(), 1e-300) * RELATIVE_TOLERANCE
+    if np.abs(tensor - tensor.T).max() > scale:
+        return "a symmetric inertia tensor (kg m^2)"
+    moments = np.linalg.eigvalsh(tensor)
+    if moments[0] < -scale:
+        return (f"an inertia tensor with principal moments >= 0 (positive semi-definite), got "
+                f"{moments[0]:.6g} kg m^2")
+    if moments[2] > moments[0] + moments[1] + scale:
+        return (f"an inertia tensor obeying the triangle inequality (largest principal moment "
+                f"{moments[2]:.6g} <= {moments[0]:.6g} + {moments[1]:.6g} kg m^2)")
+    return None
+
+
+def check_inertia(tensor, node, key=None):
+    """``tensor`` if it is an inertia tensor, else fail at ``node`` (or its ``key``)."""
+    problem = inertia_problem(tensor)
+    if problem:
+        node.fail(problem, key)
+    return np.asarray(tensor, float)
+
+
+def check_stiffness(node):
+    """The 2x2 matrix at ``node`` (N m/rad): symmetric and positive definite, else an error."""
+    S = node.matrix((2, 2))
+    if abs(S[0, 1] - S[1, 0]) > RELATIVE_TOLERANCE * np.abs(S).max():
+        node.fail(f"a symmetric matrix (equal off-diagonal terms), got {S[0, 1]:.6g} and {S[1, 0]:.6g}")
+    if not np.all(np.linalg.eigvalsh(S) > 0):
+        node.fail("a positive definite 2x2 stiffness matrix (N m/rad)")
+    return S
+
+
+def check_parameter_node(params, node):
+    """Errors for a benchmark parameter file ``node`` whose values are ``params``."""
+    if not 0 < params.lam < np.pi / 2:
+        node.fail(f"a steer-axis tilt in (0, pi/2) rad, got {params.lam:.6g}", "lam")
+    for body in "BH":
+        check_inertia(params.inertia(body), node, f"I{body}xx")
+    for body in "RF":
+        xx, yy = getattr(params, f"I{body}xx"), getattr(params, f"I{body}yy")
+        if yy > 2 * xx * (1 + RELATIVE_TOLERANCE):
+            node.fail(f"a wheel inertia obeying the triangle inequality (I{body}yy <= 2 I{body}xx), "
+                      f"got I{body}yy = {yy:.6g} > 2 x {xx:.6g}", f"I{body}yy")
+
+
+def warn_parameters(params, source):
+    """Warnings for a legal but unusual benchmark parameter set read from or built for ``source``."""
+    if params.c < 0:
+        warn(f"{source}: negative trail c = {params.c:.4g} m (the front contact is ahead of where the "
+             "steer axis meets the ground)")
+    masses = {"B": params.mB, "H": params.mH}
+    for body, z in (("B", params.zB), ("H", params.zH)):
+        if z > 0:
+            warn(f"{source}: centre of mass z{body} = {z:.4g} m is below the ground (z points down)")
+    total = params.mR + params.mF + sum(masses.values())
+    if total > MAX_MASS:
+        warn(f"{source}: total mass {total:.4g} kg is more than {MAX_MASS:g} kg")
+
+
+def warn_rider(rider_com, geometry, source, rider_name):
+    """Warn if the rider's centre of mass (m, benchmark frame) is far from the bicycle or below the ground."""
+    x, y, z = rider_com
+    if z > 0:
+        warn(f"{source}: rider {rider_name}'s centre of mass is below the ground (z = {z:.4g} m)")
+    elif not (-RIDER_REACH <= x <= geometry.wheelbase + RIDER_REACH and z >= -RIDER_HEIGHT
+              and abs(y) <= RIDER_REACH):
+        warn(f"{source}: rider {rider_name}'s centre of mass [{x:.4g}, {y:.4g}, {z:.4g}] m is far from "
+             f"the bicycle (more than {RIDER_REACH:g} m beyond a wheel contact, or above {RIDER_HEIGHT:g} m)")
