@@ -1,0 +1,61 @@
+"""Outputs: an overwritten file keeps its permissions and its symbolic link, an output folder is
+replaced whole or not at all, and frame modes come out the same on every call."""
+
+import os
+import stat
+
+import numpy as np
+import pytest
+
+from bikemass.cli import main
+from bikemass.fe import frame_modes
+from bikemass.fe.modes import DENSE_LIMIT
+from bikemass.fe.model import build_mesh
+from bikemass.output import new_folder
+from bikemass.frame import frame_structure
+
+
+def test_overwrite_keeps_permissions_and_symlink(tmp_path, capsys):
+    target = tmp_path / "real.yaml"
+    target.write_text("old\n")
+    os.chmod(target, 0o600)
+    link = tmp_path / "link.yaml"
+    link.symlink_to(target)
+    assert main(["params", "benchmark", "-o", str(link)]) == 0
+    assert link.is_symlink() and os.readlink(link) == str(target)
+    assert stat.S_IMODE(target.stat().st_mode) == 0o600
+    assert target.read_text().startswith("w: 1.02\n")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["link.yaml", "real.yaml"]   # no temporary left
+
+
+def test_a_folder_is_replaced_whole(tmp_path):
+    out = tmp_path / "study"
+    out.mkdir()
+    (out / "report.md").write_text("old report\n")
+    (out / "stale.png").write_text("from an older run\n")
+    with new_folder(out) as folder:
+        (folder / "report.md").write_text("new report\n")
+        assert (out / "stale.png").exists()          # the old run stays complete until the end
+    assert sorted(p.name for p in out.iterdir()) == ["report.md"]
+    assert (out / "report.md").read_text() == "new report\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["study"]
+
+
+def test_an_interrupted_folder_leaves_the_old_one(tmp_path):
+    out = tmp_path / "study"
+    out.mkdir()
+    (out / "report.md").write_text("old report\n")
+    with pytest.raises(KeyboardInterrupt):
+        with new_folder(out) as folder:
+            (folder / "report.md").write_text("half\n")
+            raise KeyboardInterrupt
+    assert (out / "report.md").read_text() == "old report\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["study"]
+
+
+def test_sparse_frame_modes_are_the_same_every_call():
+    structure = frame_structure("jamis")
+    assert build_mesh(structure, None, 0.01).n_dof > DENSE_LIMIT    # the sparse (eigsh) path
+    first, second = (frame_modes(structure, "free", 6, None, 0.01) for _ in range(2))
+    assert np.array_equal(first.frequencies_hz, second.frequencies_hz)
+    assert np.array_equal(first.shapes, second.shapes)
