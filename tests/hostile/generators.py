@@ -227,9 +227,12 @@ def base_ok(folder, spec):
 
 
 def shifted_pose(folder, spec):
-    """The relaxed pose moved by dx, dz (m)."""
-    document = shipped("bodies/poses/relaxed.yaml")
+    """The relaxed pose (``lumped``: its published one-body rider) moved by dx, dz (m)."""
+    lumped = spec.get("lumped", False)
+    document = shipped("bodies/poses/relaxed_thesis.yaml" if lumped else "bodies/poses/relaxed.yaml")
+    document.pop("posture", None)
+    key = "com" if lumped else "location"
     for segment in document["segments"].values():
-        x, y, z = segment["location"]
-        segment["location"] = [x + spec.get("dx", 0), y, z + spec.get("dz", 0)]
+        x, y, z = segment[key]
+        segment[key] = [x + spec.get("dx", 0), y, z + spec.get("dz", 0)]
     return _write(folder, dump(document))

@@ -54,15 +54,12 @@ def _props(solids, scale=1.0):
 def read_measurements(path):
     """(``{name: m}`` of the 95 measurements, total mass in kg or None) of a yeadon measurement
     file; ValueError naming the first bad or missing entry."""
-    import yaml
     try:
         import yeadon
     except ImportError:
         raise ImportError("the yeadon package: pip install 'bikemass[yeadon]'") from None
-    try:
-        content = yaml.safe_load(Path(path).read_text())
-    except (yaml.YAMLError, UnicodeDecodeError) as exc:
-        raise ValueError(f"not YAML-style 'name: value' lines ({type(exc).__name__})") from None
+    from ..gate import load_data
+    content = load_data(path)            # the input gate: size, type, encoding, YAML limits
     if not isinstance(content, dict):
         raise ValueError("no 'name: value' lines")
     factor = content.pop("measurementconversionfactor", None)
