@@ -29,7 +29,7 @@ def run(capsys, *argv):
 def test_params_benchmark_json_is_meijaard_2007(capsys):
     code, out, err = run(capsys, "params", "benchmark", "--format", "json")
     assert code == 0 and err == ""
-    assert json.loads(out) == MEIJAARD_2007
+    assert json.loads(out) == {**MEIJAARD_2007, "rider_included": True}     # B holds the rider
 
 
 def test_params_yaml_to_file(capsys, tmp_path):

@@ -172,7 +172,7 @@ def test_measured_bicycle_companion_poses_a_chain_rider(tmp_path, capsys):
     bike = load_bicycle(companion)
     assert bike.contacts is not None and bike.published.mB == 9.9
     pose = tmp_path / "ride.yaml"
-    pose.write_text(f"name: ride\nbody: thesis_rider\nbike: {companion}\nchain: {{hands: tops, torso_lean: 30}}\n")
+    pose.write_text(f"name: ride\nbody: thesis_rider\nbike: {companion}\nchain: {{hands: tops, torso_lean: 30 deg}}\n")
     assert main(["stability", str(companion), "--rider", str(pose), "--format", "json"]) == 0
     ridden = json.loads(capsys.readouterr().out)
     assert main(["stability", str(companion), "--format", "json"]) == 0

@@ -15,7 +15,7 @@ from bikemass.rider.thesis_fit import compare_with_chain
 
 ROOT = Path(__file__).parents[1]
 DOC = (ROOT / "docs" / "poses.md").read_text()
-THREE_LINES = "body: thesis_rider\nbike: jamis\nchain: {torso_lean: 30, hands: hoods}\n"
+THREE_LINES = "body: thesis_rider\nbike: jamis\nchain: {torso_lean: 30 deg, hands: hoods}\n"
 
 
 def test_pose_file_from_the_command_loads_like_any_pose(tmp_path, capsys):
@@ -51,16 +51,16 @@ def test_crank_angle_gives_left_and_right_legs(tmp_path, capsys):
 
 
 @pytest.mark.parametrize("edit,key", [
-    (lambda s: s.replace("angle: 0.0, mirror: true", "angle: 0.0, mirror: true, left: {location: [0.2, 0.238, -1.3], angle: 0}"),
+    (lambda s: s.replace("angle: 0.0 deg, mirror: true", "angle: 0.0 deg, mirror: true, left: {location: [0.2, 0.238, -1.3], angle: 0 deg}"),
      "segments.lower_arm.left.location"),
-    (lambda s: s.replace("head:      {location: [0.200, 0.000, -1.922], angle: 0.000",
-                         "head:      {location: [0.200, 0.000, -1.922], angle: 0.000, left: {location: [0, -1, 0], angle: 0}"),
+    (lambda s: s.replace("head:      {location: [0.200, 0.000, -1.922], angle: 0.000 deg",
+                         "head:      {location: [0.200, 0.000, -1.922], angle: 0.000 deg, left: {location: [0, -1, 0], angle: 0 deg}"),
      "segments.head.left"),
 ])
 def test_left_placement_is_checked(tmp_path, edit, key):
     text = (ROOT / "bodies" / "poses" / "no_hands.yaml").read_text()
-    text = text.replace("lower_arm: {location: [0.200, 0.238, -1.317], angle: 0.000, mirror: true}",
-                        "lower_arm: {location: [0.200, 0.238, -1.317], angle: 0.0, mirror: true}")
+    text = text.replace("lower_arm: {location: [0.200, 0.238, -1.317], angle: 0.000 deg, mirror: true}",
+                        "lower_arm: {location: [0.200, 0.238, -1.317], angle: 0.0 deg, mirror: true}")
     path = tmp_path / "p.yaml"
     path.write_text(edit(text))
     with pytest.raises(InputError) as info:
@@ -96,12 +96,12 @@ def test_bad_contacts_name_the_key(tmp_path, contacts, key):
     assert info.value.key == key
 
 
-@pytest.mark.parametrize("chain,key", [("torso_lean: 0, hands: aero", "chain.hands"),
-                                       ("crank: 80", "chain.crank"), ("hands: bars", "chain.hands"),
-                                       ("torso_lean: 30, wrist: 3", "chain.wrist")])
+@pytest.mark.parametrize("chain,key", [("torso_lean: 0 deg, hands: aero", "chain.hands"),
+                                       ("crank: 80 deg", "chain.crank"), ("hands: bars", "chain.hands"),
+                                       ("torso_lean: 30 deg, wrist: 3", "chain.wrist")])
 def test_bad_chain_file_names_its_key(tmp_path, chain, key):
     path = tmp_path / "far.yaml"
-    path.write_text(THREE_LINES.replace("torso_lean: 30, hands: hoods", chain))
+    path.write_text(THREE_LINES.replace("torso_lean: 30 deg, hands: hoods", chain))
     with pytest.raises(InputError) as info:
         load_rider(str(path))
     assert info.value.key == key and str(path) == info.value.source

@@ -240,7 +240,7 @@ def _spread_pose():
         if seg == "total":
             continue
         mirror = ", mirror: true" if seg in PAIRED else ""
-        lines.append(f"  {seg}: {{location: [{0.6 * i}, 0.3, -1.0], angle: 0{mirror}}}")
+        lines.append(f"  {seg}: {{location: [{0.6 * i}, 0.3, -1.0], angle: 0 deg{mirror}}}")
     return "\n".join(lines) + "\n"
 
 
@@ -249,9 +249,9 @@ def _spread_pose():
 def test_user_pose_file_front_frame_units_and_printed(tmp_path):
     """A copy of Relaxed written by hand, hands on the bars, units, and a printed value."""
     text = (Path(__file__).parents[1] / "bodies" / "poses" / "relaxed.yaml").read_text()
-    text = text.replace("lower_arm: {location: [0.450, 0.238, -1.312], angle: -48.829, mirror: true}",
+    text = text.replace("lower_arm: {location: [0.450, 0.238, -1.312], angle: -48.829 deg, mirror: true}",
                         "lower_arm: {location: ['450 mm', 0.238, -1.312], angle: '-0.852232 rad', "
-                        "mirror: true, frame: front, printed: {angle: 0}}")
+                        "mirror: true, frame: front, printed: {angle: 0 deg}}")
     assert "frame: front" in text
     pose = tmp_path / "my_pose.yaml"
     pose.write_text(text)
@@ -272,7 +272,7 @@ def test_user_pose_with_own_anthropometry_and_lumped_load(tmp_path):
     (tmp_path / "stick.yaml").write_text(
         "name: stick\nsegments:\n  pole: {shape: cylinder, diameter: 0.1, length: 2.0, mass: 3.0}\n")
     (tmp_path / "pose.yaml").write_text(
-        "body: stick.yaml\nsegments:\n  pole: {location: [0, 0, -2], angle: 90}\n"
+        "body: stick.yaml\nsegments:\n  pole: {location: [0, 0, -2], angle: 90 deg}\n"
         "  pack: {mass: 1.0, com: [-1.0, 0, -2.0], inertia: [[0, 0, 0], [0, 0, 0], [0, 0, 0]]}\n")
     props = load_rider(str(tmp_path / "pose.yaml")).properties("exact")
     # pole axis (-sin 90, 0, cos 90) = -x: from x = 0 back to x = -2, CoM at x = -1.

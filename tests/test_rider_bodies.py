@@ -2,6 +2,7 @@
 bicycle by the chain; contacts checked wherever a rider meets a bicycle."""
 
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -16,6 +17,7 @@ from bikemass.rider.seating import seat_rider
 # de Leva (1996), Table 4, mass in % of body mass, merged into the thesis's kinds by hand:
 # head = head (incl. neck); torso = trunk; lower arm = forearm + hand; lower leg = shank + foot.
 # (The female column sums to 99.99 %: the fractions below are as printed.)
+FRAMES = Path(__file__).parents[1] / "frames"
 DE_LEVA_MERGED = {
     "male": {"head": 6.94, "torso": 43.46, "upper_arm": 2.71, "lower_arm": 1.62 + 0.61,
              "thigh": 14.16, "lower_leg": 4.33 + 1.37},
@@ -223,7 +225,7 @@ def test_fitted_saddle_follows_the_inseam(tmp_path):
 @pytest.mark.parametrize("saddle,needle", [
     ("{fit: magic, seat_tube_angle: 73}", "contacts.saddle.fit: one of lemond"),
     ("{fit: lemond}", "contacts.saddle: exactly one of seat_tube_angle"),
-    ("{fit: lemond, seat_tube_angle: 200}", "contacts.saddle.seat_tube_angle: a seat tube angle between"),
+    ("{fit: lemond, seat_tube_angle: 200 deg}", "contacts.saddle.seat_tube_angle: a seat tube angle between"),
     ("{fit: lemond, towards: bottom_bracket}", "contacts.saddle.towards: a keypoint above the bottom bracket"),
 ])
 def test_bad_fitted_saddle_names_the_key(capsys, tmp_path, saddle, needle):
@@ -244,10 +246,14 @@ def test_rider_on_a_bicycle_table_lists_the_contacts(capsys):
 
 def test_bicycle_without_contacts(capsys, tmp_path):
     path = _chain_pose(tmp_path, "male", 1.80, 75.0)
-    code, out, err = run(capsys, "params", "benchmark", "--rider", path)
-    assert code == 2 and "chain: a bicycle with a contacts: section" in err and "frames/benchmark.yaml" in err
-    code, out, err = run(capsys, "params", "benchmark", "--rider", "relaxed")
-    assert code == 0 and "not checked (frames/benchmark.yaml has no contacts: section)" in err
+    code, out, err = run(capsys, "params", "benchmark", "--rider", path)     # its B holds a rider
+    assert code == 2 and "frames/benchmark.yaml: rider_included: no rider added" in err
+    bare = tmp_path / "bare.yaml"          # the benchmark without its rider_included: true
+    bare.write_text((FRAMES / "benchmark.yaml").read_text().replace("rider_included: true", ""))
+    code, out, err = run(capsys, "params", bare, "--rider", path)
+    assert code == 2 and "chain: a bicycle with a contacts: section" in err and str(bare) in err
+    code, out, err = run(capsys, "params", bare, "--rider", "relaxed")
+    assert code == 0 and f"not checked ({bare} has no contacts: section)" in err
 
 
 def test_chart_bicycle_seats_from_its_contacts(capsys, tmp_path):

@@ -81,11 +81,11 @@ def _pose(tmp_path, text, body=None):
 
 BAD_POSES = {
     # name: (pose text, anthropometry text or None, key expected in the message, words expected)
-    "unknown segment": (RELAXED + "  neck: {location: [0, 0, -1.8], angle: 0}\n", None,
+    "unknown segment": (RELAXED + "  neck: {location: [0, 0, -1.8], angle: 0 deg}\n", None,
                         "segments.neck", "segment of the anthropometry"),
     "misspelt segment": (RELAXED.replace("  head:", "  haed:"), None, "segments.haed", "(head, torso,"),
-    "missing key": (RELAXED.replace(", angle: 15.362}", "}", 1), None, "segments.head.angle", "missing"),
-    "extra key": (RELAXED.replace("angle: 15.362}", "angle: 15.362, colour: red}", 1), None,
+    "missing key": (RELAXED.replace(", angle: 15.362 deg}", "}", 1), None, "segments.head.angle", "missing"),
+    "extra key": (RELAXED.replace("angle: 15.362 deg}", "angle: 15.362 deg, colour: red}", 1), None,
                   "segments.head.colour", "no such key"),
     "missing segment": ("\n".join(l for l in RELAXED.splitlines() if "lower_leg" not in l), None,
                         "segments", "missing: lower_leg"),
@@ -93,9 +93,9 @@ BAD_POSES = {
                              "segments.head.location[2]", "number"),
     "unknown body": (RELAXED.replace("body: thesis_rider", "body: martian"), None, "body",
                      "shipped anthropometry"),
-    "mirror mismatch": (RELAXED.replace("angle: -45.220, mirror: true", "angle: -45.220"), None,
+    "mirror mismatch": (RELAXED.replace("angle: -45.220 deg, mirror: true", "angle: -45.220 deg"), None,
                         "segments.thigh.mirror", "mirror: true"),
-    "bad frame": (RELAXED.replace("angle: 15.362}", "angle: 15.362, frame: fork}", 1), None,
+    "bad frame": (RELAXED.replace("angle: 15.362 deg}", "angle: 15.362 deg, frame: fork}", 1), None,
                   "segments.head.frame", "one of rear, front"),
     "unknown shape": (RELAXED.replace("thesis_rider", "body.yaml"),
                       ANTHROPOMETRY.replace("shape: cylinder", "shape: sphere", 1), "segments.head.shape",
@@ -113,11 +113,11 @@ BAD_POSES = {
     "lumped asymmetric inertia": ("segments:\n  rider: {mass: 80, com: [0, 0, -1], "
                                   "inertia: [[1,0,0.5],[0,1,0],[0,0,1]]}\n", None, "segments.rider.inertia",
                                   "symmetric"),
-    "placed without body": ("segments:\n  head: {location: [0, 0, -1.9], angle: 0}\n", None,
+    "placed without body": ("segments:\n  head: {location: [0, 0, -1.9], angle: 0 deg}\n", None,
                             "segments.head", "body:"),
-    "angle in mm": (RELAXED.replace("angle: 15.362}", "angle: 15 mm}", 1), None, "segments.head.angle",
+    "angle in mm": (RELAXED.replace("angle: 15.362 deg}", "angle: 15 mm}", 1), None, "segments.head.angle",
                     "'<number> deg'"),
-    "bad printed value": (RELAXED.replace("angle: 15.362}", "angle: 15.362, printed: {angle: steep}}", 1),
+    "bad printed value": (RELAXED.replace("angle: 15.362 deg}", "angle: 15.362 deg, printed: {angle: steep}}", 1),
                           None, "segments.head.printed.angle", "number"),
     "bad yaml": ("segments: [unclosed\n", None, "line", "valid YAML"),
 }

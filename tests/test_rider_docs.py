@@ -32,7 +32,7 @@ def test_worked_example_loads_and_matches_the_page(tmp_path, capsys):
 
 def test_error_example_is_the_real_message(tmp_path, capsys):
     path = tmp_path / "upright.yaml"
-    path.write_text(example_pose().replace("angle: -45.220, mirror: true", "angle: -45.220"))
+    path.write_text(example_pose().replace("angle: -45.220 deg, mirror: true", "angle: -45.220 deg"))
     assert main(["rider", str(path)]) == 2
     err = capsys.readouterr().err
     expected = [l for l in DOC.splitlines() if l.startswith("bikemass: error: upright.yaml")][0]

@@ -77,10 +77,11 @@ def load_rider(rider, as_printed=False, name=None):
     rider : str, os.PathLike, Mapping, Rider or None
         A shipped pose (``"relaxed"``; ``"relaxed-thesis"`` is the published Table 3-4
         rider), a pose YAML file, or a mapping in any pose form the YAML accepts:
-        placement (``body`` + ``segments`` with ``location`` in m and ``angle`` in deg),
-        chain (``body``, ``bike``, ``chain`` joint angles in deg; solved on the bicycle's
-        contacts) or lumped segments (``mass`` kg, ``com`` m, ``inertia`` kg m^2).
-        Values may carry units as strings (``"1.2 m"``).  ``None`` or ``"none"``: no rider.
+        placement (``body`` + ``segments`` with ``location`` in m and ``angle`` such as
+        ``"15 deg"``), chain (``body``, ``bike``, ``chain`` joint angles such as ``"30 deg"``;
+        solved on the bicycle's contacts) or lumped segments (``mass`` kg, ``com`` m,
+        ``inertia`` kg m^2).  Values may carry units as strings (``"1.2 m"``); angles must
+        (a bare angle is refused, README "Units in YAML").  ``None`` or ``"none"``: no rider.
     as_printed : bool
         Use the values as printed in the thesis (``printed:`` keys) instead of the errata.
     name : str, optional
@@ -163,15 +164,18 @@ def seated_rider(bicycle, rider, allow_off_contact=False, as_printed=False):
     ------
     InputError
         A contact further than 1 mm from the bicycle's (without ``allow_off_contact``), out
-        of reach, or bad input.  Gaps allowed, and contacts that cannot be checked, are
+        of reach, a bicycle whose rear body already holds a rider (``rider_included``), or bad input.  Gaps allowed, and contacts that cannot be checked, are
         :class:`~bikemass.errors.BikemassWarning` s.
     """
     import warnings
     from .errors import BikemassWarning
     from .rider.seating import seat_rider
+    from .bicycle.benchmark import refuse_second_rider
     if rider is None or (isinstance(rider, str) and rider == "none"):
         return None
-    seated = seat_rider(rider, load_bicycle(bicycle), as_printed, allow_off_contact)
+    model = load_bicycle(bicycle)
+    refuse_second_rider(model, rider)
+    seated = seat_rider(rider, model, as_printed, allow_off_contact)
     for line in seated.warnings:
         warnings.warn(line, BikemassWarning, stacklevel=2)
     return seated.rider

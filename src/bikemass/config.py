@@ -11,7 +11,7 @@ import numpy as np
 
 from .errors import InputError, short
 from .gate import load_data
-from .units import to_si
+from .units import DIMENSIONS, UnitError, convert
 
 MAX_MAGNITUDE = 1e12
 """Largest magnitude of any number read (SI): above every physical input (a steel's E is 2e11 Pa),
@@ -90,12 +90,11 @@ class Node:
     def missing(self):
         return self.value is None
 
-    def number(self, positive=False, nonnegative=False):
-        """A float in SI (``"<number> <unit>"`` strings converted), finite and of magnitude
-        at most :data:`MAX_MAGNITUDE`."""
+    def number(self, dimension, positive=False, nonnegative=False, bare_unit=None, unit=None):
+        """A float of ``dimension`` (see :mod:`bikemass.units`) in SI, or in ``unit`` if given."""
         try:
-            x = to_si(self.value)
-        except (ValueError, OverflowError) as exc:
+            x = convert(self.value, dimension, unit or DIMENSIONS[dimension][0], bare_unit=bare_unit)
+        except (UnitError, OverflowError) as exc:
             self.fail(str(exc))
         if not np.isfinite(x):
             self.fail(f"a finite number, got {short(self.value)}")
@@ -107,18 +106,18 @@ class Node:
             self.fail(f"a number >= 0, got {short(self.value)}")
         return x
 
-    def vector(self, size=3):
-        """A float array of length ``size`` (each entry may carry a unit)."""
+    def vector(self, dimension, size=3):
+        """A float array of length ``size`` in SI of ``dimension`` (each entry may carry a unit)."""
         if not isinstance(self.value, list) or len(self.value) != size:
             self.fail(f"a list of {size} numbers, got {short(self.value)}")
-        return np.array([e.number() for e in self.elements()])
+        return np.array([e.number(dimension) for e in self.elements()])
 
-    def matrix(self, shape):
-        """A float array of ``shape`` (rows of numbers)."""
+    def matrix(self, dimension, shape):
+        """A float array of ``shape`` (rows of numbers) in SI of ``dimension``."""
         rows = self.elements()
         if len(rows) != shape[0]:
             self.fail(f"a {shape[0]}x{shape[1]} matrix (list of {shape[0]} rows)")
-        return np.array([r.vector(shape[1]) for r in rows])
+        return np.array([r.vector(dimension, shape[1]) for r in rows])
 
     def string(self, choices=None):
         """A string, optionally one of ``choices``."""

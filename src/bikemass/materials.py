@@ -32,11 +32,11 @@ def read_materials(root):
     table = {}
     for key, node in root.items():
         node.check_keys(required=("E", "nu", "density"), optional=("name", "aliases"))
-        nu = node["nu"].number(positive=True)
+        nu = node["nu"].number("dimensionless", positive=True)
         if nu >= 0.5:
             node.fail("a Poisson's ratio below 0.5", "nu")
-        mat = Material(key, node.get("name", key).string(), node["E"].number(positive=True),
-                       nu, node["density"].number(positive=True))
+        mat = Material(key, node.get("name", key).string(), node["E"].number("pressure", positive=True),
+                       nu, node["density"].number("density", positive=True))
         table[key] = mat
         for alias in node.get("aliases", []).elements():
             table[alias.string()] = mat

@@ -76,13 +76,23 @@ NAMES = tuple(f.name for f in fields(BenchmarkParameters))
 """The 26 parameter names in the Meijaard order."""
 
 
+def dimension(name):
+    """The dimension (:mod:`bikemass.units`) of parameter ``name``."""
+    if name == "lam":
+        return "angle"
+    if name == "g":
+        return "acceleration"
+    return {"I": "inertia", "m": "mass"}.get(name[0], "length")
+
+
 def from_node(node):
     """Build :class:`BenchmarkParameters` from a config :class:`~bikemass.config.Node` with the 26 names."""
-    node.check_keys(required=NAMES, optional=("name", "description", "source"))
+    node.check_keys(required=NAMES, optional=("name", "description", "source", "rider_included"))
     values = {}
     for k in NAMES:
         positive = k not in ("lam", "xB", "zB", "xH", "zH", "IBxz", "IHxz", "c")
-        values[k] = node[k].number(positive=positive)
+        # lam is radians when bare: the definition of this format (Meijaard 2007, BicycleParameters).
+        values[k] = node[k].number(dimension(k), positive=positive, bare_unit="rad" if k == "lam" else None)
     return BenchmarkParameters(**values)
 
 

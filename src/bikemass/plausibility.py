@@ -57,7 +57,7 @@ def check_inertia(tensor, node, key=None):
 
 def check_stiffness(node):
     """The 2x2 matrix at ``node`` (N m/rad): symmetric and positive definite, else an error."""
-    S = node.matrix((2, 2))
+    S = node.matrix("stiffness", (2, 2))
     if abs(S[0, 1] - S[1, 0]) > RELATIVE_TOLERANCE * np.abs(S).max():
         node.fail(f"a symmetric matrix (equal off-diagonal terms), got {S[0, 1]:.6g} and {S[1, 0]:.6g}")
     if not np.all(np.linalg.eigvalsh(S) > 0):

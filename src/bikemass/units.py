@@ -1,57 +1,119 @@
-"""Unit conversion to SI for numbers read from YAML.
+"""Units with dimensions for numbers read from YAML.
 
-A number in a YAML file is SI (m, kg, kg m^2, Pa, kg/m^3, rad unless the key
-says degrees).  A string ``"<number> <unit>"`` is converted, so thesis values
-can be written as printed: ``"1.25 in"``, ``"0.474 lb"``, ``"205 GPa"``,
-``"7.85 g/cm^3"``, ``"72 deg"``.
+Every value is read for a *dimension* (``"length"``, ``"mass"``, ``"angle"``, ...).
+A string ``"<number> <unit>"`` is converted to SI if the unit has that dimension,
+so thesis values can be written as printed (``"1.25 in"``, ``"0.474 lb"``,
+``"205 GPa"``, ``"7.85 g/cm^3"``, ``"72 deg"``); a unit of another dimension
+(``"450 g"`` where a length is expected) is an error.
+
+The rule for bare numbers (one rule, every YAML format):
+
+* a bare number is SI: m, kg, kg m^2, Pa, kg/m^3, N m/rad, m/s^2;
+* an angle always carries its unit (``"72 deg"`` or ``"1.2566 rad"``): a bare
+  number where an angle is expected could be read either way and is refused.
+  The one exception is a format whose definition fixes the unit: the benchmark
+  parameter set of Meijaard et al. (2007), whose ``lam`` is radians (as
+  BicycleParameters writes it); its reader passes ``bare_unit="rad"``.
 """
 
 import math
+import re
 
 INCH = 0.0254
 """One inch in metres."""
 POUND = 0.45359237
 """One pound-mass in kilograms."""
 
-_FACTORS = {
-    # length -> m
-    "m": 1.0, "mm": 1e-3, "cm": 1e-2, "in": INCH, "ft": 12 * INCH,
-    # mass -> kg
-    "kg": 1.0, "g": 1e-3, "lb": POUND, "lbm": POUND,
-    # inertia -> kg m^2
-    "kg m^2": 1.0, "kg*m^2": 1.0, "lb in^2": POUND * INCH**2,
-    # modulus / pressure -> Pa
-    "Pa": 1.0, "MPa": 1e6, "GPa": 1e9,
-    # density -> kg/m^3
-    "kg/m^3": 1.0, "g/cm^3": 1e3, "g/cc": 1e3,
-    # angle -> rad
-    "rad": 1.0, "deg": math.pi / 180,
-    # stiffness
-    "N m/rad": 1.0,
+DIMENSIONS = {
+    "length": ("m", {"m": 1.0, "mm": 1e-3, "cm": 1e-2, "in": INCH, "ft": 12 * INCH}),
+    "mass": ("kg", {"kg": 1.0, "g": 1e-3, "lb": POUND, "lbm": POUND}),
+    "inertia": ("kg m^2", {"kg m^2": 1.0, "kg*m^2": 1.0, "kg mm^2": 1e-6, "g mm^2": 1e-9,
+                           "g cm^2": 1e-7, "lb in^2": POUND * INCH**2, "lb ft^2": POUND * (12 * INCH)**2}),
+    "angle": ("rad", {"rad": 1.0, "deg": math.pi / 180, "°": math.pi / 180}),
+    "pressure": ("Pa", {"Pa": 1.0, "kPa": 1e3, "MPa": 1e6, "GPa": 1e9, "N/mm^2": 1e6,
+                        "psi": POUND * 9.80665 / INCH**2, "ksi": 1e3 * POUND * 9.80665 / INCH**2,
+                        "Msi": 1e6 * POUND * 9.80665 / INCH**2}),
+    "density": ("kg/m^3", {"kg/m^3": 1.0, "g/cm^3": 1e3, "g/cc": 1e3, "lb/in^3": POUND / INCH**3}),
+    "stiffness": ("N m/rad", {"N m/rad": 1.0, "N*m/rad": 1.0, "kN m/rad": 1e3}),
+    "acceleration": ("m/s^2", {"m/s^2": 1.0}),
+    "dimensionless": ("", {"": 1.0}),
 }
+"""dimension -> (SI unit, {unit: factor to SI}).  ``pressure`` also covers elastic moduli,
+``stiffness`` is rotational (moment per angle)."""
 
-UNITS = tuple(_FACTORS)
+ARTICLES = {"angle": "an", "acceleration": "an", "inertia": "an"}
+
+_QUANTITY = re.compile(r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*")
+_UNIT_DIMENSION = {unit: dim for dim, (_, table) in DIMENSIONS.items() for unit in table}
 
 
-def to_si(value):
-    """Return ``value`` in SI: numbers pass through, ``"<number> <unit>"`` strings convert.
+class UnitError(ValueError):
+    """A value that is not a number of the expected dimension; the message says what was expected."""
 
-    Raises ``ValueError`` (with the known units) for anything else.
+
+def dimension_of(unit):
+    """The dimension of ``unit`` (``"mm"`` -> ``"length"``), or None if unknown."""
+    return _UNIT_DIMENSION.get(unit)
+
+
+def describe(dimension):
+    """What a value of ``dimension`` looks like, for error messages."""
+    si, table = DIMENSIONS[dimension]
+    noun = f"{ARTICLES.get(dimension, 'a')} {dimension}"
+    if dimension == "dimensionless":
+        return "a plain number (no unit)"
+    others = ", ".join(u for u in table if u != si)
+    if dimension == "angle":
+        return (f"{noun} with its unit ('<number> deg' or '<number> rad'; "
+                "a bare number could be either)")
+    return f"{noun} (a number in {si}, or '<number> <unit>' with unit {others})"
+
+
+def to_si(value, dimension, *, bare_unit=None):
+    """``value`` (a number or ``"<number> <unit>"``) of ``dimension`` in SI, as a float.
+
+    A bare number is taken in the dimension's SI unit, except angles, which need
+    their unit unless the file format fixes it (``bare_unit="rad"`` or ``"deg"``).
+    Raises :class:`UnitError` naming the expected dimension for anything else.
     """
-    if isinstance(value, bool):
-        raise ValueError("expected a number, got a boolean")
+    return convert(value, dimension, DIMENSIONS[dimension][0] if dimension in DIMENSIONS else None,
+                   bare_unit=bare_unit)
+
+
+def convert(value, dimension, unit, *, bare_unit=None):
+    """Like :func:`to_si` but in ``unit`` (of ``dimension``); exact when ``value`` is written in ``unit``."""
+    if dimension not in DIMENSIONS:
+        raise KeyError(f"unknown dimension {dimension!r} (known: {', '.join(DIMENSIONS)})")
+    si, table = DIMENSIONS[dimension]
+    number, given = _split(value, dimension)
+    if given == "":
+        given = bare_unit or (None if dimension == "angle" else si)
+        if given is None:
+            raise UnitError(f"{describe(dimension)}, got {_short(value)}")
+    if given not in table:
+        other = dimension_of(given)
+        what = f"{ARTICLES.get(other, 'a')} {other}" if other else "an unknown unit"
+        raise UnitError(f"{describe(dimension)}, got {_short(value)} ({what})")
+    if given == unit:
+        return number
+    return number * table[given] / table[unit]
+
+
+def _split(value, dimension):
+    """(number, unit string) of a YAML value."""
+    if isinstance(value, bool) or not isinstance(value, (int, float, str)):
+        raise UnitError(f"{describe(dimension)}, got {type(value).__name__} {_short(value)}")
     if isinstance(value, (int, float)):
-        return float(value)
-    if isinstance(value, str):
-        number, _, unit = value.strip().partition(" ")
-        unit = unit.strip()
         try:
-            x = float(number)
-        except ValueError:
-            raise ValueError(f"expected a number or '<number> <unit>', got {value!r}") from None
-        if unit == "":
-            return x
-        if unit not in _FACTORS:
-            raise ValueError(f"unknown unit {unit!r} in {value!r} (known: {', '.join(UNITS)})")
-        return x * _FACTORS[unit]
-    raise ValueError(f"expected a number or '<number> <unit>', got {type(value).__name__} {value!r}")
+            return float(value), ""
+        except OverflowError:
+            raise UnitError(f"{describe(dimension)}, got a number too large for a float") from None
+    match = _QUANTITY.fullmatch(value)
+    if match is None:
+        raise UnitError(f"{describe(dimension)}, got {_short(value)}")
+    return float(match.group(1)), match.group(2)
+
+
+def _short(value, limit=40):
+    text = repr(value)
+    return text if len(text) <= limit else text[:limit - 3] + "..."

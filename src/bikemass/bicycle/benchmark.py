@@ -13,6 +13,7 @@ front frame, the others the rear frame.  ``combine``:
 
 import numpy as np
 
+from ..errors import InputError
 from ..inertia import combine as combine_exact
 from ..inertia import combine_without_parallel_axis
 from ..errors import InputError
@@ -51,10 +52,18 @@ def bicycle_parameters(bicycle, rider=None, combine="exact", method="mesh"):
     return params
 
 
+def refuse_second_rider(bicycle, rider):
+    """InputError if ``rider`` is not None and ``bicycle``'s rear body already holds one."""
+    if rider is not None and bicycle.rider_included:
+        raise InputError(bicycle.source, "rider_included",
+                         "no rider added: this bicycle's rear body already includes one (use --rider none)")
+
+
 def combined_bodies(bicycle, rider=None, combine="exact", method="mesh"):
     """``{body: MassProperties}`` of the four bodies with the rider's parts merged (see module doc)."""
     if combine not in COMBINE_CHOICES:
         raise ValueError(f"combine must be one of {', '.join(COMBINE_CHOICES)}, got {combine!r}")
+    refuse_second_rider(bicycle, rider)
     bodies = bicycle.bodies(method)
     if rider is not None:
         merge = combine_exact if combine == "exact" else combine_without_parallel_axis

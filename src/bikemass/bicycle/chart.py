@@ -27,7 +27,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..units import to_si
 from .wheel_sizes import bead_seat_diameter, wheel_radius
 
 FRAME_KEYS = ("stack", "reach", "head_tube_angle", "seat_tube_angle", "head_tube_length",
@@ -86,17 +85,9 @@ def _units(node):
 def _value(node, dimension, units):
     """A chart value in SI: ``"585 mm"``, or a bare number in ``units[dimension]`` (chart
     ``units:``); without it a bare length is metres and a bare angle is refused."""
-    if isinstance(node.value, (int, float)) and not isinstance(node.value, bool):
-        if dimension in units:
-            return to_si(f"{node.value!r} {units[dimension]}")
-        if dimension == "angle":
-            node.fail(f"an angle with its unit (\"{node.value} deg\"), or chart units: {{angle: deg}}")
-    x = node.number()
-    if isinstance(node.value, str):
-        unit = node.value.split()[-1]
-        if unit not in BARE_UNITS[dimension]:
-            node.fail(f"a {dimension} ({', '.join(BARE_UNITS[dimension])}), got {node.value!r}")
-    return x
+    if isinstance(node.value, (int, float)) and not isinstance(node.value, bool) and dimension in units:
+        return node.number(dimension, bare_unit=units[dimension])
+    return node.number(dimension)
 
 
 def read_chart(node):

@@ -26,6 +26,8 @@ COCKPIT_KEYS = ("material", "bar", "spacers", "stem_height", "stem_length", "ste
 SADDLE_KEYS = ("height", "height_per_stack", "setback", "stack", "note")
 WHEEL_PART_KEYS = ("rim", "spokes", "tire", "rear_hub", "front_hub", "rear_spacing", "front_spacing",
                    "rim_depth", "note")
+_WHEEL_PART_DIMENSION = {"rim": "mass", "spokes": "mass", "tire": "mass", "rear_hub": "mass", "front_hub": "mass"}
+"""Dimension of each wheel part key (the others are lengths)."""
 FRAME_TUBES = ("head_tube_top", "head_tube", "top_tube", "down_tube", "seat_tube", "seat_tube_extension",
                "seat_stay_left", "seat_stay_right", "chain_stay_left", "chain_stay_right")
 """The rear frame's beam structure.  The top tube's centre line meets the head tube and the
@@ -68,7 +70,7 @@ def _merged(default, node, allowed):
 
 
 def _length(node):
-    return node.number()
+    return node.number("length")
 
 
 def expand_chart(node):
@@ -181,7 +183,7 @@ def _tube(name, start, end, section, body="rear_frame", material=None):
 
 def _top_tube_diameter(sections, node):
     spec = Node(sections["top_tube"], node.source, "frame.sections.top_tube")
-    return spec["side"].number() if spec.has("side") else spec["outer_diameter"].number()
+    return spec["side"].number("length") if spec.has("side") else spec["outer_diameter"].number("length")
 
 
 def _cockpit(chart, points, c):
@@ -190,7 +192,7 @@ def _cockpit(chart, points, c):
     up = np.array([-np.cos(ha), np.sin(ha)])
     forward = np.array([np.sin(ha), np.cos(ha)])
     stem_top = points["head_top"] + (_length(c["spacers"]) + _length(c["stem_height"]) / 2) * up
-    angle = c["stem_angle"].number()
+    angle = c["stem_angle"].number("angle")
     clamp = stem_top + _length(c["stem_length"]) * (np.cos(angle) * forward + np.sin(angle) * up)
     half = _length(c["bar_width"]) / 2
     if half <= 0:
@@ -218,7 +220,7 @@ def _cockpit(chart, points, c):
                  ("handlebar_right", "bar_clamp", "bar_right", "handlebar")]
     tubes.insert(0, ("stem", "stem_top", "bar_clamp", "stem"))
     for name, offset in c.get("grips", {}).items():
-        forward_up = offset.vector(2)
+        forward_up = offset.vector("length", 2)
         grips[name] = _xyz(clamp + forward_up, half)
     return kp, grips, tubes
 
@@ -231,7 +233,7 @@ def _saddle(chart, points, s):
     if s.has("height"):
         height = _length(s["height"])
     else:
-        height = max(s["height_per_stack"].number(positive=True) * chart.stack, shortest)
+        height = max(s["height_per_stack"].number("dimensionless", positive=True) * chart.stack, shortest)
     post = height - _length(s["stack"])
     if post <= chart.seat_tube_length:
         s.fail(f"a saddle height above the seat tube's top plus the saddle's stack "
@@ -252,14 +254,14 @@ def _wheel_parts(node, defaults, chart):
     nearest = min(sizes, key=lambda s: abs(s / 1000 - bsd))
     table = sizes[nearest]
     scale = bsd / (nearest / 1000)
-    parts = {"rim": table["rim"].number() * scale, "spokes": table["spokes"].number() * scale,
-             "tire": table["tire"].number() * tire / table["reference_width"].number(),
+    parts = {"rim": table["rim"].number("mass") * scale, "spokes": table["spokes"].number("mass") * scale,
+             "tire": table["tire"].number("mass") * tire / table["reference_width"].number("length"),
              "bsd": bsd, "tire_width": tire}
     for key in ("rear_hub", "front_hub", "rear_spacing", "front_spacing", "rim_depth"):
-        parts[key] = d[key].number()
+        parts[key] = d[key].number(_WHEEL_PART_DIMENSION.get(key, "length"))
     for key in WHEEL_PART_KEYS[:-1]:
         if given.has(key):
-            parts[key] = given[key].number(positive=True)
+            parts[key] = given[key].number(_WHEEL_PART_DIMENSION.get(key, "length"), positive=True)
     if parts["bsd"] - 2 * parts["rim_depth"] <= HUB_DIAMETER:
         given.fail("a rim depth leaving room for the spokes", "rim_depth")
     return parts
@@ -321,7 +323,7 @@ def _components(node, defaults, anchors):
             entry["at"] = anchors[item["at"].string(choices=tuple(sorted(anchors)))].tolist()
         if item.has("anchor"):
             anchor = item["anchor"].string(choices=tuple(sorted(anchors)))
-            offset = item["offset"].vector() if item.has("offset") else np.zeros(3)
+            offset = item["offset"].vector("length") if item.has("offset") else np.zeros(3)
             entry["at"] = (anchors[anchor] + offset).tolist()
         out.append(entry)
     return out

@@ -38,7 +38,7 @@ INERTIA_KEYS = ("xx", "yy", "zz", "xy", "xz", "yz")
 def read_inertia(node):
     """3x3 inertia tensor (kg m^2) from ``{xx, yy, zz, xy, xz, yz}`` (tensor elements, missing = 0)."""
     node.check_keys(required=("xx", "yy", "zz"), optional=("xy", "xz", "yz"))
-    v = {k: node[k].number() if node.has(k) else 0.0 for k in INERTIA_KEYS}
+    v = {k: node[k].number("inertia") if node.has(k) else 0.0 for k in INERTIA_KEYS}
     tensor = np.array([[v["xx"], v["xy"], v["xz"]], [v["xy"], v["yy"], v["yz"]], [v["xz"], v["yz"], v["zz"]]])
     return check_inertia(tensor, node)
 
@@ -46,7 +46,7 @@ def read_inertia(node):
 def _solid(node, shape):
     cls, sizes = SHAPES[shape]
     node.check_keys(required=("name", "shape", "at") + sizes, optional=OPTIONAL_KEYS)
-    values = [node[k].number(nonnegative=(k == "inner_diameter"), positive=(k != "inner_diameter"))
+    values = [node[k].number("length", nonnegative=(k == "inner_diameter"), positive=(k != "inner_diameter"))
               for k in sizes]
     try:
         return cls(*values)
@@ -58,12 +58,12 @@ def _rotation(node):
     if node.has("axis") and node.has("angle"):
         node.fail("either axis or angle, not both", "angle")
     if node.has("axis"):
-        axis = node["axis"].vector()
+        axis = node["axis"].vector("dimensionless")
         if np.linalg.norm(axis) == 0:
             node.fail("a non-zero direction", "axis")
         return Placement.along(np.zeros(3), axis).rotation
     if node.has("angle"):
-        return thesis_segment_rotation(np.degrees(node["angle"].number()))
+        return thesis_segment_rotation(node["angle"].number("angle", unit="deg"))
     return np.eye(3)
 
 
@@ -75,11 +75,11 @@ def read_component(node, materials, default_body=None):
         node.fail("a required key that is missing", "body")
     body = node.get("body", default_body).string(choices=BODIES)
     rotation = _rotation(node)
-    at = node["at"].vector()
+    at = node["at"].vector("length")
     if shape == "lumped":
         node.check_keys(required=("name", "shape", "mass", "at", "inertia"),
                         optional=("body", "mirror_y", "note"))
-        mass = node["mass"].number(positive=True)
+        mass = node["mass"].number("mass", positive=True)
         solid = Lumped(MassProperties(mass, np.zeros(3), read_inertia(node["inertia"])))
         centroid = np.zeros(3)
     else:
@@ -99,7 +99,7 @@ def _mass(node, solid, materials):
     if node.has("mass") == node.has("material"):
         node.fail("exactly one of mass (kg) or material (a key of materials.yaml)", "mass")
     if node.has("mass"):
-        return node["mass"].number(positive=True)
+        return node["mass"].number("mass", positive=True)
     if solid.volume == 0:
         node.fail("a mass for a point mass (it has no volume)", "material")
     return materials_lookup(node["material"], materials).density * solid.volume
@@ -125,9 +125,9 @@ def read_wheel(node, body, axle, radius, radius_key):
         lumped.check_keys(required=("mass", "inertia"))
         inertia = lumped["inertia"]
         inertia.check_keys(required=("xx", "yy"))
-        ixx, iyy = inertia["xx"].number(positive=True), inertia["yy"].number(positive=True)
+        ixx, iyy = inertia["xx"].number("inertia", positive=True), inertia["yy"].number("inertia", positive=True)
         check_inertia(np.diag([ixx, iyy, ixx]), inertia, "yy")
-        props = MassProperties(lumped["mass"].number(positive=True), np.zeros(3), np.diag([ixx, iyy, ixx]))
+        props = MassProperties(lumped["mass"].number("mass", positive=True), np.zeros(3), np.diag([ixx, iyy, ixx]))
         return [Part(body, Lumped(props), props.mass, Placement.at(axle), body)]
     placement = Placement.along(axle, [0.0, 1.0, 0.0])
     parts, outer = [], 0.0
@@ -135,7 +135,7 @@ def read_wheel(node, body, axle, radius, radius_key):
         hoop.check_keys(required=("inner_diameter", "outer_diameter", "thickness", "mass"), optional=("note",))
         solid = _solid_hoop(hoop)
         outer = max(outer, solid.outer_radius)
-        parts.append(Part(f"{body}_{name}", solid, hoop["mass"].number(positive=True), placement, body))
+        parts.append(Part(f"{body}_{name}", solid, hoop["mass"].number("mass", positive=True), placement, body))
     if abs(outer - radius) > 0.001:
         node.fail(f"hoops whose outer radius equals geometry.{radius_key} = {radius} m "
                   f"(the outermost is {outer:.4f} m)", "hoops")
@@ -143,8 +143,8 @@ def read_wheel(node, body, axle, radius, radius_key):
 
 
 def _solid_hoop(node):
-    inner = node["inner_diameter"].number(nonnegative=True)
-    outer = node["outer_diameter"].number(positive=True)
+    inner = node["inner_diameter"].number("length", nonnegative=True)
+    outer = node["outer_diameter"].number("length", positive=True)
     if inner >= outer:
         node.fail(f"an inner diameter below the outer diameter {outer} m", "inner_diameter")
-    return Hoop(inner, outer, node["thickness"].number(positive=True))
+    return Hoop(inner, outer, node["thickness"].number("length", positive=True))

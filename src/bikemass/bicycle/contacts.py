@@ -64,7 +64,7 @@ def _point(node, keypoints):
             node.fail(f"a keypoint name ({', '.join(keypoints) or 'none defined'}) or [x, y, z], "
                       f"got {node.value!r}")
         return np.array(keypoints[node.value], dtype=float)
-    return node.vector(3)
+    return node.vector("length", 3)
 
 
 def read_contacts(node, keypoints):
@@ -82,7 +82,7 @@ def read_contacts(node, keypoints):
         fit = _saddle_fit(node["saddle"], keypoints, bottom_bracket)
     else:
         saddle = _point(node["saddle"], keypoints)
-    return Contacts(saddle, bottom_bracket, node["crank_length"].number(positive=True), grips,
+    return Contacts(saddle, bottom_bracket, node["crank_length"].number("length", positive=True), grips,
                     str(node.source), node.key, fit)
 
 

@@ -66,15 +66,15 @@ def read_geometry(node):
     node.check_keys(required=("wheelbase", "trail", "head_angle", "rear_wheel_radius",
                               "front_wheel_radius"),
                     optional=("fork_offset", "gravity", "axle_tolerance"))
-    head_angle = node["head_angle"].number(positive=True)
+    head_angle = node["head_angle"].number("angle", positive=True)
     if head_angle > np.pi / 2:
         node.fail(f"a head angle in (0, pi/2] rad, got {head_angle!r}", "head_angle")
-    geometry = Geometry(node["wheelbase"].number(positive=True), node["trail"].number(),
-                        head_angle, node["rear_wheel_radius"].number(positive=True),
-                        node["front_wheel_radius"].number(positive=True),
-                        node["gravity"].number(positive=True) if node.has("gravity") else DEFAULT_GRAVITY)
+    geometry = Geometry(node["wheelbase"].number("length", positive=True), node["trail"].number("length"),
+                        head_angle, node["rear_wheel_radius"].number("length", positive=True),
+                        node["front_wheel_radius"].number("length", positive=True),
+                        node["gravity"].number("acceleration", positive=True) if node.has("gravity") else DEFAULT_GRAVITY)
     if node.has("fork_offset"):
-        offset = node["fork_offset"].number()
+        offset = node["fork_offset"].number("length")
         if abs(offset - geometry.fork_offset()) > AXLE_TOLERANCE:
             node.fail(f"a trail consistent with head_angle, front_wheel_radius and fork_offset "
                       f"(they give {(geometry.front_wheel_radius * np.sin(geometry.lam) - offset) / np.cos(geometry.lam):.4f} m, "
@@ -110,7 +110,7 @@ def check_keypoints(geometry, node, keypoints, head_tube=None, dropouts=None):
                           f"{ground - geometry.wheelbase:.4f} m; keypoint {key} is "
                           f"{miss * 1000:.1f} mm off the axis)", "trail")
     if dropouts:
-        tolerance = node["axle_tolerance"].number(positive=True) if node.has("axle_tolerance") else AXLE_TOLERANCE
+        tolerance = node["axle_tolerance"].number("length", positive=True) if node.has("axle_tolerance") else AXLE_TOLERANCE
         middle = (keypoints[dropouts[0]] + keypoints[dropouts[1]]) / 2
         miss = np.linalg.norm(middle - geometry.rear_axle)
         if miss > tolerance:

@@ -36,10 +36,10 @@ from .model import Bicycle
 from .sizes import select_size, size_names, split_size
 
 TOP_KEYS = ("name", "base", "source", "description", "geometry", "keypoints", "material", "sections", "tubes",
-            "structure", "components", "loads", "wheels", "stiffness", "contacts", "materials")
+            "structure", "components", "loads", "wheels", "stiffness", "contacts", "materials", "rider_included")
 
 
-MEASURED_KEYS = ("name", "parameters", "contacts", "stiffness", "source", "description")
+MEASURED_KEYS = ("name", "parameters", "contacts", "stiffness", "source", "description", "rider_included")
 """Keys of a measured-bicycle file (a parameter file plus what a parameter set cannot hold)."""
 
 
@@ -70,7 +70,8 @@ def _read_document(node, default_name, source, size):
         select_size(node, size)
         params = from_node(node)
         check_parameter_node(params, node)
-        return bicycle_from_parameters(params, node.get("name", default_name).string(), source)
+        return bicycle_from_parameters(params, node.get("name", default_name).string(), source,
+                                       rider_included=node.get("rider_included", False).boolean())
     if node.has("parameters"):
         return _measured_bicycle(node, Path(source))
     return _read_any(_with_base(node), source, size)
@@ -118,7 +119,8 @@ def _measured_bicycle(node, path):
     stiffness = _read_stiffness(node["stiffness"], load_materials()) if node.has("stiffness") else {}
     contacts = read_contacts(node["contacts"], {}) if node.has("contacts") else None
     name = node["name"].string() if node.has("name") else path.stem
-    return bicycle_from_parameters(inner.published, name, str(path), stiffness, contacts)
+    included = inner.rider_included or node.get("rider_included", False).boolean()
+    return bicycle_from_parameters(inner.published, name, str(path), stiffness, contacts, included)
 
 
 MAX_BASE_CHAIN = 16
@@ -161,7 +163,7 @@ def read_bicycle(node, source):
     node.check_keys(required=("name", "geometry", "wheels"), optional=TOP_KEYS)
     materials = {**load_materials(), **_file_materials(node)}
     geometry = read_geometry(node["geometry"])
-    keypoints = {str(k): v.vector() for k, v in node.get("keypoints", {}).items()}
+    keypoints = {str(k): v.vector("length") for k, v in node.get("keypoints", {}).items()}
     tubes = _read_tubes(node, keypoints, materials)
     structure = _read_structure(node, tubes, keypoints) if node.has("structure") else None
     check_keypoints(geometry, node["geometry"], keypoints,
@@ -182,7 +184,8 @@ def read_bicycle(node, source):
     stiffness = _read_stiffness(node["stiffness"], materials) if node.has("stiffness") else {}
     contacts = read_contacts(node["contacts"], keypoints) if node.has("contacts") else None
     return Bicycle(node["name"].string(), source, geometry, keypoints, tuple(tubes), tuple(parts),
-                   structure, stiffness, contacts=contacts)
+                   structure, stiffness, contacts=contacts,
+                   rider_included=node.get("rider_included", False).boolean())
 
 
 def _file_materials(node):
@@ -204,13 +207,13 @@ def _read_sections(node):
     for name, s in node.get("sections", {}).items():
         if s.has("side"):
             s.check_keys(required=("side", "wall"), optional=("note",))
-            size, wall = s["side"].number(positive=True), s["wall"].number(positive=True)
+            size, wall = s["side"].number("length", positive=True), s["wall"].number("length", positive=True)
             if wall >= size / 2:
                 s.fail(f"a wall thinner than half the side {size:.6g} m, got {wall:.6g} m", "wall")
             sections[name] = SquareSection(size, wall)
         else:
             s.check_keys(required=("outer_diameter", "wall"), optional=("note",))
-            size, wall = s["outer_diameter"].number(positive=True), s["wall"].number(positive=True)
+            size, wall = s["outer_diameter"].number("length", positive=True), s["wall"].number("length", positive=True)
             if wall > size / 2:
                 s.fail(f"a wall no thicker than the radius {size / 2:.6g} m, got {wall:.6g} m", "wall")
             sections[name] = RoundSection(size, wall)
@@ -295,9 +298,10 @@ def _read_stiffness(node, materials):
     return table
 
 
-def bicycle_from_parameters(params, name, source, stiffness=None, contacts=None):
+def bicycle_from_parameters(params, name, source, stiffness=None, contacts=None, rider_included=False):
     """A :class:`Bicycle` of four lumped bodies holding a benchmark parameter set
-    (optionally published ``stiffness`` by material and rider ``contacts``)."""
+    (optionally published ``stiffness`` by material and rider ``contacts``;
+    ``rider_included``: its rear body B already holds a rider)."""
     geometry = Geometry(params.w, params.c, np.pi / 2 - params.lam, params.rR, params.rF, params.g)
     bodies = (
         ("rear_wheel", params.mR, geometry.rear_axle, params.inertia("R")),
@@ -307,4 +311,5 @@ def bicycle_from_parameters(params, name, source, stiffness=None, contacts=None)
     )
     parts = tuple(Part(body, Lumped(MassProperties(mass, np.zeros(3), inertia)), mass, Placement.at(at), body)
                   for body, mass, at, inertia in bodies)
-    return Bicycle(name, source, geometry, {}, (), parts, None, stiffness or {}, params, contacts)
+    return Bicycle(name, source, geometry, {}, (), parts, None, stiffness or {}, params, contacts,
+                   rider_included=rider_included)

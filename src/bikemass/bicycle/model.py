@@ -18,7 +18,8 @@ class Bicycle:
     (N m/rad), ``published`` the parameter set of a benchmark parameter file (else ``None``),
     ``contacts`` the rider contact points (:class:`~bikemass.bicycle.contacts.Contacts`) or ``None``;
     ``chart`` the geometry chart it was built from (:class:`~bikemass.bicycle.chart.Chart`) or ``None``,
-    ``size`` the size picked from a size run.
+    ``size`` the size picked from a size run,
+    ``rider_included`` whether the rear frame already holds a rider (then none may be added).
     """
 
     name: str
@@ -33,6 +34,7 @@ class Bicycle:
     contacts: object = None
     chart: object = None
     size: str = None
+    rider_included: bool = False
 
     def body_parts(self, body):
         """Parts of ``body`` (one of :data:`BODIES`)."""

@@ -26,7 +26,7 @@ def bead_seat_diameter(node):
     if isinstance(value, (int, float, str)) and name in BEAD_SEAT_DIAMETERS:
         return BEAD_SEAT_DIAMETERS[name]
     if isinstance(value, str) and " " in value.strip():
-        bsd = node.number(positive=True)
+        bsd = node.number("length", positive=True)
         if not 0.1 < bsd < 1.0:
             node.fail(f"an ISO bead-seat diameter between 100 and 1000 mm, got {value!r}")
         return bsd

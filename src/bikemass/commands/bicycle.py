@@ -90,7 +90,8 @@ def run_params(args):
         text = comparison_table(params, reference, args.bike, args.compare)
     else:
         title = f"{args.bike} with rider {args.rider} (combine {args.combine})"
-        text = format_parameters(params, args.format, title)
+        included = args.rider not in (None, "none") or catalog.load_bicycle(args.bike).rider_included
+        text = format_parameters(params, args.format, title, included)
     if args.output:
         write_atomic(args.output, text)
     else:

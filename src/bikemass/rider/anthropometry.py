@@ -48,9 +48,9 @@ def load_anthropometry(path) -> Anthropometry:
         shape = seg["shape"].string(choices=tuple(SHAPES))
         cls, sizes = SHAPES[shape]
         seg.check_keys(required=("shape", "mass", *sizes), optional=("pair",))
-        solid = cls(*(seg[k].number(positive=True) for k in sizes))
+        solid = cls(*(seg[k].number("length", positive=True) for k in sizes))
         pair = seg.get("pair", False).boolean()
-        segments[name] = BodySegment(name, solid, seg["mass"].number(positive=True), pair)
+        segments[name] = BodySegment(name, solid, seg["mass"].number("mass", positive=True), pair)
     if not segments:
         node.fail("at least one segment", "segments")
     return Anthropometry(node["name"].string(), Path(path), segments)

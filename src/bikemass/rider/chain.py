@@ -72,17 +72,22 @@ def load_chain_body(path, name=None) -> ChainBody:
     if not node.has("joints"):
         node.fail("a joints: block (neck, shoulder, hip, seat) for chain poses, see docs/poses.md", "joints")
     joints = node["joints"].check_keys(required=("neck", "shoulder", "hip", "seat"), optional=("note",))
-    points = {k: joints[k].vector(3) for k in ("neck", "shoulder", "hip")}
+    points = {k: joints[k].vector("length", 3) for k in ("neck", "shoulder", "hip")}
     for k in ("shoulder", "hip"):
         if not points[k][1] > 0:
             joints.fail(f"a positive y (the right-side joint; mirrored to -y), got {points[k][1]!r}", k)
     lengths = {s: anthropometry.segments[s].solid.length for s in CHAIN_SEGMENTS}
     return ChainBody(name or Path(path).stem, Path(path), lengths, points["neck"], points["shoulder"],
-                     points["hip"], joints["seat"].number(nonnegative=True))
+                     points["hip"], joints["seat"].number("length", nonnegative=True))
 
 
 def _numbers(v):
     return [float(x) + 0.0 for x in v]
+
+
+def _degrees(angle):
+    """An angle in degrees as a pose file writes it (every digit, with its unit)."""
+    return f"{float(angle) + 0.0!r} deg"
 
 
 def _midplane(p):
@@ -155,14 +160,14 @@ class ChainPose:
         right, left = self.placements()
         segments = {}
         for seg, (location, angle) in right.items():
-            entry = {"location": _numbers(location), "angle": float(angle)}
+            entry = {"location": _numbers(location), "angle": _degrees(angle)}
             if seg in front:
                 entry["frame"] = "front"
             if seg not in ("head", "torso"):
                 entry["mirror"] = True
             if seg in left:
                 loc, ang = left[seg]
-                entry["left"] = {"location": _numbers(loc), "angle": float(ang)}
+                entry["left"] = {"location": _numbers(loc), "angle": _degrees(ang)}
             segments[seg] = entry
         return {"name": name, "body": body, "segments": segments}
 

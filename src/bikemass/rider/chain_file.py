@@ -4,7 +4,7 @@
 
     body: thesis_rider            # or {height: 1.80 m, mass: 75 kg, sex: male}, {yeadon: PATH}
     bike: jamis                   # optional: without it the pose is solved on the bicycle
-    chain: {torso_lean: 30, hands: hoods}   # it is used with (bikemass stability cargo --rider ...)
+    chain: {torso_lean: 30 deg, hands: hoods}   # it is used with (bikemass stability cargo --rider ...)
 
 ``chain`` keys: ``hands`` (a grip of the bicycle's ``contacts:``, a list of grips (the first
 the bicycle has) or ``none``; default ``hoods`` if the bicycle has them, else its first

@@ -5,8 +5,8 @@ Pose file (metres, degrees; Williams 2015, Table 3-3 conventions)::
     name: Relaxed
     body: thesis_rider            # an anthropometry in bodies/
     segments:
-      head:      {location: [0.402, 0.0, -1.895], angle: 15.362}
-      upper_arm: {location: [0.322, 0.238, -1.609], angle: -20.251, mirror: true}
+      head:      {location: [0.402, 0.0, -1.895], angle: 15.362 deg}
+      upper_arm: {location: [0.322, 0.238, -1.609], angle: -20.251 deg, mirror: true}
 
 * ``location``: centre of the segment's top plane in the benchmark frame;
 * ``angle``: clockwise about y seen from +y with x to the right; the segment's
@@ -78,23 +78,18 @@ def _frame(seg):
 
 
 def angle_deg(node):
-    """An angle in degrees: a plain number is degrees, ``"<x> deg"`` or ``"<x> rad"`` converted."""
-    value = node.number()
-    if not isinstance(node.value, str) or " " not in node.value.strip():
-        return value
-    if node.value.split()[-1] not in ("deg", "rad"):
-        node.fail(f"an angle in degrees, or '<number> deg' / '<number> rad', got {node.value!r}")
-    return np.degrees(value)
+    """An angle in degrees from ``"<x> deg"`` or ``"<x> rad"`` (a bare number is refused, see units)."""
+    return node.number("angle", unit="deg")
 
 
 def _placed_parts(seg, segment, as_printed):
     """The part (or the +y/-y pair) of body ``segment`` placed by the pose node ``seg``."""
     seg.check_keys(required=PLACED_KEYS, optional=("mirror", "frame", "printed", "left"))
-    values = {"location": seg["location"].vector(3), "angle": angle_deg(seg["angle"])}
+    values = {"location": seg["location"].vector("length", 3), "angle": angle_deg(seg["angle"])}
     if seg.has("printed"):
         printed = seg["printed"]
         printed.check_keys(optional=PLACED_KEYS)
-        published = {k: v.vector(3) if k == "location" else angle_deg(v) for k, v in printed.items()}
+        published = {k: v.vector("length", 3) if k == "location" else angle_deg(v) for k, v in printed.items()}
         if as_printed:
             values.update(published)
     mirror = seg.get("mirror", False).boolean()
@@ -121,7 +116,7 @@ def _placed_parts(seg, segment, as_printed):
 def _left_placement(node, y):
     """The -y copy of a pair placed on its own (``left: {location, angle}``, e.g. legs on pedals)."""
     node.check_keys(required=PLACED_KEYS)
-    location = node["location"].vector(3)
+    location = node["location"].vector("length", 3)
     if not location[1] * y < 0:
         node.fail(f"a y on the other side from the pair's location (y = {y:g})", "location")
     return Placement.thesis_segment(location, angle_deg(node["angle"]))
@@ -130,7 +125,7 @@ def _left_placement(node, y):
 def _lumped_part(key, seg):
     """A lumped body (mass, com, central inertia) as one part."""
     seg.check_keys(required=LUMPED_KEYS, optional=("frame",))
-    inertia = check_inertia(seg["inertia"].matrix((3, 3)), seg, "inertia")
-    props = MassProperties(seg["mass"].number(positive=True), seg["com"].vector(3), inertia)
+    inertia = check_inertia(seg["inertia"].matrix("inertia", (3, 3)), seg, "inertia")
+    props = MassProperties(seg["mass"].number("mass", positive=True), seg["com"].vector("length", 3), inertia)
     return Part(key, Lumped(props), props.mass, Placement.identity(), _frame(seg))
 

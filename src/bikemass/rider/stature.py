@@ -61,12 +61,12 @@ def tables() -> Tables:
     pairs = tuple(p.string() for p in leva["pairs"].elements())
     mass = {}
     for sex, column in leva["percent"].items():
-        pct = {k: v.number(positive=True) for k, v in column.items()}
+        pct = {k: v.number("dimensionless", positive=True) for k, v in column.items()}
         merged = {kind: sum(pct[s] for s in parts) for kind, parts in merge.items()}
         total = sum(m * (2 if kind in pairs else 1) for kind, m in merged.items())
         mass[sex] = {kind: m / total for kind, m in merged.items()}
-    fractions = {k: v.number(positive=True) for k, v in stature["fractions"].items()}
-    densities = {k: v.number(positive=True) for k, v in stature["densities"].items()}
+    fractions = {k: v.number("dimensionless", positive=True) for k, v in stature["fractions"].items()}
+    densities = {k: v.number("density", positive=True) for k, v in stature["densities"].items()}
     return Tables(mass, fractions, densities, pairs)
 
 
@@ -152,17 +152,18 @@ def joints(b: StatureBody):
 def read_spec(node):
     """(name, :class:`StatureBody`) of a ``{height, mass, sex, ...}`` node; bad input -> InputError."""
     node.check_keys(required=SPEC_KEYS, optional=OPTIONAL_KEYS)
-    height, mass = node["height"].number(positive=True), node["mass"].number(positive=True)
+    height, mass = node["height"].number("length", positive=True), node["mass"].number("mass", positive=True)
     if not 0.5 <= height <= 2.6:
         node.fail(f"a standing height between 0.5 and 2.6 m, got {node['height'].value!r}", "height")
     sex = node["sex"].string(SEXES)
-    optional = {k: node[k].number(positive=True) for k in ("inseam", "arm_length", "shoulder_width", "density")
+    optional = {k: node[k].number("density" if k == "density" else "length", positive=True)
+                for k in ("inseam", "arm_length", "shoulder_width", "density")
                 if node.has(k)}
     girths = {}
     if node.has("girths"):
         g = node["girths"]
         g.check_keys(optional=CYLINDERS)
-        girths = {k: v.number(positive=True) for k, v in g.items()}
+        girths = {k: v.number("length", positive=True) for k, v in g.items()}
     if "inseam" in optional and not optional["inseam"] < height * tables().fractions["shoulder_height"]:
         node.fail(f"an inseam below the shoulder height, got {node['inseam'].value!r}", "inseam")
     lo, hi = DENSITY_RANGE

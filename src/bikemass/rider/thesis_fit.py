@@ -22,7 +22,7 @@ def pose_placements(pose):
     """(``{segment: (location, angle)}`` of a placement pose's right copies, its anthropometry path)."""
     from . import poses_dir
     node = load_yaml(resolve(pose, poses_dir(), "pose"))
-    placements = {k: (s["location"].vector(3), angle_deg(s["angle"])) for k, s in node["segments"].items()}
+    placements = {k: (s["location"].vector("length", 3), angle_deg(s["angle"])) for k, s in node["segments"].items()}
     return placements, find_anthropometry(node["body"])
 
 
