@@ -35,7 +35,8 @@ def run_serve(args):
 
     from ..web.state import STIFFNESS_CHOICES, PageState
     defaults = [PageState(stiffness=s) for s in STIFFNESS_CHOICES]
-    threading.Thread(target=app.engine.warm, args=(defaults,), daemon=True).start()
+    # not a daemon: a daemon thread stopped inside native code at exit aborts the interpreter
+    threading.Thread(target=app.engine.warm, args=(defaults,)).start()
     print(f"bikemass: serving on http://{args.host}:{args.port}/ (Ctrl-C stops)", flush=True)
     try:
         app.run(host=args.host, port=args.port, debug=False)

@@ -126,8 +126,10 @@ class Engine:
         return seated_rider(self.bicycle(bicycle_key), self.rider(rider_key))
 
     def _base_parameters(self, key, rider, combine):
-        from ..catalog import parameters
-        return parameters(self.bicycle(key), self.seated(key, rider), combine)
+        """Parameters of the bicycle with its rider seated once (:meth:`seated`, cached)."""
+        from ..bicycle import bicycle_parameters
+        from ..choices import Combine, check
+        return bicycle_parameters(self.bicycle(key), self.seated(key, rider), check(Combine, combine).value, "mesh")
 
     def _stiffness(self, key, material):
         from ..catalog import stiffness
