@@ -18,6 +18,7 @@ COMMAND_MODULES = (
     "pose",
     "study",
     "serve",
+    "analysis",
 )
 """Modules under ``bikemass.commands`` whose ``register(subparsers)`` adds sub-commands."""
 

@@ -1,0 +1,90 @@
+"""``bikemass sensitivity``, ``bikemass uncertainty`` and ``bikemass sweep``."""
+
+FORMATS = ("table", "json", "yaml")
+SPEED_UNITS = {"speed": "m/s", "d_speed": "m/s per parameter unit (SI, rad)", "elasticity": "1"}
+
+
+def register(sub):
+    sens = sub.add_parser(
+        "sensitivity", help="exact derivatives of the weave and capsize speeds w.r.t. the 26 parameters",
+        description="Derivatives of the weave speed (first oscillatory crossing of Re = 0) and the "
+                    "capsize speed (first real-root crossing) with respect to each benchmark parameter, "
+                    "from eigenvalue derivatives (left/right eigenvectors) and the implicit function "
+                    "theorem, exact to rounding; elasticities (p/v) dv/dp; a bar chart with --plot.")
+    _bike_options(sens)
+    sens.add_argument("--format", choices=FORMATS, default="table", help="table (default), json or yaml")
+    sens.set_defaults(run=run_sensitivity)
+
+
+def _bike_options(p):
+    p.add_argument("bike", metavar="BIKE", help="shipped bicycle name, bicycle YAML or parameter file")
+    p.add_argument("--rider", metavar="POSE", default="none",
+                   help="rider pose name or pose YAML file, or 'none' (default none)")
+    p.add_argument("--combine", choices=("exact", "thesis"), default="exact",
+                   help="rider + frame: parallel-axis theorem (exact, default) or the thesis's Eq. 3.6")
+    p.add_argument("--stiffness", metavar="S", default="infinite",
+                   help="rear-frame stiffness: infinite (default), steel, titanium, aluminum or a YAML "
+                        "file with S: [[..], [..]] in N m/rad (see bikemass stability --help)")
+    p.add_argument("--max-speed", type=float, default=30.0, metavar="M_S",
+                   help="look for critical speeds on (0, M_S] m/s (default 30)")
+    p.add_argument("--plot", metavar="FILE", help="also draw a figure (.png, .pdf, .svg)")
+    p.add_argument("-o", "--output", metavar="FILE", help="write the data to FILE instead of stdout")
+
+
+def _inputs(args):
+    from .. import catalog
+    from ..errors import InputError
+    from .stability import _check_plot
+
+    _check_plot(args.plot)
+    if not 0 < args.max_speed < 1e4:
+        raise InputError("--max-speed", args.max_speed, "a speed in m/s between 0 and 1e4")
+    return (catalog.parameters(args.bike, args.rider, args.combine),
+            catalog.stiffness(args.bike, args.stiffness))
+
+
+def _title(args):
+    return f"{args.bike}, rider {args.rider}, stiffness {args.stiffness}"
+
+
+def save_figure(fig, path):
+    """Write a matplotlib Figure to ``path`` (format from the suffix), atomically."""
+    from io import BytesIO
+
+    from ..output import write_atomic
+    buf = BytesIO()
+    fig.savefig(buf, format=str(path).rsplit(".", 1)[-1].lower(), dpi=150)
+    write_atomic(path, buf.getvalue())
+
+
+def run_sensitivity(args):
+    from ..analysis.sensitivity import sensitivity, sensitivity_figure
+    from ..output import dumps
+    from .stability import _emit
+
+    params, S = _inputs(args)
+    result = sensitivity(params, S, vmax=args.max_speed)
+    if args.format == "table":
+        text = sensitivity_table(result, _title(args))
+    else:
+        text = dumps({**result.to_dict(), "units": SPEED_UNITS}, args.format)
+    _emit(args, text)
+    if args.plot:
+        save_figure(sensitivity_figure(result, _title(args)), args.plot)
+    return 0
+
+
+def sensitivity_table(result, title):
+    from ..output import table
+
+    ew, ec = result.elasticities("weave_speed"), result.elasticities("capsize_speed")
+    rows = [[n, result.params[n], result.d_weave_speed[n], ew[n], result.d_capsize_speed[n], ec[n]]
+            for n in result.d_weave_speed]
+    head = (f"{title}\nweave speed {_speed(result.weave_speed)}, capsize speed "
+            f"{_speed(result.capsize_speed)} (first crossing of each kind)\n\n")
+    return head + table(["parameter", "value", "d weave/dp", "elasticity", "d capsize/dp", "elasticity"],
+                        rows, floatfmt="{:.6g}")
+
+
+def _speed(v):
+    return "none" if v is None else f"{v:.9f} m/s"

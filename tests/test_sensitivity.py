@@ -1,0 +1,120 @@
+"""Exact critical-speed derivatives against central finite differences of independently found speeds."""
+
+import json
+
+import numpy as np
+import pytest
+
+from bikemass import catalog
+from bikemass.analysis.crossings import critical_speeds
+from bikemass.analysis.model import matrix_derivatives, system, values_of
+from bikemass.analysis.sensitivity import sensitivity
+from bikemass.cli import main
+from bikemass.parameters import NAMES
+from bikemass.stability import canonical_matrices, speed_grid, stability, with_frame_stiffness
+
+GRID = speed_grid(0, 8, 0.05)
+
+
+def _brentq_speeds(params):
+    """Weave and capsize speeds from the tracked-mode root finder of bikemass.stability (brentq)."""
+    s = stability(canonical_matrices(params), GRID)
+    return s.weave_speeds[0], s.capsize_speeds[0]
+
+
+def test_benchmark_52_derivatives_equal_central_differences(capsys):
+    """All 52 derivatives of `bikemass sensitivity benchmark --format json` equal central
+    differences (relative step 1e-5) of speeds found by brentq on tracked eigenvalues, to 1e-4
+    relative.  Derivatives that are zero by the physics (IByy, IHyy; the capsize speed does not
+    depend on the inertias that only enter M) are held to 1e-6 in elasticity: FD noise is ~1e-9."""
+    assert main(["sensitivity", "benchmark", "--format", "json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    p = catalog.parameters("benchmark")
+    assert doc["weave_speed"] == pytest.approx(4.29238253634110, abs=1e-9)      # Meijaard 2007
+    assert doc["capsize_speed"] == pytest.approx(6.02426201538838, abs=1e-9)
+    for name in NAMES:
+        x = getattr(p, name)
+        h = 1e-5 * abs(x)
+        hi, lo = _brentq_speeds(p.replace(**{name: x + h})), _brentq_speeds(p.replace(**{name: x - h}))
+        for k, key in enumerate(("weave_speed", "capsize_speed")):
+            fd = (hi[k] - lo[k]) / (2 * h)
+            exact = doc["d_" + key][name]
+            assert abs(exact - fd) <= 1e-4 * abs(fd) + 1e-6 * doc[key] / abs(x), (name, key, exact, fd)
+
+
+def test_elasticity_in_g_is_one_half():
+    """Speeds scale with sqrt(g) for a rigid frame (v^2 K2 balances g K0)."""
+    r = sensitivity(catalog.parameters("benchmark"))
+    assert r.elasticities("weave_speed")["g"] == pytest.approx(0.5, abs=1e-12)
+    assert r.elasticities("capsize_speed")["g"] == pytest.approx(0.5, abs=1e-12)
+
+
+def test_flexible_frame_derivatives_equal_differences():
+    """Jamis (thesis bodies) with the Relaxed rider and the published steel S: against differences."""
+    p = catalog.parameters("jamis-thesis", "relaxed-thesis", "thesis")
+    S = catalog.stiffness("jamis-thesis", "steel")
+    r = sensitivity(p, S)
+
+    def speeds(q):
+        c = critical_speeds(system(values_of(q), S))
+        return c.weave_speed, c.capsize_speed
+    for name in ("c", "lam", "mB", "IFyy"):
+        x = getattr(p, name)
+        h = 1e-6 * abs(x)
+        hi, lo = speeds(p.replace(**{name: x + h})), speeds(p.replace(**{name: x - h}))
+        for k, key in enumerate(("weave_speed", "capsize_speed")):
+            fd = (hi[k] - lo[k]) / (2 * h)
+            assert getattr(r, "d_" + key)[name] == pytest.approx(fd, rel=1e-5), (name, key)
+
+
+def test_matrix_derivatives_complex_step_equal_differences():
+    p = catalog.parameters("benchmark")
+    d = matrix_derivatives(p)
+    for name in ("w", "c", "lam", "xH", "IHxz", "rF"):
+        x = getattr(p, name)
+        h = 1e-5 * abs(x)
+        hi = system(values_of(p.replace(**{name: x + h})))
+        lo = system(values_of(p.replace(**{name: x - h})))
+        for m in ("M", "C1", "K0", "K2"):
+            np.testing.assert_allclose(d[name][m], (getattr(hi, m) - getattr(lo, m)) / (2 * h),
+                                       rtol=1e-6, atol=1e-8)
+
+
+@pytest.mark.parametrize("bike, rider, stiffness", [
+    ("benchmark", None, "infinite"), ("jamis-thesis", None, "aluminum"),
+    ("cargo-loaded-thesis", None, "infinite"), ("jamis-thesis", None, "infinite")])
+def test_closed_form_crossings_equal_tracked_roots(bike, rider, stiffness):
+    """The quadratic-in-v^2 crossings equal every Re = 0 crossing of bikemass.stability (brentq on
+    tracked modes, 0.05 grid) to 1e-9 m/s, and the strict stable ranges agree."""
+    p, S = catalog.parameters(bike, rider), catalog.stiffness(bike, stiffness)
+    ref = stability(with_frame_stiffness(canonical_matrices(p), S))
+    mine = critical_speeds(system(values_of(p), S))
+    tracked = sorted({round(s, 9) for c in ref.crossings.values() for s, _ in c})
+    np.testing.assert_allclose([c.speed for c in mine.crossings], tracked, atol=1e-9)
+    np.testing.assert_allclose(np.array(mine.stable, dtype=float).reshape(-1, 2),
+                               np.array(ref.ranges["strict"]["exact"], dtype=float).reshape(-1, 2), atol=1e-9)
+
+
+def test_crossing_kinds_follow_the_root_that_crosses():
+    """A real root crossing at s = 0 is a capsize-type crossing even when the tracker calls it
+    weave (Cargo loaded, thesis body: the split weave pair's real branch at 22.1 m/s)."""
+    p = catalog.parameters("cargo-loaded-thesis")
+    mine = critical_speeds(system(values_of(p)))
+    for c in mine.crossings:
+        A = system(values_of(p)).state_matrix(c.speed)
+        ev = np.linalg.eigvals(A)
+        on_axis = ev[np.argmin(np.abs(ev.real))]
+        assert abs(on_axis.real) < 1e-8
+        assert (c.kind == "real") == (abs(on_axis.imag) < 1e-8)
+
+
+def test_sensitivity_table_plot_and_bad_input(tmp_path, capsys):
+    out = tmp_path / "s.png"
+    assert main(["sensitivity", "benchmark", "--plot", str(out)]) == 0
+    text = capsys.readouterr().out
+    assert "4.292382536" in text and out.stat().st_size > 10000
+    assert main(["sensitivity", "benchmark", "--plot", str(tmp_path / "s.gif")]) == 2
+    assert main(["sensitivity", "benchmark", "--max-speed", "-1"]) == 2
+    assert main(["sensitivity", "nonexistent-bike"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 3 and all(line.startswith("bikemass: error:") for line in err)
