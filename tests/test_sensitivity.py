@@ -118,3 +118,40 @@ def test_sensitivity_table_plot_and_bad_input(tmp_path, capsys):
     assert main(["sensitivity", "nonexistent-bike"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 3 and all(line.startswith("bikemass: error:") for line in err)
+
+
+def test_stiffness_derivatives_equal_differences():
+    p = catalog.parameters("jamis-thesis", "relaxed-thesis", "thesis")
+    S = catalog.stiffness("jamis-thesis", "titanium")
+    r = sensitivity(p, S)
+    for entry, cells in {"S_phiphi": [(0, 0)], "S_phidelta": [(0, 1), (1, 0)], "S_deltadelta": [(1, 1)]}.items():
+        h = 1e-5 * abs(S[cells[0]])
+        speeds = []
+        for sign in (1, -1):
+            Sh = np.array(S, dtype=float)
+            for cell in cells:
+                Sh[cell] += sign * h
+            c = critical_speeds(system(values_of(p), Sh))
+            speeds.append((c.weave_speed, c.capsize_speed))
+        for k, key in enumerate(("weave_speed", "capsize_speed")):
+            fd = (speeds[0][k] - speeds[1][k]) / (2 * h)
+            assert r.d_stiffness[key][entry] == pytest.approx(fd, rel=1e-5, abs=1e-12), (entry, key)
+
+
+def test_geometry_chain_equals_direct_difference(capsys):
+    """Seat-stay wall of the steel Jamis (mass properties and beam S both change): the chained
+    derivative equals the central difference of the critical speeds themselves."""
+    from bikemass.analysis.inputs import Model
+    from bikemass.analysis.sensitivity import geometry_sensitivity
+    model = Model("jamis", None, "steel")
+    key = "sections.seat_stay.wall"
+    g = geometry_sensitivity(model, [key])[key]
+    x, h = g["value"], g["step"]
+    assert x == pytest.approx(0.040 * 0.0254)
+    (pa, Sa), (pb, Sb) = model.build({key: x + h}), model.build({key: x - h})
+    ca, cb = critical_speeds(system(values_of(pa), Sa)), critical_speeds(system(values_of(pb), Sb))
+    assert g["weave_speed"] == pytest.approx((ca.weave_speed - cb.weave_speed) / (2 * h), rel=1e-5)
+    assert g["capsize_speed"] == pytest.approx((ca.capsize_speed - cb.capsize_speed) / (2 * h), rel=1e-5)
+    assert abs(g["weave_speed"]) > 1 and g["difference_check"] < 1e-4 * abs(g["weave_speed"])
+    assert main(["sensitivity", "benchmark", "--inputs", "geometry.no_such_key"]) == 2
+    assert "--inputs: geometry.no_such_key" in capsys.readouterr().err

@@ -59,7 +59,7 @@ def system(values, S=None):
     m = canonical_matrices(SimpleNamespace(**{**values, "g": float(np.real(g))}))
     K = g * m.K0
     if S is not None:
-        K = K - K.T @ np.linalg.solve(K + np.asarray(S, dtype=float), K)
+        K = K - K.T @ np.linalg.solve(K + np.asarray(S), K)
     return System(M=m.M, C1=m.C1, K=K, K2=m.K2, g=g)
 
 
@@ -84,3 +84,21 @@ def state_matrix_derivatives(params, v, S=None, names=NAMES):
     base = values_of(params)
     return {name: system({**base, name: base[name] + 1j * STEP}, S).state_matrix(v).imag / STEP
             for name in names}
+
+
+STIFFNESS_ENTRIES = {"S_phiphi": ((0, 0),), "S_phidelta": ((0, 1), (1, 0)), "S_deltadelta": ((1, 1),)}
+"""Entries of the symmetric rear-frame stiffness S (N m/rad); ``S_phidelta`` moves both off-diagonals."""
+
+
+def stiffness_state_derivatives(params, v, S):
+    """``{entry: dA/dS_entry}`` (4x4, per N m/rad) at speed ``v``; empty for a rigid frame."""
+    if S is None:
+        return {}
+    base = values_of(params)
+    out = {}
+    for name, cells in STIFFNESS_ENTRIES.items():
+        Sc = np.array(S, dtype=complex)
+        for cell in cells:
+            Sc[cell] += 1j * STEP
+        out[name] = system(base, Sc).state_matrix(v).imag / STEP
+    return out

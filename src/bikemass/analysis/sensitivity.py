@@ -21,7 +21,7 @@ import numpy as np
 
 from ..parameters import NAMES
 from .crossings import OSCILLATORY, REAL, critical_speeds
-from .model import state_matrix_derivatives, system, values_of
+from .model import STIFFNESS_ENTRIES, state_matrix_derivatives, stiffness_state_derivatives, system, values_of
 
 SPEEDS = {"weave_speed": OSCILLATORY, "capsize_speed": REAL}
 """Output name -> crossing kind (first crossing of that kind on (0, vmax])."""
@@ -56,6 +56,7 @@ class Sensitivity:
     capsize_speed: float
     d_weave_speed: dict
     d_capsize_speed: dict
+    d_stiffness: dict = None      # {speed key: {S entry: (m/s) per N m/rad}}, rigid frame: None
 
     def elasticities(self, which):
         """``{name: (p / v) dv/dp}`` for ``which`` in ``weave_speed`` | ``capsize_speed``."""
@@ -63,10 +64,13 @@ class Sensitivity:
         return {k: (self.params[k] * x / v if v else None) for k, x in d.items()}
 
     def to_dict(self):
-        return {"weave_speed": self.weave_speed, "capsize_speed": self.capsize_speed,
-                "d_weave_speed": self.d_weave_speed, "d_capsize_speed": self.d_capsize_speed,
-                "elasticity_weave_speed": self.elasticities("weave_speed"),
-                "elasticity_capsize_speed": self.elasticities("capsize_speed")}
+        out = {"weave_speed": self.weave_speed, "capsize_speed": self.capsize_speed,
+               "d_weave_speed": self.d_weave_speed, "d_capsize_speed": self.d_capsize_speed,
+               "elasticity_weave_speed": self.elasticities("weave_speed"),
+               "elasticity_capsize_speed": self.elasticities("capsize_speed")}
+        if self.d_stiffness is not None:
+            out["d_stiffness"] = self.d_stiffness
+        return out
 
 
 def sensitivity(params, S=None, vmax=30.0, names=NAMES):
@@ -79,13 +83,17 @@ def sensitivity(params, S=None, vmax=30.0, names=NAMES):
         crossing = next((c for c in found.crossings if c.kind == kind), None)
         speeds[key] = None if crossing is None else crossing.speed
         if crossing is None:
-            derivs[key] = {n: None for n in names}
+            derivs[key] = {n: None for n in (*names, *(STIFFNESS_ENTRIES if S is not None else ()))}
             continue
-        dA = state_matrix_derivatives(params, crossing.speed, S, names)
+        dA = {**state_matrix_derivatives(params, crossing.speed, S, names),
+              **stiffness_state_derivatives(params, crossing.speed, S)}
         derivs[key] = speed_derivatives(sys_, dA, crossing.speed, kind, crossing.frequency)
+    d_s = None
+    if S is not None:
+        d_s = {key: {k: d.pop(k, None) for k in STIFFNESS_ENTRIES} for key, d in derivs.items()}
     return Sensitivity(params=values_of(params), weave_speed=speeds["weave_speed"],
                        capsize_speed=speeds["capsize_speed"], d_weave_speed=derivs["weave_speed"],
-                       d_capsize_speed=derivs["capsize_speed"])
+                       d_capsize_speed=derivs["capsize_speed"], d_stiffness=d_s)
 
 
 def sensitivity_figure(result, title=""):
@@ -110,3 +118,54 @@ def sensitivity_figure(result, title=""):
     if title:
         fig.suptitle(title)
     return fig
+
+
+GEOMETRY_STEP = 1e-4
+"""Default relative step of the geometry -> parameters central difference."""
+
+
+def input_value(model, key):
+    """Current value of an input key of a :class:`~bikemass.analysis.inputs.Model` (SI, or the
+    unit the YAML file uses for it, e.g. degrees for chain angles)."""
+    from .inputs import get_path
+    return get_path(model, key)
+
+
+def geometry_sensitivity(model, keys, result=None, step=GEOMETRY_STEP):
+    """Derivatives of the weave and capsize speeds w.r.t. geometry-level inputs ``keys`` (dotted
+    paths, see :mod:`bikemass.analysis.inputs`).
+
+    Chain rule: ``dv/dx = sum_p (dv/dp)(dp/dx) + sum_S (dv/dS)(dS/dx)``.  ``dv/dp`` and ``dv/dS``
+    are exact (:func:`sensitivity`); ``dp/dx`` and ``dS/dx`` (geometry -> mass properties, beam
+    stiffness, rider pose) are central differences with relative step ``step``, and again with
+    twice the step: ``difference_check`` is the largest change between the two (m/s per unit),
+    an estimate of the finite-difference error.
+    Returns ``{key: {value, step, d_weave_speed, d_capsize_speed, difference_check}}``.
+    """
+    p0, S0 = model.build()
+    result = result or sensitivity(p0, S0)
+    out = {}
+    for key in keys:
+        x = input_value(model, key)
+        h = step * abs(x) if x else step
+        estimates = []
+        for hh in (h, 2 * h):
+            (pa, Sa), (pb, Sb) = model.build({key: x + hh}), model.build({key: x - hh})
+            dp = {n: (getattr(pa, n) - getattr(pb, n)) / (2 * hh) for n in result.params}
+            dS = None if S0 is None else (np.asarray(Sa) - np.asarray(Sb)) / (2 * hh)
+            estimates.append({k: _chain(result, k, dp, dS) for k in SPEEDS})
+        out[key] = {"value": x, "step": h, **estimates[0],
+                    "difference_check": max((abs(estimates[0][k] - estimates[1][k])
+                                             for k in SPEEDS if estimates[0][k] is not None), default=None)}
+    return out
+
+
+def _chain(result, key, dp, dS):
+    d = getattr(result, "d_" + key)
+    if getattr(result, key) is None:
+        return None
+    total = sum(d[n] * dp[n] for n in dp)
+    if dS is not None:
+        ds = result.d_stiffness[key]
+        total += ds["S_phiphi"] * dS[0, 0] + ds["S_phidelta"] * dS[0, 1] + ds["S_deltadelta"] * dS[1, 1]
+    return float(total)

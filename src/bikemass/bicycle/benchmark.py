@@ -35,7 +35,12 @@ def bicycle_parameters(bicycle, rider=None, combine="exact", method="mesh"):
     if rider is None and bicycle.published is not None:
         warn_parameters(bicycle.published, bicycle.source)
         return bicycle.published
-    bodies = combined_bodies(bicycle, rider, combine, method)
+    return parameters_from_bodies(bicycle, combined_bodies(bicycle, rider, combine, method))
+
+
+def parameters_from_bodies(bicycle, bodies):
+    """:class:`~bikemass.parameters.BenchmarkParameters` of ``bicycle``'s geometry and the four
+    combined ``bodies`` (``{body: MassProperties}``, see :func:`combined_bodies`)."""
     g = bicycle.geometry
     R, B, H, F = (bodies[b] for b in ("rear_wheel", "rear_frame", "front_frame", "front_wheel"))
     _check_wheel(R, g.rear_axle, "rear", bicycle.source)
@@ -59,20 +64,36 @@ def refuse_second_rider(bicycle, rider):
                          "no rider added: this bicycle's rear body already includes one (use --rider none)")
 
 
-def combined_bodies(bicycle, rider=None, combine="exact", method="mesh"):
-    """``{body: MassProperties}`` of the four bodies with the rider's parts merged (see module doc)."""
+def combined_bodies(bicycle, rider=None, combine="exact", method="mesh", bicycle_bodies=None):
+    """``{body: MassProperties}`` of the four bodies with the rider's parts merged (see module doc);
+    ``bicycle_bodies`` = ``bicycle.bodies(method)`` when already computed."""
+    refuse_second_rider(bicycle, rider)
+    bodies = dict(bicycle_bodies or bicycle.bodies(method))
+    merged = merge_rider(bodies, rider_bodies(rider, method) if rider is not None else {}, combine)
+    if rider is not None:
+        warn_rider(body_properties(rider.parts, "exact").com, bicycle.geometry, bicycle.source, rider.name)
+    return merged
+
+
+def rider_bodies(rider, method="mesh"):
+    """``{body: MassProperties}`` of the rider's parts on ``rear_frame`` and ``front_frame`` (those present)."""
+    out = {}
+    for body in ("rear_frame", "front_frame"):
+        parts = [p for p in rider.parts if p.body == body]
+        if parts:
+            out[body] = body_properties(parts, method)
+    return out
+
+
+def merge_rider(bodies, rider, combine="exact"):
+    """``bodies`` with the rider's ``{body: MassProperties}`` merged by ``combine`` (a new dict)."""
     if combine not in COMBINE_CHOICES:
         raise ValueError(f"combine must be one of {', '.join(COMBINE_CHOICES)}, got {combine!r}")
-    refuse_second_rider(bicycle, rider)
-    bodies = bicycle.bodies(method)
-    if rider is not None:
-        merge = combine_exact if combine == "exact" else combine_without_parallel_axis
-        for body in ("rear_frame", "front_frame"):
-            parts = [p for p in rider.parts if p.body == body]
-            if parts:
-                bodies[body] = merge((bodies[body], body_properties(parts, method)))
-        warn_rider(body_properties(rider.parts, "exact").com, bicycle.geometry, bicycle.source, rider.name)
-    return bodies
+    merge = combine_exact if combine == "exact" else combine_without_parallel_axis
+    out = dict(bodies)
+    for body, props in rider.items():
+        out[body] = merge((out[body], props))
+    return out
 
 
 def _check_wheel(props, axle, which, source):

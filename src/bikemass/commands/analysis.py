@@ -1,7 +1,8 @@
 """``bikemass sensitivity``, ``bikemass uncertainty`` and ``bikemass sweep``."""
 
 FORMATS = ("table", "json", "yaml")
-SPEED_UNITS = {"speed": "m/s", "d_speed": "m/s per parameter unit (SI, rad)", "elasticity": "1"}
+SPEED_UNITS = {"speed": "m/s", "d_speed": "m/s per parameter unit (SI, rad)", "elasticity": "1",
+               "d_stiffness": "m/s per N m/rad", "inputs": "m/s per unit of the YAML value (SI; pose angles deg)"}
 
 
 def register(sub):
@@ -12,6 +13,13 @@ def register(sub):
                     "from eigenvalue derivatives (left/right eigenvectors) and the implicit function "
                     "theorem, exact to rounding; elasticities (p/v) dv/dp; a bar chart with --plot.")
     _bike_options(sens)
+    sens.add_argument("--inputs", metavar="KEYS", default="",
+                      help="also w.r.t. geometry-level inputs: comma-separated dotted paths into the "
+                           "bicycle YAML (sections.seat_stay.wall, geometry.trail, chart.head_tube_angle) "
+                           "or, after 'rider.', the pose YAML (rider.chain.torso_lean); chained through "
+                           "the model with a central difference for the geometry -> parameters step only")
+    sens.add_argument("--step", type=float, default=1e-4, metavar="REL",
+                      help="relative step of that central difference (default 1e-4)")
     sens.add_argument("--format", choices=FORMATS, default="table", help="table (default), json or yaml")
     sens.set_defaults(run=run_sensitivity)
 
@@ -58,23 +66,35 @@ def save_figure(fig, path):
 
 
 def run_sensitivity(args):
-    from ..analysis.sensitivity import sensitivity, sensitivity_figure
+    from ..analysis.sensitivity import geometry_sensitivity, sensitivity, sensitivity_figure
+    from ..errors import InputError
     from ..output import dumps
     from .stability import _emit
 
     params, S = _inputs(args)
     result = sensitivity(params, S, vmax=args.max_speed)
+    keys = [k.strip() for k in args.inputs.split(",") if k.strip()]
+    geometry = {}
+    if keys:
+        if not 0 < args.step < 0.1:
+            raise InputError("--step", args.step, "a relative step between 0 and 0.1")
+        from ..analysis.inputs import Model
+        model = Model(args.bike, args.rider, args.stiffness, args.combine, origin="--inputs")
+        geometry = geometry_sensitivity(model, keys, result, args.step)
     if args.format == "table":
-        text = sensitivity_table(result, _title(args))
+        text = sensitivity_table(result, _title(args), geometry)
     else:
-        text = dumps({**result.to_dict(), "units": SPEED_UNITS}, args.format)
+        doc = result.to_dict()
+        if geometry:
+            doc["inputs"] = geometry
+        text = dumps({**doc, "units": SPEED_UNITS}, args.format)
     _emit(args, text)
     if args.plot:
         save_figure(sensitivity_figure(result, _title(args)), args.plot)
     return 0
 
 
-def sensitivity_table(result, title):
+def sensitivity_table(result, title, geometry=None):
     from ..output import table
 
     ew, ec = result.elasticities("weave_speed"), result.elasticities("capsize_speed")
@@ -82,8 +102,20 @@ def sensitivity_table(result, title):
             for n in result.d_weave_speed]
     head = (f"{title}\nweave speed {_speed(result.weave_speed)}, capsize speed "
             f"{_speed(result.capsize_speed)} (first crossing of each kind)\n\n")
-    return head + table(["parameter", "value", "d weave/dp", "elasticity", "d capsize/dp", "elasticity"],
+    text = head + table(["parameter", "value", "d weave/dp", "elasticity", "d capsize/dp", "elasticity"],
                         rows, floatfmt="{:.6g}")
+    if result.d_stiffness:
+        text += "\nrear-frame stiffness S (N m/rad)\n" + table(
+            ["entry", "d weave/dS", "d capsize/dS"],
+            [[k, result.d_stiffness["weave_speed"][k], result.d_stiffness["capsize_speed"][k]]
+             for k in result.d_stiffness["weave_speed"]], floatfmt="{:.6g}")
+    if geometry:
+        text += ("\ngeometry-level inputs (dv/dp exact, dp/dx by central difference; check = change "
+                 "with twice the step)\n") + table(
+            ["input", "value", "d weave/dx", "d capsize/dx", "check"],
+            [[k, g["value"], g["weave_speed"], g["capsize_speed"], g["difference_check"]]
+             for k, g in geometry.items()], floatfmt="{:.6g}")
+    return text
 
 
 def _speed(v):

@@ -1,0 +1,217 @@
+"""A bicycle, rider and stiffness read once, rebuilt with changed inputs.
+
+Inputs are named by keys:
+
+* one of the 26 benchmark names (``c``, ``lam``, ...): replaces that value in the final set;
+* ``stiffness``: a stiffness choice (``infinite``, ``steel``, ... or a file), as ``--stiffness``;
+* ``rider.<path>``: a dotted path into the pose YAML (``rider.chain.torso_lean``,
+  ``rider.segments.torso.angle``);
+* any other dotted path: into the bicycle YAML (``sections.seat_stay.wall``,
+  ``geometry.trail``, ``chart.head_tube_angle``).  In a list, a step is an element's
+  ``name`` or its index (``tubes.down_tube.section``, ``components.0.mass``).
+
+The YAML files are parsed once; a bicycle (its meshes' mass properties, and its stiffness)
+and a rider are built once per distinct set of their own changes and reused by every
+configuration that shares them.
+"""
+
+import copy
+from collections import OrderedDict
+
+from ..config import Node, load_yaml
+from ..errors import InputError
+from ..parameters import NAMES
+
+RIDER_PREFIX = "rider."
+STIFFNESS_KEY = "stiffness"
+CACHE_SIZE = 32
+
+
+def _lru(cache, key, build):
+    if key in cache:
+        cache.move_to_end(key)
+        return cache[key]
+    value = build()
+    cache[key] = value
+    if len(cache) > CACHE_SIZE:
+        cache.popitem(last=False)
+    return value
+
+
+def set_path(document, path, value, source, origin="spec"):
+    """Set dotted ``path`` in the nested mapping ``document`` (in place) to ``value``."""
+    steps = path.split(".")
+    node = document
+    for i, step in enumerate(steps):
+        where = ".".join(steps[:i]) or "(top)"
+        last = i == len(steps) - 1
+        if isinstance(node, dict):
+            if step not in node:
+                raise InputError(origin, path, f"a key path into {source}: no {step!r} under {where} "
+                                 f"(has: {', '.join(map(str, node))})")
+            if last:
+                node[step] = value
+            else:
+                node = node[step]
+        elif isinstance(node, list):
+            named = [k for k, e in enumerate(node) if isinstance(e, dict) and e.get("name") == step]
+            index = named[0] if named else int(step) if step.isdigit() and int(step) < len(node) else None
+            if index is None:
+                raise InputError(origin, path, f"a key path into {source}: no element named {step!r} "
+                                 f"in the list {where}")
+            if last:
+                node[index] = value
+            else:
+                node = node[index]
+        else:
+            raise InputError(origin, path, f"a key path into {source}: {where} is a value, not a mapping")
+
+
+def _walk(document, path, source, origin):
+    node = document
+    for step in path.split("."):
+        if isinstance(node, dict) and step in node:
+            node = node[step]
+        elif isinstance(node, list):
+            named = [e for e in node if isinstance(e, dict) and e.get("name") == step]
+            if named:
+                node = named[0]
+            elif step.isdigit() and int(step) < len(node):
+                node = node[int(step)]
+            else:
+                raise InputError(origin, path, f"a key path into {source}: no element {step!r}")
+        else:
+            raise InputError(origin, path, f"a key path into {source}: no {step!r}")
+    return node
+
+
+def get_path(model, key):
+    """Current value of input ``key`` of ``model`` (a number; ``"0.040 in"`` -> SI)."""
+    from ..units import to_si
+    if key in NAMES:
+        return float(getattr(model.parameters(), key))
+    if key.startswith(RIDER_PREFIX):
+        if model._rider_doc is None:
+            raise InputError(model.origin, key, "a rider to change (no rider given)")
+        value = _walk(model._rider_doc, key[len(RIDER_PREFIX):], model._rider_source, model.origin)
+    else:
+        value = _walk(model._bike_doc, key, model._bike_source, model.origin)
+    try:
+        return float(to_si(value))
+    except (TypeError, ValueError):
+        raise InputError(model.origin, key, f"a number at that path, got {value!r}") from None
+
+
+def split_changes(changes):
+    """``changes`` -> (bicycle paths, rider paths, parameter values, stiffness or None), each sorted."""
+    bike, rider, params, stiffness = [], [], [], None
+    for key, value in changes.items():
+        if key in NAMES:
+            params.append((key, value))
+        elif key == STIFFNESS_KEY:
+            stiffness = value
+        elif key.startswith(RIDER_PREFIX):
+            rider.append((key[len(RIDER_PREFIX):], value))
+        else:
+            bike.append((key, value))
+    return tuple(sorted(bike)), tuple(sorted(rider)), tuple(sorted(params)), stiffness
+
+
+class Model:
+    """``Model(bike, rider, stiffness, combine).build(changes)`` -> :class:`Built`."""
+
+    def __init__(self, bike, rider=None, stiffness="infinite", combine="exact", method="mesh", origin="spec"):
+        from ..bicycle.loader import _with_base
+        from ..parameters import is_parameter_file
+        from ..paths import frames_dir, resolve
+        from ..rider import poses_dir
+
+        self.bike, self.rider, self.stiffness, self.combine, self.method = bike, rider, stiffness, combine, method
+        self.origin = origin
+        path = resolve(bike, frames_dir(), "bicycle")
+        node = load_yaml(path)
+        self._bike_source = str(path)
+        self._parameter_file = is_parameter_file(node)
+        self._bike_doc = node.value if self._parameter_file else _with_base(node).mapping()
+        self._rider_doc = self._rider_source = None
+        if rider not in (None, "none"):
+            rpath = resolve(rider, poses_dir(), "pose")
+            self._rider_source, self._rider_doc = str(rpath), load_yaml(rpath).value
+        self._bicycles, self._bodies, self._riders, self._stiffness, self._params = (
+            OrderedDict() for _ in range(5))
+
+    # -- pieces, each cached by its own changes -------------------------------------------
+    def _document(self, doc, changes, source):
+        out = copy.deepcopy(doc)
+        for path, value in changes:
+            set_path(out, path, value, source, self.origin)
+        return out
+
+    def bicycle(self, changes=()):
+        def build():
+            from ..bicycle.loader import bicycle_from_parameters, read_bicycle
+            from ..parameters import from_node
+            doc = self._document(self._bike_doc, changes, self._bike_source)
+            node = Node(doc, self._bike_source, "")
+            if self._parameter_file:
+                return bicycle_from_parameters(from_node(node), doc.get("name", self.bike), self._bike_source)
+            return read_bicycle(node, self._bike_source)
+        return _lru(self._bicycles, changes, build)
+
+    def rider_bodies(self, changes=()):
+        if self._rider_doc is None:
+            if changes:
+                raise InputError(self.origin, changes[0][0], "a rider to change (no rider given)")
+            return None
+
+        def build():
+            from ..bicycle.benchmark import rider_bodies
+            from ..rider import Rider
+            from ..rider.pose import read_pose
+            node = Node(self._document(self._rider_doc, changes, self._rider_source), self._rider_source, "")
+            if "chain" in node.value:
+                from ..rider.chain_file import read_chain_pose
+                name, parts, _ = read_chain_pose(node)
+            else:
+                name, parts = read_pose(node)
+            return rider_bodies(Rider(self.rider, name, parts), self.method)
+        return _lru(self._riders, changes, build)
+
+    def parameters(self, bike_changes=(), rider_changes=()):
+        """Benchmark parameters of the bicycle and rider with their changes (before parameter changes)."""
+        def build():
+            from ..bicycle.benchmark import merge_rider, parameters_from_bodies
+            bicycle = self.bicycle(bike_changes)
+            riders = self.rider_bodies(rider_changes)
+            if riders is None and bicycle.published is not None:
+                return bicycle.published
+            bodies = _lru(self._bodies, bike_changes, lambda: bicycle.bodies(self.method))
+            return parameters_from_bodies(bicycle, merge_rider(bodies, riders or {}, self.combine))
+        return _lru(self._params, (bike_changes, rider_changes), build)
+
+    def frame_stiffness(self, which, bike_changes=()):
+        """2x2 S (N m/rad) or None, for stiffness choice ``which`` on the changed bicycle."""
+        def build():
+            from .. import catalog
+            from ..materials import load_materials
+            if which in (None, "infinite", "rigid") or which not in load_materials():
+                return catalog.stiffness(self.bike, which)
+            bicycle = self.bicycle(bike_changes)
+            material = load_materials()[which]
+            S = None if bike_changes else bicycle.published_stiffness(material)
+            if S is None and bicycle.structure is not None:
+                from ..fe import equivalent_stiffness
+                S = equivalent_stiffness(bicycle.structure, material, "condensed")
+            if S is None:
+                raise InputError(self._bike_source, "stiffness", f"a stiffness for {which} (no published "
+                                 "stiffness and no rear-frame structure for the beam model)")
+            return S
+        return _lru(self._stiffness, (which, bike_changes), build)
+
+    def build(self, changes=None):
+        """:class:`Built` for ``{key: value}`` changes (see the module docstring)."""
+        bike, rider, params, stiffness = split_changes(changes or {})
+        p = self.parameters(bike, rider)
+        if params:
+            p = p.replace(**dict(params))
+        return p, self.frame_stiffness(self.stiffness if stiffness is None else stiffness, bike)
