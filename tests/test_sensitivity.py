@@ -113,7 +113,7 @@ def test_sensitivity_table_plot_and_bad_input(tmp_path, capsys):
     assert main(["sensitivity", "benchmark", "--plot", str(out)]) == 0
     text = capsys.readouterr().out
     assert "4.292382536" in text and out.stat().st_size > 10000
-    assert main(["sensitivity", "benchmark", "--plot", str(tmp_path / "s.gif")]) == 2
+    assert main(["sensitivity", "benchmark", "--plot", str(tmp_path / "s.xyz")]) == 2
     assert main(["sensitivity", "benchmark", "--max-speed", "-1"]) == 2
     assert main(["sensitivity", "nonexistent-bike"]) == 2
     err = capsys.readouterr().err.strip().splitlines()

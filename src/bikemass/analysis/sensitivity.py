@@ -96,11 +96,11 @@ def sensitivity(params, S=None, vmax=30.0, names=NAMES):
                        d_capsize_speed=derivs["capsize_speed"], d_stiffness=d_s)
 
 
-def sensitivity_figure(result, title=""):
-    """Horizontal bar chart of the elasticities of both speeds (a matplotlib Figure)."""
+def sensitivity_figure(result, title="", size=None):
+    """Horizontal bar chart of the elasticities of both speeds (a matplotlib Figure; ``size`` in inches)."""
     from matplotlib.figure import Figure
 
-    fig = Figure(figsize=(10, 7.5), layout="constrained")
+    fig = Figure(figsize=size or (10, 7.5), layout="constrained")
     axes = fig.subplots(1, 2, sharey=True)
     names = list(result.d_weave_speed)
     y = np.arange(len(names))

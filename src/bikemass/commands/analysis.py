@@ -1,5 +1,7 @@
 """``bikemass sensitivity``, ``bikemass uncertainty`` and ``bikemass sweep``."""
 
+from .figure_options import add_figure_options, figure_options, write_figure
+
 FORMATS = ("table", "json", "yaml")
 SPEED_UNITS = {"speed": "m/s", "d_speed": "m/s per parameter unit (SI, rad)", "elasticity": "1",
                "d_stiffness": "m/s per N m/rad", "inputs": "m/s per unit of the YAML value (SI; pose angles deg)"}
@@ -35,16 +37,16 @@ def _bike_options(p):
                         "file with S: [[..], [..]] in N m/rad (see bikemass stability --help)")
     p.add_argument("--max-speed", type=float, default=30.0, metavar="M_S",
                    help="look for critical speeds on (0, M_S] m/s (default 30)")
-    p.add_argument("--plot", metavar="FILE", help="also draw a figure (.png, .pdf, .svg)")
+    p.add_argument("--plot", metavar="FILE", help="also draw a figure (.png, .pdf, .svg, ...)")
     p.add_argument("-o", "--output", metavar="FILE", help="write the data to FILE instead of stdout")
+    add_figure_options(p)
 
 
 def _inputs(args):
     from .. import catalog
     from ..errors import InputError
-    from .stability import _check_plot
 
-    _check_plot(args.plot)
+    args.figure = figure_options(args, args.plot)
     if not 0 < args.max_speed < 1e4:
         raise InputError("--max-speed", args.max_speed, "a speed in m/s between 0 and 1e4")
     return (catalog.parameters(args.bike, args.rider, args.combine),
@@ -53,16 +55,6 @@ def _inputs(args):
 
 def _title(args):
     return f"{args.bike}, rider {args.rider}, stiffness {args.stiffness}"
-
-
-def save_figure(fig, path):
-    """Write a matplotlib Figure to ``path`` (format from the suffix), atomically."""
-    from io import BytesIO
-
-    from ..output import write_atomic
-    buf = BytesIO()
-    fig.savefig(buf, format=str(path).rsplit(".", 1)[-1].lower(), dpi=150)
-    write_atomic(path, buf.getvalue())
 
 
 def run_sensitivity(args):
@@ -90,7 +82,7 @@ def run_sensitivity(args):
         text = dumps({**doc, "units": SPEED_UNITS}, args.format)
     _emit(args, text)
     if args.plot:
-        save_figure(sensitivity_figure(result, _title(args)), args.plot)
+        write_figure(sensitivity_figure(result, _title(args), args.figure.size), args.plot, args.figure)
     return 0
 
 
