@@ -33,6 +33,12 @@ class System:
     def K0(self):
         return self.K / self.g
 
+    def canonical(self):
+        """The real :class:`~bikemass.stability.CanonicalMatrices` (``K0 = K / g``) for the stability code."""
+        from ..stability import CanonicalMatrices
+        return CanonicalMatrices(M=np.real(self.M), C1=np.real(self.C1), K0=np.real(self.K0),
+                                 K2=np.real(self.K2), g=float(np.real(self.g)))
+
     def state_matrix(self, v):
         """``A(v)`` (4x4) for states ``[phi, delta, phi', delta']`` at speed ``v`` (m/s)."""
         Minv = np.linalg.inv(self.M)

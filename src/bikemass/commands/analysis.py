@@ -26,6 +26,27 @@ def register(sub):
     sens.set_defaults(run=run_sensitivity)
 
 
+    unc = sub.add_parser(
+        "uncertainty", help="propagate parameter/geometry uncertainties to the matrices, eigenvalues and critical speeds",
+        description="Standard deviations of M, C1, K0 (without g), K2, of the eigenvalues over speed and of "
+                    "the weave and capsize speeds, from the +/- values of a BicycleParameters file and/or a "
+                    "YAML file (--std) of standard deviations or distributions per input: any of the 26 "
+                    "parameters or a dotted path into the bicycle or pose YAML. linear: first order (as the "
+                    "uncertainties package); montecarlo: N seeded samples, reported beside the linear result.")
+    _bike_options(unc)
+    unc.add_argument("--std", metavar="FILE",
+                     help="YAML with an 'uncertainty:' mapping, input -> std, or {std: s}, or "
+                          "{distribution: uniform, half_width: h} (SI; pose angles in degrees)")
+    unc.add_argument("--method", choices=("linear", "montecarlo"), default="linear",
+                     help="linear (default) or montecarlo")
+    unc.add_argument("--samples", type=int, default=1000, metavar="N", help="Monte Carlo samples (default 1000)")
+    unc.add_argument("--seed", type=int, default=0, help="random seed of the Monte Carlo draws (default 0)")
+    unc.add_argument("--speeds", metavar="START:STOP:STEP", default="0:10:0.1",
+                     help="speeds of the eigenvalue bands in m/s (default 0:10:0.1)")
+    unc.add_argument("--format", choices=FORMATS, default="table", help="table (default), json or yaml")
+    unc.set_defaults(run=run_uncertainty)
+
+
 def _bike_options(p):
     p.add_argument("bike", metavar="BIKE", help="shipped bicycle name, bicycle YAML or parameter file")
     p.add_argument("--rider", metavar="POSE", default="none",
@@ -112,3 +133,75 @@ def sensitivity_table(result, title, geometry=None):
 
 def _speed(v):
     return "none" if v is None else f"{v:.9f} m/s"
+
+
+def read_std_file(path):
+    """``{key: Spread}`` from the ``uncertainty:`` mapping of a YAML file."""
+    from ..analysis.uncertainty import read_spreads
+    from ..config import load_yaml
+    node = load_yaml(path)
+    node.check_keys(required=("uncertainty",), optional=("name", "description", "source"))
+    return read_spreads(node["uncertainty"])
+
+
+def run_uncertainty(args):
+    from ..analysis.inputs import Model
+    from ..analysis.uncertainty import propagate, uncertainty_figure
+    from ..errors import InputError
+    from ..output import dumps
+    from .stability import _emit, parse_speeds
+
+    _inputs(args)
+    if not 2 <= args.samples <= 10 ** 6:
+        raise InputError("--samples", args.samples, "a number of samples from 2 to 1000000")
+    speeds = parse_speeds(args.speeds)
+    spreads = file_spreads(args.bike)
+    if args.std:
+        spreads.update(read_std_file(args.std))
+    if not spreads:
+        raise InputError(args.bike, "(uncertainties)", "standard deviations: a BicycleParameters file with "
+                         "+/- values, or --std FILE")
+    model = Model(args.bike, args.rider, args.stiffness, args.combine, origin=args.std or args.bike)
+    result = propagate(model, spreads, args.method, args.samples, args.seed, speeds)
+    if args.format == "table":
+        text = uncertainty_table(result, _title(args))
+    else:
+        text = dumps({**result.to_dict(), "units": UNCERTAINTY_UNITS}, args.format)
+    _emit(args, text)
+    if args.plot:
+        write_figure(uncertainty_figure(result, _title(args), args.figure.size), args.plot, args.figure)
+    return 0
+
+
+UNCERTAINTY_UNITS = {"M": "kg m^2", "C1": "kg m^2 (per m/s)", "K0": "kg m (times g: N m/rad)",
+                     "K2": "kg (times v^2: N m/rad)", "speed": "m/s", "eigenvalues": "1/s"}
+
+
+def file_spreads(bike):
+    """``{name: Spread}`` from the +/- values of a BicycleParameters text file (else empty)."""
+    return {}
+
+
+def uncertainty_table(result, title):
+    from ..output import table
+
+    lines = [title, f"method {result.method}; inputs: " + ", ".join(
+        f"{k} ({v['distribution']} std {v['std']:.4g})" for k, v in result.inputs.items()), ""]
+    mc = result.method == "montecarlo"
+    rows = []
+    for name, m in result.matrices.items():
+        for i in range(2):
+            for j in range(2):
+                rows.append([f"{name}[{i},{j}]", m["nominal"][i, j], m["std"][i, j]]
+                            + ([m["linear_std"][i, j]] if mc else []))
+    lines.append(table(["matrix entry", "nominal", "std" + (" (MC)" if mc else ""), *(["std (linear)"] if mc else [])],
+                       rows, floatfmt="{:.6g}"))
+    rows = []
+    for name, s in result.speeds.items():
+        rows.append([name.replace("_", " "), s["nominal"], s["std"]]
+                    + ([s["linear_std"], s["mean"], s["q025"], s["q975"], s["fraction_without"]] if mc else []))
+    heads = ["critical speed (m/s)", "nominal", "std" + (" (MC)" if mc else "")]
+    if mc:
+        heads += ["std (linear)", "MC mean", "MC 2.5 %", "MC 97.5 %", "none found"]
+    lines.append(table(heads, rows, floatfmt="{:.6g}"))
+    return "\n".join(lines)

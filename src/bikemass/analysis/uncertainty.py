@@ -1,0 +1,252 @@
+"""Uncertainty of the canonical matrices, eigenvalues and critical speeds from input uncertainties.
+
+Inputs are independent, each with a distribution about its nominal value: ``normal``
+(``std``) or ``uniform`` (``half_width``, std = half_width / sqrt 3).  An input is one of
+the 26 benchmark names or a geometry-level key of :mod:`bikemass.analysis.inputs`.
+
+* ``linear``: first-order propagation, ``std(y) = sqrt(sum_i (dy/dx_i std_i)^2)`` (what the
+  ``uncertainties`` package does).  ``dy/dx_i`` by the complex step along the input's
+  direction in parameter (and stiffness) space: exact for the matrices; eigenvalue
+  derivatives from left/right eigenvectors, critical-speed derivatives by the implicit
+  function theorem (:mod:`bikemass.analysis.sensitivity`).  A geometry-level input's
+  direction ``dp/dx`` (and ``dS/dx``) is a central difference through the model.
+* ``montecarlo``: ``samples`` draws of all inputs (seeded), every output recomputed.
+
+They agree while the outputs are close to linear over a few standard deviations.  They
+cannot agree where an eigenvalue is not differentiable: where two real roots merge into
+a complex pair (the weave's birth, ~0.7-1.8 m/s on the benchmark) the linear std of the
+eigenvalues grows without bound, and a critical speed that some samples do not have
+(no crossing) has no linear counterpart.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..parameters import NAMES
+from .crossings import critical_speeds
+from .model import MATRICES, STEP, system, values_of
+from .sensitivity import SPEEDS, speed_derivatives
+
+DISTRIBUTIONS = ("normal", "uniform")
+
+
+@dataclass(frozen=True)
+class Spread:
+    """One input's distribution about its nominal value: ``kind`` normal|uniform, ``std`` (its unit)."""
+
+    kind: str
+    std: float
+
+    def sample(self, rng, n):
+        if self.kind == "uniform":
+            half = self.std * np.sqrt(3.0)
+            return rng.uniform(-half, half, n)
+        return rng.normal(0.0, self.std, n)
+
+
+def read_spreads(node):
+    """``{key: Spread}`` from a config Node mapping ``key: std`` or ``key: {std: s}`` or
+    ``key: {distribution: normal|uniform, std: s | half_width: h}``."""
+    out = {}
+    for key, item in node.items():
+        if isinstance(item.value, dict):
+            item.check_keys(optional=("distribution", "std", "half_width"))
+            kind = item["distribution"].string(DISTRIBUTIONS) if item.has("distribution") else "normal"
+            if item.has("half_width") == item.has("std"):
+                item.fail("exactly one of std or half_width")
+            std = (item["std"].number(nonnegative=True) if item.has("std")
+                   else item["half_width"].number(nonnegative=True) / np.sqrt(3.0))
+            if kind == "normal" and item.has("half_width"):
+                item.fail("std for a normal distribution (half_width is for uniform)")
+        else:
+            kind, std = "normal", item.number(nonnegative=True)
+        out[str(key)] = Spread(kind, float(std))
+    return out
+
+
+def directions(model, spreads, step=1e-4):
+    """``{key: (dp, dS)}``: derivative of the 26 parameters (dict) and of S (2x2 or None) per unit
+    of each input; exact unit vectors for parameter names, central differences for the rest."""
+    from .inputs import get_path
+    p0, S0 = model.build()
+    out = {}
+    for key in spreads:
+        if key in NAMES:
+            out[key] = ({n: float(n == key) for n in NAMES}, None if S0 is None else np.zeros((2, 2)))
+            continue
+        x = get_path(model, key)
+        h = step * abs(x) if x else step
+        (pa, Sa), (pb, Sb) = model.build({key: x + h}), model.build({key: x - h})
+        dp = {n: (getattr(pa, n) - getattr(pb, n)) / (2 * h) for n in NAMES}
+        out[key] = (dp, None if S0 is None else (np.asarray(Sa) - np.asarray(Sb)) / (2 * h))
+    return out
+
+
+def _directional_system(params, S, dp, dS):
+    """:class:`~bikemass.analysis.model.System` at ``params + i h dp``, ``S + i h dS`` (complex step)."""
+    base = values_of(params)
+    values = {n: base[n] + 1j * STEP * dp[n] for n in NAMES}
+    Sc = None if S is None else np.asarray(S, dtype=float) + 1j * STEP * (0 if dS is None else dS)
+    return system(values, Sc)
+
+
+@dataclass(frozen=True)
+class Propagation:
+    """Nominal values and standard deviations; ``linear`` and (if sampled) ``montecarlo`` results."""
+
+    matrices: dict          # {M|C1|K0|K2: {"nominal": 2x2, "std": 2x2}} (method's std)
+    speeds: dict            # {weave_speed|capsize_speed: {"nominal", "std", ...}}
+    eigen: dict             # {"speeds": [...], "modes": {label: {"nominal": complex (n,), "std_re", "std_im"}}}
+    inputs: dict            # {key: {"distribution", "std"}}
+    method: str
+    samples: object = None  # Monte Carlo draws: {"weave_speed": array, "capsize_speed": array} or None
+
+    def to_dict(self):
+        eig = {"speeds": list(map(float, self.eigen["speeds"])), "modes": {
+            label: {"re": m["nominal"].real, "im": m["nominal"].imag, "std_re": m["std_re"],
+                    "std_im": m["std_im"], **({"re_q025": m["re_q025"], "re_q975": m["re_q975"]}
+                                              if "re_q025" in m else {})}
+            for label, m in self.eigen["modes"].items()}}
+        return {"method": self.method, "inputs": self.inputs, "matrices": self.matrices,
+                **self.speeds, "eigenvalues": eig}
+
+
+def linear_derivatives(params, S, dirs, speeds):
+    """``{key: {"matrices": {name: 2x2}, "eig": (n, 4) complex, "weave_speed": float|None, ...}}``
+    and the nominal modes, critical speeds."""
+    from ..stability import follow_modes
+    sys0 = system(values_of(params), S)
+    modes = follow_modes(sys0.canonical(), speeds)
+    X = modes.eigenvectors                                 # (n, 4, 4), columns = labelled modes
+    Y = np.linalg.inv(X)
+    found = critical_speeds(sys0, vmax=max(float(np.max(speeds)), 30.0))
+    crossings = {key: next((c for c in found.crossings if c.kind == kind), None) for key, kind in SPEEDS.items()}
+    v = np.asarray(speeds, dtype=float)
+    out = {}
+    for key, (dp, dS) in dirs.items():
+        sc = _directional_system(params, S, dp, dS)
+        d = {"matrices": {m: np.imag(getattr(sc, m)) / STEP for m in MATRICES}}
+        Minv = np.linalg.inv(sc.M)
+        dK, dK2, dC = (np.imag(Minv @ x) / STEP for x in (sc.K, sc.K2, sc.C1))
+        dA = np.zeros((len(v), 4, 4))
+        dA[:, 2:, :2] = -(dK + v[:, None, None] ** 2 * dK2)
+        dA[:, 2:, 2:] = -v[:, None, None] * dC
+        d["eig"] = np.einsum("nij,njk,nki->ni", Y, dA, X)
+        for name, c in crossings.items():
+            d[name] = None if c is None else speed_derivatives(
+                sys0, {key: np.imag(sc.state_matrix(c.speed)) / STEP}, c.speed, SPEEDS[name], c.frequency)[key]
+        out[key] = d
+    return out, modes, crossings
+
+
+def propagate(model, spreads, method="linear", samples=1000, seed=0, speeds=None, step=1e-4):
+    """:class:`Propagation` of ``spreads`` (``{key: Spread}``) through ``model``
+    (:class:`~bikemass.analysis.inputs.Model`); ``speeds`` (m/s) for the eigenvalue bands."""
+    from ..stability import speed_grid
+    speeds = speed_grid(0, 10, 0.1) if speeds is None else np.asarray(speeds, dtype=float)
+    params, S = model.build()
+    sigma = {k: s.std for k, s in spreads.items()}
+    derivs, modes, crossings = linear_derivatives(params, S, directions(model, spreads, step), speeds)
+    nominal = system(values_of(params), S)
+
+    def rss(get):
+        return np.sqrt(sum((np.asarray(get(derivs[k]), dtype=float) * sigma[k]) ** 2 for k in spreads))
+
+    matrices = {m: {"nominal": np.real(getattr(nominal, m)), "std": rss(lambda d: d["matrices"][m])}
+                for m in MATRICES}
+    speed_out = {}
+    for name, c in crossings.items():
+        speed_out[name] = {"nominal": None if c is None else c.speed,
+                           "std": None if c is None else float(rss(lambda d: d[name]))}
+    eig_modes = {label: {"nominal": modes.eigenvalues[:, i],
+                         "std_re": rss(lambda d: d["eig"][:, i].real),
+                         "std_im": rss(lambda d: d["eig"][:, i].imag)}
+                 for i, label in enumerate(modes.labels)}
+    inputs = {k: {"distribution": s.kind, "std": s.std} for k, s in spreads.items()}
+    if method == "linear":
+        return Propagation(matrices, speed_out, {"speeds": speeds, "modes": eig_modes}, inputs, method)
+    return _montecarlo(model, spreads, samples, seed, speeds, matrices, speed_out, eig_modes, inputs)
+
+
+def _montecarlo(model, spreads, n, seed, speeds, matrices, speed_out, eig_modes, inputs):
+    from ..stability import follow_modes
+    from .inputs import get_path
+    rng = np.random.default_rng(seed)
+    keys = list(spreads)
+    nominal = {k: get_path(model, k) for k in keys}
+    draws = {k: nominal[k] + spreads[k].sample(rng, n) for k in keys}
+    mats = {m: [] for m in MATRICES}
+    crit = {name: [] for name in SPEEDS}
+    reals = []
+    for j in range(n):
+        p, S = model.build({k: float(draws[k][j]) for k in keys})
+        s = system(values_of(p), S)
+        for m in MATRICES:
+            mats[m].append(np.real(getattr(s, m)))
+        found = critical_speeds(s)
+        for name in SPEEDS:
+            v = getattr(found, name)
+            crit[name].append(np.nan if v is None else v)
+        reals.append(follow_modes(s.canonical(), speeds).eigenvalues.real)
+    for m in MATRICES:
+        a = np.array(mats[m])
+        matrices[m] = {**matrices[m], "linear_std": matrices[m]["std"], "std": a.std(axis=0, ddof=1),
+                       "mean": a.mean(axis=0)}
+    samples = {}
+    for name in SPEEDS:
+        a = np.array(crit[name])
+        ok = a[np.isfinite(a)]
+        samples[name] = a
+        speed_out[name] = {"nominal": speed_out[name]["nominal"], "linear_std": speed_out[name]["std"],
+                           "std": float(ok.std(ddof=1)) if ok.size > 1 else None,
+                           "mean": float(ok.mean()) if ok.size else None,
+                           "q025": float(np.quantile(ok, 0.025)) if ok.size else None,
+                           "q975": float(np.quantile(ok, 0.975)) if ok.size else None,
+                           "fraction_without": float(1 - ok.size / n)}
+    reals = np.array(reals)                                  # (n, speeds, 4)
+    for i, label in enumerate(eig_modes):
+        eig_modes[label] = {**eig_modes[label], "re_q025": np.quantile(reals[:, :, i], 0.025, axis=0),
+                            "re_q975": np.quantile(reals[:, :, i], 0.975, axis=0)}
+    return Propagation(matrices, speed_out, {"speeds": speeds, "modes": eig_modes}, inputs, "montecarlo",
+                       samples)
+
+
+def uncertainty_figure(result, title="", size=None):
+    """Real parts against speed with +-2 std bands (linear) and 95 % Monte Carlo bands, and the
+    Monte Carlo histograms of the critical speeds (a matplotlib Figure)."""
+    from matplotlib.figure import Figure
+
+    from ..plots.stability import MODE_COLOURS
+    fig = Figure(figsize=size or (11, 5), layout="constrained")
+    axes = fig.subplots(1, 2, width_ratios=(2, 1))
+    v = result.eigen["speeds"]
+    for label, m in result.eigen["modes"].items():
+        c = MODE_COLOURS.get(label, "k")
+        re = m["nominal"].real
+        axes[0].plot(v, re, color=c, label=label)
+        axes[0].fill_between(v, re - 2 * m["std_re"], re + 2 * m["std_re"], color=c, alpha=0.2, lw=0)
+        if "re_q025" in m:
+            axes[0].plot(v, m["re_q025"], color=c, ls=":", lw=1)
+            axes[0].plot(v, m["re_q975"], color=c, ls=":", lw=1)
+    axes[0].axhline(0, color="k", lw=0.6)
+    axes[0].set_ylim(-10, 10)
+    axes[0].set_xlabel("speed (m/s)")
+    axes[0].set_ylabel("Re(eigenvalue) (1/s)")
+    axes[0].set_title("shaded: linear +-2 std" + ("; dotted: Monte Carlo 95 %" if result.samples else ""))
+    axes[0].legend(loc="lower left", fontsize=8)
+    for name, colour in zip(SPEEDS, ("tab:blue", "tab:red")):
+        s = result.speeds[name]
+        if result.samples is not None and np.isfinite(result.samples[name]).any():
+            a = result.samples[name]
+            axes[1].hist(a[np.isfinite(a)], bins=40, color=colour, alpha=0.5, label=name.replace("_", " "))
+        elif s["nominal"] is not None:
+            axes[1].axvspan(s["nominal"] - 2 * s["std"], s["nominal"] + 2 * s["std"], color=colour,
+                            alpha=0.3, label=f"{name.replace('_', ' ')} +-2 std")
+        if s["nominal"] is not None:
+            axes[1].axvline(s["nominal"], color=colour)
+    axes[1].set_xlabel("critical speed (m/s)")
+    axes[1].legend(fontsize=8)
+    if title:
+        fig.suptitle(title)
+    return fig
