@@ -86,13 +86,26 @@ class CriticalSpeeds:
                 "stable_ranges": [list(r) for r in self.stable], "max_speed": self.vmax}
 
 
-def crossing_candidates(system):
-    """``[(speed, kind, w)]``: every positive speed (m/s) where a root is on the imaginary axis."""
+def _pieces(system):
+    """The speed-independent pieces of the quartic's coefficients (see the module docstring)."""
     M, C1, K, K2 = (np.real(x) for x in (system.M, system.C1, system.K, system.K2))
-    a4, alpha = _det(M), _dot(M, C1)
-    a20, a21 = _dot(M, K), _dot(M, K2) + _det(C1)
-    beta, gamma = _dot(C1, K), _dot(C1, K2)
-    d0, d1, d2 = _det(K), _dot(K, K2), _det(K2)
+    return {"a4": _det(M), "alpha": _dot(M, C1), "a20": _dot(M, K), "a21": _dot(M, K2) + _det(C1),
+            "beta": _dot(C1, K), "gamma": _dot(C1, K2), "d0": _det(K), "d1": _dot(K, K2), "d2": _det(K2)}
+
+
+def quartic(system, v, pieces=None):
+    """Coefficients ``(a4, a3, a2, a1, a0)`` of the characteristic quartic at speed ``v`` (m/s)."""
+    c = pieces or _pieces(system)
+    u = v * v
+    return (c["a4"], v * c["alpha"], c["a20"] + u * c["a21"], v * (c["beta"] + u * c["gamma"]),
+            c["d0"] + u * c["d1"] + u * u * c["d2"])
+
+
+def crossing_candidates(system, pieces=None):
+    """``[(speed, kind, w)]``: every positive speed (m/s) where a root is on the imaginary axis."""
+    c = pieces or _pieces(system)
+    a4, alpha, a20, a21 = c["a4"], c["alpha"], c["a20"], c["a21"]
+    beta, gamma, d0, d1, d2 = c["beta"], c["gamma"], c["d0"], c["d1"], c["d2"]
     out = []
     for u in _quadratic_roots(d2, d1, d0):
         if u > 0:
@@ -108,16 +121,27 @@ def crossing_candidates(system):
     return sorted(out)
 
 
-def unstable_count(system, v):
-    """Number of eigenvalues with Re > 0 at speed ``v`` (m/s)."""
-    return int(np.sum(np.linalg.eigvals(np.real(system.state_matrix(v))).real > 0))
+def unstable_count(coefficients):
+    """Number of roots with Re > 0 of a real quartic (highest power first): sign changes in the
+    first column of the Routh array; ``np.roots`` where that column has a zero."""
+    a4, a3, a2, a1, a0 = coefficients
+    if a3 != 0:
+        b1 = (a3 * a2 - a4 * a1) / a3
+        if b1 != 0:
+            c1 = (b1 * a1 - a3 * a0) / b1
+            if c1 != 0 and a0 != 0:
+                column = np.sign([a4, a3, b1, c1, a0])
+                return int(np.sum(column[1:] != column[:-1]))
+    return int(np.sum(np.roots(coefficients).real > 0))
 
 
 def critical_speeds(system, vmax=30.0):
     """:class:`CriticalSpeeds` of a :class:`~bikemass.analysis.model.System` on ``(0, vmax]`` m/s."""
-    found = [c for c in crossing_candidates(system) if c[0] <= vmax]
+    pieces = _pieces(system)
+    found = [c for c in crossing_candidates(system, pieces) if c[0] <= vmax]
     ends = [0.0] + [c[0] for c in found] + [vmax]
-    counts = [unstable_count(system, (a + b) / 2) if b > a else None for a, b in zip(ends, ends[1:])]
+    counts = [unstable_count(quartic(system, (a + b) / 2, pieces)) if b > a else None
+              for a, b in zip(ends, ends[1:])]
     crossings = []
     for k, (speed, kind, w) in enumerate(found):
         before, after = counts[k], counts[k + 1]

@@ -71,7 +71,7 @@ def system(values, S=None):
 
 def values_of(params):
     """``{name: float}`` of a :class:`~bikemass.parameters.BenchmarkParameters`."""
-    return params.to_dict()
+    return {name: float(getattr(params, name)) for name in NAMES}
 
 
 def matrix_derivatives(params, S=None, names=NAMES):

@@ -47,6 +47,29 @@ def register(sub):
     unc.set_defaults(run=run_uncertainty)
 
 
+    sw = sub.add_parser(
+        "sweep", help="design sweep: critical speeds over a grid or sample of inputs, locally or on a Dask cluster",
+        description="Evaluate every configuration of SPEC.yaml (a bicycle, rider and stiffness, and the inputs "
+                    "to vary: any of the 26 parameters, 'stiffness', or dotted paths into the bicycle or pose "
+                    "YAML; a full grid or a Latin hypercube / Sobol sample) and write OUT/results.csv (and "
+                    "results.parquet), one row per configuration: the varied values, weave_speed, "
+                    "capsize_speed (first crossing of each kind, empty if none), stable_from, stable_to "
+                    "(first strictly stable range), total_mass, error; figures; sobol.json if the spec "
+                    "asks for a global sensitivity analysis. Finished chunks are kept in OUT/chunks: "
+                    "run the same command again to resume. The spec format is in docs/sweeps.md.")
+    sw.add_argument("spec", metavar="SPEC.yaml", help="sweep specification")
+    sw.add_argument("--out", metavar="DIR", required=True, help="output folder (created; reused to resume)")
+    engine = sw.add_mutually_exclusive_group()
+    engine.add_argument("--workers", type=int, metavar="N",
+                        help="run on a local Dask cluster of N single-threaded worker processes")
+    engine.add_argument("--scheduler", metavar="ADDRESS",
+                        help="run on an existing Dask distributed cluster (e.g. tcp://10.0.0.5:8786)")
+    sw.add_argument("--plot-format", default="png", metavar="EXT", help="figure format (default png)")
+    sw.add_argument("--quiet", action="store_true", help="no progress bar or summary")
+    add_figure_options(sw)
+    sw.set_defaults(run=run_sweep_command)
+
+
 def _bike_options(p):
     p.add_argument("bike", metavar="BIKE", help="shipped bicycle name, bicycle YAML or parameter file")
     p.add_argument("--rider", metavar="POSE", default="none",
@@ -205,3 +228,45 @@ def uncertainty_table(result, title):
         heads += ["std (linear)", "MC mean", "MC 2.5 %", "MC 97.5 %", "none found"]
     lines.append(table(heads, rows, floatfmt="{:.6g}"))
     return "\n".join(lines)
+
+
+def run_sweep_command(args):
+    import os
+
+    from ..errors import InputError
+    from ..output import dumps, write_atomic
+    from ..progress import Progress
+    from ..sweep import read_spec, run_sweep
+    from ..sweep.figures import sweep_figures
+
+    spec = read_spec(args.spec)
+    if args.workers is not None and not 1 <= args.workers <= 4 * (os.cpu_count() or 1):
+        raise InputError("--workers", args.workers, f"from 1 to {4 * (os.cpu_count() or 1)} worker processes "
+                         "(4 per core at most)")
+    require_for_sweep(args)
+    options = figure_options(args, f"x.{args.plot_format}")
+    total = len(spec.configurations())
+    with Progress(total, "sweep") as bar:
+        if args.quiet:
+            bar.enabled = False
+        rows = run_sweep(spec, args.out, args.workers, args.scheduler, progress=lambda n: bar.step(n=n))
+    from pathlib import Path
+    out = Path(args.out)
+    for stem, fig in sweep_figures(rows, spec, options.size).items():
+        write_figure(fig, out / f"{stem}.{args.plot_format}", options)
+    if spec.global_sensitivity:
+        from ..sweep.sobol import sobol_indices
+        write_atomic(out / "sobol.json", dumps(sobol_indices(rows, spec), "json"))
+    if not args.quiet:
+        errors = sum(1 for r in rows if r["error"])
+        print(f"{len(rows)} configurations -> {out / 'results.csv'}"
+              + (f" ({errors} refused by the model: see the error column)" if errors else ""))
+    return 0
+
+
+def require_for_sweep(args):
+    """The packages the chosen engine needs (one clear line if missing)."""
+    from ..sweep.run import require
+    require("threadpoolctl")
+    if args.workers is not None or args.scheduler is not None:
+        require("distributed")

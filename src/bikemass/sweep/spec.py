@@ -1,0 +1,166 @@
+"""The sweep specification (YAML) and the configurations it describes.
+
+```yaml
+bike: benchmark            # as BIKE on the command line
+rider: none                # optional, as --rider
+stiffness: infinite        # optional, as --stiffness
+combine: exact             # optional
+max_speed: 30              # optional: critical speeds on (0, max_speed] m/s
+vary:                      # key -> list of values, or {from, to, num}
+  c: {from: 0.0, to: 0.2, num: 41}
+  lam: [0.2, 0.3, 0.4]
+sample: grid               # grid (default), or {method: lhs | sobol, n: 64, seed: 0}
+global_sensitivity: false  # true: Saltelli sample (SALib) of n base points and Sobol indices
+chunk: 50                  # configurations per task (optional)
+```
+
+Keys are those of :mod:`bikemass.analysis.inputs` (the 26 parameters, ``stiffness``,
+dotted paths into the bicycle or pose YAML).
+"""
+
+import hashlib
+import itertools
+import json
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..config import load_yaml
+
+SAMPLE_METHODS = ("grid", "lhs", "sobol")
+TOP_KEYS = ("bike", "rider", "stiffness", "combine", "max_speed", "vary", "sample", "global_sensitivity",
+            "chunk", "name", "description")
+MAX_CONFIGURATIONS = 10 ** 7
+
+
+@dataclass(frozen=True)
+class Variable:
+    """One varied key: ``values`` (a list) or a range ``low..high`` with ``num`` points."""
+
+    key: str
+    values: tuple = None
+    low: float = None
+    high: float = None
+    num: int = None
+
+    def grid(self):
+        return self.values if self.values is not None else tuple(np.linspace(self.low, self.high, self.num).tolist())
+
+    def from_unit(self, u):
+        """Map ``u`` in [0, 1) to a value: uniform on the range, or an element of the list."""
+        if self.values is not None:
+            return self.values[min(int(u * len(self.values)), len(self.values) - 1)]
+        return float(self.low + u * (self.high - self.low))
+
+
+@dataclass(frozen=True)
+class SweepSpec:
+    source: str
+    bike: str
+    rider: str
+    stiffness: str
+    combine: str
+    max_speed: float
+    variables: tuple
+    method: str
+    n: int
+    seed: int
+    global_sensitivity: bool
+    chunk: int
+
+    @property
+    def keys(self):
+        return tuple(v.key for v in self.variables)
+
+    def configurations(self):
+        """List of ``{key: value}`` in a fixed order (the rows of results.csv)."""
+        if self.global_sensitivity:
+            from SALib.sample import sobol
+            x = sobol.sample(self.problem(), self.n, calc_second_order=False, seed=self.seed)
+            return [dict(zip(self.keys, map(float, row))) for row in x]
+        if self.method == "grid":
+            return [dict(zip(self.keys, combo)) for combo in itertools.product(*(v.grid() for v in self.variables))]
+        from scipy.stats import qmc
+        d = len(self.variables)
+        engine = qmc.LatinHypercube(d=d, seed=self.seed) if self.method == "lhs" else qmc.Sobol(d=d, seed=self.seed)
+        u = engine.random(self.n)
+        return [{v.key: v.from_unit(x) for v, x in zip(self.variables, row)} for row in u]
+
+    def problem(self):
+        """SALib problem definition (ranges only)."""
+        return {"num_vars": len(self.variables), "names": list(self.keys),
+                "bounds": [[v.low, v.high] for v in self.variables]}
+
+    def fingerprint(self):
+        """Hash of everything that decides the results (a resumed sweep must match it)."""
+        doc = {k: getattr(self, k) for k in ("bike", "rider", "stiffness", "combine", "max_speed", "method", "n",
+                                            "seed", "global_sensitivity", "chunk")}
+        doc["variables"] = [v.__dict__ for v in self.variables]
+        return hashlib.sha256(json.dumps(doc, sort_keys=True, default=str).encode()).hexdigest()[:16]
+
+
+def _variable(key, node):
+    if isinstance(node.value, list):
+        if not node.value:
+            node.fail("a non-empty list of values, or {from, to, num}")
+        values = tuple(v.string() if isinstance(v.value, str) and key == "stiffness" else v.number()
+                       for v in node.elements())
+        return Variable(key, values=values)
+    if key == "stiffness":
+        node.fail("a list of stiffness choices (infinite, steel, titanium, aluminum or files)")
+    node.check_keys(required=("from", "to"), optional=("num",))
+    low, high = node["from"].number(), node["to"].number()
+    if not (np.isfinite(low) and np.isfinite(high) and low < high):
+        node.fail("from < to, both finite")
+    num = int(node["num"].number(positive=True)) if node.has("num") else None
+    if num is not None and (num != node["num"].number() or num < 2):
+        node.fail("a whole number of points, at least 2", "num")
+    return Variable(key, low=low, high=high, num=num)
+
+
+def _near(spec_path, name):
+    """A file named relative to the spec file, if it exists there; else the name as given."""
+    from pathlib import Path
+    here = Path(spec_path).parent / name
+    return str(here.resolve()) if here.is_file() else name
+
+
+def read_spec(path):
+    """:class:`SweepSpec` of a YAML file; InputError naming the key on bad input."""
+    node = load_yaml(path)
+    node.check_keys(required=("bike", "vary"), optional=TOP_KEYS)
+    vary = node["vary"]
+    if not vary.mapping():
+        vary.fail("at least one key to vary")
+    variables = tuple(_variable(str(k), item) for k, item in vary.items())
+    method, n, seed = "grid", None, 0
+    if node.has("sample") and node["sample"].value != "grid":
+        s = node["sample"]
+        s.check_keys(required=("method", "n"), optional=("seed",))
+        method = s["method"].string(SAMPLE_METHODS[1:])
+        n = s["n"].number(positive=True)
+        if n != int(n) or n > MAX_CONFIGURATIONS:
+            s.fail(f"a whole number of samples up to {MAX_CONFIGURATIONS}", "n")
+        n = int(n)
+        seed = int(s["seed"].number(nonnegative=True)) if s.has("seed") else 0
+    gsa = node["global_sensitivity"].boolean() if node.has("global_sensitivity") else False
+    for v in variables:
+        if v.values is None and v.num is None and method == "grid" and not gsa:
+            vary.fail("num (the number of grid points) for a grid", f"{v.key}.num")
+        if gsa and v.values is not None:
+            vary.fail("{from, to} ranges for a global sensitivity analysis", v.key)
+    if gsa and n is None:
+        node.fail("sample: {method: sobol, n: N} (N base points of the Saltelli sample)", "global_sensitivity")
+    max_speed = node["max_speed"].number(positive=True) if node.has("max_speed") else 30.0
+    chunk = node["chunk"].number(positive=True) if node.has("chunk") else 50
+    spec = SweepSpec(
+        source=str(path), bike=_near(path, node["bike"].string()),
+        rider=_near(path, node["rider"].string()) if node.has("rider") else "none",
+        stiffness=node["stiffness"].string() if node.has("stiffness") else "infinite",
+        combine=node["combine"].string(("exact", "thesis")) if node.has("combine") else "exact",
+        max_speed=float(max_speed), variables=variables, method=method, n=n, seed=seed,
+        global_sensitivity=gsa, chunk=int(chunk))
+    count = int(np.prod([len(v.grid()) for v in variables])) if method == "grid" and not gsa else n
+    if count > MAX_CONFIGURATIONS:
+        vary.fail(f"at most {MAX_CONFIGURATIONS} configurations (this grid has {count})")
+    return spec

@@ -1,0 +1,153 @@
+"""Sweeps: identical tables from every engine, values equal to independent stability runs,
+resuming, samples, Sobol indices, geometry-level inputs, bad specs."""
+
+import csv
+import json
+
+import numpy as np
+import pytest
+
+from bikemass import catalog
+from bikemass.cli import main
+from bikemass.stability import canonical_matrices, stability
+
+GRID = """bike: benchmark
+vary:
+  c: {from: 0.04, to: 0.12, num: 4}
+  lam: [0.25, 0.314159265358979, 0.4]
+chunk: 5
+"""
+
+
+def _spec(tmp_path, text, name="spec.yaml"):
+    path = tmp_path / name
+    path.write_text(text)
+    return str(path)
+
+
+def _rows(folder):
+    with open(folder / "results.csv") as fh:
+        return list(csv.DictReader(fh))
+
+
+def test_engines_give_identical_tables(tmp_path):
+    """In-process, --workers 1, --workers 2 (worker processes) and --scheduler (the address of a
+    LocalCluster started here, in-process workers for a quick start): the same bytes in results.csv."""
+    from distributed import LocalCluster
+    spec = _spec(tmp_path, GRID)
+    assert main(["sweep", spec, "--out", str(tmp_path / "serial"), "--quiet"]) == 0
+    assert main(["sweep", spec, "--out", str(tmp_path / "w1"), "--workers", "1", "--quiet"]) == 0
+    assert main(["sweep", spec, "--out", str(tmp_path / "w2"), "--workers", "2", "--quiet"]) == 0
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None,
+                      silence_logs=40) as cluster:
+        assert main(["sweep", spec, "--out", str(tmp_path / "sched"), "--scheduler",
+                     cluster.scheduler_address, "--quiet"]) == 0
+    ref = (tmp_path / "serial" / "results.csv").read_bytes()
+    for name in ("w1", "w2", "sched"):
+        assert (tmp_path / name / "results.csv").read_bytes() == ref, name
+    rows = _rows(tmp_path / "serial")
+    assert len(rows) == 12 and list(rows[0]) == ["c", "lam", "weave_speed", "capsize_speed", "stable_from",
+                                                 "stable_to", "total_mass", "error"]
+    import pyarrow.parquet as pq
+    table = pq.read_table(tmp_path / "serial" / "results.parquet")
+    np.testing.assert_array_equal(table.column("weave_speed").to_numpy(),
+                                  [float(r["weave_speed"]) for r in rows])
+
+
+def test_rows_equal_independent_stability_runs(tmp_path):
+    """Every row's critical speeds and strict stable range equal bikemass.stability (tracked modes,
+    brentq) on the benchmark with that c and lam, to 1e-9 m/s."""
+    spec = _spec(tmp_path, GRID)
+    assert main(["sweep", spec, "--out", str(tmp_path / "o"), "--quiet"]) == 0
+    p = catalog.parameters("benchmark")
+    for row in _rows(tmp_path / "o"):
+        s = stability(canonical_matrices(p.replace(c=float(row["c"]), lam=float(row["lam"]))))
+        crossings = sorted((v, label) for label, cs in s.crossings.items() for v, _ in cs)
+        assert float(row["weave_speed"]) == pytest.approx(s.weave_speeds[0], abs=1e-9)
+        first_real = min(s.capsize_speeds)
+        assert float(row["capsize_speed"]) == pytest.approx(first_real, abs=1e-9)
+        strict = s.ranges["strict"]["exact"][0]
+        assert [float(row["stable_from"]), float(row["stable_to"])] == pytest.approx(strict, abs=1e-9)
+        assert float(row["total_mass"]) == pytest.approx(p.mR + p.mB + p.mH + p.mF)
+        assert crossings
+
+
+def test_resume_recomputes_only_missing_chunks(tmp_path):
+    from bikemass.sweep import read_spec, run_sweep
+    spec = read_spec(_spec(tmp_path, GRID))
+    out = tmp_path / "o"
+    first = run_sweep(spec, out)
+    (out / "chunks" / "000001.json").unlink()
+    (out / "results.csv").unlink()
+    done = []
+    second = run_sweep(spec, out, progress=done.append)
+    assert done == [7, 5] and second == first        # 7 configurations kept, one chunk of 5 recomputed
+    other = _spec(tmp_path, GRID.replace("num: 4", "num: 5"), "other.yaml")
+    assert main(["sweep", other, "--out", str(out), "--quiet"]) == 2
+
+
+def test_latin_hypercube_and_sobol_indices(tmp_path, capsys):
+    lhs = _spec(tmp_path, """bike: benchmark
+vary: {c: {from: 0.05, to: 0.1}, mB: {from: 80, to: 90}}
+sample: {method: lhs, n: 20, seed: 3}
+""")
+    assert main(["sweep", lhs, "--out", str(tmp_path / "lhs"), "--quiet"]) == 0
+    rows = _rows(tmp_path / "lhs")
+    c = sorted(float(r["c"]) for r in rows)
+    assert len(rows) == 20 and 0.05 <= c[0] and c[-1] <= 0.1
+    # Latin hypercube: exactly one sample in each of the 20 strata of c
+    assert sorted(int((x - 0.05) / 0.05 * 20) for x in c) == list(range(20))
+    gsa = _spec(tmp_path, """bike: benchmark
+vary: {c: {from: 0.06, to: 0.1}, IByy: {from: 9, to: 12}}
+sample: {method: sobol, n: 32, seed: 1}
+global_sensitivity: true
+""", "gsa.yaml")
+    assert main(["sweep", gsa, "--out", str(tmp_path / "gsa"), "--quiet"]) == 0
+    sobol = json.loads((tmp_path / "gsa" / "sobol.json").read_text())
+    assert len(_rows(tmp_path / "gsa")) == 32 * (2 + 2)          # Saltelli, first order: N (D + 2)
+    for out in ("weave_speed", "capsize_speed"):
+        assert sobol[out]["IByy"]["ST"] == 0                     # IByy does not enter the model
+        assert sobol[out]["c"]["ST"] > 0.9 and sobol[out]["c"]["S1"] > 0.9
+
+
+def test_geometry_level_sweep_changes_with_the_walls(tmp_path):
+    """Jamis tube walls (seat stays, chain stays), steel frame (beam S), Relaxed rider."""
+    spec = _spec(tmp_path, """bike: jamis
+rider: relaxed
+stiffness: steel
+vary:
+  sections.seat_stay.wall: [0.0005, 0.001016, 0.002]
+  sections.chain_stay.wall: [0.001016, 0.002]
+""")
+    assert main(["sweep", spec, "--out", str(tmp_path / "g"), "--quiet"]) == 0
+    rows = _rows(tmp_path / "g")
+    assert len(rows) == 6 and not any(r["error"] for r in rows)
+    for col in ("weave_speed", "capsize_speed", "total_mass"):
+        values = [float(r[col]) for r in rows]
+        assert len(set(values)) == 6, col
+    nominal = next(r for r in rows if float(r["sections.seat_stay.wall"]) == 0.001016
+                   and float(r["sections.chain_stay.wall"]) == 0.001016)
+    from bikemass.analysis.crossings import critical_speeds
+    from bikemass.analysis.model import system, values_of
+    p, S = catalog.parameters("jamis", "relaxed"), catalog.stiffness("jamis", "steel")
+    ref = critical_speeds(system(values_of(p), S))
+    assert float(nominal["weave_speed"]) == pytest.approx(ref.weave_speed, abs=1e-9)
+    assert (tmp_path / "g" / "heatmap.png").stat().st_size > 10000
+
+
+@pytest.mark.parametrize("text, key", [
+    ("bike: benchmark\nvary: {}\n", "vary"),
+    ("bike: benchmark\nvary: {c: {from: 1, to: 0, num: 3}}\n", "vary.c"),
+    ("bike: benchmark\nvary: {c: {from: 0, to: 1}}\n", "vary.c.num"),
+    ("bike: benchmark\nvary: {c: [0.1]}\nsample: {method: magic, n: 3}\n", "sample.method"),
+    ("bike: benchmark\nvary: {c: {from: 0, to: 1, num: 100000}, lam: {from: 0, to: 1, num: 1000}}\n", "vary"),
+    ("bike: benchmark\nvary: {c: [0.1]}\nextra: 1\n", "extra"),
+    ("bike: jamis\nvary: {sections.nope.wall: [0.001]}\n", "sections.nope.wall"),
+    ("bike: benchmark\nvary: {rider.chain.torso_lean: [10]}\n", "rider.chain.torso_lean"),
+])
+def test_bad_specs_one_line(tmp_path, capsys, text, key):
+    spec = _spec(tmp_path, text)
+    assert main(["sweep", spec, "--out", str(tmp_path / "o"), "--quiet"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and key in err[0], err
+    assert not (tmp_path / "o" / "results.csv").exists()
