@@ -16,6 +16,7 @@ configuration that shares them.
 """
 
 import copy
+import pickle
 from collections import OrderedDict
 
 from ..config import Node, load_yaml
@@ -25,6 +26,7 @@ from ..parameters import NAMES
 RIDER_PREFIX = "rider."
 STIFFNESS_KEY = "stiffness"
 CACHE_SIZE = 32
+PART_CACHE_SIZE = 4096
 
 
 def _lru(cache, key, build):
@@ -137,8 +139,9 @@ class Model:
         if rider not in (None, "none"):
             rpath = resolve(rider, poses_dir(), "pose")
             self._rider_source, self._rider_doc = str(rpath), load_yaml(rpath).value
-        self._bicycles, self._bodies, self._riders, self._stiffness, self._params = (
-            OrderedDict() for _ in range(5))
+        self._bicycles, self._bodies, self._riders, self._stiffness, self._params, self._parts = (
+            OrderedDict() for _ in range(6))
+        self._materials = None
 
     # -- pieces, each cached by its own changes -------------------------------------------
     def _document(self, doc, changes, source):
@@ -185,19 +188,40 @@ class Model:
             riders = self.rider_bodies(rider_changes)
             if riders is None and bicycle.published is not None:
                 return bicycle.published
-            bodies = _lru(self._bodies, bike_changes, lambda: bicycle.bodies(self.method))
+            bodies = _lru(self._bodies, bike_changes, lambda: self._bicycle_bodies(bicycle))
             return parameters_from_bodies(bicycle, merge_rider(bodies, riders or {}, self.combine))
         return _lru(self._params, (bike_changes, rider_changes), build)
+
+    def _bicycle_bodies(self, bicycle):
+        """``bicycle.bodies(method)`` with each part's mass properties (its mesh) computed once per
+        distinct part: a changed tube wall re-meshes only the tubes of that section."""
+        from ..bicycle.model import BODIES
+        from ..inertia import combine
+
+        def props(part):
+            key = pickle.dumps((part.name, part.solid, part.mass, part.placement, part.body))
+            cached = self._parts.get(key)
+            if cached is None:
+                cached = self._parts[key] = part.mass_properties(self.method)
+                if len(self._parts) > PART_CACHE_SIZE:
+                    self._parts.popitem(last=False)
+            return cached
+        return {b: combine(props(p) for p in bicycle.body_parts(b)) for b in BODIES}
+
+    def materials(self):
+        if self._materials is None:
+            from ..materials import load_materials
+            self._materials = load_materials()
+        return self._materials
 
     def frame_stiffness(self, which, bike_changes=()):
         """2x2 S (N m/rad) or None, for stiffness choice ``which`` on the changed bicycle."""
         def build():
             from .. import catalog
-            from ..materials import load_materials
-            if which in (None, "infinite", "rigid") or which not in load_materials():
+            if which in (None, "infinite", "rigid") or which not in self.materials():
                 return catalog.stiffness(self.bike, which)
             bicycle = self.bicycle(bike_changes)
-            material = load_materials()[which]
+            material = self.materials()[which]
             S = None if bike_changes else bicycle.published_stiffness(material)
             if S is None and bicycle.structure is not None:
                 from ..fe import equivalent_stiffness
