@@ -30,6 +30,8 @@ _API = {
     "plot_eigenvalues": "plots.stability", "plot_critical_speeds": "plots.critical_speeds",
     "plot_side_view": "bicycle.drawing", "plot_pose": "plots.pose", "plot_frame_modes": "fe.plot",
     "save_figure": "plots.figure", "geometry_chart": "bicycle.derived_chart", "plot_chart": "bicycle.chart_drawing",
+    "sensitivity": "analysis.sensitivity", "geometry_sensitivity": "analysis.sensitivity",
+    "uncertainty": "analysis.uncertainty", "sweep": "sweep",
     "Combine": "choices", "Method": "choices", "Overlap": "choices", "Procedure": "choices",
     "Beam": "choices", "Source": "choices", "Support": "choices", "MaterialName": "choices",
     "Grip": "choices", "EigenPart": "choices", "Format": "choices",
@@ -40,7 +42,7 @@ _API = {
 }
 """Public name -> the module (under ``bikemass``) that defines it."""
 
-_RENAMED = {"PARAMETER_NAMES": "NAMES"}
+_RENAMED = {"PARAMETER_NAMES": "NAMES", "sweep": "run_sweep"}
 
 __all__ = ["__version__", *_API]
 

@@ -40,51 +40,38 @@ def _lru(cache, key, build):
     return value
 
 
-def set_path(document, path, value, source, origin="spec"):
-    """Set dotted ``path`` in the nested mapping ``document`` (in place) to ``value``."""
+def _slot(node, step):
+    """The key or index of ``step`` in a mapping or list ``node``, or ``None``."""
+    if isinstance(node, dict):
+        return step if step in node else None
+    if isinstance(node, list):
+        named = [k for k, e in enumerate(node) if isinstance(e, dict) and e.get("name") == step]
+        if named:
+            return named[0]
+        return int(step) if step.isdigit() and int(step) < len(node) else None
+    return None
+
+
+def _walk(document, path, source, origin, parent=False):
+    """The value at dotted ``path`` (or, with ``parent``, its container and slot)."""
     steps = path.split(".")
     node = document
     for i, step in enumerate(steps):
-        where = ".".join(steps[:i]) or "(top)"
-        last = i == len(steps) - 1
-        if isinstance(node, dict):
-            if step not in node:
-                raise InputError(origin, path, f"a key path into {source}: no {step!r} under {where} "
-                                 f"(has: {', '.join(map(str, node))})")
-            if last:
-                node[step] = value
-            else:
-                node = node[step]
-        elif isinstance(node, list):
-            named = [k for k, e in enumerate(node) if isinstance(e, dict) and e.get("name") == step]
-            index = named[0] if named else int(step) if step.isdigit() and int(step) < len(node) else None
-            if index is None:
-                raise InputError(origin, path, f"a key path into {source}: no element named {step!r} "
-                                 f"in the list {where}")
-            if last:
-                node[index] = value
-            else:
-                node = node[index]
-        else:
-            raise InputError(origin, path, f"a key path into {source}: {where} is a value, not a mapping")
-
-
-def _walk(document, path, source, origin):
-    node = document
-    for step in path.split("."):
-        if isinstance(node, dict) and step in node:
-            node = node[step]
-        elif isinstance(node, list):
-            named = [e for e in node if isinstance(e, dict) and e.get("name") == step]
-            if named:
-                node = named[0]
-            elif step.isdigit() and int(step) < len(node):
-                node = node[int(step)]
-            else:
-                raise InputError(origin, path, f"a key path into {source}: no element {step!r}")
-        else:
-            raise InputError(origin, path, f"a key path into {source}: no {step!r}")
+        slot = _slot(node, step)
+        if slot is None:
+            where = ".".join(steps[:i]) or "(top)"
+            has = f" (has: {', '.join(map(str, node))})" if isinstance(node, dict) else ""
+            raise InputError(origin, path, f"a key path into {source}: no {step!r} under {where}{has}")
+        if parent and i == len(steps) - 1:
+            return node, slot
+        node = node[slot]
     return node
+
+
+def set_path(document, path, value, source, origin="spec"):
+    """Set dotted ``path`` in the nested mapping ``document`` (in place) to ``value``."""
+    container, slot = _walk(document, path, source, origin, parent=True)
+    container[slot] = value
 
 
 def get_path(model, key):

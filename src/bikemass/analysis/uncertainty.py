@@ -169,6 +169,15 @@ def propagate(model, spreads, method="linear", samples=1000, seed=0, speeds=None
     return _montecarlo(model, spreads, samples, seed, speeds, matrices, speed_out, eig_modes, inputs)
 
 
+def uncertainty(bike, spreads, rider=None, stiffness="infinite", combine="exact", method="linear",
+                samples=1000, seed=0, speeds=None):
+    """:class:`Propagation` for a bicycle (name or file), rider and stiffness choice; ``spreads``
+    maps input keys to a standard deviation (normal) or a :class:`Spread`."""
+    from .inputs import Model
+    spreads = {k: v if isinstance(v, Spread) else Spread("normal", float(v)) for k, v in spreads.items()}
+    return propagate(Model(bike, rider, stiffness, combine), spreads, method, samples, seed, speeds)
+
+
 def _montecarlo(model, spreads, n, seed, speeds, matrices, speed_out, eig_modes, inputs):
     from ..stability import follow_modes
     from .inputs import get_path

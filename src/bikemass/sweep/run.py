@@ -65,12 +65,16 @@ def _save_chunk(out, i, rows):
 
 
 def run_sweep(spec, out, workers=None, scheduler=None, progress=None):
-    """Evaluate every configuration of ``spec`` into folder ``out``; returns the result rows.
+    """Evaluate every configuration of ``spec`` (a :class:`~bikemass.sweep.spec.SweepSpec` or a spec
+    file) into folder ``out``; returns the result rows (dicts, one per configuration).
 
     ``workers``: a local Dask cluster of that many single-threaded worker processes;
     ``scheduler``: the address of a running Dask scheduler; neither: this process.
     ``progress(n)`` is called with the number of configurations finished by each chunk.
     """
+    if not hasattr(spec, "configurations"):
+        from .spec import read_spec
+        spec = read_spec(spec)
     check_keys(spec)
     out = _prepare(spec, out)
     configurations = spec.configurations()
