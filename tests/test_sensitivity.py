@@ -16,15 +16,15 @@ from bikemass.stability import canonical_matrices, speed_grid, stability, with_f
 GRID = speed_grid(0, 8, 0.05)
 
 
-def _brentq_speeds(params):
-    """Weave and capsize speeds from the tracked-mode root finder of bikemass.stability (brentq)."""
+def _tracked_speeds(params):
+    """Weave and capsize speeds from the tracked-mode root finder of bikemass.stability."""
     s = stability(canonical_matrices(params), GRID)
     return s.weave_speeds[0], s.capsize_speeds[0]
 
 
 def test_benchmark_52_derivatives_equal_central_differences(capsys):
     """All 52 derivatives of `bikemass sensitivity benchmark --format json` equal central
-    differences (relative step 1e-5) of speeds found by brentq on tracked eigenvalues, to 1e-4
+    differences (relative step 1e-5) of speeds found by root finding on the tracked eigenvalues, to 1e-4
     relative.  Derivatives that are zero by the physics (IByy, IHyy; the capsize speed does not
     depend on the inertias that only enter M) are held to 1e-6 in elasticity: FD noise is ~1e-9."""
     assert main(["sensitivity", "benchmark", "--format", "json"]) == 0
@@ -35,7 +35,7 @@ def test_benchmark_52_derivatives_equal_central_differences(capsys):
     for name in NAMES:
         x = getattr(p, name)
         h = 1e-5 * abs(x)
-        hi, lo = _brentq_speeds(p.replace(**{name: x + h})), _brentq_speeds(p.replace(**{name: x - h}))
+        hi, lo = _tracked_speeds(p.replace(**{name: x + h})), _tracked_speeds(p.replace(**{name: x - h}))
         for k, key in enumerate(("weave_speed", "capsize_speed")):
             fd = (hi[k] - lo[k]) / (2 * h)
             exact = doc["d_" + key][name]
@@ -84,13 +84,15 @@ def test_matrix_derivatives_complex_step_equal_differences():
     ("benchmark", None, "infinite"), ("jamis-thesis", None, "aluminum"),
     ("cargo-loaded-thesis", None, "infinite"), ("jamis-thesis", None, "infinite")])
 def test_closed_form_crossings_equal_tracked_roots(bike, rider, stiffness):
-    """The quadratic-in-v^2 crossings equal every Re = 0 crossing of bikemass.stability (brentq on
-    tracked modes, 0.05 grid) to 1e-9 m/s, and the strict stable ranges agree."""
+    """The quadratic-in-v^2 crossings equal every Re = 0 crossing of bikemass.stability (root
+    finding on tracked modes, 0.05 grid) to 1e-9 m/s with the same kind (oscillatory/real) and
+    direction, and the strict stable ranges agree."""
     p, S = catalog.parameters(bike, rider), catalog.stiffness(bike, stiffness)
     ref = stability(with_frame_stiffness(canonical_matrices(p), S))
     mine = critical_speeds(system(values_of(p), S))
-    tracked = sorted({round(s, 9) for c in ref.crossings.values() for s, _ in c})
-    np.testing.assert_allclose([c.speed for c in mine.crossings], tracked, atol=1e-9)
+    tracked = sorted({(round(c.speed, 9), c.kind, c.direction) for c in ref.crossings})
+    assert [(c.kind, c.direction) for c in mine.crossings] == [t[1:] for t in tracked]
+    np.testing.assert_allclose([c.speed for c in mine.crossings], [t[0] for t in tracked], atol=1e-9)
     np.testing.assert_allclose(np.array(mine.stable, dtype=float).reshape(-1, 2),
                                np.array(ref.ranges["strict"]["exact"], dtype=float).reshape(-1, 2), atol=1e-9)
 
