@@ -1,62 +1,46 @@
-"""Uncertainty propagation: linear against the `uncertainties` package (through BicycleParameters'
-own canonical-matrix formulas), Monte Carlo against linear where both should agree."""
+"""Uncertainty propagation: linear against BicycleParameters' own (the `uncertainties` package),
+Monte Carlo against linear where both should agree."""
 
 import json
+from pathlib import Path
 
+import bicycleparameters
 import numpy as np
 import pytest
-from bicycleparameters.bicycle import benchmark_par_to_canonical
-from uncertainties import ufloat, unumpy
+from uncertainties import unumpy
 
 from bikemass import catalog
 from bikemass.analysis.inputs import Model
 from bikemass.analysis.uncertainty import Spread, propagate
 from bikemass.cli import main
-from bikemass.parameters import NAMES
 
-# BicycleParameters' Browser (BrowserBenchmark.txt): nominal +/- std of every parameter
-BROWSER = {
-    "IBxx": (0.5296, 0.00247550148476), "IBxz": (-0.1163, 0.00114783359707), "IByy": (1.3164, 0.00400774617153),
-    "IBzz": (0.7568, 0.00330394515109), "IFxx": (0.0884, 0.00035969731805), "IFyy": (0.1492, 0.00151585483097),
-    "IHxx": (0.2534, 0.00126852786611), "IHxz": (-0.0720, 0.000790281755242), "IHyy": (0.2458, 0.00299166644562),
-    "IHzz": (0.0956, 0.000737521114809), "IRxx": (0.0904, 0.000367953786506), "IRyy": (0.1524, 0.00113908424669),
-    "c": (0.0686, 0.00169464113488), "g": (9.81, 0.01), "lam": (0.399680398707, 0.00349065850399),
-    "mB": (9.9, 0.02), "mF": (2.0, 0.02), "mH": (3.2, 0.02), "mR": (3.1, 0.02), "rF": (0.344, 0.000122426879301),
-    "rR": (0.341, 0.000122426879301), "w": (1.121, 0.002), "xB": (0.274, 0.00309782583552),
-    "xH": (0.867, 0.003842300035), "zB": (-0.538, 0.00265022978777), "zH": (-0.748, 0.00263543623177)}
+BP_DATA = Path(bicycleparameters.__file__).parent / "app-data"
+BROWSER = BP_DATA / "bicycles" / "Browser" / "Parameters" / "BrowserBenchmark.txt"
 
 
-@pytest.fixture()
-def browser(tmp_path):
-    bike = tmp_path / "browser.yaml"
-    bike.write_text("\n".join(f"{k}: {v[0]!r}" for k, v in BROWSER.items()) + "\n")
-    std = tmp_path / "browser_std.yaml"
-    std.write_text("uncertainty:\n" + "\n".join(f"  {k}: {v[1]!r}" for k, v in BROWSER.items()) + "\n")
-    return str(bike), str(std)
-
-
-def test_linear_matrix_std_equals_uncertainties_package(browser, capsys):
-    """`bikemass uncertainty --method linear --format json`: std of M, C1, K0, K2 equal the
-    `uncertainties` package's propagation through BicycleParameters' formulas to 1e-6 relative."""
-    bike, std = browser
-    assert main(["uncertainty", bike, "--std", std, "--format", "json"]) == 0
+def test_linear_matrix_std_equals_bicycleparameters(capsys):
+    """`bikemass uncertainty BrowserBenchmark.txt --method linear --format json` (the file as
+    BicycleParameters ships it, +/- values read): std of M, C1, K0, K2 equal BicycleParameters'
+    own propagation (Bicycle.canonical(), the `uncertainties` package) to 1e-6 relative."""
+    peer = bicycleparameters.Bicycle("Browser", pathToData=str(BP_DATA)).canonical()
+    capsys.readouterr()
+    assert main(["uncertainty", str(BROWSER), "--method", "linear", "--format", "json"]) == 0
     doc = json.loads(capsys.readouterr().out)
-    peer = benchmark_par_to_canonical({k: ufloat(*v) for k, v in BROWSER.items()})
     for name, U in zip(("M", "C1", "K0", "K2"), peer):
         ref = unumpy.std_devs(U)
         np.testing.assert_allclose(doc["matrices"][name]["std"], ref, rtol=1e-6, atol=1e-15)
         np.testing.assert_allclose(doc["matrices"][name]["nominal"], unumpy.nominal_values(U), rtol=1e-12)
+    assert len(doc["inputs"]) == 26 and doc["inputs"]["g"]["std"] == 0.01
     assert doc["weave_speed"]["nominal"] == pytest.approx(4.2147, abs=1e-4)
     assert 0.03 < doc["weave_speed"]["std"] < 0.1
 
 
-def test_montecarlo_agrees_with_linear_for_small_spreads(browser):
+def test_montecarlo_agrees_with_linear_for_small_spreads():
     """Seeded; with the Browser's small spreads the outputs are near-linear: MC std within about
     3 times its sampling error (~4.5 % at 500 samples) of the linear std; the MC mean within 3
     standard errors of the nominal value plus 5 % of a std for the second-order bias."""
-    bike, _ = browser
-    spreads = {k: Spread("normal", v[1]) for k, v in BROWSER.items()}
-    model = Model(bike)
+    model = Model(str(BROWSER))
+    spreads = {k: Spread("normal", v) for k, v in model.file_std.items()}
     mc = propagate(model, spreads, "montecarlo", samples=500, seed=7, speeds=np.linspace(0, 8, 9))
     for name in ("weave_speed", "capsize_speed"):
         s = mc.speeds[name]

@@ -110,18 +110,25 @@ class Model:
     """``Model(bike, rider, stiffness, combine).build(changes)`` -> :class:`Built`."""
 
     def __init__(self, bike, rider=None, stiffness="infinite", combine="exact", method="mesh", origin="spec"):
-        from ..bicycle.loader import _with_base
-        from ..parameters import is_parameter_file
+        from ..bicycle.loader import _is_parameter_text, _with_base
+        from ..bicycle.sizes import split_size
+        from ..parameter_text import load_parameter_text
         from ..paths import frames_dir, resolve
         from ..rider import poses_dir
 
         self.bike, self.rider, self.stiffness, self.combine, self.method = bike, rider, stiffness, combine, method
         self.origin = origin
-        path = resolve(bike, frames_dir(), "bicycle")
-        node = load_yaml(path)
+        name, self._size = split_size(bike)
+        path = resolve(name, frames_dir(), "bicycle")
         self._bike_source = str(path)
-        self._parameter_file = is_parameter_file(node)
-        self._bike_doc = node.value if self._parameter_file else _with_base(node).mapping()
+        self.file_std = {}
+        """``{name: std}`` of a BicycleParameters text file's ``+/-`` values (SI; those above 0)."""
+        if _is_parameter_text(path):
+            measured = load_parameter_text(path)
+            self._bike_doc = {"name": path.stem, **measured.parameters.to_dict()}
+            self.file_std = {k: float(v) for k, v in measured.std.items() if v > 0}
+        else:
+            self._bike_doc = _with_base(load_yaml(path)).mapping()
         self._rider_doc = self._rider_source = None
         if rider not in (None, "none"):
             rpath = resolve(rider, poses_dir(), "pose")
@@ -139,13 +146,9 @@ class Model:
 
     def bicycle(self, changes=()):
         def build():
-            from ..bicycle.loader import bicycle_from_parameters, read_bicycle
-            from ..parameters import from_node
+            from ..bicycle.loader import bicycle_from_mapping
             doc = self._document(self._bike_doc, changes, self._bike_source)
-            node = Node(doc, self._bike_source, "")
-            if self._parameter_file:
-                return bicycle_from_parameters(from_node(node), doc.get("name", self.bike), self._bike_source)
-            return read_bicycle(node, self._bike_source)
+            return bicycle_from_mapping(doc, self._bike_source, self._size)
         return _lru(self._bicycles, changes, build)
 
     def rider_bodies(self, changes=()):

@@ -169,7 +169,7 @@ def read_std_file(path):
 
 def run_uncertainty(args):
     from ..analysis.inputs import Model
-    from ..analysis.uncertainty import propagate, uncertainty_figure
+    from ..analysis.uncertainty import Spread, propagate, uncertainty_figure
     from ..errors import InputError
     from ..output import dumps
     from .stability import _emit, parse_speeds
@@ -178,13 +178,13 @@ def run_uncertainty(args):
     if not 2 <= args.samples <= 10 ** 6:
         raise InputError("--samples", args.samples, "a number of samples from 2 to 1000000")
     speeds = parse_speeds(args.speeds)
-    spreads = file_spreads(args.bike)
+    model = Model(args.bike, args.rider, args.stiffness, args.combine, origin=args.std or args.bike)
+    spreads = {k: Spread("normal", s) for k, s in model.file_std.items()}
     if args.std:
         spreads.update(read_std_file(args.std))
     if not spreads:
         raise InputError(args.bike, "(uncertainties)", "standard deviations: a BicycleParameters file with "
                          "+/- values, or --std FILE")
-    model = Model(args.bike, args.rider, args.stiffness, args.combine, origin=args.std or args.bike)
     result = propagate(model, spreads, args.method, args.samples, args.seed, speeds)
     if args.format == "table":
         text = uncertainty_table(result, _title(args))
@@ -198,11 +198,6 @@ def run_uncertainty(args):
 
 UNCERTAINTY_UNITS = {"M": "kg m^2", "C1": "kg m^2 (per m/s)", "K0": "kg m (times g: N m/rad)",
                      "K2": "kg (times v^2: N m/rad)", "speed": "m/s", "eigenvalues": "1/s"}
-
-
-def file_spreads(bike):
-    """``{name: Spread}`` from the +/- values of a BicycleParameters text file (else empty)."""
-    return {}
 
 
 def uncertainty_table(result, title):
