@@ -68,8 +68,8 @@ def per_configuration(spec, repeat=3):
 def sweep_seconds(spec, workers):
     """Wall time of the whole sweep on a warm local cluster of ``workers`` processes."""
     from distributed import LocalCluster
-    with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
-                      silence_logs=40) as cluster, tempfile.TemporaryDirectory() as tmp:
+    with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1",
+                      dashboard_address="127.0.0.1:0", silence_logs=40) as cluster, tempfile.TemporaryDirectory() as tmp:
         run_sweep(spec, Path(tmp) / "warm", scheduler=cluster.scheduler_address)     # workers import, build
         best = float("inf")
         for k in range(3):

@@ -108,7 +108,7 @@ def _run_dask(setup, spec, chunks, todo, out, workers, scheduler, progress):
         cluster = None
     else:
         cluster = distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                                           dashboard_address=None, silence_logs=40)
+                                           host="127.0.0.1", dashboard_address="127.0.0.1:0", silence_logs=40)
         client = distributed.Client(cluster)
     try:
         futures = {client.submit(evaluate_chunk, setup, chunks[i], spec.max_speed, pure=False): i for i in todo}
