@@ -38,7 +38,7 @@ def test_engines_give_identical_tables(tmp_path):
     assert main(["sweep", spec, "--out", str(tmp_path / "serial"), "--quiet"]) == 0
     assert main(["sweep", spec, "--out", str(tmp_path / "w1"), "--workers", "1", "--quiet"]) == 0
     assert main(["sweep", spec, "--out", str(tmp_path / "w2"), "--workers", "2", "--quiet"]) == 0
-    with LocalCluster(n_workers=2, threads_per_worker=1, processes=False, host="127.0.0.1",
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=False, protocol="tcp", host="127.0.0.1",
                       dashboard_address="127.0.0.1:0", silence_logs=40) as cluster:
         assert main(["sweep", spec, "--out", str(tmp_path / "sched"), "--scheduler",
                      cluster.scheduler_address, "--quiet"]) == 0
