@@ -68,10 +68,14 @@ def _walk(document, path, source, origin, parent=False):
     return node
 
 
-def set_path(document, path, value, source, origin="spec"):
-    """Set dotted ``path`` in the nested mapping ``document`` (in place) to ``value``."""
+def set_path(document, path, value, source, origin="spec", size_index=None):
+    """Set dotted ``path`` in the nested mapping ``document`` (in place) to ``value``; in a size
+    run (a list with one value per size) only the element ``size_index``."""
     container, slot = _walk(document, path, source, origin, parent=True)
-    container[slot] = value
+    if size_index is not None and isinstance(container[slot], list):
+        container[slot][size_index] = value
+    else:
+        container[slot] = value
 
 
 def get_path(model, key):
@@ -85,6 +89,8 @@ def get_path(model, key):
         value = _walk(model._rider_doc, key[len(RIDER_PREFIX):], model._rider_source, model.origin)
     else:
         value = _walk(model._bike_doc, key, model._bike_source, model.origin)
+        if model._size_index is not None and isinstance(value, list):
+            value = value[model._size_index]
     try:
         return float(to_si(value))
     except (TypeError, ValueError):
@@ -129,6 +135,8 @@ class Model:
             self.file_std = {k: float(v) for k, v in measured.std.items() if v > 0}
         else:
             self._bike_doc = _with_base(load_yaml(path)).mapping()
+        sizes = [str(x) for x in self._bike_doc.get("sizes", [])] if self._size is not None else []
+        self._size_index = sizes.index(str(self._size)) if str(self._size) in sizes else None
         self._rider_doc = self._rider_source = None
         if rider not in (None, "none"):
             rpath = resolve(rider, poses_dir(), "pose")
@@ -138,16 +146,16 @@ class Model:
         self._materials = None
 
     # -- pieces, each cached by its own changes -------------------------------------------
-    def _document(self, doc, changes, source):
+    def _document(self, doc, changes, source, size_index=None):
         out = copy.deepcopy(doc)
         for path, value in changes:
-            set_path(out, path, value, source, self.origin)
+            set_path(out, path, value, source, self.origin, size_index)
         return out
 
     def bicycle(self, changes=()):
         def build():
             from ..bicycle.loader import bicycle_from_mapping
-            doc = self._document(self._bike_doc, changes, self._bike_source)
+            doc = self._document(self._bike_doc, changes, self._bike_source, self._size_index)
             return bicycle_from_mapping(doc, self._bike_source, self._size)
         return _lru(self._bicycles, changes, build)
 
