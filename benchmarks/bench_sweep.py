@@ -57,7 +57,7 @@ def per_configuration(spec, repeat=3):
     best = float("inf")
     for _ in range(repeat):
         model._bicycles.clear(), model._bodies.clear(), model._stiffness.clear(), model._params.clear()
-        model._riders.clear()
+        model._riders.clear(), model._seated.clear(), model._parts.clear()
         t = time.perf_counter()
         for c in configs:
             evaluate(model, c, spec.max_speed)

@@ -141,8 +141,8 @@ class Model:
         if rider not in (None, "none"):
             rpath = resolve(rider, poses_dir(), "pose")
             self._rider_source, self._rider_doc = str(rpath), load_yaml(rpath).value
-        self._bicycles, self._bodies, self._riders, self._stiffness, self._params, self._parts = (
-            OrderedDict() for _ in range(6))
+        self._bicycles, self._bodies, self._riders, self._seated, self._stiffness, self._params, self._parts = (
+            OrderedDict() for _ in range(7))
         self._materials = None
 
     # -- pieces, each cached by its own changes -------------------------------------------
@@ -159,31 +159,38 @@ class Model:
             return bicycle_from_mapping(doc, self._bike_source, self._size)
         return _lru(self._bicycles, changes, build)
 
-    def rider_bodies(self, changes=()):
+    def posed_rider(self, changes=()):
+        """The rider (pose file with ``changes``) as written, or ``None``."""
         if self._rider_doc is None:
             if changes:
                 raise InputError(self.origin, changes[0][0], "a rider to change (no rider given)")
             return None
 
         def build():
-            from ..bicycle.benchmark import rider_bodies
-            from ..rider import Rider
-            from ..rider.pose import read_pose
-            node = Node(self._document(self._rider_doc, changes, self._rider_source), self._rider_source, "")
-            if "chain" in node.value:
-                from ..rider.chain_file import read_chain_pose
-                name, parts, _ = read_chain_pose(node)
-            else:
-                name, parts = read_pose(node)
-            return rider_bodies(Rider(self.rider, name, parts), self.method)
+            from ..rider import _read_document
+            doc = self._document(self._rider_doc, changes, self._rider_source)
+            return _read_document(Node(doc, self._rider_source, ""), self.rider, False)
         return _lru(self._riders, changes, build)
+
+    def rider_bodies(self, bike_changes=(), rider_changes=()):
+        """``{body: MassProperties}`` of the rider seated on the changed bicycle (as
+        :func:`bikemass.catalog.seated_rider` does), or ``None``."""
+        rider = self.posed_rider(rider_changes)
+        if rider is None:
+            return None
+
+        def build():
+            from ..bicycle.benchmark import rider_bodies
+            from ..catalog import seated_rider
+            return rider_bodies(seated_rider(self.bicycle(bike_changes), rider), self.method)
+        return _lru(self._seated, (bike_changes, rider_changes), build)
 
     def parameters(self, bike_changes=(), rider_changes=()):
         """Benchmark parameters of the bicycle and rider with their changes (before parameter changes)."""
         def build():
             from ..bicycle.benchmark import merge_rider, parameters_from_bodies
             bicycle = self.bicycle(bike_changes)
-            riders = self.rider_bodies(rider_changes)
+            riders = self.rider_bodies(bike_changes, rider_changes)
             if riders is None and bicycle.published is not None:
                 return bicycle.published
             bodies = _lru(self._bodies, bike_changes, lambda: self._bicycle_bodies(bicycle))
@@ -213,21 +220,13 @@ class Model:
         return self._materials
 
     def frame_stiffness(self, which, bike_changes=()):
-        """2x2 S (N m/rad) or None, for stiffness choice ``which`` on the changed bicycle."""
+        """2x2 S (N m/rad) or None, for stiffness choice ``which`` on the changed bicycle (as
+        :func:`bikemass.catalog.stiffness`; a changed bicycle's S is computed, never published)."""
         def build():
             from .. import catalog
             if which in (None, "infinite", "rigid") or which not in self.materials():
                 return catalog.stiffness(self.bike, which)
-            bicycle = self.bicycle(bike_changes)
-            material = self.materials()[which]
-            S = None if bike_changes else bicycle.published_stiffness(material)
-            if S is None and bicycle.structure is not None:
-                from ..fe import equivalent_stiffness
-                S = equivalent_stiffness(bicycle.structure, material, "condensed")
-            if S is None:
-                raise InputError(self._bike_source, "stiffness", f"a stiffness for {which} (no published "
-                                 "stiffness and no rear-frame structure for the beam model)")
-            return S
+            return catalog.stiffness(self.bicycle(bike_changes), which, "computed" if bike_changes else "auto")
         return _lru(self._stiffness, (which, bike_changes), build)
 
     def build(self, changes=None):
