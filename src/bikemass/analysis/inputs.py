@@ -128,9 +128,11 @@ class Model:
         path = resolve(name, frames_dir(), "bicycle")
         self._bike_source = str(path)
         self.file_std = {}
+        self._measured = None
         """``{name: std}`` of a BicycleParameters text file's ``+/-`` values (SI; those above 0)."""
         if _is_parameter_text(path):
             measured = load_parameter_text(path)
+            self._measured = measured.parameters
             self._bike_doc = {"name": path.stem, **measured.parameters.to_dict()}
             self.file_std = {k: float(v) for k, v in measured.std.items() if v > 0}
         else:
@@ -154,7 +156,12 @@ class Model:
 
     def bicycle(self, changes=()):
         def build():
-            from ..bicycle.loader import bicycle_from_mapping
+            from ..bicycle.loader import bicycle_from_mapping, bicycle_from_parameters
+            if self._measured is not None:        # read as the file reader does (bikemass.parameter_text)
+                if changes:
+                    raise InputError(self.origin, changes[0][0], "one of the 26 parameter names (the bicycle "
+                                     "is a parameter file)")
+                return bicycle_from_parameters(self._measured, self._bike_doc["name"], self._bike_source)
             doc = self._document(self._bike_doc, changes, self._bike_source, self._size_index)
             return bicycle_from_mapping(doc, self._bike_source, self._size)
         return _lru(self._bicycles, changes, build)
