@@ -149,7 +149,7 @@ def test_geometry_chain_equals_direct_difference(capsys):
     key = "sections.seat_stay.wall"
     g = geometry_sensitivity(model, [key])[key]
     x, h = g["value"], g["step"]
-    assert x == pytest.approx(0.040 * 0.0254)
+    assert x == pytest.approx(0.040)                       # in the file's unit, inches
     (pa, Sa), (pb, Sb) = model.build({key: x + h}), model.build({key: x - h})
     ca, cb = critical_speeds(system(values_of(pa), Sa)), critical_speeds(system(values_of(pb), Sb))
     assert g["weave_speed"] == pytest.approx((ca.weave_speed - cb.weave_speed) / (2 * h), rel=1e-5)

@@ -114,8 +114,8 @@ def test_geometry_level_sweep_changes_with_the_walls(tmp_path):
 rider: relaxed
 stiffness: steel
 vary:
-  sections.seat_stay.wall: [0.0005, 0.001016, 0.002]
-  sections.chain_stay.wall: [0.001016, 0.002]
+  sections.seat_stay.wall: [0.02, 0.04, 0.08]     # inches, as the file writes them
+  sections.chain_stay.wall: [0.04, 0.08]
 """)
     assert main(["sweep", spec, "--out", str(tmp_path / "g"), "--quiet"]) == 0
     rows = _rows(tmp_path / "g")
@@ -123,8 +123,8 @@ vary:
     for col in ("weave_speed", "capsize_speed", "total_mass"):
         values = [float(r[col]) for r in rows]
         assert len(set(values)) == 6, col
-    nominal = next(r for r in rows if float(r["sections.seat_stay.wall"]) == 0.001016
-                   and float(r["sections.chain_stay.wall"]) == 0.001016)
+    nominal = next(r for r in rows if float(r["sections.seat_stay.wall"]) == 0.04
+                   and float(r["sections.chain_stay.wall"]) == 0.04)
     from bikemass.analysis.crossings import critical_speeds
     from bikemass.analysis.model import system, values_of
     p, S = catalog.parameters("jamis", "relaxed"), catalog.stiffness("jamis", "steel")

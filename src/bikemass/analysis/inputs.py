@@ -73,14 +73,19 @@ def set_path(document, path, value, source, origin="spec", size_index=None):
     run (a list with one value per size) only the element ``size_index``."""
     container, slot = _walk(document, path, source, origin, parent=True)
     if size_index is not None and isinstance(container[slot], list):
-        container[slot][size_index] = value
-    else:
-        container[slot] = value
+        container, slot = container[slot], size_index
+    unit = _unit(container[slot])
+    container[slot] = f"{value!r} {unit}" if unit else value
+
+
+def _unit(value):
+    """The unit of a ``"<number> <unit>"`` YAML value, else None."""
+    parts = value.split() if isinstance(value, str) else ()
+    return parts[1] if len(parts) == 2 else None
 
 
 def get_path(model, key):
-    """Current value of input ``key`` of ``model`` (a number; ``"0.040 in"`` -> SI)."""
-    from ..units import to_si
+    """Current value of input ``key`` of ``model``, in the unit the file writes it in (``"0.040 in"`` -> 0.04)."""
     if key in NAMES:
         return float(getattr(model.parameters(), key))
     if key.startswith(RIDER_PREFIX):
@@ -92,8 +97,8 @@ def get_path(model, key):
         if model._size_index is not None and isinstance(value, list):
             value = value[model._size_index]
     try:
-        return float(to_si(value))
-    except (TypeError, ValueError):
+        return float(value.split()[0] if _unit(value) else value)
+    except (TypeError, ValueError, AttributeError):
         raise InputError(model.origin, key, f"a number at that path, got {value!r}") from None
 
 
@@ -195,8 +200,9 @@ class Model:
     def parameters(self, bike_changes=(), rider_changes=()):
         """Benchmark parameters of the bicycle and rider with their changes (before parameter changes)."""
         def build():
-            from ..bicycle.benchmark import merge_rider, parameters_from_bodies
+            from ..bicycle.benchmark import merge_rider, parameters_from_bodies, refuse_second_rider
             bicycle = self.bicycle(bike_changes)
+            refuse_second_rider(bicycle, self.posed_rider(rider_changes))
             riders = self.rider_bodies(bike_changes, rider_changes)
             if riders is None and bicycle.published is not None:
                 return bicycle.published

@@ -55,12 +55,12 @@ def read_spreads(node):
             kind = item["distribution"].string(DISTRIBUTIONS) if item.has("distribution") else "normal"
             if item.has("half_width") == item.has("std"):
                 item.fail("exactly one of std or half_width")
-            std = (item["std"].number(nonnegative=True) if item.has("std")
-                   else item["half_width"].number(nonnegative=True) / np.sqrt(3.0))
+            std = (item["std"].number("dimensionless", nonnegative=True) if item.has("std")
+                   else item["half_width"].number("dimensionless", nonnegative=True) / np.sqrt(3.0))
             if kind == "normal" and item.has("half_width"):
                 item.fail("std for a normal distribution (half_width is for uniform)")
         else:
-            kind, std = "normal", item.number(nonnegative=True)
+            kind, std = "normal", item.number("dimensionless", nonnegative=True)
         out[str(key)] = Spread(kind, float(std))
     return out
 

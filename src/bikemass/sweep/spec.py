@@ -103,17 +103,17 @@ def _variable(key, node):
     if isinstance(node.value, list):
         if not node.value:
             node.fail("a non-empty list of values, or {from, to, num}")
-        values = tuple(v.string() if isinstance(v.value, str) and key == "stiffness" else v.number()
+        values = tuple(v.string() if isinstance(v.value, str) and key == "stiffness" else v.number("dimensionless")
                        for v in node.elements())
         return Variable(key, values=values)
     if key == "stiffness":
         node.fail("a list of stiffness choices (infinite, steel, titanium, aluminum or files)")
     node.check_keys(required=("from", "to"), optional=("num",))
-    low, high = node["from"].number(), node["to"].number()
+    low, high = node["from"].number("dimensionless"), node["to"].number("dimensionless")
     if not (np.isfinite(low) and np.isfinite(high) and low < high):
         node.fail("from < to, both finite")
-    num = int(node["num"].number(positive=True)) if node.has("num") else None
-    if num is not None and (num != node["num"].number() or num < 2):
+    num = int(node["num"].number("dimensionless", positive=True)) if node.has("num") else None
+    if num is not None and (num != node["num"].number("dimensionless") or num < 2):
         node.fail("a whole number of points, at least 2", "num")
     return Variable(key, low=low, high=high, num=num)
 
@@ -138,11 +138,11 @@ def read_spec(path):
         s = node["sample"]
         s.check_keys(required=("method", "n"), optional=("seed",))
         method = s["method"].string(SAMPLE_METHODS[1:])
-        n = s["n"].number(positive=True)
+        n = s["n"].number("dimensionless", positive=True)
         if n != int(n) or n > MAX_CONFIGURATIONS:
             s.fail(f"a whole number of samples up to {MAX_CONFIGURATIONS}", "n")
         n = int(n)
-        seed = int(s["seed"].number(nonnegative=True)) if s.has("seed") else 0
+        seed = int(s["seed"].number("dimensionless", nonnegative=True)) if s.has("seed") else 0
     gsa = node["global_sensitivity"].boolean() if node.has("global_sensitivity") else False
     for v in variables:
         if v.values is None and v.num is None and method == "grid" and not gsa:
@@ -151,8 +151,8 @@ def read_spec(path):
             vary.fail("{from, to} ranges for a global sensitivity analysis", v.key)
     if gsa and n is None:
         node.fail("sample: {method: sobol, n: N} (N base points of the Saltelli sample)", "global_sensitivity")
-    max_speed = node["max_speed"].number(positive=True) if node.has("max_speed") else 30.0
-    chunk = node["chunk"].number(positive=True) if node.has("chunk") else 50
+    max_speed = node["max_speed"].number("dimensionless", positive=True) if node.has("max_speed") else 30.0
+    chunk = node["chunk"].number("dimensionless", positive=True) if node.has("chunk") else 50
     spec = SweepSpec(
         source=str(path), bike=_near(path, node["bike"].string()),
         rider=_near(path, node["rider"].string()) if node.has("rider") else "none",
