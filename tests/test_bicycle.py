@@ -111,7 +111,7 @@ def test_geometry_bicycles_get_their_stiffness_from_the_beam_model():
 
 
 def test_no_stiffness_at_all_is_an_input_error():
-    with pytest.raises(InputError, match="no published stiffness and no rear-frame structure"):
+    with pytest.raises(InputError, match="a published stiffness for steel_4130 or a rear-frame structure"):
         catalog.stiffness("benchmark", "steel")
 
 

@@ -57,13 +57,13 @@ def _png_size(data):
 
 def test_size_and_dpi_set_the_pixels(tmp_path, capsys):
     png = tmp_path / "side.png"
-    assert main(["draw", "benchmark", "-o", str(png), "--size", "4,3", "--dpi", "50"]) == 0
+    assert main(["draw", "benchmark", "--plot", str(png), "--size", "4,3", "--dpi", "50"]) == 0
     assert _png_size(png.read_bytes()) == (200, 150)
 
 
 def test_svg_keeps_its_text_as_text(tmp_path, capsys):
     svg = tmp_path / "side.svg"
-    assert main(["draw", "benchmark", "-o", str(svg)]) == 0
+    assert main(["draw", "benchmark", "--plot", str(svg)]) == 0
     texts = [t for e in ET.parse(svg).iter() if e.tag.endswith("text") for t in e.itertext()]
     assert any("height" in t for t in texts)            # the axis label, as editable text
 
@@ -74,17 +74,17 @@ def test_axis_limits_reach_the_axes(tmp_path, capsys):
     from bikemass.bicycle.drawing import plot_side_view
     ax = plot_side_view(catalog.load_bicycle("benchmark"), xlim=(-0.5, 1.5), ylim=(0, 1.4)).axes[0]
     assert ax.get_xlim() == pytest.approx((-0.5, 1.5)) and ax.get_ylim() == pytest.approx((0, 1.4))
-    assert main(["draw", "benchmark", "-o", str(svg), "--xlim=-0.5:1.5"]) == 0
+    assert main(["draw", "benchmark", "--plot", str(svg), "--xlim=-0.5:1.5"]) == 0
 
 
 @pytest.mark.parametrize("argv,needle", [
     (["eig", "benchmark", "--plot", "eig.xyz"], ".svg"),
     (["modes", "jamis", "--plot", "m.docx"], ".png"),
-    (["draw", "benchmark", "-o", "d.txt"], ".pdf"),
-    (["compare", "benchmark", "-o", "c.csv"], ".png"),
-    (["draw", "benchmark", "-o", "d.png", "--size", "4"], "--size"),
-    (["draw", "benchmark", "-o", "d.png", "--size", "0.1,3"], "--size"),
-    (["draw", "benchmark", "-o", "d.png", "--dpi", "many"], "--dpi"),
+    (["draw", "benchmark", "--plot", "d.txt"], ".pdf"),
+    (["compare", "benchmark", "--plot", "c.csv"], ".png"),
+    (["draw", "benchmark", "--plot", "d.png", "--size", "4"], "--size"),
+    (["draw", "benchmark", "--plot", "d.png", "--size", "0.1,3"], "--size"),
+    (["draw", "benchmark", "--plot", "d.png", "--dpi", "many"], "--dpi"),
     (["stability", "benchmark", "--plot", "s.png", "--xlim", "5:1"], "--xlim"),
     (["eig", "benchmark", "--plot", "s.png", "--ylim", "a:b"], "--ylim"),
 ])

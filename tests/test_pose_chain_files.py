@@ -14,18 +14,19 @@ from bikemass.rider import load_rider
 from bikemass.rider.thesis_fit import compare_with_chain
 
 ROOT = Path(__file__).parents[1]
-DOC = (ROOT / "docs" / "poses.md").read_text()
 THREE_LINES = "body: thesis_rider\nbike: jamis\nchain: {torso_lean: 30 deg, hands: hoods}\n"
 
 
 def test_pose_file_from_the_command_loads_like_any_pose(tmp_path, capsys):
     out, png = tmp_path / "hoods.yaml", tmp_path / "hoods.png"
-    assert main(["pose", "jamis", "--torso-lean", "30", "--hands", "hoods", "--out", str(out),
+    assert main(["pose", "jamis", "--torso-lean", "30", "--hands", "hoods", "-o", str(out),
                  "--plot", str(png)]) == 0
-    text = capsys.readouterr().out
-    assert "largest gap at a joint" in text and f"wrote {out}" in text
+    assert capsys.readouterr().out == ""                          # the data went to -o, the figure to --plot
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert main(["pose", "jamis", "--torso-lean", "30", "--hands", "hoods"]) == 0
+    assert "largest gap at a joint" in capsys.readouterr().out    # without -o: the report
     document = yaml.safe_load(out.read_text())
+    assert document["units"] == {"location": "m", "angle": "deg"}
     assert set(document["segments"]) == {"head", "torso", "upper_arm", "lower_arm", "thigh", "lower_leg"}
     chain = tmp_path / "chain.yaml"
     chain.write_text(THREE_LINES)
@@ -39,7 +40,7 @@ def test_pose_file_from_the_command_loads_like_any_pose(tmp_path, capsys):
 
 def test_crank_angle_gives_left_and_right_legs(tmp_path, capsys):
     out = tmp_path / "crank.yaml"
-    assert main(["pose", "jamis", "--crank", "0", "--out", str(out)]) == 0
+    assert main(["pose", "jamis", "--crank", "0", "-o", str(out)]) == 0
     legs = yaml.safe_load(out.read_text())["segments"]["lower_leg"]
     assert legs["left"]["location"][1] == -legs["location"][1]
     assert legs["left"]["angle"] != legs["angle"]
@@ -117,10 +118,3 @@ def test_thesis_gaps_and_the_no_hands_fit():
     assert max(tuck["chain_gaps"].values()) < 1e-12
     upright = compare_with_chain("no-hands")
     assert upright["rms"] < 0.003 and np.linalg.norm(upright["fitted"].com - upright["thesis"].com) < 0.001
-
-
-def test_pose_fit_output_is_what_docs_poses_md_shows(capsys):
-    assert main(["pose-fit"]) == 0
-    shown = capsys.readouterr().out
-    page = DOC.split("$ bikemass pose-fit\n")[1].split("```")[0]
-    assert shown == page

@@ -130,7 +130,8 @@ def test_relaxed_on_cargo_is_reseated_and_stability_uses_it(capsys, bikes):
                          "--method", "exact")
     assert code == 0 and err == ""
     data = json.loads(out)
-    assert set(data) == {"pose", "mass", "com", "inertia", "segments", "contacts"}
+    assert set(data) == {"pose", "mass", "com", "inertia", "segments", "contacts", "units"}
+    assert data["units"]["residual"] == "m" and data["units"]["inertia"] == "kg m^2"
     assert max(c["residual"] for c in data["contacts"].values()) <= CONTACT
     assert set(data["segments"]) >= {"head", "torso", "upper_arm_right", "lower_leg_left"}
     seated = seat_rider("relaxed", bikes["cargo"]).rider
@@ -147,7 +148,7 @@ def test_relaxed_on_cargo_is_reseated_and_stability_uses_it(capsys, bikes):
 def test_thesis_placement_stays_without_a_bicycle(capsys):
     """Table 3-4 does not move: without a bicycle the shipped poses are their placement form."""
     code, out, _ = run(capsys, "riders", "--format", "json", "--method", "exact")
-    data = json.loads(out)
+    data = json.loads(out)["riders"]
     for pose in ("no-hands", "relaxed", "on-hoods", "aerobars", "aero-tuck"):
         assert data[pose]["com"] == load_rider(pose).properties("exact").com.tolist()
     assert data["relaxed"]["inertia"][0][0] == pytest.approx(12.502, abs=0.015)   # Table 3-4

@@ -27,7 +27,8 @@ def test_rider_json_is_the_contract(capsys):
     code, out, err = run(capsys, "rider", "relaxed", "--format", "json", "--method", "exact")
     assert code == 0 and err == ""
     data = json.loads(out)
-    assert set(data) == {"pose", "mass", "com", "inertia"}
+    assert set(data) == {"pose", "mass", "com", "inertia", "units"}
+    assert data["units"] == {"mass": "kg", "com": "m", "inertia": "kg m^2"}
     props = load_rider("relaxed").properties("exact")
     assert data["pose"] == "relaxed"
     assert data["mass"] == props.mass
@@ -54,8 +55,8 @@ def test_rider_table_has_the_segment_breakdown(capsys):
 def test_riders_json_keyed_by_pose(capsys):
     code, out, _ = run(capsys, "riders", "--format", "json", "--method", "exact")
     data = json.loads(out)
-    assert code == 0 and list(data) == list(THESIS_POSES)
-    for pose, value in data.items():
+    assert code == 0 and list(data) == ["riders", "units"] and list(data["riders"]) == list(THESIS_POSES)
+    for pose, value in data["riders"].items():
         assert set(value) == {"pose", "mass", "com", "inertia"} and value["pose"] == pose
         np.testing.assert_array_equal(value["inertia"], load_rider(pose).properties("exact").inertia)
 
@@ -66,7 +67,7 @@ def test_riders_table_and_compare(capsys):
     assert len(out.splitlines()) == 2 + 8                     # header, rule, Table 3-4's 8 rows
     _, out, _ = run(capsys, "riders", "--compare", "--format", "json")
     data = json.loads(out)
-    assert data["on-hoods"]["thesis"]["inertia"][1][1] == 9.934    # Table 3-4, On Hoods Iyy
+    assert data["riders"]["on-hoods"]["thesis"]["inertia"][1][1] == 9.934    # Table 3-4, On Hoods Iyy
 
 
 # -- bad input ---------------------------------------------------------------------

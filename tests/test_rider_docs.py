@@ -37,10 +37,3 @@ def test_error_example_is_the_real_message(tmp_path, capsys):
     err = capsys.readouterr().err
     expected = [l for l in DOC.splitlines() if l.startswith("bikemass: error: upright.yaml")][0]
     assert err.strip() == expected.replace("upright.yaml", str(path), 1)
-
-
-def test_page_tables_are_the_real_output(capsys):
-    """Every `$ bikemass riders ...` block on the page is what the command prints now."""
-    for command, block in re.findall(r"\$ (bikemass riders[^\n]*)\n(.*?)```", DOC, re.S):
-        assert main(command.split()[1:]) == 0
-        assert capsys.readouterr().out == block, command

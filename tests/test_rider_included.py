@@ -29,7 +29,7 @@ def test_benchmark_already_has_its_rider(capsys, command):
 def test_benchmark_without_a_rider_is_meijaard_exactly(capsys):
     code, out, _ = run(capsys, "params", "benchmark", "--format", "json")
     data = json.loads(out)
-    assert code == 0 and data.pop("rider_included") is True
+    assert code == 0 and data.pop("rider_included") is True and data.pop("units")["IBxx"] == "kg m^2"
     assert data == catalog.parameters("benchmark").to_dict()
 
 

@@ -103,7 +103,8 @@ def test_named_thesis_bicycles_reproduce_chapter_5_rows(capsys, bike, rider, sti
 def test_compare_plots_several_riders_and_stiffnesses(capsys, tmp_path):
     out_png = tmp_path / "cmp.png"
     code, out, _ = run(capsys, "compare", "jamis-thesis", "--riders", "none,relaxed-thesis",
-                       "--stiffnesses", "infinite,steel", "--combine", "thesis", "-o", str(out_png))
+                       "--stiffnesses", "infinite,steel", "--combine", "thesis", "--plot", str(out_png),
+                       "--format", "table")
     assert code == 0 and out_png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     rows = [line.split() for line in out.splitlines()[2:6]]
     assert [r[:2] for r in rows] == [["none", "infinite"], ["none", "steel"],
@@ -116,6 +117,18 @@ def test_compare_plots_several_riders_and_stiffnesses(capsys, tmp_path):
         assert abs(np.floor(b / 0.05) * 0.05 - stop) <= 0.05 + 1e-9
 
 
-def test_compare_refuses_a_non_image_output(capsys, tmp_path):
-    code, _, err = run(capsys, "compare", BENCHMARK, "-o", str(tmp_path / "x.txt"))
+def test_compare_refuses_a_non_image_plot_and_an_image_as_data(capsys, tmp_path):
+    code, _, err = run(capsys, "compare", BENCHMARK, "--plot", str(tmp_path / "x.txt"))
     assert code == 2 and err.count("\n") == 1 and not (tmp_path / "x.txt").exists()
+    code, _, err = run(capsys, "compare", BENCHMARK, "-o", str(tmp_path / "x.png"))
+    assert code == 2 and "a figure goes to --plot FILE" in err and not (tmp_path / "x.png").exists()
+
+
+def test_compare_data_in_every_format(capsys, tmp_path):
+    code, out, _ = run(capsys, "compare", "jamis", "--stiffnesses", "infinite,steel", "--format", "json")
+    data = json.loads(out)
+    assert code == 0 and [r["stiffness"] for r in data["runs"]] == ["infinite", "steel"]
+    assert data["units"] == {"weave_speeds": "m/s", "capsize_speeds": "m/s", "stable_speeds": "m/s"}
+    target = tmp_path / "speeds.csv"                      # the format follows the suffix
+    assert run(capsys, "compare", BENCHMARK, "-o", str(target))[:2] == (0, "")
+    assert target.read_text().splitlines()[0].startswith("rider,stiffness,weave speeds (m/s)")

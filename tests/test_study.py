@@ -30,7 +30,7 @@ class CountingProgress:
 
     instances = []
 
-    def __init__(self, total, title):
+    def __init__(self, total, title, **options):
         self.total, self.labels = total, []
         CountingProgress.instances.append(self)
 
@@ -219,10 +219,10 @@ def test_help_is_for_newcomers(capsys):
     with pytest.raises(SystemExit):
         main(["study", "--help"])
     text = capsys.readouterr().out
-    assert "report.md" in text and "--no-figures" in text and "--out DIR" in text
+    assert "report.md" in text and "--no-figures" in text and "-o DIR, --output DIR" in text
 
 
-@pytest.mark.parametrize("argv, key", [(["--jobs", "0"], "--jobs"), (["--out", __file__], "--out")])
+@pytest.mark.parametrize("argv, key", [(["--jobs", "0"], "--jobs"), (["-o", __file__], "-o")])
 def test_bad_input_one_line_exit_2(capsys, argv, key):
     assert main(["study", *argv]) == 2
     _, err = capsys.readouterr()

@@ -242,8 +242,11 @@ def _material_stiffness(model, material, source, procedure, beam):
         from .frame import frame_stiffness
         S = frame_stiffness(model, material, procedure, beam)
     if S is None:
-        raise InputError(model.source, "stiffness", f"a {source.value} stiffness for {material.key} "
-                         "(no published stiffness and no rear-frame structure for the beam model)")
+        wanted = {Source.AUTO: f"a published stiffness for {material.key} or a rear-frame structure for "
+                               "the beam model (it has neither)",
+                  Source.PUBLISHED: f"a published stiffness for {material.key}",
+                  Source.COMPUTED: "a rear-frame structure for the beam model"}[source]
+        raise InputError(model.source, "stiffness", wanted)
     return S
 
 

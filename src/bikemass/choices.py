@@ -134,6 +134,11 @@ class Format(Choice):
     """The BicycleParameters ``<Name>Benchmark.txt`` file (parameter sets only)."""
 
 
+PARAMETER_FORMATS = (Format.YAML.value, Format.JSON.value, Format.TABLE.value, Format.CSV.value,
+                     Format.BICYCLEPARAMETERS.value)
+"""The formats a benchmark parameter set is written in (YAML first: the default)."""
+
+
 def closest(value, choices):
     """`` (did you mean 'x'?)`` for the choice closest to ``value``, or an empty string."""
     match = difflib.get_close_matches(str(value), [str(c) for c in choices], n=1, cutoff=0.6)

@@ -6,6 +6,7 @@ import os
 import sys
 import warnings
 
+from .commands.dialect import check_output
 from .errors import BikemassWarning, InputError, one_line
 from .stopping import Terminated, stop_on_signals
 
@@ -84,6 +85,7 @@ def _run(args):
             warnings.simplefilter("error", BikemassWarning)
         try:
             check_outputs(args)
+            check_output(args)
             status = args.run(args) or 0
         except InputError as exc:
             return _error(exc)

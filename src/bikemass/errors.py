@@ -25,7 +25,7 @@ def one_line(text, limit=MAX_PART):
     return text if len(text) <= limit else text[:limit - 3] + "..."
 
 
-def _shown(source):
+def shown(source):
     """A shipped file as ``frames/jamis.yaml`` rather than its absolute path."""
     from .paths import data_root
     try:
@@ -38,7 +38,7 @@ class InputError(ValueError):
     """Bad input: names the file, the key and what was expected (a ValueError)."""
 
     def __init__(self, source, key, expected):
-        self.source, self.key = one_line(_shown(source)), one_line(key)
+        self.source, self.key = one_line(shown(source)), one_line(key)
         self.expected = one_line(expected, 2 * MAX_PART)
         super().__init__(f"{self.source}: {self.key}: {self.expected}")
 

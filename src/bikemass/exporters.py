@@ -1,27 +1,33 @@
-"""Benchmark parameter sets as text: YAML, JSON, or the BicycleParameters parameter file.
+"""Benchmark parameter sets as text: YAML, JSON, a table, CSV, or the BicycleParameters file.
 
-YAML and JSON hold the 26 Meijaard names (SI, radians), plus ``rider_included: true``
-when the rear body B holds a rider, so the output is itself a benchmark parameter
-file that bikemass reads back (and refuses to add a second rider to).  The
+YAML and JSON hold the 26 Meijaard names (SI, radians), a ``units`` block, and
+``rider_included: true`` when the rear body B holds a rider, so the output is itself a
+benchmark parameter file that bikemass reads back (and refuses to add a second rider to).  The
 ``bicycleparameters`` format is the ``<Name>Benchmark.txt`` file that the
 BicycleParameters package reads from ``bicycles/<Name>/Parameters/``: one
 ``name = value`` line per parameter, ``#`` comment lines allowed.  Values are
 written with ``repr`` (17 significant digits) so they read back bit for bit.
 """
 
-from .output import dumps
-from .parameters import NAMES
-
-FORMATS = ("yaml", "json", "bicycleparameters")
+from .choices import PARAMETER_FORMATS as FORMATS
+from .output import dumps, table, with_units
+from .parameters import DESCRIPTIONS, NAMES, parameter_units
 
 
 def format_parameters(params, fmt, title="", rider_included=False):
     """Text of ``params`` (:class:`~bikemass.parameters.BenchmarkParameters`) in ``fmt``;
     ``rider_included``: the rear body B holds a rider."""
+    values = params.to_dict()
     if fmt in ("yaml", "json"):
-        return dumps({**params.to_dict(), **({"rider_included": True} if rider_included else {})}, fmt)
+        return dumps(with_units({**values, **({"rider_included": True} if rider_included else {})}), fmt)
     if fmt == "bicycleparameters":
         return bicycleparameters_text(params, title + (" (rider included in B)" if rider_included else ""))
+    units = parameter_units()
+    if fmt == "table":
+        rows = [[k, DESCRIPTIONS[k].split(" [")[0], values[k], units[k]] for k in NAMES]
+        return (f"{title}\n" if title else "") + table(["parameter", "meaning", "value", "unit"], rows, "{:.6g}")
+    if fmt == "csv":
+        return "parameter,value,unit\n" + "".join(f"{k},{values[k]!r},{units[k]}\n" for k in NAMES)
     raise ValueError(f"format must be one of {', '.join(FORMATS)}, got {fmt!r}")
 
 

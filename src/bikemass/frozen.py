@@ -1,9 +1,36 @@
 """Making values immutable: read-only arrays, read-only mappings, tuples instead of lists."""
 
 from collections.abc import Mapping
-from types import MappingProxyType
 
 import numpy as np
+
+
+class FrozenMap(Mapping):
+    """A read-only mapping (unlike ``types.MappingProxyType`` it pickles, so values holding it
+    cross process boundaries)."""
+
+    __slots__ = ("_data",)
+
+    def __init__(self, data=()):
+        object.__setattr__(self, "_data", dict(data))
+
+    def __getitem__(self, key):
+        return self._data[key]
+
+    def __iter__(self):
+        return iter(self._data)
+
+    def __len__(self):
+        return len(self._data)
+
+    def __setattr__(self, name, value):
+        raise AttributeError("FrozenMap is read-only")
+
+    def __reduce__(self):
+        return FrozenMap, (self._data,)
+
+    def __repr__(self):
+        return f"FrozenMap({self._data!r})"
 
 
 def readonly(values, dtype=None):
@@ -16,14 +43,25 @@ def readonly(values, dtype=None):
 
 
 def freeze(value):
-    """``value`` with every mapping made read-only, every list a tuple, every array read-only."""
+    """``value`` with every mapping made read-only, every list a tuple, every array read-only
+    (what is immutable already is returned as it is)."""
+    if isinstance(value, FrozenMap):
+        return value
     if isinstance(value, Mapping):
-        return MappingProxyType({k: freeze(v) for k, v in value.items()})
+        return FrozenMap({k: freeze(v) for k, v in value.items()})
     if isinstance(value, (list, tuple)):
-        return tuple(freeze(v) for v in value)
+        items = tuple(freeze(v) for v in value)
+        same = isinstance(value, tuple) and all(a is b for a, b in zip(items, value))
+        return value if same else items
     if isinstance(value, np.ndarray):
-        return readonly(value)
+        return value if not value.flags.writeable else readonly(value)
     return value
+
+
+def frozen_fields(obj, *names):
+    """In ``__post_init__`` of a frozen dataclass: make the fields ``names`` immutable."""
+    for name in names:
+        object.__setattr__(obj, name, freeze(getattr(obj, name)))
 
 
 def short_repr(obj, *fields):

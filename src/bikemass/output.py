@@ -52,6 +52,44 @@ def plain(obj):
     return obj
 
 
+UNITS = {
+    "mass": "kg", "com": "m", "inertia": "kg m^2",
+    "S": "N m/rad", "frequencies": "Hz",
+    "speeds": "m/s", "speed": "m/s", "weave_speeds": "m/s", "capsize_speeds": "m/s", "caster_speeds": "m/s",
+    "exact": "m/s", "grid": "m/s", "stable_speeds": "m/s",
+    "eigenvalues": "1/s (pairs: real, imaginary)", "marginal_threshold": "rad/s",
+    "location": "m", "angle": "deg", "angles": "deg", "hip_joints": "m", "residuals": "m", "gaps": "m",
+    "residual": "m",
+}
+"""The SI unit of every key that holds a quantity in a JSON/YAML document bikemass writes
+(the 26 benchmark parameters come from :data:`bikemass.parameters.DESCRIPTIONS`)."""
+
+
+def units_of(obj, extra=None):
+    """``{key: unit}`` for every key of ``obj`` (at any depth) with a unit, in order of appearance."""
+    from .parameters import parameter_units
+    table = {**parameter_units(), **UNITS, **(extra or {})}
+    found = {}
+
+    def walk(value):
+        if isinstance(value, Mapping):
+            for k, v in value.items():
+                if k in table and k not in found:
+                    found[k] = table[k]
+                walk(v)
+        elif isinstance(value, (list, tuple)):
+            for v in value:
+                walk(v)
+    walk(obj)
+    return found
+
+
+def with_units(obj, extra=None):
+    """The document ``obj`` (a mapping) with a top-level ``units`` block: the one rule by which
+    every JSON/YAML output states its units (keys never carry unit suffixes)."""
+    return {**obj, "units": units_of(obj, extra)}
+
+
 def dumps(obj, fmt):
     """Serialise plain data as ``json`` or ``yaml`` text."""
     data = plain(obj)

@@ -85,15 +85,31 @@ def dimension(name):
     return {"I": "inertia", "m": "mass"}.get(name[0], "length")
 
 
+def parameter_units():
+    """``{name: SI unit}`` of the 26 parameters (from :data:`DESCRIPTIONS`)."""
+    return {k: d[d.index("[") + 1:-1] for k, d in DESCRIPTIONS.items()}
+
+
 def from_node(node):
     """Build :class:`BenchmarkParameters` from a config :class:`~bikemass.config.Node` with the 26 names."""
-    node.check_keys(required=NAMES, optional=("name", "description", "source", "rider_included"))
+    node.check_keys(required=NAMES, optional=("name", "description", "source", "rider_included", "units"))
+    if node.has("units"):
+        _check_units(node["units"])
     values = {}
     for k in NAMES:
         positive = k not in ("lam", "xB", "zB", "xH", "zH", "IBxz", "IHxz", "c")
         # lam is radians when bare: the definition of this format (Meijaard 2007, BicycleParameters).
         values[k] = node[k].number(dimension(k), positive=positive, bare_unit="rad" if k == "lam" else None)
     return BenchmarkParameters(**values)
+
+
+def _check_units(node):
+    """A ``units`` block (as bikemass writes) may only state the SI units the values are read in."""
+    si = parameter_units()
+    for key, unit in node.items():
+        if key in si and unit.value != si[key]:
+            unit.fail(f"{si[key]} (values are read in SI; give another unit per value, e.g. "
+                      f"'{key}: \"<number> <unit>\"')")
 
 
 def is_parameter_file(node):

@@ -10,7 +10,6 @@ the volume not already taken by the parts before it, computed with manifold3d).
 from dataclasses import dataclass, field
 
 import numpy as np
-import trimesh
 
 from .inertia import MassProperties, combine
 from .placement import Placement
@@ -29,6 +28,9 @@ class Part:
     mass: float
     placement: Placement = field(default_factory=Placement.identity)
     body: str = ""
+
+    def __repr__(self):
+        return f"Part({self.name!r}, body={self.body!r}, mass={self.mass:.6g} kg, solid={type(self.solid).__name__})"
 
     @classmethod
     def from_density(cls, name, solid, density, placement=None, body=""):
@@ -70,6 +72,7 @@ def body_properties(parts, method="mesh", overlap="sum", segments=DEFAULT_SEGMEN
 
 def _union_pieces(parts, segments):
     """Each part's mass properties minus the volume already held by earlier parts."""
+    import trimesh.boolean
     pieces, taken = [], None
     for p in parts:
         mesh = p.mesh(segments)

@@ -7,11 +7,11 @@ import time
 class Progress:
     """``with Progress(total, "study") as bar: ... bar.step("label")``."""
 
-    def __init__(self, total, title, stream=None, width=30):
+    def __init__(self, total, title, stream=None, width=30, enabled=True):
         self.total, self.title, self.width = max(int(total), 1), title, width
         self.stream = stream or sys.stderr
         self.done = 0
-        self.enabled = self.stream.isatty()
+        self.enabled = enabled and self.stream.isatty()
         self.start = time.perf_counter()
 
     def __enter__(self):

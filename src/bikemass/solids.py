@@ -14,7 +14,6 @@ leading order (5.2e-7 at the default N = 64).
 from dataclasses import dataclass
 
 import numpy as np
-import trimesh
 
 from .inertia import MassProperties
 
@@ -42,6 +41,7 @@ def ring_prism(bottom, top, length, inner_bottom=None, inner_top=None):
     ``bottom``/``top`` are (N, 2) outer rings; optional inner rings of the same N
     make a hollow prism.  Side faces join vertex i to i+1 of each ring.
     """
+    import trimesh
     n = len(bottom)
     i = np.arange(n)
     j = (i + 1) % n
@@ -248,6 +248,7 @@ class Box(Solid):
         return MassProperties(m, np.zeros(3), np.diag([b + c, a + c, a + b]) * m / 12)
 
     def mesh(self, segments=DEFAULT_SEGMENTS):
+        import trimesh.creation
         return trimesh.creation.box(extents=[self.size_x, self.size_y, self.size_z])
 
 

@@ -9,6 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .frozen import frozen_fields, readonly
 from .materials import Material
 from .sections import RoundSection, SquareSection
 
@@ -25,6 +26,13 @@ class Tube:
     section: RoundSection | SquareSection
     material: Material
     body: str
+
+    def __post_init__(self):
+        object.__setattr__(self, "start", readonly(self.start, float))
+        object.__setattr__(self, "end", readonly(self.end, float))
+
+    def __repr__(self):
+        return f"Tube({self.name!r}, {self.start_key} -> {self.end_key}, {self.length:.4f} m, {self.material.key})"
 
     @property
     def length(self):
@@ -43,3 +51,10 @@ class Structure:
     """Keypoint names (top, bottom) of the head tube; S acts at the bottom one."""
     keypoints: dict
     """``{name: position (m)}`` of every keypoint the tubes use."""
+
+    def __post_init__(self):
+        frozen_fields(self, "tubes", "dropouts", "head_tube", "keypoints")
+
+    def __repr__(self):
+        return (f"Structure(tubes={len(self.tubes)}, dropouts={self.dropouts}, head_tube={self.head_tube}, "
+                f"keypoints={len(self.keypoints)})")

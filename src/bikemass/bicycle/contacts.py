@@ -22,6 +22,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..frozen import frozen_fields
+
 HAND_POSITIONS = ("tops", "hoods", "drops", "aero")
 """The usual grip names (``bikemass pose --hands``); a bicycle may name others."""
 
@@ -50,6 +52,9 @@ class Contacts:
             return self.saddle
         rule, direction = self.saddle_fit
         return self.bottom_bracket + SADDLE_RULES[rule] * inseam * direction
+
+    def __post_init__(self):
+        frozen_fields(self, "saddle", "bottom_bracket", "grips")
 
     def pedal(self, crank_deg, side="right"):
         """Pedal spindle centre at crank angle ``crank_deg`` (deg, 0 = right crank forward,

@@ -4,6 +4,8 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from ..errors import shown
+from ..frozen import frozen_fields, short_repr
 from ..parts import body_properties
 from .components import BODIES
 
@@ -35,6 +37,16 @@ class Bicycle:
     chart: object = None
     size: str = None
     rider_included: bool = False
+
+    def __post_init__(self):
+        frozen_fields(self, "keypoints", "tubes", "parts", "stiffness")
+
+    def __repr__(self):
+        extra = [("size", repr(self.size))] if self.size else []
+        return short_repr(self, ("name", repr(self.name)), *extra, ("wheelbase", f"{self.geometry.wheelbase:.4g} m"),
+                          ("parts", len(self.parts)), ("tubes", len(self.tubes)),
+                          ("structure", self.structure is not None), ("contacts", self.contacts is not None),
+                          ("source", repr(shown(self.source))))
 
     def body_parts(self, body):
         """Parts of ``body`` (one of :data:`BODIES`)."""

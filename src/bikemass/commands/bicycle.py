@@ -3,10 +3,10 @@ benchmark parameters, a side-view drawing, or a 3D model."""
 
 from pathlib import Path
 
-from .figure_options import add_figure_options, figure_options, write_figure
+from ..choices import PARAMETER_FORMATS
+from . import dialect
 from .sizes import add_size_option, every_size
 
-PARAM_FORMATS = ("yaml", "json", "bicycleparameters")
 MODEL_FORMATS = ("glb", "stl", "obj")
 
 
@@ -21,19 +21,15 @@ def register(sub):
         "params", help="benchmark parameters (Meijaard et al. 2007) of a bicycle with a rider",
         description="The 26 benchmark parameters (SI, radians) of BIKE with an optional rider. "
                     f"BIKE: a shipped bicycle ({shipped}), a bicycle YAML file (docs/bicycles.md) "
-                    "or a benchmark parameter file (YAML/JSON with the 26 names).")
-    _bike_and_rider(params, rider_default="none")
-    params.add_argument("--combine", choices=("exact", "thesis"), default="exact",
-                        help="rider + frame: parallel-axis theorem (exact, default) or the thesis's "
-                             "Eq. 3.6 (inertias added without parallel-axis terms)")
-    params.add_argument("--method", choices=("mesh", "exact"), default="mesh",
-                        help="mass properties from trimesh meshes (default) or closed-form solids")
-    params.add_argument("--format", choices=PARAM_FORMATS, default="yaml",
-                        help="yaml (default), json, or the BicycleParameters <Name>Benchmark.txt file")
+                    "or a benchmark parameter file (YAML/JSON with the 26 names). The YAML and JSON "
+                    "output is itself a parameter file.")
+    _bike_and_rider(params)
+    dialect.add_combine(params)
+    dialect.add_method(params)
     params.add_argument("--compare", metavar="BIKE2",
-                        help="print a table of every parameter beside BIKE2's (e.g. jamis vs "
-                             "jamis-thesis, the published values) with the differences")
-    params.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of stdout")
+                        help="every parameter beside BIKE2's (e.g. jamis vs jamis-thesis, the published "
+                             "values) with the differences (default format: table)")
+    dialect.add_output(params, PARAMETER_FORMATS, "yaml", "the parameters")
     add_size_option(params, "--size", "--bike-size")
     params.set_defaults(run=every_size(run_params))
 
@@ -41,9 +37,9 @@ def register(sub):
                           description="Side view (x-z plane) of BIKE with an optional rider: every part's "
                                       "outline, each body's centre of mass and its ellipse of gyration; "
                                       "axes in metres, height up.")
-    _bike_and_rider(draw, rider_default="none")
-    draw.add_argument("-o", "--output", metavar="FILE", required=True, help="image file (.png, .pdf, .svg)")
-    add_figure_options(draw, "x forward, m", "height, m")
+    _bike_and_rider(draw)
+    dialect.add_plot(draw, "the side view", "x forward, m", "height, m", required=True)
+    dialect.add_quiet(draw)
     add_size_option(draw, "--bike-size")
     draw.set_defaults(run=every_size(run_draw, many=False))
 
@@ -51,17 +47,17 @@ def register(sub):
                             description="Write the assembled 3D model of BIKE (+ rider) in the benchmark "
                                         "frame (x forward, y right, z down, metres); lumped bodies appear "
                                         "as their equivalent uniform ellipsoids.")
-    _bike_and_rider(export, rider_default="none")
+    _bike_and_rider(export)
     export.add_argument("-o", "--output", metavar="FILE", required=True,
                         help="model file; the format follows the suffix (.glb, .stl, .obj)")
+    dialect.add_quiet(export)
     add_size_option(export, "--bike-size")
     export.set_defaults(run=every_size(run_export, many=False))
 
 
-def _bike_and_rider(p, rider_default):
-    p.add_argument("bike", metavar="BIKE", help="shipped bicycle name, bicycle YAML or parameter file")
-    p.add_argument("--rider", metavar="POSE", default=rider_default,
-                   help="rider pose name or pose YAML file, or 'none' (default none); seated on BIKE")
+def _bike_and_rider(p):
+    dialect.add_bike(p)
+    dialect.add_rider(p)
     allow_off_contact_option(p)
 
 
@@ -81,22 +77,37 @@ def _seated(args):
 
 def run_params(args):
     from .. import catalog
+    from ..errors import InputError
     from ..exporters import format_parameters
-    from ..output import write_atomic
 
+    if args.compare:
+        args.default_format = "table"                   # a comparison is read, not read back
+    fmt = dialect.data_format(args)
+    if args.compare and fmt == "bicycleparameters":
+        raise InputError("--format", fmt, "table, csv, json or yaml with --compare")
     params = catalog.parameters(args.bike, args.rider, args.combine, args.method, args.allow_off_contact)
     if args.compare:
         reference = catalog.parameters(args.compare, args.rider, args.combine, args.method, args.allow_off_contact)
-        text = comparison_table(params, reference, args.bike, args.compare)
+        dialect.emit(args, lambda f: comparison(params, reference, args.bike, args.compare, f))
     else:
         title = f"{args.bike} with rider {args.rider} (combine {args.combine})"
         included = args.rider not in (None, "none") or catalog.load_bicycle(args.bike).rider_included
-        text = format_parameters(params, args.format, title, included)
-    if args.output:
-        write_atomic(args.output, text)
-    else:
-        print(text, end="")
+        dialect.emit(args, lambda f: format_parameters(params, f, title, included))
     return 0
+
+
+def comparison(params, reference, name, reference_name, fmt):
+    """Every parameter of ``params`` beside ``reference`` with the difference, in ``fmt``."""
+    ours, theirs = params.to_dict(), reference.to_dict()
+    if fmt in ("json", "yaml"):
+        return dialect.document({name: ours, reference_name: theirs,
+                                 "difference": {k: ours[k] - theirs[k] for k in ours}}, fmt)
+    if fmt == "csv":
+        from ..parameters import parameter_units
+        units = parameter_units()
+        return dialect.csv_text(["parameter", "unit", name, reference_name, "difference"],
+                                [[k, units[k], ours[k], theirs[k], ours[k] - theirs[k]] for k in ours])
+    return comparison_table(params, reference, name, reference_name)
 
 
 def comparison_table(params, reference, name, reference_name):
@@ -118,14 +129,14 @@ def run_draw(args):
     from .. import catalog
     from ..bicycle.drawing import plot_side_view
 
-    options = figure_options(args, args.output)
+    options = dialect.figure_checked(args)
     bicycle, rider = _seated(args)
     title = bicycle.name + (f" + rider {rider.name}" if rider is not None else "")
     fig = plot_side_view(bicycle, rider, title, options.size, **options.limits())
     if bicycle.chart is not None:
         from ..bicycle.chart_drawing import annotate_chart
         annotate_chart(fig.axes[0], bicycle)
-    write_figure(fig, args.output, options)
+    dialect.save_plot(args, fig, options)
     return 0
 
 

@@ -1,21 +1,19 @@
 """``bikemass stiffness`` and ``bikemass modes``: the rear frame's beam model (S and natural frequencies)."""
 
-import sys
-
 from ..choices import Beam, Procedure, Support
 from ..fe.defaults import DEFAULT_ELEMENT_SIZE
-from .figure_options import add_figure_options, figure_options, write_figure
+from . import dialect
 from .sizes import add_size_option, every_size
 
 
 def _common(parser):
-    parser.add_argument("bike", metavar="BIKE", help="shipped bicycle name or bicycle YAML file")
+    dialect.add_bike(parser, "shipped bicycle name or bicycle YAML file")
     parser.add_argument("--material", metavar="M", default=None,
                         help="steel, titanium, aluminum or a one-material YAML file "
                              "(default: the frame's own materials); geometry is unchanged")
     parser.add_argument("--beam", choices=Beam.values(), default=Beam.TIMOSHENKO.value,
                         help="beam theory (default timoshenko: shear deformation + rotary inertia)")
-    parser.add_argument("--format", choices=("table", "json"), default="table")
+    dialect.add_output(parser)
 
 
 def register(subparsers):
@@ -49,22 +47,25 @@ def register(subparsers):
                    help=f"raise the limit on -n (default {MAX_MODES})")
     p.add_argument("--max-elements", type=count(), default=MAX_ELEMENTS, metavar="N",
                    help=f"raise the limit on the model's beam elements (default {MAX_ELEMENTS})")
-    p.add_argument("--plot", metavar="FILE", help="draw the mode shapes on the frame (.png, .pdf, .svg)")
-    add_figure_options(p)
+    dialect.add_plot(p, "the mode shapes on the frame")
     add_size_option(p, "--bike-size")
     p.set_defaults(run=every_size(run_modes, many=False))
 
 
 def run_stiffness(args):
     from ..frame import frame_stiffness
-    from ..output import dumps, table
 
     S = frame_stiffness(args.bike, args.material, args.procedure, args.beam)
-    if args.format == "json":
-        sys.stdout.write(dumps({"S": S, "units": "N m/rad"}, "json"))
-        return
-    sys.stdout.write(f"S (N m/rad), procedure {args.procedure}\n")
-    sys.stdout.write(table(["", "roll", "steer"], [["roll", *S[0]], ["steer", *S[1]]], "{:.1f}"))
+
+    def render(fmt):
+        if fmt in ("json", "yaml"):
+            return dialect.document({"procedure": args.procedure, "S": S}, fmt)
+        rows = [["roll", *S[0]], ["steer", *S[1]]]
+        if fmt == "csv":
+            return dialect.csv_text(["S (N m/rad)", "roll", "steer"], rows)
+        from ..output import table
+        return f"S (N m/rad), procedure {args.procedure}\n" + table(["", "roll", "steer"], rows, "{:.1f}")
+    dialect.emit(args, render)
 
 
 def run_modes(args):
@@ -72,9 +73,8 @@ def run_modes(args):
     from ..errors import InputError
     from ..fe.model import element_count
     from ..frame import frame_modes, frame_structure
-    from ..output import dumps, table
 
-    options = figure_options(args, args.plot)
+    options = dialect.figure_checked(args)
     if args.n > args.max_modes:
         raise InputError("-n", args.n, f"at most {args.max_modes} modes (raise with --max-modes)")
     bicycle = load_bicycle(args.bike)
@@ -85,10 +85,14 @@ def run_modes(args):
     modes = frame_modes(bicycle, args.bc, args.n, args.material, args.element_size, args.beam)
     if args.plot:
         from ..fe.plot import plot_frame_modes
-        write_figure(plot_frame_modes(modes, size=options.size), args.plot, options)
-    if args.format == "json":
-        sys.stdout.write(dumps(modes.to_dict(), "json"))
-        return
-    sys.stdout.write(f"natural frequencies, {args.bc}\n")
-    rows = [[i + 1, f] for i, f in enumerate(modes.frequencies_hz)]
-    sys.stdout.write(table(["mode", "frequency (Hz)"], rows, "{:.3f}"))
+        dialect.save_plot(args, plot_frame_modes(modes, size=options.size), options)
+
+    def render(fmt):
+        if fmt in ("json", "yaml"):
+            return dialect.document({"support": args.bc, **modes.to_dict()}, fmt)
+        rows = [[i + 1, f] for i, f in enumerate(modes.frequencies_hz)]
+        if fmt == "csv":
+            return dialect.csv_text(["mode", "frequency (Hz)"], rows)
+        from ..output import table
+        return f"natural frequencies, {args.bc}\n" + table(["mode", "frequency (Hz)"], rows, "{:.3f}")
+    dialect.emit(args, render)

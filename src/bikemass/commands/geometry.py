@@ -1,6 +1,6 @@
 """``bikemass geometry``: the derived geometry chart of bicycles (chart or keypoints, every size)."""
 
-FORMATS = ("table", "csv", "json", "yaml")
+from . import dialect
 
 
 def register(sub):
@@ -14,14 +14,11 @@ def register(sub):
     p.add_argument("bikes", metavar="BIKE", nargs="+",
                    help="shipped bicycle name, bicycle YAML (chart or keypoints) or parameter file; "
                         "BIKE@SIZE picks one size of a size run")
-    p.add_argument("--size", "--bike-size", dest="bike_size", metavar="SIZE", help="the size to report of size-run files (default: every size)")
-    p.add_argument("--format", choices=FORMATS, default="table",
-                   help="table (default, mm and deg), csv (mm and deg), json or yaml (m and deg, an object "
-                        "keyed by each BIKE as given; a size run: by size within it)")
-    p.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of stdout")
-    p.add_argument("--plot", metavar="FILE",
-                   help="also draw the side view of the (one) bicycle with its chart dimensions (.png, .pdf, .svg)")
-    p.add_argument("--quiet", action="store_true", help="print nothing on stdout (with -o or --plot)")
+    p.add_argument("--size", "--bike-size", dest="bike_size", metavar="SIZE",
+                   help="the size to report of size-run files (default: every size)")
+    dialect.add_output(p, what="the chart (table and csv in mm and deg; json and yaml in m and deg, "
+                               "keyed by each BIKE as given; a size run: by size within it)")
+    dialect.add_plot(p, "the side view of the (one) bicycle with its chart dimensions", options=False)
     p.set_defaults(run=run_geometry)
 
 
@@ -74,21 +71,19 @@ def chart_table(result, csv=False):
 
 def run_geometry(args):
     from ..errors import InputError
-    from ..output import dumps, write_atomic
 
     if args.plot and len(args.bikes) != 1:
         raise InputError("--plot", args.plot, "one BIKE to draw (got several)")
     if args.plot:
         _plot(args)
     result = charts(args.bikes, args.bike_size)
-    if args.format in ("json", "yaml"):
-        text = dumps(result, args.format)
-    else:
-        text = chart_table(result, csv=args.format == "csv")
-    if args.output:
-        write_atomic(args.output, text)
-    elif not args.quiet:
-        print(text, end="")
+
+    def render(fmt):
+        if fmt in ("json", "yaml"):
+            from ..bicycle.derived_chart import ANGLES, CHART_ORDER
+            return dialect.document(result, fmt, {k: "deg" if k in ANGLES else "m" for k in CHART_ORDER})
+        return chart_table(result, csv=fmt == "csv")
+    dialect.emit(args, render)
     return 0
 
 

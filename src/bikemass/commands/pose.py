@@ -3,8 +3,8 @@
 
 import warnings
 
-from ..choices import Combine, Grip
-from .figure_options import add_figure_options, figure_options, write_figure
+from ..choices import Grip
+from . import dialect
 from .sizes import add_size_option, every_size
 
 JOINT_HELP = "torso_lean, neck, shoulder, elbow, hip, knee"
@@ -18,7 +18,7 @@ def register(sub):
                                    "sit on the saddle, the hands on a grip and the feet on the pedals "
                                    "of BIKE's contacts: section; write the pose in the placement form "
                                    "(docs/poses.md).")
-    p.add_argument("bike", metavar="BIKE", help="shipped bicycle name or bicycle YAML file with contacts:")
+    dialect.add_bike(p, "shipped bicycle name or bicycle YAML file with contacts:")
     p.add_argument("--body", default="thesis_rider", help="anthropometry with joints: (default thesis_rider)")
     p.add_argument("--torso-lean", type=angle(180), metavar="DEG",
                    help="fix the torso lean from vertical (deg, forward positive); default: solved "
@@ -30,9 +30,9 @@ def register(sub):
     p.add_argument("--fix", action="append", default=[], metavar="JOINT=DEG",
                    help=f"fix any joint angle ({JOINT_HELP}); repeatable")
     p.add_argument("--name", help="pose name written to the file")
-    p.add_argument("--out", "-o", metavar="FILE", help="write the placement-form pose YAML here")
-    p.add_argument("--plot", metavar="FILE", help="side view of the posed rider on the bicycle (.png, .pdf, .svg)")
-    add_figure_options(p, "x forward, m", "height, m")
+    dialect.add_output(p, what="the report (table) or the solved pose (yaml or json: a placement-form "
+                               "pose file, docs/poses.md)")
+    dialect.add_plot(p, "the side view of the posed rider on the bicycle", "x forward, m", "height, m")
     add_size_option(p, "--bike-size")
     p.set_defaults(run=every_size(run_pose, many=False))
     f = sub.add_parser("pose-fit", help="thesis poses vs their closest joined-up chain poses",
@@ -41,8 +41,8 @@ def register(sub):
                                    "rider's mass properties and BIKE's weave and capsize speeds.")
     f.add_argument("poses", nargs="*", metavar="POSE", help="placement poses (default: the five thesis poses)")
     f.add_argument("--bike", default="jamis-thesis", help="bicycle for the speeds (default jamis-thesis)")
-    f.add_argument("--combine", choices=Combine.values(), default=Combine.EXACT.value,
-                   help="rider + rear frame: parallel-axis theorem (default) or the thesis's Eq. 3.6")
+    dialect.add_combine(f)
+    dialect.add_output(f, what="the comparison")
     f.set_defaults(run=run_fit)
 
 
@@ -82,63 +82,103 @@ def _report(solution, gaps, hands, crank):
 
 
 def run_pose(args):
-    import yaml
-
-    from ..output import plain, write_atomic
     from ..posing import pose_rider
 
-    options = figure_options(args, args.plot)
+    options = dialect.figure_checked(args)
     posed = pose_rider(args.bike, args.body, args.hands, args.crank, _fixed(args), args.name)
-    solution, hands = posed.solution, posed.hands
-    print(_report(solution, posed.gaps, hands, args.crank))
-    if args.out:
-        header = "".join(f"# {line}\n" for line in (
-            f"Chain pose written by: bikemass pose {args.bike} --hands {hands}"
-            + (f" --crank {args.crank:g}" if args.crank is not None else ""),
-            "joint angles (deg): " + ", ".join(f"{k} {v:.3f}" for k, v in sorted(solution.pose.angles.items())),
-            "placement form (docs/riders.md): location = top-plane centre (m), angle (deg)"))
-        write_atomic(args.out, header + yaml.safe_dump(plain(posed.document), sort_keys=False,
-                                                       default_flow_style=None))
-        print(f"wrote {args.out}")
+    dialect.emit(args, lambda fmt: _pose_text(args, posed, fmt))
     if args.plot:
         from ..plots.pose import plot_pose
-        fig = plot_pose(posed.bicycle, posed.rider, solution, f"{posed.rider.name}: chain pose", options.size,
-                        **options.limits())
-        write_figure(fig, args.plot, options)
-        print(f"wrote {args.plot}")
+        fig = plot_pose(posed.bicycle, posed.rider, posed.solution, f"{posed.rider.name}: chain pose",
+                        options.size, **options.limits())
+        dialect.save_plot(args, fig, options)
     return 0
 
 
-def run_fit(args):
-    from ..output import table
-    from ..rider import THESIS_POSES
-    from ..rider.chain import JOINTS
-    from ..errors import BikemassWarning
-    from ..rider.thesis_fit import compare_with_chain, first
+def _pose_text(args, posed, fmt):
+    """The report (table, csv) or the placement-form pose file (yaml, json; read back by load_rider)."""
+    solution, hands = posed.solution, posed.hands
+    if fmt == "table":
+        return _report(solution, posed.gaps, hands, args.crank) + "\n"
+    if fmt == "csv":
+        angles = solution.pose.angles
+        return dialect.csv_text(["joint", "angle (deg)", "solved"],
+                                [[j, angles[j], j in solution.free] for j in angles])
+    text = dialect.document(posed.document, fmt)
+    if fmt == "json":
+        return text
+    header = "".join(f"# {line}\n" for line in (
+        f"Chain pose written by: bikemass pose {args.bike} --hands {hands}"
+        + (f" --crank {args.crank:g}" if args.crank is not None else ""),
+        "joint angles (deg): " + ", ".join(f"{k} {v:.3f}" for k, v in sorted(solution.pose.angles.items())),
+        "placement form (docs/riders.md): location = top-plane centre (m), angle (deg)"))
+    return header + text
 
-    rows, props, angles = [], [], []
+
+FIT_UNITS = {"plane_gaps": "m", "fit_rms": "m", "fit_max": "m", "chain_gap": "m", "weave_speed": "m/s",
+             "capsize_speed": "m/s", "com_change": "m", "inertia_change": "kg m^2"}
+"""Units of the ``pose-fit`` JSON/YAML keys (besides the shared ones: hip_joints, angles)."""
+
+
+def run_fit(args):
+    from ..errors import BikemassWarning
+    from ..rider import THESIS_POSES
+    from ..rider.thesis_fit import compare_with_chain
+
+    fits = {}
     for pose in args.poses or THESIS_POSES:
         r = compare_with_chain(pose, args.bike, args.combine)
         for line in r["warnings"]:
             warnings.warn(f"{pose} chain fit: {line}", BikemassWarning)
-        g = r["plane_gaps"]
-        (wt, tc), (wc, cc) = ((first(w), first(c)) for w, c in (r["speeds"]["thesis"], r["speeds"]["chain"]))
-        rows.append((pose, g["elbow"] * 1000, g["knee"] * 1000, g["hip"] * 1000, r["rms"] * 1000, r["max"] * 1000,
-                     f"{max(r['chain_gaps'].values()):.1e}", wt, wc, wc - wt, tc, cc, cc - tc))
-        angles.append((pose, r["chain"].root[0], r["chain"].root[1], *(r["chain"].angles[j] for j in JOINTS)))
-        t, c = r["thesis"], r["fitted"]
-        d = c.com - t.com
-        props.append((pose, d[0] * 1000, d[2] * 1000, *(c.inertia[i, j] - t.inertia[i, j]
-                                                        for i, j in ((0, 0), (1, 1), (2, 2), (0, 2))),
-                      *(100 * (c.inertia[i, i] / t.inertia[i, i] - 1) for i in range(3))))
-    print(f"Placement poses vs closest chain poses; speeds of {args.bike} (combine {args.combine})")
-    print("Gaps of the placement pose in the x-z plane (mm): elbow, knee, and hip* from the chain's assumed "
-          "hip joint (bodies/thesis_rider.yaml joints.hip); fit: distances of the segment ends (mm); "
-          "largest gap of the chain pose (m); critical speeds (m/s)")
-    print(table(("pose", "elbow", "knee", "hip*", "fit rms", "fit max", "chain gap",
-                 "weave", "chain", "change", "capsize", "chain", "change"), rows, "{:.3f}"))
-    print("Closest chain poses: hip joints (m) and joint angles (deg)")
-    print(table(("pose", "hip x", "hip z", *(j.replace("_", " ") for j in JOINTS)), angles, "{:.3f}"))
-    print("Rider mass properties, chain minus placement pose (CoM in mm, inertia in kg m^2, % of the pose's)")
-    print(table(("pose", "dx", "dz", "dIxx", "dIyy", "dIzz", "dIxz", "Ixx %", "Iyy %", "Izz %"), props, "{:+.3f}"))
+        fits[pose] = r
+    dialect.emit(args, lambda fmt: _fit_text(args, fits, fmt))
     return 0
+
+
+def _fit_record(r):
+    """The ``pose-fit`` result of one pose as plain data (SI, degrees)."""
+    from ..rider.thesis_fit import first
+
+    t, c = r["thesis"], r["fitted"]
+    (wt, tc), (wc, cc) = ((first(w), first(c)) for w, c in (r["speeds"]["thesis"], r["speeds"]["chain"]))
+    return {"plane_gaps": dict(r["plane_gaps"]), "fit_rms": r["rms"], "fit_max": r["max"],
+            "chain_gap": max(r["chain_gaps"].values()),
+            "weave_speed": {"placement": wt, "chain": wc}, "capsize_speed": {"placement": tc, "chain": cc},
+            "hip_joints": list(r["chain"].root), "angles": dict(r["chain"].angles),
+            "com_change": (c.com - t.com).tolist(), "inertia_change": (c.inertia - t.inertia).tolist()}
+
+
+def _fit_text(args, fits, fmt):
+    from ..output import table
+    from ..rider.chain import JOINTS
+
+    records = {pose: _fit_record(r) for pose, r in fits.items()}
+    if fmt in ("json", "yaml"):
+        return dialect.document({"bike": args.bike, "combine": args.combine, "poses": records}, fmt, FIT_UNITS)
+    rows, props, angles = [], [], []
+    for pose, f in records.items():
+        g, (wt, wc), (tc, cc) = f["plane_gaps"], f["weave_speed"].values(), f["capsize_speed"].values()
+        rows.append((pose, g["elbow"] * 1000, g["knee"] * 1000, g["hip"] * 1000, f["fit_rms"] * 1000,
+                     f["fit_max"] * 1000, f"{f['chain_gap']:.1e}", wt, wc, wc - wt, tc, cc, cc - tc))
+        angles.append((pose, *f["hip_joints"], *(f["angles"][j] for j in JOINTS)))
+        t, c = fits[pose]["thesis"], fits[pose]["fitted"]
+        d, dI = f["com_change"], f["inertia_change"]
+        props.append((pose, d[0] * 1000, d[2] * 1000, *(dI[i][j] for i, j in ((0, 0), (1, 1), (2, 2), (0, 2))),
+                      *(100 * (c.inertia[i, i] / t.inertia[i, i] - 1) for i in range(3))))
+    headers = ("pose", "elbow", "knee", "hip*", "fit rms", "fit max", "chain gap",
+               "weave", "chain", "change", "capsize", "chain", "change")
+    if fmt == "csv":
+        return dialect.csv_text(["pose", "elbow gap (mm)", "knee gap (mm)", "hip gap (mm)", "fit rms (mm)",
+                                 "fit max (mm)", "chain gap (m)", "weave (m/s)", "chain weave (m/s)",
+                                 "change (m/s)", "capsize (m/s)", "chain capsize (m/s)", "change (m/s)"], rows)
+    return "\n".join([
+        f"Placement poses vs closest chain poses; speeds of {args.bike} (combine {args.combine})",
+        "Gaps of the placement pose in the x-z plane (mm): elbow, knee, and hip* from the chain's assumed "
+        "hip joint (bodies/thesis_rider.yaml joints.hip); fit: distances of the segment ends (mm); "
+        "largest gap of the chain pose (m); critical speeds (m/s)",
+        table(headers, rows, "{:.3f}"),
+        "Closest chain poses: hip joints (m) and joint angles (deg)",
+        table(("pose", "hip x", "hip z", *(j.replace("_", " ") for j in JOINTS)), angles, "{:.3f}"),
+        "Rider mass properties, chain minus placement pose (CoM in mm, inertia in kg m^2, % of the pose's)",
+        table(("pose", "dx", "dz", "dIxx", "dIyy", "dIzz", "dIxz", "Ixx %", "Iyy %", "Izz %"), props, "{:+.3f}"),
+    ]) + "\n"

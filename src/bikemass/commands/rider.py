@@ -1,6 +1,8 @@
 """``bikemass rider POSE`` and ``bikemass riders``: rider mass, centre of mass and inertia."""
 
-FORMATS = ("table", "json", "yaml")
+from ..choices import Overlap
+from . import dialect
+
 TABLE_3_4_ROWS = (("mass (kg)", lambda p: p.mass),
                   ("x (m)", lambda p: p.com[0]), ("y (m)", lambda p: p.com[1]),
                   ("z (m)", lambda p: p.com[2]),
@@ -33,12 +35,11 @@ def register(sub):
 
 
 def _common_options(p):
-    p.add_argument("--format", choices=FORMATS, default="table", help="output format (default table)")
+    dialect.add_output(p)
     p.add_argument("--as-printed", action="store_true",
                    help="use Table 3-3 as printed (errata not applied)")
-    p.add_argument("--method", choices=("mesh", "exact"), default="mesh",
-                   help="mass properties from trimesh meshes (default) or closed-form solids")
-    p.add_argument("--overlap", choices=("sum", "union"), default="sum",
+    dialect.add_method(p)
+    p.add_argument("--overlap", choices=Overlap.values(), default=Overlap.SUM.value,
                    help="overlapping segments summed as in the thesis (default) or counted once")
 
 
@@ -75,23 +76,38 @@ def rider_document(rider, props, seated, method, segments):
 
 
 def _contacts_table(seated):
-    from ..errors import _shown
+    from ..errors import shown
     from ..output import table
     rows = [(name, gap * 1000, key) for name, (gap, key) in seated.contacts.items()]
-    head = (f"On {seated.bicycle.name} ({_shown(seated.bicycle.source)}): pose {seated.how}"
+    head = (f"On {seated.bicycle.name} ({shown(seated.bicycle.source)}): pose {seated.how}"
             + ("" if seated.solution is None else " by the chain, joint angles (deg): "
                + ", ".join(f"{k} {v:.1f}" for k, v in seated.solution.pose.angles.items())))
     return head + "\n" + table(["contact", "residual (mm)", "bicycle key"], rows, floatfmt="{:.4f}")
 
 
 def run_rider(args):
-    from ..output import dumps, table
-
     rider, seated = _seated(args)
     props = rider.properties(args.method, args.overlap)
-    if args.format != "table":
-        print(dumps(rider_document(rider, props, seated, args.method, args.segments), args.format), end="")
-        return 0
+    dialect.emit(args, lambda fmt: _rider_text(args, rider, props, seated, fmt))
+    return 0
+
+
+SEGMENT_HEADERS = ["segment", "frame", "mass (kg)", "x (m)", "y (m)", "z (m)", "Ixx", "Iyy", "Izz", "Ixz"]
+
+
+def _rider_text(args, rider, props, seated, fmt):
+    from ..output import table
+
+    if fmt in ("json", "yaml"):
+        return dialect.document(rider_document(rider, props, seated, args.method, args.segments), fmt)
+    rows = [[name, body.replace("_frame", ""), mp.mass, *(_clean(v) for v in mp.com),
+             *(_clean(mp.inertia[i, j]) for i, j in ((0, 0), (1, 1), (2, 2), (0, 2)))]
+            for name, body, mp in rider.breakdown(args.method)]
+    if fmt == "csv":
+        I = props.inertia
+        total = ["total", "", props.mass, *props.com, I[0, 0], I[1, 1], I[2, 2], I[0, 2]]
+        return dialect.csv_text(SEGMENT_HEADERS[:6] + [f"{h} (kg m^2)" for h in SEGMENT_HEADERS[6:]],
+                                rows + [total])
     I = props.inertia
     lines = [f"Rider {rider.name!r} (pose {rider.pose}; method {args.method}, overlap {args.overlap}"
              f"{', as printed' if args.as_printed else ''})",
@@ -99,42 +115,52 @@ def run_rider(args):
              "com      [" + ", ".join(f"{_clean(v):.4f}" for v in props.com) + "] m",
              "inertia  about the com, kg m^2 (tensor products):"]
     lines += ["         [" + ", ".join(f"{_clean(v):9.4f}" for v in row) + "]" for row in I]
-    print("\n".join(lines) + "\n")
-    rows = [[name, body.replace("_frame", ""), mp.mass, *(_clean(v) for v in mp.com),
-             *(_clean(mp.inertia[i, j]) for i, j in ((0, 0), (1, 1), (2, 2), (0, 2)))]
-            for name, body, mp in rider.breakdown(args.method)]
-    print("Per segment (centre of mass in the benchmark frame; inertia about the segment's own com):")
-    print(table(["segment", "frame", "mass (kg)", "x (m)", "y (m)", "z (m)",
-                 "Ixx", "Iyy", "Izz", "Ixz"], rows, floatfmt="{:.4f}"), end="")
+    text = ("\n".join(lines) + "\n\n"
+            "Per segment (centre of mass in the benchmark frame; inertia about the segment's own com):\n"
+            + table(SEGMENT_HEADERS, rows, floatfmt="{:.4f}"))
     if seated is not None and seated.contacts:
-        print("\n" + _contacts_table(seated), end="")
-    return 0
+        text += "\n" + _contacts_table(seated)
+    return text
 
 
 def run_riders(args):
-    from ..output import dumps, table
     from ..rider import PUBLISHED_SUFFIX, load_rider, shipped_poses
 
     poses = shipped_poses()
     props = {p: load_rider(p, args.as_printed).properties(args.method, args.overlap) for p in poses}
     if args.compare:
         published = {p: load_rider(p + PUBLISHED_SUFFIX).properties("exact") for p in poses}
-        if args.format != "table":
-            data = {p: {"bikemass": props[p].to_dict(), "thesis": published[p].to_dict()} for p in poses}
-            print(dumps(data, args.format), end="")
-            return 0
-        rows = []
-        for p in poses:
-            for label, get in TABLE_3_4_ROWS:
-                ours, theirs = get(props[p]), get(published[p])
-                rel = f"{_clean(100 * (ours - theirs) / abs(theirs), 3):+.3f}" if theirs else "-"
-                rows.append([p, label, _clean(ours), theirs, _clean(ours - theirs), rel])
-        print(table(["pose", "quantity", "bikemass", "thesis", "difference", "relative (%)"], rows,
-                    floatfmt="{:.4f}"), end="")
-        return 0
-    if args.format != "table":
-        print(dumps({p: {"pose": p, **props[p].to_dict()} for p in poses}, args.format), end="")
-        return 0
-    rows = [[label, *(_clean(get(props[p]), 3) for p in poses)] for label, get in TABLE_3_4_ROWS]
-    print(table(["", *poses], rows), end="")
+        dialect.emit(args, lambda fmt: _comparison_text(poses, props, published, fmt))
+    else:
+        dialect.emit(args, lambda fmt: _riders_text(poses, props, fmt))
     return 0
+
+
+def _comparison_text(poses, props, published, fmt):
+    from ..output import table
+
+    if fmt in ("json", "yaml"):
+        return dialect.document({"riders": {p: {"bikemass": props[p].to_dict(), "thesis": published[p].to_dict()}
+                                            for p in poses}}, fmt)
+    rows = []
+    for p in poses:
+        for label, get in TABLE_3_4_ROWS:
+            ours, theirs = get(props[p]), get(published[p])
+            rel = _clean(100 * (ours - theirs) / abs(theirs), 3) if theirs else None
+            rows.append([p, label, _clean(ours), theirs, _clean(ours - theirs), rel])
+    headers = ["pose", "quantity", "bikemass", "thesis", "difference", "relative (%)"]
+    if fmt == "csv":
+        return dialect.csv_text(headers, rows)
+    return table(headers, [r[:5] + ["-" if r[5] is None else f"{r[5]:+.3f}"] for r in rows], floatfmt="{:.4f}")
+
+
+def _riders_text(poses, props, fmt):
+    from ..output import table
+
+    if fmt in ("json", "yaml"):
+        return dialect.document({"riders": {p: {"pose": p, **props[p].to_dict()} for p in poses}}, fmt)
+    if fmt == "csv":
+        return dialect.csv_text(["quantity", *poses], [[label, *(get(props[p]) for p in poses)]
+                                                       for label, get in TABLE_3_4_ROWS])
+    rows = [[label, *(_clean(get(props[p]), 3) for p in poses)] for label, get in TABLE_3_4_ROWS]
+    return table(["", *poses], rows)

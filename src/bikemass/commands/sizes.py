@@ -24,7 +24,8 @@ def every_size(run, many=True):
     def wrapped(args):
         from ..bicycle.loader import bicycle_sizes
         from ..errors import InputError
-        from ..output import dumps, write_atomic
+        from ..output import write_atomic
+        from .dialect import data_format, document
 
         if args.bike_size is not None:
             args.bike = f"{args.bike}@{args.bike_size}"
@@ -32,14 +33,14 @@ def every_size(run, many=True):
         sizes = bicycle_sizes(args.bike) if many else ()
         if not sizes:
             return run(args)
-        fmt = getattr(args, "format", "table")
+        fmt = data_format(args) if hasattr(args, "format_choices") else "table"
         if getattr(args, "plot", None) or getattr(args, "compare", None) or fmt not in DATA_FORMATS + ("table",):
             raise InputError(args.bike, "sizes", f"one size (BIKE@SIZE or --bike-size) for this output: "
                                                  f"one of {', '.join(sizes)}")
         outputs = {}
         for size in sizes:
             one = copy(args)
-            one.bike, one.output = f"{args.bike}@{size}", None
+            one.bike, one.output, one.format, one.quiet = f"{args.bike}@{size}", None, fmt, False
             buffer = io.StringIO()
             with contextlib.redirect_stdout(buffer):
                 run(one)
@@ -49,12 +50,14 @@ def every_size(run, many=True):
 
             import yaml
             load = json.loads if fmt == "json" else yaml.safe_load
-            text = dumps({size: load(out) for size, out in outputs.items()}, fmt)
+            documents = {size: load(out) for size, out in outputs.items()}
+            text = document({size: {k: v for k, v in d.items() if k != "units"} for size, d in documents.items()},
+                            fmt)
         else:
             text = "\n".join(f"size {size}\n{out}" for size, out in outputs.items())
         if getattr(args, "output", None):
             write_atomic(args.output, text)
-        else:
+        elif not getattr(args, "quiet", False):
             print(text, end="")
         return 0
     return wrapped

@@ -1,11 +1,10 @@
-"""``bikemass eig`` and ``bikemass stability``: eigenvalues over speed, critical speeds, stable ranges."""
+"""``bikemass eig``, ``bikemass stability`` and ``bikemass compare``: eigenvalues over speed,
+critical speeds, stable ranges."""
 
-from .figure_options import add_figure_options, figure_options, write_figure
+from . import dialect
 from .sizes import add_size_option, every_size
 
-EIG_FORMATS = ("table", "csv", "json")
 SPEED_LIMIT = "speed, m/s"
-STABILITY_FORMATS = ("table", "json")
 
 
 def register(sub):
@@ -16,9 +15,8 @@ def register(sub):
         description="Eigenvalues of the linearised Whipple bicycle (Meijaard et al. 2007) at every "
                     "speed, each followed across speed and labelled weave 1, weave 2, capsize, caster.")
     _common(eig)
-    eig.add_argument("--format", choices=EIG_FORMATS, default=None,
-                     help="table (default; not printed when only --plot is given), csv or json")
-    add_figure_options(eig, SPEED_LIMIT, "real parts, 1/s")
+    dialect.add_output(eig, what="the eigenvalues")
+    dialect.add_plot(eig, "the eigenvalues against speed (Fig. 4-4 layout)", SPEED_LIMIT, "real parts, 1/s")
     add_size_option(eig, "--bike-size")
     eig.set_defaults(run=every_size(run_eig))
 
@@ -32,8 +30,8 @@ def register(sub):
                       default=2.0, metavar="RAD_S",
                       help="modulus (rad/s) below which an unstable eigenvalue counts as marginally "
                            "stable (default 2.0, as the thesis)")
-    stab.add_argument("--format", choices=STABILITY_FORMATS, default="table", help="table (default) or json")
-    add_figure_options(stab, SPEED_LIMIT, "real parts, 1/s")
+    dialect.add_output(stab, what="the critical speeds and ranges")
+    dialect.add_plot(stab, "the eigenvalues with the stable speeds shaded", SPEED_LIMIT, "real parts, 1/s")
     add_size_option(stab, "--bike-size")
     stab.set_defaults(run=every_size(run_stability))
 
@@ -42,20 +40,17 @@ def register(sub):
         description="Weave and capsize speeds and the stable speeds of every rider x stiffness: a "
                     "figure with one line per configuration (riders as rows, stiffnesses as colours) "
                     "and a table.")
-    comp.add_argument("bike", metavar="BIKE", help="shipped bicycle name, bicycle YAML or parameter file")
+    dialect.add_bike(comp)
     comp.add_argument("--riders", metavar="POSES", default="none",
                       help="comma-separated rider poses or pose files, 'none' for no rider "
                            "(e.g. none,relaxed,aero-tuck)")
     _allow(comp)
-    comp.add_argument("--stiffnesses", metavar="S", default="infinite",
-                      help="comma-separated stiffnesses as for --stiffness (e.g. infinite,steel,aluminum)")
-    comp.add_argument("--combine", choices=("exact", "thesis"), default="exact",
-                      help="rider + frame: parallel-axis theorem (exact, default) or the thesis's Eq. 3.6")
-    comp.add_argument("--speeds", metavar="START:STOP:STEP", default="0:30:0.05",
-                      help="speed grid in m/s (default 0:30:0.05)")
+    dialect.add_stiffness(comp, many=True)
+    dialect.add_combine(comp)
+    dialect.add_speeds(comp)
     _max_speeds(comp)
-    comp.add_argument("-o", "--output", metavar="FILE", required=True, help="figure (.png, .pdf, .svg)")
-    add_figure_options(comp, SPEED_LIMIT)
+    dialect.add_output(comp, what="the critical speeds of every configuration")
+    dialect.add_plot(comp, "the weave and capsize speeds of every configuration", SPEED_LIMIT)
     add_size_option(comp, "--bike-size")
     comp.set_defaults(run=every_size(run_compare, many=False))
 
@@ -66,49 +61,19 @@ def _allow(p):
 
 
 def _common(p):
-    p.add_argument("bike", metavar="BIKE", help="shipped bicycle name, bicycle YAML or parameter file")
-    p.add_argument("--rider", metavar="POSE", default="none",
-                   help="rider pose name or pose YAML file, or 'none' (default none)")
+    dialect.add_bike(p)
+    dialect.add_rider(p)
     _allow(p)
-    p.add_argument("--combine", choices=("exact", "thesis"), default="exact",
-                   help="rider + frame: parallel-axis theorem (exact, default) or the thesis's Eq. 3.6")
-    p.add_argument("--stiffness", metavar="S", default="infinite",
-                   help="rear-frame stiffness: infinite (rigid, default), steel, titanium, aluminum "
-                        "(the bicycle's published S if it carries one, else the beam model of its rear "
-                        "frame, condensed) or a YAML file with S: [[..], [..]] in N m/rad")
-    p.add_argument("--speeds", metavar="START:STOP:STEP", default="0:30:0.05",
-                   help="speed grid in m/s (default 0:30:0.05, the thesis's)")
+    dialect.add_combine(p)
+    dialect.add_stiffness(p)
+    dialect.add_speeds(p)
     _max_speeds(p)
-    p.add_argument("--plot", metavar="FILE", help="also draw the eigenvalue figure (.png, .pdf, .svg)")
-    p.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of stdout")
 
 
 def _max_speeds(p):
     from ..options import MAX_SPEEDS, count
     p.add_argument("--max-speeds", type=count(), default=MAX_SPEEDS, metavar="N",
                    help=f"raise the limit on the speeds in the grid (default {MAX_SPEEDS})")
-
-
-def parse_speeds(text, max_speeds=None):
-    """``"start:stop:step"`` -> speed grid (m/s); InputError if malformed or over ``max_speeds``."""
-    from ..errors import InputError, short
-    from ..options import MAX_SPEED, MAX_SPEEDS, MIN_SPEED_STEP
-    from ..stability import speed_grid
-
-    limit = max_speeds or MAX_SPEEDS
-    expected = (f"START:STOP:STEP in m/s with 0 <= START < STOP <= {MAX_SPEED:g}, "
-                f"{MIN_SPEED_STEP:g} <= STEP <= STOP - START")
-    try:
-        start, stop, step = (float(x) for x in text.split(":"))
-    except ValueError:
-        raise InputError("--speeds", text, expected) from None
-    if not (0 <= start < stop <= MAX_SPEED and MIN_SPEED_STEP <= step <= stop - start):
-        raise InputError("--speeds", text, expected)
-    count = int(round((stop - start) / step)) + 1
-    if count > limit:
-        raise InputError("--speeds", text, f"at most {limit} speeds, got {count} "
-                                                      "(raise with --max-speeds)")
-    return speed_grid(start, stop, step)
 
 
 def _inputs(args, rider=None, stiffness=None):
@@ -137,32 +102,24 @@ def _title(args):
     return f"{args.bike}, {_rider_name(args.rider)}, {_stiffness_name(args.stiffness)}{thesis}"
 
 
-def _emit(args, text):
-    from ..output import write_atomic
-    if args.output:
-        write_atomic(args.output, text)
-    else:
-        print(text, end="")
-
-
 def run_eig(args):
     from ..dynamics import eigenvalues
-    from ..output import dumps
 
-    options = figure_options(args, args.plot)
-    speeds = parse_speeds(args.speeds, args.max_speeds)
-    modes = eigenvalues(*_inputs(args), speeds)
-    if args.format or args.output or not args.plot:      # only a figure asked for: no table
-        if args.format == "json":
-            text = dumps(modes.to_dict(), "json")
-        else:
-            text = eig_table(modes, csv=args.format == "csv")
-        _emit(args, text)
+    options = dialect.figure_checked(args)
+    speeds = dialect.parse_speeds(args.speeds, args.max_speeds)
+    inputs = _inputs(args)
+    modes = eigenvalues(*inputs, speeds)
+
+    def render(fmt):
+        if fmt in ("json", "yaml"):
+            return dialect.document(modes.to_dict(), fmt)
+        return eig_table(modes, csv=fmt == "csv")
+    dialect.emit(args, render)
     if args.plot:
         from ..dynamics import stability
         from ..plots.stability import plot_eigenvalues
-        result = stability(*_inputs(args), speeds)          # marks v_w, v_c and shades the stable speeds
-        write_figure(plot_eigenvalues(result, _title(args), options.size, **options.limits()), args.plot, options)
+        result = stability(*inputs, speeds)          # marks v_w, v_c and shades the stable speeds
+        dialect.save_plot(args, plot_eigenvalues(result, _title(args), options.size, **options.limits()), options)
     return 0
 
 
@@ -200,45 +157,73 @@ def weave_cells(a, b, paired):
 def run_stability(args):
     from ..dynamics import stability
     from ..errors import InputError
-    from ..output import dumps
 
-    options = figure_options(args, args.plot)
-    speeds = parse_speeds(args.speeds, args.max_speeds)
+    options = dialect.figure_checked(args)
+    if not args.marginal > 0:
+        raise InputError("--marginal", args.marginal, "a positive modulus in rad/s")
+    speeds = dialect.parse_speeds(args.speeds, args.max_speeds)
     result = stability(*_inputs(args), speeds, marginal=args.marginal)
-    text = dumps(result.to_dict(), "json") if args.format == "json" else stability_text(result, _title(args))
-    _emit(args, text)
+
+    def render(fmt):
+        if fmt in ("json", "yaml"):
+            return dialect.document(result.to_dict(), fmt)
+        if fmt == "csv":
+            return ranges_csv(result)
+        return stability_text(result, _title(args))
+    dialect.emit(args, render)
     if args.plot:
         from ..plots.stability import plot_eigenvalues
-        write_figure(plot_eigenvalues(result, _title(args), options.size, **options.limits()), args.plot, options)
+        dialect.save_plot(args, plot_eigenvalues(result, _title(args), options.size, **options.limits()), options)
     return 0
+
+
+def ranges_csv(result):
+    """One row per stable speed range: modes (all, weave, or one label), criterion, ends, start, stop."""
+    scopes = {"all modes": result.ranges, "weave": result.weave_ranges, **result.mode_ranges}
+    rows = [[scope, criterion, ends, a, b] for scope, ranges in scopes.items()
+            for criterion, by_ends in ranges.items() for ends, spans in by_ends.items() for a, b in spans]
+    return dialect.csv_text(["modes", "criterion", "ends", "start (m/s)", "stop (m/s)"], rows)
 
 
 def run_compare(args):
     from ..dynamics import stability
     from ..errors import InputError, short
-    from ..output import table
-    from ..plots.critical_speeds import plot_critical_speeds
 
-    options = figure_options(args, args.output)
-    speeds = parse_speeds(args.speeds, args.max_speeds)
+    options = dialect.figure_checked(args)
+    speeds = dialect.parse_speeds(args.speeds, args.max_speeds)
     riders = [r.strip() for r in args.riders.split(",") if r.strip()]
     stiffnesses = [k.strip() for k in args.stiffnesses.split(",") if k.strip()]
     for option, items in (("--riders", riders), ("--stiffnesses", stiffnesses)):
         if not items:
             raise InputError(option, short(getattr(args, option[2:]), 40), "a comma-separated list of at least one name")
-    results, rows = {}, []
+    results, runs = {}, []
     for rider in riders:
         for stiffness in stiffnesses:
             result = stability(*_inputs(args, rider, stiffness), speeds)
             results.setdefault(_rider_name(rider), {})[_stiffness_name(stiffness)] = result
-            rows.append([rider, stiffness, _speeds(result.weave_speeds), _speeds(result.capsize_speeds),
-                         _ranges(result.ranges["strict"]["exact"], "{:.4f}")])
-    fig = plot_critical_speeds(results, f"{args.bike}: weave and capsize speeds ({_combine(args.combine)})",
-                               options.size, options.xlim)
-    write_figure(fig, args.output, options)
-    text = table(["rider", "stiffness", "weave speeds", "capsize speeds", "stable (strict)"], rows)
-    print(text + f"wrote {args.output}")
+            runs.append({"rider": rider, "stiffness": stiffness, "weave_speeds": list(result.weave_speeds),
+                         "capsize_speeds": list(result.capsize_speeds),
+                         "stable_speeds": [list(r) for r in result.stable_speeds]})
+    dialect.emit(args, lambda fmt: comparison_text(runs, fmt))
+    if args.plot:
+        from ..plots.critical_speeds import plot_critical_speeds
+        fig = plot_critical_speeds(results, f"{args.bike}: weave and capsize speeds ({_combine(args.combine)})",
+                                   options.size, options.xlim)
+        dialect.save_plot(args, fig, options)
     return 0
+
+
+def comparison_text(runs, fmt):
+    """The weave and capsize speeds and strictly stable ranges of every rider x stiffness."""
+    if fmt in ("json", "yaml"):
+        return dialect.document({"runs": runs}, fmt)
+    rows = [[r["rider"], r["stiffness"], _speeds(r["weave_speeds"]), _speeds(r["capsize_speeds"]),
+             _ranges(r["stable_speeds"], "{:.4f}")] for r in runs]
+    if fmt == "csv":
+        return dialect.csv_text(["rider", "stiffness", "weave speeds (m/s)", "capsize speeds (m/s)",
+                                 "stable (strict, m/s)"], rows)
+    from ..output import table
+    return table(["rider", "stiffness", "weave speeds", "capsize speeds", "stable (strict)"], rows)
 
 
 def _speeds(speeds, digits=4):

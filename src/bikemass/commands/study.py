@@ -14,7 +14,7 @@ What it does, in order:
        corrected  the same inputs with the physics fixed (parallel-axis theorem, condensed S
                   from the beam model, exact critical speeds);
        geometry   everything from geometry.
-It writes into --out: report.html (start there: findings, figures, tables in one file that
+It writes into -o/--output DIR: report.html (start there: findings, figures, tables in one file that
 opens offline), report.md (the same text for diffs), stability_ranges.json (thesis run),
 stability_ranges_corrected.json, stability_ranges_geometry.json, one CSV per table and,
 unless --no-figures, PNG figures in figures/.  A summary of the match counts is printed.
@@ -24,7 +24,7 @@ Takes a few seconds without figures, under a minute with them (2 cores).
 EPILOG = """\
 examples:
   bikemass study                       # everything into ./study/
-  bikemass study --out /tmp/s --no-figures
+  bikemass study -o /tmp/s --no-figures
 """
 
 
@@ -36,14 +36,15 @@ def register(sub):
     p = sub.add_parser("study", help="reproduce the thesis end to end and write a report (the main job)",
                        description=DESCRIPTION, epilog=EPILOG,
                        formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--out", metavar="DIR", default="study",
+    p.add_argument("-o", "--output", "--out", metavar="DIR", default="study",
                    help="output folder (default: study/; created if missing, files replaced)")
+    p.add_argument("--quiet", action="store_true", help="no progress bar and no summary on stdout")
     p.add_argument("--no-figures", action="store_true",
                    help="skip the ~85 PNG figures (the slow part)")
     p.add_argument("--jobs", type=jobs, default=None, metavar="N",
                    help="worker processes (default: up to 2, the cores of the reference machine; "
                         "capped at this machine's CPU count)")
-    p.set_defaults(run=run_study, folder_outputs=("out",))
+    p.set_defaults(run=run_study, folder_outputs=("output",))
 
 
 def run_study(args):
@@ -54,14 +55,15 @@ def run_study(args):
     from ..study import pipeline
     from ..study.report import match_counts
 
-    out = Path(args.out)
+    out = Path(args.output)
     workers = args.jobs or pipeline.WORKERS
     figures = not args.no_figures
-    with Progress(pipeline.steps(figures), "study") as bar, new_folder(out) as folder:
+    with Progress(pipeline.steps(figures), "study", enabled=not args.quiet) as bar, new_folder(out) as folder:
         results = pipeline.compute(workers, bar.step)
         pipeline.write_files(results, folder)
         pipeline.write_html(results, folder, pipeline.draw(results, folder, workers, bar.step) if figures else ())
-    print(summary(results, match_counts(results.entries), out))
+    if not args.quiet:
+        print(summary(results, match_counts(results.entries), out))
     return 0
 
 

@@ -33,7 +33,8 @@ class Modes:
     bc: str
 
     def to_dict(self):
-        return {"frequencies_hz": [float(f) for f in self.frequencies_hz]}
+        """``{"frequencies": [Hz, ...]}`` (the unit goes in the document's ``units`` block)."""
+        return {"frequencies": [float(f) for f in self.frequencies_hz]}
 
 
 def _lowest(K, M, count, shift):

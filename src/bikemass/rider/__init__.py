@@ -43,6 +43,13 @@ class Rider:
     parts: tuple
     spec: object = field(default=None, repr=False)
 
+    def __post_init__(self):
+        object.__setattr__(self, "parts", tuple(self.parts))
+
+    def __repr__(self):
+        mass = sum(p.mass for p in self.parts)
+        return f"Rider(pose={self.pose!r}, name={self.name!r}, parts={len(self.parts)}, mass={mass:.6g} kg)"
+
     def properties(self, method="mesh", overlap="sum"):
         """Total :class:`~bikemass.inertia.MassProperties` (trimesh ``mesh`` or ``exact``;
         overlapping parts ``sum``-med as in the thesis or counted once with ``union``)."""

@@ -48,9 +48,9 @@ def bicycle_contacts(bike, node):
                 raise
             node.fail(f"{exc.expected} [{exc.source}]")
     if bicycle.contacts is None:
-        from ..errors import _shown
+        from ..errors import shown
         node.fail(f"a bicycle with a contacts: section (saddle, bottom_bracket, crank_length, grips); "
-                  f"{_shown(bicycle.source)} has none")
+                  f"{shown(bicycle.source)} has none")
     return bicycle
 
 
@@ -66,12 +66,12 @@ def _hands(node, contacts):
         names = [e.string() for e in node.elements()]
         found = [n for n in names if n in choices]
         if not found:
-            from ..errors import _shown
-            node.fail(f"a grip of {_shown(contacts.source)} ({', '.join(choices)}), got {', '.join(names)}")
+            from ..errors import shown
+            node.fail(f"a grip of {shown(contacts.source)} ({', '.join(choices)}), got {', '.join(names)}")
         return found[0]
     if not isinstance(node.value, str) or node.value not in choices:
-        from ..errors import _shown
-        node.fail(f"a grip of {_shown(contacts.source)} ({', '.join(choices)}), got {node.value!r}")
+        from ..errors import shown
+        node.fail(f"a grip of {shown(contacts.source)} ({', '.join(choices)}), got {node.value!r}")
     return node.value
 
 

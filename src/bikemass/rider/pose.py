@@ -41,7 +41,9 @@ MIRROR_Y = np.diag([1.0, -1.0, 1.0])
 
 def read_pose(node, as_printed=False):
     """(name, parts) of the pose in the YAML ``node`` (see the module docstring)."""
-    node.check_keys(required=("segments",), optional=("name", "body", "source", "posture"))
+    node.check_keys(required=("segments",), optional=("name", "body", "source", "posture", "units"))
+    if node.has("units"):
+        _check_units(node["units"])
     segments = node["segments"]
     if not segments.mapping():
         segments.fail("at least one segment")
@@ -65,6 +67,18 @@ def read_pose(node, as_printed=False):
         _check_all_placed(segments, body, [k for k, _ in placed])
     name = node.get("name", str(node.source)).string()
     return name, tuple(parts)
+
+
+POSE_UNITS = {"location": "m", "angle": "deg", "mass": "kg", "com": "m", "inertia": "kg m^2"}
+"""The units a pose file's numbers are read in (what ``bikemass pose --format yaml`` states)."""
+
+
+def _check_units(node):
+    """A ``units`` block may only state the units the values are read in (a number with another
+    unit is written as ``"<number> <unit>"``)."""
+    for key, unit in node.items():
+        if key in POSE_UNITS and unit.value != POSE_UNITS[key]:
+            unit.fail(f"{POSE_UNITS[key]} (write a value in another unit as '<number> <unit>')")
 
 
 def _check_all_placed(segments, body, placed):

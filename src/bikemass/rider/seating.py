@@ -100,8 +100,8 @@ def _off(contacts, tolerance):
 
 
 def _gap_lines(pose, bicycle, off):
-    from ..errors import _shown
-    return [f"{pose}: {name} {gap * 1000:.1f} mm from {_shown(bicycle.source)}: {key}"
+    from ..errors import shown
+    return [f"{pose}: {name} {gap * 1000:.1f} mm from {shown(bicycle.source)}: {key}"
             for name, (gap, key) in off.items()]
 
 
@@ -139,8 +139,8 @@ def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, toleran
         bicycle_contacts(bicycle, node["chain"])      # the error: a bicycle with a contacts: section
     if contacts is None or lumped_only:
         rider = _load(pose, node, as_printed)
-        from ..errors import _shown
-        why = (f"{_shown(bicycle.source)} has no contacts: section" if contacts is None
+        from ..errors import shown
+        why = (f"{shown(bicycle.source)} has no contacts: section" if contacts is None
                else "a rider of lumped bodies has no contact points")
         return SeatedRider(rider, bicycle, "unchecked", {}, None,
                            (f"{pose}: contacts with {bicycle.name} not checked ({why})",))

@@ -1,0 +1,197 @@
+"""The one dialect every command speaks (docs/cli.md):
+
+* ``-o/--output FILE``: the data output (a file instead of stdout);
+* ``--format``: table, csv, json, yaml (where it fits; ``params`` also
+  bicycleparameters); default: the ``-o`` file's suffix if it names one, else the
+  command's own default;
+* ``--plot FILE``: the figure (any format matplotlib writes, with ``--size``, ``--dpi``
+  and, where they make sense, ``--xlim``/``--ylim``);
+* stdout carries the data only: nothing when ``-o`` took it, nothing when ``--plot`` is
+  given without ``--format`` (a figure alone was asked for), nothing with ``--quiet``;
+  files are written silently (atomically: never half-written);
+* warnings and errors go to stderr, one line each; ``--quiet`` also drops progress bars,
+  never warnings or errors;
+* JSON and YAML documents carry their units in one top-level ``units`` block
+  (:func:`bikemass.output.with_units`).
+
+Arguments shared by several commands (BIKE, ``--rider``, ``--combine``, ``--stiffness``,
+``--speeds``, ``--method``) are defined here once.  Only the standard library and
+:mod:`bikemass.choices` are imported, so ``bikemass --help`` stays fast.
+"""
+
+import sys
+from pathlib import Path
+
+from ..choices import RIGID, Combine, Format, Method
+from .figure_options import add_figure_options, figure_options, write_figure
+
+TABULAR = (Format.TABLE.value, Format.CSV.value, Format.JSON.value, Format.YAML.value)
+"""The formats of every command's data (``params`` adds ``bicycleparameters``)."""
+
+SUFFIX_FORMATS = {".csv": "csv", ".json": "json", ".yaml": "yaml", ".yml": "yaml", ".txt": "table"}
+"""An ``-o`` file's suffix -> its format when ``--format`` is not given."""
+
+DEFAULT_SPEEDS = "0:30:0.05"
+
+IMAGE_SUFFIXES = (".png", ".pdf", ".svg", ".svgz", ".eps", ".ps", ".jpg", ".jpeg", ".tif", ".tiff", ".webp")
+"""Figure files: named by ``--plot``, never by ``-o``."""
+
+
+def add_output(p, formats=TABULAR, default=Format.TABLE.value, what="the data"):
+    """``-o/--output``, ``--format`` and ``--quiet``."""
+    p.add_argument("-o", "--output", metavar="FILE",
+                   help=f"write {what} to FILE instead of stdout (format from --format, else the suffix: "
+                        ".csv, .json, .yaml, else the default)")
+    p.add_argument("--format", choices=formats, default=None,
+                   help=f"{', '.join(formats)} (default {default}; JSON and YAML carry a units block)")
+    add_quiet(p)
+    p.set_defaults(default_format=default, format_choices=tuple(formats))
+
+
+def add_quiet(p):
+    p.add_argument("--quiet", action="store_true",
+                   help="print no data on stdout and no progress bar (errors and warnings still show)")
+
+
+def add_plot(p, what, xlim=None, ylim=None, required=False, options=True):
+    """``--plot FILE`` and (unless ``options`` is false) the figure options."""
+    p.add_argument("--plot", metavar="FILE", required=required,
+                   help=f"draw {what} into FILE (.png, .pdf, .svg, ...)")
+    if options:
+        add_figure_options(p, xlim, ylim)
+
+
+def add_bike(p, what="shipped bicycle name, bicycle YAML or parameter file"):
+    p.add_argument("bike", metavar="BIKE", help=f"{what} (a misspelt name suggests the closest)")
+
+
+def add_rider(p):
+    p.add_argument("--rider", metavar="POSE", default="none",
+                   help="rider pose name or pose YAML file, or 'none' (default none)")
+
+
+def add_combine(p):
+    p.add_argument("--combine", choices=Combine.values(), default=Combine.EXACT.value,
+                   help="rider + frame: parallel-axis theorem (exact, default) or the thesis's Eq. 3.6 "
+                        "(inertias added without parallel-axis terms)")
+
+
+def add_method(p):
+    p.add_argument("--method", choices=Method.values(), default=Method.MESH.value,
+                   help="mass properties from trimesh meshes (default) or closed-form solids")
+
+
+def add_stiffness(p, many=False):
+    if many:
+        p.add_argument("--stiffnesses", metavar="S", default=RIGID,
+                       help="comma-separated stiffnesses as for stability --stiffness "
+                            "(e.g. infinite,steel,aluminum)")
+        return
+    p.add_argument("--stiffness", metavar="S", default=RIGID,
+                   help="rear-frame stiffness: infinite (rigid, default), steel, titanium, aluminum "
+                        "(the bicycle's published S if it carries one, else the beam model of its rear "
+                        "frame, condensed) or a YAML file with S: [[..], [..]] in N m/rad")
+
+
+def add_speeds(p):
+    p.add_argument("--speeds", metavar="START:STOP:STEP", default=DEFAULT_SPEEDS,
+                   help=f"speed grid in m/s (default {DEFAULT_SPEEDS}, the thesis's)")
+
+
+def parse_speeds(text, max_speeds=None):
+    """``"start:stop:step"`` -> speed grid (m/s); InputError if malformed or over ``max_speeds``."""
+    from ..errors import InputError, short
+    from ..options import MAX_SPEED, MAX_SPEEDS, MIN_SPEED_STEP
+    from ..stability import speed_grid
+
+    limit = max_speeds or MAX_SPEEDS
+    expected = (f"START:STOP:STEP in m/s with 0 <= START < STOP <= {MAX_SPEED:g}, "
+                f"{MIN_SPEED_STEP:g} <= STEP <= STOP - START")
+    try:
+        start, stop, step = (float(x) for x in text.split(":"))
+    except ValueError:
+        raise InputError("--speeds", text, expected) from None
+    if not (0 <= start < stop <= MAX_SPEED and MIN_SPEED_STEP <= step <= stop - start):
+        raise InputError("--speeds", text, expected)
+    count = int(round((stop - start) / step)) + 1
+    if count > limit:
+        raise InputError("--speeds", text, f"at most {limit} speeds, got {count} "
+                                                      "(raise with --max-speeds)")
+    return speed_grid(start, stop, step)
+
+
+def check_output(args):
+    """Before any work: an ``-o`` file that looks like a figure is refused (figures go to --plot)."""
+    if getattr(args, "format_choices", None) and args.output and \
+            Path(args.output).suffix.lower() in IMAGE_SUFFIXES:
+        from ..errors import InputError
+        raise InputError(args.output, "-o", "a data file (table, csv, json, yaml); a figure goes to --plot FILE")
+
+
+def data_format(args):
+    """The format of the data: ``--format``, else the ``-o`` suffix's, else the command's default."""
+    if args.format:
+        return args.format
+    if args.output:
+        fmt = SUFFIX_FORMATS.get(Path(args.output).suffix.lower())
+        if fmt in args.format_choices:
+            return fmt
+    return args.default_format
+
+
+def wants_data(args):
+    """Whether the data is written at all (see the module docstring)."""
+    if args.output:
+        return True
+    if args.quiet:
+        return False
+    return not (getattr(args, "plot", None) and not args.format)
+
+
+def emit(args, render):
+    """Write the data: ``render(fmt)`` -> text, to ``-o`` (atomically) or stdout."""
+    if not wants_data(args):
+        return
+    text = render(data_format(args))
+    if args.output:
+        from ..output import write_atomic
+        write_atomic(args.output, text)
+    else:
+        sys.stdout.write(text)
+
+
+def figure_checked(args):
+    """The checked figure options of ``--plot`` (call before the work), or None without a plot."""
+    return figure_options(args, args.plot) if getattr(args, "plot", None) else None
+
+
+def save_plot(args, fig, options):
+    """Write the figure to ``--plot``."""
+    write_figure(fig, args.plot, options)
+
+
+def document(data, fmt, extra_units=None):
+    """``data`` as JSON or YAML text with its ``units`` block."""
+    from ..output import dumps, with_units
+    return dumps(with_units(data, extra_units), fmt)
+
+
+def csv_text(headers, rows):
+    """CSV text (numbers written in full)."""
+    import csv
+    import io
+
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(headers)
+    writer.writerows([[_cell(v) for v in r] for r in rows])
+    return buffer.getvalue()
+
+
+def _cell(v):
+    from numbers import Integral, Real
+    if v is None:
+        return ""
+    if isinstance(v, Real) and not isinstance(v, (bool, Integral)):
+        return repr(float(v))
+    return v
