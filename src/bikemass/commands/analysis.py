@@ -105,7 +105,7 @@ def run_sensitivity(args):
     from ..analysis.sensitivity import geometry_sensitivity, sensitivity, sensitivity_figure
     from ..errors import InputError
     from ..output import dumps
-    from .stability import _emit
+    from .dialect import write_data as _emit
 
     params, S = _inputs(args)
     result = sensitivity(params, S, vmax=args.max_speed)
@@ -172,7 +172,7 @@ def run_uncertainty(args):
     from ..analysis.uncertainty import Spread, propagate, uncertainty_figure
     from ..errors import InputError
     from ..output import dumps
-    from .stability import _emit, parse_speeds
+    from .dialect import parse_speeds, write_data as _emit
 
     _inputs(args)
     if not 2 <= args.samples <= 10 ** 6:

@@ -160,6 +160,15 @@ def emit(args, render):
         sys.stdout.write(text)
 
 
+def write_data(args, text):
+    """Write already rendered data: to ``-o`` (atomically) or stdout, unless ``--quiet``."""
+    if getattr(args, "output", None):
+        from ..output import write_atomic
+        write_atomic(args.output, text)
+    elif not getattr(args, "quiet", False):
+        sys.stdout.write(text)
+
+
 def figure_checked(args):
     """The checked figure options of ``--plot`` (call before the work), or None without a plot."""
     return figure_options(args, args.plot) if getattr(args, "plot", None) else None
