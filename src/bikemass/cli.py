@@ -48,6 +48,8 @@ def build_parser():
         description="Bicycle + rider geometry (YAML) -> mass properties, benchmark "
                     "parameters, frame stiffness and stability.",
         epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
+    from . import __version__
+    parser.add_argument("--version", action="version", version=f"bikemass {__version__}")
     sub = parser.add_subparsers(title="commands", metavar="COMMAND", required=True)
     for name in COMMAND_MODULES:
         importlib.import_module(f"bikemass.commands.{name}").register(sub)
