@@ -56,7 +56,7 @@ def register(sub):
                     "capsize_speed (first crossing of each kind, empty if none), stable_from, stable_to "
                     "(first strictly stable range), total_mass, error; figures; sobol.json if the spec "
                     "asks for a global sensitivity analysis. Finished chunks are kept in OUT/chunks: "
-                    "run the same command again to resume. The spec format is in docs/sweeps.md.")
+                    "run the same command again to resume. The spec format is in docs/analysis.md.")
     sw.add_argument("spec", metavar="SPEC.yaml", help="sweep specification")
     sw.add_argument("--out", metavar="DIR", required=True, help="output folder (created; reused to resume)")
     engine = sw.add_mutually_exclusive_group()

@@ -36,6 +36,7 @@ def parameters_document(params):
 def download(engine, filename, state):
     """``(bytes, mime type)`` of the download ``filename`` for ``state``; InputError if unknown."""
     from ..exporters import format_parameters
+    from ..gate import read_text
 
     if filename not in DOWNLOADS:
         raise InputError("URL", "download", f"one of {', '.join(DOWNLOADS)}")
@@ -56,7 +57,7 @@ def download(engine, filename, state):
         from .engine import edited_chart
         text = yaml.safe_dump(edited_chart(engine.source(state.bike), dict(state.chart)), sort_keys=False)
     elif filename == "bicycle.yaml":
-        text = _source_text(engine.bicycle(state.bicycle_key).source)
+        text = read_text(engine.bicycle(state.bicycle_key).source)
     else:
         rider = engine.rider(state.rider_key)
         if isinstance(rider, dict):
@@ -66,13 +67,8 @@ def download(engine, filename, state):
             raise InputError("URL", "rider", "a rider (this configuration has none)")
         from ..paths import resolve
         from ..rider import poses_dir
-        text = _source_text(resolve(rider.pose, poses_dir(), "pose"))
+        text = read_text(resolve(rider.pose, poses_dir(), "pose"))
     return text.encode(), mime
-
-
-def _source_text(path):
-    from ..gate import read_text
-    return read_text(path)
 
 
 def register_routes(server, engine):

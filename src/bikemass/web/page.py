@@ -6,7 +6,6 @@ configuration); every change of a control recomputes through the cached
 """
 
 import base64
-import io
 
 from ..errors import InputError
 from ..parameters import DESCRIPTIONS, NAMES
@@ -189,9 +188,8 @@ def _range_text(ranges):
 
 
 def _svg_uri(fig):
-    buffer = io.BytesIO()
-    fig.savefig(buffer, format="svg", bbox_inches="tight")
-    return "data:image/svg+xml;base64," + base64.b64encode(buffer.getvalue()).decode()
+    from ..plots.figure import figure_bytes
+    return "data:image/svg+xml;base64," + base64.b64encode(figure_bytes(fig, "svg")).decode()
 
 
 def _html_table(headers, rows):
