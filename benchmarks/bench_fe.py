@@ -1,11 +1,20 @@
 """Time the rear-frame FE: S (thesis + condensed) and 4 x 10 modes for the Jamis, and PyNite beside it.
 
-Run by hand: ``python benchmarks/bench_fe.py``.  Target (issue 5): under 2 s at
-2 mm elements.  The peer comparison is a static solve (unit loads in 6 directions
-at the bottom head-tube keypoint, dropouts clamped, Euler-Bernoulli) with the
-same mesh in both codes, timed in this process.
+Run by hand: ``python benchmarks/bench_fe.py [--repeat 10]``.  Target (issue 5): under
+2 s at 2 mm elements.  The peer comparison is a static solve (unit loads in 6
+directions at the bottom head-tube keypoint, dropouts clamped, Euler-Bernoulli) with
+the same mesh in both codes, timed in this process.
+
+BLAS threads (issue 10): the stiffness solve (``rotational_stiffness``: assembly + sparse
+LU) and the fix-rear modes (``solve_modes``: assembly + ``eigsh``) at several element
+sizes, each run ``--repeat`` times with the machine's default BLAS pool (the functions'
+``__wrapped__``: the same code without :func:`bikemass.threads.one_blas_thread`, as
+bikemass ran before) and as shipped (one thread), the two alternating so that other
+load on the machine hits both alike.  Median and max, since the stall is random.
 """
 
+import argparse
+import statistics
 import sys
 import time
 from pathlib import Path
@@ -17,7 +26,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 from bikemass.fe import DEFAULT_ELEMENT_SIZE, build_mesh, equivalent_stiffness, frame_modes  # noqa: E402
 from bikemass.fe.assembly import assemble  # noqa: E402
 from bikemass.fe.boundary import BOUNDARY_CONDITIONS, free_dofs  # noqa: E402
+from bikemass.fe.modes import solve_modes  # noqa: E402
 from bikemass.fe.properties import beam_properties  # noqa: E402
+from bikemass.fe.stiffness import rotational_stiffness  # noqa: E402
 from thesis_frames import jamis_structure  # noqa: E402
 
 
@@ -28,6 +39,38 @@ def best_of(fn, repeat=3):
         fn()
         times.append(time.perf_counter() - t0)
     return min(times)
+
+
+def paired_times(default, limited, repeat):
+    """``(default times, limited times)`` in s, the two calls alternating ``repeat`` times."""
+    times = ([], [])
+    for _ in range(repeat):
+        for fn, out in zip((default, limited), times):
+            t0 = time.perf_counter()
+            fn()
+            out.append(time.perf_counter() - t0)
+    return times
+
+
+def blas_threads():
+    from threadpoolctl import threadpool_info
+    return sorted({p["num_threads"] for p in threadpool_info() if p["user_api"] == "blas"})
+
+
+def thread_comparison(structure, repeat):
+    print(f"BLAS threads: default pool ({'/'.join(map(str, blas_threads()))} threads) vs one thread "
+          f"(as shipped), {repeat} repeats, median / max in ms")
+    print(f"  {'job':30s} {'DOF':>6s} {'default med':>12s} {'max':>8s} {'one med':>9s} {'max':>8s}"
+          f" {'ratio med':>10s} {'ratio max':>10s}")
+    jobs = [("stiffness, one element/tube", None, rotational_stiffness, ())]
+    jobs += [(f"stiffness, {s * 1000:g} mm", s, rotational_stiffness, ()) for s in (0.02, 0.005, 0.002)]
+    jobs += [(f"modes fix-rear x10, {s * 1000:g} mm", s, solve_modes, ("fix-rear", 10)) for s in (0.02, 0.005, 0.002)]
+    for label, size, fn, args in jobs:
+        mesh = build_mesh(structure, element_size=size)
+        default, one = paired_times(lambda: fn.__wrapped__(mesh, *args), lambda: fn(mesh, *args), repeat)
+        d_med, d_max, o_med, o_max = (1000 * f(t) for t in (default, one) for f in (statistics.median, max))
+        print(f"  {label:30s} {mesh.n_dof:6d} {d_med:12.1f} {d_max:8.1f} {o_med:9.1f} {o_max:8.1f}"
+              f" {d_med / o_med:9.1f}x {d_max / o_max:9.1f}x")
 
 
 def full_run(structure, size):
@@ -74,6 +117,9 @@ def pynite_static(structure, size):
 
 
 def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeat", type=int, default=10, help="runs per job in the BLAS-thread comparison")
+    args = parser.parse_args()
     structure = jamis_structure()
     print("Jamis rear frame: S (thesis + condensed) + 10 modes x 4 boundary conditions")
     for size in (DEFAULT_ELEMENT_SIZE, 0.002):
@@ -87,6 +133,7 @@ def main():
         label = "one element per tube" if size is None else f"element {size * 1000:.0f} mm"
         print(f"  {label:22s} bikemass {ours * 1000:8.1f} ms   PyNite {theirs * 1000:9.1f} ms"
               f"   ratio {theirs / ours:7.1f}x")
+    thread_comparison(structure, args.repeat)
 
 
 if __name__ == "__main__":

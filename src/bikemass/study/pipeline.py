@@ -5,6 +5,7 @@ from dataclasses import dataclass, field
 
 from ..output import dumps, write_atomic
 from ..rider import THESIS_POSES
+from ..threads import one_blas_thread
 from . import corrections, figures
 from .body_tables import bicycle_table, rider_table
 from .configurations import BICYCLES, Configuration, configurations
@@ -68,8 +69,10 @@ def _by_bike(configs):
     return list(groups.values())
 
 
+@one_blas_thread()
 def compute(workers=WORKERS, step=lambda label: None):
-    """:class:`StudyResults`; ``step(label)`` is called after each unit of work (:func:`steps`)."""
+    """:class:`StudyResults`; ``step(label)`` is called after each unit of work (:func:`steps`).
+    BLAS runs on one thread here and in the workers (forked inside the limit, they inherit it)."""
     global _INPUTS
     inputs = Inputs()
     _preload(inputs)
@@ -131,8 +134,9 @@ def figure_jobs(results, inputs, folder):
             + figures.pose_jobs(inputs.bicycle("jamis"), {p: inputs.rider(p) for p in THESIS_POSES}, folder))
 
 
+@one_blas_thread()
 def draw(results, out, workers=WORKERS, step=lambda label: None):
-    """Draw the figures into ``out/figures``; returns the paths written."""
+    """Draw the figures into ``out/figures`` (one BLAS thread, as :func:`compute`); returns the paths written."""
     jobs = figure_jobs(results, _INPUTS or Inputs(), out / "figures")
     paths = []
     with executor(workers) as pool:

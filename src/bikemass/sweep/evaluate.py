@@ -2,7 +2,8 @@
 
 The :class:`~bikemass.analysis.inputs.Model` (parsed YAML, built bicycles, riders and
 stiffnesses) lives as long as the process and is shared by every chunk of the same sweep.
-BLAS runs on one thread (the worker, not the library, is the unit of parallelism).
+BLAS runs on one thread (the worker, not the library, is the unit of parallelism):
+:func:`bikemass.threads.one_blas_thread`.
 """
 
 import numpy as np
@@ -40,6 +41,6 @@ def evaluate(model, changes, max_speed):
 def evaluate_chunk(setup, configurations, max_speed):
     """Rows for ``configurations`` (list of ``{key: value}``); ``setup`` = (bike, rider, stiffness,
     combine, spec source)."""
-    from threadpoolctl import threadpool_limits
-    with threadpool_limits(1):
+    from ..threads import one_blas_thread
+    with one_blas_thread():
         return [evaluate(_model(setup), c, max_speed) for c in configurations]
