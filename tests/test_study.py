@@ -1,17 +1,14 @@
-"""``bikemass study``: one run without figures (module fixture) checked file by file.
+"""``bikemass study``: one run without figures (the ``study`` fixture, conftest.py) checked file by file.
 
 Tolerances: stability entries match within one grid step (0.05 m/s, the thesis's
 grid), Table 3-4 within 0.5 % and the Jamis frame within 1 % (issue 6); the
 reproduced count must be at least 880 of the 894 entries of Tables 4-2..5-3.
 """
 
-import contextlib
 import csv
-import io
 import json
 import re
 from html.parser import HTMLParser
-from unittest import mock
 
 import pytest
 
@@ -25,46 +22,8 @@ MODES = {"overall", "weave", "capsize", "caster"}
 KEYS = {"bike", "rider", "stiffness", "mode", "criterion", "start", "stop", "range"}
 
 
-class CountingProgress:
-    """Stands in for the progress bar: records its total and every step."""
-
-    instances = []
-
-    def __init__(self, total, title, **options):
-        self.total, self.labels = total, []
-        CountingProgress.instances.append(self)
-
-    def __enter__(self):
-        return self
-
-    def step(self, label=""):
-        self.labels.append(label)
-
-    def __exit__(self, *exc):
-        return False
-
-
-@pytest.fixture(scope="module")
-def study(tmp_path_factory):
-    from bikemass.study import pipeline
-    out = tmp_path_factory.mktemp("study")
-    stdout = io.StringIO()
-    kept = {}
-
-    def keep(results, folder, paths=()):           # the results object, for the report.html test
-        kept["results"] = results
-        return write_html(results, folder, paths)
-
-    write_html = pipeline.write_html
-    with contextlib.redirect_stdout(stdout), mock.patch("bikemass.progress.Progress", CountingProgress), \
-            mock.patch.object(pipeline, "write_html", keep):
-        code = main(["study", "--out", str(out), "--no-figures"])
-    assert code == 0
-    return out, stdout.getvalue(), kept["results"]
-
-
 def test_progress_bar_counts_every_step(study):
-    bar = CountingProgress.instances[-1]
+    bar = study[3]
     assert len(bar.labels) == bar.total == 73 + 1 + 1 + 2 * 3 + 1
     assert bar.labels[-1] == "frame models"
 

@@ -41,6 +41,13 @@ class Parser(argparse.ArgumentParser):
     def error(self, message):
         self.exit(2, f"{self.prog}: error: {one_line(message, 600)} (see {self.prog} --help)\n")
 
+    def format_help(self):
+        """The help; a description given as a function (one listing shipped files, say) is called
+        only now, so building the parser reads no data and ``--version`` never depends on it."""
+        if callable(self.description):
+            self.description = self.description()
+        return super().format_help()
+
 
 def build_parser():
     parser = Parser(
@@ -69,8 +76,6 @@ def main(argv=None):
         if not exc.code:
             raise
         return exc.code
-    except InputError as exc:          # the shipped data listed in --help cannot be found
-        return _error(exc)
     with stop_on_signals():
         return _run(args)
 

@@ -27,9 +27,10 @@ def one_line(text, limit=MAX_PART):
 
 def shown(source):
     """A shipped file as ``frames/jamis.yaml`` rather than its absolute path."""
-    from .paths import data_root
+    from .paths import found_root
+    root = found_root()
     try:
-        return str(Path(source).resolve().relative_to(data_root().resolve()))
+        return str(Path(source).resolve().relative_to(root.resolve())) if root else str(source)
     except (ValueError, OSError, RuntimeError):
         return str(source)
 

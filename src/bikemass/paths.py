@@ -1,28 +1,85 @@
-"""Where the shipped data lives and how names resolve to files.
+"""Where the shipped data live and how names resolve to files.
 
-``bodies/`` (anthropometry, poses) and ``frames/`` (bicycles, materials) sit at
-the repository root; set ``BIKEMASS_DATA`` to a folder holding both to use
-another copy.  A name that is an existing file path is used as it is.
+The shipped data are three folders: ``bodies/`` (anthropometry, poses), ``frames/``
+(bicycles, materials) and ``reference/`` (the thesis's printed tables).  They sit at
+the top of the repository, and a wheel carries them as ``bikemass/shipped/``.  The
+data folder is the first of:
+
+1. ``BIKEMASS_DATA``, when set (it must hold the folders it is asked for);
+2. the installed package's data (``bikemass/shipped/``, through :mod:`importlib.resources`);
+3. the checkout (the repository two folders above ``src/bikemass``).
+
+No data found is an error (:class:`~bikemass.errors.InputError`), never an empty list.
+A name that is an existing file path is used as it is.
 """
 
 import os
+from importlib.resources import files
 from pathlib import Path
 
 from .errors import InputError
 
+SHIPPED = ("bodies", "frames", "reference")
+"""The shipped data folders."""
+
 
 def data_root() -> Path:
-    """Folder holding ``bodies/`` and ``frames/``."""
+    """Folder holding ``bodies/``, ``frames/`` and ``reference/`` (see the module's lookup order)."""
+    root = found_root()
+    if root is None:
+        raise InputError("bikemass", "shipped data", "bodies/, frames/ and reference/ in the installed package "
+                         f"({installed_data()}) or in a checkout ({checkout()}); none found (reinstall bikemass)")
+    return root
+
+
+def found_root():
+    """The data folder by the module's lookup order, or None when neither the package nor a checkout has one."""
     env = os.environ.get("BIKEMASS_DATA")
-    return Path(env) if env else Path(__file__).resolve().parents[2]
+    if env:
+        return Path(env)
+    for root in (installed_data(), checkout()):
+        if all((root / name).is_dir() for name in SHIPPED):
+            return root
+    return None
+
+
+def checkout() -> Path:
+    """The repository's top folder when bikemass runs from a checkout (``src/bikemass`` two levels down)."""
+    return Path(__file__).resolve().parents[2]
+
+
+def installed_data() -> Path:
+    """``bikemass/shipped/`` of the installed package (absent in a checkout: the data sit at its top)."""
+    return Path(str(files("bikemass") / "shipped"))
+
+
+def shipped_dir(name) -> Path:
+    """The shipped folder ``name`` (``"bodies"``, ``"frames"``, ``"reference"``), which must exist."""
+    folder = data_root() / name
+    if not folder.is_dir():
+        missing_folder(folder)
+    return folder
+
+
+def missing_folder(folder):
+    """Raise the one-line error for a shipped folder that is not there."""
+    env = os.environ.get("BIKEMASS_DATA")
+    if env:
+        raise InputError(f"BIKEMASS_DATA={env}", str(folder), "a folder of shipped files "
+                         "(BIKEMASS_DATA must name a folder holding bodies/, frames/ and reference/)")
+    raise InputError("bikemass", str(folder), "a folder of shipped files (reinstall bikemass)")
 
 
 def bodies_dir() -> Path:
-    return data_root() / "bodies"
+    return shipped_dir("bodies")
 
 
 def frames_dir() -> Path:
-    return data_root() / "frames"
+    return shipped_dir("frames")
+
+
+def reference_dir() -> Path:
+    return shipped_dir("reference")
 
 
 def resolve(name, folder: Path, what: str) -> Path:
@@ -52,9 +109,7 @@ SHARED_FILES = ("materials", "chart_defaults")
 
 def available(folder: Path):
     """Names of the shipped YAML files in ``folder`` (``_`` shown as ``-``), shared files left out;
-    a missing folder is an error (a wrong ``BIKEMASS_DATA`` must not look like an empty list)."""
+    a missing folder is an error (missing data must not look like an empty list)."""
     if not folder.is_dir():
-        env = os.environ.get("BIKEMASS_DATA")
-        raise InputError(f"BIKEMASS_DATA={env}" if env else "bikemass", str(folder),
-                         "a folder of shipped files (BIKEMASS_DATA must name a folder holding bodies/ and frames/)")
+        missing_folder(folder)
     return sorted(p.stem.replace("_", "-") for p in folder.glob("*.yaml") if p.stem not in SHARED_FILES)

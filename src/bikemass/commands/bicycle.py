@@ -10,19 +10,24 @@ from .sizes import add_size_option, every_size
 MODEL_FORMATS = ("glb", "stl", "obj")
 
 
-def _bicycles():
+def _params_description():
+    """``params --help``'s description, with the shipped bicycles listed (or why none are)."""
+    from ..errors import InputError
     from ..paths import available, frames_dir
-    return ", ".join(available(frames_dir()))
+    try:
+        shipped = ", ".join(available(frames_dir()))
+    except InputError as exc:
+        shipped = f"none found: {exc}"
+    return ("The 26 benchmark parameters (SI, radians) of BIKE with an optional rider. "
+            f"BIKE: a shipped bicycle ({shipped}), a bicycle YAML file (docs/bicycles.md) "
+            "or a benchmark parameter file (YAML/JSON with the 26 names). The YAML and JSON "
+            "output is itself a parameter file.")
 
 
 def register(sub):
-    shipped = _bicycles()
     params = sub.add_parser(
         "params", help="benchmark parameters (Meijaard et al. 2007) of a bicycle with a rider",
-        description="The 26 benchmark parameters (SI, radians) of BIKE with an optional rider. "
-                    f"BIKE: a shipped bicycle ({shipped}), a bicycle YAML file (docs/bicycles.md) "
-                    "or a benchmark parameter file (YAML/JSON with the 26 names). The YAML and JSON "
-                    "output is itself a parameter file.")
+        description=_params_description)
     _bike_and_rider(params)
     dialect.add_combine(params)
     dialect.add_method(params)

@@ -14,7 +14,7 @@ What it does, in order:
        corrected  the same inputs with the physics fixed (parallel-axis theorem, condensed S
                   from the beam model, exact critical speeds);
        geometry   everything from geometry.
-It writes into -o/--output DIR: report.html (start there: findings, figures, tables in one file that
+It writes into -o/--out DIR: report.html (start there: findings, figures, tables in one file that
 opens offline), report.md (the same text for diffs), stability_ranges.json (thesis run),
 stability_ranges_corrected.json, stability_ranges_geometry.json, one CSV per table and,
 unless --no-figures, PNG figures in figures/.  A summary of the match counts is printed.
@@ -24,7 +24,7 @@ Takes a few seconds without figures, under a minute with them (2 cores).
 EPILOG = """\
 examples:
   bikemass study                       # everything into ./study/
-  bikemass study -o /tmp/s --no-figures
+  bikemass study --out /tmp/s --no-figures
 """
 
 

@@ -7,11 +7,7 @@ explanation of misses), never by the code that computes a result.
 from functools import lru_cache
 
 from ..gate import load_data
-from ..paths import data_root
-
-
-def reference_dir():
-    return data_root() / "reference"
+from ..paths import reference_dir
 
 
 @lru_cache(maxsize=None)
