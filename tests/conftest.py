@@ -1,10 +1,16 @@
-"""Fixtures shared by several test files."""
+"""Fixtures and settings shared by several test files.  Hypothesis runs derandomized (the same
+examples on every run and every machine, so a failure reproduces) and keeps no example
+database between runs."""
 
 import contextlib
 import io
 from unittest import mock
 
 import pytest
+from hypothesis import settings
+
+settings.register_profile("bikemass", derandomize=True, database=None)
+settings.load_profile("bikemass")
 
 
 class CountingProgress:

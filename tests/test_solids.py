@@ -34,10 +34,10 @@ def random_placement(rng):
     return Placement(Rotation.random(random_state=rng).as_matrix(), rng.uniform(-1.5, 1.5, 3))
 
 
-@pytest.mark.parametrize("name", SOLIDS)
-def test_mesh_matches_exact_when_placed_anywhere(name):
+@pytest.mark.parametrize("seed,name", enumerate(SOLIDS))
+def test_mesh_matches_exact_when_placed_anywhere(seed, name):
     solid = SOLIDS[name]
-    rng = np.random.default_rng(abs(hash(name)) % 2**32)
+    rng = np.random.default_rng(seed)                 # fixed: a failure reproduces on every run
     for _ in range(5):
         part = Part.from_density(name, solid, rng.uniform(100, 8000), random_placement(rng))
         mesh_mp, exact = part.mass_properties("mesh"), part.exact()

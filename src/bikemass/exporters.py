@@ -6,11 +6,12 @@ benchmark parameter file that bikemass reads back (and refuses to add a second r
 ``bicycleparameters`` format is the ``<Name>Benchmark.txt`` file that the
 BicycleParameters package reads from ``bicycles/<Name>/Parameters/``: one
 ``name = value`` line per parameter, ``#`` comment lines allowed.  Values are
-written with ``repr`` (17 significant digits) so they read back bit for bit.
+written with ``repr`` (17 significant digits) so they read back bit for bit (below
+:data:`bikemass.output.ZERO` as 0, like every number bikemass writes).
 """
 
 from .choices import PARAMETER_FORMATS as FORMATS
-from .output import dumps, table, with_units
+from .output import as_written, dumps, table, with_units
 from .parameters import DESCRIPTIONS, NAMES, parameter_units
 
 
@@ -27,12 +28,13 @@ def format_parameters(params, fmt, title="", rider_included=False):
         rows = [[k, DESCRIPTIONS[k].split(" [")[0], values[k], units[k]] for k in NAMES]
         return (f"{title}\n" if title else "") + table(["parameter", "meaning", "value", "unit"], rows, "{:.6g}")
     if fmt == "csv":
-        return "parameter,value,unit\n" + "".join(f"{k},{values[k]!r},{units[k]}\n" for k in NAMES)
+        return "parameter,value,unit\n" + "".join(f"{k},{as_written(values[k], units[k])!r},{units[k]}\n"
+                                                    for k in NAMES)
     raise ValueError(f"format must be one of {', '.join(FORMATS)}, got {fmt!r}")
 
 
 def bicycleparameters_text(params, title=""):
     """The BicycleParameters ``<Name>Benchmark.txt`` text (no blank lines: its reader rejects them)."""
-    values = params.to_dict()
+    values, units = params.to_dict(), parameter_units()
     header = [f"# {line}" for line in (title, "written by bikemass; SI units, radians") if line]
-    return "\n".join(header + [f"{name} = {values[name]!r}" for name in NAMES]) + "\n"
+    return "\n".join(header + [f"{name} = {as_written(values[name], units[name])!r}" for name in NAMES]) + "\n"

@@ -52,6 +52,91 @@ def plain(obj):
     return obj
 
 
+ZERO = 1e-12
+"""Magnitude below which bikemass writes a length, mass, inertia, angle, speed, stiffness or
+frequency as 0, in its SI unit (m, kg, kg m^2, rad, m/s, N m/rad, Hz, 1/s; deg too).
+
+Quantities that are zero in exact arithmetic -- the gap at a joint of a chain pose, a met
+contact's residual, the lateral CoM and the products Ixy, Iyz of a mirror-symmetric rider or
+bicycle -- come out of floating-point arithmetic as rounding noise of about 1e-16 times the
+numbers they were computed from, and that noise changes with the CPU, the BLAS kernel and
+the thread count.  A bicycle's and a rider's quantities in these units are 1e-3 to 1e4, so
+1e-12 lies well above the noise and far below anything measurable.  JSON and YAML documents
+(by their ``units`` block), CSV files (by the unit in a column's header) and the command's
+own reports apply it (docs/cli.md, "Numbers"); quantities of other units (derivatives,
+per-pascal values) are written in full."""
+
+ZERO_UNITS = {"m": 1.0, "mm": 1e3, "kg": 1.0, "kg m^2": 1.0, "rad": 1.0, "deg": 1.0, "m/s": 1.0,
+              "N m/rad": 1.0, "Hz": 1.0, "1/s": 1.0}
+"""The units :data:`ZERO` applies to -> the threshold's size in that unit (1e-12 m = 1e-9 mm)."""
+
+SIGNIFICANT = 12
+"""Significant digits a number is rounded to before a text table formats it (:func:`as_shown`):
+a value that sits on a rounding tie in exact arithmetic (-1.23625 shown to 4 decimals) then
+rounds the same way on every machine instead of following its last-bit noise."""
+
+
+def as_written(x, unit):
+    """The float ``x`` (in ``unit``) as bikemass writes it: 0.0 when below :data:`ZERO` in a
+    unit of :data:`ZERO_UNITS` (never -0.0), else ``x`` with every digit."""
+    x = float(x)
+    scale = ZERO_UNITS.get(unit)
+    return 0.0 if scale is not None and abs(x) < ZERO * scale else x
+
+
+def as_shown(x):
+    """The float ``x`` as a text table shows it: rounded to :data:`SIGNIFICANT` significant
+    digits, no minus sign on zero (non-finite values unchanged)."""
+    x = float(x)
+    return float(f"{x:.{SIGNIFICANT}g}") + 0.0 if np.isfinite(x) else x
+
+
+def _unit_key(unit):
+    """``"1/s (pairs: real, imaginary)"`` -> ``"1/s"``: the unit without its remark."""
+    return unit.split(" (")[0].strip() if isinstance(unit, str) else None
+
+
+def _written_data(obj, units, unit=None):
+    """Plain data with every float under a key of ``units`` passed through :func:`as_written`
+    (a key without a unit takes its parent's)."""
+    if isinstance(obj, dict):
+        return {k: _written_data(v, units, _unit_key(units[k]) if k in units else unit) for k, v in obj.items()}
+    if isinstance(obj, list):
+        return [_written_data(v, units, unit) for v in obj]
+    if isinstance(obj, float):
+        return as_written(obj, unit)
+    return obj
+
+
+def _header_unit(header):
+    """``"x (m)"`` -> ``"m"``: the unit a CSV header names in parentheses, else None."""
+    header = str(header)
+    return header[header.rindex("(") + 1:-1] if header.endswith(")") and "(" in header else None
+
+
+def csv_text(headers, rows):
+    """CSV text: ``None`` as an empty cell, floats in full (``repr``), 0 below :data:`ZERO` in a
+    column whose header names a unit of :data:`ZERO_UNITS` (``"x (m)"``)."""
+    import csv
+    import io
+    from numbers import Integral, Real
+
+    units = [_header_unit(h) for h in headers]
+
+    def cell(v, unit):
+        if v is None:
+            return ""
+        if isinstance(v, Real) and not isinstance(v, (bool, Integral)):
+            return repr(as_written(v, unit))
+        return v
+
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(headers)
+    writer.writerows([[cell(v, u) for v, u in zip(r, units)] for r in rows])
+    return buffer.getvalue()
+
+
 UNITS = {
     "mass": "kg", "com": "m", "inertia": "kg m^2",
     "S": "N m/rad", "frequencies": "Hz",
@@ -93,6 +178,8 @@ def with_units(obj, extra=None):
 def dumps(obj, fmt):
     """Serialise plain data as ``json`` or ``yaml`` text."""
     data = plain(obj)
+    if isinstance(data, dict) and isinstance(data.get("units"), dict):
+        data = _written_data(data, data["units"])
     caught = _WARNINGS.get()
     if caught and fmt == "json" and isinstance(data, dict):
         data = {**data, "warnings": [str(w.message) for w in caught]}
@@ -109,7 +196,7 @@ def table(headers, rows, floatfmt="{:.3f}"):
         if v is None:
             return "-"
         if isinstance(v, (float, np.floating)):
-            return floatfmt.format(v)
+            return floatfmt.format(as_shown(v))
         return str(v)
     text = [[cell(h) for h in headers]] + [[cell(v) for v in r] for r in rows]
     widths = [max(len(r[i]) for r in text) for i in range(len(headers))]

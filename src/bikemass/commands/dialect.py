@@ -186,21 +186,6 @@ def document(data, fmt, extra_units=None):
 
 
 def csv_text(headers, rows):
-    """CSV text (numbers written in full)."""
-    import csv
-    import io
-
-    buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(headers)
-    writer.writerows([[_cell(v) for v in r] for r in rows])
-    return buffer.getvalue()
-
-
-def _cell(v):
-    from numbers import Integral, Real
-    if v is None:
-        return ""
-    if isinstance(v, Real) and not isinstance(v, (bool, Integral)):
-        return repr(float(v))
-    return v
+    """CSV text (:func:`bikemass.output.csv_text`: numbers in full, below ``ZERO`` as 0)."""
+    from ..output import csv_text as text
+    return text(headers, rows)

@@ -67,7 +67,7 @@ def _fixed(args):
 
 
 def _report(solution, gaps, hands, crank):
-    from ..output import table
+    from ..output import as_written, table
     from ..rider.chain import JOINTS
     pose = solution.pose
     legs = "symmetric legs, feet on the crank axis" if crank is None else f"crank {crank:g} deg"
@@ -75,9 +75,10 @@ def _report(solution, gaps, hands, crank):
     rows = [(j.replace("_", " "), pose.angles[j], "solved" if j in solution.free else "fixed") for j in order]
     lines = [f"Chain pose: hands {hands}, {legs}; hip joints at x = {pose.root[0]:.4f} m, "
              f"z = {pose.root[1]:.4f} m", "", table(("joint", "angle (deg)", ""), rows, "{:.2f}")]
-    rows = [(t.name, t.target[0], t.target[1], solution.residuals[t.name] * 1000, t.key) for t in solution.targets]
+    rows = [(t.name, t.target[0], t.target[1], as_written(solution.residuals[t.name], "m") * 1000, t.key)
+            for t in solution.targets]
     lines += [table(("contact", "x (m)", "z (m)", "residual (mm)", "bicycle key"), rows, "{:.4f}"),
-              f"largest gap at a joint: {max(gaps.values()) * 1000:.2e} mm"]
+              f"largest gap at a joint: {as_written(max(gaps.values()), 'm') * 1000:.4f} mm"]
     return "\n".join(lines)
 
 
@@ -149,7 +150,7 @@ def _fit_record(r):
 
 
 def _fit_text(args, fits, fmt):
-    from ..output import table
+    from ..output import as_written, table
     from ..rider.chain import JOINTS
 
     records = {pose: _fit_record(r) for pose, r in fits.items()}
@@ -159,7 +160,7 @@ def _fit_text(args, fits, fmt):
     for pose, f in records.items():
         g, (wt, wc), (tc, cc) = f["plane_gaps"], f["weave_speed"].values(), f["capsize_speed"].values()
         rows.append((pose, g["elbow"] * 1000, g["knee"] * 1000, g["hip"] * 1000, f["fit_rms"] * 1000,
-                     f["fit_max"] * 1000, f"{f['chain_gap']:.1e}", wt, wc, wc - wt, tc, cc, cc - tc))
+                     f["fit_max"] * 1000, f"{as_written(f['chain_gap'], 'm'):.1e}", wt, wc, wc - wt, tc, cc, cc - tc))
         angles.append((pose, *f["hip_joints"], *(f["angles"][j] for j in JOINTS)))
         t, c = fits[pose]["thesis"], fits[pose]["fitted"]
         d, dI = f["com_change"], f["inertia_change"]

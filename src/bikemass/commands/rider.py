@@ -44,8 +44,10 @@ def _common_options(p):
 
 
 def _clean(x, digits=4):
-    """Float rounded for display, without a minus sign on a rounded zero."""
-    return round(float(x), digits) + 0.0
+    """Float rounded for display (after :func:`bikemass.output.as_shown`), without a minus sign
+    on a rounded zero."""
+    from ..output import as_shown
+    return round(as_shown(x), digits) + 0.0
 
 
 def _seated(args):
@@ -77,8 +79,8 @@ def rider_document(rider, props, seated, method, segments):
 
 def _contacts_table(seated):
     from ..errors import shown
-    from ..output import table
-    rows = [(name, gap * 1000, key) for name, (gap, key) in seated.contacts.items()]
+    from ..output import as_written, table
+    rows = [(name, as_written(gap, "m") * 1000, key) for name, (gap, key) in seated.contacts.items()]
     head = (f"On {seated.bicycle.name} ({shown(seated.bicycle.source)}): pose {seated.how}"
             + ("" if seated.solution is None else " by the chain, joint angles (deg): "
                + ", ".join(f"{k} {v:.1f}" for k, v in seated.solution.pose.angles.items())))
@@ -100,10 +102,10 @@ def _rider_text(args, rider, props, seated, fmt):
 
     if fmt in ("json", "yaml"):
         return dialect.document(rider_document(rider, props, seated, args.method, args.segments), fmt)
-    rows = [[name, body.replace("_frame", ""), mp.mass, *(_clean(v) for v in mp.com),
-             *(_clean(mp.inertia[i, j]) for i, j in ((0, 0), (1, 1), (2, 2), (0, 2)))]
+    rows = [[name, body.replace("_frame", ""), mp.mass, *mp.com,
+             *(mp.inertia[i, j] for i, j in ((0, 0), (1, 1), (2, 2), (0, 2)))]
             for name, body, mp in rider.breakdown(args.method)]
-    if fmt == "csv":
+    if fmt == "csv":                                                    # every digit
         I = props.inertia
         total = ["total", "", props.mass, *props.com, I[0, 0], I[1, 1], I[2, 2], I[0, 2]]
         return dialect.csv_text(SEGMENT_HEADERS[:6] + [f"{h} (kg m^2)" for h in SEGMENT_HEADERS[6:]],
@@ -117,7 +119,7 @@ def _rider_text(args, rider, props, seated, fmt):
     lines += ["         [" + ", ".join(f"{_clean(v):9.4f}" for v in row) + "]" for row in I]
     text = ("\n".join(lines) + "\n\n"
             "Per segment (centre of mass in the benchmark frame; inertia about the segment's own com):\n"
-            + table(SEGMENT_HEADERS, rows, floatfmt="{:.4f}"))
+            + table(SEGMENT_HEADERS, [r[:2] + [_clean(v) for v in r[2:]] for r in rows], floatfmt="{:.4f}"))
     if seated is not None and seated.contacts:
         text += "\n" + _contacts_table(seated)
     return text

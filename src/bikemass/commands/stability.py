@@ -131,7 +131,7 @@ def eig_table(modes, csv=False):
     if csv:
         headers = ["speed"] + [f"{label}_{part}".replace(" ", "_") for label in modes.labels for part in ("re", "im")]
         rows = [[v] + [x for z in row for x in (z.real, z.imag)] for v, row in zip(modes.speeds, modes.eigenvalues)]
-        return "\n".join([",".join(headers)] + [",".join(repr(float(x)) for x in r) for r in rows]) + "\n"
+        return dialect.csv_text(headers, rows)
     others = [label for label in modes.labels if label not in WEAVE]
     headers = ["speed", "weave re", "weave im"] + [f"{label} {part}" for label in others for part in ("re", "im")]
     w = [modes.labels.index(label) for label in WEAVE]

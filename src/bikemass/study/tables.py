@@ -1,7 +1,5 @@
 """A result table of the study: raw values for CSV, formatted values for the Markdown report."""
 
-import csv
-import io
 from dataclasses import dataclass, field
 
 
@@ -21,13 +19,9 @@ class Table:
     notes: tuple = ()
 
     def to_csv(self):
-        """CSV text, full precision (``repr`` of floats), header line first."""
-        buf = io.StringIO()
-        writer = csv.writer(buf, lineterminator="\n")
-        writer.writerow(self.headers)
-        for row in self.rows:
-            writer.writerow(["" if v is None else v for v in row])
-        return buf.getvalue()
+        """CSV text, header line first (:func:`bikemass.output.csv_text`: full precision)."""
+        from ..output import csv_text
+        return csv_text(self.headers, self.rows)
 
     def cell(self, column, value):
         if value is None:
@@ -35,8 +29,9 @@ class Table:
         if isinstance(value, bool):
             return "yes" if value else "no"
         if isinstance(value, float):
+            from ..output import as_shown
             fmt = self.formats.get(column, "{:.3f}")
-            text = fmt.format(value)
+            text = fmt.format(as_shown(value))
             return fmt.format(0.0) if float(text.rstrip(" %")) == 0 else text   # no "-0.000"
         return str(value)
 
