@@ -5,6 +5,8 @@ Both libraries run in this process on the same parameters; best of several repea
 The last line is the whole stability analysis (tracked modes, every crossing of Re = 0
 as a root to 1e-13 m/s, exact and grid ranges, strict and marginal) against
 BicycleParameters' ``Bicycle.eig`` at the same 601 speeds (issue 14 asks for <= 0.25).
+Then the same analysis with the machine's default BLAS pool and on one BLAS thread
+(issue 10: does the stability core gain from :func:`bikemass.threads.one_blas_thread`?).
 """
 
 import tempfile
@@ -53,9 +55,13 @@ def main():
     print(f"{'':38s} {'bikemass':>10s} {'BicycleParameters':>18s} {'ratio':>7s}")
     for name, ours, theirs in rows:
         print(f"{name:38s} {ours * 1e3:8.2f}ms {theirs * 1e3:16.2f}ms {theirs / ours:6.1f}x")
-    full, eig = interleaved(lambda: _api_stability(p), _bicycle_eig(p, speeds), rounds=15)
+    full, eig = map(min, interleaved(lambda: _api_stability(p), _bicycle_eig(p, speeds), rounds=15))
     print(f"full stability analysis (crossings, exact + grid ranges): {full * 1e3:.2f} ms; "
           f"BicycleParameters Bicycle.eig, 601 speeds: {eig * 1e3:.2f} ms; ratio {full / eig:.3f}")
+    default, one = interleaved(lambda: _api_stability(p), lambda: _one_thread(_api_stability, p), rounds=30)
+    print(f"full stability analysis, default BLAS pool vs one thread (30 rounds, median / max): "
+          f"{np.median(default) * 1e3:.2f} / {max(default) * 1e3:.2f} ms vs "
+          f"{np.median(one) * 1e3:.2f} / {max(one) * 1e3:.2f} ms; ratio {np.median(default) / np.median(one):.2f}")
 
 
 def _api_stability(p):
@@ -83,13 +89,19 @@ def _bicycle_eig(p, speeds):
     return lambda: bike.eig(speeds)
 
 
+def _one_thread(fn, *args):
+    from bikemass.threads import one_blas_thread
+    with one_blas_thread():
+        return fn(*args)
+
+
 def interleaved(a, b, rounds):
-    """Best times (s) of ``a`` and ``b``, run alternately (a shared machine's load hits both alike)."""
+    """Times (s) of ``a`` and ``b``, run alternately (a shared machine's load hits both alike)."""
     ta, tb = [], []
     for _ in range(rounds):
         ta.append(timeit.timeit(a, number=1))
         tb.append(timeit.timeit(b, number=1))
-    return min(ta), min(tb)
+    return ta, tb
 
 
 if __name__ == "__main__":

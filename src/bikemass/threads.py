@@ -10,7 +10,7 @@ good.  Processes forked inside the block (the study's workers) inherit the limit
 The pools are process-wide.  threadpoolctl (>= 3.8) lets one Python thread at a time
 resize OpenBLAS's pool: in a second thread entering the block meanwhile the block
 changes nothing (it runs on whatever size is set), and the sizes are still restored
-once every block has exited.  Cost: ~0.1 ms per block (a cached controller; the scan
+once every block has exited.  Cost: ~0.04 ms per block (a cached controller; the scan
 for loaded libraries is redone only after new modules are imported).  Works as a
 decorator too: ``@one_blas_thread()``.
 """

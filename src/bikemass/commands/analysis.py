@@ -262,6 +262,5 @@ def run_sweep_command(args):
 def require_for_sweep(args):
     """The packages the chosen engine needs (one clear line if missing)."""
     from ..sweep.run import require
-    require("threadpoolctl")
     if args.workers is not None or args.scheduler is not None:
         require("distributed")
