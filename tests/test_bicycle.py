@@ -51,7 +51,7 @@ def test_wheels_reproduce_table_3_9_to_printed_decimals(bike, wheel):
 
 def test_jamis_rear_frame_from_geometry():
     """Issue 3 targets: mass within 2 % of 4.615 kg, CoM within 20 mm of (0.330, -0.493);
-    THESIS_NOTES.md: steel tubes 2.095 kg, with the rear components 4.557 kg."""
+    docs/thesis.md#jamis-rear-frame-mass: steel tubes 2.095 kg, with the rear components 4.557 kg."""
     bike = load_bicycle("jamis")
     tube_names = {t.name for t in bike.tubes if t.body == "rear_frame"}
     tubes = sum(p.mass for p in bike.parts if p.name in tube_names)
@@ -116,7 +116,8 @@ def test_no_stiffness_at_all_is_an_input_error():
 
 
 def test_combine_exact_and_thesis_for_jamis_thesis_with_relaxed_rider():
-    """THESIS_NOTES.md: Jamis + Relaxed IBxx 12.79 (thesis, Eq. 3.6) vs 15.08 kg m^2 (exact).
+    """docs/thesis.md#rider-and-rear-frame-combined: Jamis + Relaxed IBxx 12.79 (thesis, Eq. 3.6)
+    vs 15.08 kg m^2 (exact).
 
     The difference is the parallel-axis term of the two bodies about their joint CoM,
     mu * dz^2 with the reduced mass mu = m1 m2 / (m1 + m2) and dz their CoM height difference
@@ -178,7 +179,7 @@ def test_structures_of_the_geometry_bicycles():
         "bottom_bracket", "seat_cluster", "seat_top", "head_top", "head_bottom", "dropout_left", "dropout_right"}
     assert jamis.dropouts == ("dropout_left", "dropout_right") and jamis.head_tube == ("head_top", "head_bottom")
     sections = {t.name: round(t.section.outer_diameter / 0.0254, 3) for t in jamis.tubes}
-    assert sections["seat_stay_left"] == 0.625 and sections["chain_stay_left"] == 0.750   # THESIS_NOTES swap
+    assert sections["seat_stay_left"] == 0.625 and sections["chain_stay_left"] == 0.750   # docs/thesis.md#seat-and-chain-stays-swapped
     cargo = load_bicycle("cargo").structure
     assert len(cargo.keypoints) == 30   # the 39 of Table 3-10 less hoops/linkage (26-29, 36-39) and 8
     assert all(t.body == "rear_frame" for t in cargo.tubes)

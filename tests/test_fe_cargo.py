@@ -17,7 +17,7 @@ from thesis_frames import MATERIALS, cargo_structure, tables
 TABLES = tables()
 BCS = {"free": "free", "fix-rear": "fix_rear", "fix-head": "fix_head", "fix-both": "fix_both"}
 TITANIUM_KDD_CORRECTED = 2207.0
-"""THESIS_NOTES.md: Table 3-12 prints Cargo titanium K_dd = 2007.0; it must be ~2207."""
+"""docs/thesis.md#table-3-12-errata: Table 3-12 prints Cargo titanium K_dd = 2007.0; it must be ~2207."""
 
 
 @pytest.fixture(scope="module")

@@ -106,7 +106,7 @@ def test_paired_limbs_are_mirror_images(riders):
 
 # -- Table 3-4: the validation ------------------------------------------------
 # Tolerances: the thesis's Creo values are printed to 3 decimals, and its geometry
-# (Table 3-3) to 1 mm / 0.001 deg.  THESIS_NOTES.md records the reproduction as
+# (Table 3-3) to 1 mm / 0.001 deg.  docs/thesis.md#the-rider-model records the reproduction as
 # <= 0.26 % relative, CoM <= 0.5 mm, inertia <= 0.014 kg m^2; we assert just above
 # those (0.3 %, 0.5 mm = half the last printed digit, 0.015 kg m^2), well inside the
 # issue's 0.5 % / 1 mm, so a regression of a few tenths of a percent is caught.

@@ -3,7 +3,7 @@
 Jamis: built from reference/frame_tables.yaml: Table 3-11 keypoints and Table 3-5
 sections, with the seat- and chain-stay diameters swapped (seat stays 0.625 in,
 chain stays 0.750 in): the thesis's FE results come out only that way (see
-THESIS_NOTES.md, "Rear frames").
+docs/thesis.md#seat-and-chain-stays-swapped).
 
 Cargo: Table 3-10 keypoints with a connectivity reconstructed from geometry (the
 thesis's figure is missing); see :data:`CARGO_MEMBERS` and docs/fe.md.

@@ -3,11 +3,11 @@
 Built from reference/bicycle_parameters.yaml: the Table 3-9 bicycles, the
 Table 3-4 riders and the Table 3-12 stiffnesses, combined as the thesis did
 (Eq. 3.4-3.6): masses summed, centre of mass mass-weighted, inertias **added
-without parallel-axis terms** (THESIS_NOTES.md, "Stability").  "No Rider" is the
+without parallel-axis terms** (docs/thesis.md#rider-and-rear-frame-combined).  "No Rider" is the
 frame alone; the "Benchmark" row is the Meijaard et al. (2007) bicycle.  Cargo
 stiffness: the off-diagonals are symmetrised with the K_phidelta value, and the
 titanium K_deltadelta erratum 2007.0 is read as 2207.0 (a one-digit slip; see
-THESIS_NOTES.md, "Rear frames").  The production combination lives with the
+docs/thesis.md#table-3-12-errata).  The production combination lives with the
 bicycle model; this module only reproduces the thesis's inputs for the tests.
 """
 

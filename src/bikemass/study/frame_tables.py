@@ -44,7 +44,8 @@ def stiffness_table(results, corrected_published=None):
                     fixed = (corrected_published or {}).get((frame, material))
                     if procedure == "thesis" and fixed is not None and fixed[i, j] != theirs:
                         notes.append(f"{frame} {material} {name}: printed {theirs:g} is read as "
-                                     f"{fixed[i, j]:g} (erratum, THESIS_NOTES.md); against that value "
+                                     f"{fixed[i, j]:g} (erratum, docs/thesis.md#table-3-12-errata); "
+                                     f"against that value "
                                      f"the error is {_error(float(S[i, j]), float(fixed[i, j])):+.2f} %.")
     jamis = [abs(r[6]) for r in rows if r[0] == "jamis" and r[2] == "thesis"]
     cargo = [abs(r[6]) for r in rows if r[0] == "cargo" and r[2] == "thesis"]
