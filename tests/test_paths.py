@@ -72,6 +72,19 @@ def test_no_data_anywhere_is_one_line_and_status_2(argv, monkeypatch, tmp_path, 
     assert not out.exists()
 
 
+def test_an_empty_folder_is_no_empty_table(monkeypatch, tmp_path, capsys):
+    data = copy_of_the_data(tmp_path / "mine", 1.02)
+    for pose in (data / "bodies" / "poses").glob("*.yaml"):
+        pose.unlink()
+    monkeypatch.setenv("BIKEMASS_DATA", str(data))
+    assert main(["riders"]) == 2
+    captured = capsys.readouterr()
+    assert captured.out == ""
+    assert captured.err == (f"bikemass: error: BIKEMASS_DATA={data}: {data / 'bodies' / 'poses'}: shipped files "
+                            "(*.yaml); this folder has none (BIKEMASS_DATA must name a folder holding bodies/, "
+                            "frames/ and reference/)\n")
+
+
 def test_version_and_help_need_no_data(monkeypatch, tmp_path, capsys):
     monkeypatch.setenv("BIKEMASS_DATA", str(tmp_path / "nothing here"))
     with pytest.raises(SystemExit) as exit_:

@@ -61,13 +61,13 @@ def shipped_dir(name) -> Path:
     return folder
 
 
-def missing_folder(folder):
-    """Raise the one-line error for a shipped folder that is not there."""
+def missing_folder(folder, expected="a folder of shipped files"):
+    """Raise the one-line error for a shipped folder that is not there (or holds nothing)."""
     env = os.environ.get("BIKEMASS_DATA")
     if env:
-        raise InputError(f"BIKEMASS_DATA={env}", str(folder), "a folder of shipped files "
-                         "(BIKEMASS_DATA must name a folder holding bodies/, frames/ and reference/)")
-    raise InputError("bikemass", str(folder), "a folder of shipped files (reinstall bikemass)")
+        raise InputError(f"BIKEMASS_DATA={env}", str(folder),
+                         f"{expected} (BIKEMASS_DATA must name a folder holding bodies/, frames/ and reference/)")
+    raise InputError("bikemass", str(folder), f"{expected} (reinstall bikemass)")
 
 
 def bodies_dir() -> Path:
@@ -109,7 +109,10 @@ SHARED_FILES = ("materials", "chart_defaults")
 
 def available(folder: Path):
     """Names of the shipped YAML files in ``folder`` (``_`` shown as ``-``), shared files left out;
-    a missing folder is an error (missing data must not look like an empty list)."""
+    a missing or empty folder is an error (missing data must not look like an empty list)."""
     if not folder.is_dir():
         missing_folder(folder)
-    return sorted(p.stem.replace("_", "-") for p in folder.glob("*.yaml") if p.stem not in SHARED_FILES)
+    names = sorted(p.stem.replace("_", "-") for p in folder.glob("*.yaml") if p.stem not in SHARED_FILES)
+    if not names:
+        missing_folder(folder, "shipped files (*.yaml); this folder has none")
+    return names

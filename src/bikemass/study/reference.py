@@ -10,9 +10,14 @@ from ..gate import load_data
 from ..paths import reference_dir
 
 
-@lru_cache(maxsize=None)
 def _load(name):
-    return load_data(reference_dir() / f"{name}.yaml")
+    return _read(reference_dir() / f"{name}.yaml")
+
+
+@lru_cache(maxsize=None)
+def _read(path):
+    """One parsed table file (kept by its path, so another data folder is read afresh)."""
+    return load_data(path)
 
 
 def stability_tables():
