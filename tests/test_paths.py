@@ -55,12 +55,13 @@ def test_bikemass_data_comes_first(no_package_data, monkeypatch, tmp_path, capsy
     assert wheelbase(capsys) == 1.25
 
 
+@pytest.mark.parametrize("from_checkout", [True, False], ids=["checkout", "installed"])
 @pytest.mark.parametrize("argv", [["riders"], ["params", "jamis"], ["rider", "relaxed"],
                                   ["study", "--out", "OUT", "--no-figures"]])
-def test_no_data_anywhere_is_one_line_and_status_2(argv, monkeypatch, tmp_path, capsys):
+def test_no_data_anywhere_is_one_line_and_status_2(argv, from_checkout, monkeypatch, tmp_path, capsys):
     monkeypatch.delenv("BIKEMASS_DATA", raising=False)
     monkeypatch.setattr(paths, "installed_data", lambda: tmp_path / "site-packages" / "bikemass" / "shipped")
-    monkeypatch.setattr(paths, "checkout", lambda: tmp_path / "checkout")
+    monkeypatch.setattr(paths, "checkout", lambda: tmp_path / "top" if from_checkout else None)
     out = tmp_path / "study"
     assert main([str(out) if a == "OUT" else a for a in argv]) == 2
     captured = capsys.readouterr()
@@ -69,6 +70,7 @@ def test_no_data_anywhere_is_one_line_and_status_2(argv, monkeypatch, tmp_path, 
     assert line.startswith("bikemass: error: ") and "none found (reinstall bikemass)" in line
     assert str(tmp_path / "site-packages" / "bikemass" / "shipped") in line
     assert "BIKEMASS_DATA" not in line
+    assert (f"or in the checkout ({tmp_path / 'top'})" in line) == from_checkout
     assert not out.exists()
 
 

@@ -27,8 +27,10 @@ def data_root() -> Path:
     """Folder holding ``bodies/``, ``frames/`` and ``reference/`` (see the module's lookup order)."""
     root = found_root()
     if root is None:
-        raise InputError("bikemass", "shipped data", "bodies/, frames/ and reference/ in the installed package "
-                         f"({installed_data()}) or in a checkout ({checkout()}); none found (reinstall bikemass)")
+        places = [f"the installed package ({installed_data()})"]
+        places += [f"the checkout ({top})" for top in [checkout()] if top is not None]
+        raise InputError("bikemass", "shipped data", f"bodies/, frames/ and reference/ in {' or in '.join(places)}; "
+                         "none found (reinstall bikemass)")
     return root
 
 
@@ -38,14 +40,15 @@ def found_root():
     if env:
         return Path(env)
     for root in (installed_data(), checkout()):
-        if all((root / name).is_dir() for name in SHIPPED):
+        if root is not None and all((root / name).is_dir() for name in SHIPPED):
             return root
     return None
 
 
-def checkout() -> Path:
-    """The repository's top folder when bikemass runs from a checkout (``src/bikemass`` two levels down)."""
-    return Path(__file__).resolve().parents[2]
+def checkout():
+    """The repository's top folder when bikemass runs from a checkout (``<top>/src/bikemass``), else None."""
+    package = Path(__file__).resolve().parent
+    return package.parents[1] if package.parent.name == "src" else None
 
 
 def installed_data() -> Path:
