@@ -29,7 +29,6 @@ GRID = """bike: benchmark
 vary:
   c: {from: 0.0, to: 0.2, num: 41}
   lam: {from: 0.1, to: 0.5, num: 50}
-chunk: 50
 """
 WALLS = """bike: jamis
 rider: relaxed

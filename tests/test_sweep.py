@@ -75,13 +75,46 @@ def test_resume_recomputes_only_missing_chunks(tmp_path):
     spec = read_spec(_spec(tmp_path, GRID))
     out = tmp_path / "o"
     first = run_sweep(spec, out)
-    (out / "chunks" / "000001.json").unlink()
+    assert sorted(p.name for p in (out / "chunks").iterdir()) == [
+        "000000000-000000005.json", "000000005-000000010.json", "000000010-000000012.json"]
+    (out / "chunks" / "000000005-000000010.json").unlink()
     (out / "results.csv").unlink()
     done = []
     second = run_sweep(spec, out, progress=done.append)
     assert done == [7, 5] and second == first        # 7 configurations kept, one chunk of 5 recomputed
     other = _spec(tmp_path, GRID.replace("num: 4", "num: 5"), "other.yaml")
     assert main(["sweep", other, "--out", str(out), "--quiet"]) == 2
+
+
+def test_resume_with_another_chunk_size_and_engine(tmp_path):
+    """The chunk size is not part of the sweep: chunks of 5 from this process, two of them lost,
+    are completed by a default-chunked run on a 2-worker Dask cluster, and the table is unchanged."""
+    from distributed import LocalCluster
+
+    from bikemass.sweep import read_spec, run_sweep
+    out = tmp_path / "o"
+    first = run_sweep(read_spec(_spec(tmp_path, GRID)), out)
+    for name in ("000000000-000000005.json", "000000010-000000012.json"):
+        (out / "chunks" / name).unlink()
+    done = []
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=False, protocol="tcp", host="127.0.0.1",
+                      dashboard_address="127.0.0.1:0", silence_logs=40) as cluster:
+        second = run_sweep(read_spec(_spec(tmp_path, GRID.replace("chunk: 5\n", ""), "auto.yaml")), out,
+                           scheduler=cluster.scheduler_address, progress=done.append)
+    assert second == first and done[0] == 5 and sum(done) == 12
+    names = sorted(p.name for p in (out / "chunks").iterdir())
+    assert "000000005-000000010.json" in names and len(names) > 3
+
+
+def test_chunk_sizes():
+    """Default: about 4 tasks per worker thread, 20 chunks in this process, at most 2000
+    configurations a chunk; the spec's chunk wins; missing ranges are cut at that size."""
+    from bikemass.sweep.run import _missing_chunks, chunk_size
+    assert chunk_size(2050, 2) == 257 and chunk_size(2050, 1) == 513 and chunk_size(2050) == 103
+    assert chunk_size(10 ** 6, 2) == 2000 and chunk_size(3, 8) == 1 and chunk_size(2050, 2, fixed=50) == 50
+    done = [False] * 3 + [True] * 2 + [False] * 6
+    assert _missing_chunks(done, 11, 4) == [(0, 3), (5, 9), (9, 11)]
+    assert _missing_chunks([True] * 4, 4, 2) == []
 
 
 def test_latin_hypercube_and_sobol_indices(tmp_path, capsys):

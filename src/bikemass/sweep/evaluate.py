@@ -14,6 +14,25 @@ OUTPUTS = ("weave_speed", "capsize_speed", "stable_from", "stable_to", "total_ma
 _MODELS = {}
 
 
+class Chunk:
+    """Configurations ``start .. stop - 1`` of a sweep (a list of ``{key: value}``).
+
+    A plain object rather than a list, so Dask ships it as one pickled value instead of
+    walking every configuration of it while building the task graph."""
+
+    __slots__ = ("start", "configurations")
+
+    def __init__(self, start, configurations):
+        self.start, self.configurations = start, configurations
+
+    @property
+    def stop(self):
+        return self.start + len(self.configurations)
+
+    def __len__(self):
+        return len(self.configurations)
+
+
 def _model(setup):
     from ..analysis.inputs import Model
     if setup not in _MODELS:
@@ -38,9 +57,10 @@ def evaluate(model, changes, max_speed):
             "total_mass": float(p.mR + p.mB + p.mH + p.mF), "error": None}
 
 
-def evaluate_chunk(setup, configurations, max_speed):
-    """Rows for ``configurations`` (list of ``{key: value}``); ``setup`` = (bike, rider, stiffness,
+def evaluate_chunk(setup, chunk, max_speed):
+    """Rows for the configurations of a :class:`Chunk`; ``setup`` = (bike, rider, stiffness,
     combine, spec source)."""
     from ..threads import one_blas_thread
+    model = _model(setup)
     with one_blas_thread():
-        return [evaluate(_model(setup), c, max_speed) for c in configurations]
+        return [evaluate(model, c, max_speed) for c in chunk.configurations]

@@ -1,20 +1,34 @@
 """Running a sweep: chunks of configurations, in this process or on a Dask cluster, kept on disk.
 
-``DIR/chunks/NNNNNN.json`` holds each finished chunk (written atomically), so an interrupted
-sweep resumes where it stopped; ``DIR/sweep.json`` records the spec's fingerprint and a
-resumed run must match it.  When every chunk is there, ``DIR/results.csv`` (and
-``results.parquet`` when pyarrow is installed) holds one row per configuration in the spec's
-order, the same whichever engine computed it.
+``DIR/chunks/START-STOP.json`` holds the result rows of configurations ``START..STOP-1``
+(written atomically as each chunk finishes), so an interrupted sweep resumes where it
+stopped, whatever engine or chunk size the next run uses; ``DIR/sweep.json`` records the
+spec's fingerprint and a resumed run must match it.  When every configuration has its row,
+``DIR/results.csv`` (and ``results.parquet`` when pyarrow is installed) holds one row per
+configuration in the spec's order, the same whichever engine computed it.
+
+Chunk size: the spec's ``chunk`` if it gives one; otherwise about
+:data:`TASKS_PER_WORKER` tasks per Dask worker thread (enough to balance the load, few
+enough that the per-task cost of the scheduler, the transfer and the chunk file stays
+small beside the work), or :data:`SERIAL_CHUNKS` chunks in this process (the progress bar's
+steps); at most :data:`MAX_CHUNK` configurations either way, so a long sweep loses little
+when interrupted.
 """
 
 import json
+import re
+from contextlib import contextmanager
 from pathlib import Path
 
 from ..errors import InputError
 from ..output import write_atomic
-from .evaluate import OUTPUTS, evaluate_chunk
+from .evaluate import OUTPUTS, Chunk, evaluate_chunk
 
 ENGINES = ("serial", "local", "scheduler")
+TASKS_PER_WORKER = 4
+SERIAL_CHUNKS = 20
+MAX_CHUNK = 2000
+_CHUNK_NAME = re.compile(r"(\d+)-(\d+)\.json")
 
 
 def require(module, extra="sweep"):
@@ -35,8 +49,30 @@ def check_keys(spec):
             get_path(model, key)
 
 
-def _chunks(configurations, size):
-    return [configurations[i:i + size] for i in range(0, len(configurations), size)]
+def chunk_size(count, slots=None, fixed=None):
+    """Configurations per chunk for ``count`` of them: ``fixed`` if given, else about
+    :data:`TASKS_PER_WORKER` chunks per worker thread (``slots``; ``None`` = this process:
+    :data:`SERIAL_CHUNKS` chunks), at most :data:`MAX_CHUNK`."""
+    if fixed:
+        return fixed
+    parts = SERIAL_CHUNKS if slots is None else TASKS_PER_WORKER * max(slots, 1)
+    return max(1, min(MAX_CHUNK, -(-count // parts)))
+
+
+def _missing_chunks(done, count, size):
+    """:class:`Chunk` index ranges (at most ``size`` long) covering the indices not in ``done``."""
+    chunks, start = [], None
+    for i in range(count + 1):
+        if i < count and not done[i]:
+            if start is None:
+                start = i
+            if i + 1 - start == size:
+                chunks.append((start, i + 1))
+                start = None
+        elif start is not None:
+            chunks.append((start, i))
+            start = None
+    return chunks
 
 
 def _prepare(spec, out):
@@ -56,12 +92,21 @@ def _prepare(spec, out):
     return out
 
 
-def _chunk_path(out, i):
-    return out / "chunks" / f"{i:06d}.json"
-
-
-def _save_chunk(out, i, rows):
-    write_atomic(_chunk_path(out, i), json.dumps(rows))
+def _finished(out, count):
+    """``[rows or None]`` per configuration, from the chunk files of an earlier run of this sweep."""
+    results = [None] * count
+    for path in (out / "chunks").glob("*.json"):
+        match = _CHUNK_NAME.fullmatch(path.name)
+        if not match:
+            continue
+        start, stop = int(match[1]), int(match[2])
+        try:
+            rows = json.loads(path.read_text())
+        except (OSError, ValueError):
+            continue
+        if 0 <= start < stop <= count and isinstance(rows, list) and len(rows) == stop - start:
+            results[start:stop] = rows
+    return results
 
 
 def run_sweep(spec, out, workers=None, scheduler=None, progress=None):
@@ -70,7 +115,8 @@ def run_sweep(spec, out, workers=None, scheduler=None, progress=None):
 
     ``workers``: a local Dask cluster of that many single-threaded worker processes;
     ``scheduler``: the address of a running Dask scheduler; neither: this process.
-    ``progress(n)`` is called with the number of configurations finished by each chunk.
+    ``progress(n)`` is called with the number of configurations already finished, then with
+    the number finished by each chunk.
     """
     if not hasattr(spec, "configurations"):
         from .spec import read_spec
@@ -78,45 +124,50 @@ def run_sweep(spec, out, workers=None, scheduler=None, progress=None):
     check_keys(spec)
     out = _prepare(spec, out)
     configurations = spec.configurations()
-    chunks = _chunks(configurations, spec.chunk)
-    todo = [i for i in range(len(chunks)) if not _chunk_path(out, i).is_file()]
+    results = _finished(out, len(configurations))
+    done = [r is not None for r in results]
     if progress:
-        progress(len(configurations) - sum(len(chunks[i]) for i in todo))
+        progress(sum(done))
     setup = (spec.bike, spec.rider, spec.stiffness, spec.combine, spec.source)
-    if workers is None and scheduler is None:
-        for i in todo:
-            _save_chunk(out, i, evaluate_chunk(setup, chunks[i], spec.max_speed))
+    with _engine(workers, scheduler) as (run, slots):
+        size = chunk_size(len(configurations), slots, spec.chunk)
+        chunks = [Chunk(a, configurations[a:b]) for a, b in _missing_chunks(done, len(configurations), size)]
+        for chunk, rows in run(setup, chunks, spec.max_speed):
+            write_atomic(out / "chunks" / f"{chunk.start:09d}-{chunk.stop:09d}.json", json.dumps(rows))
+            results[chunk.start:chunk.stop] = rows
             if progress:
-                progress(len(chunks[i]))
-    else:
-        _run_dask(setup, spec, chunks, todo, out, workers, scheduler, progress)
-    rows = []
-    for i, chunk in enumerate(chunks):
-        results = json.loads(_chunk_path(out, i).read_text())
-        rows += [{**config, **result} for config, result in zip(chunk, results)]
+                progress(len(rows))
+    rows = [{**config, **result} for config, result in zip(configurations, results)]
     write_results(rows, spec.keys, out)
     return rows
 
 
-def _run_dask(setup, spec, chunks, todo, out, workers, scheduler, progress):
+@contextmanager
+def _engine(workers, scheduler):
+    """``(run, slots)``: ``run(setup, chunks, max_speed)`` yields ``(chunk, rows)`` as chunks finish;
+    ``slots`` = worker threads (``None`` in this process)."""
+    if workers is None and scheduler is None:
+        yield (lambda setup, chunks, vmax: ((c, evaluate_chunk(setup, c, vmax)) for c in chunks)), None
+        return
     distributed = require("distributed")
+    cluster = None
     if scheduler is not None:
         try:
             client = distributed.Client(scheduler, timeout="10s")
         except (OSError, TimeoutError) as exc:
             raise InputError("--scheduler", scheduler, f"a running Dask scheduler ({exc})") from None
-        cluster = None
     else:
         cluster = distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
                                            host="127.0.0.1", dashboard_address="127.0.0.1:0", silence_logs=40)
         client = distributed.Client(cluster)
     try:
-        futures = {client.submit(evaluate_chunk, setup, chunks[i], spec.max_speed, pure=False): i for i in todo}
-        for future in distributed.as_completed(futures):
-            i = futures[future]
-            _save_chunk(out, i, future.result())
-            if progress:
-                progress(len(chunks[i]))
+        slots = sum(client.nthreads().values())
+
+        def run(setup, chunks, vmax):
+            futures = {client.submit(evaluate_chunk, setup, c, vmax, pure=False): c for c in chunks}
+            for future, rows in distributed.as_completed(futures, with_results=True):
+                yield futures[future], rows
+        yield run, slots
     finally:
         client.close()
         if cluster is not None:

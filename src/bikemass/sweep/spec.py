@@ -11,7 +11,7 @@ vary:                      # key -> list of values, or {from, to, num}
   lam: [0.2, 0.3, 0.4]
 sample: grid               # grid (default), or {method: lhs | sobol, n: 64, seed: 0}
 global_sensitivity: false  # true: Saltelli sample (SALib) of n base points and Sobol indices
-chunk: 50                  # configurations per task (optional)
+chunk: 500                 # optional: configurations per task (default: about 4 tasks per worker)
 ```
 
 Keys are those of :mod:`bikemass.analysis.inputs` (the 26 parameters, ``stiffness``,
@@ -66,7 +66,7 @@ class SweepSpec:
     n: int
     seed: int
     global_sensitivity: bool
-    chunk: int
+    chunk: int = None
 
     @property
     def keys(self):
@@ -92,9 +92,10 @@ class SweepSpec:
                 "bounds": [[v.low, v.high] for v in self.variables]}
 
     def fingerprint(self):
-        """Hash of everything that decides the results (a resumed sweep must match it)."""
+        """Hash of everything that decides the results (a resumed sweep must match it; the chunk
+        size does not decide them)."""
         doc = {k: getattr(self, k) for k in ("bike", "rider", "stiffness", "combine", "max_speed", "method", "n",
-                                            "seed", "global_sensitivity", "chunk")}
+                                            "seed", "global_sensitivity")}
         doc["variables"] = [v.__dict__ for v in self.variables]
         return hashlib.sha256(json.dumps(doc, sort_keys=True, default=str).encode()).hexdigest()[:16]
 
@@ -152,14 +153,18 @@ def read_spec(path):
     if gsa and n is None:
         node.fail("sample: {method: sobol, n: N} (N base points of the Saltelli sample)", "global_sensitivity")
     max_speed = node["max_speed"].number("dimensionless", positive=True) if node.has("max_speed") else 30.0
-    chunk = node["chunk"].number("dimensionless", positive=True) if node.has("chunk") else 50
+    chunk = None
+    if node.has("chunk"):
+        chunk = node["chunk"].number("dimensionless", positive=True)
+        if chunk != int(chunk):
+            node.fail("a whole number of configurations per task", "chunk")
     spec = SweepSpec(
         source=str(path), bike=_near(path, node["bike"].string()),
         rider=_near(path, node["rider"].string()) if node.has("rider") else "none",
         stiffness=node["stiffness"].string() if node.has("stiffness") else "infinite",
         combine=node["combine"].string(("exact", "thesis")) if node.has("combine") else "exact",
         max_speed=float(max_speed), variables=variables, method=method, n=n, seed=seed,
-        global_sensitivity=gsa, chunk=int(chunk))
+        global_sensitivity=gsa, chunk=None if chunk is None else int(chunk))
     count = int(np.prod([len(v.grid()) for v in variables])) if method == "grid" and not gsa else n
     if count > MAX_CONFIGURATIONS:
         vary.fail(f"at most {MAX_CONFIGURATIONS} configurations (this grid has {count})")
