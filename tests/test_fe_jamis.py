@@ -4,7 +4,7 @@ Tolerance 1 %: the thesis's ANSYS BEAM188 model differs from ours in details we
 cannot recover (its shear factors are computed from a meshed section, joints are
 centre-line keypoints); our Timoshenko model lands at +0.17..+0.22 % on every
 entry, so 1 % still catches any modelling slip (Euler-Bernoulli is ~0.5 % off,
-the stay sections as printed 6-15 %).
+the stay sections as printed up to 29 %: docs/thesis.md#seat-and-chain-stays-swapped).
 """
 
 import numpy as np
