@@ -1,7 +1,8 @@
 """BLAS on one thread inside the FE solves, the study and the sweep, and the previous limit back afterwards.
 
 Every test first sets the BLAS pools to 2 threads itself (scoped), so "limited to one" and
-"restored" are observable on any machine, whatever its core count or OPENBLAS_NUM_THREADS.
+"restored" are observable on any machine, whatever its core count or OPENBLAS_NUM_THREADS
+(where no resizable BLAS is loaded there is nothing to observe and the tests skip).
 """
 
 import threading
@@ -31,8 +32,10 @@ def blas_threads():
 
 @pytest.fixture(autouse=True)
 def two_threads():
+    if not blas_threads():
+        pytest.skip("no BLAS library that threadpoolctl can resize is loaded (e.g. Apple Accelerate)")
     with threadpool_limits(OUTSIDE, user_api="blas"):
-        assert blas_threads() and set(blas_threads()) == {OUTSIDE}
+        assert set(blas_threads()) == {OUTSIDE}
         yield
         assert set(blas_threads()) == {OUTSIDE}, "the global BLAS limit was not restored"
 
