@@ -10,12 +10,11 @@ from pathlib import Path
 from types import SimpleNamespace
 
 import pytest
-import scipy.sparse.linalg
+import scipy.sparse.linalg  # noqa: F401  (scipy's BLAS loaded before the fixture looks)
 from threadpoolctl import threadpool_info, threadpool_limits
 
 from bikemass.fe import frame_modes
 from bikemass.fe import modes as fe_modes
-from bikemass.fe import stiffness as fe_stiffness
 from bikemass.study import pipeline
 from bikemass.study.parallel import executor
 from bikemass.sweep import evaluate as sweep_evaluate
@@ -93,18 +92,6 @@ def test_frame_modes_solve_inside_the_limit(monkeypatch):
     assert len(modes.frequencies_hz) == 3 and seen and all(set(s) == {1} for s in seen)
     with pytest.raises(ValueError, match="modes asked"):      # a refused solve restores the limit too
         frame_modes(jamis_structure(), "fix-rear", 10 ** 6, element_size=None)
-
-
-def test_frame_stiffness_solve_inside_the_limit(monkeypatch):
-    seen = []
-
-    def splu(K):
-        seen.append(blas_threads())
-        return scipy.sparse.linalg.splu(K)
-
-    monkeypatch.setattr(fe_stiffness, "spla", SimpleNamespace(splu=splu))
-    S = fe_stiffness.equivalent_stiffness(jamis_structure())
-    assert S.shape == (2, 2) and seen and all(set(s) == {1} for s in seen)
 
 
 def _worker_blas_threads():

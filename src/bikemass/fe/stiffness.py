@@ -29,7 +29,6 @@ below the condensed values, for the more strongly coupled Cargo 2.7 % and 14 %
 import numpy as np
 import scipy.sparse.linalg as spla
 
-from ..threads import one_blas_thread
 from . import PROCEDURES
 from .assembly import assemble
 from .boundary import free_dofs
@@ -43,10 +42,11 @@ def head_tube_axis(structure):
     return axis / np.linalg.norm(axis)
 
 
-@one_blas_thread()
 def rotational_stiffness(mesh, timoshenko=True):
-    """3x3 stiffness (N m/rad, benchmark axes) of the bottom head-tube keypoint's rotations
-    (assembly and solve on one BLAS thread: :mod:`bikemass.threads`)."""
+    """3x3 stiffness (N m/rad, benchmark axes) of the bottom head-tube keypoint's rotations.
+
+    Runs on the caller's BLAS pool: the sparse LU hardly calls BLAS, so one thread gains
+    nothing here (benchmarks/bench_fe.py), unlike the mode solve."""
     free = free_dofs(mesh, mesh.structure.dropouts)
     K, _ = assemble(mesh, timoshenko=timoshenko, mass=False)
     K = K[free][:, free].tocsc()
