@@ -32,6 +32,8 @@ Bad input: one line naming the file, the key and what was expected, exit status 
 Unusual input (negative trail, a rider far from the bicycle, ...): one warning line
 each on stderr (and under "warnings" in JSON output); --strict makes them errors.
 Interrupted: exit status 130 (Ctrl-C) or 143 (SIGTERM), no files half-written.
+Williams (2015): corrected by default; the thesis's way by name (--as-printed,
+--combine thesis, --procedure thesis, --allow-off-contact); why: docs/thesis.md.
 """
 
 

@@ -73,7 +73,7 @@ def add_rider(p):
 def add_combine(p):
     p.add_argument("--combine", choices=Combine.values(), default=Combine.EXACT.value,
                    help="rider + frame: parallel-axis theorem (exact, default) or the thesis's Eq. 3.6 "
-                        "(inertias added without parallel-axis terms)")
+                        "(inertias added without parallel-axis terms; see docs/thesis.md)")
 
 
 def add_method(p):

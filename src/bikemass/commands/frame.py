@@ -26,7 +26,7 @@ def register(subparsers):
     _common(p)
     p.add_argument("--procedure", choices=Procedure.values(), default=Procedure.CONDENSED.value,
                    help="condensed: consistent Schur complement (default); thesis: Williams (2015) "
-                        "Eq. 3.31-3.34 unit rotations")
+                        "Eq. 3.31-3.34 unit rotations; see docs/thesis.md")
     add_size_option(p, "--bike-size")
     p.set_defaults(run=every_size(run_stiffness))
 

@@ -37,7 +37,7 @@ def register(sub):
 def _common_options(p):
     dialect.add_output(p)
     p.add_argument("--as-printed", action="store_true",
-                   help="use Table 3-3 as printed (errata not applied)")
+                   help="use Table 3-3 as printed (errata not applied; see docs/thesis.md)")
     dialect.add_method(p)
     p.add_argument("--overlap", choices=Overlap.values(), default=Overlap.SUM.value,
                    help="overlapping segments summed as in the thesis (default) or counted once")
