@@ -4,7 +4,9 @@ Checked in README.md, docs/, src/, frames/, bodies/, reference/, tests/, benchma
 examples/:
 
 * every markdown link ``[text](target)`` of a ``.md`` page whose target is a local file
-  names a file that exists (relative to the page);
+  names a file that exists (relative to the page), and every ``docs/NAME.md`` named
+  anywhere is a page of docs/ (a help text pointing to a page that does not exist is
+  caught too);
 * every ``NAME.md#anchor`` written anywhere (markdown link, comment, docstring) names a
   page of the repository (relative to the citing file, else to the repository root) and
   a heading of that page; ``(#anchor)`` links point to a heading of their own page.
@@ -25,6 +27,7 @@ ROOT = Path(__file__).parents[1]
 FOLDERS = ("docs", "src", "frames", "bodies", "reference", "tests", "benchmarks", "examples")
 SUFFIXES = {".md", ".py", ".yaml", ".yml", ".txt", ".toml"}
 CITATION = re.compile(r"((?:\.{1,2}/)?(?:[\w.-]+/)*[\w.-]+\.md)#([\w-]+)")
+DOC_PAGE = re.compile(r"(?<![\w.-])docs/([\w.-]+\.md)")
 LINK = re.compile(r"\]\(([^)\s]+)\)")
 HEADING = re.compile(r"^(#{1,6})\s+(.*?)\s*#*\s*$")
 
@@ -69,7 +72,8 @@ def resolve(source, target):
 
 def broken_references(source):
     text = source.read_text(encoding="utf-8", errors="replace")
-    broken = []
+    broken = [f"docs/{name}: no such page" for name in sorted(set(DOC_PAGE.findall(text)))
+              if not (ROOT / "docs" / name).is_file()]
     for m in CITATION.finditer(text):
         page = resolve(source, m.group(1))
         if page is None:
@@ -108,6 +112,7 @@ def test_a_broken_citation_is_found(tmp_path, monkeypatch):
     (tmp_path / "docs" / "a.md").write_text("# A page\n\n```yaml\n# not a heading\n```\n[ok](#a-page) [bad](#gone)\n")
     source = tmp_path / "src.py"
     source.write_text("# see docs/a.md#a-page, docs/a.md#not-a-heading and docs/b.md#x\n")
-    assert broken_references(source) == ["docs/a.md#not-a-heading: no heading #not-a-heading in docs/a.md",
+    assert broken_references(source) == ["docs/b.md: no such page",
+                                         "docs/a.md#not-a-heading: no heading #not-a-heading in docs/a.md",
                                          "docs/b.md#x: no page docs/b.md"]
     assert broken_references(tmp_path / "docs" / "a.md") == ["(#gone): no heading #gone on this page"]
