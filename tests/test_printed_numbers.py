@@ -14,7 +14,8 @@ import pytest
 
 import bikemass
 from bikemass.cli import main
-from bikemass.output import SIGNIFICANT, ZERO, as_shown, as_written, csv_text, dumps, table, with_units
+from bikemass.output import (SIGNIFICANT, ZERO, as_shown, as_written, csv_text, dumps, formatted, table,
+                             with_units)
 
 NOISE = 3e-17
 """Rounding noise of a zero computed from numbers of order 1 (a few units of 2**-53)."""
@@ -52,6 +53,8 @@ def test_text_tables_round_ties_the_same_whatever_the_noise():
     assert len({f"{as_shown(x):.3f}" for x in (2.0005 - 4e-16, 2.0005 + 4e-16)}) == 1
     assert as_shown(1 / 3) == float(f"{1 / 3:.{SIGNIFICANT}g}") and str(as_shown(-0.0)) == "0.0"
     assert np.isnan(as_shown(float("nan"))) and as_shown(float("inf")) == float("inf")
+    assert [formatted(f, -NOISE) for f in ("{:.4f}", "{:+.3f}", "{:.1f} %")] == ["0.0000", "+0.000", "0.0 %"]
+    assert formatted("{:.4f}", -0.5) == "-0.5000" and "-0.0" not in table(["y"], [[-NOISE]], "{:.1f}")
 
 
 def test_zero_quantities_of_a_symmetric_rider_and_a_chain_pose_print_as_zero(capsys):

@@ -91,6 +91,13 @@ def as_shown(x):
     return float(f"{x:.{SIGNIFICANT}g}") + 0.0 if np.isfinite(x) else x
 
 
+def formatted(fmt, x):
+    """``fmt.format(x)`` as a text table shows a float: from :func:`as_shown`, and a value that
+    rounds to zero without a minus sign (``-0.0000`` is written ``0.0000``)."""
+    text = fmt.format(as_shown(x))
+    return fmt.format(0.0) if text == fmt.format(-0.0) else text
+
+
 def _unit_key(unit):
     """``"1/s (pairs: real, imaginary)"`` -> ``"1/s"``: the unit without its remark."""
     return unit.split(" (")[0].strip() if isinstance(unit, str) else None
@@ -191,12 +198,13 @@ def dumps(obj, fmt):
 
 
 def table(headers, rows, floatfmt="{:.3f}"):
-    """A plain-text table; floats formatted with ``floatfmt``, ``None`` shown as '-'."""
+    """A plain-text table; floats formatted with ``floatfmt`` (by :func:`formatted`: at most
+    :data:`SIGNIFICANT` significant digits, no ``-0``), ``None`` shown as '-'."""
     def cell(v):
         if v is None:
             return "-"
         if isinstance(v, (float, np.floating)):
-            return floatfmt.format(as_shown(v))
+            return formatted(floatfmt, v)
         return str(v)
     text = [[cell(h) for h in headers]] + [[cell(v) for v in r] for r in rows]
     widths = [max(len(r[i]) for r in text) for i in range(len(headers))]

@@ -29,10 +29,8 @@ class Table:
         if isinstance(value, bool):
             return "yes" if value else "no"
         if isinstance(value, float):
-            from ..output import as_shown
-            fmt = self.formats.get(column, "{:.3f}")
-            text = fmt.format(as_shown(value))
-            return fmt.format(0.0) if float(text.rstrip(" %")) == 0 else text   # no "-0.000"
+            from ..output import formatted
+            return formatted(self.formats.get(column, "{:.3f}"), value)        # no "-0.000"
         return str(value)
 
     def to_markdown(self):
