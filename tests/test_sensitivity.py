@@ -113,15 +113,46 @@ def test_crossing_kinds_follow_the_root_that_crosses():
 
 def test_sensitivity_table_plot_and_bad_input(tmp_path, capsys):
     out = tmp_path / "s.png"
-    assert main(["sensitivity", "benchmark", "--plot", str(out)]) == 0
+    assert main(["sensitivity", "benchmark", "--plot", str(out), "--format", "table"]) == 0
     text = capsys.readouterr().out
-    weave = re.search(r"weave speed (\S+) m/s", text).group(1)
-    assert float(weave) == pytest.approx(4.2923825363, abs=1e-9) and out.stat().st_size > 10000   # Meijaard 2007
+    assert "4.292382536" in text and out.stat().st_size > 10000
     assert main(["sensitivity", "benchmark", "--plot", str(tmp_path / "s.xyz")]) == 2
     assert main(["sensitivity", "benchmark", "--max-speed", "-1"]) == 2
     assert main(["sensitivity", "nonexistent-bike"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 3 and all(line.startswith("bikemass: error:") for line in err)
+
+
+def test_sensitivity_speaks_the_dialect(tmp_path, capsys):
+    """--plot alone: the figure and nothing on stdout; --format csv: one row per critical speed and
+    parameter, the same numbers as the JSON; -o FILE.csv: CSV by the suffix, stdout empty;
+    --quiet: nothing."""
+    import csv
+    import io
+    fig = tmp_path / "bars.svg"
+    assert main(["sensitivity", "benchmark", "--plot", str(fig)]) == 0
+    assert capsys.readouterr().out == "" and fig.stat().st_size > 10000
+    stiff = tmp_path / "S.yaml"
+    stiff.write_text("S: [[6702.3, 1237.0], [1237.0, 3634.7]]\n")
+    assert main(["sensitivity", "benchmark", "--stiffness", str(stiff), "--format", "json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["units"]["weave_speed"] == "m/s" and "c" not in doc["units"]
+    assert main(["sensitivity", "benchmark", "--stiffness", str(stiff), "--format", "csv"]) == 0
+    rows = list(csv.DictReader(io.StringIO(capsys.readouterr().out)))
+    assert [r["kind"] for r in rows] == ["speed"] * 2 + ["parameter"] * 26 + ["stiffness"] * 3
+    by_name = {r["input"]: r for r in rows}
+    assert float(by_name["weave_speed"]["value"]) == pytest.approx(doc["weave_speed"], rel=1e-15)
+    for name in NAMES:
+        assert float(by_name[name]["d_weave_speed (m/s per unit)"]) == pytest.approx(doc["d_weave_speed"][name],
+                                                                                      rel=1e-15, abs=1e-300)
+        assert float(by_name[name]["elasticity_capsize_speed"]) == pytest.approx(
+            doc["elasticity_capsize_speed"][name], rel=1e-15, abs=1e-300)
+    assert by_name["lam"]["unit"] == "rad" and by_name["S_phiphi"]["unit"] == "N m/rad"
+    assert main(["sensitivity", "benchmark", "-o", str(tmp_path / "d.csv")]) == 0
+    assert capsys.readouterr().out == ""
+    assert (tmp_path / "d.csv").read_text().startswith("input,kind,value,unit,")
+    assert main(["sensitivity", "benchmark", "--quiet"]) == 0
+    assert capsys.readouterr().out == ""
 
 
 def test_stiffness_derivatives_equal_differences():

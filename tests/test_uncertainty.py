@@ -87,3 +87,33 @@ def test_geometry_level_input_and_bad_files(tmp_path, capsys):
     assert main(["uncertainty", "benchmark", "--std", str(spec), "--samples", "1", "--method", "montecarlo"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 7 and all(line.startswith("bikemass: error:") for line in err)
+
+
+def test_uncertainty_speaks_the_dialect(tmp_path, capsys):
+    """--plot alone: the figure and nothing on stdout; --format csv: the 16 matrix entries and two
+    critical speeds with the JSON's nominal values and stds; -o FILE.csv: CSV by the suffix."""
+    import csv
+    import io
+    spec = tmp_path / "u.yaml"
+    spec.write_text("uncertainty:\n  c: 0.002\n  lam: 0.01\n")
+    base = ["uncertainty", "benchmark", "--std", str(spec), "--speeds", "0:8:0.5"]
+    fig = tmp_path / "bands.png"
+    assert main(base + ["--plot", str(fig)]) == 0
+    assert capsys.readouterr().out == "" and fig.stat().st_size > 10000
+    assert main(base + ["--format", "json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert main(base + ["--format", "csv"]) == 0
+    rows = list(csv.DictReader(io.StringIO(capsys.readouterr().out)))
+    assert [r["quantity"] for r in rows][-2:] == ["weave_speed", "capsize_speed"] and len(rows) == 18
+    by_name = {r["quantity"]: r for r in rows}
+    for m in ("M", "C1", "K0", "K2"):
+        for i in range(2):
+            for j in range(2):
+                row = by_name[f"{m}[{i},{j}]"]
+                assert float(row["std"]) == pytest.approx(doc["matrices"][m]["std"][i][j], rel=1e-15, abs=1e-300)
+                assert float(row["nominal"]) == pytest.approx(doc["matrices"][m]["nominal"][i][j], rel=1e-15)
+    assert float(by_name["weave_speed"]["std"]) == pytest.approx(doc["weave_speed"]["std"], rel=1e-15)
+    assert by_name["weave_speed"]["unit"] == "m/s" and by_name["M[0,1]"]["unit"] == "kg m^2"
+    assert main(base + ["-o", str(tmp_path / "u.csv")]) == 0
+    assert capsys.readouterr().out == ""
+    assert (tmp_path / "u.csv").read_text().startswith("quantity,unit,nominal,std")

@@ -226,14 +226,14 @@ def uncertainty_figure(result, title="", size=None):
     Monte Carlo histograms of the critical speeds (a matplotlib Figure)."""
     from matplotlib.figure import Figure
 
-    from ..plots.stability import MODE_COLOURS
+    from ..plots.stability import COLOURS, OTHER_COLOUR
     fig = Figure(figsize=size or (11, 5), layout="constrained")
     axes = fig.subplots(1, 2, width_ratios=(2, 1))
     v = result.eigen["speeds"]
     for label, m in result.eigen["modes"].items():
-        c = MODE_COLOURS.get(label, "k")
+        c = COLOURS.get(label.split(" ")[0], OTHER_COLOUR)      # "weave 1", "weave 2" -> the weave's colour
         re = m["nominal"].real
-        axes[0].plot(v, re, color=c, label=label)
+        axes[0].plot(v, re, color=c, ls="--" if label == "weave 2" else "-", label=label)
         axes[0].fill_between(v, re - 2 * m["std_re"], re + 2 * m["std_re"], color=c, alpha=0.2, lw=0)
         if "re_q025" in m:
             axes[0].plot(v, m["re_q025"], color=c, ls=":", lw=1)

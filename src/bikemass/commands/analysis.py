@@ -1,10 +1,16 @@
 """``bikemass sensitivity``, ``bikemass uncertainty`` and ``bikemass sweep``."""
 
+from . import dialect
 from .figure_options import add_figure_options, figure_options, write_figure
 
-FORMATS = ("table", "json", "yaml")
-SPEED_UNITS = {"speed": "m/s", "d_speed": "m/s per parameter unit (SI, rad)", "elasticity": "1",
-               "d_stiffness": "m/s per N m/rad", "inputs": "m/s per unit of the YAML value (SI; pose angles deg)"}
+SPEED_UNITS = {"weave_speed": "m/s", "capsize_speed": "m/s",
+               "d_weave_speed": "m/s per unit of each parameter (SI, angles rad)",
+               "d_capsize_speed": "m/s per unit of each parameter (SI, angles rad)",
+               "elasticity_weave_speed": "1", "elasticity_capsize_speed": "1",
+               "d_stiffness": "m/s per N m/rad", "inputs": "value: as the YAML file writes it; "
+               "weave_speed, capsize_speed: m/s per that unit"}
+"""The units block of ``sensitivity``'s JSON/YAML, one entry per top-level key (the parameter
+names inside the derivative mappings are not quantities of their own units there)."""
 
 
 def register(sub):
@@ -14,7 +20,7 @@ def register(sub):
                     "capsize speed (first real-root crossing) with respect to each benchmark parameter, "
                     "from eigenvalue derivatives (left/right eigenvectors) and the implicit function "
                     "theorem, exact to rounding; elasticities (p/v) dv/dp; a bar chart with --plot.")
-    _bike_options(sens)
+    _bike_options(sens, "the derivatives and elasticities", "a bar chart of the elasticities")
     sens.add_argument("--inputs", metavar="KEYS", default="",
                       help="also w.r.t. geometry-level inputs: comma-separated dotted paths into the "
                            "bicycle YAML (sections.seat_stay.wall, geometry.trail, chart.head_tube_angle) "
@@ -22,7 +28,6 @@ def register(sub):
                            "the model with a central difference for the geometry -> parameters step only")
     sens.add_argument("--step", type=float, default=1e-4, metavar="REL",
                       help="relative step of that central difference (default 1e-4)")
-    sens.add_argument("--format", choices=FORMATS, default="table", help="table (default), json or yaml")
     sens.set_defaults(run=run_sensitivity)
 
 
@@ -33,7 +38,8 @@ def register(sub):
                     "YAML file (--std) of standard deviations or distributions per input: any of the 26 "
                     "parameters or a dotted path into the bicycle or pose YAML. linear: first order (as the "
                     "uncertainties package); montecarlo: N seeded samples, reported beside the linear result.")
-    _bike_options(unc)
+    _bike_options(unc, "the standard deviations", "the eigenvalues over speed with their bands (and, for "
+                  "montecarlo, histograms of the critical speeds)")
     unc.add_argument("--std", metavar="FILE",
                      help="YAML with an 'uncertainty:' mapping, input -> std, or {std: s}, or "
                           "{distribution: uniform, half_width: h} (SI; pose angles in degrees)")
@@ -43,7 +49,6 @@ def register(sub):
     unc.add_argument("--seed", type=int, default=0, help="random seed of the Monte Carlo draws (default 0)")
     unc.add_argument("--speeds", metavar="START:STOP:STEP", default="0:10:0.1",
                      help="speeds of the eigenvalue bands in m/s (default 0:10:0.1)")
-    unc.add_argument("--format", choices=FORMATS, default="table", help="table (default), json or yaml")
     unc.set_defaults(run=run_uncertainty)
 
 
@@ -70,31 +75,26 @@ def register(sub):
     sw.set_defaults(run=run_sweep_command)
 
 
-def _bike_options(p):
-    p.add_argument("bike", metavar="BIKE", help="shipped bicycle name, bicycle YAML or parameter file")
-    p.add_argument("--rider", metavar="POSE", default="none",
-                   help="rider pose name or pose YAML file, or 'none' (default none)")
-    p.add_argument("--combine", choices=("exact", "thesis"), default="exact",
-                   help="rider + frame: parallel-axis theorem (exact, default) or the thesis's Eq. 3.6")
-    p.add_argument("--stiffness", metavar="S", default="infinite",
-                   help="rear-frame stiffness: infinite (default), steel, titanium, aluminum or a YAML "
-                        "file with S: [[..], [..]] in N m/rad (see bikemass stability --help)")
+def _bike_options(p, data, figure):
+    dialect.add_bike(p)
+    dialect.add_rider(p)
+    dialect.add_combine(p)
+    dialect.add_stiffness(p)
     p.add_argument("--max-speed", type=float, default=30.0, metavar="M_S",
                    help="look for critical speeds on (0, M_S] m/s (default 30)")
-    p.add_argument("--plot", metavar="FILE", help="also draw a figure (.png, .pdf, .svg, ...)")
-    p.add_argument("-o", "--output", metavar="FILE", help="write the data to FILE instead of stdout")
-    add_figure_options(p)
+    dialect.add_output(p, what=data)
+    dialect.add_plot(p, figure)
 
 
 def _inputs(args):
+    """Checked figure options (or None), parameters and stiffness of BIKE/--rider/--stiffness."""
     from .. import catalog
     from ..errors import InputError
 
-    args.figure = figure_options(args, args.plot)
+    options = dialect.figure_checked(args)
     if not 0 < args.max_speed < 1e4:
         raise InputError("--max-speed", args.max_speed, "a speed in m/s between 0 and 1e4")
-    return (catalog.parameters(args.bike, args.rider, args.combine),
-            catalog.stiffness(args.bike, args.stiffness))
+    return options, catalog.parameters(args.bike, args.rider, args.combine), catalog.stiffness(args.bike, args.stiffness)
 
 
 def _title(args):
@@ -104,30 +104,52 @@ def _title(args):
 def run_sensitivity(args):
     from ..analysis.sensitivity import geometry_sensitivity, sensitivity, sensitivity_figure
     from ..errors import InputError
-    from ..output import dumps
-    from .dialect import write_data as _emit
 
-    params, S = _inputs(args)
-    result = sensitivity(params, S, vmax=args.max_speed)
+    options, params, S = _inputs(args)
     keys = [k.strip() for k in args.inputs.split(",") if k.strip()]
+    if keys and not 0 < args.step < 0.1:
+        raise InputError("--step", args.step, "a relative step between 0 and 0.1")
+    result = sensitivity(params, S, vmax=args.max_speed)
     geometry = {}
     if keys:
-        if not 0 < args.step < 0.1:
-            raise InputError("--step", args.step, "a relative step between 0 and 0.1")
         from ..analysis.inputs import Model
         model = Model(args.bike, args.rider, args.stiffness, args.combine, origin="--inputs")
         geometry = geometry_sensitivity(model, keys, result, args.step)
-    if args.format == "table":
-        text = sensitivity_table(result, _title(args), geometry)
-    else:
+
+    def render(fmt):
+        if fmt == "table":
+            return sensitivity_table(result, _title(args), geometry)
+        if fmt == "csv":
+            return sensitivity_csv(result, geometry)
+        from ..output import dumps
         doc = result.to_dict()
         if geometry:
             doc["inputs"] = geometry
-        text = dumps({**doc, "units": SPEED_UNITS}, args.format)
-    _emit(args, text)
+        return dumps({**doc, "units": {k: u for k, u in SPEED_UNITS.items() if k in doc}}, fmt)
+    dialect.emit(args, render)
     if args.plot:
-        write_figure(sensitivity_figure(result, _title(args), args.figure.size), args.plot, args.figure)
+        dialect.save_plot(args, sensitivity_figure(result, _title(args), options.size), options)
     return 0
+
+
+def sensitivity_csv(result, geometry=None):
+    """One row per input: the two critical speeds first (kind ``speed``), then the 26
+    parameters, the rear-frame S entries and any geometry-level inputs, each with its value,
+    unit and the derivatives (and, for parameters, elasticities) of both speeds."""
+    from ..parameters import parameter_units
+
+    units = parameter_units()
+    ew, ec = result.elasticities("weave_speed"), result.elasticities("capsize_speed")
+    rows = [[k, "speed", getattr(result, k), "m/s", None, None, None, None] for k in ("weave_speed", "capsize_speed")]
+    rows += [[n, "parameter", result.params[n], units.get(n, "1"), result.d_weave_speed[n], ew[n],
+              result.d_capsize_speed[n], ec[n]] for n in result.d_weave_speed]
+    if result.d_stiffness:
+        rows += [[k, "stiffness", None, "N m/rad", result.d_stiffness["weave_speed"][k], None,
+                  result.d_stiffness["capsize_speed"][k], None] for k in result.d_stiffness["weave_speed"]]
+    rows += [[k, "geometry", g["value"], "as in the YAML file", g["weave_speed"], None, g["capsize_speed"], None]
+             for k, g in (geometry or {}).items()]
+    return dialect.csv_text(["input", "kind", "value", "unit", "d_weave_speed (m/s per unit)", "elasticity_weave_speed",
+                             "d_capsize_speed (m/s per unit)", "elasticity_capsize_speed"], rows)
 
 
 def sensitivity_table(result, title, geometry=None):
@@ -171,13 +193,11 @@ def run_uncertainty(args):
     from ..analysis.inputs import Model
     from ..analysis.uncertainty import Spread, propagate, uncertainty_figure
     from ..errors import InputError
-    from ..output import dumps
-    from .dialect import parse_speeds, write_data as _emit
 
-    _inputs(args)
+    options = _inputs(args)[0]
     if not 2 <= args.samples <= 10 ** 6:
         raise InputError("--samples", args.samples, "a number of samples from 2 to 1000000")
-    speeds = parse_speeds(args.speeds)
+    speeds = dialect.parse_speeds(args.speeds)
     model = Model(args.bike, args.rider, args.stiffness, args.combine, origin=args.std or args.bike)
     spreads = {k: Spread("normal", s) for k, s in model.file_std.items()}
     if args.std:
@@ -186,18 +206,22 @@ def run_uncertainty(args):
         raise InputError(args.bike, "(uncertainties)", "standard deviations: a BicycleParameters file with "
                          "+/- values, or --std FILE")
     result = propagate(model, spreads, args.method, args.samples, args.seed, speeds)
-    if args.format == "table":
-        text = uncertainty_table(result, _title(args))
-    else:
-        text = dumps({**result.to_dict(), "units": UNCERTAINTY_UNITS}, args.format)
-    _emit(args, text)
+
+    def render(fmt):
+        if fmt == "table":
+            return uncertainty_table(result, _title(args))
+        if fmt == "csv":
+            return uncertainty_csv(result)
+        return dialect.document(result.to_dict(), fmt, UNCERTAINTY_UNITS)
+    dialect.emit(args, render)
     if args.plot:
-        write_figure(uncertainty_figure(result, _title(args), args.figure.size), args.plot, args.figure)
+        dialect.save_plot(args, uncertainty_figure(result, _title(args), options.size), options)
     return 0
 
 
 UNCERTAINTY_UNITS = {"M": "kg m^2", "C1": "kg m^2 (per m/s)", "K0": "kg m (times g: N m/rad)",
-                     "K2": "kg (times v^2: N m/rad)", "speed": "m/s", "eigenvalues": "1/s"}
+                     "K2": "kg (times v^2: N m/rad)", "weave_speed": "m/s", "capsize_speed": "m/s",
+                     "eigenvalues": "1/s"}
 
 
 def uncertainty_table(result, title):
@@ -223,6 +247,18 @@ def uncertainty_table(result, title):
         heads += ["std (linear)", "MC mean", "MC 2.5 %", "MC 97.5 %", "none found"]
     lines.append(table(heads, rows, floatfmt="{:.6g}"))
     return "\n".join(lines)
+
+
+def uncertainty_csv(result):
+    """One row per matrix entry and critical speed: quantity, unit, nominal, std (and, for
+    montecarlo, the linear std, mean, 2.5 % and 97.5 % quantiles and the fraction without)."""
+    mc = result.method == "montecarlo"
+    extra = ["linear_std", "mean", "q025", "q975", "fraction_without"] if mc else []
+    rows = [[f"{name}[{i},{j}]", UNCERTAINTY_UNITS[name], m["nominal"][i, j], m["std"][i, j]]
+            + ([m["linear_std"][i, j], None, None, None, None] if mc else [])
+            for name, m in result.matrices.items() for i in range(2) for j in range(2)]
+    rows += [[name, "m/s", s["nominal"], s["std"]] + [s.get(k) for k in extra] for name, s in result.speeds.items()]
+    return dialect.csv_text(["quantity", "unit", "nominal", "std", *extra], rows)
 
 
 def run_sweep_command(args):
