@@ -52,9 +52,9 @@ def evaluate(model, changes, max_speed):
         found = critical_speeds(system(values_of(p), S), max_speed)
     except (InputError, ValueError, np.linalg.LinAlgError) as exc:
         return {**{k: None for k in OUTPUTS}, "error": str(exc).replace("\n", " ")}
-    return {"weave_speed": found.weave_speed, "capsize_speed": found.capsize_speed,
-            "stable_from": found.stable_from, "stable_to": found.stable_to,
-            "total_mass": float(p.mR + p.mB + p.mH + p.mF), "error": None}
+    values = (found.weave_speed, found.capsize_speed, found.stable_from, found.stable_to, p.mR + p.mB + p.mH + p.mF)
+    # plain floats: a row kept in memory writes the same bytes as one read back from a chunk file
+    return {**dict(zip(OUTPUTS, (None if x is None else float(x) for x in values))), "error": None}
 
 
 def evaluate_chunk(setup, chunk, max_speed):
