@@ -190,3 +190,24 @@ def test_geometry_chain_equals_direct_difference(capsys):
     assert abs(g["weave_speed"]) > 1 and g["difference_check"] < 1e-4 * abs(g["weave_speed"])
     assert main(["sensitivity", "benchmark", "--inputs", "geometry.no_such_key"]) == 2
     assert "--inputs: geometry.no_such_key" in capsys.readouterr().err
+
+
+def test_resource_warnings_are_not_the_commands(monkeypatch, capsys):
+    """A ResourceWarning while a command runs (the garbage collector finalising something other
+    code left open, e.g. a TemporaryDirectory) is neither printed nor put in the JSON: the
+    command's warnings are about its input."""
+    import warnings
+
+    import bikemass.analysis.sensitivity as module
+    from bikemass.errors import BikemassWarning
+    real = module.sensitivity
+
+    def leaky(*args, **kwargs):
+        warnings.warn("Implicitly cleaning up <TemporaryDirectory '/tmp/x'>", ResourceWarning)
+        warnings.warn("a warning about the input", BikemassWarning)
+        return real(*args, **kwargs)
+    monkeypatch.setattr(module, "sensitivity", leaky)
+    assert main(["sensitivity", "benchmark", "--format", "json"]) == 0
+    captured = capsys.readouterr()
+    assert json.loads(captured.out)["warnings"] == ["a warning about the input"]
+    assert "TemporaryDirectory" not in captured.err and "a warning about the input" in captured.err

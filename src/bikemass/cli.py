@@ -90,6 +90,7 @@ def _run(args):
     with warnings.catch_warnings(record=True) as caught, collect_warnings(caught), track_inputs():
         warnings.simplefilter("always")
         warnings.simplefilter("ignore", DeprecationWarning)
+        warnings.simplefilter("ignore", ResourceWarning)    # the interpreter's (garbage collected leftovers), not the input's
         if getattr(args, "strict", False):
             warnings.simplefilter("error", BikemassWarning)
         try:
