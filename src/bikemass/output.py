@@ -115,6 +115,15 @@ def _written_data(obj, units, unit=None):
     return obj
 
 
+def written(document):
+    """A document as bikemass writes it: plain data (:func:`plain`) with :data:`ZERO` applied
+    to every number under a key of its top-level ``units`` block."""
+    data = plain(document)
+    if isinstance(data, dict) and isinstance(data.get("units"), dict):
+        data = _written_data(data, data["units"])
+    return data
+
+
 def _header_unit(header):
     """``"x (m)"`` -> ``"m"``: the unit a CSV header names in parentheses, else None."""
     header = str(header)
@@ -184,9 +193,7 @@ def with_units(obj, extra=None):
 
 def dumps(obj, fmt):
     """Serialise plain data as ``json`` or ``yaml`` text."""
-    data = plain(obj)
-    if isinstance(data, dict) and isinstance(data.get("units"), dict):
-        data = _written_data(data, data["units"])
+    data = written(obj)
     caught = _WARNINGS.get()
     if caught and fmt == "json" and isinstance(data, dict):
         data = {**data, "warnings": [str(w.message) for w in caught]}

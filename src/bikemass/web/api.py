@@ -23,14 +23,14 @@ DOWNLOADS = {
 
 def stability_document(evaluation):
     """The ``bikemass stability --format json`` document of an :class:`~.engine.Evaluation`."""
-    from ..output import plain, with_units
-    return with_units(plain(evaluation.stability.to_dict()))
+    from ..output import plain, with_units, written
+    return written(with_units(plain(evaluation.stability.to_dict())))
 
 
 def parameters_document(params):
     """The ``bikemass params --format json`` document of a parameter set."""
-    from ..output import with_units
-    return with_units(params.to_dict())
+    from ..output import with_units, written
+    return written(with_units(params.to_dict()))
 
 
 def download(engine, filename, state):
