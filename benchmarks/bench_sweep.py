@@ -1,6 +1,6 @@
 """Sweep throughput: configurations per second per core, and the scaling from 1 to 2 Dask workers.
 
-Run by hand:  python benchmarks/bench_sweep.py [--grid-only] [--repeats N] [--large]
+Run by hand:  python benchmarks/bench_sweep.py [--grid-only] [--rounds R] [--repeats N] [--large]
 Each cost is set beside BicycleParameters' ``Bicycle.eig`` over the thesis's 601 speeds
 (0..30 m/s) in this process, the cost of one configuration for a user of that package.
 Numbers vary with machine load (the load average is printed); the ratios are what to compare.
@@ -12,13 +12,15 @@ Numbers vary with machine load (the load average is printed); the ratios are wha
 * scaling, the same 2,050-configuration sweep (``run_sweep``, spec to ``results.csv``) in
   this process, on local Dask clusters (``--workers N``'s engine) of 1 and of 2
   single-threaded worker processes, and on a ``dask scheduler`` with 1 and with 2
-  ``dask worker --nthreads 1`` processes started here on loopback (``--scheduler``). The
-  clusters' start-up and their first run (which imports bikemass and builds the model in
-  every worker) are timed apart; the timed runs then go round all engines ``--repeats``
-  times (so load changes hit every engine alike): what a user with a running cluster sees.
-  Medians of the whole run and of its engine part (connecting, sending the chunks,
-  computing, gathering, writing the chunk files: from the first progress call to the
-  last); every table is checked to be identical, byte for byte.
+  ``dask worker --nthreads 1`` processes started here on loopback (``--scheduler``); beside
+  them the same chunks on a plain process pool of 1 and 2 (no Dask, no files): what this
+  machine gives two processes at that moment, the ceiling for any engine. Each engine
+  runs alone (an idle cluster costs CPU too): started (timed), one first run (imports
+  bikemass and builds the model in every worker; timed), ``--repeats`` timed runs, closed;
+  all of it ``--rounds`` times so load changes hit every engine alike. Medians of the
+  whole run and of its engine part (connecting, sending the chunks, computing,
+  gathering, writing the chunk files: from the first progress call to the last); every
+  table is checked to be identical, byte for byte.
 * ``--large``: the same scaling on a 20,100-configuration grid (c 201 x lam 100).
 """
 
@@ -36,7 +38,8 @@ from pathlib import Path
 import numpy as np
 
 from bikemass.sweep import read_spec, run_sweep
-from bikemass.sweep.evaluate import _model, evaluate
+from bikemass.sweep.evaluate import Chunk, _model, evaluate, evaluate_chunk
+from bikemass.sweep.run import chunk_size
 
 ROOT = Path(__file__).resolve().parents[1]
 GRID = ROOT / "examples" / "sweeps" / "benchmark_c_lam.yaml"
@@ -130,63 +133,105 @@ def start_dask(n, procs):
     return address
 
 
-def engines(spec, folder, repeats):
-    """Timed runs on: this process; LocalClusters of 1 and 2 workers; a dask scheduler with 1 and
-    with 2 dask worker processes.  Clusters are started (and timed) first and warmed up by one
-    run each; the timed runs then go round all engines ``repeats`` times, so load changes hit
-    every engine alike."""
+def _pool_run(pool, setup, chunks, vmax):
+    """The sweep's chunks on a plain process pool (no Dask, no files): the ceiling for 2 workers."""
+    t = time.perf_counter()
+    list(pool.map(evaluate_chunk, [setup] * len(chunks), chunks, [vmax] * len(chunks)))
+    return time.perf_counter() - t
+
+
+def _engine(name, spec, folder, procs):
+    """``(start-up seconds, run())`` of one engine; its cluster (if any) is closed by ``procs``."""
     from distributed import LocalCluster
-    clusters, procs, addresses = [], [], {}
-    try:
-        for n in (1, 2):
-            t = time.perf_counter()
-            clusters.append(LocalCluster(n_workers=n, **CLUSTER))
-            start = time.perf_counter() - t
-            addresses[f"local cluster, {n} worker" + "s" * (n > 1)] = clusters[-1].scheduler_address
-            t = time.perf_counter()
-            run_sweep(spec, Path(folder) / f"warm-local{n}", scheduler=clusters[-1].scheduler_address)
-            print(f"  LocalCluster of {n}: start-up {start:.2f} s, first run (imports, model) "
-                  f"{time.perf_counter() - t:.2f} s")
-        for n in (1, 2):
-            t = time.perf_counter()
-            address = addresses[f"dask scheduler, {n} worker" + "s" * (n > 1)] = start_dask(n, procs)
-            start = time.perf_counter() - t
-            t = time.perf_counter()
-            run_sweep(spec, Path(folder) / f"warm-dask{n}", scheduler=address)
-            print(f"  dask scheduler + {n} dask worker: start-up {start:.2f} s, first run (imports, model) "
-                  f"{time.perf_counter() - t:.2f} s")
-        timed = {name: Timed(spec, Path(folder) / f"e{i}") for i, name in enumerate(["this process", *addresses])}
-        for _ in range(repeats):
-            timed["this process"].run()
-            for name, address in addresses.items():
-                timed[name].run(scheduler=address)
-    finally:
-        for cluster in clusters:
-            cluster.close()
-        for p in reversed(procs):
+    n = 2 if name.endswith("2") else 1
+    t = time.perf_counter()
+    if name.startswith("local"):
+        cluster = LocalCluster(n_workers=n, **CLUSTER)
+        procs.append(cluster)
+        return time.perf_counter() - t, lambda timed: timed.run(scheduler=cluster.scheduler_address)
+    if name.startswith("dask"):
+        address = start_dask(n, procs)
+        return time.perf_counter() - t, lambda timed: timed.run(scheduler=address)
+    if name.startswith("pool"):
+        from concurrent.futures import ProcessPoolExecutor
+        from multiprocessing import get_context
+        pool = ProcessPoolExecutor(n, mp_context=get_context("spawn"))
+        procs.append(pool)
+        setup = (spec.bike, spec.rider, spec.stiffness, spec.combine, spec.source)
+        configs = spec.configurations()
+        size = chunk_size(len(configs), n)
+        chunks = [Chunk(a, configs[a:a + size]) for a in range(0, len(configs), size)]
+
+        def run(timed):
+            seconds = _pool_run(pool, setup, chunks, spec.max_speed)
+            timed.whole.append(seconds), timed.engine.append(seconds)
+        return 0.0, run
+    return 0.0, lambda timed: timed.run()
+
+
+def _close(procs):
+    for p in reversed(procs):
+        if hasattr(p, "terminate"):
             p.terminate()
-        for p in procs:
+        elif hasattr(p, "shutdown"):
+            p.shutdown()
+        else:
+            p.close()
+    for p in procs:
+        if hasattr(p, "wait"):
             p.wait(timeout=30)
-    return timed
+    procs.clear()
 
 
-def scaling(spec, repeats, label):
+ENGINES = {"this process": "serial", "process pool (no Dask), 1": "pool1", "process pool (no Dask), 2": "pool2",
+           "LocalCluster, 1 worker": "local1", "LocalCluster, 2 workers": "local2",
+           "dask scheduler, 1 worker": "dask1", "dask scheduler, 2 workers": "dask2"}
+
+
+def engines(spec, folder, rounds, repeats):
+    """Each engine in turn, alone on the machine (an idle Dask cluster costs CPU too): start it
+    (timed), one warm-up run (imports, model in every worker; timed), ``repeats`` timed runs,
+    close it; all that ``rounds`` times, so load changes hit every engine alike."""
+    timed = {label: Timed(spec, Path(folder) / name) for label, name in ENGINES.items()}
+    starts = {label: [] for label in ENGINES}
+    procs = []
+    try:
+        for _ in range(rounds):
+            for label, name in ENGINES.items():
+                start, run = _engine(name, spec, folder, procs)
+                t = time.perf_counter()
+                run(timed[label])
+                starts[label].append((start, time.perf_counter() - t))
+                timed[label].whole.pop(), timed[label].engine.pop()
+                for _ in range(repeats):
+                    run(timed[label])
+                _close(procs)
+    finally:
+        _close(procs)
+    return timed, starts
+
+
+def scaling(spec, rounds, repeats, label):
     print(f"{label}, {len(spec.configurations()):,} configurations; {_load()}")
     with tempfile.TemporaryDirectory() as tmp:
-        timed = engines(spec, tmp, repeats)
-    print(f"  medians of {repeats} runs (whole run, spec to results.csv; engine part):")
+        timed, starts = engines(spec, tmp, rounds, repeats)
+    print(f"  medians of {rounds} x {repeats} runs: whole run (spec to results.csv); engine part; "
+          "[start-up; first run: imports, model]")
     for name, t in timed.items():
-        print("    {:28s} {:.3f} s; {:.3f} s".format(name, *t.medians()))
-    for kind in ("local cluster", "dask scheduler"):
-        (w1, e1), (w2, e2) = timed[f"{kind}, 1 worker"].medians(), timed[f"{kind}, 2 workers"].medians()
+        start, first = (statistics.median(x) for x in zip(*starts[name]))
+        print("    {:28s} {:.3f} s; {:.3f} s   [{:.2f} s; {:.2f} s]".format(name, *t.medians(), start, first))
+    for kind in ("process pool (no Dask)", "LocalCluster", "dask scheduler"):
+        (w1, e1), (w2, e2) = timed[f"{kind}, 1" + " worker" * (kind != "process pool (no Dask)")].medians(), \
+            timed[f"{kind}, 2" + " workers" * (kind != "process pool (no Dask)")].medians()
         print(f"  {kind}: 2 workers vs 1: {w1 / w2:.2f}x whole run, {e1 / e2:.2f}x engine part")
     tables = set().union(*(t.tables for t in timed.values()))
-    print(f"  tables identical: {len(tables) == 1}; {_load()}")
+    print(f"  tables identical: {len(tables) == 1} ({len(tables)} distinct); {_load()}")
 
 
 def main():
     logging.getLogger("distributed").setLevel(logging.WARNING)      # no INFO lines as clusters close
-    repeats = int(sys.argv[sys.argv.index("--repeats") + 1]) if "--repeats" in sys.argv else 7
+    rounds = int(sys.argv[sys.argv.index("--rounds") + 1]) if "--rounds" in sys.argv else 3
+    repeats = int(sys.argv[sys.argv.index("--repeats") + 1]) if "--repeats" in sys.argv else 3
     grid = read_spec(str(GRID))
     print(f"{_load()}, {os.cpu_count()} cores")
     eig = bp_eig_seconds()
@@ -200,9 +245,9 @@ def main():
             geo = per_configuration(walls, repeat=1)
             print(f"geometry level (Jamis stay walls, steel S, Relaxed): {geo * 1e3:.1f} ms per configuration, "
                   f"{1 / geo:.1f} per second per core, {geo / eig:.1f} x one Bicycle.eig")
-        scaling(grid, repeats, "scaling")
+        scaling(grid, rounds, repeats, "scaling")
         if "--large" in sys.argv:
-            scaling(read_spec(_write(tmp, "large.yaml", LARGE)), max(3, repeats // 2), "scaling, larger grid")
+            scaling(read_spec(_write(tmp, "large.yaml", LARGE)), rounds, 1, "scaling, larger grid")
 
 
 def _write(folder, name, text):

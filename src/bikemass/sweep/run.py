@@ -165,8 +165,8 @@ def _engine(workers, scheduler):
 
         def run(setup, chunks, vmax):
             futures = {client.submit(evaluate_chunk, setup, c, vmax, pure=False): c for c in chunks}
-            for future, rows in distributed.as_completed(futures, with_results=True):
-                yield futures[future], rows
+            for future in distributed.as_completed(futures):
+                yield futures[future], future.result()
         yield run, slots
     finally:
         client.close()
