@@ -16,13 +16,14 @@ when interrupted.
 """
 
 import json
+import pickle
 import re
 from contextlib import contextmanager
 from pathlib import Path
 
 from ..errors import InputError
 from ..output import write_atomic
-from .evaluate import OUTPUTS, Chunk, evaluate_chunk
+from .evaluate import OUTPUTS, Chunk, evaluate_chunk, evaluate_chunk_pickled
 
 ENGINES = ("serial", "local", "scheduler")
 TASKS_PER_WORKER = 4
@@ -164,9 +165,9 @@ def _engine(workers, scheduler):
         slots = sum(client.nthreads().values())
 
         def run(setup, chunks, vmax):
-            futures = {client.submit(evaluate_chunk, setup, c, vmax, pure=False): c for c in chunks}
+            futures = {client.submit(evaluate_chunk_pickled, setup, c, vmax, pure=False): c for c in chunks}
             for future in distributed.as_completed(futures):
-                yield futures[future], future.result()
+                yield futures[future], pickle.loads(future.result())
         yield run, slots
     finally:
         client.close()
