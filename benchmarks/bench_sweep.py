@@ -39,7 +39,7 @@ import numpy as np
 
 from bikemass.sweep import read_spec, run_sweep
 from bikemass.sweep.evaluate import Chunk, _model, evaluate, evaluate_chunk
-from bikemass.sweep.run import chunk_size
+from bikemass.sweep.run import QUIET_CLUSTER, chunk_size, local_cluster
 
 ROOT = Path(__file__).resolve().parents[1]
 GRID = ROOT / "examples" / "sweeps" / "benchmark_c_lam.yaml"
@@ -55,8 +55,6 @@ vary:
   sections.seat_stay.wall: [0.025, 0.035, 0.045, 0.055]
   sections.chain_stay.wall: [0.03, 0.05]
 """
-CLUSTER = dict(threads_per_worker=1, processes=True, host="127.0.0.1", dashboard_address="127.0.0.1:0",
-               silence_logs=40)
 
 
 def bp_eig_seconds():
@@ -86,24 +84,42 @@ def per_configuration(spec, repeat=3):
 
 
 class Timed:
-    """Wall time of a run and of its engine part (first to last progress call)."""
+    """Runs of one engine: wall time of each whole run and of its engine part (first to last
+    progress call), and every table it wrote."""
 
-    def __init__(self, spec, folder):
-        self.spec, self.folder, self.count = spec, Path(folder), 0
+    def __init__(self, spec, folder, **engine):
+        self.spec, self.folder, self.engine_options, self.count = spec, Path(folder), engine, 0
         self.whole, self.engine, self.tables = [], [], set()
 
-    def run(self, **engine):
+    def run(self):
         marks = []
         out = self.folder / f"run{self.count}"
         self.count += 1
         t = time.perf_counter()
-        run_sweep(self.spec, out, progress=lambda n: marks.append(time.perf_counter()), **engine)
+        run_sweep(self.spec, out, progress=lambda n: marks.append(time.perf_counter()), **self.engine_options)
         self.whole.append(time.perf_counter() - t)
         self.engine.append(marks[-1] - marks[0])
         self.tables.add((out / "results.csv").read_bytes())
 
-    def medians(self):
-        return statistics.median(self.whole), statistics.median(self.engine)
+
+class Pooled(Timed):
+    """The sweep's chunks on a plain process pool (no Dask, no files, no table): what this
+    machine gives 1 or 2 processes at that moment, the ceiling for any engine."""
+
+    def __init__(self, spec, pool, workers):
+        super().__init__(spec, ".")
+        self.pool = pool
+        configs = spec.configurations()
+        size = chunk_size(len(configs), workers)
+        self.setup = (spec.bike, spec.rider, spec.stiffness, spec.combine, spec.source)
+        self.chunks = [Chunk(a, configs[a:a + size]) for a in range(0, len(configs), size)]
+
+    def run(self):
+        n, vmax = len(self.chunks), self.spec.max_speed
+        t = time.perf_counter()
+        list(self.pool.map(evaluate_chunk, [self.setup] * n, self.chunks, [vmax] * n))
+        self.whole.append(time.perf_counter() - t)
+        self.engine.append(self.whole[-1])
 
 
 def _load():
@@ -116,122 +132,95 @@ def _free_port():
         return s.getsockname()[1]
 
 
-def start_dask(n, procs):
+def start_dask(n, stack, quiet_settings=True):
     """A ``dask scheduler`` and ``n`` ``dask worker --nthreads 1`` processes on loopback (this
-    source tree on their path; appended to ``procs``); returns the scheduler's address."""
+    source tree on their path; stopped when ``stack`` closes); returns the scheduler's address."""
     from distributed import Client
     address = f"tcp://127.0.0.1:{_free_port()}"
     env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(ROOT / "src"), os.environ.get("PYTHONPATH", "")])}
+    if quiet_settings:
+        env.update(dask_environment(QUIET_CLUSTER))
     quiet = dict(env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     dask = [sys.executable, "-m", "dask"]
-    procs.append(subprocess.Popen(dask + ["scheduler", "--host", "127.0.0.1", "--port", address.rsplit(":", 1)[1],
-                                          "--no-dashboard"], **quiet))
-    for _ in range(n):
-        procs.append(subprocess.Popen(dask + ["worker", address, "--nthreads", "1", "--no-dashboard"], **quiet))
+    procs = [subprocess.Popen(dask + ["scheduler", "--host", "127.0.0.1", "--port", address.rsplit(":", 1)[1],
+                                      "--no-dashboard"], **quiet)]
+    procs += [subprocess.Popen(dask + ["worker", address, "--nthreads", "1", "--no-dashboard"], **quiet)
+              for _ in range(n)]
+    stack.callback(_stop, procs)
     with Client(address, timeout="60s") as client:
         client.wait_for_workers(n, timeout=120)
     return address
 
 
-def _pool_run(pool, setup, chunks, vmax):
-    """The sweep's chunks on a plain process pool (no Dask, no files): the ceiling for 2 workers."""
-    t = time.perf_counter()
-    list(pool.map(evaluate_chunk, [setup] * len(chunks), chunks, [vmax] * len(chunks)))
-    return time.perf_counter() - t
+def dask_environment(settings):
+    """Dask settings as the environment variables ``dask scheduler`` and ``dask worker`` read."""
+    return {"DASK_" + key.upper().replace(".", "__").replace("-", "_"): str(value) for key, value in settings.items()}
 
 
-def _engine(name, spec, folder, procs):
-    """``(start-up seconds, run())`` of one engine; its cluster (if any) is closed by ``procs``."""
-    from distributed import LocalCluster
-    n = 2 if name.endswith("2") else 1
-    t = time.perf_counter()
-    if name.startswith("local"):
-        cluster = LocalCluster(n_workers=n, **CLUSTER)
-        procs.append(cluster)
-        return time.perf_counter() - t, lambda timed: timed.run(scheduler=cluster.scheduler_address)
-    if name.startswith("dask"):
-        address = start_dask(n, procs)
-        return time.perf_counter() - t, lambda timed: timed.run(scheduler=address)
-    if name.startswith("pool"):
+def _stop(procs):
+    for p in reversed(procs):
+        p.terminate()
+    for p in procs:
+        p.wait(timeout=30)
+
+
+KINDS = ("process pool (no Dask)", "LocalCluster", "dask scheduler")
+
+
+def _engines(kind, spec, folder, stack):
+    """The 1- and the 2-worker engine of ``kind``, both started (closed with ``stack``)."""
+    if kind.startswith("process pool"):
         from concurrent.futures import ProcessPoolExecutor
         from multiprocessing import get_context
-        pool = ProcessPoolExecutor(n, mp_context=get_context("spawn"))
-        procs.append(pool)
-        setup = (spec.bike, spec.rider, spec.stiffness, spec.combine, spec.source)
-        configs = spec.configurations()
-        size = chunk_size(len(configs), n)
-        chunks = [Chunk(a, configs[a:a + size]) for a in range(0, len(configs), size)]
-
-        def run(timed):
-            seconds = _pool_run(pool, setup, chunks, spec.max_speed)
-            timed.whole.append(seconds), timed.engine.append(seconds)
-        return 0.0, run
-    return 0.0, lambda timed: timed.run()
+        pools = [stack.enter_context(ProcessPoolExecutor(n, mp_context=get_context("spawn"))) for n in (1, 2)]
+        return [Pooled(spec, pool, n) for pool, n in zip(pools, (1, 2))]
+    if kind == "LocalCluster":
+        addresses = [stack.enter_context(local_cluster(n)).scheduler_address for n in (1, 2)]
+    else:
+        addresses = [start_dask(n, stack) for n in (1, 2)]
+    return [Timed(spec, Path(folder) / f"{n}", scheduler=a) for n, a in zip((1, 2), addresses)]
 
 
-def _close(procs):
-    for p in reversed(procs):
-        if hasattr(p, "terminate"):
-            p.terminate()
-        elif hasattr(p, "shutdown"):
-            p.shutdown()
-        else:
-            p.close()
-    for p in procs:
-        if hasattr(p, "wait"):
-            p.wait(timeout=30)
-    procs.clear()
-
-
-ENGINES = {"this process": "serial", "process pool (no Dask), 1": "pool1", "process pool (no Dask), 2": "pool2",
-           "LocalCluster, 1 worker": "local1", "LocalCluster, 2 workers": "local2",
-           "dask scheduler, 1 worker": "dask1", "dask scheduler, 2 workers": "dask2"}
-
-
-def engines(spec, folder, rounds, repeats):
-    """Each engine in turn, alone on the machine (an idle Dask cluster costs CPU too): start it
-    (timed), one warm-up run (imports, model in every worker; timed), ``repeats`` timed runs,
-    close it; all that ``rounds`` times, so load changes hit every engine alike."""
-    timed = {label: Timed(spec, Path(folder) / name) for label, name in ENGINES.items()}
-    starts = {label: [] for label in ENGINES}
-    procs = []
-    try:
-        for _ in range(rounds):
-            for label, name in ENGINES.items():
-                start, run = _engine(name, spec, folder, procs)
-                t = time.perf_counter()
-                run(timed[label])
-                starts[label].append((start, time.perf_counter() - t))
-                timed[label].whole.pop(), timed[label].engine.pop()
-                for _ in range(repeats):
-                    run(timed[label])
-                _close(procs)
-    finally:
-        _close(procs)
-    return timed, starts
-
-
-def scaling(spec, rounds, repeats, label):
+def scaling(spec, rounds, label):
+    """For each kind of engine: its 1- and 2-worker versions started side by side (timed),
+    one first run each (imports, model in every worker; timed), then ``rounds`` rounds of
+    four runs in the order 1, 2, 2, 1; the ratio of each round is (1 + 1) / (2 + 2).  The
+    machine's speed drifts from second to second (the same work in one process takes
+    0.25 s or 0.5 s), so only runs this close together can be compared."""
+    from contextlib import ExitStack
     print(f"{label}, {len(spec.configurations()):,} configurations; {_load()}")
-    with tempfile.TemporaryDirectory() as tmp:
-        timed, starts = engines(spec, tmp, rounds, repeats)
-    print(f"  medians of {rounds} x {repeats} runs: whole run (spec to results.csv); engine part; "
-          "[start-up; first run: imports, model]")
-    for name, t in timed.items():
-        start, first = (statistics.median(x) for x in zip(*starts[name]))
-        print("    {:28s} {:.3f} s; {:.3f} s   [{:.2f} s; {:.2f} s]".format(name, *t.medians(), start, first))
-    for kind in ("process pool (no Dask)", "LocalCluster", "dask scheduler"):
-        (w1, e1), (w2, e2) = timed[f"{kind}, 1" + " worker" * (kind != "process pool (no Dask)")].medians(), \
-            timed[f"{kind}, 2" + " workers" * (kind != "process pool (no Dask)")].medians()
-        print(f"  {kind}: 2 workers vs 1: {w1 / w2:.2f}x whole run, {e1 / e2:.2f}x engine part")
-    tables = set().union(*(t.tables for t in timed.values()))
+    print(f"  {rounds} rounds of runs 1, 2, 2, 1 workers; medians: whole run (spec to results.csv); "
+          "engine part; [start-up of both; first runs]")
+    tables = set()
+    for kind in KINDS:
+        with tempfile.TemporaryDirectory() as folder, ExitStack() as stack:
+            t = time.perf_counter()
+            one, two = _engines(kind, spec, folder, stack)
+            start = time.perf_counter() - t
+            t = time.perf_counter()
+            one.run(), two.run()
+            first = time.perf_counter() - t
+            for timed in (one, two):
+                timed.whole.clear(), timed.engine.clear()
+            for _ in range(rounds):
+                one.run(), two.run(), two.run(), one.run()
+            for n, timed in ((1, one), (2, two)):
+                print("    {:34s} {:.3f} s; {:.3f} s".format(f"{kind}, {n}", statistics.median(timed.whole),
+                                                          statistics.median(timed.engine))
+                      + (f"   [{start:.2f} s; {first:.2f} s]" if n == 1 else ""))
+            tables |= one.tables | two.tables
+        for part in ("whole", "engine"):
+            a, b = getattr(one, part), getattr(two, part)
+            ratios = [(a[2 * i] + a[2 * i + 1]) / (b[2 * i] + b[2 * i + 1]) for i in range(rounds)]
+            print(f"  {kind}, 2 workers vs 1, {part + (' run' if part == 'whole' else ' part')}: "
+                  f"median {statistics.median(ratios):.2f}x, rounds from {min(ratios):.2f}x to {max(ratios):.2f}x, "
+                  f"{sum(r >= 1.5 for r in ratios)} of {rounds} at 1.5x or more")
     print(f"  tables identical: {len(tables) == 1} ({len(tables)} distinct); {_load()}")
 
 
 def main():
     logging.getLogger("distributed").setLevel(logging.WARNING)      # no INFO lines as clusters close
-    rounds = int(sys.argv[sys.argv.index("--rounds") + 1]) if "--rounds" in sys.argv else 3
-    repeats = int(sys.argv[sys.argv.index("--repeats") + 1]) if "--repeats" in sys.argv else 3
+    rounds = int(sys.argv[sys.argv.index("--rounds") + 1]) if "--rounds" in sys.argv else 10
     grid = read_spec(str(GRID))
     print(f"{_load()}, {os.cpu_count()} cores")
     eig = bp_eig_seconds()
@@ -245,9 +234,9 @@ def main():
             geo = per_configuration(walls, repeat=1)
             print(f"geometry level (Jamis stay walls, steel S, Relaxed): {geo * 1e3:.1f} ms per configuration, "
                   f"{1 / geo:.1f} per second per core, {geo / eig:.1f} x one Bicycle.eig")
-        scaling(grid, rounds, repeats, "scaling")
+        scaling(grid, rounds, "scaling")
         if "--large" in sys.argv:
-            scaling(read_spec(_write(tmp, "large.yaml", LARGE)), rounds, 1, "scaling, larger grid")
+            scaling(read_spec(_write(tmp, "large.yaml", LARGE)), max(1, rounds // 5), "scaling, larger grid")
 
 
 def _write(folder, name, text):

@@ -106,6 +106,39 @@ def test_resume_with_another_chunk_size_and_engine(tmp_path):
     assert "000000005-000000010.json" in names and len(names) > 3
 
 
+def test_a_client_is_used_and_left_open(tmp_path):
+    """``scheduler=`` a distributed.Client (a notebook's cluster): the sweep runs on it, leaves it
+    open for the next sweep, and writes the table this process writes."""
+    from distributed import Client, LocalCluster
+
+    from bikemass.sweep import read_spec, run_sweep
+    spec = read_spec(_spec(tmp_path, GRID))
+    serial = run_sweep(spec, tmp_path / "serial")
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=False, protocol="tcp", host="127.0.0.1",
+                      dashboard_address="127.0.0.1:0", silence_logs=40) as cluster, Client(cluster) as client:
+        for name in ("a", "b"):
+            assert run_sweep(spec, tmp_path / name, scheduler=client) == serial
+            assert client.status == "running"
+        assert client.submit(sum, [1, 2]).result() == 3
+    assert (tmp_path / "b" / "results.csv").read_bytes() == (tmp_path / "serial" / "results.csv").read_bytes()
+
+
+def test_local_cluster_runs_quiet_and_leaves_the_callers_settings():
+    """``--workers N``'s cluster: its worker processes run with QUIET_CLUSTER's settings (profiler
+    off, chores less often); the caller's Dask settings are what they were."""
+    import importlib
+
+    import dask
+    from distributed import Client
+    run = importlib.import_module("bikemass.sweep.run")
+    before = {key: dask.config.get(key) for key in run.QUIET_CLUSTER}
+    assert before["distributed.worker.profile.enabled"] is True      # Dask's default: the test can fail
+    with run.local_cluster(1) as cluster, Client(cluster) as client:
+        seen = client.run(lambda: {key: dask.config.get(key) for key in run.QUIET_CLUSTER})
+    assert list(seen.values()) == [run.QUIET_CLUSTER]
+    assert {key: dask.config.get(key) for key in run.QUIET_CLUSTER} == before
+
+
 def test_chunk_sizes():
     """Default: about 4 tasks per worker thread, 20 chunks in this process, at most 2000
     configurations a chunk; the spec's chunk wins; missing ranges are cut at that size."""

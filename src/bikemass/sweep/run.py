@@ -115,7 +115,8 @@ def run_sweep(spec, out, workers=None, scheduler=None, progress=None):
     file) into folder ``out``; returns the result rows (dicts, one per configuration).
 
     ``workers``: a local Dask cluster of that many single-threaded worker processes;
-    ``scheduler``: the address of a running Dask scheduler; neither: this process.
+    ``scheduler``: the address of a running Dask scheduler, or a ``distributed.Client``
+    (used as it is and left open: a notebook's cluster serves many sweeps); neither: this process.
     ``progress(n)`` is called with the number of configurations already finished, then with
     the number finished by each chunk.
     """
@@ -143,6 +144,20 @@ def run_sweep(spec, out, workers=None, scheduler=None, progress=None):
     return rows
 
 
+QUIET_CLUSTER = {
+    "distributed.worker.profile.enabled": False,
+    "distributed.admin.tick.interval": "1s",
+    "distributed.admin.system-monitor.interval": "2s",
+    "distributed.worker.memory.monitor-interval": "1s",
+}
+"""Dask settings of the local cluster ``--workers N`` starts: the workers' statistical
+profiler off and the event-loop health check, system monitor and memory monitor run less
+often.  With Dask's defaults an idle 2-worker LocalCluster keeps about a quarter of a core
+busy, which a CPU-bound sweep on a small machine pays for; with these, about 3 %.
+docs/analysis.md#bikemass-sweep ("Engines") shows the same settings as environment variables for
+``dask scheduler`` and ``dask worker``."""
+
+
 @contextmanager
 def _engine(workers, scheduler):
     """``(run, slots)``: ``run(setup, chunks, max_speed)`` yields ``(chunk, rows)`` as chunks finish;
@@ -151,28 +166,49 @@ def _engine(workers, scheduler):
         yield (lambda setup, chunks, vmax: ((c, evaluate_chunk(setup, c, vmax)) for c in chunks)), None
         return
     distributed = require("distributed")
-    cluster = None
+    with _client(distributed, workers, scheduler) as client:
+        def run(setup, chunks, vmax):
+            futures = client.map(evaluate_chunk_pickled, [setup] * len(chunks), chunks, [vmax] * len(chunks),
+                                 pure=False)
+            owner = {future.key: chunk for future, chunk in zip(futures, chunks)}
+            finished = 0
+            try:
+                for future in distributed.as_completed(futures):
+                    yield owner[future.key], pickle.loads(future.result())
+                    finished += 1
+            finally:
+                if finished < len(futures):     # interrupted: leave no work behind on a shared cluster
+                    client.cancel(futures)
+        yield run, sum(client.nthreads().values())
+
+
+@contextmanager
+def _client(distributed, workers, scheduler):
+    """A Dask client: ``scheduler`` itself if it is one (left open), a new one connected to the
+    address ``scheduler``, or one of a new local cluster of ``workers`` processes."""
+    if isinstance(scheduler, distributed.Client):
+        yield scheduler
+        return
     if scheduler is not None:
         try:
             client = distributed.Client(scheduler, timeout="10s")
         except (OSError, TimeoutError) as exc:
             raise InputError("--scheduler", scheduler, f"a running Dask scheduler ({exc})") from None
-    else:
-        cluster = distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                                           host="127.0.0.1", dashboard_address="127.0.0.1:0", silence_logs=40)
-        client = distributed.Client(cluster)
-    try:
-        slots = sum(client.nthreads().values())
+        with client:
+            yield client
+        return
+    with local_cluster(workers) as cluster, distributed.Client(cluster) as client:
+        yield client
 
-        def run(setup, chunks, vmax):
-            futures = {client.submit(evaluate_chunk_pickled, setup, c, vmax, pure=False): c for c in chunks}
-            for future in distributed.as_completed(futures):
-                yield futures[future], pickle.loads(future.result())
-        yield run, slots
-    finally:
-        client.close()
-        if cluster is not None:
-            cluster.close()
+
+def local_cluster(workers):
+    """The Dask cluster of ``--workers N``: ``workers`` single-threaded worker processes on
+    loopback, with :data:`QUIET_CLUSTER`'s settings."""
+    import dask
+    distributed = require("distributed")
+    with dask.config.set(QUIET_CLUSTER):
+        return distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                                        host="127.0.0.1", dashboard_address="127.0.0.1:0", silence_logs=40)
 
 
 def _cell(value):
