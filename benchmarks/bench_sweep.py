@@ -38,7 +38,7 @@ from pathlib import Path
 import numpy as np
 
 from bikemass.sweep import read_spec, run_sweep
-from bikemass.sweep.evaluate import Chunk, _model, evaluate, evaluate_chunk
+from bikemass.sweep.evaluate import Chunk, _model, evaluate, finish_chunk
 from bikemass.sweep.run import QUIET_CLUSTER, chunk_size, local_cluster
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -103,7 +103,7 @@ class Timed:
 
 
 class Pooled(Timed):
-    """The sweep's chunks on a plain process pool (no Dask, no files, no table): what this
+    """The sweep's chunk tasks on a plain process pool (no Dask, no files, no table): what this
     machine gives 1 or 2 processes at that moment, the ceiling for any engine."""
 
     def __init__(self, spec, pool, workers):
@@ -117,7 +117,7 @@ class Pooled(Timed):
     def run(self):
         n, vmax = len(self.chunks), self.spec.max_speed
         t = time.perf_counter()
-        list(self.pool.map(evaluate_chunk, [self.setup] * n, self.chunks, [vmax] * n))
+        list(self.pool.map(finish_chunk, [self.setup] * n, self.chunks, [vmax] * n, [self.spec.keys] * n))
         self.whole.append(time.perf_counter() - t)
         self.engine.append(self.whole[-1])
 

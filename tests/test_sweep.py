@@ -77,11 +77,13 @@ def test_resume_recomputes_only_missing_chunks(tmp_path):
     first = run_sweep(spec, out)
     assert sorted(p.name for p in (out / "chunks").iterdir()) == [
         "000000000-000000005.json", "000000005-000000010.json", "000000010-000000012.json"]
+    table = (out / "results.csv").read_bytes()
     (out / "chunks" / "000000005-000000010.json").unlink()
     (out / "results.csv").unlink()
     done = []
     second = run_sweep(spec, out, progress=done.append)
     assert done == [7, 5] and second == first        # 7 configurations kept, one chunk of 5 recomputed
+    assert (out / "results.csv").read_bytes() == table
     other = _spec(tmp_path, GRID.replace("num: 4", "num: 5"), "other.yaml")
     assert main(["sweep", other, "--out", str(out), "--quiet"]) == 2
 

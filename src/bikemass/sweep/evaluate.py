@@ -6,6 +6,7 @@ BLAS runs on one thread (the worker, not the library, is the unit of parallelism
 :func:`bikemass.threads.one_blas_thread`.
 """
 
+import json
 import pickle
 
 import numpy as np
@@ -68,10 +69,20 @@ def evaluate_chunk(setup, chunk, max_speed):
         return [evaluate(model, c, max_speed) for c in chunk.configurations]
 
 
-def evaluate_chunk_pickled(setup, chunk, max_speed):
-    """:func:`evaluate_chunk`'s rows as one pickle (bytes): what a Dask task returns.  Dask sends
-    a returned list of dicts row by row (a pickle and a frame each, about 45 us per row on
-    the worker's event-loop thread, which takes the GIL from the next chunk's computation:
-    one worker ran about 1.5x slower than a plain process); bytes go as one frame.
-    Dask pickles every task result anyway, so this trusts the workers no more than before."""
-    return pickle.dumps(evaluate_chunk(setup, chunk, max_speed), protocol=pickle.HIGHEST_PROTOCOL)
+def finish_chunk(setup, chunk, max_speed, keys):
+    """Everything a finished :class:`Chunk` leaves, made where it was computed: its result rows,
+    the text of its chunk file (JSON) and its lines of ``results.csv``
+    (:func:`bikemass.sweep.table.csv_lines`; ``keys`` = the varied keys).  Formatting on the
+    workers keeps the one process that gathers the chunks from formatting every row itself."""
+    from .table import csv_lines
+    rows = evaluate_chunk(setup, chunk, max_speed)
+    return rows, json.dumps(rows), csv_lines(keys, chunk.configurations, rows)
+
+
+def finish_chunk_pickled(setup, chunk, max_speed, keys):
+    """:func:`finish_chunk` as one pickle (bytes): what a Dask task returns.  Dask sends a
+    returned list of dicts row by row (a pickle and a frame each, about 45 us per row on the
+    worker's event-loop thread, which takes the GIL from the next chunk's computation: one
+    worker ran about 1.5x slower than a plain process); bytes go as one frame.  Dask pickles
+    every task result anyway, so this trusts the workers no more than before."""
+    return pickle.dumps(finish_chunk(setup, chunk, max_speed, keys), protocol=pickle.HIGHEST_PROTOCOL)

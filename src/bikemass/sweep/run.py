@@ -23,9 +23,9 @@ from pathlib import Path
 
 from ..errors import InputError
 from ..output import write_atomic
-from .evaluate import OUTPUTS, Chunk, evaluate_chunk, evaluate_chunk_pickled
+from .evaluate import Chunk, finish_chunk, finish_chunk_pickled
+from .table import csv_lines, write_results
 
-ENGINES = ("serial", "local", "scheduler")
 TASKS_PER_WORKER = 4
 SERIAL_CHUNKS = 20
 MAX_CHUNK = 2000
@@ -131,16 +131,20 @@ def run_sweep(spec, out, workers=None, scheduler=None, progress=None):
     if progress:
         progress(sum(done))
     setup = (spec.bike, spec.rider, spec.stiffness, spec.combine, spec.source)
+    lines = [None] * len(configurations)
     with _engine(workers, scheduler) as (run, slots):
         size = chunk_size(len(configurations), slots, spec.chunk)
         chunks = [Chunk(a, configurations[a:b]) for a, b in _missing_chunks(done, len(configurations), size)]
-        for chunk, rows in run(setup, chunks, spec.max_speed):
-            write_atomic(out / "chunks" / f"{chunk.start:09d}-{chunk.stop:09d}.json", json.dumps(rows))
+        for chunk, (rows, text, chunk_lines) in run(setup, chunks, spec.max_speed, spec.keys):
+            write_atomic(out / "chunks" / f"{chunk.start:09d}-{chunk.stop:09d}.json", text)
             results[chunk.start:chunk.stop] = rows
+            lines[chunk.start:chunk.stop] = chunk_lines
             if progress:
                 progress(len(rows))
+    for i in (i for i, kept in enumerate(done) if kept):           # rows from an earlier run's chunk files
+        lines[i] = csv_lines(spec.keys, configurations[i:i + 1], results[i:i + 1])[0]
     rows = [{**config, **result} for config, result in zip(configurations, results)]
-    write_results(rows, spec.keys, out)
+    write_results(rows, spec.keys, out, lines)
     return rows
 
 
@@ -160,16 +164,16 @@ docs/analysis.md#bikemass-sweep ("Engines") shows the same settings as environme
 
 @contextmanager
 def _engine(workers, scheduler):
-    """``(run, slots)``: ``run(setup, chunks, max_speed)`` yields ``(chunk, rows)`` as chunks finish;
-    ``slots`` = worker threads (``None`` in this process)."""
+    """``(run, slots)``: ``run(setup, chunks, max_speed, keys)`` yields ``(chunk, finish_chunk(...))``
+    as chunks finish; ``slots`` = worker threads (``None`` in this process)."""
     if workers is None and scheduler is None:
-        yield (lambda setup, chunks, vmax: ((c, evaluate_chunk(setup, c, vmax)) for c in chunks)), None
+        yield (lambda setup, chunks, vmax, keys: ((c, finish_chunk(setup, c, vmax, keys)) for c in chunks)), None
         return
     distributed = require("distributed")
     with _client(distributed, workers, scheduler) as client:
-        def run(setup, chunks, vmax):
-            futures = client.map(evaluate_chunk_pickled, [setup] * len(chunks), chunks, [vmax] * len(chunks),
-                                 pure=False)
+        def run(setup, chunks, vmax, keys):
+            n = len(chunks)
+            futures = client.map(finish_chunk_pickled, [setup] * n, chunks, [vmax] * n, [keys] * n, pure=False)
             owner = {future.key: chunk for future, chunk in zip(futures, chunks)}
             finished = 0
             try:
@@ -209,29 +213,3 @@ def local_cluster(workers):
     with dask.config.set(QUIET_CLUSTER):
         return distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
                                         host="127.0.0.1", dashboard_address="127.0.0.1:0", silence_logs=40)
-
-
-def _cell(value):
-    if value is None:
-        return ""
-    if isinstance(value, float):
-        return repr(value)
-    text = str(value)
-    return '"' + text.replace('"', '""') + '"' if any(c in text for c in ',"\n') else text
-
-
-def write_results(rows, keys, out):
-    """``results.csv`` (full precision, empty = none) and, with pyarrow, ``results.parquet``."""
-    columns = list(keys) + list(OUTPUTS)
-    lines = [",".join(columns)] + [",".join(_cell(r.get(c)) for c in columns) for r in rows]
-    write_atomic(Path(out) / "results.csv", "\n".join(lines) + "\n")
-    try:
-        import pyarrow as pa
-        import pyarrow.parquet as pq
-    except ImportError:
-        return
-    from io import BytesIO
-    table = pa.table({c: [r.get(c) for r in rows] for c in columns})
-    buf = BytesIO()
-    pq.write_table(table, buf)
-    write_atomic(Path(out) / "results.parquet", buf.getvalue())

@@ -1,0 +1,46 @@
+"""A sweep's results table: one CSV line per configuration, ``results.csv`` and ``results.parquet``.
+
+Columns: the varied keys (as named in the spec), then :data:`~bikemass.sweep.evaluate.OUTPUTS`.
+Numbers are written in full (``repr``: they read back to the same float), a missing value
+as an empty cell.  Lines are formatted where their chunk was computed (a Dask worker
+formats its own), so writing the table only joins them.
+"""
+
+from pathlib import Path
+
+from ..output import write_atomic
+from .evaluate import OUTPUTS
+
+
+def _cell(value):
+    if value is None:
+        return ""
+    if type(value) is float:
+        return repr(value)
+    text = str(value)
+    return '"' + text.replace('"', '""') + '"' if any(c in text for c in ',"\n') else text
+
+
+def csv_lines(keys, configurations, results):
+    """CSV lines (no newline) of ``configurations`` (``{key: value}``) and their result rows."""
+    return [",".join([*(_cell(c.get(k)) for k in keys), *(_cell(r.get(o)) for o in OUTPUTS)])
+            for c, r in zip(configurations, results)]
+
+
+def write_results(rows, keys, out, lines=None):
+    """``out/results.csv`` (from ``lines``, one per row, when given) and, with pyarrow,
+    ``out/results.parquet``; ``rows`` are dicts of the varied keys and the outputs."""
+    columns = list(keys) + list(OUTPUTS)
+    if lines is None:
+        lines = csv_lines(keys, rows, rows)
+    write_atomic(Path(out) / "results.csv", "\n".join([",".join(columns), *lines]) + "\n")
+    try:
+        import pyarrow as pa
+        import pyarrow.parquet as pq
+    except ImportError:
+        return
+    from io import BytesIO
+    table = pa.table({c: [r.get(c) for r in rows] for c in columns})
+    buf = BytesIO()
+    pq.write_table(table, buf)
+    write_atomic(Path(out) / "results.parquet", buf.getvalue())
