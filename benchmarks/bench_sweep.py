@@ -39,7 +39,7 @@ import numpy as np
 
 from bikemass.sweep import read_spec, run_sweep
 from bikemass.sweep.evaluate import Chunk, _model, evaluate, finish_chunk
-from bikemass.sweep.run import QUIET_CLUSTER, chunk_size, local_cluster
+from bikemass.sweep.run import QUIET_CLUSTER, chunk_size, local_cluster, parameters_only
 
 ROOT = Path(__file__).resolve().parents[1]
 GRID = ROOT / "examples" / "sweeps" / "benchmark_c_lam.yaml"
@@ -110,7 +110,7 @@ class Pooled(Timed):
         super().__init__(spec, ".")
         self.pool = pool
         configs = spec.configurations()
-        size = chunk_size(len(configs), workers)
+        size = chunk_size(len(configs), workers, cheap=parameters_only(spec))
         self.setup = (spec.bike, spec.rider, spec.stiffness, spec.combine, spec.source)
         self.chunks = [Chunk(a, configs[a:a + size]) for a in range(0, len(configs), size)]
 

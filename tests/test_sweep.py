@@ -3,6 +3,7 @@ resuming, samples, Sobol indices, geometry-level inputs, bad specs."""
 
 import csv
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -90,7 +91,7 @@ def test_resume_recomputes_only_missing_chunks(tmp_path):
 
 def test_resume_with_another_chunk_size_and_engine(tmp_path):
     """The chunk size is not part of the sweep: chunks of 5 from this process, two of them lost,
-    are completed by a default-chunked run on a 2-worker Dask cluster, and the table is unchanged."""
+    are completed by a run with chunks of 2 on a 2-worker Dask cluster, and the table is unchanged."""
     from distributed import LocalCluster
 
     from bikemass.sweep import read_spec, run_sweep
@@ -101,7 +102,7 @@ def test_resume_with_another_chunk_size_and_engine(tmp_path):
     done = []
     with LocalCluster(n_workers=2, threads_per_worker=1, processes=False, protocol="tcp", host="127.0.0.1",
                       dashboard_address="127.0.0.1:0", silence_logs=40) as cluster:
-        second = run_sweep(read_spec(_spec(tmp_path, GRID.replace("chunk: 5\n", ""), "auto.yaml")), out,
+        second = run_sweep(read_spec(_spec(tmp_path, GRID.replace("chunk: 5", "chunk: 2"), "two.yaml")), out,
                            scheduler=cluster.scheduler_address, progress=done.append)
     assert second == first and done[0] == 5 and sum(done) == 12
     names = sorted(p.name for p in (out / "chunks").iterdir())
@@ -142,11 +143,20 @@ def test_local_cluster_runs_quiet_and_leaves_the_callers_settings():
 
 
 def test_chunk_sizes():
-    """Default: about 4 tasks per worker thread, 20 chunks in this process, at most 2000
-    configurations a chunk; the spec's chunk wins; missing ranges are cut at that size."""
-    from bikemass.sweep.run import _missing_chunks, chunk_size
-    assert chunk_size(2050, 2) == 257 and chunk_size(2050, 1) == 513 and chunk_size(2050) == 103
-    assert chunk_size(10 ** 6, 2) == 2000 and chunk_size(3, 8) == 1 and chunk_size(2050, 2, fixed=50) == 50
+    """Default: 20 chunks in this process; on Dask equal chunks, one per worker thread for
+    parameter-only sweeps and 4 otherwise, never more than 2000 configurations; the spec's
+    chunk wins; missing ranges are cut at that size."""
+    from bikemass.sweep.run import _missing_chunks, chunk_size, parameters_only
+    from bikemass.sweep.spec import read_spec
+    assert chunk_size(2050) == 103 and chunk_size(2050, 2, fixed=50) == 50
+    assert chunk_size(2050, 2) == 257 and chunk_size(2050, 1) == 513 and chunk_size(3, 8) == 1
+    assert chunk_size(2050, 2, cheap=True) == 1025 and chunk_size(2050, 1, cheap=True) == 1025
+    assert chunk_size(4100, 2, cheap=True) == 1025 and chunk_size(10 ** 6, 2, cheap=True) == 2000
+    assert chunk_size(10 ** 6, 2) == 2000 and chunk_size(10 ** 6 + 1, 2) == 1993
+    examples = Path(__file__).resolve().parents[1] / "examples" / "sweeps"
+    assert parameters_only(read_spec(str(examples / "benchmark_c_lam.yaml")))
+    assert not parameters_only(read_spec(str(examples / "jamis_torso_lean.yaml")))
+    assert not parameters_only(read_spec(str(examples / "jamis_walls.yaml")))
     done = [False] * 3 + [True] * 2 + [False] * 6
     assert _missing_chunks(done, 11, 4) == [(0, 3), (5, 9), (9, 11)]
     assert _missing_chunks([True] * 4, 4, 2) == []

@@ -7,12 +7,15 @@ spec's fingerprint and a resumed run must match it.  When every configuration ha
 ``DIR/results.csv`` (and ``results.parquet`` when pyarrow is installed) holds one row per
 configuration in the spec's order, the same whichever engine computed it.
 
-Chunk size: the spec's ``chunk`` if it gives one; otherwise about
-:data:`TASKS_PER_WORKER` tasks per Dask worker thread (enough to balance the load, few
-enough that the per-task cost of the scheduler, the transfer and the chunk file stays
-small beside the work), or :data:`SERIAL_CHUNKS` chunks in this process (the progress bar's
-steps); at most :data:`MAX_CHUNK` configurations either way, so a long sweep loses little
-when interrupted.
+Chunk size: the spec's ``chunk`` if it gives one.  Otherwise, on Dask, equal chunks, as
+many per worker thread as the configurations' cost calls for: a task costs the cluster a
+few milliseconds of bookkeeping (about 5 ms of CPU on a small 2-core machine), so
+configurations that only change benchmark parameters (well under a millisecond each) go
+out as one chunk per worker thread, and costlier ones (a changed bicycle, rider or
+stiffness: tens to hundreds of milliseconds each) as :data:`TASKS_PER_WORKER` per worker
+thread, which evens out the load.  In this process, :data:`SERIAL_CHUNKS` chunks (the
+progress bar's steps).  Never more than :data:`MAX_CHUNK` configurations a chunk, so a long
+sweep loses little when interrupted.
 """
 
 import json
@@ -50,14 +53,25 @@ def check_keys(spec):
             get_path(model, key)
 
 
-def chunk_size(count, slots=None, fixed=None):
-    """Configurations per chunk for ``count`` of them: ``fixed`` if given, else about
-    :data:`TASKS_PER_WORKER` chunks per worker thread (``slots``; ``None`` = this process:
-    :data:`SERIAL_CHUNKS` chunks), at most :data:`MAX_CHUNK`."""
+def chunk_size(count, slots=None, fixed=None, cheap=False):
+    """Configurations per chunk for ``count`` of them: ``fixed`` if given; in this process
+    (``slots`` None) :data:`SERIAL_CHUNKS` chunks; on ``slots`` worker threads, equal chunks, a
+    multiple of ``slots`` of them: one per thread for ``cheap`` configurations, else
+    :data:`TASKS_PER_WORKER`, more when needed to stay within :data:`MAX_CHUNK`."""
     if fixed:
         return fixed
-    parts = SERIAL_CHUNKS if slots is None else TASKS_PER_WORKER * max(slots, 1)
-    return max(1, min(MAX_CHUNK, -(-count // parts)))
+    if slots is None:
+        return max(1, min(MAX_CHUNK, -(-count // SERIAL_CHUNKS)))
+    slots = max(slots, 1)
+    rounds = max(1 if cheap else TASKS_PER_WORKER, -(-count // (slots * MAX_CHUNK)))
+    return max(1, -(-count // (slots * rounds)))
+
+
+def parameters_only(spec):
+    """True if every varied key is one of the 26 benchmark parameters: each configuration is
+    then a set of parameters to critical speeds, well under a millisecond."""
+    from ..parameters import NAMES
+    return all(key in NAMES for key in spec.keys)
 
 
 def _missing_chunks(done, count, size):
@@ -133,7 +147,7 @@ def run_sweep(spec, out, workers=None, scheduler=None, progress=None):
     setup = (spec.bike, spec.rider, spec.stiffness, spec.combine, spec.source)
     lines = [None] * len(configurations)
     with _engine(workers, scheduler) as (run, slots):
-        size = chunk_size(len(configurations), slots, spec.chunk)
+        size = chunk_size(len(configurations), slots, spec.chunk, cheap=parameters_only(spec))
         chunks = [Chunk(a, configurations[a:b]) for a, b in _missing_chunks(done, len(configurations), size)]
         for chunk, (rows, text, chunk_lines) in run(setup, chunks, spec.max_speed, spec.keys):
             write_atomic(out / "chunks" / f"{chunk.start:09d}-{chunk.stop:09d}.json", text)
