@@ -1,6 +1,6 @@
 """Sweep throughput: configurations per second per core, and the scaling from 1 to 2 Dask workers.
 
-Run by hand:  python benchmarks/bench_sweep.py [--grid-only] [--rounds R] [--repeats N] [--large]
+Run by hand:  python benchmarks/bench_sweep.py [--grid-only] [--rounds R] [--large]
 Each cost is set beside BicycleParameters' ``Bicycle.eig`` over the thesis's 601 speeds
 (0..30 m/s) in this process, the cost of one configuration for a user of that package.
 Numbers vary with machine load (the load average is printed); the ratios are what to compare.
@@ -9,18 +9,21 @@ Numbers vary with machine load (the load average is printed); the ratios are wha
   benchmark (``examples/sweeps/benchmark_c_lam.yaml``), evaluated one by one in this process;
 * geometry level: Jamis seat- and chain-stay walls, steel frame (beam S), Relaxed rider:
   each configuration rebuilds the bicycle's mass properties and beam stiffness;
-* scaling, the same 2,050-configuration sweep (``run_sweep``, spec to ``results.csv``) in
-  this process, on local Dask clusters (``--workers N``'s engine) of 1 and of 2
-  single-threaded worker processes, and on a ``dask scheduler`` with 1 and with 2
-  ``dask worker --nthreads 1`` processes started here on loopback (``--scheduler``); beside
-  them the same chunks on a plain process pool of 1 and 2 (no Dask, no files): what this
-  machine gives two processes at that moment, the ceiling for any engine. Each engine
-  runs alone (an idle cluster costs CPU too): started (timed), one first run (imports
-  bikemass and builds the model in every worker; timed), ``--repeats`` timed runs, closed;
-  all of it ``--rounds`` times so load changes hit every engine alike. Medians of the
-  whole run and of its engine part (connecting, sending the chunks, computing,
-  gathering, writing the chunk files: from the first progress call to the last); every
-  table is checked to be identical, byte for byte.
+* scaling, the same 2,050-configuration sweep (``run_sweep``, spec to ``results.csv``) on
+  three kinds of engine, each with 1 and with 2 single-threaded workers: a plain process
+  pool running the same chunk tasks (no Dask, no files: what the machine gives two
+  processes, the ceiling for any engine), the local Dask cluster of ``--workers N``
+  (``bikemass.sweep.run.local_cluster``), and a ``dask scheduler`` with ``dask worker
+  --nthreads 1`` processes started here on loopback (``--scheduler``; started with the
+  settings docs/analysis.md recommends, ``QUIET_CLUSTER`` as environment variables). The
+  1- and the 2-worker engine of a kind are started side by side (timed), run once each
+  (imports, the model in every worker; timed), then ``--rounds`` rounds of four runs in
+  the order 1, 2, 2, 1 workers, so that both see the same machine: the speed of this
+  machine drifts from one second to the next (the same work in one process took 0.25 s
+  or 0.5 s), and only runs this close together can be compared. Printed: medians of the
+  whole run and of its engine part (connecting, sending the chunks, computing, gathering,
+  writing the chunk files: from the first progress call to the last), and the ratio of
+  each round, (1 + 1) / (2 + 2); every table is checked to be identical, byte for byte.
 * ``--large``: the same scaling on a 20,100-configuration grid (c 201 x lam 100).
 """
 
