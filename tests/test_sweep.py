@@ -118,7 +118,8 @@ def test_a_client_is_used_and_left_open(tmp_path):
     spec = read_spec(_spec(tmp_path, GRID))
     serial = run_sweep(spec, tmp_path / "serial")
     with LocalCluster(n_workers=2, threads_per_worker=1, processes=False, protocol="tcp", host="127.0.0.1",
-                      dashboard_address="127.0.0.1:0", silence_logs=40) as cluster, Client(cluster) as client:
+                      dashboard_address="127.0.0.1:0", silence_logs=40) as cluster, \
+            Client(cluster, set_as_default=False) as client:            # not the default client either
         for name in ("a", "b"):
             assert run_sweep(spec, tmp_path / name, scheduler=client) == serial
             assert client.status == "running"
@@ -140,6 +141,18 @@ def test_local_cluster_runs_quiet_and_leaves_the_callers_settings():
         seen = client.run(lambda: {key: dask.config.get(key) for key in run.QUIET_CLUSTER})
     assert list(seen.values()) == [run.QUIET_CLUSTER]
     assert {key: dask.config.get(key) for key in run.QUIET_CLUSTER} == before
+
+
+def test_a_sweep_does_not_make_its_client_the_default(tmp_path):
+    """While a --workers sweep runs, dask collections elsewhere in the caller's program still use
+    their own scheduler: the sweep's client is not made the default (Dask's Client would)."""
+    import dask
+
+    from bikemass.sweep import read_spec, run_sweep
+    seen = []
+    run_sweep(read_spec(_spec(tmp_path, GRID)), tmp_path / "o", workers=1,
+              progress=lambda n: seen.append(dask.config.get("scheduler", None)))
+    assert len(seen) > 1 and set(seen) == {None}
 
 
 def test_chunk_sizes():

@@ -191,7 +191,7 @@ def _engine(workers, scheduler):
             owner = {future.key: chunk for future, chunk in zip(futures, chunks)}
             finished = 0
             try:
-                for future in distributed.as_completed(futures):
+                for future in distributed.as_completed(futures, loop=client.loop):
                     yield owner[future.key], pickle.loads(future.result())
                     finished += 1
             finally:
@@ -209,13 +209,13 @@ def _client(distributed, workers, scheduler):
         return
     if scheduler is not None:
         try:
-            client = distributed.Client(scheduler, timeout="10s")
+            client = distributed.Client(scheduler, timeout="10s", set_as_default=False)
         except (OSError, TimeoutError) as exc:
             raise InputError("--scheduler", scheduler, f"a running Dask scheduler ({exc})") from None
         with client:
             yield client
         return
-    with local_cluster(workers) as cluster, distributed.Client(cluster) as client:
+    with local_cluster(workers) as cluster, distributed.Client(cluster, set_as_default=False) as client:
         yield client
 
 
