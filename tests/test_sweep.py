@@ -155,6 +155,40 @@ def test_a_sweep_does_not_make_its_client_the_default(tmp_path):
     assert len(seen) > 1 and set(seen) == {None}
 
 
+def test_an_asynchronous_client_is_refused_in_one_line(tmp_path):
+    import asyncio
+
+    from distributed import Client, LocalCluster
+
+    from bikemass.errors import InputError
+    from bikemass.sweep import read_spec, run_sweep
+    spec = read_spec(_spec(tmp_path, GRID))
+
+    async def attempt():
+        async with LocalCluster(n_workers=1, processes=False, asynchronous=True, dashboard_address=None) as cluster, \
+                Client(cluster, asynchronous=True) as client:
+            with pytest.raises(InputError, match="a synchronous distributed.Client"):
+                run_sweep(spec, tmp_path / "o", scheduler=client)
+    asyncio.run(attempt())
+
+
+def test_table_cells_read_back_and_mixed_stiffness_values(tmp_path):
+    """A cell with a comma, quote, newline or carriage return reads back as one cell; a stiffness
+    key listing a name and a number gives a text column in Parquet (not a crash)."""
+    import io
+
+    import pyarrow.parquet as pq
+
+    from bikemass.sweep import read_spec, run_sweep
+    from bikemass.sweep.table import csv_lines
+    odd = ['a,b', 'say "x"', "two\nlines", "cr\rhere", "née"]
+    lines = csv_lines(["k"], [{"k": v} for v in odd], [{}] * len(odd))
+    assert [row[0] for row in csv.reader(io.StringIO("\n".join(lines) + "\n"))] == odd
+    rows = run_sweep(read_spec(_spec(tmp_path, "bike: benchmark\nvary:\n  stiffness: [infinite, 2.5]\n")), tmp_path / "o")
+    assert [r["stiffness"] for r in rows] == ["infinite", 2.5]
+    assert pq.read_table(tmp_path / "o" / "results.parquet").column("stiffness").to_pylist() == ["infinite", "2.5"]
+
+
 def test_chunk_sizes():
     """Default: 20 chunks in this process; on Dask equal chunks, one per worker thread for
     parameter-only sweeps and 4 otherwise, never more than 2000 configurations; the spec's
@@ -162,6 +196,7 @@ def test_chunk_sizes():
     from bikemass.sweep.run import _missing_chunks, chunk_size, parameters_only
     from bikemass.sweep.spec import read_spec
     assert chunk_size(2050) == 103 and chunk_size(2050, 2, fixed=50) == 50
+    assert chunk_size(2000, 0, cheap=True) == 100                    # a cluster with no worker yet
     assert chunk_size(2050, 2) == 257 and chunk_size(2050, 1) == 513 and chunk_size(3, 8) == 1
     assert chunk_size(2050, 2, cheap=True) == 1025 and chunk_size(2050, 1, cheap=True) == 1025
     assert chunk_size(4100, 2, cheap=True) == 1025 and chunk_size(10 ** 6, 2, cheap=True) == 2000

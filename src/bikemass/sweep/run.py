@@ -54,15 +54,15 @@ def check_keys(spec):
 
 
 def chunk_size(count, slots=None, fixed=None, cheap=False):
-    """Configurations per chunk for ``count`` of them: ``fixed`` if given; in this process
-    (``slots`` None) :data:`SERIAL_CHUNKS` chunks; on ``slots`` worker threads, equal chunks, a
-    multiple of ``slots`` of them: one per thread for ``cheap`` configurations, else
-    :data:`TASKS_PER_WORKER`, more when needed to stay within :data:`MAX_CHUNK`."""
+    """Configurations per chunk for ``count`` of them: ``fixed`` if given; in this process, or
+    on a cluster with no worker yet (``slots`` None or 0), :data:`SERIAL_CHUNKS` chunks; on
+    ``slots`` worker threads, chunks of (nearly) equal size in rounds of at most one per
+    thread: one round for ``cheap`` configurations, else :data:`TASKS_PER_WORKER`, more when
+    needed to stay within :data:`MAX_CHUNK`."""
     if fixed:
         return fixed
-    if slots is None:
+    if not slots:
         return max(1, min(MAX_CHUNK, -(-count // SERIAL_CHUNKS)))
-    slots = max(slots, 1)
     rounds = max(1 if cheap else TASKS_PER_WORKER, -(-count // (slots * MAX_CHUNK)))
     return max(1, -(-count // (slots * rounds)))
 
@@ -147,7 +147,7 @@ def run_sweep(spec, out, workers=None, scheduler=None, progress=None):
     setup = (spec.bike, spec.rider, spec.stiffness, spec.combine, spec.source)
     lines = [None] * len(configurations)
     with _engine(workers, scheduler) as (run, slots):
-        size = chunk_size(len(configurations), slots, spec.chunk, cheap=parameters_only(spec))
+        size = chunk_size(done.count(False), slots, spec.chunk, cheap=parameters_only(spec))
         chunks = [Chunk(a, configurations[a:b]) for a, b in _missing_chunks(done, len(configurations), size)]
         for chunk, (rows, text, chunk_lines) in run(setup, chunks, spec.max_speed, spec.keys):
             write_atomic(out / "chunks" / f"{chunk.start:09d}-{chunk.stop:09d}.json", text)
@@ -205,6 +205,9 @@ def _client(distributed, workers, scheduler):
     """A Dask client: ``scheduler`` itself if it is one (left open), a new one connected to the
     address ``scheduler``, or one of a new local cluster of ``workers`` processes."""
     if isinstance(scheduler, distributed.Client):
+        if scheduler.asynchronous:
+            raise InputError("scheduler", "an asynchronous Client", "a synchronous distributed.Client "
+                             "(run_sweep blocks until the sweep is done)")
         yield scheduler
         return
     if scheduler is not None:

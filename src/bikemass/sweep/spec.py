@@ -11,7 +11,7 @@ vary:                      # key -> list of values, or {from, to, num}
   lam: [0.2, 0.3, 0.4]
 sample: grid               # grid (default), or {method: lhs | sobol, n: 64, seed: 0}
 global_sensitivity: false  # true: Saltelli sample (SALib) of n base points and Sobol indices
-chunk: 500                 # optional: configurations per task (default: about 4 tasks per worker)
+chunk: 500                 # optional: configurations per task (default: docs/analysis.md, Engines)
 ```
 
 Keys are those of :mod:`bikemass.analysis.inputs` (the 26 parameters, ``stiffness``,

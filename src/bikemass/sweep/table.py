@@ -3,7 +3,8 @@
 Columns: the varied keys (as named in the spec), then :data:`~bikemass.sweep.evaluate.OUTPUTS`.
 Numbers are written in full (``repr``: they read back to the same float), a missing value
 as an empty cell.  Lines are formatted where their chunk was computed (a Dask worker
-formats its own), so writing the table only joins them.
+formats its own); only rows kept from an earlier run's chunk files are formatted by the
+process that writes the table.
 """
 
 from pathlib import Path
@@ -18,13 +19,20 @@ def _cell(value):
     if type(value) is float:
         return repr(value)
     text = str(value)
-    return '"' + text.replace('"', '""') + '"' if any(c in text for c in ',"\n') else text
+    return '"' + text.replace('"', '""') + '"' if any(c in text for c in ',"\n\r') else text
 
 
 def csv_lines(keys, configurations, results):
     """CSV lines (no newline) of ``configurations`` (``{key: value}``) and their result rows."""
     return [",".join([*(_cell(c.get(k)) for k in keys), *(_cell(r.get(o)) for o in OUTPUTS)])
             for c, r in zip(configurations, results)]
+
+
+def _column(values):
+    """A Parquet column's values: as they are, or all as text when they mix text with numbers
+    (a stiffness key can list both names and files)."""
+    kinds = {type(v) is str for v in values if v is not None}
+    return [None if v is None else str(v) for v in values] if len(kinds) > 1 else values
 
 
 def write_results(rows, keys, out, lines=None):
@@ -40,7 +48,7 @@ def write_results(rows, keys, out, lines=None):
     except ImportError:
         return
     from io import BytesIO
-    table = pa.table({c: [r.get(c) for r in rows] for c in columns})
+    table = pa.table({c: _column([r.get(c) for r in rows]) for c in columns})
     buf = BytesIO()
     pq.write_table(table, buf)
     write_atomic(Path(out) / "results.parquet", buf.getvalue())
