@@ -86,8 +86,8 @@ def expand_chart(node):
     bars, grips, bar_tubes = _cockpit(chart, points, cockpit)
     kp.update(bars)
     sections.update({k: v.value for k, v in cockpit["sections"].items()})
-    saddle_point, post_top = _saddle(chart, points, _merged(defaults["saddle"], node.get("saddle", {}),
-                                                             SADDLE_KEYS))
+    saddle = _merged(defaults["saddle"], node.get("saddle", {}), SADDLE_KEYS)
+    saddle_point, post_top = _saddle(chart, points, saddle)
     kp["seatpost_top"] = _xyz(post_top)
     wheels = _wheel_parts(node, defaults, chart)
     half_rear = wheels["rear_spacing"] / 2
@@ -148,7 +148,7 @@ def expand_chart(node):
         "components": _components(node, defaults, anchors),
         "wheels": node["wheels"].value if node.has("wheels") else _wheels(wheels, chart),
         "contacts": node["contacts"].value if node.has("contacts") else {
-            "saddle": _xyz(saddle_point),
+            "saddle": _saddle_contact(node, saddle, saddle_point),
             "bottom_bracket": "bottom_bracket",
             "crank_length": node.get("crank_length", defaults["crank_length"].value).value,
             "grips": grips},
@@ -218,7 +218,11 @@ def _cockpit(chart, points, c):
         grips = {"tops": _xyz(end, half - _length(c["grip_inset"]))}
         tubes = [("handlebar_left", "bar_clamp", "bar_left", "handlebar"),
                  ("handlebar_right", "bar_clamp", "bar_right", "handlebar")]
-    tubes.insert(0, ("stem", "stem_top", "bar_clamp", "stem"))
+    stem_length = _length(c["stem_length"])
+    if stem_length < 0:
+        c.fail(f"a stem length of 0 or more, got {stem_length * 1000:g} mm", "stem_length")
+    if stem_length > 0:            # 0: bars clamped on the steerer (folding bicycles' stem posts)
+        tubes.insert(0, ("stem", "stem_top", "bar_clamp", "stem"))
     for name, offset in c.get("grips", {}).items():
         forward_up = offset.vector("length", 2)
         grips[name] = _xyz(clamp + forward_up, half)
@@ -241,6 +245,15 @@ def _saddle(chart, points, s):
                "height")
     bb = points["bottom_bracket"]
     return bb + height * along - [_length(s["setback"]), 0.0], bb + post * along
+
+
+def _saddle_contact(node, saddle, saddle_point):
+    """The rider's sit point: the saddle where the file sets its height (``height`` or
+    ``height_per_stack``), else fitted to each rider's inseam along the seat tube (LeMond)."""
+    own = node.get("saddle", {})
+    if own.has("height") or own.has("height_per_stack"):
+        return _xyz(saddle_point)
+    return {"fit": "lemond", "towards": "seat_top", "setback": _length(saddle["setback"])}
 
 
 def _wheel_parts(node, defaults, chart):

@@ -15,7 +15,8 @@ Only x and z matter to the planar rider chain (docs/poses.md); y is kept for dra
 Where the bicycle does not fix the saddle, ``saddle: {fit: lemond, seat_tube_angle: 73 deg}``
 (or ``towards: KEYPOINT`` for the seat tube's direction from the bottom bracket) puts the
 sit point on the seat-tube line through the bottom bracket at LeMond's saddle height,
-0.883 x the rider's inseam from the crank axis (:data:`SADDLE_RULES`).
+0.883 x the rider's inseam from the crank axis (:data:`SADDLE_RULES`); an optional
+``setback`` moves it that far (m, horizontal) behind the seat-tube line.
 """
 
 from dataclasses import dataclass
@@ -43,15 +44,15 @@ class Contacts:
     source: str
     key: str = "contacts"
     saddle_fit: tuple = None
-    """``(rule, unit direction from the crank axis up the seat tube)`` when ``saddle`` is fitted
-    to the rider (then ``saddle`` is None), else None."""
+    """``(rule, unit direction from the crank axis up the seat tube, setback (m))`` when
+    ``saddle`` is fitted to the rider (then ``saddle`` is None), else None."""
 
     def sit_point(self, inseam):
         """The saddle point (m) for a rider of ``inseam`` (m): fixed, or fitted by the rule."""
         if self.saddle_fit is None:
             return self.saddle
-        rule, direction = self.saddle_fit
-        return self.bottom_bracket + SADDLE_RULES[rule] * inseam * direction
+        rule, direction, setback = self.saddle_fit
+        return self.bottom_bracket + SADDLE_RULES[rule] * inseam * direction - [setback, 0.0, 0.0]
 
     def __post_init__(self):
         frozen_fields(self, "saddle", "bottom_bracket", "grips")
@@ -92,9 +93,11 @@ def read_contacts(node, keypoints):
 
 
 def _saddle_fit(node, keypoints, bottom_bracket):
-    """(rule, direction) of a fitted saddle: ``{fit, seat_tube_angle}`` or ``{fit, towards}``."""
-    node.check_keys(required=("fit",), optional=("seat_tube_angle", "towards", "note"))
+    """(rule, direction, setback) of a fitted saddle: ``{fit, seat_tube_angle}`` or ``{fit, towards}``,
+    optionally with ``setback``."""
+    node.check_keys(required=("fit",), optional=("seat_tube_angle", "towards", "setback", "note"))
     rule = node["fit"].string(tuple(SADDLE_RULES))
+    setback = node["setback"].number("length") if node.has("setback") else 0.0
     if node.has("seat_tube_angle") == node.has("towards"):
         node.fail("exactly one of seat_tube_angle (from horizontal) or towards (a keypoint on the seat tube)")
     if node.has("seat_tube_angle"):
@@ -102,9 +105,9 @@ def _saddle_fit(node, keypoints, bottom_bracket):
         a = np.radians(angle_deg(node["seat_tube_angle"]))
         if not 0 < a < np.pi:
             node.fail("a seat tube angle between 0 and 180 deg from horizontal", "seat_tube_angle")
-        return rule, np.array([-np.cos(a), 0.0, -np.sin(a)])
+        return rule, np.array([-np.cos(a), 0.0, -np.sin(a)]), setback
     d = _point(node["towards"], keypoints) - bottom_bracket
     d[1] = 0.0
     if not d[2] < 0:
         node.fail("a keypoint above the bottom bracket (up the seat tube)", "towards")
-    return rule, d / np.linalg.norm(d)
+    return rule, d / np.linalg.norm(d), setback
