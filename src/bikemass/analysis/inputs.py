@@ -247,5 +247,6 @@ class Model:
         bike, rider, params, stiffness = split_changes(changes or {})
         p = self.parameters(bike, rider)
         if params:
-            p = p.replace(**dict(params))
+            from ..plausibility import check_parameters
+            p = check_parameters(p.replace(**dict(params)), self.origin)
         return p, self.frame_stiffness(self.stiffness if stiffness is None else stiffness, bike)

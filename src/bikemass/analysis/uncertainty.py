@@ -23,6 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import InputError
 from ..parameters import NAMES
 from .crossings import critical_speeds
 from .model import MATRICES, STEP, system, values_of
@@ -144,6 +145,7 @@ def propagate(model, spreads, method="linear", samples=1000, seed=0, speeds=None
     """:class:`Propagation` of ``spreads`` (``{key: Spread}``) through ``model``
     (:class:`~bikemass.analysis.inputs.Model`); ``speeds`` (m/s) for the eigenvalue bands."""
     from ..stability import speed_grid
+    _check_options(spreads, method, samples, seed)
     speeds = speed_grid(0, 10, 0.1) if speeds is None else np.asarray(speeds, dtype=float)
     params, S = model.build()
     sigma = {k: s.std for k, s in spreads.items()}
@@ -169,12 +171,38 @@ def propagate(model, spreads, method="linear", samples=1000, seed=0, speeds=None
     return _montecarlo(model, spreads, samples, seed, speeds, matrices, speed_out, eig_modes, inputs)
 
 
+MAX_SAMPLES = 10 ** 6
+"""Most Monte Carlo draws of one propagation."""
+
+
+def _check_options(spreads, method, samples, seed):
+    """InputError for options :func:`propagate` cannot use: a spread that is not a
+    :class:`Spread` of a known kind with a finite std >= 0, an unknown method, a number of
+    Monte Carlo samples outside 2 .. :data:`MAX_SAMPLES`, a seed that is not a whole number >= 0."""
+    for key, spread in spreads.items():
+        if not isinstance(spread, Spread) or spread.kind not in DISTRIBUTIONS:
+            raise InputError("spreads", key, f"a Spread of kind {' or '.join(DISTRIBUTIONS)}, got {spread!r}")
+        if isinstance(spread.std, bool) or not (isinstance(spread.std, (int, float, np.floating, np.integer))
+                                                and np.isfinite(spread.std)
+                and spread.std >= 0):
+            raise InputError("spreads", key, f"a finite standard deviation >= 0, got {spread.std!r}")
+    if method not in ("linear", "montecarlo"):
+        raise InputError("method", method, "linear or montecarlo")
+    if method == "montecarlo":
+        if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or not 2 <= samples <= MAX_SAMPLES:
+            raise InputError("samples", samples, f"a number of samples from 2 to {MAX_SAMPLES}")
+        if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
+            raise InputError("seed", seed, "a random seed: a whole number >= 0")
+
+
 def uncertainty(bike, spreads, rider=None, stiffness="infinite", combine="exact", method="linear",
                 samples=1000, seed=0, speeds=None):
     """:class:`Propagation` for a bicycle (name or file), rider and stiffness choice; ``spreads``
     maps input keys to a standard deviation (normal) or a :class:`Spread`."""
     from .inputs import Model
-    spreads = {k: v if isinstance(v, Spread) else Spread("normal", float(v)) for k, v in spreads.items()}
+    if not isinstance(spreads, dict):
+        raise InputError("spreads", "(argument)", f"a mapping of input key -> std or Spread, got {type(spreads).__name__}")
+    spreads = {k: v if isinstance(v, Spread) else Spread("normal", v) for k, v in spreads.items()}
     return propagate(Model(bike, rider, stiffness, combine), spreads, method, samples, seed, speeds)
 
 
@@ -189,7 +217,11 @@ def _montecarlo(model, spreads, n, seed, speeds, matrices, speed_out, eig_modes,
     crit = {name: [] for name in SPEEDS}
     reals = []
     for j in range(n):
-        p, S = model.build({k: float(draws[k][j]) for k in keys})
+        try:
+            p, S = model.build({k: float(draws[k][j]) for k in keys})
+        except InputError as exc:            # a draw the model is not defined for: the spread is too wide
+            raise InputError(exc.source, exc.key, f"spreads whose Monte Carlo draws stay valid (draw {j + 1} of "
+                             f"{n}: {exc.expected})") from None
         s = system(values_of(p), S)
         for m in MATRICES:
             mats[m].append(np.real(getattr(s, m)))

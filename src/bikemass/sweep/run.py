@@ -138,15 +138,17 @@ def run_sweep(spec, out, workers=None, scheduler=None, progress=None):
         from .spec import read_spec
         spec = read_spec(spec)
     check_keys(spec)
-    out = _prepare(spec, out)
-    configurations = spec.configurations()
-    results = _finished(out, len(configurations))
-    done = [r is not None for r in results]
-    if progress:
-        progress(sum(done))
-    setup = (spec.bike, spec.rider, spec.stiffness, spec.combine, spec.source)
-    lines = [None] * len(configurations)
-    with _engine(workers, scheduler) as (run, slots):
+    if Path(out).exists() and not Path(out).is_dir():
+        raise InputError(out, "--out", "a directory (this is a file)")
+    with _engine(workers, scheduler) as (run, slots):       # a cluster that cannot be reached leaves no folder
+        out = _prepare(spec, out)
+        configurations = spec.configurations()
+        results = _finished(out, len(configurations))
+        done = [r is not None for r in results]
+        if progress:
+            progress(sum(done))
+        setup = (spec.bike, spec.rider, spec.stiffness, spec.combine, spec.source)
+        lines = [None] * len(configurations)
         size = chunk_size(done.count(False), slots, spec.chunk, cheap=parameters_only(spec))
         chunks = [Chunk(a, configurations[a:b]) for a, b in _missing_chunks(done, len(configurations), size)]
         for chunk, (rows, text, chunk_lines) in run(setup, chunks, spec.max_speed, spec.keys):
@@ -212,8 +214,11 @@ def _client(distributed, workers, scheduler):
         return
     if scheduler is not None:
         try:
+            if not isinstance(scheduler, str):
+                raise ValueError(f"an address string or a distributed.Client, got {type(scheduler).__name__}")
+            distributed.comm.resolve_address(scheduler)      # a malformed address: one line, no Client made
             client = distributed.Client(scheduler, timeout="10s", set_as_default=False)
-        except (OSError, TimeoutError) as exc:
+        except (OSError, TimeoutError, ValueError) as exc:
             raise InputError("--scheduler", scheduler, f"a running Dask scheduler ({exc})") from None
         with client:
             yield client

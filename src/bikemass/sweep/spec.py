@@ -21,6 +21,7 @@ dotted paths into the bicycle or pose YAML).
 import hashlib
 import itertools
 import json
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -42,6 +43,10 @@ class Variable:
     low: float = None
     high: float = None
     num: int = None
+
+    def size(self):
+        """Number of grid values (without making them)."""
+        return len(self.values) if self.values is not None else self.num
 
     def grid(self):
         return self.values if self.values is not None else tuple(np.linspace(self.low, self.high, self.num).tolist())
@@ -100,6 +105,17 @@ class SweepSpec:
         return hashlib.sha256(json.dumps(doc, sort_keys=True, default=str).encode()).hexdigest()[:16]
 
 
+def count_of(spec):
+    """Number of configurations ``spec`` describes, counted without making them (exact integers:
+    a grid of many keys can exceed any fixed-width integer): the grid's product of sizes, the
+    sample's ``n``, or a Saltelli sample's ``n (D + 2)``."""
+    if spec.global_sensitivity:
+        return spec.n * (len(spec.variables) + 2)
+    if spec.method == "grid":
+        return math.prod(v.size() for v in spec.variables)
+    return spec.n
+
+
 def _variable(key, node):
     if isinstance(node.value, list):
         if not node.value:
@@ -143,7 +159,10 @@ def read_spec(path):
         if n != int(n) or n > MAX_CONFIGURATIONS:
             s.fail(f"a whole number of samples up to {MAX_CONFIGURATIONS}", "n")
         n = int(n)
-        seed = int(s["seed"].number("dimensionless", nonnegative=True)) if s.has("seed") else 0
+        seed = s["seed"].number("dimensionless", nonnegative=True) if s.has("seed") else 0
+        if seed != int(seed):
+            s.fail("a whole number >= 0", "seed")
+        seed = int(seed)
     gsa = node["global_sensitivity"].boolean() if node.has("global_sensitivity") else False
     for v in variables:
         if v.values is None and v.num is None and method == "grid" and not gsa:
@@ -165,7 +184,7 @@ def read_spec(path):
         combine=node["combine"].string(("exact", "thesis")) if node.has("combine") else "exact",
         max_speed=float(max_speed), variables=variables, method=method, n=n, seed=seed,
         global_sensitivity=gsa, chunk=None if chunk is None else int(chunk))
-    count = int(np.prod([len(v.grid()) for v in variables])) if method == "grid" and not gsa else n
-    if count > MAX_CONFIGURATIONS:
-        vary.fail(f"at most {MAX_CONFIGURATIONS} configurations (this grid has {count})")
+    if count_of(spec) > MAX_CONFIGURATIONS:
+        design = "grid" if method == "grid" and not gsa else "sample"
+        vary.fail(f"at most {MAX_CONFIGURATIONS} configurations (this {design} has {count_of(spec)})")
     return spec
