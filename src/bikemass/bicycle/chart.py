@@ -135,7 +135,7 @@ def _wheel(node, units):
         if not 0.05 < radius < 1.0:
             node.fail(f"a wheel radius between 0.05 and 1 m, got {radius:g} m", "wheel_radius")
         return radius, None
-    bsd = bead_seat_diameter(node["wheel"])
+    bsd = bead_seat_diameter(node["wheel"], units.get("length"))
     tire = _value(node["tire_width"], "length", units)
     if not 0.005 < tire < 0.15:
         node.fail(f"a tire width between 5 and 150 mm, got {tire * 1000:g} mm", "tire_width")
