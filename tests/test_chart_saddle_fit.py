@@ -67,3 +67,17 @@ def test_small_and_tall_riders_get_a_weave_speed_on_the_61():
     p = bm.parameters("bmc-roadmachine@61", {"body": PEOPLE["woman 1.60 m"], "chain": {"hands": "hoods"}})
     weave = bm.stability(p).weave_speeds
     assert len(weave) == 1 and 4.0 < weave[0] < 7.0
+
+
+def test_the_saddle_goes_no_lower_than_the_seat_tube():
+    """A 1.25 m child on the 61 (seat tube 573 mm + 40 mm of saddle): LeMond's 0.883 x
+    inseam would put the saddle inside the frame; it stops at 613 mm, out of the child's
+    reach, which is one error naming the shortfall."""
+    from bikemass.errors import InputError
+    bike = load_bicycle("bmc-roadmachine@61")
+    child = {"height": "1.25 m", "mass": "25 kg", "sex": "male"}
+    assert SADDLE_RULES["lemond"] * _inseam(child) < 0.613
+    d = bike.contacts.sit_point(_inseam(child)) - bike.contacts.bottom_bracket
+    assert np.linalg.norm(d) == pytest.approx(0.573 + 0.040, abs=1e-12)
+    with pytest.raises(InputError, match=r"feet out of reach by [0-9.]+ mm \(saddle too high"):
+        seat_rider({"body": child, "chain": {"hands": "hoods"}}, bike)

@@ -148,7 +148,7 @@ def expand_chart(node):
         "components": _components(node, defaults, anchors),
         "wheels": node["wheels"].value if node.has("wheels") else _wheels(wheels, chart),
         "contacts": node["contacts"].value if node.has("contacts") else {
-            "saddle": _saddle_contact(node, saddle, saddle_point),
+            "saddle": _saddle_contact(node, chart, saddle, saddle_point),
             "bottom_bracket": "bottom_bracket",
             "crank_length": node.get("crank_length", defaults["crank_length"].value).value,
             "grips": grips},
@@ -247,13 +247,15 @@ def _saddle(chart, points, s):
     return bb + height * along - [_length(s["setback"]), 0.0], bb + post * along
 
 
-def _saddle_contact(node, saddle, saddle_point):
+def _saddle_contact(node, chart, saddle, saddle_point):
     """The rider's sit point: the saddle where the file sets its height (``height`` or
-    ``height_per_stack``), else fitted to each rider's inseam along the seat tube (LeMond)."""
+    ``height_per_stack``), else fitted to each rider's inseam along the seat tube (LeMond),
+    no lower than the saddle on a seat post pushed fully into the seat tube."""
     own = node.get("saddle", {})
     if own.has("height") or own.has("height_per_stack"):
         return _xyz(saddle_point)
-    return {"fit": "lemond", "towards": "seat_top", "setback": _length(saddle["setback"])}
+    return {"fit": "lemond", "towards": "seat_top", "setback": _length(saddle["setback"]),
+            "lowest": chart.seat_tube_length + _length(saddle["stack"])}
 
 
 def _wheel_parts(node, defaults, chart):

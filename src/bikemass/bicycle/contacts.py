@@ -16,7 +16,9 @@ Where the bicycle does not fix the saddle, ``saddle: {fit: lemond, seat_tube_ang
 (or ``towards: KEYPOINT`` for the seat tube's direction from the bottom bracket) puts the
 sit point on the seat-tube line through the bottom bracket at LeMond's saddle height,
 0.883 x the rider's inseam from the crank axis (:data:`SADDLE_RULES`); an optional
-``setback`` moves it that far (m, horizontal) behind the seat-tube line.
+``setback`` moves it that far (m, horizontal) behind the seat-tube line, and an optional
+``lowest`` (m from the crank axis) is as low as the saddle goes (the seat tube's top plus
+the saddle): a rider too short for the frame then cannot reach the pedals (an error).
 """
 
 from dataclasses import dataclass
@@ -44,15 +46,16 @@ class Contacts:
     source: str
     key: str = "contacts"
     saddle_fit: tuple = None
-    """``(rule, unit direction from the crank axis up the seat tube, setback (m))`` when
-    ``saddle`` is fitted to the rider (then ``saddle`` is None), else None."""
+    """``(rule, unit direction from the crank axis up the seat tube, setback (m), lowest (m))``
+    when ``saddle`` is fitted to the rider (then ``saddle`` is None), else None."""
 
     def sit_point(self, inseam):
         """The saddle point (m) for a rider of ``inseam`` (m): fixed, or fitted by the rule."""
         if self.saddle_fit is None:
             return self.saddle
-        rule, direction, setback = self.saddle_fit
-        return self.bottom_bracket + SADDLE_RULES[rule] * inseam * direction - [setback, 0.0, 0.0]
+        rule, direction, setback, lowest = self.saddle_fit
+        height = max(SADDLE_RULES[rule] * inseam, lowest)
+        return self.bottom_bracket + height * direction - [setback, 0.0, 0.0]
 
     def __post_init__(self):
         frozen_fields(self, "saddle", "bottom_bracket", "grips")
@@ -93,11 +96,12 @@ def read_contacts(node, keypoints):
 
 
 def _saddle_fit(node, keypoints, bottom_bracket):
-    """(rule, direction, setback) of a fitted saddle: ``{fit, seat_tube_angle}`` or ``{fit, towards}``,
-    optionally with ``setback``."""
-    node.check_keys(required=("fit",), optional=("seat_tube_angle", "towards", "setback", "note"))
+    """(rule, direction, setback, lowest) of a fitted saddle: ``{fit, seat_tube_angle}`` or
+    ``{fit, towards}``, optionally with ``setback`` and ``lowest``."""
+    node.check_keys(required=("fit",), optional=("seat_tube_angle", "towards", "setback", "lowest", "note"))
     rule = node["fit"].string(tuple(SADDLE_RULES))
     setback = node["setback"].number("length") if node.has("setback") else 0.0
+    lowest = node["lowest"].number("length", nonnegative=True) if node.has("lowest") else 0.0
     if node.has("seat_tube_angle") == node.has("towards"):
         node.fail("exactly one of seat_tube_angle (from horizontal) or towards (a keypoint on the seat tube)")
     if node.has("seat_tube_angle"):
@@ -105,9 +109,9 @@ def _saddle_fit(node, keypoints, bottom_bracket):
         a = np.radians(angle_deg(node["seat_tube_angle"]))
         if not 0 < a < np.pi:
             node.fail("a seat tube angle between 0 and 180 deg from horizontal", "seat_tube_angle")
-        return rule, np.array([-np.cos(a), 0.0, -np.sin(a)]), setback
+        return rule, np.array([-np.cos(a), 0.0, -np.sin(a)]), setback, lowest
     d = _point(node["towards"], keypoints) - bottom_bracket
     d[1] = 0.0
     if not d[2] < 0:
         node.fail("a keypoint above the bottom bracket (up the seat tube)", "towards")
-    return rule, d / np.linalg.norm(d), setback
+    return rule, d / np.linalg.norm(d), setback, lowest
