@@ -170,3 +170,19 @@ def render(rows):
 def test_comparison_in_the_docs_is_the_real_output():
     table = render(comparison_rows())
     assert table in DOCS.read_text(), "\n" + table
+
+
+def test_yeadons_own_notes_are_one_line_each_naming_the_file(capsys, tmp_path):
+    """yeadon's sample ``female1`` (its misc/samplemeasurements) makes yeadon reshape eight
+    stadium solids; each note is one warning line naming the file (yeadon's text ends in a
+    newline, which used to be printed as a literal backslash-n)."""
+    from bikemass.rider.yeadon_body import _human_of
+    _human_of.cache_clear()
+    pose = _pose(tmp_path, DATA / "yeadon_sample_female1.txt")
+    assert main(["rider", str(pose), "--bike", "bmc-roadmachine@51", "--format", "json"]) == 0
+    lines = capsys.readouterr().err.strip().splitlines()
+    stadium = [line for line in lines if "Stadium" in line]
+    assert len(stadium) == 8
+    for line in stadium:
+        assert line.startswith("bikemass: warning: ") and "yeadon_sample_female1.txt: yeadon: Stadium" in line
+        assert not line.endswith("\\n")

@@ -24,6 +24,7 @@ the seat (sit point below the hip joints) is the thigh radius at the crotch (Lk1
 
 import contextlib
 import io
+import warnings
 from functools import lru_cache
 from pathlib import Path
 
@@ -107,12 +108,16 @@ def human(path):
 
 @lru_cache(maxsize=16)
 def _human_of(path, mtime_ns, size):
+    from ..errors import BikemassWarning, shown
     measurements, mass = read_measurements(path)
-    with contextlib.redirect_stdout(io.StringIO()):
+    with contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
         try:
             h = _human_class()(measurements, symmetric=True)
         except Exception as exc:            # yeadon raises plain exceptions for impossible shapes
             raise ValueError(f"{type(exc).__name__}: {exc}") from None
+    for w in caught:        # yeadon's own notes (a stadium it had to reshape): one line naming the file
+        warnings.warn(f"{shown(path)}: yeadon: {' '.join(str(w.message).split())}", BikemassWarning, stacklevel=2)
     return h, (mass / h.mass if mass is not None else 1.0)
 
 
