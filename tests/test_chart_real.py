@@ -77,3 +77,30 @@ def test_childrens_folding_and_old_road_wheels(tmp_path, wheel, bsd):
     path = tmp_path / "small.yaml"
     path.write_text(yaml.safe_dump(doc))
     assert load_bicycle(str(path)).geometry.rear_wheel_radius == pytest.approx(bsd / 2000 + 0.040, abs=1e-12)
+
+
+def test_bb_height_and_trail_stand_in_for_bb_drop_and_fork_offset(tmp_path):
+    """Charts that print BB height and trail (children's, city and mountain bicycles often do)
+    but not BB drop or fork offset.  The Allez Sprint 56 so written: its own published
+    wheelbase (984 mm) is still met, and the BB drop and offset come back within what the
+    printed trail's rounding allows."""
+    path = _allez(tmp_path, "heights", "mm", "700c", 28)
+    doc = yaml.safe_load(open(path))
+    del doc["chart"]["bb_drop"], doc["chart"]["fork_offset"]
+    open(path, "w").write(yaml.safe_dump(doc))
+    from bikemass.bicycle.derived_chart import derived_chart
+    d = derived_chart(load_bicycle(path))
+    assert d["bb_drop"] == pytest.approx(0.339 - 0.272, abs=1e-12)
+    assert d["trail"] == pytest.approx(0.055, abs=1e-12)
+    assert d["fork_offset"] == pytest.approx(0.044, abs=0.001)
+    assert d["wheelbase"] == pytest.approx(0.984, abs=0.005)
+
+
+def test_neither_bb_drop_nor_bb_height_names_both(tmp_path, capsys):
+    path = _allez(tmp_path, "none", "mm", "700c", 28)
+    doc = yaml.safe_load(open(path))
+    del doc["chart"]["bb_drop"], doc["chart"]["bb_height"]
+    open(path, "w").write(yaml.safe_dump(doc))
+    assert main(["geometry", path]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "chart.bb_drop: a required key that is missing (or bb_height instead)" in err

@@ -14,6 +14,9 @@ axle line is horizontal:
 * ``fork_offset``: front axle ahead of the steer axis, perpendicular to it;
 * ``wheel`` and ``tire_width`` (radius = BSD / 2 + tire width), or ``wheel_radius``.
 
+A chart that prints ``bb_height`` but no ``bb_drop``, or ``trail`` but no ``fork_offset``,
+gives the missing key through the wheel radius (:data:`STAND_INS`).
+
 Derived (and, when the chart gives them, checked): ``wheelbase`` (axle to axle),
 ``front_center`` (BB centre to front axle, straight line, like the chainstay), ``trail`` (steer axis' ground point
 ahead of the front contact), ``mechanical_trail`` (trail perpendicular to the steer
@@ -42,6 +45,9 @@ TOLERANCES = {"wheelbase": 0.005, "front_center": 0.005, "top_tube_length": 0.00
 values (a head angle printed to 0.25 deg moves the front axle by ~3 mm); 3 mm for trail and
 BB height (one rounding of the wheel radius); 25 mm for standover, whose point of measure
 (and where the top tube meets the seat and head tubes) charts do not fix."""
+STAND_INS = {"bb_drop": "bb_height", "fork_offset": "trail"}
+"""A frame key a chart may leave out when it prints this one instead: BB drop = wheel radius -
+BB height; fork offset = r cos(head angle) - trail sin(head angle) (both with the chart's wheel)."""
 WHEEL_KEYS = ("wheel", "tire_width", "wheel_radius")
 OTHER_KEYS = ("units", "tolerances", "note")
 ANGLE_RANGE_DEG = (45.0, 90.0)
@@ -92,11 +98,19 @@ def _value(node, dimension, units):
 
 def read_chart(node):
     """:class:`Chart` from a ``chart`` mapping (values with units, or bare in ``units:``)."""
-    node.check_keys(required=FRAME_KEYS, optional=WHEEL_KEYS + CHECKED_KEYS + OTHER_KEYS)
+    node.check_keys(required=tuple(k for k in FRAME_KEYS if k not in STAND_INS),
+                    optional=tuple(STAND_INS) + WHEEL_KEYS + CHECKED_KEYS + OTHER_KEYS)
     units = _units(node)
+
+    def given(key):
+        return node.has(key) and not node[key].missing
+    for key, stand_in in STAND_INS.items():
+        if not given(key) and not given(stand_in):
+            node.fail(f"a required key that is missing (or {stand_in} instead)", key)
     v = {}
     for key in FRAME_KEYS:
-        v[key] = _value(node[key], "angle" if key in ANGLE_KEYS else "length", units)
+        if given(key):
+            v[key] = _value(node[key], "angle" if key in ANGLE_KEYS else "length", units)
     for key in ANGLE_KEYS:
         lo, hi = ANGLE_RANGE_DEG
         if not np.radians(lo) < v[key] <= np.radians(hi):
@@ -105,15 +119,22 @@ def read_chart(node):
     for key in ("stack", "reach", "head_tube_length", "seat_tube_length", "chainstay_length"):
         if not 0 < v[key] < MAX_LENGTH:
             node.fail(f"a positive length below {MAX_LENGTH:g} m, got {v[key]:g} m", key)
+    radius, tire = _wheel(node, units)
+    stood_in = tuple(stand_in for key, stand_in in STAND_INS.items() if key not in v)
+    if "bb_drop" not in v:
+        v["bb_drop"] = radius - _value(node["bb_height"], "length", units)
+    if "fork_offset" not in v:
+        ha = v["head_tube_angle"]
+        v["fork_offset"] = radius * np.cos(ha) - _value(node["trail"], "length", units) * np.sin(ha)
     for key in ("bb_drop", "fork_offset"):
         if not abs(v[key]) < MAX_LENGTH / 4:
-            node.fail(f"a length below {MAX_LENGTH / 4:g} m, got {v[key]:g} m", key)
+            node.fail(f"a length below {MAX_LENGTH / 4:g} m, got {v[key]:g} m", key if key in node.mapping()
+                      else STAND_INS[key])
     if abs(v["bb_drop"]) >= v["chainstay_length"]:
         node.fail(f"a chainstay longer than the bb_drop {v['bb_drop'] * 1000:.1f} mm "
                   f"(got {v['chainstay_length'] * 1000:.1f} mm)", "chainstay_length")
-    radius, tire = _wheel(node, units)
     checks = tuple((k, _value(node[k], "length", units)) for k in CHECKED_KEYS
-                   if node.has(k) and not node[k].missing)     # null: not published (for this size)
+                   if given(k) and k not in stood_in)     # null: not published (for this size)
     tolerances = {}
     if node.has("tolerances"):
         t = node["tolerances"]
