@@ -65,8 +65,9 @@ def load_bicycle(bicycle, name=None, size=None):
         return bicycle_from_mapping(bicycle, name or MAPPING, size)
     if isinstance(bicycle, (str, os.PathLike)):
         return load_file(os.fspath(bicycle), size)
-    raise TypeError(f"a bicycle is a name, a file path, a mapping, a BenchmarkParameters or a Bicycle, "
-                    f"not {type(bicycle).__name__}")
+    from .errors import wrong_type
+    raise wrong_type("bicycle", bicycle, "a bicycle is a name, a file path, a mapping, a BenchmarkParameters "
+                     "or a Bicycle")
 
 
 def load_rider(rider, as_printed=False, name=None):
@@ -108,8 +109,8 @@ def load_rider(rider, as_printed=False, name=None):
         return rider_from_mapping(rider, name or MAPPING, as_printed)
     if isinstance(rider, (str, os.PathLike)):
         return load_file(os.fspath(rider), as_printed=as_printed)
-    raise TypeError(f"a rider is a pose name, a file path, a mapping, a Rider or None, "
-                    f"not {type(rider).__name__}")
+    from .errors import wrong_type
+    raise wrong_type("rider", rider, "a rider is a pose name, a file path, a mapping, a Rider or None")
 
 
 def parameters(bicycle, rider=None, combine=Combine.EXACT, method=Method.MESH, allow_off_contact=False):

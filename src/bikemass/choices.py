@@ -150,12 +150,13 @@ def check(kind, value, what=None):
 
     Raises
     ------
-    ValueError
-        If ``value`` is not one of ``kind.values()``; the message names them and the closest.
+    InputError
+        (a ValueError) If ``value`` is not one of ``kind.values()``; the message names them and the closest.
     """
+    from .errors import InputError, short
     try:
         return kind(value)
-    except ValueError:
+    except (ValueError, TypeError):
         name = what or kind.__name__.lower()
-        raise ValueError(f"{name} must be one of {', '.join(kind.values())}, got {value!r}"
+        raise InputError(name, short(value), f"{name} must be one of {', '.join(kind.values())}, got {value!r}"
                          f"{closest(value, kind.values())}") from None

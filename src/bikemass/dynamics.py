@@ -39,10 +39,11 @@ def matrices(params, stiffness=None):
     if isinstance(params, CanonicalMatrices):
         base = params
     elif isinstance(params, BenchmarkParameters):
-        base = canonical_matrices(params)
+        from .plausibility import check_parameters
+        base = canonical_matrices(check_parameters(params, "params"))
     else:
-        raise TypeError(f"params must be BenchmarkParameters (bm.parameters) or CanonicalMatrices, "
-                        f"not {type(params).__name__}")
+        from .errors import wrong_type
+        raise wrong_type("params", params, "params must be BenchmarkParameters (bm.parameters) or CanonicalMatrices")
     return with_frame_stiffness(base, _stiffness(stiffness))
 
 
@@ -52,8 +53,9 @@ def _stiffness(S):
     if S is None or (isinstance(S, str) and S in (RIGID, "rigid")):
         return None
     if isinstance(S, str):
-        raise TypeError(f"stiffness is a 2x2 array in N m/rad; for a material use "
-                        f"bm.stiffness(bicycle, {S!r})")
+        from .errors import InputTypeError
+        raise InputTypeError("stiffness", S, f"a 2x2 array in N m/rad; for a material use "
+                             f"bm.stiffness(bicycle, {S!r})")
     from .catalog import stiffness_matrix
     return stiffness_matrix(S)
 
@@ -63,12 +65,15 @@ def speeds(start=0.0, stop=30.0, step=0.05):
 
     Raises
     ------
-    ValueError
+    InputError
         Unless ``0 <= start < stop``, ``step > 0`` and at most 100000 speeds.
     """
+    from .errors import InputError
     from .stability import speed_grid
+    if not all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in (start, stop, step)):
+        raise InputError("speeds", f"{start!r}:{stop!r}:{step!r}", "start, stop and step as numbers (m/s)")
     if not (0 <= start < stop and step > 0 and (stop - start) / step <= 1e5):
-        raise ValueError("speeds need 0 <= start < stop, step > 0 and at most 100000 points "
+        raise InputError("speeds", f"{start}:{stop}:{step}", "speeds need 0 <= start < stop, step > 0 and at most 100000 points "
                          f"(m/s), got {start}:{stop}:{step}")
     return speed_grid(start, stop, step)
 
@@ -237,8 +242,9 @@ def stability(params, stiffness=None, speeds=None, marginal=DEFAULT_MARGINAL):
         ``.capsize_speeds``, ``.ranges``, ``.mode_ranges``, ``.modes``.
     """
     from .stability import stability as analyse
-    if not marginal > 0:
-        raise ValueError(f"marginal must be a positive modulus in rad/s, got {marginal!r}")
+    if isinstance(marginal, bool) or not isinstance(marginal, (int, float)) or not 0 < marginal < float("inf"):
+        from .errors import InputError
+        raise InputError("marginal", marginal, "a positive finite modulus in rad/s")
     S = _stiffness(stiffness)
     m = matrices(params, S)
     return StabilityResult(analyse(m, _speeds(speeds), marginal=marginal), S, m)

@@ -48,6 +48,16 @@ class InputError(ValueError):
         return (_rebuilt, (self.source, self.key, self.expected))
 
 
+class InputTypeError(InputError, TypeError):
+    """Bad input of the wrong Python type (``bm.load_bicycle(None)``): an :class:`InputError`
+    that is also a ``TypeError``."""
+
+
+def wrong_type(what, value, expected):
+    """:class:`InputTypeError` for argument ``what`` holding ``value`` where ``expected`` was wanted."""
+    return InputTypeError(what, "(argument)", f"{expected}, not {type(value).__name__}")
+
+
 def _rebuilt(source, key, expected):
     error = InputError.__new__(InputError)
     error.source, error.key, error.expected = source, key, expected

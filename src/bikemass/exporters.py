@@ -11,6 +11,7 @@ written with ``repr`` (17 significant digits) so they read back bit for bit (bel
 """
 
 from .choices import PARAMETER_FORMATS as FORMATS
+from .errors import InputError
 from .output import as_written, dumps, table, with_units
 from .parameters import DESCRIPTIONS, NAMES, parameter_units
 
@@ -30,7 +31,7 @@ def format_parameters(params, fmt, title="", rider_included=False):
     if fmt == "csv":
         return "parameter,value,unit\n" + "".join(f"{k},{as_written(values[k], units[k])!r},{units[k]}\n"
                                                     for k in NAMES)
-    raise ValueError(f"format must be one of {', '.join(FORMATS)}, got {fmt!r}")
+    raise InputError("format", fmt, f"format must be one of {', '.join(FORMATS)}, got {fmt!r}")
 
 
 def bicycleparameters_text(params, title=""):

@@ -4,6 +4,7 @@ natural frequencies (``bm.frame_modes``)."""
 
 from .choices import Beam, Procedure, Support, check
 from .fe.defaults import DEFAULT_ELEMENT_SIZE
+from .options import MAX_ELEMENTS
 
 
 def frame_structure(bicycle):
@@ -66,6 +67,12 @@ def frame_stiffness(bicycle, material=None, procedure=Procedure.CONDENSED, beam=
         raise InputError(getattr(bicycle, "source", str(bicycle)), "structure", str(exc)) from None
 
 
+def _real(value):
+    """True for an int or float (not a bool)."""
+    import numbers
+    return isinstance(value, numbers.Real) and not isinstance(value, bool)
+
+
 def _material(material):
     from .materials import Material
     if material is None or isinstance(material, Material):
@@ -75,7 +82,7 @@ def _material(material):
 
 
 def frame_modes(bicycle, support=Support.FREE, count=10, material=None, element_size=DEFAULT_ELEMENT_SIZE,
-                beam=Beam.TIMOSHENKO):
+                beam=Beam.TIMOSHENKO, max_elements=MAX_ELEMENTS):
     """The lowest natural frequencies and mode shapes of a bicycle's rear frame.
 
     Parameters
@@ -93,6 +100,9 @@ def frame_modes(bicycle, support=Support.FREE, count=10, material=None, element_
         Beam element length (m), > 0.
     beam : {"timoshenko", "euler-bernoulli"}
         Beam theory.
+    max_elements : int
+        Most beam elements the model may have (a tiny ``element_size`` is refused instead of
+        exhausting the memory).
 
     Returns
     -------
@@ -101,13 +111,18 @@ def frame_modes(bicycle, support=Support.FREE, count=10, material=None, element_
     """
     from .errors import InputError
     from .fe import frame_modes as solve
+    from .fe.model import element_count
 
     support, beam = check(Support, support, "support"), check(Beam, beam)
-    if int(count) != count or count < 1:
+    if not _real(count) or int(count) != count or count < 1:
         raise InputError("count", count, "a positive number of modes")
-    if not element_size > 0:
+    if not _real(element_size) or not 0 < element_size < float("inf"):
         raise InputError("element_size", element_size, "a positive element length in m")
     structure, material = frame_structure(bicycle), _material(material)
+    elements = element_count(structure, element_size)
+    if elements > max_elements:
+        raise InputError("element_size", element_size, f"a model of at most {max_elements} beam elements, got "
+                         f"{elements} (raise max_elements)")
     try:
         return solve(structure, support.value, int(count), material, element_size,
                      timoshenko=beam is Beam.TIMOSHENKO)

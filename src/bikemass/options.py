@@ -90,4 +90,4 @@ def _check_figure_name(path, option):
     try:
         figure_format(path)
     except ValueError as exc:
-        raise InputError(path, option, f"{exc}, got {short(os.path.basename(path), 30)}") from None
+        raise InputError(path, option, f"{getattr(exc, 'expected', exc)}, got {short(os.path.basename(path), 30)}") from None

@@ -249,4 +249,8 @@ def measured_parameters(pt):
 
 def load_parameter_text(path):
     """:class:`MeasuredParameters` of the BicycleParameters file at ``path``."""
+    import os
+    if not isinstance(path, (str, os.PathLike)):
+        from .errors import wrong_type
+        raise wrong_type("path", path, "a BicycleParameters file path")
     return measured_parameters(read_parameter_text(path))

@@ -10,6 +10,7 @@ the bicycle, masses beyond any bicycle.  The thresholds are stated below.
 """
 
 import math
+import numbers
 import warnings
 
 import numpy as np
@@ -94,8 +95,11 @@ def check_parameters(params, source):
     small spread crosses it."""
     from .errors import InputError, short
     from .parameters import NAMES
-    values = {key: float(getattr(params, key)) for key in NAMES}
+    values = {key: getattr(params, key) for key in NAMES}
     for key, value in values.items():
+        if isinstance(value, bool) or not isinstance(value, numbers.Real):
+            raise InputError(source, key, f"a number, got {short(value)}")
+        value = values[key] = float(value)
         if not math.isfinite(value):
             raise InputError(source, key, f"a finite number, got {short(value)}")
         if value <= 0 and key not in SIGNED_PARAMETERS:

@@ -75,7 +75,10 @@ class Sensitivity:
 
 def sensitivity(params, S=None, vmax=30.0, names=NAMES):
     """:class:`Sensitivity` of ``params`` (:class:`~bikemass.parameters.BenchmarkParameters`) with
-    rear-frame stiffness ``S`` (2x2 N m/rad or ``None``); crossings searched on ``(0, vmax]`` m/s."""
+    rear-frame stiffness ``S`` (2x2 N m/rad or ``None``); crossings searched on ``(0, vmax]`` m/s.
+    InputError for parameters the model is not defined for, an S that is not symmetric positive
+    definite, a ``vmax`` that is not a positive finite speed or ``names`` not among the 26."""
+    params, S, names = _checked(params, S, vmax, names)
     sys_ = system(values_of(params), S)
     found = critical_speeds(sys_, vmax)
     speeds, derivs = {}, {}
@@ -94,6 +97,24 @@ def sensitivity(params, S=None, vmax=30.0, names=NAMES):
     return Sensitivity(params=values_of(params), weave_speed=speeds["weave_speed"],
                        capsize_speed=speeds["capsize_speed"], d_weave_speed=derivs["weave_speed"],
                        d_capsize_speed=derivs["capsize_speed"], d_stiffness=d_s)
+
+
+def _checked(params, S, vmax, names):
+    """``(params, S, names)`` checked as :func:`sensitivity` needs them (InputError otherwise)."""
+    from ..dynamics import _stiffness
+    from ..errors import InputError, short
+    from ..parameters import BenchmarkParameters
+    from ..plausibility import check_parameters
+    if not isinstance(params, BenchmarkParameters):
+        from ..errors import wrong_type
+        raise wrong_type("params", params, "BenchmarkParameters (bm.parameters)")
+    check_parameters(params, "params")
+    S = _stiffness(S)
+    if isinstance(vmax, bool) or not isinstance(vmax, (int, float)) or not 0 < vmax < float("inf"):
+        raise InputError("vmax", short(vmax), "a positive finite speed in m/s")
+    if isinstance(names, str) or not all(n in NAMES for n in names):
+        raise InputError("names", short(names), f"a sequence of benchmark parameter names ({', '.join(NAMES)})")
+    return params, S, tuple(names)
 
 
 def sensitivity_figure(result, title="", size=None):
@@ -142,6 +163,15 @@ def geometry_sensitivity(model, keys, result=None, step=GEOMETRY_STEP):
     an estimate of the finite-difference error.
     Returns ``{key: {value, step, d_weave_speed, d_capsize_speed, difference_check}}``.
     """
+    from ..errors import InputError, short
+    from .inputs import Model
+    if not isinstance(model, Model):
+        from ..errors import wrong_type
+        raise wrong_type("model", model, "a bikemass.analysis.inputs.Model")
+    if isinstance(keys, str):
+        keys = [keys]
+    if isinstance(step, bool) or not isinstance(step, (int, float)) or not 0 < step <= 0.1:
+        raise InputError("step", short(step), "a relative step between 0 and 0.1")
     p0, S0 = model.build()
     result = result or sensitivity(p0, S0)
     out = {}

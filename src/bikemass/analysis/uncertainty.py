@@ -180,6 +180,8 @@ def _check_options(spreads, method, samples, seed):
     :class:`Spread` of a known kind with a finite std >= 0, an unknown method, a number of
     Monte Carlo samples outside 2 .. :data:`MAX_SAMPLES`, a seed that is not a whole number >= 0."""
     for key, spread in spreads.items():
+        if not isinstance(key, str):
+            raise InputError("spreads", repr(key), "an input key: a parameter name or a dotted path (a string)")
         if not isinstance(spread, Spread) or spread.kind not in DISTRIBUTIONS:
             raise InputError("spreads", key, f"a Spread of kind {' or '.join(DISTRIBUTIONS)}, got {spread!r}")
         if isinstance(spread.std, bool) or not (isinstance(spread.std, (int, float, np.floating, np.integer))

@@ -31,7 +31,7 @@ def bicycle_parameters(bicycle, rider=None, combine="exact", method="mesh"):
     A bicycle read from a parameter file without a rider returns that file's values exactly.
     """
     if combine not in COMBINE_CHOICES:
-        raise ValueError(f"combine must be one of {', '.join(COMBINE_CHOICES)}, got {combine!r}")
+        raise InputError("combine", combine, f"combine must be one of {', '.join(COMBINE_CHOICES)}, got {combine!r}")
     if rider is None and bicycle.published is not None:
         warn_parameters(bicycle.published, bicycle.source)
         return bicycle.published
@@ -88,7 +88,7 @@ def rider_bodies(rider, method="mesh"):
 def merge_rider(bodies, rider, combine="exact"):
     """``bodies`` with the rider's ``{body: MassProperties}`` merged by ``combine`` (a new dict)."""
     if combine not in COMBINE_CHOICES:
-        raise ValueError(f"combine must be one of {', '.join(COMBINE_CHOICES)}, got {combine!r}")
+        raise InputError("combine", combine, f"combine must be one of {', '.join(COMBINE_CHOICES)}, got {combine!r}")
     merge = combine_exact if combine == "exact" else combine_without_parallel_axis
     out = dict(bodies)
     for body, props in rider.items():

@@ -4,7 +4,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..errors import shown
+from ..errors import InputError, shown
 from ..frozen import frozen_fields, short_repr
 from ..parts import body_properties
 from .components import BODIES
@@ -51,7 +51,7 @@ class Bicycle:
     def body_parts(self, body):
         """Parts of ``body`` (one of :data:`BODIES`)."""
         if body not in BODIES:
-            raise ValueError(f"body must be one of {', '.join(BODIES)}, got {body!r}")
+            raise InputError("body", body, f"body must be one of {', '.join(BODIES)}, got {body!r}")
         return tuple(p for p in self.parts if p.body == body)
 
     def bodies(self, method="mesh"):

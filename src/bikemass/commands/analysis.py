@@ -268,6 +268,7 @@ def run_sweep_command(args):
     from ..output import dumps, write_atomic
     from ..progress import Progress
     from ..sweep import read_spec, run_sweep
+    from ..sweep.spec import count_of
     from ..sweep.figures import sweep_figures
 
     spec = read_spec(args.spec)
@@ -276,7 +277,7 @@ def run_sweep_command(args):
                          "(4 per core at most)")
     require_for_sweep(args)
     options = figure_options(args, f"x.{args.plot_format}")
-    total = len(spec.configurations())
+    total = count_of(spec)
     with Progress(total, "sweep") as bar:
         if args.quiet:
             bar.enabled = False

@@ -64,7 +64,7 @@ def figure_options(args, path):
         try:
             figure_format(path)
         except ValueError as exc:
-            raise InputError(path, "(figure file)", str(exc)) from None
+            raise InputError(path, "(figure file)", getattr(exc, "expected", str(exc))) from None
     size = None
     if getattr(args, "size", None) is not None:
         expected = "W,H: width and height in inches, both between 1 and 100"

@@ -82,7 +82,8 @@ def run_modes(args):
     if elements > args.max_elements:
         raise InputError("--element-size", args.element_size, f"a model of at most {args.max_elements} "
                          f"elements, got {elements} (raise with --max-elements)")
-    modes = frame_modes(bicycle, args.bc, args.n, args.material, args.element_size, args.beam)
+    modes = frame_modes(bicycle, args.bc, args.n, args.material, args.element_size, args.beam,
+                        max_elements=args.max_elements)
     if args.plot:
         from ..fe.plot import plot_frame_modes
         dialect.save_plot(args, plot_frame_modes(modes, size=options.size), options)

@@ -12,6 +12,8 @@ from matplotlib.figure import Figure
 
 DPI = 150
 """Default resolution of raster output (dots per inch)."""
+MIN_DPI, MAX_DPI = 10, 2000
+"""Resolutions save_figure accepts (dots per inch; the command line's --dpi range)."""
 
 VECTOR_TEXT = {"svg.fonttype": "none", "pdf.fonttype": 42, "ps.fonttype": 42}
 """rc settings for saving: SVG text stays <text>, PDF/PS embed TrueType (editable, searchable)."""
@@ -32,10 +34,13 @@ def figure_formats():
 
 
 def figure_format(path):
-    """The format of figure file ``path`` from its suffix; ValueError naming the formats if unknown."""
+    """The format of figure file ``path`` from its suffix; InputError (a ValueError) naming the
+    formats if unknown."""
+    from ..errors import InputError
     suffix = Path(path).suffix.lower().lstrip(".")
     if suffix not in figure_formats():
-        raise ValueError("an image file name ending in " + ", ".join(f".{k}" for k in sorted(figure_formats())))
+        raise InputError(path, "(figure file)", "an image file name ending in "
+                         + ", ".join(f".{k}" for k in sorted(figure_formats())))
     return suffix
 
 
@@ -51,5 +56,10 @@ def figure_bytes(fig, fmt="png", dpi=DPI):
 
 def save_figure(fig, path, dpi=DPI):
     """Write ``fig`` to ``path`` (format from the suffix) atomically: never half-written."""
+    from ..errors import InputError, wrong_type
     from ..output import write_atomic
+    if not isinstance(fig, Figure):
+        raise wrong_type("fig", fig, "a matplotlib Figure")
+    if isinstance(dpi, bool) or not isinstance(dpi, (int, float)) or not MIN_DPI <= dpi <= MAX_DPI:
+        raise InputError("dpi", dpi, f"a resolution in dots per inch, {MIN_DPI} to {MAX_DPI}")
     write_atomic(path, figure_bytes(fig, figure_format(path), dpi))

@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..config import load_yaml
+from ..errors import InputError
 from ..parts import METHODS, OVERLAPS, body_properties
 from ..paths import available, bodies_dir, resolve
 from .pose import read_pose
@@ -69,7 +70,7 @@ class Rider:
 
 def _check(value, choices, what):
     if value not in choices:
-        raise ValueError(f"{what} must be one of {', '.join(choices)}, got {value!r}")
+        raise InputError(what, value, f"{what} must be one of {', '.join(choices)}, got {value!r}")
 
 
 def load_rider(pose: str, as_printed: bool = False) -> Rider:

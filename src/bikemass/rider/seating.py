@@ -128,6 +128,9 @@ def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, toleran
         source, node = MAPPING, Node(plain(pose), MAPPING, "")
         pose = node.value.get("name", MAPPING) if isinstance(node.value, dict) else MAPPING
     else:
+        if not isinstance(pose, (str, os.PathLike)):
+            from ..errors import wrong_type
+            raise wrong_type("rider", pose, "a rider is a pose name, a file path, a mapping, a Rider or None")
         source = resolve(os.fspath(pose), poses_dir(), "pose")
         node = load_yaml(source)
     contacts = bicycle.contacts

@@ -53,10 +53,15 @@ class Modes(ModalQuantities):
 
 
 def check_speeds(speeds):
-    """``speeds`` as a 1-D float array; ValueError unless finite, >= 0 and strictly increasing."""
-    v = np.atleast_1d(np.asarray(speeds, dtype=float))
-    if v.ndim != 1 or not np.all(np.isfinite(v)) or v[0] < 0 or np.any(np.diff(v) <= 0):
-        raise ValueError("speeds must be finite, >= 0 and strictly increasing")
+    """``speeds`` as a 1-D float array; InputError (a ValueError) unless numbers, at least one,
+    finite, >= 0 and strictly increasing."""
+    from ..errors import InputError, short
+    try:
+        v = np.atleast_1d(np.asarray(speeds, dtype=float))
+    except (TypeError, ValueError):
+        raise InputError("speeds", short(speeds), "speeds in m/s: a 1-D array of numbers") from None
+    if v.ndim != 1 or v.size == 0 or not np.all(np.isfinite(v)) or v[0] < 0 or np.any(np.diff(v) <= 0):
+        raise InputError("speeds", short(speeds), "speeds must be at least one, finite, >= 0 and strictly increasing (m/s)")
     return v
 
 

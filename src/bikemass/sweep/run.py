@@ -134,6 +134,7 @@ def run_sweep(spec, out, workers=None, scheduler=None, progress=None):
     ``progress(n)`` is called with the number of configurations already finished, then with
     the number finished by each chunk.
     """
+    _check_arguments(spec, out, workers, progress)
     if not hasattr(spec, "configurations"):
         from .spec import read_spec
         spec = read_spec(spec)
@@ -162,6 +163,28 @@ def run_sweep(spec, out, workers=None, scheduler=None, progress=None):
     rows = [{**config, **result} for config, result in zip(configurations, results)]
     write_results(rows, spec.keys, out, lines)
     return rows
+
+
+def max_workers():
+    """Most local worker processes a sweep starts: 4 per core."""
+    import os
+    return 4 * (os.cpu_count() or 1)
+
+
+def _check_arguments(spec, out, workers, progress):
+    """InputError for arguments :func:`run_sweep` cannot use (before any folder is made)."""
+    import os
+    from ..errors import wrong_type
+    from .spec import SweepSpec
+    if not isinstance(spec, (str, os.PathLike, SweepSpec)):
+        raise wrong_type("spec", spec, "a sweep spec file or a SweepSpec")
+    if not isinstance(out, (str, os.PathLike)):
+        raise wrong_type("out", out, "an output folder path")
+    if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int)
+                                or not 1 <= workers <= max_workers()):
+        raise InputError("--workers", workers, f"from 1 to {max_workers()} worker processes (4 per core at most)")
+    if progress is not None and not callable(progress):
+        raise wrong_type("progress", progress, "a function of the number of finished configurations")
 
 
 QUIET_CLUSTER = {

@@ -1,0 +1,133 @@
+"""Hostile input to the Python API: every refusal is a bm.InputError (wrong types an InputError
+that is also a TypeError), never a bare TypeError/ValueError/ZeroDivisionError from inside, and
+parameter sets the model is not defined for are refused instead of analysed."""
+
+import math
+
+import numpy as np
+import pytest
+
+import bikemass as bm
+from bikemass.errors import InputTypeError
+
+
+@pytest.fixture(scope="module")
+def meijaard():
+    return bm.parameters("benchmark")
+
+
+@pytest.mark.parametrize("value", [None, 5, math.nan, [1, 2], b"jamis", object()])
+def test_wrong_types_are_input_errors(value):
+    for call in (bm.load_bicycle, bm.frame_structure, bm.geometry_chart, bm.load_parameter_text):
+        with pytest.raises(InputTypeError):
+            call(value)
+    with pytest.raises(bm.InputError, match="rider: \\(argument\\): a rider is"):
+        bm.parameters("jamis", value if value is not None else 5)
+
+
+@pytest.mark.parametrize("change", [{"mB": -85.0}, {"c": math.nan}, {"w": math.inf}, {"w": 0.0},
+                                    {"lam": 0.0}, {"lam": math.pi / 2}, {"g": 0.0}, {"w": "1"}])
+def test_impossible_parameters_are_refused_by_every_analysis(meijaard, change):
+    bad = meijaard.replace(**change)
+    key = next(iter(change))
+    for call in (bm.stability, bm.eigenvalues, bm.matrices, bm.sensitivity):
+        with pytest.raises(bm.InputError, match=f"params: {key}: "):
+            call(bad)
+
+
+def test_valid_parameters_still_give_the_benchmark(meijaard):
+    """Meijaard et al. (2007): weave 4.292382 m/s, capsize 6.024262 m/s."""
+    result = bm.stability(meijaard)
+    assert result.weave_speeds[0] == pytest.approx(4.2923825, abs=1e-6)
+    assert result.capsize_speeds[0] == pytest.approx(6.0242620, abs=1e-6)
+
+
+@pytest.mark.parametrize("speeds", [[], [-5, 0, 5], [0, math.nan, 5], [5, 1, 3], np.ones((3, 3)), "0:10:1", [1, 1, 2]])
+def test_bad_speed_arrays(meijaard, speeds):
+    with pytest.raises(bm.InputError, match="speeds"):
+        bm.stability(meijaard, speeds=speeds)
+
+
+@pytest.mark.parametrize("args", [(10, 0, 1), (0, 10, 0), (0, 10, -1), (0, 1000, 1e-9), (0, math.nan, 1), ("0", "10", "1")])
+def test_bad_speed_grids(args):
+    with pytest.raises(bm.InputError, match="speeds"):
+        bm.speeds(*args)
+
+
+@pytest.mark.parametrize("marginal", [-1, 0, math.nan, math.inf, "2", True])
+def test_bad_marginal(meijaard, marginal):
+    with pytest.raises(bm.InputError, match="marginal"):
+        bm.stability(meijaard, marginal=marginal)
+
+
+def test_misspelt_choices_are_input_errors():
+    bike = bm.load_bicycle("jamis")
+    for call, match in ((lambda: bm.parameters(bike, "relaxed", combine="sum"), "combine"),
+                        (lambda: bm.parameters(bike, "relaxed", method="foo"), "method"),
+                        (lambda: bm.stiffness(bike, "steel", source="x"), "source"),
+                        (lambda: bm.stiffness(bike, "steel", procedure="x"), "procedure"),
+                        (lambda: bm.frame_modes(bike, support="x"), "support"),
+                        (lambda: bm.pose_rider(bike, hands="feet"), "hands")):
+        with pytest.raises(bm.InputError, match=match):
+            call()
+    with pytest.raises(InputTypeError, match="bm.stiffness"):
+        bm.stability(bm.parameters("benchmark"), stiffness="steel")
+
+
+def test_tiny_frame_elements_are_refused_before_meshing():
+    """1e-9 m elements would be ~4e9 beam elements (tens of GB): refused by count."""
+    bike = bm.load_bicycle("jamis")
+    with pytest.raises(bm.InputError, match=r"element_size: 1e-09: a model of at most 5000 beam elements, got \d+"):
+        bm.frame_modes(bike, element_size=1e-9)
+    with pytest.raises(bm.InputError, match="element_size"):
+        bm.frame_modes(bike, element_size=math.inf)
+    with pytest.raises(bm.InputError, match="count"):
+        bm.frame_modes(bike, count=True)
+
+
+@pytest.mark.parametrize("kwargs, match", [({"vmax": 0}, "vmax"), ({"vmax": -1}, "vmax"), ({"vmax": math.nan}, "vmax"),
+                                           ({"names": ("qq",)}, "names"), ({"names": "c"}, "names"),
+                                           ({"S": np.eye(3)}, "stiffness"), ({"S": -np.eye(2)}, "stiffness")])
+def test_sensitivity_arguments(meijaard, kwargs, match):
+    with pytest.raises(bm.InputError, match=match):
+        bm.sensitivity(meijaard, **kwargs)
+
+
+def test_geometry_sensitivity_arguments():
+    from bikemass.analysis.inputs import Model
+    with pytest.raises(bm.InputError, match="step"):
+        bm.geometry_sensitivity(Model("jamis"), ["geometry.trail"], step=0)
+    with pytest.raises(InputTypeError, match="model"):
+        bm.geometry_sensitivity("jamis", ["geometry.trail"])
+
+
+def test_uncertainty_key_must_be_a_string():
+    with pytest.raises(bm.InputError, match="spreads: 5: an input key"):
+        bm.uncertainty("benchmark", {5: 0.1})
+
+
+@pytest.mark.parametrize("kwargs, match", [({"workers": 0}, "--workers: 0"), ({"workers": -2}, "--workers: -2"),
+                                           ({"workers": "2"}, "--workers: 2"), ({"progress": 5}, "progress")])
+def test_sweep_arguments_are_checked_before_any_work(tmp_path, kwargs, match):
+    """workers=0 once made a cluster without workers and waited for ever."""
+    spec = tmp_path / "s.yaml"
+    spec.write_text("bike: benchmark\nvary:\n  c: [0.08]\n")
+    with pytest.raises(bm.InputError, match=match):
+        bm.sweep(spec, tmp_path / "out", **kwargs)
+    assert not (tmp_path / "out").exists()
+    for spec_arg, out in ((None, tmp_path / "o"), ({"bike": "benchmark"}, tmp_path / "o"), (spec, None)):
+        with pytest.raises(InputTypeError):
+            bm.sweep(spec_arg, out)
+
+
+def test_save_figure_arguments(tmp_path, meijaard):
+    fig = bm.plot_eigenvalues(bm.stability(meijaard, speeds=bm.speeds(0, 2, 0.5)))
+    for path in (tmp_path / "x.docx", tmp_path, tmp_path / "noext"):
+        with pytest.raises(bm.InputError, match="an image file name ending in"):
+            bm.save_figure(fig, path)
+    for dpi in (0, 10 ** 6, "150"):
+        with pytest.raises(bm.InputError, match="dpi"):
+            bm.save_figure(fig, tmp_path / "x.png", dpi=dpi)
+    with pytest.raises(InputTypeError, match="fig"):
+        bm.save_figure(None, tmp_path / "x.png")
+    assert list(tmp_path.iterdir()) == []
