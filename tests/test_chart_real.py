@@ -104,3 +104,15 @@ def test_neither_bb_drop_nor_bb_height_names_both(tmp_path, capsys):
     assert main(["geometry", path]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "chart.bb_drop: a required key that is missing (or bb_height instead)" in err
+
+
+def test_a_rider_asking_for_the_hoods_holds_a_flat_bar(tmp_path):
+    """A flat-bar chart bicycle (the folding 349 above) seats ``chain: {hands: hoods}``, the
+    form of the rider issue's examples, on its one grip, as the Cargo's flat bar does."""
+    from bikemass.rider.seating import CONTACT_TOLERANCE, seat_rider
+    bike = load_bicycle(_folding(tmp_path, "0 mm"))
+    assert set(bike.contacts.grips) == {"tops", "hoods"}
+    assert (bike.contacts.grips["tops"] == bike.contacts.grips["hoods"]).all()
+    seated = seat_rider({"body": {"height": "1.70 m", "mass": "65 kg", "sex": "female"},
+                         "chain": {"hands": "hoods"}}, bike)
+    assert max(seated.residuals().values()) <= CONTACT_TOLERANCE

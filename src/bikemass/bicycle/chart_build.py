@@ -215,7 +215,8 @@ def _cockpit(chart, points, c):
     else:
         end = clamp + [-_length(c["bar_sweep"]), _length(c["bar_rise"])]
         kp["bar_left"], kp["bar_right"] = _xyz(end, -half), _xyz(end, half)
-        grips = {"tops": _xyz(end, half - _length(c["grip_inset"]))}
+        grip = _xyz(end, half - _length(c["grip_inset"]))
+        grips = {"tops": grip, "hoods": grip}      # one grip, by the levers (as the Cargo's flat bar)
         tubes = [("handlebar_left", "bar_clamp", "bar_left", "handlebar"),
                  ("handlebar_right", "bar_clamp", "bar_right", "handlebar")]
     stem_length = _length(c["stem_length"])
