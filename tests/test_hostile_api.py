@@ -131,3 +131,54 @@ def test_save_figure_arguments(tmp_path, meijaard):
     with pytest.raises(InputTypeError, match="fig"):
         bm.save_figure(None, tmp_path / "x.png")
     assert list(tmp_path.iterdir()) == []
+
+
+def _deep(levels):
+    top = cur = {}
+    for _ in range(levels):
+        cur["a"] = {}
+        cur = cur["a"]
+    return top
+
+
+def test_deep_and_self_containing_mappings_are_refused_without_recursion():
+    looped = {}
+    looped["a"] = looped
+    for value in (_deep(5000), looped):
+        for call in (bm.load_bicycle, bm.load_rider, lambda v: bm.seated_rider("jamis", v)):
+            with pytest.raises(bm.InputError, match="nested at most 64 levels deep"):
+                call(value)
+
+
+@pytest.mark.parametrize("kwargs, match", [({"crank": math.nan}, "crank: nan"), ({"crank": "x"}, "crank"),
+                                           ({"fixed": [1, 2]}, "fixed"), ({"fixed": {"elbow": 1e9}}, "fixed.elbow"),
+                                           ({"fixed": {"elbow": True}}, "fixed.elbow")])
+def test_pose_angles_are_checked(kwargs, match):
+    with pytest.raises(bm.InputError, match=match):
+        bm.pose_rider("jamis", **kwargs)
+
+
+def test_plot_arguments(meijaard):
+    result = bm.stability(meijaard, speeds=bm.speeds(0, 2, 0.5))
+    for call, match in ((lambda: bm.plot_eigenvalues(None), "result"),
+                        (lambda: bm.plot_eigenvalues(result, size=(-1, 2)), "size"),
+                        (lambda: bm.plot_eigenvalues(result, size=(1e6, 1e6)), "size"),
+                        (lambda: bm.plot_eigenvalues(result, xlim=(math.nan, 1)), "xlim"),
+                        (lambda: bm.plot_eigenvalues(result, ylim=(1, 1)), "ylim"),
+                        (lambda: bm.plot_critical_speeds([]), "results"),
+                        (lambda: bm.plot_critical_speeds({}), "results"),
+                        (lambda: bm.plot_side_view(None), "bicycle"),
+                        (lambda: bm.plot_side_view("jamis", rider=5), "rider"),
+                        (lambda: bm.plot_frame_modes(None), "modes"),
+                        (lambda: bm.plot_chart(None), "bicycle")):
+        with pytest.raises(bm.InputError, match=match):
+            call()
+    assert len(bm.plot_side_view("benchmark").axes) == 1          # a name is loaded as load_bicycle does
+
+
+def test_raster_size_is_bounded(tmp_path, meijaard):
+    """100 x 100 in at 2000 dpi would be 4e10 pixels: refused before rendering."""
+    fig = bm.plot_eigenvalues(bm.stability(meijaard, speeds=bm.speeds(0, 2, 0.5)), size=(100, 100))
+    with pytest.raises(bm.InputError, match="pixels"):
+        bm.save_figure(fig, tmp_path / "big.png", dpi=2000)
+    assert list(tmp_path.iterdir()) == []

@@ -222,3 +222,25 @@ def _attach(source, parent, node):
         parent[1] = None
 
 
+
+
+def plain_input(value, source):
+    """A Python value given in place of a file (a mapping passed to ``bm.load_bicycle``, ...) as
+    plain Python (:func:`bikemass.output.plain`), after the limits a file has: nested at most
+    :data:`MAX_DEPTH` levels (a mapping that contains itself is infinitely deep) and at most
+    :data:`MAX_VALUES` values; checked by a loop, so no nesting exhausts the stack."""
+    from collections.abc import Mapping
+    from .output import plain
+    stack, count = [(value, 0)], 0
+    while stack:
+        item, depth = stack.pop()
+        count += 1
+        if depth > MAX_DEPTH:
+            raise InputError(source, "(top)", f"a value nested at most {MAX_DEPTH} levels deep")
+        if count > MAX_VALUES:
+            raise InputError(source, "(top)", f"at most {MAX_VALUES} values")
+        if isinstance(item, Mapping):
+            stack.extend((v, depth + 1) for v in item.values())
+        elif isinstance(item, (list, tuple)):
+            stack.extend((v, depth + 1) for v in item)
+    return plain(value)

@@ -49,6 +49,21 @@ class PosedRider:
                           ("angles_deg", f"({angles})"))
 
 
+MAX_ANGLE = 360.0
+"""Largest joint or crank angle magnitude (deg) accepted, as ``bikemass pose --fix/--crank``."""
+
+
+def _degrees(value, what):
+    """``value`` as a float angle in [-:data:`MAX_ANGLE`, :data:`MAX_ANGLE`] deg, else InputError."""
+    import math
+    import numbers
+    from .errors import InputError, short
+    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value) \
+            or abs(value) > MAX_ANGLE:
+        raise InputError(what, short(value), f"an angle in degrees within +-{MAX_ANGLE:g}")
+    return float(value)
+
+
 def pose_rider(bicycle, body=DEFAULT_BODY, hands=None, crank=None, fixed=None, name=None):
     """Pose a rider by joint angles on a bicycle's contact points.
 
@@ -94,11 +109,15 @@ def pose_rider(bicycle, body=DEFAULT_BODY, hands=None, crank=None, fixed=None, n
     loaded = load_body(body_node)
     chain_body = chain_of(loaded, body_node)
     hands = default_hands(model.contacts) if hands is None else check(Grip, hands, "hands").value
+    if fixed is not None and not isinstance(fixed, Mapping):
+        from .errors import wrong_type
+        raise wrong_type("fixed", fixed, "a mapping of joint -> angle (deg)")
     fixed = dict(fixed or {})
     for joint, value in fixed.items():
         if joint not in JOINTS:
             raise InputError("fixed", joint, f"a joint angle: one of {', '.join(JOINTS)}")
-        fixed[joint] = float(value)
+        fixed[joint] = _degrees(value, f"fixed.{joint}")
+    crank = None if crank is None else _degrees(crank, "crank")
     solution = solve_on_bicycle(chain_body, model.contacts, hands, crank, fixed).check_reachable()
     for line in solution.pose.warnings():
         warnings.warn(line, BikemassWarning, stacklevel=2)

@@ -75,9 +75,12 @@ def annotate_chart(ax, bicycle):
 
 
 def plot_chart(bicycle, title=None, size=None):
-    """Figure: frame centre lines, wheels, steer axis and the chart's dimensions (m, height up)."""
+    """Figure: frame centre lines, wheels, steer axis and the chart's dimensions (m, height up);
+    ``bicycle``: anything :func:`bikemass.load_bicycle` takes."""
+    from ..catalog import load_bicycle
     from ..plots.figure import new_figure
 
+    bicycle = load_bicycle(bicycle)
     fig = new_figure(size or (10, 6.5))
     ax = fig.subplots()
     for tube in bicycle.tubes:

@@ -63,9 +63,13 @@ def plot_side_view(bicycle, rider=None, title=None, size=None, xlim=None, ylim=N
     parameter-file bicycles), each body's centre of mass labelled with its name and mass,
     its ellipse of gyration (semi-axes = radii of gyration sqrt(I/m) about the principal axes
     in the x-z plane) drawn round it, the steer axis dashed; the legend sits below the axes.
+    ``bicycle`` and ``rider``: anything :func:`bikemass.load_bicycle` and :func:`bikemass.load_rider` take.
     """
-    from ..plots.figure import new_figure
+    from ..catalog import load_bicycle, load_rider
+    from ..plots.figure import check_limits, new_figure
 
+    bicycle, rider = load_bicycle(bicycle), load_rider(rider)
+    xlim, ylim = check_limits(xlim, "xlim"), check_limits(ylim, "ylim")
     fig = new_figure(size or (6.5, 7.2))
     ax = fig.subplots()
     g = bicycle.geometry

@@ -18,7 +18,6 @@ from ..gate import read_text
 from ..errors import InputError, short
 from ..inertia import MassProperties
 from ..materials import load_materials, read_materials
-from ..output import plain
 from ..parameter_text import load_parameter_text, looks_like_parameter_text
 from ..parameters import from_node, is_parameter_file
 from ..parts import Part
@@ -59,7 +58,8 @@ def bicycle_from_mapping(mapping, source, size=None):
     """:class:`Bicycle` from a Python mapping holding what a bicycle or parameter file holds;
     errors name ``source``.  A ``base`` is looked up as a shipped name or relative to the
     working folder."""
-    node = Node(plain(mapping), source, "")
+    from ..gate import plain_input
+    node = Node(plain_input(mapping, source), source, "")
     if not isinstance(node.value, dict):
         node.fail("a mapping of a bicycle or of the 26 benchmark parameters")
     return _read_document(node, source, source, size)

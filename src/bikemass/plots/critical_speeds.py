@@ -3,7 +3,7 @@ speeds and the stable speeds between them (one row per configuration, one colour
 
 import numpy as np
 
-from .figure import new_figure
+from .figure import check_limits, new_figure
 from .stability import CriticalSpeeds
 
 WEAVE_MARKER, CAPSIZE_MARKER = "o", "s"
@@ -37,6 +37,12 @@ def plot_critical_speeds(results, title="", size=None, xlim=None, values=True):
     where no crossing speeds are given) if ``values``.
     ``xlim``: speed range (m/s); default from 0 to beyond the largest critical speed.
     """
+    from collections.abc import Mapping
+    from ..errors import InputError, wrong_type
+    if not isinstance(results, Mapping) or not all(isinstance(row, Mapping) for row in results.values()):
+        raise wrong_type("results", results, "a mapping {row: {series: result}}")
+    if not results or not any(results.values()):
+        raise InputError("results", "(argument)", "at least one result to draw")
     rows = list(results)
     series = list(dict.fromkeys(s for row in results.values() for s in row))
     colours = dict(zip(series, series_colours(len(series))))
@@ -46,7 +52,7 @@ def plot_critical_speeds(results, title="", size=None, xlim=None, values=True):
     marks = [v for row in results.values() for r in row.values()
              for v in (*_critical(r).weave, *_critical(r).capsize)]
     ends = [v for row in results.values() for r in row.values() for span in _critical(r).stable for v in span]
-    xlim = tuple(xlim or (0.0, 1.12 * max(marks + ends, default=10.0) + 0.5))
+    xlim = check_limits(xlim, "xlim") or ((0.0, 1.12 * max(marks + ends, default=10.0) + 0.5))
     for i, row in enumerate(rows):
         for j, name in enumerate(series):
             if name not in results[row]:

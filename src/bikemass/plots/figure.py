@@ -22,9 +22,37 @@ UNWRITABLE = {"pgf"}
 """Formats matplotlib lists but that need outside tools (LaTeX) to write."""
 
 
+MAX_INCHES = 1000.0
+"""Largest figure side accepted (inches)."""
+MAX_PIXELS = 200_000_000
+"""Most pixels of a raster figure written (width x height at its dpi): about 800 MB of RGBA."""
+
+
+def _pair(value, what, expected, ok):
+    """``value`` as a tuple of two finite floats passing ``ok(a, b)``, else InputError."""
+    import math
+    from ..errors import InputError, short
+    try:
+        a, b = (float(x) for x in value)
+    except (TypeError, ValueError):
+        raise InputError(what, short(value), expected) from None
+    if not (math.isfinite(a) and math.isfinite(b) and ok(a, b)):
+        raise InputError(what, short(value), expected)
+    return a, b
+
+
+def check_limits(limits, what):
+    """Axis limits ``(low, high)`` (two finite, different numbers) or ``None``; InputError otherwise."""
+    if limits is None:
+        return None
+    return _pair(limits, what, "axis limits (low, high): two finite, different numbers", lambda a, b: a != b)
+
+
 def new_figure(size):
-    """An empty :class:`~matplotlib.figure.Figure` of ``size`` = (width, height) in inches,
-    laid out by matplotlib's constrained layout."""
+    """An empty :class:`~matplotlib.figure.Figure` of ``size`` = (width, height) in inches
+    (each above 0 and at most :data:`MAX_INCHES`), laid out by matplotlib's constrained layout."""
+    size = _pair(size, "size", f"a figure size (width, height) in inches, each in (0, {MAX_INCHES:g}]",
+                 lambda a, b: 0 < a <= MAX_INCHES and 0 < b <= MAX_INCHES)
     return Figure(figsize=size, layout="constrained")
 
 
@@ -48,6 +76,11 @@ def figure_bytes(fig, fmt="png", dpi=DPI):
     """``fig`` rendered as ``fmt`` (bytes); text stays text in SVG and PDF."""
     from matplotlib import rc_context
 
+    width, height = fig.get_size_inches()
+    if fmt not in ("pdf", "svg", "svgz", "eps", "ps") and width * height * dpi * dpi > MAX_PIXELS:
+        from ..errors import InputError
+        raise InputError("dpi", dpi, f"a figure of at most {MAX_PIXELS} pixels ({width:g} x {height:g} in at "
+                         f"{dpi:g} dpi is {width * height * dpi * dpi:.3g})")
     buffer = BytesIO()
     with rc_context(VECTOR_TEXT):
         fig.savefig(buffer, format=fmt, dpi=dpi)

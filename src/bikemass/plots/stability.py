@@ -7,7 +7,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .figure import new_figure
+from .figure import check_limits, new_figure
 
 SIZE = (7.0, 4.6)
 """Default figure size (inches): a journal's two-column width."""
@@ -53,6 +53,9 @@ def plot_eigenvalues(result, title="", size=None, xlim=None, ylim=None):
     marked, stable speeds shaded) or bare :class:`~bikemass.stability.modes.Modes`.
     ``xlim`` (m/s) and ``ylim`` (1/s) override the automatic zoom.
     """
+    if not hasattr(result, "modes") and not hasattr(result, "eigenvalues"):
+        from ..errors import wrong_type
+        raise wrong_type("result", result, "a StabilityResult (bm.stability) or Modes (bm.eigenvalues)")
     if hasattr(result, "modes"):
         return eigenvalue_figure(result.modes, CriticalSpeeds.of(result), title, size, xlim, ylim)
     return eigenvalue_figure(result, CriticalSpeeds(), title, size, xlim, ylim)
@@ -156,8 +159,8 @@ def eigenvalue_figure(modes, critical, title="", size=None, xlim=None, ylim=None
     """Figure: the Meijaard-style eigenvalue plot of ``modes`` with :class:`CriticalSpeeds` ``critical``."""
     speeds, eigenvalues = modes.speeds, modes.eigenvalues
     names = modes.names()
-    xlim = tuple(xlim or default_xlim(speeds, critical))
-    ylim = tuple(ylim or default_ylim(speeds, eigenvalues, names, xlim))
+    xlim = check_limits(xlim, "xlim") or default_xlim(speeds, critical)
+    ylim = check_limits(ylim, "ylim") or default_ylim(speeds, eigenvalues, names, xlim)
     fig = new_figure(size or SIZE)
     ax = fig.subplots()
     for i, (a, b) in enumerate(critical.stable):

@@ -88,9 +88,9 @@ def rider_from_mapping(mapping, source, as_printed=False):
     lumped segments); errors name ``source``.  A chain pose's ``bike`` may also be a
     :class:`~bikemass.bicycle.Bicycle`."""
     from ..config import Node
-    from ..output import plain
+    from ..gate import plain_input
 
-    node = Node(plain(mapping), source, "")
+    node = Node(plain_input(mapping, source), source, "")
     if not isinstance(node.value, dict):
         node.fail("a mapping of a pose (segments: or chain:)")
     return _read_document(node, source, as_printed)

@@ -124,8 +124,8 @@ def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, toleran
         (node, as_printed), source, pose = pose.spec, pose.spec[0].source, pose.pose
     elif isinstance(pose, Mapping):
         from ..catalog import MAPPING
-        from ..output import plain
-        source, node = MAPPING, Node(plain(pose), MAPPING, "")
+        from ..gate import plain_input
+        source, node = MAPPING, Node(plain_input(pose, MAPPING), MAPPING, "")
         pose = node.value.get("name", MAPPING) if isinstance(node.value, dict) else MAPPING
     else:
         if not isinstance(pose, (str, os.PathLike)):
