@@ -3,6 +3,7 @@ changes): refused with InputError before any work, or a row/draw refused instead
 nonsense number."""
 
 import math
+import re
 
 import pytest
 
@@ -97,3 +98,41 @@ def test_montecarlo_draw_off_the_model_is_refused():
     with pytest.raises(InputError, match=r"mB: spreads whose Monte Carlo draws stay valid \(draw \d+ of 50: "
                                          "a positive number"):
         uncertainty("benchmark", {"mB": 200.0}, method="montecarlo", samples=50, seed=0)
+
+
+def test_sweep_stiffness_choices_are_checked_once(tmp_path):
+    for text, key in (("bike: benchmark\nstiffness: rubber\nvary:\n  c: [0.08]\n", "stiffness"),
+                      ("bike: jamis\nvary:\n  stiffness: [steel, rubber]\n", "vary.stiffness")):
+        with pytest.raises(InputError, match=f"spec.yaml: {key}: infinite, a material"):
+            run_sweep(_spec(tmp_path, text), tmp_path / "out")
+        assert not (tmp_path / "out").exists()
+
+
+def _cli(capsys, *argv):
+    from bikemass.cli import main
+    status = main(list(argv))
+    return status, capsys.readouterr().err.strip().splitlines()
+
+
+def test_names_too_long_for_the_system_are_one_line(capsys, tmp_path):
+    long = "x" * 5000
+    for argv in (["params", long], ["rider", long], ["params", "benchmark", "-o", str(tmp_path / f"{long}.yaml")],
+                 ["eig", "benchmark", "--plot", str(tmp_path / f"{long}.png")]):
+        status, err = _cli(capsys, *argv)
+        assert status == 2 and len(err) == 1 and "system accepts (File name too long)" in err[0]
+
+
+def test_empty_sensitivity_inputs_are_refused(capsys):
+    status, err = _cli(capsys, "sensitivity", "benchmark", "--inputs", ",")
+    assert status == 2 and err == ["bikemass: error: --inputs: ',': a comma-separated list of at least one dotted path"]
+
+
+@pytest.mark.parametrize("change, fragment", [({"rR": 300.0}, "wheel radius rR = 300 m"),
+                                              ({"c": 5.0}, "trail c = 5 m is longer than the wheelbase"),
+                                              ({"xB": 30.0}, "centre of mass [xB, zB] = [30, -0.9] m is far")])
+def test_absurd_parameter_files_are_warned_about(change, fragment):
+    import bikemass as bm
+    from bikemass.errors import BikemassWarning
+    values = {**bm.parameters("benchmark").to_dict(), **change, "name": "absurd"}
+    with pytest.warns(BikemassWarning, match=re.escape(fragment)):
+        bm.parameters(bm.load_bicycle(values))

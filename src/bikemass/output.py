@@ -263,8 +263,15 @@ def _mode_for(target):
 def check_output(path, suffixes=None, inputs=(), what="an output file", option="(file)"):
     """Refuse (:class:`InputError`) an output path that cannot be written, before any work:
     a folder, a parent that is a file or not writable, a suffix not in ``suffixes``, or one of
-    the command's ``inputs`` (paths or names; those that are existing files are compared)."""
-    path = Path(path)
+    the command's ``inputs`` (paths or names; those that are existing files are compared), or a
+    path the system refuses (a name too long, ...)."""
+    try:
+        _check_output(Path(path), suffixes, inputs, what, option)
+    except OSError as exc:
+        raise InputError(path, option, f"{what} path the system accepts ({exc.strerror or type(exc).__name__})") from None
+
+
+def _check_output(path, suffixes, inputs, what, option):
     if suffixes is not None and path.suffix.lower() not in suffixes:
         raise InputError(path, option, f"{what} name ending in {', '.join(suffixes)}, "
                                          f"got {short(path.suffix or path.name, 30)}")

@@ -86,7 +86,16 @@ def reference_dir() -> Path:
 
 
 def resolve(name, folder: Path, what: str) -> Path:
-    """Path for ``name``: an existing file, else ``folder/<name>.yaml`` (``-`` and ``_`` alike)."""
+    """Path for ``name``: an existing file, else ``folder/<name>.yaml`` (``-`` and ``_`` alike);
+    InputError for a name the system refuses as a path (too long, ...)."""
+    try:
+        return _resolve(name, folder, what)
+    except OSError as exc:
+        raise InputError(name, "(file)", f"a {what} file name the system accepts "
+                                         f"({exc.strerror or type(exc).__name__})") from None
+
+
+def _resolve(name, folder, what):
     p = Path(name)
     if p.suffix in (".yaml", ".yml", ".json", ".txt") or p.is_file():
         if not os.path.lexists(p):

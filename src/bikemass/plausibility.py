@@ -5,7 +5,8 @@ Errors (:class:`~bikemass.errors.InputError`, naming the file and key): a steer-
 ``lam`` outside (0, pi/2), an inertia tensor that is not symmetric, not positive
 semi-definite or violates the triangle inequality, a stiffness matrix that is not
 symmetric or not positive definite.  Warnings (:class:`~bikemass.errors.BikemassWarning`,
-one line each): negative trail, a centre of mass below the ground (z > 0), a rider far from
+one line each): negative trail, a trail longer than the wheelbase, a wheel radius beyond any
+wheel, a centre of mass below the ground (z > 0) or far from the bicycle, a rider far from
 the bicycle, masses beyond any bicycle.  The thresholds are stated below.
 """
 
@@ -26,6 +27,8 @@ RIDER_REACH = 1.0
 or more than 3 m above the ground, is warned about."""
 RIDER_HEIGHT = 3.0
 """Highest plausible rider centre of mass above the ground (m)."""
+MAX_WHEEL_RADIUS = 1.5
+"""A wheel radius above this (m) is warned about (a high-wheeler's front wheel is about 0.75 m)."""
 
 
 def warn(message):
@@ -123,6 +126,15 @@ def warn_parameters(params, source):
     for body, z in (("B", params.zB), ("H", params.zH)):
         if z > 0:
             warn(f"{source}: centre of mass z{body} = {z:.4g} m is below the ground (z points down)")
+    if abs(params.c) > params.w:
+        warn(f"{source}: trail c = {params.c:.4g} m is longer than the wheelbase w = {params.w:.4g} m")
+    for wheel, r in (("rR", params.rR), ("rF", params.rF)):
+        if r > MAX_WHEEL_RADIUS:
+            warn(f"{source}: wheel radius {wheel} = {r:.4g} m is more than {MAX_WHEEL_RADIUS:g} m")
+    for body, x, z in (("B", params.xB, params.zB), ("H", params.xH, params.zH)):
+        if not (-RIDER_REACH <= x <= params.w + RIDER_REACH and z >= -RIDER_HEIGHT):
+            warn(f"{source}: centre of mass [x{body}, z{body}] = [{x:.4g}, {z:.4g}] m is far from the bicycle "
+                 f"(more than {RIDER_REACH:g} m beyond a wheel contact, or above {RIDER_HEIGHT:g} m)")
     total = params.mR + params.mF + sum(masses.values())
     if total > MAX_MASS:
         warn(f"{source}: total mass {total:.4g} kg is more than {MAX_MASS:g} kg")

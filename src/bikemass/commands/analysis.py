@@ -21,7 +21,7 @@ def register(sub):
                     "from eigenvalue derivatives (left/right eigenvectors) and the implicit function "
                     "theorem, exact to rounding; elasticities (p/v) dv/dp; a bar chart with --plot.")
     _bike_options(sens, "the derivatives and elasticities", "a bar chart of the elasticities")
-    sens.add_argument("--inputs", metavar="KEYS", default="",
+    sens.add_argument("--inputs", metavar="KEYS", default=None,
                       help="also w.r.t. geometry-level inputs: comma-separated dotted paths into the "
                            "bicycle YAML (sections.seat_stay.wall, geometry.trail, chart.head_tube_angle) "
                            "or, after 'rider.', the pose YAML (rider.chain.torso_lean); chained through "
@@ -106,7 +106,9 @@ def run_sensitivity(args):
     from ..errors import InputError
 
     options, params, S = _inputs(args)
-    keys = [k.strip() for k in args.inputs.split(",") if k.strip()]
+    keys = [k.strip() for k in (args.inputs or "").split(",") if k.strip()]
+    if args.inputs is not None and not keys:
+        raise InputError("--inputs", repr(args.inputs), "a comma-separated list of at least one dotted path")
     if keys and not 0 < args.step < 0.1:
         raise InputError("--step", args.step, "a relative step between 0 and 0.1")
     result = sensitivity(params, S, vmax=args.max_speed)

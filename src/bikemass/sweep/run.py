@@ -24,7 +24,7 @@ import re
 from contextlib import contextmanager
 from pathlib import Path
 
-from ..errors import InputError
+from ..errors import InputError, short
 from ..output import write_atomic
 from .evaluate import Chunk, finish_chunk, finish_chunk_pickled
 from .table import csv_lines, write_results
@@ -45,12 +45,22 @@ def require(module, extra="sweep"):
 
 
 def check_keys(spec):
-    """Every varied key names an input of the spec's bicycle or rider (InputError otherwise)."""
+    """Every varied key names an input of the spec's bicycle or rider, and the spec's stiffness
+    (and each stiffness name it varies) is one the bicycle has (InputError otherwise): a
+    misspelt choice fails once here instead of on every row."""
     from ..analysis.inputs import STIFFNESS_KEY, Model, get_path
     model = Model(spec.bike, spec.rider, spec.stiffness, spec.combine, origin=spec.source)
     for key in spec.keys:
         if key != STIFFNESS_KEY:
             get_path(model, key)
+    choices = [("stiffness", spec.stiffness)] + [(f"vary.{STIFFNESS_KEY}", value) for variable in spec.variables
+                                                 if variable.key == STIFFNESS_KEY for value in variable.values
+                                                 if isinstance(value, str)]
+    for key, choice in choices:
+        try:
+            model.frame_stiffness(choice)
+        except InputError as exc:
+            raise InputError(spec.source, key, f"{exc.expected} (got {short(choice)}: {exc.source}: {exc.key})") from None
 
 
 def chunk_size(count, slots=None, fixed=None, cheap=False):
