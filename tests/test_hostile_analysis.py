@@ -136,3 +136,13 @@ def test_absurd_parameter_files_are_warned_about(change, fragment):
     values = {**bm.parameters("benchmark").to_dict(), **change, "name": "absurd"}
     with pytest.warns(BikemassWarning, match=re.escape(fragment)):
         bm.parameters(bm.load_bicycle(values))
+
+
+@pytest.mark.parametrize("extra, key", [({"mass": "7500 kg"}, "body.mass"), ({"mass": "1 kg"}, "body.mass"),
+                                        ({"arm_length": "5 m"}, "body.arm_length"),
+                                        ({"shoulder_width": "3 m"}, "body.shoulder_width")])
+def test_absurd_bodies_from_height_and_mass_are_refused(extra, key):
+    import bikemass as bm
+    body = {"height": "1.80 m", "mass": "75 kg", "sex": "male", **extra}
+    with pytest.raises(InputError, match=f": {key}: .*between"):
+        bm.load_rider({"body": body, "bike": "jamis", "chain": {"torso_lean": "45 deg", "hands": "tops"}})

@@ -149,6 +149,14 @@ def joints(b: StatureBody):
             "hip": np.array([0.0, b.hip_y, b.lengths["torso"]]), "seat": b.diameters["thigh"] / 2}
 
 
+BMI_RANGE = (10.0, 100.0)
+"""Body-mass index (kg/m^2) a body from height and mass must have: beyond every recorded adult
+and child on both sides (a mass typed in grams, or a height in feet, lands outside)."""
+LENGTH_RANGES = {"arm_length": (0.25, 0.55), "shoulder_width": (0.15, 0.40)}
+"""Measured lengths as fractions of the height they must lie between (the stature table's
+typical values are about 0.39 and 0.26)."""
+
+
 def read_spec(node):
     """(name, :class:`StatureBody`) of a ``{height, mass, sex, ...}`` node; bad input -> InputError."""
     node.check_keys(required=SPEC_KEYS, optional=OPTIONAL_KEYS)
@@ -164,6 +172,14 @@ def read_spec(node):
         g = node["girths"]
         g.check_keys(optional=CYLINDERS)
         girths = {k: v.number("length", positive=True) for k, v in g.items()}
+    if not BMI_RANGE[0] <= mass / height ** 2 <= BMI_RANGE[1]:
+        node.fail(f"a body mass for a {height:.2f} m person between {BMI_RANGE[0] * height ** 2:.0f} and "
+                  f"{BMI_RANGE[1] * height ** 2:.0f} kg (body-mass index {BMI_RANGE[0]:g} to {BMI_RANGE[1]:g} "
+                  f"kg/m^2), got {node['mass'].value!r}", "mass")
+    for key, (low, high) in LENGTH_RANGES.items():
+        if key in optional and not low * height <= optional[key] <= high * height:
+            node.fail(f"{key.replace('_', ' ')} between {low:g} and {high:g} times the height ({low * height:.3f} to "
+                      f"{high * height:.3f} m), got {node[key].value!r}", key)
     if "inseam" in optional and not optional["inseam"] < height * tables().fractions["shoulder_height"]:
         node.fail(f"an inseam below the shoulder height, got {node['inseam'].value!r}", "inseam")
     lo, hi = DENSITY_RANGE
