@@ -182,3 +182,15 @@ def test_raster_size_is_bounded(tmp_path, meijaard):
     with pytest.raises(bm.InputError, match="pixels"):
         bm.save_figure(fig, tmp_path / "big.png", dpi=2000)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_web_api_refuses_typed_over_parameters_off_the_model():
+    pytest.importorskip("dash")
+    from bikemass.web import create_app
+    client = create_app().server.test_client()
+    for query, error in (("mB=-85", "URL: mB: a positive number, got -85"),
+                         ("lam=2", "URL: lam: a steer-axis tilt in (0, pi/2) rad, got 2"),
+                         ("c=1e300", "URL: c: a finite number in SI units (m, kg, kg m^2, rad) of magnitude at most 1e+12")):
+        for endpoint in ("/api/params", "/api/stability"):
+            reply = client.get(f"{endpoint}?bike=benchmark&rider=none&stiffness=infinite&{query}")
+            assert reply.status_code == 400 and reply.get_json() == {"error": error}

@@ -145,9 +145,14 @@ class Engine:
 
     # -- results --------------------------------------------------------------
     def parameters(self, state: PageState):
-        """The benchmark parameter set of ``state``, typed-over values applied."""
+        """The benchmark parameter set of ``state``, typed-over values applied (InputError for a set
+        the model is not defined for: negative mass, lam outside (0, pi/2), ...)."""
         base = self.base_parameters(state.bicycle_key, state.rider_key, state.combine)
-        return base.replace(**dict(state.overrides)) if state.overrides else base
+        if not state.overrides:
+            return base
+        from ..plausibility import check_parameters
+        from .state import SOURCE
+        return check_parameters(base.replace(**dict(state.overrides)), SOURCE)
 
     def evaluate(self, state: PageState, speeds=None):
         """:class:`Evaluation` of ``state`` over ``speeds`` (default grid)."""

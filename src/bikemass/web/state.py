@@ -11,6 +11,7 @@ import math
 from dataclasses import dataclass, field, replace
 from urllib.parse import urlencode
 
+from ..config import MAX_MAGNITUDE
 from ..errors import InputError
 from ..parameters import NAMES
 
@@ -140,9 +141,9 @@ def _number(name, text):
         value = float(text)
     except (TypeError, ValueError):
         value = math.nan
-    if not math.isfinite(value):
+    if not (math.isfinite(value) and abs(value) <= MAX_MAGNITUDE):
         expected = ("a finite number (deg)" if name.removeprefix(CHART_PREFIX) in CHART_ANGLES else
                     "a finite number (mm)" if name.startswith(CHART_PREFIX) else
                     "a finite number in SI units (m, kg, kg m^2, rad)")
-        raise InputError(SOURCE, name, expected)
+        raise InputError(SOURCE, name, f"{expected} of magnitude at most {MAX_MAGNITUDE:g}")
     return value
