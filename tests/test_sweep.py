@@ -172,21 +172,24 @@ def test_an_asynchronous_client_is_refused_in_one_line(tmp_path):
     asyncio.run(attempt())
 
 
-def test_table_cells_read_back_and_mixed_stiffness_values(tmp_path):
-    """A cell with a comma, quote, newline or carriage return reads back as one cell; a stiffness
-    key listing a name and a number gives a text column in Parquet (not a crash)."""
+def test_table_cells_read_back(tmp_path):
+    """A cell with a comma, quote, newline or carriage return reads back as one cell."""
     import io
 
-    import pyarrow.parquet as pq
-
-    from bikemass.sweep import read_spec, run_sweep
     from bikemass.sweep.table import csv_lines
     odd = ['a,b', 'say "x"', "two\nlines", "cr\rhere", "née"]
     lines = csv_lines(["k"], [{"k": v} for v in odd], [{}] * len(odd))
     assert [row[0] for row in csv.reader(io.StringIO("\n".join(lines) + "\n"))] == odd
-    rows = run_sweep(read_spec(_spec(tmp_path, "bike: benchmark\nvary:\n  stiffness: [infinite, 2.5]\n")), tmp_path / "o")
-    assert [r["stiffness"] for r in rows] == ["infinite", 2.5]
-    assert pq.read_table(tmp_path / "o" / "results.parquet").column("stiffness").to_pylist() == ["infinite", "2.5"]
+
+
+def test_a_number_among_stiffness_choices_is_refused(tmp_path, capsys):
+    """A stiffness is a choice or a file, never a number: refused at once, naming the element,
+    instead of an error on every row."""
+    spec = _spec(tmp_path, "bike: benchmark\nvary:\n  stiffness: [infinite, 2.5]\n")
+    assert main(["sweep", spec, "--out", str(tmp_path / "o"), "--quiet"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.count("\n") == 0 and "vary.stiffness[1]" in err and "stiffness choice" in err
+    assert not (tmp_path / "o").exists()
 
 
 def test_chunk_sizes():

@@ -116,15 +116,21 @@ def count_of(spec):
     return spec.n
 
 
+STIFFNESS_CHOICES = "infinite, steel, titanium, aluminum or a file"
+
+
 def _variable(key, node):
     if isinstance(node.value, list):
         if not node.value:
             node.fail("a non-empty list of values, or {from, to, num}")
-        values = tuple(v.string() if isinstance(v.value, str) and key == "stiffness" else v.number("dimensionless")
-                       for v in node.elements())
+        if key == "stiffness":
+            for v in node.elements():
+                if not isinstance(v.value, str):
+                    v.fail(f"a stiffness choice ({STIFFNESS_CHOICES}), got {v.value!r}")
+        values = tuple(v.string() if key == "stiffness" else v.number("dimensionless") for v in node.elements())
         return Variable(key, values=values)
     if key == "stiffness":
-        node.fail("a list of stiffness choices (infinite, steel, titanium, aluminum or files)")
+        node.fail(f"a list of stiffness choices ({STIFFNESS_CHOICES})")
     node.check_keys(required=("from", "to"), optional=("num",))
     low, high = node["from"].number("dimensionless"), node["to"].number("dimensionless")
     if not (np.isfinite(low) and np.isfinite(high) and low < high):

@@ -28,13 +28,6 @@ def csv_lines(keys, configurations, results):
             for c, r in zip(configurations, results)]
 
 
-def _column(values):
-    """A Parquet column's values: as they are, or all as text when they mix text with numbers
-    (a stiffness key can list both names and files)."""
-    kinds = {type(v) is str for v in values if v is not None}
-    return [None if v is None else str(v) for v in values] if len(kinds) > 1 else values
-
-
 def write_results(rows, keys, out, lines=None):
     """``out/results.csv`` (from ``lines``, one per row, when given) and, with pyarrow,
     ``out/results.parquet``; ``rows`` are dicts of the varied keys and the outputs."""
@@ -48,7 +41,7 @@ def write_results(rows, keys, out, lines=None):
     except ImportError:
         return
     from io import BytesIO
-    table = pa.table({c: _column([r.get(c) for r in rows]) for c in columns})
+    table = pa.table({c: [r.get(c) for r in rows] for c in columns})
     buf = BytesIO()
     pq.write_table(table, buf)
     write_atomic(Path(out) / "results.parquet", buf.getvalue())
