@@ -264,9 +264,6 @@ def uncertainty_csv(result):
 
 
 def run_sweep_command(args):
-    import os
-
-    from ..errors import InputError
     from ..output import dumps, write_atomic
     from ..progress import Progress
     from ..sweep import read_spec, run_sweep
@@ -274,9 +271,6 @@ def run_sweep_command(args):
     from ..sweep.figures import sweep_figures
 
     spec = read_spec(args.spec)
-    if args.workers is not None and not 1 <= args.workers <= 4 * (os.cpu_count() or 1):
-        raise InputError("--workers", args.workers, f"from 1 to {4 * (os.cpu_count() or 1)} worker processes "
-                         "(4 per core at most)")
     require_for_sweep(args)
     options = figure_options(args, f"x.{args.plot_format}")
     total = count_of(spec)

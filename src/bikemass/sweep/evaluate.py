@@ -32,9 +32,6 @@ class Chunk:
     def stop(self):
         return self.start + len(self.configurations)
 
-    def __len__(self):
-        return len(self.configurations)
-
 
 def _model(setup):
     from ..analysis.inputs import Model

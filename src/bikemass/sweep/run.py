@@ -102,8 +102,6 @@ def _missing_chunks(done, count, size):
 
 def _prepare(spec, out):
     out = Path(out)
-    if out.exists() and not out.is_dir():
-        raise InputError(out, "--out", "a directory (this is a file)")
     (out / "chunks").mkdir(parents=True, exist_ok=True)
     stamp = out / "sweep.json"
     record = {"spec": spec.source, "fingerprint": spec.fingerprint(), "keys": list(spec.keys)}
