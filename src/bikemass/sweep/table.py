@@ -28,12 +28,10 @@ def csv_lines(keys, configurations, results):
             for c, r in zip(configurations, results)]
 
 
-def write_results(rows, keys, out, lines=None):
-    """``out/results.csv`` (from ``lines``, one per row, when given) and, with pyarrow,
-    ``out/results.parquet``; ``rows`` are dicts of the varied keys and the outputs."""
+def write_results(rows, keys, out, lines):
+    """``out/results.csv`` (the header, then ``lines``: :func:`csv_lines`, one per row) and, with
+    pyarrow, ``out/results.parquet``; ``rows`` are dicts of the varied keys and the outputs."""
     columns = list(keys) + list(OUTPUTS)
-    if lines is None:
-        lines = csv_lines(keys, rows, rows)
     write_atomic(Path(out) / "results.csv", "\n".join([",".join(columns), *lines]) + "\n")
     try:
         import pyarrow as pa
