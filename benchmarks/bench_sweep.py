@@ -135,14 +135,13 @@ def _free_port():
         return s.getsockname()[1]
 
 
-def start_dask(n, stack, quiet_settings=True):
+def start_dask(n, stack):
     """A ``dask scheduler`` and ``n`` ``dask worker --nthreads 1`` processes on loopback (this
     source tree on their path; stopped when ``stack`` closes); returns the scheduler's address."""
     from distributed import Client
     address = f"tcp://127.0.0.1:{_free_port()}"
     env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(ROOT / "src"), os.environ.get("PYTHONPATH", "")])}
-    if quiet_settings:
-        env.update(dask_environment(QUIET_CLUSTER))
+    env.update(dask_environment(QUIET_CLUSTER))
     quiet = dict(env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     dask = [sys.executable, "-m", "dask"]
     procs = [subprocess.Popen(dask + ["scheduler", "--host", "127.0.0.1", "--port", address.rsplit(":", 1)[1],
