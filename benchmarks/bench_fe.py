@@ -9,7 +9,7 @@ BLAS threads (issue 10): the stiffness solve (``rotational_stiffness``: assembly
 LU) and the fix-rear modes (``solve_modes``: assembly + ``eigsh``) at several element
 sizes, each run ``--repeat`` times with the machine's default BLAS pool (for
 ``solve_modes`` its ``__wrapped__``: the same code without its
-:func:`bikemass.threads.one_blas_thread`, as bikemass ran before) and on one thread, the
+:func:`bikemass.core.threads.one_blas_thread`, as bikemass ran before) and on one thread, the
 two alternating so that other load on the machine hits both alike.  Median and max,
 since the stall is random.
 """
@@ -59,7 +59,7 @@ def blas_threads():
 
 
 def thread_comparison(structure, repeat):
-    from bikemass.threads import one_blas_thread
+    from bikemass.core.threads import one_blas_thread
 
     print(f"BLAS threads: default pool ({'/'.join(map(str, blas_threads()))} threads) vs one thread, "
           f"{repeat} repeats, median / max in ms; 'shipped': what bikemass runs")

@@ -20,7 +20,7 @@ from pathlib import Path
 from bench_riders import best_time          # the sibling script (run from benchmarks/ or by path)
 
 from bikemass.bicycle import load_bicycle
-from bikemass.config import Node
+from bikemass.core.config import Node
 from bikemass.rider import load_rider
 from bikemass.rider.body import load_body
 from bikemass.rider.seating import seat_rider

@@ -6,7 +6,7 @@ The last line is the whole stability analysis (tracked modes, every crossing of 
 as a root to 1e-13 m/s, exact and grid ranges, strict and marginal) against
 BicycleParameters' ``Bicycle.eig`` at the same 601 speeds (issue 14 asks for <= 0.25).
 Then the same analysis with the machine's default BLAS pool and on one BLAS thread
-(issue 10: does the stability core gain from :func:`bikemass.threads.one_blas_thread`?).
+(issue 10: does the stability core gain from :func:`bikemass.core.threads.one_blas_thread`?).
 """
 
 import tempfile
@@ -90,7 +90,7 @@ def _bicycle_eig(p, speeds):
 
 
 def _one_thread(fn, *args):
-    from bikemass.threads import one_blas_thread
+    from bikemass.core.threads import one_blas_thread
     with one_blas_thread():
         return fn(*args)
 

@@ -14,7 +14,7 @@ import yaml
 
 import bikemass as bm
 from bikemass.cli import main
-from bikemass.paths import bodies_dir
+from bikemass.core.paths import bodies_dir
 
 
 @pytest.fixture(scope="module")

@@ -9,7 +9,7 @@ import yaml
 
 from bikemass import catalog
 from bikemass.bicycle import bicycle_parameters, load_bicycle
-from bikemass.errors import InputError
+from bikemass.core.errors import InputError
 from bikemass.inertia import MassProperties
 from bikemass.materials import load_materials
 from bikemass.parts import Part

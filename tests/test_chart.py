@@ -10,7 +10,7 @@ import yaml
 from bikemass.bicycle import bicycle_parameters, load_bicycle
 from bikemass.bicycle.derived_chart import derived_chart
 from bikemass.cli import main
-from bikemass.errors import InputError
+from bikemass.core.errors import InputError
 from printed import number_after
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -100,7 +100,7 @@ def test_chain_pose_sits_on_a_chart_bicycle():
     from bikemass.rider.anthropometry import find_anthropometry
     from bikemass.rider.chain import load_chain_body
     from bikemass.rider.solve import solve_on_bicycle
-    from bikemass.config import Node
+    from bikemass.core.config import Node
 
     bike = load_bicycle("bmc-roadmachine@54")
     body = load_chain_body(find_anthropometry(Node("thesis_rider", "test", "body")), "thesis_rider")

@@ -13,7 +13,7 @@ import pytest
 import bikemass as bm
 from bikemass.bicycle import load_bicycle
 from bikemass.bicycle.contacts import SADDLE_RULES
-from bikemass.config import Node
+from bikemass.core.config import Node
 from bikemass.rider.body import load_body
 from bikemass.rider.seating import CONTACT_TOLERANCE, seat_rider
 
@@ -73,7 +73,7 @@ def test_the_saddle_goes_no_lower_than_the_seat_tube():
     """A 1.25 m child on the 61 (seat tube 573 mm + 40 mm of saddle): LeMond's 0.883 x
     inseam would put the saddle inside the frame; it stops at 613 mm, out of the child's
     reach, which is one error naming the shortfall."""
-    from bikemass.errors import InputError
+    from bikemass.core.errors import InputError
     bike = load_bicycle("bmc-roadmachine@61")
     child = {"height": "1.25 m", "mass": "25 kg", "sex": "male"}
     assert SADDLE_RULES["lemond"] * _inseam(child) < 0.613

@@ -2,8 +2,8 @@
 
 import pytest
 
-from bikemass.config import load_yaml
-from bikemass.errors import InputError
+from bikemass.core.config import load_yaml
+from bikemass.core.errors import InputError
 
 
 def write(tmp_path, text):

@@ -20,7 +20,7 @@ Numbers are compared numerically: each printed number must equal the shown one t
 in its last shown digit or to :data:`RELATIVE` of its value, whichever is larger (data
 written in full, 17 significant digits, differs in its last digits between CPUs, BLAS
 kernels and thread counts: up to 5e-13 relative measured, docs/cli.md "Numbers"), and two
-numbers below :data:`bikemass.output.ZERO` are equal (both zero in exact arithmetic); the
+numbers below :data:`bikemass.core.output.ZERO` are equal (both zero in exact arithmetic); the
 text around numbers must match word for word.
 """
 
@@ -35,7 +35,7 @@ import pytest
 import yaml
 
 from bikemass.cli import main
-from bikemass.output import ZERO
+from bikemass.core.output import ZERO
 from printed import NUMBER
 
 ROOT = Path(__file__).parents[1]

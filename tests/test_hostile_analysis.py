@@ -9,7 +9,7 @@ import pytest
 
 from bikemass.analysis.inputs import Model
 from bikemass.analysis.uncertainty import Spread, propagate, uncertainty
-from bikemass.errors import InputError
+from bikemass.core.errors import InputError
 from bikemass.sweep.run import run_sweep
 from bikemass.sweep.spec import MAX_CONFIGURATIONS, read_spec
 
@@ -132,7 +132,7 @@ def test_empty_sensitivity_inputs_are_refused(capsys):
                                               ({"xB": 30.0}, "centre of mass [xB, zB] = [30, -0.9] m is far")])
 def test_absurd_parameter_files_are_warned_about(change, fragment):
     import bikemass as bm
-    from bikemass.errors import BikemassWarning
+    from bikemass.core.errors import BikemassWarning
     values = {**bm.parameters("benchmark").to_dict(), **change, "name": "absurd"}
     with pytest.warns(BikemassWarning, match=re.escape(fragment)):
         bm.parameters(bm.load_bicycle(values))

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import bikemass as bm
-from bikemass.errors import InputTypeError
+from bikemass.core.errors import InputTypeError
 
 
 @pytest.fixture(scope="module")

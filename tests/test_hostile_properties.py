@@ -7,8 +7,8 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from bikemass.errors import InputError
-from bikemass.gate import parse_yaml
+from bikemass.core.errors import InputError
+from bikemass.core.gate import parse_yaml
 from hostile.corpus import run
 from hostile.generators import dump, shipped
 
@@ -99,7 +99,7 @@ def test_random_top_level_documents(loader, tmp_path):
 @given(st.binary(max_size=300) | st.text(max_size=300).map(str.encode))
 def test_the_gate_parses_or_refuses_any_bytes(data):
     """Arbitrary bytes through the gate: data or one InputError, nothing else."""
-    from bikemass.gate import decode
+    from bikemass.core.gate import decode
     try:
         parse_yaml(decode(data, Path("x.yaml")), Path("x.yaml"))
     except InputError as exc:

@@ -11,7 +11,7 @@ from bikemass.cli import main
 from bikemass.fe import frame_modes
 from bikemass.fe.modes import DENSE_LIMIT
 from bikemass.fe.model import build_mesh
-from bikemass.output import new_folder
+from bikemass.core.output import new_folder
 from bikemass.frame import frame_structure
 
 

@@ -17,7 +17,7 @@ import pytest
 import bicycleparameters as bp
 from bikemass.bicycle import load_bicycle
 from bikemass.cli import main
-from bikemass.errors import InputError
+from bikemass.core.errors import InputError
 from bikemass.parameter_text import (ParameterFileWarning, combined_front_frame, load_parameter_text,
                                      parse_parameter_text)
 from bikemass.stability import canonical_matrices, eigen_sweep, speed_grid

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from bikemass import paths
+from bikemass.core import paths
 from bikemass.cli import main
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -11,10 +11,10 @@ import pytest
 
 from bikemass.bicycle import load_bicycle
 from bikemass.cli import main
-from bikemass.config import Node
-from bikemass.convention import thesis_segment_rotation
-from bikemass.errors import InputError
-from bikemass.paths import bodies_dir
+from bikemass.core.config import Node
+from bikemass.core.convention import thesis_segment_rotation
+from bikemass.core.errors import InputError
+from bikemass.core.paths import bodies_dir
 from bikemass.rider import Rider
 from bikemass.rider.chain import joint_gaps, load_chain_body
 from bikemass.rider.pose import read_pose

@@ -9,7 +9,7 @@ import yaml
 
 from bikemass.bicycle import load_bicycle
 from bikemass.cli import main
-from bikemass.errors import InputError
+from bikemass.core.errors import InputError
 from bikemass.rider import load_rider
 from bikemass.rider.thesis_fit import compare_with_chain
 

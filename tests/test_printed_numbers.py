@@ -14,8 +14,8 @@ import pytest
 
 import bikemass
 from bikemass.cli import main
-from bikemass.output import (SIGNIFICANT, ZERO, as_shown, as_written, csv_text, dumps, formatted, table,
-                             with_units)
+from bikemass.core.output import (SIGNIFICANT, ZERO, as_shown, as_written, csv_text, dumps, formatted, table,
+                                  with_units)
 
 NOISE = 3e-17
 """Rounding noise of a zero computed from numbers of order 1 (a few units of 2**-53)."""

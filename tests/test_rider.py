@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 import yaml
 
-from bikemass.errors import InputError
+from bikemass.core.errors import InputError
 from bikemass.rider import THESIS_POSES, load_rider, shipped_poses
 
 REF = yaml.safe_load((Path(__file__).parents[1] / "reference" / "rider_tables.yaml").read_text())

@@ -73,7 +73,7 @@ def test_height_mass_body_on_jamis_and_cargo(tmp_path, bikes, sex, height, mass)
 
 
 def test_body_segments_scale_with_height_and_obey_overrides(tmp_path, bikes):
-    from bikemass.config import Node
+    from bikemass.core.config import Node
     from bikemass.rider.body import load_body
 
     def body(**spec):

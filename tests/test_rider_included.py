@@ -8,7 +8,7 @@ import yaml
 
 from bikemass import catalog
 from bikemass.cli import main
-from bikemass.errors import InputError
+from bikemass.core.errors import InputError
 
 
 def run(capsys, *argv):

@@ -114,7 +114,7 @@ POSTURE = {"torso_lean": 45.0, "neck": 0.0, "shoulder": 75.0, "elbow": 20.0, "hi
 
 
 def _posed(body, spec):
-    from bikemass.config import Node
+    from bikemass.core.config import Node
     from bikemass.rider import Rider
     from bikemass.rider.chain import ChainPose
     from bikemass.rider.pose import read_pose
@@ -127,7 +127,7 @@ def comparison_rows():
     """Per measured rider: the yeadon body and a height/mass body of the same height (from the
     yeadon lengths), mass and sex, both in :data:`POSTURE` with the hip joints at the origin.
     CoM (mm) relative to the hip joints, inertia about the CoM (kg m^2)."""
-    from bikemass.config import Node
+    from bikemass.core.config import Node
     from bikemass.rider.body import load_body
 
     rows = []

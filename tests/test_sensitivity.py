@@ -199,7 +199,7 @@ def test_resource_warnings_are_not_the_commands(monkeypatch, capsys):
     import warnings
 
     import bikemass.analysis.sensitivity as module
-    from bikemass.errors import BikemassWarning
+    from bikemass.core.errors import BikemassWarning
     real = module.sensitivity
 
     def leaky(*args, **kwargs):

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from bikemass.cli import main
-from bikemass.paths import frames_dir
+from bikemass.core.paths import frames_dir
 from bikemass.stability import canonical_matrices, follow_modes, speed_grid
 from thesis_sets import RIDERS, thesis_set
 

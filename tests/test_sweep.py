@@ -160,7 +160,7 @@ def test_an_asynchronous_client_is_refused_in_one_line(tmp_path):
 
     from distributed import Client, LocalCluster
 
-    from bikemass.errors import InputError
+    from bikemass.core.errors import InputError
     from bikemass.sweep import read_spec, run_sweep
     spec = read_spec(_spec(tmp_path, GRID))
 

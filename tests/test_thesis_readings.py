@@ -15,7 +15,7 @@ import yaml
 
 from bikemass.fe import equivalent_stiffness, frame_modes
 from bikemass.sections import RoundSection
-from bikemass.units import INCH
+from bikemass.core.units import INCH
 from thesis_frames import REFERENCE, jamis_structure, tables
 
 TABLES = tables()

@@ -18,7 +18,7 @@ from bikemass.fe import modes as fe_modes
 from bikemass.study import pipeline
 from bikemass.study.parallel import executor
 from bikemass.sweep import evaluate as sweep_evaluate
-from bikemass.threads import one_blas_thread
+from bikemass.core.threads import one_blas_thread
 from thesis_frames import jamis_structure
 
 OUTSIDE = 2

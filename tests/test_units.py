@@ -11,7 +11,7 @@ from hypothesis import given, settings, strategies as st
 
 from bikemass import catalog
 from bikemass.cli import main
-from bikemass.units import DIMENSIONS, INCH, POUND, UnitError, convert, dimension_of, to_si
+from bikemass.core.units import DIMENSIONS, INCH, POUND, UnitError, convert, dimension_of, to_si
 
 ROOT = Path(__file__).parents[1]
 FIXTURE = Path(__file__).parent / "data" / "shipped_parameters.json"

@@ -116,7 +116,7 @@ def test_wheel_holds_every_module_and_every_shipped_file(wheel):
 
 def test_installed_package_is_the_wheel_not_the_checkout(venv):
     bin_dir, elsewhere, env = venv
-    where = run([bin_dir / "python", "-c", "import bikemass, bikemass.paths as p; "
+    where = run([bin_dir / "python", "-c", "import bikemass, bikemass.core.paths as p; "
                  "print(bikemass.__file__); print(p.data_root())"], cwd=elsewhere, env=env).split("\n")
     venv_root = bin_dir.parent.resolve()
     for path in where[:2]:

@@ -17,7 +17,7 @@ import yaml
 from bikemass.materials import load_materials
 from bikemass.sections import RoundSection, SquareSection
 from bikemass.tubes import Structure, Tube
-from bikemass.units import INCH
+from bikemass.core.units import INCH
 
 REFERENCE = Path(__file__).parents[1] / "reference" / "frame_tables.yaml"
 

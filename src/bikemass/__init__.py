@@ -11,7 +11,7 @@ The Python API (docs/api.md)::
     fig = bm.plot_eigenvalues(result)               # a matplotlib Figure
 
 All quantities are SI (m, kg, s, rad, N) in the Meijaard et al. (2007) benchmark frame;
-see :mod:`bikemass.convention`.  The names below are imported on first use, so
+see :mod:`bikemass.core.convention`.  The names below are imported on first use, so
 ``import bikemass`` itself loads neither numpy nor scipy.
 """
 
@@ -32,11 +32,11 @@ _API = {
     "save_figure": "plots.figure", "geometry_chart": "bicycle.derived_chart", "plot_chart": "bicycle.chart_drawing",
     "sensitivity": "analysis.sensitivity", "geometry_sensitivity": "analysis.sensitivity",
     "uncertainty": "analysis.uncertainty", "sweep": "sweep",
-    "Combine": "choices", "Method": "choices", "Overlap": "choices", "Procedure": "choices",
-    "Beam": "choices", "Source": "choices", "Support": "choices", "MaterialName": "choices",
-    "Grip": "choices", "EigenPart": "choices", "Format": "choices",
+    "Combine": "core.choices", "Method": "core.choices", "Overlap": "core.choices",
+    "Procedure": "core.choices", "Beam": "core.choices", "Source": "core.choices", "Support": "core.choices",
+    "MaterialName": "core.choices", "Grip": "core.choices", "EigenPart": "core.choices", "Format": "core.choices",
     "Bicycle": "bicycle", "Rider": "rider", "BenchmarkParameters": "parameters",
-    "PARAMETER_NAMES": "parameters", "InputError": "errors", "BikemassWarning": "errors",
+    "PARAMETER_NAMES": "parameters", "InputError": "core.errors", "BikemassWarning": "core.errors",
     "load_parameter_text": "parameter_text", "MeasuredParameters": "parameter_text",
     "ParameterFileWarning": "parameter_text",
 }

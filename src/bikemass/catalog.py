@@ -7,7 +7,7 @@ file, a mapping holding either (as the YAML would), a
 :class:`~bikemass.parameters.BenchmarkParameters` set, or a :class:`Bicycle` already
 loaded.  A rider is a shipped pose name, a pose file, a mapping in any pose form the
 YAML accepts (placement, chain or lumped), a :class:`Rider`, or ``None``/``"none"``.
-Bad input raises :class:`~bikemass.errors.InputError` (a ValueError) naming the
+Bad input raises :class:`~bikemass.core.errors.InputError` (a ValueError) naming the
 source (``<mapping>`` for Python values), the key and what was expected.
 """
 
@@ -16,8 +16,8 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from .choices import RIGID, Beam, Combine, Method, Procedure, Source, check
-from .errors import InputError
+from .core.choices import RIGID, Beam, Combine, Method, Procedure, Source, check
+from .core.errors import InputError
 from .plausibility import check_stiffness
 
 COMBINE_CHOICES = Combine.values()
@@ -65,7 +65,7 @@ def load_bicycle(bicycle, name=None, size=None):
         return bicycle_from_mapping(bicycle, name or MAPPING, size)
     if isinstance(bicycle, (str, os.PathLike)):
         return load_file(os.fspath(bicycle), size)
-    from .errors import wrong_type
+    from .core.errors import wrong_type
     raise wrong_type("bicycle", bicycle, "a bicycle is a name, a file path, a mapping, a BenchmarkParameters "
                      "or a Bicycle")
 
@@ -109,7 +109,7 @@ def load_rider(rider, as_printed=False, name=None):
         return rider_from_mapping(rider, name or MAPPING, as_printed)
     if isinstance(rider, (str, os.PathLike)):
         return load_file(os.fspath(rider), as_printed=as_printed)
-    from .errors import wrong_type
+    from .core.errors import wrong_type
     raise wrong_type("rider", rider, "a rider is a pose name, a file path, a mapping, a Rider or None")
 
 
@@ -126,7 +126,7 @@ def parameters(bicycle, rider=None, combine=Combine.EXACT, method=Method.MESH, a
         unless ``allow_off_contact``.
     combine : {"exact", "thesis"}
         Rider + frame body: parallel-axis theorem (``exact``, default) or the thesis's
-        Eq. 3.6 (central inertias added), see :class:`~bikemass.choices.Combine`.
+        Eq. 3.6 (central inertias added), see :class:`~bikemass.core.choices.Combine`.
     method : {"mesh", "exact"}
         Mass properties from trimesh meshes (default) or closed-form solids.
 
@@ -166,10 +166,10 @@ def seated_rider(bicycle, rider, allow_off_contact=False, as_printed=False):
     InputError
         A contact further than 1 mm from the bicycle's (without ``allow_off_contact``), out
         of reach, a bicycle whose rear body already holds a rider (``rider_included``), or bad input.  Gaps allowed, and contacts that cannot be checked, are
-        :class:`~bikemass.errors.BikemassWarning` s.
+        :class:`~bikemass.core.errors.BikemassWarning` s.
     """
     import warnings
-    from .errors import BikemassWarning
+    from .core.errors import BikemassWarning
     from .rider.seating import seat_rider
     from .bicycle.benchmark import refuse_second_rider
     if rider is None or (isinstance(rider, str) and rider == "none"):
@@ -225,8 +225,8 @@ def stiffness(bicycle, which, source=Source.AUTO, procedure=Procedure.CONDENSED,
     material = which if isinstance(which, Material) else materials.get(os.fspath(which))
     if material is not None:
         return _material_stiffness(load_bicycle(bicycle), material, source, procedure, beam)
-    from .config import load_yaml
-    from .paths import closest_name
+    from .core.config import load_yaml
+    from .core.paths import closest_name
     path = os.fspath(which)
     if not os.path.lexists(path):          # an existing non-file reaches the input gate, which says what it is
         names = sorted(materials)

@@ -7,8 +7,8 @@ import sys
 import warnings
 
 from .commands.dialect import check_output
-from .errors import BikemassWarning, InputError, one_line
-from .stopping import Terminated, stop_on_signals
+from .core.errors import BikemassWarning, InputError, one_line
+from .core.stopping import Terminated, stop_on_signals
 
 COMMAND_MODULES = (
     "bicycle",
@@ -83,9 +83,9 @@ def main(argv=None):
 
 
 def _run(args):
-    from .gate import track_inputs
+    from .core.gate import track_inputs
     from .options import check_outputs
-    from .output import collect_warnings
+    from .core.output import collect_warnings
     status = 0
     with warnings.catch_warnings(record=True) as caught, collect_warnings(caught), track_inputs():
         warnings.simplefilter("always")

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .frozen import freeze, readonly, short_repr
+from .core.frozen import freeze, readonly, short_repr
 
 DEFAULT_MARGINAL = 2.0
 """Modulus (rad/s) below which an unstable eigenvalue counts as marginally stable (the thesis's)."""
@@ -42,18 +42,18 @@ def matrices(params, stiffness=None):
         from .plausibility import check_parameters
         base = canonical_matrices(check_parameters(params, "params"))
     else:
-        from .errors import wrong_type
+        from .core.errors import wrong_type
         raise wrong_type("params", params, "params must be BenchmarkParameters (bm.parameters) or CanonicalMatrices")
     return with_frame_stiffness(base, _stiffness(stiffness))
 
 
 def _stiffness(S):
     """``S`` checked as a 2x2 symmetric positive definite array (N m/rad), or None for rigid."""
-    from .choices import RIGID
+    from .core.choices import RIGID
     if S is None or (isinstance(S, str) and S in (RIGID, "rigid")):
         return None
     if isinstance(S, str):
-        from .errors import InputTypeError
+        from .core.errors import InputTypeError
         raise InputTypeError("stiffness", S, f"a 2x2 array in N m/rad; for a material use "
                              f"bm.stiffness(bicycle, {S!r})")
     from .catalog import stiffness_matrix
@@ -68,7 +68,7 @@ def speeds(start=0.0, stop=30.0, step=0.05):
     InputError
         Unless ``0 <= start < stop``, ``step > 0`` and at most 100000 speeds.
     """
-    from .errors import InputError
+    from .core.errors import InputError
     from .stability import speed_grid
     if not all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in (start, stop, step)):
         raise InputError("speeds", f"{start!r}:{stop!r}:{step!r}", "start, stop and step as numbers (m/s)")
@@ -243,7 +243,7 @@ def stability(params, stiffness=None, speeds=None, marginal=DEFAULT_MARGINAL):
     """
     from .stability import stability as analyse
     if isinstance(marginal, bool) or not isinstance(marginal, (int, float)) or not 0 < marginal < float("inf"):
-        from .errors import InputError
+        from .core.errors import InputError
         raise InputError("marginal", marginal, "a positive finite modulus in rad/s")
     S = _stiffness(stiffness)
     m = matrices(params, S)

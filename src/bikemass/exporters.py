@@ -7,12 +7,12 @@ benchmark parameter file that bikemass reads back (and refuses to add a second r
 BicycleParameters package reads from ``bicycles/<Name>/Parameters/``: one
 ``name = value`` line per parameter, ``#`` comment lines allowed.  Values are
 written with ``repr`` (17 significant digits) so they read back bit for bit (below
-:data:`bikemass.output.ZERO` as 0, like every number bikemass writes).
+:data:`bikemass.core.output.ZERO` as 0, like every number bikemass writes).
 """
 
-from .choices import PARAMETER_FORMATS as FORMATS
-from .errors import InputError
-from .output import as_written, dumps, table, with_units
+from .core.choices import PARAMETER_FORMATS as FORMATS
+from .core.errors import InputError
+from .core.output import as_written, dumps, table, with_units
 from .parameters import DESCRIPTIONS, NAMES, parameter_units
 
 

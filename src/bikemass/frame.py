@@ -2,7 +2,7 @@
 (``bm.frame_stiffness``; :func:`bikemass.stiffness` also knows published values) and its
 natural frequencies (``bm.frame_modes``)."""
 
-from .choices import Beam, Procedure, Support, check
+from .core.choices import Beam, Procedure, Support, check
 from .fe.defaults import DEFAULT_ELEMENT_SIZE
 from .options import MAX_ELEMENTS
 
@@ -26,7 +26,7 @@ def frame_structure(bicycle):
         If the bicycle's file names no ``structure:`` (e.g. a parameter file).
     """
     from .catalog import load_bicycle
-    from .errors import InputError
+    from .core.errors import InputError
 
     model = load_bicycle(bicycle)
     if model.structure is None:
@@ -57,7 +57,7 @@ def frame_stiffness(bicycle, material=None, procedure=Procedure.CONDENSED, beam=
     """
     from .fe import equivalent_stiffness
 
-    from .errors import InputError
+    from .core.errors import InputError
 
     procedure, beam = check(Procedure, procedure), check(Beam, beam)
     structure, material = frame_structure(bicycle), _material(material)
@@ -109,7 +109,7 @@ def frame_modes(bicycle, support=Support.FREE, count=10, material=None, element_
     Modes
         ``.frequencies_hz`` (count,) ascending, ``.shapes`` (n_dof, count) mass-normalised.
     """
-    from .errors import InputError
+    from .core.errors import InputError
     from .fe import frame_modes as solve
     from .fe.model import element_count
 

@@ -1,7 +1,7 @@
 """Mass properties: mass (kg), centre of mass (m) and inertia tensor (kg m^2).
 
 The inertia tensor is about the centre of mass with axes parallel to the
-benchmark frame (:mod:`bikemass.convention`); products of inertia are tensor
+benchmark frame (:mod:`bikemass.core.convention`); products of inertia are tensor
 elements (``Ixz = -integral(x z dm)``).
 """
 

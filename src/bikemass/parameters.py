@@ -77,7 +77,7 @@ NAMES = tuple(f.name for f in fields(BenchmarkParameters))
 
 
 def dimension(name):
-    """The dimension (:mod:`bikemass.units`) of parameter ``name``."""
+    """The dimension (:mod:`bikemass.core.units`) of parameter ``name``."""
     if name == "lam":
         return "angle"
     if name == "g":
@@ -91,7 +91,7 @@ def parameter_units():
 
 
 def from_node(node):
-    """Build :class:`BenchmarkParameters` from a config :class:`~bikemass.config.Node` with the 26 names."""
+    """Build :class:`BenchmarkParameters` from a config :class:`~bikemass.core.config.Node` with the 26 names."""
     node.check_keys(required=NAMES, optional=("name", "description", "source", "rider_included", "units"))
     if node.has("units"):
         _check_units(node["units"])

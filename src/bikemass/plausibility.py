@@ -1,10 +1,10 @@
 """Physical plausibility: errors where the model is undefined, warnings where the input is legal
 but unusual.
 
-Errors (:class:`~bikemass.errors.InputError`, naming the file and key): a steer-axis tilt
+Errors (:class:`~bikemass.core.errors.InputError`, naming the file and key): a steer-axis tilt
 ``lam`` outside (0, pi/2), an inertia tensor that is not symmetric, not positive
 semi-definite or violates the triangle inequality, a stiffness matrix that is not
-symmetric or not positive definite.  Warnings (:class:`~bikemass.errors.BikemassWarning`,
+symmetric or not positive definite.  Warnings (:class:`~bikemass.core.errors.BikemassWarning`,
 one line each): negative trail, a trail longer than the wheelbase, a wheel radius beyond any
 wheel, a centre of mass below the ground (z > 0) or far from the bicycle, a rider far from
 the bicycle, masses beyond any bicycle.  The thresholds are stated below.
@@ -16,7 +16,7 @@ import warnings
 
 import numpy as np
 
-from .errors import BikemassWarning
+from .core.errors import BikemassWarning
 
 RELATIVE_TOLERANCE = 1e-9
 """Asymmetry, negative moments and triangle excess below this fraction of the largest moment pass."""
@@ -96,7 +96,7 @@ def check_parameters(params, source):
     configurations, uncertainty draws); plain arithmetic, a few microseconds.  The triangle
     inequality is not asked for here: a measured near-planar frame sits on its boundary and a
     small spread crosses it."""
-    from .errors import InputError, short
+    from .core.errors import InputError, short
     from .parameters import NAMES
     values = {key: getattr(params, key) for key in NAMES}
     for key, value in values.items():

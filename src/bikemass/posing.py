@@ -1,14 +1,14 @@
 """A rider posed by joint angles on a bicycle's contacts (``bm.pose_rider``): hips on the
 saddle, hands on a grip, feet on the pedals, the free joint angles solved (scipy least
 squares, :mod:`bikemass.rider.solve`).  Joint angles outside typical human ranges are
-reported with :mod:`warnings` (:class:`~bikemass.errors.BikemassWarning`), not refused."""
+reported with :mod:`warnings` (:class:`~bikemass.core.errors.BikemassWarning`), not refused."""
 
 import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from .choices import Grip, check
-from .frozen import freeze, short_repr
+from .core.choices import Grip, check
+from .core.frozen import freeze, short_repr
 
 DEFAULT_BODY = "thesis_rider"
 """The anthropometry (``bodies/``) posed when none is named."""
@@ -57,7 +57,7 @@ def _degrees(value, what):
     """``value`` as a float angle in [-:data:`MAX_ANGLE`, :data:`MAX_ANGLE`] deg, else InputError."""
     import math
     import numbers
-    from .errors import InputError, short
+    from .core.errors import InputError, short
     if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value) \
             or abs(value) > MAX_ANGLE:
         raise InputError(what, short(value), f"an angle in degrees within +-{MAX_ANGLE:g}")
@@ -94,8 +94,8 @@ def pose_rider(bicycle, body=DEFAULT_BODY, hands=None, crank=None, fixed=None, n
         A bicycle without contacts, an unknown grip or joint, or a contact out of reach.
     """
     from .catalog import load_bicycle
-    from .config import Node
-    from .errors import BikemassWarning, InputError
+    from .core.config import Node
+    from .core.errors import BikemassWarning, InputError
     from .rider import Rider
     from .rider.body import chain_of, load_body
     from .rider.chain import JOINTS, joint_gaps
@@ -110,7 +110,7 @@ def pose_rider(bicycle, body=DEFAULT_BODY, hands=None, crank=None, fixed=None, n
     chain_body = chain_of(loaded, body_node)
     hands = default_hands(model.contacts) if hands is None else check(Grip, hands, "hands").value
     if fixed is not None and not isinstance(fixed, Mapping):
-        from .errors import wrong_type
+        from .core.errors import wrong_type
         raise wrong_type("fixed", fixed, "a mapping of joint -> angle (deg)")
     fixed = dict(fixed or {})
     for joint, value in fixed.items():

@@ -19,8 +19,8 @@ import copy
 import pickle
 from collections import OrderedDict
 
-from ..config import Node, load_yaml
-from ..errors import InputError
+from ..core.config import Node, load_yaml
+from ..core.errors import InputError
 from ..parameters import NAMES
 
 RIDER_PREFIX = "rider."
@@ -124,7 +124,7 @@ class Model:
         from ..bicycle.loader import _is_parameter_text, _with_base
         from ..bicycle.sizes import split_size
         from ..parameter_text import load_parameter_text
-        from ..paths import frames_dir, resolve
+        from ..core.paths import frames_dir, resolve
         from ..rider import poses_dir
 
         self.bike, self.rider, self.stiffness, self.combine, self.method = bike, rider, stiffness, combine, method

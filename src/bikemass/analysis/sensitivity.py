@@ -102,11 +102,11 @@ def sensitivity(params, S=None, vmax=30.0, names=NAMES):
 def _checked(params, S, vmax, names):
     """``(params, S, names)`` checked as :func:`sensitivity` needs them (InputError otherwise)."""
     from ..dynamics import _stiffness
-    from ..errors import InputError, short
+    from ..core.errors import InputError, short
     from ..parameters import BenchmarkParameters
     from ..plausibility import check_parameters
     if not isinstance(params, BenchmarkParameters):
-        from ..errors import wrong_type
+        from ..core.errors import wrong_type
         raise wrong_type("params", params, "BenchmarkParameters (bm.parameters)")
     check_parameters(params, "params")
     S = _stiffness(S)
@@ -163,10 +163,10 @@ def geometry_sensitivity(model, keys, result=None, step=GEOMETRY_STEP):
     an estimate of the finite-difference error.
     Returns ``{key: {value, step, d_weave_speed, d_capsize_speed, difference_check}}``.
     """
-    from ..errors import InputError, short
+    from ..core.errors import InputError, short
     from .inputs import Model
     if not isinstance(model, Model):
-        from ..errors import wrong_type
+        from ..core.errors import wrong_type
         raise wrong_type("model", model, "a bikemass.analysis.inputs.Model")
     if isinstance(keys, str):
         keys = [keys]

@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import InputError
+from ..core.errors import InputError
 from ..parameters import NAMES
 from .crossings import critical_speeds
 from .model import MATRICES, STEP, system, values_of

@@ -13,10 +13,10 @@ front frame, the others the rear frame.  ``combine``:
 
 import numpy as np
 
-from ..errors import InputError
+from ..core.errors import InputError
 from ..inertia import combine as combine_exact
 from ..inertia import combine_without_parallel_axis
-from ..errors import InputError
+from ..core.errors import InputError
 from ..parameters import BenchmarkParameters
 from ..plausibility import warn_parameters, warn_rider
 from ..parts import body_properties

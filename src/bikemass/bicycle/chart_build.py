@@ -13,8 +13,8 @@ import functools
 
 import numpy as np
 
-from ..config import Node, load_yaml
-from ..paths import frames_dir
+from ..core.config import Node, load_yaml
+from ..core.paths import frames_dir
 from .chart import check_redundant, construct, read_chart
 
 CHART_TOP_KEYS = ("name", "source", "description", "note", "chart", "sizes", "frame", "cockpit", "saddle",
@@ -44,7 +44,7 @@ HOOP_THICKNESS = 0.02
 
 
 def load_defaults():
-    """The chart defaults (``frames/chart_defaults.yaml``) as a :class:`~bikemass.config.Node`."""
+    """The chart defaults (``frames/chart_defaults.yaml``) as a :class:`~bikemass.core.config.Node`."""
     path = frames_dir() / "chart_defaults.yaml"
     node = _parsed(path, path.stat().st_mtime_ns)
     return Node(copy.deepcopy(node.value), node.source, node.key)

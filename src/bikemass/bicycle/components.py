@@ -10,7 +10,7 @@ A ``lumped`` component is a body known by its mass, CoM ``at`` and ``inertia``.
 
 import numpy as np
 
-from ..convention import thesis_segment_rotation
+from ..core.convention import thesis_segment_rotation
 from ..inertia import MassProperties
 from ..plausibility import check_inertia
 from ..parts import Part

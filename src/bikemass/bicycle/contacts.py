@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..frozen import frozen_fields
+from ..core.frozen import frozen_fields
 
 HAND_POSITIONS = ("tops", "hoods", "drops", "aero")
 """The usual grip names (``bikemass pose --hands``); a bicycle may name others."""

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..convention import steer_axis, steer_axis_tilt
+from ..core.convention import steer_axis, steer_axis_tilt
 
 STEER_AXIS_TOLERANCE = 0.002
 """How far (m) a head-tube keypoint may sit from the steer axis of wheelbase/trail/head angle."""

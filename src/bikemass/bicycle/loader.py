@@ -4,7 +4,7 @@ bicycle: a YAML file naming such a parameter file (``parameters:``) next to ``co
 ``stiffness:``, so that riders can be posed on it.
 
 The file format is described in docs/bicycles.md.  Every problem is reported as
-one :class:`~bikemass.errors.InputError` naming the file and the key.
+one :class:`~bikemass.core.errors.InputError` naming the file and the key.
 """
 
 import os
@@ -13,15 +13,15 @@ from pathlib import Path
 
 import numpy as np
 
-from ..config import Node, load_yaml
-from ..gate import read_text
-from ..errors import InputError, short
+from ..core.config import Node, load_yaml
+from ..core.gate import read_text
+from ..core.errors import InputError, short
 from ..inertia import MassProperties
 from ..materials import load_materials, read_materials
 from ..parameter_text import load_parameter_text, looks_like_parameter_text
 from ..parameters import from_node, is_parameter_file
 from ..parts import Part
-from ..paths import frames_dir, resolve
+from ..core.paths import frames_dir, resolve
 from ..placement import Placement
 from ..plausibility import check_parameter_node, check_stiffness
 from ..sections import RoundSection, SquareSection
@@ -58,7 +58,7 @@ def bicycle_from_mapping(mapping, source, size=None):
     """:class:`Bicycle` from a Python mapping holding what a bicycle or parameter file holds;
     errors name ``source``.  A ``base`` is looked up as a shipped name or relative to the
     working folder."""
-    from ..gate import plain_input
+    from ..core.gate import plain_input
     node = Node(plain_input(mapping, source), source, "")
     if not isinstance(node.value, dict):
         node.fail("a mapping of a bicycle or of the 26 benchmark parameters")

@@ -4,8 +4,8 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..errors import InputError, shown
-from ..frozen import frozen_fields, short_repr
+from ..core.errors import InputError, shown
+from ..core.frozen import frozen_fields, short_repr
 from ..parts import body_properties
 from .components import BODIES
 

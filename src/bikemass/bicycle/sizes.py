@@ -15,7 +15,7 @@ and ``crank_length``.  ``BIKE@SIZE`` (or ``--size``) picks one size.
 
 from pathlib import Path
 
-from ..config import Node
+from ..core.config import Node
 
 SIZED_SECTIONS = {"chart": ("units", "tolerances", "note"), "cockpit": ("grips", "sections", "note"),
                   "saddle": ("note",)}

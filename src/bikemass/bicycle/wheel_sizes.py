@@ -7,7 +7,7 @@ rolling radius is taken as ``BSD / 2 + tire height`` with the tire's height equa
 width (a round tire on its rim), e.g. 700 x 25 mm: 0.311 + 0.025 = 0.336 m.
 """
 
-from ..errors import InputError
+from ..core.errors import InputError
 
 BEAD_SEAT_DIAMETERS = {
     "700c": 0.622, "29": 0.622, "28": 0.622,

@@ -89,7 +89,7 @@ def _bike_options(p, data, figure):
 def _inputs(args):
     """Checked figure options (or None), parameters and stiffness of BIKE/--rider/--stiffness."""
     from .. import catalog
-    from ..errors import InputError
+    from ..core.errors import InputError
 
     options = dialect.figure_checked(args)
     if not 0 < args.max_speed < 1e4:
@@ -103,7 +103,7 @@ def _title(args):
 
 def run_sensitivity(args):
     from ..analysis.sensitivity import geometry_sensitivity, sensitivity, sensitivity_figure
-    from ..errors import InputError
+    from ..core.errors import InputError
 
     options, params, S = _inputs(args)
     keys = [k.strip() for k in (args.inputs or "").split(",") if k.strip()]
@@ -123,7 +123,7 @@ def run_sensitivity(args):
             return sensitivity_table(result, _title(args), geometry)
         if fmt == "csv":
             return sensitivity_csv(result, geometry)
-        from ..output import dumps
+        from ..core.output import dumps
         doc = result.to_dict()
         if geometry:
             doc["inputs"] = geometry
@@ -155,7 +155,7 @@ def sensitivity_csv(result, geometry=None):
 
 
 def sensitivity_table(result, title, geometry=None):
-    from ..output import table
+    from ..core.output import table
 
     ew, ec = result.elasticities("weave_speed"), result.elasticities("capsize_speed")
     rows = [[n, result.params[n], result.d_weave_speed[n], ew[n], result.d_capsize_speed[n], ec[n]]
@@ -185,7 +185,7 @@ def _speed(v):
 def read_std_file(path):
     """``{key: Spread}`` from the ``uncertainty:`` mapping of a YAML file."""
     from ..analysis.uncertainty import read_spreads
-    from ..config import load_yaml
+    from ..core.config import load_yaml
     node = load_yaml(path)
     node.check_keys(required=("uncertainty",), optional=("name", "description", "source"))
     return read_spreads(node["uncertainty"])
@@ -194,7 +194,7 @@ def read_std_file(path):
 def run_uncertainty(args):
     from ..analysis.inputs import Model
     from ..analysis.uncertainty import Spread, propagate, uncertainty_figure
-    from ..errors import InputError
+    from ..core.errors import InputError
 
     options = _inputs(args)[0]
     if not 2 <= args.samples <= 10 ** 6:
@@ -227,7 +227,7 @@ UNCERTAINTY_UNITS = {"M": "kg m^2", "C1": "kg m^2 (per m/s)", "K0": "kg m (times
 
 
 def uncertainty_table(result, title):
-    from ..output import table
+    from ..core.output import table
 
     lines = [title, f"method {result.method}; inputs: " + ", ".join(
         f"{k} ({v['distribution']} std {v['std']:.4g})" for k, v in result.inputs.items()), ""]
@@ -264,8 +264,8 @@ def uncertainty_csv(result):
 
 
 def run_sweep_command(args):
-    from ..output import dumps, write_atomic
-    from ..progress import Progress
+    from ..core.output import dumps, write_atomic
+    from ..core.progress import Progress
     from ..sweep import read_spec, run_sweep
     from ..sweep.spec import count_of
     from ..sweep.figures import sweep_figures

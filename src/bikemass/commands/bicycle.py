@@ -3,7 +3,7 @@ benchmark parameters, a side-view drawing, or a 3D model."""
 
 from pathlib import Path
 
-from ..choices import PARAMETER_FORMATS
+from ..core.choices import PARAMETER_FORMATS
 from . import dialect
 from .sizes import add_size_option, every_size
 
@@ -12,8 +12,8 @@ MODEL_FORMATS = ("glb", "stl", "obj")
 
 def _params_description():
     """``params --help``'s description, with the shipped bicycles listed (or why none are)."""
-    from ..errors import InputError
-    from ..paths import available, frames_dir
+    from ..core.errors import InputError
+    from ..core.paths import available, frames_dir
     try:
         shipped = ", ".join(available(frames_dir()))
     except InputError as exc:
@@ -82,7 +82,7 @@ def _seated(args):
 
 def run_params(args):
     from .. import catalog
-    from ..errors import InputError
+    from ..core.errors import InputError
     from ..exporters import format_parameters
 
     if args.compare:
@@ -117,7 +117,7 @@ def comparison(params, reference, name, reference_name, fmt):
 
 def comparison_table(params, reference, name, reference_name):
     """Plain-text table: each parameter of ``params`` beside ``reference`` and their difference."""
-    from ..output import table
+    from ..core.output import table
     from ..parameters import DESCRIPTIONS
 
     ours, theirs = params.to_dict(), reference.to_dict()
@@ -148,8 +148,8 @@ def run_draw(args):
 def run_export(args):
     from .. import catalog
     from ..bicycle.scene import build_scene, export_scene
-    from ..errors import InputError
-    from ..output import write_atomic
+    from ..core.errors import InputError
+    from ..core.output import write_atomic
 
     fmt = Path(args.output).suffix.lower().lstrip(".")
     if fmt not in MODEL_FORMATS:

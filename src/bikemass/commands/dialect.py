@@ -12,17 +12,17 @@
 * warnings and errors go to stderr, one line each; ``--quiet`` also drops progress bars,
   never warnings or errors;
 * JSON and YAML documents carry their units in one top-level ``units`` block
-  (:func:`bikemass.output.with_units`).
+  (:func:`bikemass.core.output.with_units`).
 
 Arguments shared by several commands (BIKE, ``--rider``, ``--combine``, ``--stiffness``,
 ``--speeds``, ``--method``) are defined here once.  Only the standard library and
-:mod:`bikemass.choices` are imported, so ``bikemass --help`` stays fast.
+:mod:`bikemass.core.choices` are imported, so ``bikemass --help`` stays fast.
 """
 
 import sys
 from pathlib import Path
 
-from ..choices import RIGID, Combine, Format, Method
+from ..core.choices import RIGID, Combine, Format, Method
 from .figure_options import add_figure_options, figure_options, write_figure
 
 TABULAR = (Format.TABLE.value, Format.CSV.value, Format.JSON.value, Format.YAML.value)
@@ -100,7 +100,7 @@ def add_speeds(p):
 
 def parse_speeds(text, max_speeds=None):
     """``"start:stop:step"`` -> speed grid (m/s); InputError if malformed or over ``max_speeds``."""
-    from ..errors import InputError, short
+    from ..core.errors import InputError, short
     from ..options import MAX_SPEED, MAX_SPEEDS, MIN_SPEED_STEP
     from ..stability import speed_grid
 
@@ -124,7 +124,7 @@ def check_output(args):
     """Before any work: an ``-o`` file that looks like a figure is refused (figures go to --plot)."""
     if getattr(args, "format_choices", None) and args.output and \
             Path(args.output).suffix.lower() in IMAGE_SUFFIXES:
-        from ..errors import InputError
+        from ..core.errors import InputError
         raise InputError(args.output, "-o", "a data file (table, csv, json, yaml); a figure goes to --plot FILE")
 
 
@@ -154,7 +154,7 @@ def emit(args, render):
         return
     text = render(data_format(args))
     if args.output:
-        from ..output import write_atomic
+        from ..core.output import write_atomic
         write_atomic(args.output, text)
     else:
         sys.stdout.write(text)
@@ -163,7 +163,7 @@ def emit(args, render):
 def write_data(args, text):
     """Write already rendered data: to ``-o`` (atomically) or stdout, unless ``--quiet``."""
     if getattr(args, "output", None):
-        from ..output import write_atomic
+        from ..core.output import write_atomic
         write_atomic(args.output, text)
     elif not getattr(args, "quiet", False):
         sys.stdout.write(text)
@@ -181,11 +181,11 @@ def save_plot(args, fig, options):
 
 def document(data, fmt, extra_units=None):
     """``data`` as JSON or YAML text with its ``units`` block."""
-    from ..output import dumps, with_units
+    from ..core.output import dumps, with_units
     return dumps(with_units(data, extra_units), fmt)
 
 
 def csv_text(headers, rows):
-    """CSV text (:func:`bikemass.output.csv_text`: numbers in full, below ``ZERO`` as 0)."""
-    from ..output import csv_text as text
+    """CSV text (:func:`bikemass.core.output.csv_text`: numbers in full, below ``ZERO`` as 0)."""
+    from ..core.output import csv_text as text
     return text(headers, rows)

@@ -32,7 +32,7 @@ def add_figure_options(parser, xlim=None, ylim=None):
 
 
 def _numbers(text, option, separator, count, expected):
-    from ..errors import InputError
+    from ..core.errors import InputError
     try:
         values = tuple(float(x) for x in text.split(separator))
     except ValueError:
@@ -43,7 +43,7 @@ def _numbers(text, option, separator, count, expected):
 
 
 def _limit(args, name):
-    from ..errors import InputError
+    from ..core.errors import InputError
     text = getattr(args, name, None)
     if text is None:
         return None
@@ -57,7 +57,7 @@ def _limit(args, name):
 def figure_options(args, path):
     """:class:`FigureOptions` from parsed ``args``; InputError (one line) for a bad option or a
     figure file ``path`` whose format matplotlib cannot write.  Call before the work."""
-    from ..errors import InputError
+    from ..core.errors import InputError
     from ..plots.figure import figure_format
 
     if path is not None:

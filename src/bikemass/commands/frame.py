@@ -1,6 +1,6 @@
 """``bikemass stiffness`` and ``bikemass modes``: the rear frame's beam model (S and natural frequencies)."""
 
-from ..choices import Beam, Procedure, Support
+from ..core.choices import Beam, Procedure, Support
 from ..fe.defaults import DEFAULT_ELEMENT_SIZE
 from . import dialect
 from .sizes import add_size_option, every_size
@@ -63,14 +63,14 @@ def run_stiffness(args):
         rows = [["roll", *S[0]], ["steer", *S[1]]]
         if fmt == "csv":
             return dialect.csv_text(["S (N m/rad)", "roll", "steer"], rows)
-        from ..output import table
+        from ..core.output import table
         return f"S (N m/rad), procedure {args.procedure}\n" + table(["", "roll", "steer"], rows, "{:.1f}")
     dialect.emit(args, render)
 
 
 def run_modes(args):
     from ..catalog import load_bicycle
-    from ..errors import InputError
+    from ..core.errors import InputError
     from ..fe.model import element_count
     from ..frame import frame_modes, frame_structure
 
@@ -94,6 +94,6 @@ def run_modes(args):
         rows = [[i + 1, f] for i, f in enumerate(modes.frequencies_hz)]
         if fmt == "csv":
             return dialect.csv_text(["mode", "frequency (Hz)"], rows)
-        from ..output import table
+        from ..core.output import table
         return f"natural frequencies, {args.bc}\n" + table(["mode", "frequency (Hz)"], rows, "{:.3f}")
     dialect.emit(args, render)

@@ -50,7 +50,7 @@ def _columns(result):
 def chart_table(result, csv=False):
     """Rows = chart keys (mm, deg), columns = bicycles."""
     from ..bicycle.derived_chart import ANGLES, CHART_ORDER
-    from ..output import table
+    from ..core.output import table
 
     columns = list(_columns(result))
 
@@ -70,7 +70,7 @@ def chart_table(result, csv=False):
 
 
 def run_geometry(args):
-    from ..errors import InputError
+    from ..core.errors import InputError
 
     if args.plot and len(args.bikes) != 1:
         raise InputError("--plot", args.plot, "one BIKE to draw (got several)")
@@ -90,7 +90,7 @@ def run_geometry(args):
 def _plot(args):
     from ..bicycle.chart_drawing import plot_chart
     from ..bicycle.loader import bicycle_sizes, load_bicycle
-    from ..errors import InputError
+    from ..core.errors import InputError
     from .figure_options import figure_options, write_figure
 
     options = figure_options(args, args.plot)

@@ -3,7 +3,7 @@
 
 import warnings
 
-from ..choices import Grip
+from ..core.choices import Grip
 from . import dialect
 from .sizes import add_size_option, every_size
 
@@ -49,7 +49,7 @@ def register(sub):
 def _fixed(args):
     from argparse import ArgumentTypeError
 
-    from ..errors import InputError
+    from ..core.errors import InputError
     from ..options import angle
     from ..rider.chain import JOINTS
     fixed = {}
@@ -67,7 +67,7 @@ def _fixed(args):
 
 
 def _report(solution, gaps, hands, crank):
-    from ..output import as_written, table
+    from ..core.output import as_written, table
     from ..rider.chain import JOINTS
     pose = solution.pose
     legs = "symmetric legs, feet on the crank axis" if crank is None else f"crank {crank:g} deg"
@@ -122,7 +122,7 @@ FIT_UNITS = {"plane_gaps": "m", "fit_rms": "m", "fit_max": "m", "chain_gap": "m"
 
 
 def run_fit(args):
-    from ..errors import BikemassWarning
+    from ..core.errors import BikemassWarning
     from ..rider import THESIS_POSES
     from ..rider.thesis_fit import compare_with_chain
 
@@ -150,7 +150,7 @@ def _fit_record(r):
 
 
 def _fit_text(args, fits, fmt):
-    from ..output import as_written, table
+    from ..core.output import as_written, table
     from ..rider.chain import JOINTS
 
     records = {pose: _fit_record(r) for pose, r in fits.items()}

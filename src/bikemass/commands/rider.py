@@ -1,6 +1,6 @@
 """``bikemass rider POSE`` and ``bikemass riders``: rider mass, centre of mass and inertia."""
 
-from ..choices import Overlap
+from ..core.choices import Overlap
 from . import dialect
 
 TABLE_3_4_ROWS = (("mass (kg)", lambda p: p.mass),
@@ -44,9 +44,9 @@ def _common_options(p):
 
 
 def _clean(x, digits=4):
-    """Float rounded for display (after :func:`bikemass.output.as_shown`), without a minus sign
+    """Float rounded for display (after :func:`bikemass.core.output.as_shown`), without a minus sign
     on a rounded zero."""
-    from ..output import as_shown
+    from ..core.output import as_shown
     return round(as_shown(x), digits) + 0.0
 
 
@@ -54,7 +54,7 @@ def _seated(args):
     """(rider, SeatedRider or None) of ``args.pose`` (seated on ``args.bike`` if given)."""
     import warnings
 
-    from ..errors import BikemassWarning
+    from ..core.errors import BikemassWarning
     from ..rider import load_rider
     if args.bike is None:
         return load_rider(args.pose, as_printed=args.as_printed), None
@@ -78,8 +78,8 @@ def rider_document(rider, props, seated, method, segments):
 
 
 def _contacts_table(seated):
-    from ..errors import shown
-    from ..output import as_written, table
+    from ..core.errors import shown
+    from ..core.output import as_written, table
     rows = [(name, as_written(gap, "m") * 1000, key) for name, (gap, key) in seated.contacts.items()]
     head = (f"On {seated.bicycle.name} ({shown(seated.bicycle.source)}): pose {seated.how}"
             + ("" if seated.solution is None else " by the chain, joint angles (deg): "
@@ -98,7 +98,7 @@ SEGMENT_HEADERS = ["segment", "frame", "mass (kg)", "x (m)", "y (m)", "z (m)", "
 
 
 def _rider_text(args, rider, props, seated, fmt):
-    from ..output import table
+    from ..core.output import table
 
     if fmt in ("json", "yaml"):
         return dialect.document(rider_document(rider, props, seated, args.method, args.segments), fmt)
@@ -139,7 +139,7 @@ def run_riders(args):
 
 
 def _comparison_text(poses, props, published, fmt):
-    from ..output import table
+    from ..core.output import table
 
     if fmt in ("json", "yaml"):
         return dialect.document({"riders": {p: {"bikemass": props[p].to_dict(), "thesis": published[p].to_dict()}
@@ -157,7 +157,7 @@ def _comparison_text(poses, props, published, fmt):
 
 
 def _riders_text(poses, props, fmt):
-    from ..output import table
+    from ..core.output import table
 
     if fmt in ("json", "yaml"):
         return dialect.document({"riders": {p: {"pose": p, **props[p].to_dict()} for p in poses}}, fmt)

@@ -22,7 +22,7 @@ def register(sub):
 
 
 def run_serve(args):
-    from ..errors import InputError
+    from ..core.errors import InputError
     if not 0 < args.port < 65536:
         raise InputError("--port", args.port, "a TCP port between 1 and 65535")
     try:

@@ -23,8 +23,8 @@ def every_size(run, many=True):
     (``many=False``: the size must be picked)."""
     def wrapped(args):
         from ..bicycle.loader import bicycle_sizes
-        from ..errors import InputError
-        from ..output import write_atomic
+        from ..core.errors import InputError
+        from ..core.output import write_atomic
         from .dialect import data_format, document
 
         if args.bike_size is not None:

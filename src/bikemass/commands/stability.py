@@ -126,7 +126,7 @@ def run_eig(args):
 def eig_table(modes, csv=False):
     """Eigenvalues at every speed: CSV (every tracked mode's real and imaginary part, full
     precision) or a text table with the weave as one mode (see :func:`weave_cells`)."""
-    from ..output import table
+    from ..core.output import table
 
     if csv:
         headers = ["speed"] + [f"{label}_{part}".replace(" ", "_") for label in modes.labels for part in ("re", "im")]
@@ -156,7 +156,7 @@ def weave_cells(a, b, paired):
 
 def run_stability(args):
     from ..dynamics import stability
-    from ..errors import InputError
+    from ..core.errors import InputError
 
     options = dialect.figure_checked(args)
     if not args.marginal > 0:
@@ -187,7 +187,7 @@ def ranges_csv(result):
 
 def run_compare(args):
     from ..dynamics import stability
-    from ..errors import InputError, short
+    from ..core.errors import InputError, short
 
     options = dialect.figure_checked(args)
     speeds = dialect.parse_speeds(args.speeds, args.max_speeds)
@@ -222,7 +222,7 @@ def comparison_text(runs, fmt):
     if fmt == "csv":
         return dialect.csv_text(["rider", "stiffness", "weave speeds (m/s)", "capsize speeds (m/s)",
                                  "stable (strict, m/s)"], rows)
-    from ..output import table
+    from ..core.output import table
     return table(["rider", "stiffness", "weave speeds", "capsize speeds", "stable (strict)"], rows)
 
 
@@ -255,7 +255,7 @@ def _crossing_rows(result):
 
 def stability_text(result, title):
     """Human-readable report: critical speeds in words, every crossing, then ranges overall and per mode."""
-    from ..output import table
+    from ..core.output import table
 
     v = result.modes.speeds
     lines = [title, f"speeds {v[0]:g}..{v[-1]:g} m/s ({len(v)} points); marginal: |lambda| < "

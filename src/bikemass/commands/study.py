@@ -50,8 +50,8 @@ def register(sub):
 def run_study(args):
     from pathlib import Path
 
-    from ..output import new_folder
-    from ..progress import Progress
+    from ..core.output import new_folder
+    from ..core.progress import Progress
     from ..study import pipeline
     from ..study.report import match_counts
 

@@ -7,7 +7,7 @@ The names are imported on first use: ``bikemass.fe.defaults`` alone does not loa
 
 import importlib
 
-from ..choices import Procedure, Support
+from ..core.choices import Procedure, Support
 from .defaults import DEFAULT_ELEMENT_SIZE
 
 BOUNDARY_CONDITIONS = Support.values()

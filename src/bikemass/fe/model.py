@@ -10,7 +10,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..errors import InputError
+from ..core.errors import InputError
 from ..materials import load_materials
 from .properties import beam_properties
 

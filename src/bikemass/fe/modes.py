@@ -14,7 +14,7 @@ import numpy as np
 import scipy.linalg
 import scipy.sparse.linalg as spla
 
-from ..threads import one_blas_thread
+from ..core.threads import one_blas_thread
 from .assembly import assemble
 from .boundary import clamped_keypoints, free_dofs, rigid_body_mode_count
 from .defaults import DEFAULT_ELEMENT_SIZE
@@ -53,7 +53,7 @@ def _lowest(K, M, count, shift):
 @one_blas_thread()
 def solve_modes(mesh, bc="free", count=10, timoshenko=True):
     """The first ``count`` elastic :class:`Modes` of ``mesh`` under ``bc`` (assembly and solve on one
-    BLAS thread: :mod:`bikemass.threads`)."""
+    BLAS thread: :mod:`bikemass.core.threads`)."""
     clamped = clamped_keypoints(mesh.structure, bc)
     free = free_dofs(mesh, clamped)
     rigid = rigid_body_mode_count(mesh, clamped)

@@ -75,7 +75,7 @@ def plot_frame_modes(modes, scale=0.12, size=None):
     from ..plots.figure import new_figure
 
     if not hasattr(modes, "mesh"):
-        from ..errors import wrong_type
+        from ..core.errors import wrong_type
         raise wrong_type("modes", modes, "frame Modes (bm.frame_modes)")
 
     mesh = modes.mesh

@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..frozen import readonly
+from ..core.frozen import readonly
 
 
 @dataclass(frozen=True)

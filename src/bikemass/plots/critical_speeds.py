@@ -38,7 +38,7 @@ def plot_critical_speeds(results, title="", size=None, xlim=None, values=True):
     ``xlim``: speed range (m/s); default from 0 to beyond the largest critical speed.
     """
     from collections.abc import Mapping
-    from ..errors import InputError, wrong_type
+    from ..core.errors import InputError, wrong_type
     if not isinstance(results, Mapping) or not all(isinstance(row, Mapping) for row in results.values()):
         raise wrong_type("results", results, "a mapping {row: {series: result}}")
     if not results or not any(results.values()):

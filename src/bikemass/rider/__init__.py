@@ -9,10 +9,10 @@ for the file format.
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..config import load_yaml
-from ..errors import InputError
+from ..core.config import load_yaml
+from ..core.errors import InputError
 from ..parts import METHODS, OVERLAPS, body_properties
-from ..paths import available, bodies_dir, resolve
+from ..core.paths import available, bodies_dir, resolve
 from .pose import read_pose
 
 THESIS_POSES = ("no-hands", "relaxed", "on-hoods", "aerobars", "aero-tuck")
@@ -78,7 +78,7 @@ def load_rider(pose: str, as_printed: bool = False) -> Rider:
 
     ``as_printed=True`` replaces every corrected value by its ``printed:`` value.
     A chain-form pose file (``chain:``, docs/poses.md) is solved on its bicycle.
-    Bad input raises :class:`~bikemass.errors.InputError`.
+    Bad input raises :class:`~bikemass.core.errors.InputError`.
     """
     return _read_document(load_yaml(resolve(pose, poses_dir(), "pose")), str(pose), as_printed)
 
@@ -87,8 +87,8 @@ def rider_from_mapping(mapping, source, as_printed=False):
     """The rider of a Python mapping in any form a pose file takes (placement, chain or
     lumped segments); errors name ``source``.  A chain pose's ``bike`` may also be a
     :class:`~bikemass.bicycle.Bicycle`."""
-    from ..config import Node
-    from ..gate import plain_input
+    from ..core.config import Node
+    from ..core.gate import plain_input
 
     node = Node(plain_input(mapping, source), source, "")
     if not isinstance(node.value, dict):

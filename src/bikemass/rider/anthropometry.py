@@ -9,8 +9,8 @@ Williams (2015), Table 3-2.  ``pair: true`` marks limbs present at +y and -y;
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..config import load_yaml
-from ..paths import available, bodies_dir
+from ..core.config import load_yaml
+from ..core.paths import available, bodies_dir
 from ..solids import Cylinder, TrapezoidalPrism
 
 SHAPES = {

@@ -12,7 +12,7 @@ yeadon measurement file, as segments (for placing) and a chain (for seating).
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..config import Node, load_yaml
+from ..core.config import Node, load_yaml
 from .anthropometry import Anthropometry, find_anthropometry, load_anthropometry
 from .chain import CHAIN_SEGMENTS, ChainBody, load_chain_body
 

@@ -24,8 +24,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..config import load_yaml
-from ..convention import thesis_segment_axis, thesis_segment_rotation
+from ..core.config import load_yaml
+from ..core.convention import thesis_segment_axis, thesis_segment_rotation
 from .anthropometry import load_anthropometry
 
 CHAIN_SEGMENTS = ("head", "torso", "upper_arm", "lower_arm", "thigh", "lower_leg")

@@ -17,8 +17,8 @@ optional.  The same keys form the ``posture:`` of a placement-form pose.  See do
 import warnings
 from pathlib import Path
 
-from ..config import Node
-from ..errors import BikemassWarning, InputError
+from ..core.config import Node
+from ..core.errors import BikemassWarning, InputError
 from .body import chain_of, load_body
 from .chain import CHAIN_SEGMENTS, JOINTS
 from .pose import angle_deg, read_pose
@@ -48,7 +48,7 @@ def bicycle_contacts(bike, node):
                 raise
             node.fail(f"{exc.expected} [{exc.source}]")
     if bicycle.contacts is None:
-        from ..errors import shown
+        from ..core.errors import shown
         node.fail(f"a bicycle with a contacts: section (saddle, bottom_bracket, crank_length, grips); "
                   f"{shown(bicycle.source)} has none")
     return bicycle
@@ -66,11 +66,11 @@ def _hands(node, contacts):
         names = [e.string() for e in node.elements()]
         found = [n for n in names if n in choices]
         if not found:
-            from ..errors import shown
+            from ..core.errors import shown
             node.fail(f"a grip of {shown(contacts.source)} ({', '.join(choices)}), got {', '.join(names)}")
         return found[0]
     if not isinstance(node.value, str) or node.value not in choices:
-        from ..errors import shown
+        from ..core.errors import shown
         node.fail(f"a grip of {shown(contacts.source)} ({', '.join(choices)}), got {node.value!r}")
     return node.value
 

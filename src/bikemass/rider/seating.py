@@ -28,9 +28,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..config import Node, load_yaml
-from ..errors import InputError
-from ..paths import resolve
+from ..core.config import Node, load_yaml
+from ..core.errors import InputError
+from ..core.paths import resolve
 
 CONTACT_TOLERANCE = 1e-3
 """A contact further than this (m) from its target is off the bicycle."""
@@ -100,7 +100,7 @@ def _off(contacts, tolerance):
 
 
 def _gap_lines(pose, bicycle, off):
-    from ..errors import shown
+    from ..core.errors import shown
     return [f"{pose}: {name} {gap * 1000:.1f} mm from {shown(bicycle.source)}: {key}"
             for name, (gap, key) in off.items()]
 
@@ -124,12 +124,12 @@ def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, toleran
         (node, as_printed), source, pose = pose.spec, pose.spec[0].source, pose.pose
     elif isinstance(pose, Mapping):
         from ..catalog import MAPPING
-        from ..gate import plain_input
+        from ..core.gate import plain_input
         source, node = MAPPING, Node(plain_input(pose, MAPPING), MAPPING, "")
         pose = node.value.get("name", MAPPING) if isinstance(node.value, dict) else MAPPING
     else:
         if not isinstance(pose, (str, os.PathLike)):
-            from ..errors import wrong_type
+            from ..core.errors import wrong_type
             raise wrong_type("rider", pose, "a rider is a pose name, a file path, a mapping, a Rider or None")
         source = resolve(os.fspath(pose), poses_dir(), "pose")
         node = load_yaml(source)
@@ -142,7 +142,7 @@ def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, toleran
         bicycle_contacts(bicycle, node["chain"])      # the error: a bicycle with a contacts: section
     if contacts is None or lumped_only:
         rider = _load(pose, node, as_printed)
-        from ..errors import shown
+        from ..core.errors import shown
         why = (f"{shown(bicycle.source)} has no contacts: section" if contacts is None
                else "a rider of lumped bodies has no contact points")
         return SeatedRider(rider, bicycle, "unchecked", {}, None,

@@ -15,8 +15,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import least_squares
 
-from ..convention import thesis_segment_axis
-from ..errors import InputError
+from ..core.convention import thesis_segment_axis
+from ..core.errors import InputError
 from .chain import JOINTS, ChainPose
 
 REACH_TOLERANCE = 1e-3

@@ -28,8 +28,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..config import load_yaml
-from ..paths import bodies_dir
+from ..core.config import load_yaml
+from ..core.paths import bodies_dir
 from ..solids import Cylinder, TrapezoidalPrism
 from .anthropometry import Anthropometry, BodySegment
 

@@ -11,8 +11,8 @@ from dataclasses import replace
 
 import numpy as np
 
-from ..config import Node, load_yaml
-from ..paths import resolve
+from ..core.config import Node, load_yaml
+from ..core.paths import resolve
 from .anthropometry import find_anthropometry
 from .chain import joint_gaps, load_chain_body
 from .pose import angle_deg

@@ -59,7 +59,7 @@ def read_measurements(path):
         import yeadon
     except ImportError:
         raise ImportError("the yeadon package: pip install 'bikemass[yeadon]'") from None
-    from ..gate import load_data
+    from ..core.gate import load_data
     content = load_data(path)            # the input gate: size, type, encoding, YAML limits
     if not isinstance(content, dict):
         raise ValueError("no 'name: value' lines")
@@ -108,7 +108,7 @@ def human(path):
 
 @lru_cache(maxsize=16)
 def _human_of(path, mtime_ns, size):
-    from ..errors import BikemassWarning, shown
+    from ..core.errors import BikemassWarning, shown
     measurements, mass = read_measurements(path)
     with contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")

@@ -55,7 +55,7 @@ class Modes(ModalQuantities):
 def check_speeds(speeds):
     """``speeds`` as a 1-D float array; InputError (a ValueError) unless numbers, at least one,
     finite, >= 0 and strictly increasing."""
-    from ..errors import InputError, short
+    from ..core.errors import InputError, short
     try:
         v = np.atleast_1d(np.asarray(speeds, dtype=float))
     except (TypeError, ValueError):

@@ -12,7 +12,7 @@ signals are held back while the workers are forked and while they are shut down.
 import multiprocessing
 from concurrent.futures import Future
 
-from ..stopping import deferred, worker_signals
+from ..core.stopping import deferred, worker_signals
 
 
 class InlineExecutor:

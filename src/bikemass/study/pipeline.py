@@ -3,9 +3,9 @@
 import os
 from dataclasses import dataclass, field
 
-from ..output import dumps, write_atomic
+from ..core.output import dumps, write_atomic
 from ..rider import THESIS_POSES
-from ..threads import one_blas_thread
+from ..core.threads import one_blas_thread
 from . import corrections, figures
 from .body_tables import bicycle_table, rider_table
 from .configurations import BICYCLES, Configuration, configurations

@@ -6,8 +6,8 @@ explanation of misses), never by the code that computes a result.
 
 from functools import lru_cache
 
-from ..gate import load_data
-from ..paths import reference_dir
+from ..core.gate import load_data
+from ..core.paths import reference_dir
 
 
 def _load(name):

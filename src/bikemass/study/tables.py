@@ -19,8 +19,8 @@ class Table:
     notes: tuple = ()
 
     def to_csv(self):
-        """CSV text, header line first (:func:`bikemass.output.csv_text`: full precision)."""
-        from ..output import csv_text
+        """CSV text, header line first (:func:`bikemass.core.output.csv_text`: full precision)."""
+        from ..core.output import csv_text
         return csv_text(self.headers, self.rows)
 
     def cell(self, column, value):
@@ -29,7 +29,7 @@ class Table:
         if isinstance(value, bool):
             return "yes" if value else "no"
         if isinstance(value, float):
-            from ..output import formatted
+            from ..core.output import formatted
             return formatted(self.formats.get(column, "{:.3f}"), value)        # no "-0.000"
         return str(value)
 

@@ -3,7 +3,7 @@
 The :class:`~bikemass.analysis.inputs.Model` (parsed YAML, built bicycles, riders and
 stiffnesses) lives as long as the process and is shared by every chunk of the same sweep.
 BLAS runs on one thread (the worker, not the library, is the unit of parallelism):
-:func:`bikemass.threads.one_blas_thread`.
+:func:`bikemass.core.threads.one_blas_thread`.
 """
 
 import json
@@ -11,7 +11,7 @@ import pickle
 
 import numpy as np
 
-from ..errors import InputError
+from ..core.errors import InputError
 
 OUTPUTS = ("weave_speed", "capsize_speed", "stable_from", "stable_to", "total_mass", "error")
 _MODELS = {}
@@ -60,7 +60,7 @@ def evaluate(model, changes, max_speed):
 def evaluate_chunk(setup, chunk, max_speed):
     """Rows for the configurations of a :class:`Chunk`; ``setup`` = (bike, rider, stiffness,
     combine, spec source)."""
-    from ..threads import one_blas_thread
+    from ..core.threads import one_blas_thread
     model = _model(setup)
     with one_blas_thread():
         return [evaluate(model, c, max_speed) for c in chunk.configurations]

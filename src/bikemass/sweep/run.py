@@ -24,8 +24,8 @@ import re
 from contextlib import contextmanager
 from pathlib import Path
 
-from ..errors import InputError, short
-from ..output import write_atomic
+from ..core.errors import InputError, short
+from ..core.output import write_atomic
 from .evaluate import Chunk, finish_chunk, finish_chunk_pickled
 from .table import csv_lines, write_results
 
@@ -182,7 +182,7 @@ def max_workers():
 def _check_arguments(spec, out, workers, progress):
     """InputError for arguments :func:`run_sweep` cannot use (before any folder is made)."""
     import os
-    from ..errors import wrong_type
+    from ..core.errors import wrong_type
     from .spec import SweepSpec
     if not isinstance(spec, (str, os.PathLike, SweepSpec)):
         raise wrong_type("spec", spec, "a sweep spec file or a SweepSpec")

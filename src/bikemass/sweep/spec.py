@@ -26,7 +26,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..config import load_yaml
+from ..core.config import load_yaml
 
 SAMPLE_METHODS = ("grid", "lhs", "sobol")
 TOP_KEYS = ("bike", "rider", "stiffness", "combine", "max_speed", "vary", "sample", "global_sensitivity",

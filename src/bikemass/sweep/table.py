@@ -9,7 +9,7 @@ process that writes the table.
 
 from pathlib import Path
 
-from ..output import write_atomic
+from ..core.output import write_atomic
 from .evaluate import OUTPUTS
 
 

@@ -7,7 +7,7 @@ JSON, BicycleParameters), the eigenvalues (CSV) and the bicycle and pose YAML.
 A bad query answers 400 with ``{"error": "<one line>"}``.
 """
 
-from ..errors import InputError
+from ..core.errors import InputError
 from .state import PageState
 
 DOWNLOADS = {
@@ -23,20 +23,20 @@ DOWNLOADS = {
 
 def stability_document(evaluation):
     """The ``bikemass stability --format json`` document of an :class:`~.engine.Evaluation`."""
-    from ..output import plain, with_units, written
+    from ..core.output import plain, with_units, written
     return written(with_units(plain(evaluation.stability.to_dict())))
 
 
 def parameters_document(params):
     """The ``bikemass params --format json`` document of a parameter set."""
-    from ..output import with_units, written
+    from ..core.output import with_units, written
     return written(with_units(params.to_dict()))
 
 
 def download(engine, filename, state):
     """``(bytes, mime type)`` of the download ``filename`` for ``state``; InputError if unknown."""
     from ..exporters import format_parameters
-    from ..gate import read_text
+    from ..core.gate import read_text
 
     if filename not in DOWNLOADS:
         raise InputError("URL", "download", f"one of {', '.join(DOWNLOADS)}")
@@ -65,7 +65,7 @@ def download(engine, filename, state):
             return yaml.safe_dump(rider, sort_keys=False).encode(), mime
         if rider is None:
             raise InputError("URL", "rider", "a rider (this configuration has none)")
-        from ..paths import resolve
+        from ..core.paths import resolve
         from ..rider import poses_dir
         text = read_text(resolve(rider.pose, poses_dir(), "pose"))
     return text.encode(), mime

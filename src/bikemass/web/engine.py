@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
-from ..errors import InputError
+from ..core.errors import InputError
 from ..parameters import BenchmarkParameters
 from .state import PageState
 
@@ -94,8 +94,8 @@ class Engine:
 
     def is_chart(self, bike):
         """True if ``bike`` is written as a geometry chart (so the page can edit its chart)."""
-        from ..config import load_yaml
-        from ..paths import frames_dir, resolve
+        from ..core.config import load_yaml
+        from ..core.paths import frames_dir, resolve
 
         path = resolve(self.source(bike), frames_dir(), "bicycle")
         return path.suffix != ".txt" and load_yaml(path).has("chart")
@@ -128,7 +128,7 @@ class Engine:
     def _base_parameters(self, key, rider, combine):
         """Parameters of the bicycle with its rider seated once (:meth:`seated`, cached)."""
         from ..bicycle import bicycle_parameters
-        from ..choices import Combine, check
+        from ..core.choices import Combine, check
         return bicycle_parameters(self.bicycle(key), self.seated(key, rider), check(Combine, combine).value, "mesh")
 
     def _stiffness(self, key, material):
@@ -179,8 +179,8 @@ def edited_chart(source, edits):
     import copy
 
     from ..bicycle.chart import CHECKED_KEYS
-    from ..config import load_yaml
-    from ..paths import frames_dir, resolve
+    from ..core.config import load_yaml
+    from ..core.paths import frames_dir, resolve
     from .state import CHART_ANGLES
 
     path = resolve(source, frames_dir(), "bicycle")
@@ -199,8 +199,8 @@ def edited_chart(source, edits):
 
 def _check_references(path):
     """An uploaded bicycle may build on a shipped bicycle (``base: jamis``), never on a file."""
-    from ..config import load_yaml
-    from ..paths import available, frames_dir
+    from ..core.config import load_yaml
+    from ..core.paths import available, frames_dir
 
     if path.suffix == ".txt":
         return

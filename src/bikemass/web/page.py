@@ -7,7 +7,7 @@ configuration); every change of a control recomputes through the cached
 
 import base64
 
-from ..errors import InputError
+from ..core.errors import InputError
 from ..parameters import DESCRIPTIONS, NAMES
 from .api import DOWNLOADS
 from .engine import UPLOAD_LIMIT
@@ -65,7 +65,7 @@ def create_app(engine=None):
 
 
 def _shipped():
-    from ..paths import available, frames_dir
+    from ..core.paths import available, frames_dir
     from ..rider import shipped_poses
     body = {"label": "a body from height, mass and sex", "value": BODY_RIDER}
     return available(frames_dir()), ["none"] + shipped_poses() + [body]

@@ -11,8 +11,8 @@ import math
 from dataclasses import dataclass, field, replace
 from urllib.parse import urlencode
 
-from ..config import MAX_MAGNITUDE
-from ..errors import InputError
+from ..core.config import MAX_MAGNITUDE
+from ..core.errors import InputError
 from ..parameters import NAMES
 
 STIFFNESS_CHOICES = ("infinite", "steel", "titanium", "aluminum")

@@ -1,6 +1,6 @@
 """Reading YAML input with one-line errors that name the file, the key and what was expected.
 
-:func:`load_yaml` reads a file through the input gate (:mod:`bikemass.gate`); :class:`Node` wraps a
+:func:`load_yaml` reads a file through the input gate (:mod:`bikemass.core.gate`); :class:`Node` wraps a
 mapping (or a list) together with its file and key path and offers typed
 getters, so every loader reports bad input the same way (:class:`InputError`).
 """
@@ -19,7 +19,7 @@ below where products and squares of inputs overflow."""
 
 
 def load_yaml(path):
-    """Read ``path`` through the input gate (:func:`bikemass.gate.load_data`); return a
+    """Read ``path`` through the input gate (:func:`bikemass.core.gate.load_data`); return a
     :class:`Node` over its top-level mapping."""
     path = Path(path)
     data = load_data(path)
@@ -91,7 +91,7 @@ class Node:
         return self.value is None
 
     def number(self, dimension, positive=False, nonnegative=False, bare_unit=None, unit=None):
-        """A float of ``dimension`` (see :mod:`bikemass.units`) in SI, or in ``unit`` if given."""
+        """A float of ``dimension`` (see :mod:`bikemass.core.units`) in SI, or in ``unit`` if given."""
         try:
             x = convert(self.value, dimension, unit or DIMENSIONS[dimension][0], bare_unit=bare_unit)
         except (UnitError, OverflowError) as exc:

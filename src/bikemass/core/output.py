@@ -168,7 +168,7 @@ UNITS = {
 
 def units_of(obj, extra=None):
     """``{key: unit}`` for every key of ``obj`` (at any depth) with a unit, in order of appearance."""
-    from .parameters import parameter_units
+    from ..parameters import parameter_units
     table = {**parameter_units(), **UNITS, **(extra or {})}
     found = {}
 
@@ -225,7 +225,7 @@ def write_atomic(path, data):
     """Write ``data`` (str or bytes) to ``path`` via a temporary file and rename: never half-written.
 
     An existing file keeps its permission bits; a symbolic link keeps pointing where it did and
-    its target is replaced.  A file read as input in this run (:func:`bikemass.gate.was_read`)
+    its target is replaced.  A file read as input in this run (:func:`bikemass.core.gate.was_read`)
     is refused.
     """
     from .gate import was_read

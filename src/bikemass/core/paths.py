@@ -9,7 +9,7 @@ data folder is the first of:
 2. the installed package's data (``bikemass/shipped/``, through :mod:`importlib.resources`);
 3. the checkout (the repository two folders above ``src/bikemass``).
 
-No data found is an error (:class:`~bikemass.errors.InputError`), never an empty list.
+No data found is an error (:class:`~bikemass.core.errors.InputError`), never an empty list.
 A name that is an existing file path is used as it is.
 """
 
@@ -47,7 +47,7 @@ def found_root():
 
 def checkout():
     """The repository's top folder when bikemass runs from a checkout (``<top>/src/bikemass``), else None."""
-    package = Path(__file__).resolve().parent
+    package = Path(__file__).resolve().parents[1]     # this file is <top>/src/bikemass/core/paths.py
     return package.parents[1] if package.parent.name == "src" else None
 
 

@@ -10,7 +10,7 @@ through: aliases and anchors (no "billion laughs"), nesting deeper than
 :data:`MAX_DEPTH`, more than :data:`MAX_VALUES` values, integers longer than
 :data:`MAX_INT_DIGITS` digits, non-scalar keys, a second document, and a key
 given twice in one mapping (named with both lines).  Every refusal is one
-:class:`~bikemass.errors.InputError` naming the file and the line.
+:class:`~bikemass.core.errors.InputError` naming the file and the line.
 """
 
 import contextlib
@@ -226,7 +226,7 @@ def _attach(source, parent, node):
 
 def plain_input(value, source):
     """A Python value given in place of a file (a mapping passed to ``bm.load_bicycle``, ...) as
-    plain Python (:func:`bikemass.output.plain`), after the limits a file has: nested at most
+    plain Python (:func:`bikemass.core.output.plain`), after the limits a file has: nested at most
     :data:`MAX_DEPTH` levels (a mapping that contains itself is infinitely deep) and at most
     :data:`MAX_VALUES` values; checked by a loop, so no nesting exhausts the stack."""
     from collections.abc import Mapping
