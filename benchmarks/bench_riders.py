@@ -18,10 +18,10 @@ import warnings
 
 import numpy as np
 
-from bikemass.parts import Part
-from bikemass.placement import Placement
+from bikemass.mass.parts import Part
+from bikemass.mass.placement import Placement
 from bikemass.rider import load_rider, shipped_poses
-from bikemass.solids import DEFAULT_SEGMENTS, Box, Cylinder, Hoop, RoundTube, SquareTube, TrapezoidalPrism
+from bikemass.mass.solids import DEFAULT_SEGMENTS, Box, Cylinder, Hoop, RoundTube, SquareTube, TrapezoidalPrism
 
 
 def best_time(fn, repeat):

@@ -10,12 +10,12 @@ import yaml
 from bikemass import catalog
 from bikemass.bicycle import bicycle_parameters, load_bicycle
 from bikemass.core.errors import InputError
-from bikemass.inertia import MassProperties
-from bikemass.materials import load_materials
-from bikemass.parts import Part
-from bikemass.placement import Placement
+from bikemass.mass.inertia import MassProperties
+from bikemass.mass.materials import load_materials
+from bikemass.mass.parts import Part
+from bikemass.mass.placement import Placement
 from bikemass.rider import Rider
-from bikemass.solids import Cylinder, Lumped
+from bikemass.mass.solids import Cylinder, Lumped
 
 from thesis_sets import RIDERS, stiffness as thesis_stiffness, thesis_set
 
@@ -97,7 +97,7 @@ def test_published_stiffness(bike, column, material):
 def test_geometry_bicycles_get_their_stiffness_from_the_beam_model():
     """No published S on 'jamis': the FE of its own tubes gives it (condensed by default)."""
     from bikemass.fe import equivalent_stiffness
-    from bikemass.materials import load_materials
+    from bikemass.mass.materials import load_materials
     steel = load_materials()["steel"]
     structure = catalog.load_bicycle("jamis").structure
     S = catalog.stiffness("jamis", "steel")

@@ -13,7 +13,7 @@ import pytest
 from bikemass import cli
 from bikemass import frame
 from bikemass.fe import equivalent_stiffness, frame_modes
-from bikemass.materials import Material
+from bikemass.mass.materials import Material
 from printed import numbers
 from thesis_frames import jamis_structure
 

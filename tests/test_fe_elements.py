@@ -5,7 +5,7 @@ import pytest
 
 from bikemass.fe.elements import direction_cosines, local_matrices, to_global
 from bikemass.fe.properties import shear_coefficient, torsion_constant
-from bikemass.sections import RoundSection, SquareSection
+from bikemass.mass.sections import RoundSection, SquareSection
 
 L, E, G, RHO, A, I, J, KAPPA = 0.4, 205e9, 80e9, 7850.0, 1.5e-4, 2.0e-8, 4.0e-8, 0.53
 

@@ -36,7 +36,7 @@ def test_all_frequencies_match_table_5_4(material):
 
 
 def test_material_override_keeps_geometry():
-    from bikemass.materials import load_materials
+    from bikemass.mass.materials import load_materials
     titanium = load_materials()["titanium"]
     np.testing.assert_allclose(equivalent_stiffness(jamis_structure("steel"), titanium),
                                equivalent_stiffness(jamis_structure("titanium")), rtol=1e-13)

@@ -5,9 +5,9 @@ import pytest
 from hypothesis import given, settings, strategies as st
 from scipy.spatial.transform import Rotation
 
-from bikemass.inertia import MassProperties, combine, combine_without_parallel_axis, point_inertia
-from bikemass.placement import Placement
-from bikemass.solids import Box, Cylinder, TrapezoidalPrism
+from bikemass.mass.inertia import MassProperties, combine, combine_without_parallel_axis, point_inertia
+from bikemass.mass.placement import Placement
+from bikemass.mass.solids import Box, Cylinder, TrapezoidalPrism
 
 finite = st.floats(-2, 2, allow_nan=False)
 positive = st.floats(0.01, 2, allow_nan=False)

@@ -195,7 +195,7 @@ def test_mesh_and_exact_agree_for_every_rider(riders):
 
 
 def test_breakdown_adds_up_to_the_total(riders):
-    from bikemass.inertia import combine
+    from bikemass.mass.inertia import combine
     rider = riders["aero-tuck"]
     rows = rider.breakdown("exact")
     assert [name for name, _, _ in rows][:2] == ["head", "torso"]

@@ -15,9 +15,9 @@ import numpy as np
 import pytest
 from scipy import integrate
 
-from bikemass.parts import body_properties
+from bikemass.mass.parts import body_properties
 from bikemass.rider import THESIS_POSES, load_rider
-from bikemass.solids import Cylinder
+from bikemass.mass.solids import Cylinder
 
 yeadon_solid = pytest.importorskip("yeadon.solid")
 yeadon_inertia = pytest.importorskip("yeadon.inertia")

@@ -10,11 +10,11 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
-from bikemass.parts import Part, body_properties
-from bikemass.placement import Placement
-from bikemass.solids import (Box, Cylinder, Hoop, Lumped, PointMass, RoundTube, SquareTube,
-                             TrapezoidalPrism, equal_area_circle)
-from bikemass.inertia import MassProperties
+from bikemass.mass.parts import Part, body_properties
+from bikemass.mass.placement import Placement
+from bikemass.mass.solids import (Box, Cylinder, Hoop, Lumped, PointMass, RoundTube, SquareTube,
+                                  TrapezoidalPrism, equal_area_circle)
+from bikemass.mass.inertia import MassProperties
 
 SOLIDS = {
     "cylinder (head)": Cylinder(0.191, 0.295),

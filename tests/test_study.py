@@ -159,7 +159,7 @@ def test_corrected_run_adds_the_parallel_axis_terms(study):
 
 def test_corrected_stiffness_is_the_condensed_beam_model(study):
     from bikemass.fe import equivalent_stiffness
-    from bikemass.materials import load_materials
+    from bikemass.mass.materials import load_materials
     _, rows = read_csv(study[0] / "corrections_stiffness.csv")
     S = equivalent_stiffness(catalog.load_bicycle("cargo").structure, load_materials()["titanium"], "condensed")
     row = next(r for r in rows if r[:3] == ["cargo-loaded", "titanium", "K_deltadelta"])

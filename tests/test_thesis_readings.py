@@ -14,7 +14,7 @@ import pytest
 import yaml
 
 from bikemass.fe import equivalent_stiffness, frame_modes
-from bikemass.sections import RoundSection
+from bikemass.mass.sections import RoundSection
 from bikemass.core.units import INCH
 from thesis_frames import REFERENCE, jamis_structure, tables
 

@@ -1,4 +1,4 @@
-"""Test support: the thesis's rear-frame beam models as :class:`bikemass.tubes.Structure` objects.
+"""Test support: the thesis's rear-frame beam models as :class:`bikemass.mass.tubes.Structure` objects.
 
 Jamis: built from reference/frame_tables.yaml: Table 3-11 keypoints and Table 3-5
 sections, with the seat- and chain-stay diameters swapped (seat stays 0.625 in,
@@ -14,9 +14,9 @@ from pathlib import Path
 import numpy as np
 import yaml
 
-from bikemass.materials import load_materials
-from bikemass.sections import RoundSection, SquareSection
-from bikemass.tubes import Structure, Tube
+from bikemass.mass.materials import load_materials
+from bikemass.mass.sections import RoundSection, SquareSection
+from bikemass.mass.tubes import Structure, Tube
 from bikemass.core.units import INCH
 
 REFERENCE = Path(__file__).parents[1] / "reference" / "frame_tables.yaml"

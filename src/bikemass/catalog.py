@@ -192,7 +192,7 @@ def stiffness(bicycle, which, source=Source.AUTO, procedure=Procedure.CONDENSED,
     which : str, Material, array_like (2, 2) or None
         ``"infinite"``/``"rigid"``/``None``: a rigid frame (returns ``None``); a material
         (``"steel"``, ``"titanium"``, ``"aluminum"``, any key or alias of
-        ``frames/materials.yaml``, or a :class:`~bikemass.materials.Material`): the
+        ``frames/materials.yaml``, or a :class:`~bikemass.mass.materials.Material`): the
         bicycle's published S for it if it carries one, else the beam finite elements of
         its rear frame in that material (see ``source``); a 2x2 symmetric positive definite
         array (N m/rad); or a YAML file with key ``S``.
@@ -215,7 +215,7 @@ def stiffness(bicycle, which, source=Source.AUTO, procedure=Procedure.CONDENSED,
         Unknown material or file, a bicycle with neither a published S nor a rear-frame
         structure, or a matrix that is not symmetric positive definite.
     """
-    from .materials import Material, load_materials
+    from .mass.materials import Material, load_materials
     source, procedure, beam = check(Source, source), check(Procedure, procedure), check(Beam, beam)
     if which is None or (isinstance(which, str) and which in (RIGID, "rigid")):
         return None

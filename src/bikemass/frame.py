@@ -74,7 +74,7 @@ def _real(value):
 
 
 def _material(material):
-    from .materials import Material
+    from .mass.materials import Material
     if material is None or isinstance(material, Material):
         return material
     from .fe import resolve_material

@@ -33,7 +33,7 @@ import numpy as np
 
 from .core.config import Node
 from .core.errors import BikemassWarning, InputError
-from .inertia import MassProperties, combine
+from .mass.inertia import MassProperties, combine
 from .parameters import NAMES, from_node
 
 BODY_KEYS = ("m", "x", "z", "Ixx", "Iyy", "Izz", "Ixz")

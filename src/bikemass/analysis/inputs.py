@@ -214,7 +214,7 @@ class Model:
         """``bicycle.bodies(method)`` with each part's mass properties (its mesh) computed once per
         distinct part: a changed tube wall re-meshes only the tubes of that section."""
         from ..bicycle.model import BODIES
-        from ..inertia import combine
+        from ..mass.inertia import combine
 
         def props(part):
             key = pickle.dumps((part.name, part.solid, part.mass, part.placement, part.body))
@@ -228,7 +228,7 @@ class Model:
 
     def materials(self):
         if self._materials is None:
-            from ..materials import load_materials
+            from ..mass.materials import load_materials
             self._materials = load_materials()
         return self._materials
 

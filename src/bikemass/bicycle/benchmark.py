@@ -14,12 +14,12 @@ front frame, the others the rear frame.  ``combine``:
 import numpy as np
 
 from ..core.errors import InputError
-from ..inertia import combine as combine_exact
-from ..inertia import combine_without_parallel_axis
+from ..mass.inertia import combine as combine_exact
+from ..mass.inertia import combine_without_parallel_axis
 from ..core.errors import InputError
 from ..parameters import BenchmarkParameters
 from ..plausibility import warn_parameters, warn_rider
-from ..parts import body_properties
+from ..mass.parts import body_properties
 
 COMBINE_CHOICES = ("exact", "thesis")
 

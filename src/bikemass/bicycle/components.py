@@ -1,4 +1,4 @@
-"""Components, loads and wheel hoops read from a bicycle YAML file as placed :class:`~bikemass.parts.Part`.
+"""Components, loads and wheel hoops read from a bicycle YAML file as placed :class:`~bikemass.mass.parts.Part`.
 
 A component is a solid with a mass (or a material), placed by the position of
 its centroid ``at`` (m) and an orientation: ``axis`` (the direction of the
@@ -11,11 +11,11 @@ A ``lumped`` component is a body known by its mass, CoM ``at`` and ``inertia``.
 import numpy as np
 
 from ..core.convention import thesis_segment_rotation
-from ..inertia import MassProperties
+from ..mass.inertia import MassProperties
 from ..plausibility import check_inertia
-from ..parts import Part
-from ..placement import Placement
-from ..solids import Box, Cylinder, Hoop, Lumped, PointMass, RoundTube, SquareTube, TrapezoidalPrism
+from ..mass.parts import Part
+from ..mass.placement import Placement
+from ..mass.solids import Box, Cylinder, Hoop, Lumped, PointMass, RoundTube, SquareTube, TrapezoidalPrism
 
 BODIES = ("rear_frame", "front_frame", "rear_wheel", "front_wheel")
 """The four rigid bodies of the benchmark model."""
@@ -106,7 +106,7 @@ def _mass(node, solid, materials):
 
 
 def materials_lookup(node, materials):
-    """The :class:`~bikemass.materials.Material` named by ``node`` (key or alias)."""
+    """The :class:`~bikemass.mass.materials.Material` named by ``node`` (key or alias)."""
     key = node.string()
     if key not in materials:
         node.fail(f"a material of frames/materials.yaml ({', '.join(sorted(materials))}), got {key!r}")

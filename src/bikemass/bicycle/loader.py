@@ -16,17 +16,17 @@ import numpy as np
 from ..core.config import Node, load_yaml
 from ..core.gate import read_text
 from ..core.errors import InputError, short
-from ..inertia import MassProperties
-from ..materials import load_materials, read_materials
+from ..mass.inertia import MassProperties
+from ..mass.materials import load_materials, read_materials
 from ..parameter_text import load_parameter_text, looks_like_parameter_text
 from ..parameters import from_node, is_parameter_file
-from ..parts import Part
+from ..mass.parts import Part
 from ..core.paths import frames_dir, resolve
-from ..placement import Placement
+from ..mass.placement import Placement
 from ..plausibility import check_parameter_node, check_stiffness
-from ..sections import RoundSection, SquareSection
-from ..solids import Lumped, RoundTube, SquareTube
-from ..tubes import Structure, Tube
+from ..mass.sections import RoundSection, SquareSection
+from ..mass.solids import Lumped, RoundTube, SquareTube
+from ..mass.tubes import Structure, Tube
 from .chart_build import expand_chart
 from .components import materials_lookup, read_component, read_wheel
 from .contacts import read_contacts

@@ -6,7 +6,7 @@ import numpy as np
 
 from ..core.errors import InputError, shown
 from ..core.frozen import frozen_fields, short_repr
-from ..parts import body_properties
+from ..mass.parts import body_properties
 from .components import BODIES
 
 
@@ -71,6 +71,6 @@ class Bicycle:
         return replace(self, tubes=tubes, structure=structure)
 
     def published_stiffness(self, material):
-        """Published 2x2 S (N m/rad) for ``material`` (a :class:`~bikemass.materials.Material`), or None."""
+        """Published 2x2 S (N m/rad) for ``material`` (a :class:`~bikemass.mass.materials.Material`), or None."""
         S = (self.stiffness or {}).get(material.key)
         return None if S is None else np.array(S)

@@ -1,4 +1,4 @@
-"""Beam mesh of a rear-frame :class:`~bikemass.tubes.Structure`.
+"""Beam mesh of a rear-frame :class:`~bikemass.mass.tubes.Structure`.
 
 Every tube becomes ``ceil(L / element_size)`` equal two-node elements (one if
 ``element_size`` is None); tubes meeting at a keypoint share its node (rigid
@@ -11,7 +11,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..core.errors import InputError
-from ..materials import load_materials
+from ..mass.materials import load_materials
 from .properties import beam_properties
 
 

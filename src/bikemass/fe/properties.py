@@ -14,7 +14,7 @@ thin-wall formula on the wall's mid-line, ``J = 4 A_m^2 t / s = t (b - t)^3``.
 
 from dataclasses import dataclass
 
-from ..sections import RoundSection, SquareSection
+from ..mass.sections import RoundSection, SquareSection
 
 
 @dataclass(frozen=True)

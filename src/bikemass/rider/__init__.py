@@ -11,7 +11,7 @@ from pathlib import Path
 
 from ..core.config import load_yaml
 from ..core.errors import InputError
-from ..parts import METHODS, OVERLAPS, body_properties
+from ..mass.parts import METHODS, OVERLAPS, body_properties
 from ..core.paths import available, bodies_dir, resolve
 from .pose import read_pose
 
@@ -52,7 +52,7 @@ class Rider:
         return f"Rider(pose={self.pose!r}, name={self.name!r}, parts={len(self.parts)}, mass={mass:.6g} kg)"
 
     def properties(self, method="mesh", overlap="sum"):
-        """Total :class:`~bikemass.inertia.MassProperties` (trimesh ``mesh`` or ``exact``;
+        """Total :class:`~bikemass.mass.inertia.MassProperties` (trimesh ``mesh`` or ``exact``;
         overlapping parts ``sum``-med as in the thesis or counted once with ``union``)."""
         _check(method, METHODS, "method")
         _check(overlap, OVERLAPS, "overlap")

@@ -11,7 +11,7 @@ from pathlib import Path
 
 from ..core.config import load_yaml
 from ..core.paths import available, bodies_dir
-from ..solids import Cylinder, TrapezoidalPrism
+from ..mass.solids import Cylinder, TrapezoidalPrism
 
 SHAPES = {
     "cylinder": (Cylinder, ("diameter", "length")),

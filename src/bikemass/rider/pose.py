@@ -24,11 +24,11 @@ tensor products) is a lumped body and needs no anthropometry.
 
 import numpy as np
 
-from ..inertia import MassProperties
+from ..mass.inertia import MassProperties
 from ..plausibility import check_inertia
-from ..parts import Part
-from ..placement import Placement
-from ..solids import Lumped
+from ..mass.parts import Part
+from ..mass.placement import Placement
+from ..mass.solids import Lumped
 from .body import load_body
 
 FRAMES = {"rear": "rear_frame", "front": "front_frame"}

@@ -30,7 +30,7 @@ import numpy as np
 
 from ..core.config import load_yaml
 from ..core.paths import bodies_dir
-from ..solids import Cylinder, TrapezoidalPrism
+from ..mass.solids import Cylinder, TrapezoidalPrism
 from .anthropometry import Anthropometry, BodySegment
 
 SEXES = ("male", "female")

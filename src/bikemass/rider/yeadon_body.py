@@ -30,8 +30,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..inertia import MassProperties, combine
-from ..solids import Lumped
+from ..mass.inertia import MassProperties, combine
+from ..mass.solids import Lumped
 from .anthropometry import Anthropometry, BodySegment
 from .chain import ChainBody
 

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 from .. import catalog
 from ..bicycle import bicycle_parameters
 from ..fe import equivalent_stiffness
-from ..materials import load_materials
+from ..mass.materials import load_materials
 from ..stability import canonical_matrices, follow_modes, speed_grid, stability, with_frame_stiffness
 from ..stability.criteria import MARGINAL_THRESHOLD, is_stable
 from ..stability.labels import LABELS

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .core.frozen import frozen_fields, readonly
+from ..core.frozen import frozen_fields, readonly
 from .materials import Material
 from .sections import RoundSection, SquareSection
 

@@ -4,7 +4,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .core.convention import thesis_segment_rotation
+from ..core.convention import thesis_segment_rotation
 
 
 @dataclass(frozen=True, eq=False)

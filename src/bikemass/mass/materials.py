@@ -2,8 +2,8 @@
 
 from dataclasses import dataclass
 
-from .core.config import load_yaml
-from .core.paths import frames_dir
+from ..core.config import load_yaml
+from ..core.paths import frames_dir
 
 
 @dataclass(frozen=True)
