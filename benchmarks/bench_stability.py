@@ -16,8 +16,9 @@ from pathlib import Path
 import numpy as np
 
 from bikemass.catalog import parameters
-from bikemass.exporters import format_parameters
-from bikemass.stability import canonical_matrices, eigen_sweep, follow_modes, speed_grid, stability
+from bikemass.models.parameter_export import format_parameters
+from bikemass.models.canonical import canonical_matrices
+from bikemass.stability import eigen_sweep, follow_modes, speed_grid, stability
 
 
 def best(fn, number):

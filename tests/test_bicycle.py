@@ -204,7 +204,7 @@ def test_loaded_cargo_adds_the_200_lb_box_to_the_rear_frame_only():
 
 def test_parameter_file_round_trip(tmp_path):
     """bikemass's YAML output is itself a BIKE: read back bit for bit."""
-    from bikemass.exporters import format_parameters
+    from bikemass.models.parameter_export import format_parameters
     params = catalog.parameters("jamis", "relaxed")
     path = tmp_path / "jamis_relaxed.yaml"
     path.write_text(format_parameters(params, "yaml"))

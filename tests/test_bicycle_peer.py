@@ -5,8 +5,8 @@ import numpy as np
 import pytest
 
 from bikemass import catalog
-from bikemass.exporters import format_parameters
-from bikemass.stability.matrices import canonical_matrices
+from bikemass.models.parameter_export import format_parameters
+from bikemass.models.canonical import canonical_matrices
 
 bp = pytest.importorskip("bicycleparameters")
 

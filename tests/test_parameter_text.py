@@ -20,7 +20,8 @@ from bikemass.cli import main
 from bikemass.core.errors import InputError
 from bikemass.parameter_text import (ParameterFileWarning, combined_front_frame, load_parameter_text,
                                      parse_parameter_text)
-from bikemass.stability import canonical_matrices, eigen_sweep, speed_grid
+from bikemass.models.canonical import canonical_matrices
+from bikemass.stability import eigen_sweep, speed_grid
 
 BP_DATA = Path(bp.__file__).parent / "app-data"
 SHIPPED = sorted(p.parent.parent.name for p in BP_DATA.glob("bicycles/*/Parameters/*Benchmark.txt"))
@@ -186,7 +187,7 @@ def test_measured_bicycle_companion_poses_a_chain_rider(tmp_path, capsys):
 
 def test_bikemass_export_reads_back_bit_for_bit(tmp_path):
     from bikemass import catalog
-    from bikemass.exporters import format_parameters
+    from bikemass.models.parameter_export import format_parameters
     params = catalog.parameters("jamis-thesis", "relaxed-thesis")
     f = tmp_path / "JamisBenchmark.txt"
     f.write_text(format_parameters(params, "bicycleparameters", "Jamis"))

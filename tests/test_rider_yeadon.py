@@ -11,7 +11,8 @@ import pytest
 from bikemass.bicycle import bicycle_parameters, load_bicycle
 from bikemass.cli import main
 from bikemass.rider.seating import seat_rider
-from bikemass.stability import canonical_matrices, stability
+from bikemass.models.canonical import canonical_matrices
+from bikemass.stability import stability
 
 yeadon = pytest.importorskip("yeadon")
 

@@ -11,8 +11,10 @@ from bikemass.analysis.crossings import critical_speeds
 from bikemass.analysis.model import matrix_derivatives, system, values_of
 from bikemass.analysis.sensitivity import sensitivity
 from bikemass.cli import main
-from bikemass.parameters import NAMES
-from bikemass.stability import canonical_matrices, speed_grid, stability, with_frame_stiffness
+from bikemass.models.parameters import NAMES
+from bikemass.models.canonical import canonical_matrices
+from bikemass.stability import speed_grid, stability
+from bikemass.models.flexible_static import with_frame_stiffness
 
 GRID = speed_grid(0, 8, 0.05)
 

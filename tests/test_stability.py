@@ -7,8 +7,9 @@ import pytest
 from scipy.optimize import linear_sum_assignment
 
 from bikemass.catalog import parameters
-from bikemass.stability import (canonical_matrices, eigen_sweep, follow_modes, speed_grid,
-                                stability, state_matrices, static_stiffness, with_frame_stiffness)
+from bikemass.models.canonical import canonical_matrices
+from bikemass.stability import eigen_sweep, follow_modes, speed_grid, stability, state_matrices
+from bikemass.models.flexible_static import static_stiffness, with_frame_stiffness
 from bikemass.stability.quartic import quartic_roots
 from bikemass.stability.ranges import intersect
 from bikemass.stability.tracking import best_permutations, pair_violations, step_costs

@@ -6,7 +6,8 @@ import pytest
 
 from bikemass import catalog
 from bikemass.bicycle import bicycle_parameters
-from bikemass.stability import stability, with_frame_stiffness
+from bikemass.stability import stability
+from bikemass.models.flexible_static import with_frame_stiffness
 from bikemass.study import figures
 from bikemass.study.configurations import Configuration, configurations
 from bikemass.study.explain import PrintedInputs, half_unit_of_stiffness, with_rider

@@ -10,7 +10,8 @@ import pytest
 
 from bikemass import catalog
 from bikemass.cli import main
-from bikemass.stability import canonical_matrices, stability
+from bikemass.models.canonical import canonical_matrices
+from bikemass.stability import stability
 
 GRID = """bike: benchmark
 vary:

@@ -115,7 +115,8 @@ def test_cargo_titanium_kdd_erratum_in_the_stability_tables():
 def test_prose_numbers_that_no_table_holds():
     """docs/thesis.md#prose-that-disagrees-with-the-tables."""
     from bikemass import catalog
-    from bikemass.stability import canonical_matrices, follow_modes
+    from bikemass.models.canonical import canonical_matrices
+    from bikemass.stability import follow_modes
 
     modes = follow_modes(canonical_matrices(catalog.parameters("benchmark")), np.arange(0, 30.001, 0.01))
     capsize = modes["capsize"].real

@@ -17,7 +17,7 @@ pytest.importorskip("dash")
 
 from bikemass.cli import main  # noqa: E402
 from bikemass.core.errors import InputError  # noqa: E402
-from bikemass.parameters import NAMES  # noqa: E402
+from bikemass.models.parameters import NAMES  # noqa: E402
 from bikemass.web import create_app  # noqa: E402
 from bikemass.web.state import PageState  # noqa: E402
 

@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 import yaml
 
-from bikemass.parameters import BenchmarkParameters
+from bikemass.models.parameters import BenchmarkParameters
 
 REFERENCE = Path(__file__).parents[1] / "reference"
 TABLES = yaml.safe_load((REFERENCE / "stability_tables.yaml").read_text())

@@ -35,8 +35,8 @@ _API = {
     "Combine": "core.choices", "Method": "core.choices", "Overlap": "core.choices",
     "Procedure": "core.choices", "Beam": "core.choices", "Source": "core.choices", "Support": "core.choices",
     "MaterialName": "core.choices", "Grip": "core.choices", "EigenPart": "core.choices", "Format": "core.choices",
-    "Bicycle": "bicycle", "Rider": "rider", "BenchmarkParameters": "parameters",
-    "PARAMETER_NAMES": "parameters", "InputError": "core.errors", "BikemassWarning": "core.errors",
+    "Bicycle": "bicycle", "Rider": "rider", "BenchmarkParameters": "models.parameters",
+    "PARAMETER_NAMES": "models.parameters", "InputError": "core.errors", "BikemassWarning": "core.errors",
     "load_parameter_text": "parameter_text", "MeasuredParameters": "parameter_text",
     "ParameterFileWarning": "parameter_text",
 }

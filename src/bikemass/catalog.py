@@ -4,7 +4,7 @@ BIKE / POSE / stiffness arguments.
 
 A bicycle is a shipped name (``jamis``), a bicycle YAML file, a benchmark parameter
 file, a mapping holding either (as the YAML would), a
-:class:`~bikemass.parameters.BenchmarkParameters` set, or a :class:`Bicycle` already
+:class:`~bikemass.models.parameters.BenchmarkParameters` set, or a :class:`Bicycle` already
 loaded.  A rider is a shipped pose name, a pose file, a mapping in any pose form the
 YAML accepts (placement, chain or lumped), a :class:`Rider`, or ``None``/``"none"``.
 Bad input raises :class:`~bikemass.core.errors.InputError` (a ValueError) naming the
@@ -18,7 +18,7 @@ import numpy as np
 
 from .core.choices import RIGID, Beam, Combine, Method, Procedure, Source, check
 from .core.errors import InputError
-from .plausibility import check_stiffness
+from .models.plausibility import check_stiffness
 
 COMBINE_CHOICES = Combine.values()
 """Rider + rear frame: 'exact' = parallel-axis theorem; 'thesis' = inertias added (Eq. 3.6)."""
@@ -55,7 +55,7 @@ def load_bicycle(bicycle, name=None, size=None):
     from .bicycle import Bicycle
     from .bicycle.loader import bicycle_from_mapping, bicycle_from_parameters
     from .bicycle.loader import load_bicycle as load_file
-    from .parameters import BenchmarkParameters
+    from .models.parameters import BenchmarkParameters
 
     if isinstance(bicycle, Bicycle):
         return bicycle

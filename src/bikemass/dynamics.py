@@ -33,13 +33,14 @@ def matrices(params, stiffness=None):
         ``M`` (kg m^2), ``C1`` (kg m^2), ``K0`` (kg m), ``K2`` (kg m), ``g`` (m/s^2); with S,
         ``g K0`` is the static stiffness ``gK0 - gK0^T (gK0 + S)^-1 gK0``.
     """
-    from .parameters import BenchmarkParameters
-    from .stability import CanonicalMatrices, canonical_matrices, with_frame_stiffness
+    from .models.parameters import BenchmarkParameters
+    from .models.canonical import CanonicalMatrices, canonical_matrices
+    from .models.flexible_static import with_frame_stiffness
 
     if isinstance(params, CanonicalMatrices):
         base = params
     elif isinstance(params, BenchmarkParameters):
-        from .plausibility import check_parameters
+        from .models.plausibility import check_parameters
         base = canonical_matrices(check_parameters(params, "params"))
     else:
         from .core.errors import wrong_type

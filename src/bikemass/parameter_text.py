@@ -18,7 +18,7 @@ measurements), ``#`` starts a comment.  Besides the 26 Meijaard names a file may
 
 Every such decision is kept in :attr:`MeasuredParameters.notes`; a check that fails
 is also issued as a :class:`ParameterFileWarning`.  Nominal values build the
-:class:`~bikemass.parameters.BenchmarkParameters`; the standard deviations are kept
+:class:`~bikemass.models.parameters.BenchmarkParameters`; the standard deviations are kept
 (:attr:`MeasuredParameters.std`, with ``H``'s propagated linearly from ``G`` and
 ``S`` when combined) for uncertainty propagation.
 """
@@ -34,7 +34,7 @@ import numpy as np
 from .core.config import Node
 from .core.errors import BikemassWarning, InputError
 from .mass.inertia import MassProperties, combine
-from .parameters import NAMES, from_node
+from .models.parameters import NAMES, from_node
 
 BODY_KEYS = ("m", "x", "z", "Ixx", "Iyy", "Izz", "Ixz")
 """A rigid body's seven planar mass properties: ``m{P} x{P} z{P} I{P}xx ...`` for body letter ``P``."""
@@ -140,7 +140,7 @@ def looks_like_parameter_text(text):
 
 @dataclass(frozen=True)
 class MeasuredParameters:
-    """A measured bicycle: nominal :class:`~bikemass.parameters.BenchmarkParameters`,
+    """A measured bicycle: nominal :class:`~bikemass.models.parameters.BenchmarkParameters`,
     ``std[name]`` for the 26 names (SI), and ``notes``: how every key beyond the 26 was used."""
 
     parameters: object

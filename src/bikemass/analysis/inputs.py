@@ -21,7 +21,7 @@ from collections import OrderedDict
 
 from ..core.config import Node, load_yaml
 from ..core.errors import InputError
-from ..parameters import NAMES
+from ..models.parameters import NAMES
 
 RIDER_PREFIX = "rider."
 STIFFNESS_KEY = "stiffness"
@@ -247,6 +247,6 @@ class Model:
         bike, rider, params, stiffness = split_changes(changes or {})
         p = self.parameters(bike, rider)
         if params:
-            from ..plausibility import check_parameters
+            from ..models.plausibility import check_parameters
             p = check_parameters(p.replace(**dict(params)), self.origin)
         return p, self.frame_stiffness(self.stiffness if stiffness is None else stiffness, bike)

@@ -10,8 +10,8 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ..parameters import NAMES
-from ..stability import canonical_matrices
+from ..models.parameters import NAMES
+from ..models.canonical import canonical_matrices
 
 STEP = 1e-30
 """Complex step (dimensionless multiple of i)."""
@@ -34,8 +34,8 @@ class System:
         return self.K / self.g
 
     def canonical(self):
-        """The real :class:`~bikemass.stability.CanonicalMatrices` (``K0 = K / g``) for the stability code."""
-        from ..stability import CanonicalMatrices
+        """The real :class:`~bikemass.models.canonical.CanonicalMatrices` (``K0 = K / g``) for the stability code."""
+        from ..models.canonical import CanonicalMatrices
         return CanonicalMatrices(M=np.real(self.M), C1=np.real(self.C1), K0=np.real(self.K0),
                                  K2=np.real(self.K2), g=float(np.real(self.g)))
 
@@ -70,7 +70,7 @@ def system(values, S=None):
 
 
 def values_of(params):
-    """``{name: float}`` of a :class:`~bikemass.parameters.BenchmarkParameters`."""
+    """``{name: float}`` of a :class:`~bikemass.models.parameters.BenchmarkParameters`."""
     return {name: float(getattr(params, name)) for name in NAMES}
 
 

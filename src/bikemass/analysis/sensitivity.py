@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..parameters import NAMES
+from ..models.parameters import NAMES
 from .crossings import OSCILLATORY, REAL, critical_speeds
 from .model import STIFFNESS_ENTRIES, state_matrix_derivatives, stiffness_state_derivatives, system, values_of
 
@@ -74,7 +74,7 @@ class Sensitivity:
 
 
 def sensitivity(params, S=None, vmax=30.0, names=NAMES):
-    """:class:`Sensitivity` of ``params`` (:class:`~bikemass.parameters.BenchmarkParameters`) with
+    """:class:`Sensitivity` of ``params`` (:class:`~bikemass.models.parameters.BenchmarkParameters`) with
     rear-frame stiffness ``S`` (2x2 N m/rad or ``None``); crossings searched on ``(0, vmax]`` m/s.
     InputError for parameters the model is not defined for, an S that is not symmetric positive
     definite, a ``vmax`` that is not a positive finite speed or ``names`` not among the 26."""
@@ -103,8 +103,8 @@ def _checked(params, S, vmax, names):
     """``(params, S, names)`` checked as :func:`sensitivity` needs them (InputError otherwise)."""
     from ..dynamics import _stiffness
     from ..core.errors import InputError, short
-    from ..parameters import BenchmarkParameters
-    from ..plausibility import check_parameters
+    from ..models.parameters import BenchmarkParameters
+    from ..models.plausibility import check_parameters
     if not isinstance(params, BenchmarkParameters):
         from ..core.errors import wrong_type
         raise wrong_type("params", params, "BenchmarkParameters (bm.parameters)")

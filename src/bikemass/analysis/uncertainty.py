@@ -24,7 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.errors import InputError
-from ..parameters import NAMES
+from ..models.parameters import NAMES
 from .crossings import critical_speeds
 from .model import MATRICES, STEP, system, values_of
 from .sensitivity import SPEEDS, speed_derivatives

@@ -17,15 +17,15 @@ from ..core.errors import InputError
 from ..mass.inertia import combine as combine_exact
 from ..mass.inertia import combine_without_parallel_axis
 from ..core.errors import InputError
-from ..parameters import BenchmarkParameters
-from ..plausibility import warn_parameters, warn_rider
+from ..models.parameters import BenchmarkParameters
+from ..models.plausibility import warn_parameters, warn_rider
 from ..mass.parts import body_properties
 
 COMBINE_CHOICES = ("exact", "thesis")
 
 
 def bicycle_parameters(bicycle, rider=None, combine="exact", method="mesh"):
-    """:class:`~bikemass.parameters.BenchmarkParameters` of ``bicycle`` with ``rider`` (or none).
+    """:class:`~bikemass.models.parameters.BenchmarkParameters` of ``bicycle`` with ``rider`` (or none).
 
     ``method``: ``mesh`` (trimesh meshes of the solids) or ``exact`` (closed form).
     A bicycle read from a parameter file without a rider returns that file's values exactly.
@@ -39,7 +39,7 @@ def bicycle_parameters(bicycle, rider=None, combine="exact", method="mesh"):
 
 
 def parameters_from_bodies(bicycle, bodies):
-    """:class:`~bikemass.parameters.BenchmarkParameters` of ``bicycle``'s geometry and the four
+    """:class:`~bikemass.models.parameters.BenchmarkParameters` of ``bicycle``'s geometry and the four
     combined ``bodies`` (``{body: MassProperties}``, see :func:`combined_bodies`)."""
     g = bicycle.geometry
     R, B, H, F = (bodies[b] for b in ("rear_wheel", "rear_frame", "front_frame", "front_wheel"))

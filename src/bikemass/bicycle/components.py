@@ -12,7 +12,7 @@ import numpy as np
 
 from ..core.convention import thesis_segment_rotation
 from ..mass.inertia import MassProperties
-from ..plausibility import check_inertia
+from ..models.plausibility import check_inertia
 from ..mass.parts import Part
 from ..mass.placement import Placement
 from ..mass.solids import Box, Cylinder, Hoop, Lumped, PointMass, RoundTube, SquareTube, TrapezoidalPrism

@@ -19,11 +19,11 @@ from ..core.errors import InputError, short
 from ..mass.inertia import MassProperties
 from ..mass.materials import load_materials, read_materials
 from ..parameter_text import load_parameter_text, looks_like_parameter_text
-from ..parameters import from_node, is_parameter_file
+from ..models.parameters import from_node, is_parameter_file
 from ..mass.parts import Part
 from ..core.paths import frames_dir, resolve
 from ..mass.placement import Placement
-from ..plausibility import check_parameter_node, check_stiffness
+from ..models.plausibility import check_parameter_node, check_stiffness
 from ..mass.sections import RoundSection, SquareSection
 from ..mass.solids import Lumped, RoundTube, SquareTube
 from ..mass.tubes import Structure, Tube

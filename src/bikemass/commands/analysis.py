@@ -138,7 +138,7 @@ def sensitivity_csv(result, geometry=None):
     """One row per input: the two critical speeds first (kind ``speed``), then the 26
     parameters, the rear-frame S entries and any geometry-level inputs, each with its value,
     unit and the derivatives (and, for parameters, elasticities) of both speeds."""
-    from ..parameters import parameter_units
+    from ..models.parameters import parameter_units
 
     units = parameter_units()
     ew, ec = result.elasticities("weave_speed"), result.elasticities("capsize_speed")

@@ -83,7 +83,7 @@ def _seated(args):
 def run_params(args):
     from .. import catalog
     from ..core.errors import InputError
-    from ..exporters import format_parameters
+    from ..models.parameter_export import format_parameters
 
     if args.compare:
         args.default_format = "table"                   # a comparison is read, not read back
@@ -108,7 +108,7 @@ def comparison(params, reference, name, reference_name, fmt):
         return dialect.document({name: ours, reference_name: theirs,
                                  "difference": {k: ours[k] - theirs[k] for k in ours}}, fmt)
     if fmt == "csv":
-        from ..parameters import parameter_units
+        from ..models.parameters import parameter_units
         units = parameter_units()
         return dialect.csv_text(["parameter", "unit", name, reference_name, "difference"],
                                 [[k, units[k], ours[k], theirs[k], ours[k] - theirs[k]] for k in ours])
@@ -118,7 +118,7 @@ def comparison(params, reference, name, reference_name, fmt):
 def comparison_table(params, reference, name, reference_name):
     """Plain-text table: each parameter of ``params`` beside ``reference`` and their difference."""
     from ..core.output import table
-    from ..parameters import DESCRIPTIONS
+    from ..models.parameters import DESCRIPTIONS
 
     ours, theirs = params.to_dict(), reference.to_dict()
     rows = []

@@ -68,4 +68,4 @@ def _rebuilt(source, key, expected):
 class BikemassWarning(UserWarning):
     """A result that is computed but worth a second look (e.g. a joint angle outside the
     typical human range); the command line shows each as one ``bikemass: warning:`` line (``--strict`` makes it an
-    error).  :mod:`bikemass.plausibility` issues them for legal but unusual input."""
+    error).  :mod:`bikemass.models.plausibility` issues them for legal but unusual input."""

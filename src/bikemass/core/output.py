@@ -163,12 +163,12 @@ UNITS = {
     "residual": "m",
 }
 """The SI unit of every key that holds a quantity in a JSON/YAML document bikemass writes
-(the 26 benchmark parameters come from :data:`bikemass.parameters.DESCRIPTIONS`)."""
+(the 26 benchmark parameters come from :data:`bikemass.models.parameters.DESCRIPTIONS`)."""
 
 
 def units_of(obj, extra=None):
     """``{key: unit}`` for every key of ``obj`` (at any depth) with a unit, in order of appearance."""
-    from ..parameters import parameter_units
+    from ..models.parameters import parameter_units
     table = {**parameter_units(), **UNITS, **(extra or {})}
     found = {}
 

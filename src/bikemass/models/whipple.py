@@ -17,8 +17,8 @@ gravity; ``M``, ``C1`` and ``K2`` stay.
 
 import numpy as np
 
-from ..stability.flexible import static_stiffness
-from ..stability.matrices import canonical_matrices
+from .canonical import canonical_matrices
+from .flexible_static import static_stiffness
 from .linear import Signal, second_order_model
 
 ROLL_ANGLE = Signal("roll-angle", "rad", "roll angle of the rear frame, positive to the right")

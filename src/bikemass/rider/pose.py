@@ -25,7 +25,7 @@ tensor products) is a lumped body and needs no anthropometry.
 import numpy as np
 
 from ..mass.inertia import MassProperties
-from ..plausibility import check_inertia
+from ..models.plausibility import check_inertia
 from ..mass.parts import Part
 from ..mass.placement import Placement
 from ..mass.solids import Lumped

@@ -48,7 +48,8 @@ def _rider_of(chain, body_name, source):
 
 def _speeds(bike, rider, combine, method):
     from ..bicycle import bicycle_parameters
-    from ..stability import canonical_matrices, stability
+    from ..models.canonical import canonical_matrices
+    from ..stability import stability
     result = stability(canonical_matrices(bicycle_parameters(bike, rider, combine, method)))
     return result.weave_speeds, result.capsize_speeds
 

@@ -66,7 +66,7 @@ def check_speeds(speeds):
 
 
 def follow_modes(matrices, speeds):
-    """:class:`Modes` of ``matrices`` (:class:`~bikemass.stability.matrices.CanonicalMatrices`) at ``speeds`` (m/s)."""
+    """:class:`Modes` of ``matrices`` (:class:`~bikemass.models.canonical.CanonicalMatrices`) at ``speeds`` (m/s)."""
     v = check_speeds(speeds)
     lead = np.linspace(0.0, v[0], int(np.ceil(v[0] / START_STEP)) + 1)[:-1]
     sweep = eigen_sweep(matrices, np.concatenate([lead, v]))

@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from ..parameters import DESCRIPTIONS
+from ..models.parameters import DESCRIPTIONS
 from ..rider import THESIS_POSES
 from .reference import bicycle_tables, rider_tables
 from .tables import Table

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..mass.inertia import MassProperties, combine, combine_without_parallel_axis
-from ..stability import canonical_matrices
+from ..models.canonical import canonical_matrices
 from .runs import THESIS, evaluate
 from .stability_tables import TOLERANCE, single_run
 

@@ -21,7 +21,9 @@ from .. import catalog
 from ..bicycle import bicycle_parameters
 from ..fe import equivalent_stiffness
 from ..mass.materials import load_materials
-from ..stability import canonical_matrices, follow_modes, speed_grid, stability, with_frame_stiffness
+from ..models.canonical import canonical_matrices
+from ..stability import follow_modes, speed_grid, stability
+from ..models.flexible_static import with_frame_stiffness
 from ..stability.criteria import MARGINAL_THRESHOLD, is_stable
 from ..stability.labels import LABELS
 from ..stability.ranges import grid_ranges

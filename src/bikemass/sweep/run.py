@@ -80,7 +80,7 @@ def chunk_size(count, slots=None, fixed=None, cheap=False):
 def parameters_only(spec):
     """True if every varied key is one of the 26 benchmark parameters: each configuration is
     then a set of parameters to critical speeds, well under a millisecond."""
-    from ..parameters import NAMES
+    from ..models.parameters import NAMES
     return all(key in NAMES for key in spec.keys)
 
 

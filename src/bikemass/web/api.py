@@ -35,7 +35,7 @@ def parameters_document(params):
 
 def download(engine, filename, state):
     """``(bytes, mime type)`` of the download ``filename`` for ``state``; InputError if unknown."""
-    from ..exporters import format_parameters
+    from ..models.parameter_export import format_parameters
     from ..core.gate import read_text
 
     if filename not in DOWNLOADS:

@@ -14,7 +14,7 @@ from functools import lru_cache
 from pathlib import Path
 
 from ..core.errors import InputError
-from ..parameters import BenchmarkParameters
+from ..models.parameters import BenchmarkParameters
 from .state import PageState
 
 UPLOAD_LIMIT = 1_000_000
@@ -150,7 +150,7 @@ class Engine:
         base = self.base_parameters(state.bicycle_key, state.rider_key, state.combine)
         if not state.overrides:
             return base
-        from ..plausibility import check_parameters
+        from ..models.plausibility import check_parameters
         from .state import SOURCE
         return check_parameters(base.replace(**dict(state.overrides)), SOURCE)
 

@@ -8,7 +8,7 @@ configuration); every change of a control recomputes through the cached
 import base64
 
 from ..core.errors import InputError
-from ..parameters import DESCRIPTIONS, NAMES
+from ..models.parameters import DESCRIPTIONS, NAMES
 from .api import DOWNLOADS
 from .engine import UPLOAD_LIMIT
 from .state import BODY_RIDER, CHART_ANGLES, CHART_KEYS, HANDS, SEXES, STIFFNESS_CHOICES, PageState

@@ -13,7 +13,7 @@ from urllib.parse import urlencode
 
 from ..core.config import MAX_MAGNITUDE
 from ..core.errors import InputError
-from ..parameters import NAMES
+from ..models.parameters import NAMES
 
 STIFFNESS_CHOICES = ("infinite", "steel", "titanium", "aluminum")
 """Rear-frame stiffness choices offered by the page (a rigid frame or a shipped material)."""

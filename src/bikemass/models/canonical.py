@@ -45,7 +45,7 @@ class CanonicalMatrices:
 
 
 def canonical_matrices(p):
-    """:class:`CanonicalMatrices` of a :class:`~bikemass.parameters.BenchmarkParameters` set."""
+    """:class:`CanonicalMatrices` of a :class:`~bikemass.models.parameters.BenchmarkParameters` set."""
     sl, cl = np.sin(p.lam), np.cos(p.lam)
     # whole bicycle (T) about the rear contact point
     mT = p.mR + p.mB + p.mH + p.mF

@@ -21,7 +21,7 @@ def static_stiffness(gK0, S):
 
 
 def with_frame_stiffness(matrices, S):
-    """:class:`~bikemass.stability.matrices.CanonicalMatrices` whose ``g K0`` is the flexible ``K_static``."""
+    """:class:`~bikemass.models.canonical.CanonicalMatrices` whose ``g K0`` is the flexible ``K_static``."""
     if S is None:
         return matrices
     return matrices.replace(K0=static_stiffness(matrices.gK0, S) / matrices.g)

@@ -16,7 +16,7 @@ import warnings
 
 import numpy as np
 
-from .core.errors import BikemassWarning
+from ..core.errors import BikemassWarning
 
 RELATIVE_TOLERANCE = 1e-9
 """Asymmetry, negative moments and triangle excess below this fraction of the largest moment pass."""
@@ -85,18 +85,18 @@ def check_parameter_node(params, node):
 
 SIGNED_PARAMETERS = ("lam", "xB", "zB", "xH", "zH", "IBxz", "IHxz", "c")
 """Benchmark parameters that may be zero or negative (every other one is a length, mass or
-moment that must be positive, as :func:`bikemass.parameters.from_node` reads a file)."""
+moment that must be positive, as :func:`bikemass.models.parameters.from_node` reads a file)."""
 
 
 def check_parameters(params, source):
-    """``params`` (:class:`~bikemass.parameters.BenchmarkParameters`) if the model is defined for
+    """``params`` (:class:`~bikemass.models.parameters.BenchmarkParameters`) if the model is defined for
     them, else InputError naming ``source`` and the parameter: finite values, masses, radii and
     moments positive (as in a parameter file), ``lam`` in (0, pi/2), the B and H inertia
     tensors positive semi-definite.  For parameter sets changed after they were read (sweep
     configurations, uncertainty draws); plain arithmetic, a few microseconds.  The triangle
     inequality is not asked for here: a measured near-planar frame sits on its boundary and a
     small spread crosses it."""
-    from .core.errors import InputError, short
+    from ..core.errors import InputError, short
     from .parameters import NAMES
     values = {key: getattr(params, key) for key in NAMES}
     for key, value in values.items():

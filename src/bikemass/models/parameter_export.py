@@ -10,14 +10,14 @@ written with ``repr`` (17 significant digits) so they read back bit for bit (bel
 :data:`bikemass.core.output.ZERO` as 0, like every number bikemass writes).
 """
 
-from .core.choices import PARAMETER_FORMATS as FORMATS
-from .core.errors import InputError
-from .core.output import as_written, dumps, table, with_units
+from ..core.choices import PARAMETER_FORMATS as FORMATS
+from ..core.errors import InputError
+from ..core.output import as_written, dumps, table, with_units
 from .parameters import DESCRIPTIONS, NAMES, parameter_units
 
 
 def format_parameters(params, fmt, title="", rider_included=False):
-    """Text of ``params`` (:class:`~bikemass.parameters.BenchmarkParameters`) in ``fmt``;
+    """Text of ``params`` (:class:`~bikemass.models.parameters.BenchmarkParameters`) in ``fmt``;
     ``rider_included``: the rear body B holds a rider."""
     values = params.to_dict()
     if fmt in ("yaml", "json"):
