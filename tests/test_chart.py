@@ -205,7 +205,7 @@ def test_params_every_size_or_one(capsys):
 
 
 def test_draw_shows_the_chart_dimensions(tmp_path):
-    from bikemass.bicycle.chart_drawing import plot_chart
+    from bikemass.plots.chart import plot_chart
     fig = plot_chart(load_bicycle("bmc-roadmachine@56"))
     texts = {t.get_text() for t in fig.axes[0].texts}
     assert {"stack 590", "reach 388", "wheelbase 1008", "trail 63", "72.0°", "74.2°"} <= texts

@@ -21,9 +21,9 @@ import matplotlib
 matplotlib.use("svg")                      # the caller's choice, not the default
 from matplotlib.figure import Figure
 from bikemass import catalog
-from bikemass.bicycle.drawing import plot_side_view
+from bikemass.plots.side_view import plot_side_view
 from bikemass.fe import frame_modes
-from bikemass.fe.plot import plot_frame_modes
+from bikemass.plots.frame_modes import plot_frame_modes
 from bikemass.frame import frame_structure
 from bikemass.plots.critical_speeds import plot_critical_speeds
 from bikemass.plots.stability import plot_eigenvalues
@@ -72,7 +72,7 @@ def test_svg_keeps_its_text_as_text(tmp_path, capsys):
 def test_axis_limits_reach_the_axes(tmp_path, capsys):
     svg = tmp_path / "side.svg"
     from bikemass import catalog
-    from bikemass.bicycle.drawing import plot_side_view
+    from bikemass.plots.side_view import plot_side_view
     ax = plot_side_view(catalog.load_bicycle("benchmark"), xlim=(-0.5, 1.5), ylim=(0, 1.4)).axes[0]
     assert ax.get_xlim() == pytest.approx((-0.5, 1.5)) and ax.get_ylim() == pytest.approx((0, 1.4))
     assert main(["draw", "benchmark", "--plot", str(svg), "--xlim=-0.5:1.5"]) == 0
@@ -178,7 +178,7 @@ def test_compare_figure_shows_each_configurations_speeds(tmp_path, capsys):
 def test_frame_modes_figure_shows_supports_views_and_mode_types():
     import numpy as np
     from bikemass.fe import frame_modes
-    from bikemass.fe.plot import classify, clamped_nodes, plot_frame_modes
+    from bikemass.plots.frame_modes import classify, clamped_nodes, plot_frame_modes
     from bikemass.frame import frame_structure
     structure = frame_structure("jamis")
     modes = frame_modes(structure, "fix-rear", 3)
@@ -211,14 +211,14 @@ def test_classify_on_made_up_shapes():
 
 
 def classify_(shape):
-    from bikemass.fe.plot import classify
+    from bikemass.plots.frame_modes import classify
     return classify(shape)
 
 
 def test_side_view_draws_wheels_for_a_parameter_file_and_colours_by_body():
     from matplotlib.colors import to_rgba
     from bikemass import catalog
-    from bikemass.bicycle.drawing import COLOURS, plot_side_view
+    from bikemass.plots.side_view import COLOURS, plot_side_view
     ax = plot_side_view(catalog.load_bicycle("jamis-thesis")).axes[0]
     g = catalog.load_bicycle("jamis-thesis").geometry
     for body, axle, radius in (("rear_wheel", g.rear_axle, g.rear_wheel_radius),

@@ -18,8 +18,8 @@ import bicycleparameters as bp
 from bikemass.bicycle import load_bicycle
 from bikemass.cli import main
 from bikemass.core.errors import InputError
-from bikemass.parameter_text import (ParameterFileWarning, combined_front_frame, load_parameter_text,
-                                     parse_parameter_text)
+from bikemass.bicycle.parameter_text import (ParameterFileWarning, combined_front_frame, load_parameter_text,
+                                             parse_parameter_text)
 from bikemass.models.canonical import canonical_matrices
 from bikemass.stability import eigen_sweep, speed_grid
 

@@ -28,8 +28,8 @@ _API = {
     "frame_modes": "frame", "frame_stiffness": "frame", "frame_structure": "frame",
     "pose_rider": "posing", "PosedRider": "posing", "seated_rider": "catalog",
     "plot_eigenvalues": "plots.stability", "plot_critical_speeds": "plots.critical_speeds",
-    "plot_side_view": "bicycle.drawing", "plot_pose": "plots.pose", "plot_frame_modes": "fe.plot",
-    "save_figure": "plots.figure", "geometry_chart": "bicycle.derived_chart", "plot_chart": "bicycle.chart_drawing",
+    "plot_side_view": "plots.side_view", "plot_pose": "plots.pose", "plot_frame_modes": "plots.frame_modes",
+    "save_figure": "plots.figure", "geometry_chart": "bicycle.derived_chart", "plot_chart": "plots.chart",
     "sensitivity": "analysis.sensitivity", "geometry_sensitivity": "analysis.sensitivity",
     "uncertainty": "analysis.uncertainty", "sweep": "sweep",
     "Combine": "core.choices", "Method": "core.choices", "Overlap": "core.choices",
@@ -37,8 +37,8 @@ _API = {
     "MaterialName": "core.choices", "Grip": "core.choices", "EigenPart": "core.choices", "Format": "core.choices",
     "Bicycle": "bicycle", "Rider": "rider", "BenchmarkParameters": "models.parameters",
     "PARAMETER_NAMES": "models.parameters", "InputError": "core.errors", "BikemassWarning": "core.errors",
-    "load_parameter_text": "parameter_text", "MeasuredParameters": "parameter_text",
-    "ParameterFileWarning": "parameter_text",
+    "load_parameter_text": "bicycle.parameter_text", "MeasuredParameters": "bicycle.parameter_text",
+    "ParameterFileWarning": "bicycle.parameter_text",
 }
 """Public name -> the module (under ``bikemass``) that defines it."""
 

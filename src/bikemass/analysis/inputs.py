@@ -123,7 +123,7 @@ class Model:
     def __init__(self, bike, rider=None, stiffness="infinite", combine="exact", method="mesh", origin="spec"):
         from ..bicycle.loader import _is_parameter_text, _with_base
         from ..bicycle.sizes import split_size
-        from ..parameter_text import load_parameter_text
+        from ..bicycle.parameter_text import load_parameter_text
         from ..core.paths import frames_dir, resolve
         from ..rider import poses_dir
 
@@ -162,7 +162,7 @@ class Model:
     def bicycle(self, changes=()):
         def build():
             from ..bicycle.loader import bicycle_from_mapping, bicycle_from_parameters
-            if self._measured is not None:        # read as the file reader does (bikemass.parameter_text)
+            if self._measured is not None:        # read as the file reader does (bikemass.bicycle.parameter_text)
                 if changes:
                     raise InputError(self.origin, changes[0][0], "one of the 26 parameter names (the bicycle "
                                      "is a parameter file)")

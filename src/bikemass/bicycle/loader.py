@@ -18,7 +18,7 @@ from ..core.gate import read_text
 from ..core.errors import InputError, short
 from ..mass.inertia import MassProperties
 from ..mass.materials import load_materials, read_materials
-from ..parameter_text import load_parameter_text, looks_like_parameter_text
+from .parameter_text import load_parameter_text, looks_like_parameter_text
 from ..models.parameters import from_node, is_parameter_file
 from ..mass.parts import Part
 from ..core.paths import frames_dir, resolve

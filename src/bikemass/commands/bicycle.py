@@ -132,14 +132,14 @@ def comparison_table(params, reference, name, reference_name):
 
 def run_draw(args):
     from .. import catalog
-    from ..bicycle.drawing import plot_side_view
+    from ..plots.side_view import plot_side_view
 
     options = dialect.figure_checked(args)
     bicycle, rider = _seated(args)
     title = bicycle.name + (f" + rider {rider.name}" if rider is not None else "")
     fig = plot_side_view(bicycle, rider, title, options.size, **options.limits())
     if bicycle.chart is not None:
-        from ..bicycle.chart_drawing import annotate_chart
+        from ..plots.chart import annotate_chart
         annotate_chart(fig.axes[0], bicycle)
     dialect.save_plot(args, fig, options)
     return 0

@@ -85,7 +85,7 @@ def run_modes(args):
     modes = frame_modes(bicycle, args.bc, args.n, args.material, args.element_size, args.beam,
                         max_elements=args.max_elements)
     if args.plot:
-        from ..fe.plot import plot_frame_modes
+        from ..plots.frame_modes import plot_frame_modes
         dialect.save_plot(args, plot_frame_modes(modes, size=options.size), options)
 
     def render(fmt):

@@ -88,7 +88,7 @@ def run_geometry(args):
 
 
 def _plot(args):
-    from ..bicycle.chart_drawing import plot_chart
+    from ..plots.chart import plot_chart
     from ..bicycle.loader import bicycle_sizes, load_bicycle
     from ..core.errors import InputError
     from .figure_options import figure_options, write_figure

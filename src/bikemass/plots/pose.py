@@ -15,9 +15,9 @@ def _xh(p):
 
 def plot_pose(bicycle, rider, solution, title=None, size=None, xlim=None, ylim=None):
     """Figure: the side view of ``rider`` (solved :class:`~bikemass.rider.solve.Solution`) on
-    ``bicycle``: part outlines and CoMs (bikemass.bicycle.drawing),
+    ``bicycle``: part outlines and CoMs (bikemass.plots.side_view),
     the chain's centre lines, joints (circles), hands and feet, and contact targets (crosses)."""
-    from ..bicycle.drawing import plot_side_view
+    from .side_view import plot_side_view
 
     fig = plot_side_view(bicycle, rider, title, size, xlim, ylim)
     ax = fig.axes[0]

@@ -73,7 +73,7 @@ def draw_eigenvalues(modes, critical, title):
 
 
 def draw_pose(bicycle, rider, title):
-    from ..bicycle.drawing import plot_side_view
+    from ..plots.side_view import plot_side_view
     return plot_side_view(bicycle, rider, title)
 
 

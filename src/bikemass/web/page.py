@@ -332,6 +332,6 @@ def _eigenvalue_figure(result, state):
 
 
 def _side_view_figure(bicycle, rider):
-    from ..bicycle.drawing import plot_side_view
+    from ..plots.side_view import plot_side_view
     title = bicycle.name + (f" + rider {rider.name}" if rider is not None else "")
     return plot_side_view(bicycle, rider, title=title)

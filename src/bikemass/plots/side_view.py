@@ -2,8 +2,8 @@
 
 import numpy as np
 
-from .benchmark import combined_bodies
-from .components import BODIES
+from ..bicycle.benchmark import combined_bodies
+from ..bicycle.components import BODIES
 
 COLOURS = {"rear_frame": "tab:blue", "front_frame": "tab:orange",
            "rear_wheel": "tab:purple", "front_wheel": "tab:brown"}
@@ -66,7 +66,7 @@ def plot_side_view(bicycle, rider=None, title=None, size=None, xlim=None, ylim=N
     ``bicycle`` and ``rider``: anything :func:`bikemass.load_bicycle` and :func:`bikemass.load_rider` take.
     """
     from ..catalog import load_bicycle, load_rider
-    from ..plots.figure import check_limits, new_figure
+    from .figure import check_limits, new_figure
 
     bicycle, rider = load_bicycle(bicycle), load_rider(rider)
     xlim, ylim = check_limits(xlim, "xlim"), check_limits(ylim, "ylim")

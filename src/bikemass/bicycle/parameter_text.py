@@ -31,10 +31,10 @@ from types import MappingProxyType
 
 import numpy as np
 
-from .core.config import Node
-from .core.errors import BikemassWarning, InputError
-from .mass.inertia import MassProperties, combine
-from .models.parameters import NAMES, from_node
+from ..core.config import Node
+from ..core.errors import BikemassWarning, InputError
+from ..mass.inertia import MassProperties, combine
+from ..models.parameters import NAMES, from_node
 
 BODY_KEYS = ("m", "x", "z", "Ixx", "Iyy", "Izz", "Ixz")
 """A rigid body's seven planar mass properties: ``m{P} x{P} z{P} I{P}xx ...`` for body letter ``P``."""
@@ -126,7 +126,7 @@ def parse_parameter_text(text, source="(text)"):
 
 def read_parameter_text(path):
     """:class:`ParameterText` of the file at ``path``."""
-    from .core.gate import read_text
+    from ..core.gate import read_text
     path = Path(path)
     return parse_parameter_text(read_text(path), str(path))
 
@@ -251,6 +251,6 @@ def load_parameter_text(path):
     """:class:`MeasuredParameters` of the BicycleParameters file at ``path``."""
     import os
     if not isinstance(path, (str, os.PathLike)):
-        from .core.errors import wrong_type
+        from ..core.errors import wrong_type
         raise wrong_type("path", path, "a BicycleParameters file path")
     return measured_parameters(read_parameter_text(path))

@@ -72,7 +72,7 @@ def plot_frame_modes(modes, scale=0.12, size=None):
     dimension (stated on the figure).  Clamped nodes are black markers; each row names the
     frequency and the mode type (:func:`classify`).
     """
-    from ..plots.figure import new_figure
+    from .figure import new_figure
 
     if not hasattr(modes, "mesh"):
         from ..core.errors import wrong_type

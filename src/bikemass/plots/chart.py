@@ -8,7 +8,7 @@ dimensions (``bikemass geometry --plot``, the figure of docs/bicycles.md).
 
 import numpy as np
 
-from .derived_chart import derived_chart, frame_points
+from ..bicycle.derived_chart import derived_chart, frame_points
 
 DIMENSION_COLOUR = "tab:red"
 GAP = 0.06
@@ -78,7 +78,7 @@ def plot_chart(bicycle, title=None, size=None):
     """Figure: frame centre lines, wheels, steer axis and the chart's dimensions (m, height up);
     ``bicycle``: anything :func:`bikemass.load_bicycle` takes."""
     from ..catalog import load_bicycle
-    from ..plots.figure import new_figure
+    from .figure import new_figure
 
     bicycle = load_bicycle(bicycle)
     fig = new_figure(size or (10, 6.5))
