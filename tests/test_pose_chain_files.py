@@ -11,7 +11,7 @@ from bikemass.bicycle import load_bicycle
 from bikemass.cli import main
 from bikemass.core.errors import InputError
 from bikemass.rider import load_rider
-from bikemass.rider.thesis_fit import compare_with_chain
+from bikemass.study.thesis_fit import compare_with_chain
 
 ROOT = Path(__file__).parents[1]
 THREE_LINES = "body: thesis_rider\nbike: jamis\nchain: {torso_lean: 30 deg, hands: hoods}\n"

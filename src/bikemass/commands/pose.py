@@ -124,7 +124,7 @@ FIT_UNITS = {"plane_gaps": "m", "fit_rms": "m", "fit_max": "m", "chain_gap": "m"
 def run_fit(args):
     from ..core.errors import BikemassWarning
     from ..rider import THESIS_POSES
-    from ..rider.thesis_fit import compare_with_chain
+    from ..study.thesis_fit import compare_with_chain
 
     fits = {}
     for pose in args.poses or THESIS_POSES:
@@ -138,7 +138,7 @@ def run_fit(args):
 
 def _fit_record(r):
     """The ``pose-fit`` result of one pose as plain data (SI, degrees)."""
-    from ..rider.thesis_fit import first
+    from ..study.thesis_fit import first
 
     t, c = r["thesis"], r["fitted"]
     (wt, tc), (wc, cc) = ((first(w), first(c)) for w, c in (r["speeds"]["thesis"], r["speeds"]["chain"]))
