@@ -15,7 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
-from bikemass.catalog import parameters
+from bikemass.scenario.catalog import parameters
 from bikemass.models.parameter_export import format_parameters
 from bikemass.models.canonical import canonical_matrices
 from bikemass.stability import eigen_sweep, follow_modes, speed_grid, stability

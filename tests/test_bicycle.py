@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 import yaml
 
-from bikemass import catalog
+from bikemass.scenario import catalog
 from bikemass.bicycle import bicycle_parameters, load_bicycle
 from bikemass.core.errors import InputError
 from bikemass.mass.inertia import MassProperties

@@ -4,7 +4,7 @@ canonical matrices as bikemass (relative 1e-12: the file holds every value at 17
 import numpy as np
 import pytest
 
-from bikemass import catalog
+from bikemass.scenario import catalog
 from bikemass.models.parameter_export import format_parameters
 from bikemass.models.canonical import canonical_matrices
 

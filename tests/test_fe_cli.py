@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from bikemass import cli
-from bikemass import frame
+from bikemass.scenario import frame
 from bikemass.fe import equivalent_stiffness, frame_modes
 from bikemass.mass.materials import Material
 from printed import numbers

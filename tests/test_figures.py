@@ -20,11 +20,11 @@ import sys
 import matplotlib
 matplotlib.use("svg")                      # the caller's choice, not the default
 from matplotlib.figure import Figure
-from bikemass import catalog
+from bikemass.scenario import catalog
 from bikemass.plots.side_view import plot_side_view
 from bikemass.fe import frame_modes
 from bikemass.plots.frame_modes import plot_frame_modes
-from bikemass.frame import frame_structure
+from bikemass.scenario.frame import frame_structure
 from bikemass.plots.critical_speeds import plot_critical_speeds
 from bikemass.plots.stability import plot_eigenvalues
 from bikemass.models.canonical import canonical_matrices
@@ -71,7 +71,7 @@ def test_svg_keeps_its_text_as_text(tmp_path, capsys):
 
 def test_axis_limits_reach_the_axes(tmp_path, capsys):
     svg = tmp_path / "side.svg"
-    from bikemass import catalog
+    from bikemass.scenario import catalog
     from bikemass.plots.side_view import plot_side_view
     ax = plot_side_view(catalog.load_bicycle("benchmark"), xlim=(-0.5, 1.5), ylim=(0, 1.4)).axes[0]
     assert ax.get_xlim() == pytest.approx((-0.5, 1.5)) and ax.get_ylim() == pytest.approx((0, 1.4))
@@ -122,7 +122,7 @@ def test_eig_figure_names_the_weave_and_capsize_speeds(tmp_path, capsys):
 
 @pytest.fixture(scope="module")
 def benchmark_stability():
-    from bikemass import catalog
+    from bikemass.scenario import catalog
     from bikemass.models.canonical import canonical_matrices
     from bikemass.stability import speed_grid, stability
     return stability(canonical_matrices(catalog.parameters("benchmark", "none", "exact")), speed_grid(0, 30, 0.05))
@@ -179,7 +179,7 @@ def test_frame_modes_figure_shows_supports_views_and_mode_types():
     import numpy as np
     from bikemass.fe import frame_modes
     from bikemass.plots.frame_modes import classify, clamped_nodes, plot_frame_modes
-    from bikemass.frame import frame_structure
+    from bikemass.scenario.frame import frame_structure
     structure = frame_structure("jamis")
     modes = frame_modes(structure, "fix-rear", 3)
     dropouts = sorted(modes.mesh.keypoint_nodes[k] for k in structure.dropouts)
@@ -217,7 +217,7 @@ def classify_(shape):
 
 def test_side_view_draws_wheels_for_a_parameter_file_and_colours_by_body():
     from matplotlib.colors import to_rgba
-    from bikemass import catalog
+    from bikemass.scenario import catalog
     from bikemass.plots.side_view import COLOURS, plot_side_view
     ax = plot_side_view(catalog.load_bicycle("jamis-thesis")).axes[0]
     g = catalog.load_bicycle("jamis-thesis").geometry

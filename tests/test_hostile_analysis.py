@@ -7,7 +7,7 @@ import re
 
 import pytest
 
-from bikemass.analysis.inputs import Model
+from bikemass.scenario.inputs import Model
 from bikemass.analysis.uncertainty import Spread, propagate, uncertainty
 from bikemass.core.errors import InputError
 from bikemass.sweep.run import run_sweep

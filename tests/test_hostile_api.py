@@ -94,7 +94,7 @@ def test_sensitivity_arguments(meijaard, kwargs, match):
 
 
 def test_geometry_sensitivity_arguments():
-    from bikemass.analysis.inputs import Model
+    from bikemass.scenario.inputs import Model
     with pytest.raises(bm.InputError, match="step"):
         bm.geometry_sensitivity(Model("jamis"), ["geometry.trail"], step=0)
     with pytest.raises(InputTypeError, match="model"):

@@ -12,7 +12,7 @@ from bikemass.fe import frame_modes
 from bikemass.fe.modes import DENSE_LIMIT
 from bikemass.fe.model import build_mesh
 from bikemass.core.output import new_folder
-from bikemass.frame import frame_structure
+from bikemass.scenario.frame import frame_structure
 
 
 def test_overwrite_keeps_permissions_and_symlink(tmp_path, capsys):

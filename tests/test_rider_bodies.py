@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 import yaml
 
-from bikemass import catalog
+from bikemass.scenario import catalog
 from bikemass.bicycle import bicycle_parameters, load_bicycle
 from bikemass.cli import main
 from bikemass.rider import load_rider

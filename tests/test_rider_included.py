@@ -6,7 +6,7 @@ import json
 import pytest
 import yaml
 
-from bikemass import catalog
+from bikemass.scenario import catalog
 from bikemass.cli import main
 from bikemass.core.errors import InputError
 

@@ -6,7 +6,7 @@ import re
 import numpy as np
 import pytest
 
-from bikemass import catalog
+from bikemass.scenario import catalog
 from bikemass.analysis.crossings import critical_speeds
 from bikemass.analysis.model import matrix_derivatives, system, values_of
 from bikemass.analysis.sensitivity import sensitivity
@@ -178,7 +178,7 @@ def test_stiffness_derivatives_equal_differences():
 def test_geometry_chain_equals_direct_difference(capsys):
     """Seat-stay wall of the steel Jamis (mass properties and beam S both change): the chained
     derivative equals the central difference of the critical speeds themselves."""
-    from bikemass.analysis.inputs import Model
+    from bikemass.scenario.inputs import Model
     from bikemass.analysis.sensitivity import geometry_sensitivity
     model = Model("jamis", None, "steel")
     key = "sections.seat_stay.wall"

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from scipy.optimize import linear_sum_assignment
 
-from bikemass.catalog import parameters
+from bikemass.scenario.catalog import parameters
 from bikemass.models.canonical import canonical_matrices
 from bikemass.stability import eigen_sweep, follow_modes, speed_grid, stability, state_matrices
 from bikemass.models.flexible_static import static_stiffness, with_frame_stiffness

@@ -18,7 +18,7 @@ from functools import lru_cache
 import numpy as np
 import pytest
 
-from bikemass import catalog
+from bikemass.scenario import catalog
 from bikemass.cli import main
 from bikemass.models.canonical import canonical_matrices
 from bikemass.stability import critical_speeds, follow_modes, stability, state_matrices

@@ -12,7 +12,7 @@ from html.parser import HTMLParser
 
 import pytest
 
-from bikemass import catalog
+from bikemass.scenario import catalog
 from bikemass.cli import main
 
 BIKES = {"benchmark", "jamis", "cargo", "cargo-loaded"}

@@ -4,7 +4,7 @@ explain misses, the rounding half-units, and one configuration's figures."""
 import numpy as np
 import pytest
 
-from bikemass import catalog
+from bikemass.scenario import catalog
 from bikemass.bicycle import bicycle_parameters
 from bikemass.stability import stability
 from bikemass.models.flexible_static import with_frame_stiffness

@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from bikemass import catalog
+from bikemass.scenario import catalog
 from bikemass.cli import main
 from bikemass.models.canonical import canonical_matrices
 from bikemass.stability import stability

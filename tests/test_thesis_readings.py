@@ -114,7 +114,7 @@ def test_cargo_titanium_kdd_erratum_in_the_stability_tables():
 
 def test_prose_numbers_that_no_table_holds():
     """docs/thesis.md#prose-that-disagrees-with-the-tables."""
-    from bikemass import catalog
+    from bikemass.scenario import catalog
     from bikemass.models.canonical import canonical_matrices
     from bikemass.stability import follow_modes
 

@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 from uncertainties import unumpy
 
-from bikemass import catalog
-from bikemass.analysis.inputs import Model
+from bikemass.scenario import catalog
+from bikemass.scenario.inputs import Model
 from bikemass.analysis.uncertainty import Spread, propagate
 from bikemass.cli import main
 

@@ -9,7 +9,7 @@ import pytest
 import yaml
 from hypothesis import given, settings, strategies as st
 
-from bikemass import catalog
+from bikemass.scenario import catalog
 from bikemass.cli import main
 from bikemass.core.units import DIMENSIONS, INCH, POUND, UnitError, convert, dimension_of, to_si
 

@@ -22,11 +22,12 @@ import types
 __version__ = "0.1.0"
 
 _API = {
-    "load_bicycle": "catalog", "load_rider": "catalog", "parameters": "catalog", "stiffness": "catalog",
+    "load_bicycle": "scenario.catalog", "load_rider": "scenario.catalog", "parameters": "scenario.catalog",
+    "stiffness": "scenario.catalog",
     "stability": "dynamics", "eigenvalues": "dynamics", "matrices": "dynamics", "speeds": "dynamics",
     "StabilityResult": "dynamics",
-    "frame_modes": "frame", "frame_stiffness": "frame", "frame_structure": "frame",
-    "pose_rider": "posing", "PosedRider": "posing", "seated_rider": "catalog",
+    "frame_modes": "scenario.frame", "frame_stiffness": "scenario.frame", "frame_structure": "scenario.frame",
+    "pose_rider": "scenario.posing", "PosedRider": "scenario.posing", "seated_rider": "scenario.catalog",
     "plot_eigenvalues": "plots.stability", "plot_critical_speeds": "plots.critical_speeds",
     "plot_side_view": "plots.side_view", "plot_pose": "plots.pose", "plot_frame_modes": "plots.frame_modes",
     "save_figure": "plots.figure", "geometry_chart": "bicycle.derived_chart", "plot_chart": "plots.chart",

@@ -57,7 +57,7 @@ def _stiffness(S):
         from .core.errors import InputTypeError
         raise InputTypeError("stiffness", S, f"a 2x2 array in N m/rad; for a material use "
                              f"bm.stiffness(bicycle, {S!r})")
-    from .catalog import stiffness_matrix
+    from .scenario.catalog import stiffness_matrix
     return stiffness_matrix(S)
 
 

@@ -146,15 +146,15 @@ GEOMETRY_STEP = 1e-4
 
 
 def input_value(model, key):
-    """Current value of an input key of a :class:`~bikemass.analysis.inputs.Model` (SI, or the
+    """Current value of an input key of a :class:`~bikemass.scenario.inputs.Model` (SI, or the
     unit the YAML file uses for it, e.g. degrees for chain angles)."""
-    from .inputs import get_path
+    from ..scenario.inputs import get_path
     return get_path(model, key)
 
 
 def geometry_sensitivity(model, keys, result=None, step=GEOMETRY_STEP):
     """Derivatives of the weave and capsize speeds w.r.t. geometry-level inputs ``keys`` (dotted
-    paths, see :mod:`bikemass.analysis.inputs`).
+    paths, see :mod:`bikemass.scenario.inputs`).
 
     Chain rule: ``dv/dx = sum_p (dv/dp)(dp/dx) + sum_S (dv/dS)(dS/dx)``.  ``dv/dp`` and ``dv/dS``
     are exact (:func:`sensitivity`); ``dp/dx`` and ``dS/dx`` (geometry -> mass properties, beam
@@ -164,10 +164,10 @@ def geometry_sensitivity(model, keys, result=None, step=GEOMETRY_STEP):
     Returns ``{key: {value, step, d_weave_speed, d_capsize_speed, difference_check}}``.
     """
     from ..core.errors import InputError, short
-    from .inputs import Model
+    from ..scenario.inputs import Model
     if not isinstance(model, Model):
         from ..core.errors import wrong_type
-        raise wrong_type("model", model, "a bikemass.analysis.inputs.Model")
+        raise wrong_type("model", model, "a bikemass.scenario.inputs.Model")
     if isinstance(keys, str):
         keys = [keys]
     if isinstance(step, bool) or not isinstance(step, (int, float)) or not 0 < step <= 0.1:

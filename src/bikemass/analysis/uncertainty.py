@@ -2,7 +2,7 @@
 
 Inputs are independent, each with a distribution about its nominal value: ``normal``
 (``std``) or ``uniform`` (``half_width``, std = half_width / sqrt 3).  An input is one of
-the 26 benchmark names or a geometry-level key of :mod:`bikemass.analysis.inputs`.
+the 26 benchmark names or a geometry-level key of :mod:`bikemass.scenario.inputs`.
 
 * ``linear``: first-order propagation, ``std(y) = sqrt(sum_i (dy/dx_i std_i)^2)`` (what the
   ``uncertainties`` package does).  ``dy/dx_i`` by the complex step along the input's
@@ -69,7 +69,7 @@ def read_spreads(node):
 def directions(model, spreads, step=1e-4):
     """``{key: (dp, dS)}``: derivative of the 26 parameters (dict) and of S (2x2 or None) per unit
     of each input; exact unit vectors for parameter names, central differences for the rest."""
-    from .inputs import get_path
+    from ..scenario.inputs import get_path
     p0, S0 = model.build()
     out = {}
     for key in spreads:
@@ -143,7 +143,7 @@ def linear_derivatives(params, S, dirs, speeds):
 
 def propagate(model, spreads, method="linear", samples=1000, seed=0, speeds=None, step=1e-4):
     """:class:`Propagation` of ``spreads`` (``{key: Spread}``) through ``model``
-    (:class:`~bikemass.analysis.inputs.Model`); ``speeds`` (m/s) for the eigenvalue bands."""
+    (:class:`~bikemass.scenario.inputs.Model`); ``speeds`` (m/s) for the eigenvalue bands."""
     from ..stability import speed_grid
     _check_options(spreads, method, samples, seed)
     speeds = speed_grid(0, 10, 0.1) if speeds is None else np.asarray(speeds, dtype=float)
@@ -201,7 +201,7 @@ def uncertainty(bike, spreads, rider=None, stiffness="infinite", combine="exact"
                 samples=1000, seed=0, speeds=None):
     """:class:`Propagation` for a bicycle (name or file), rider and stiffness choice; ``spreads``
     maps input keys to a standard deviation (normal) or a :class:`Spread`."""
-    from .inputs import Model
+    from ..scenario.inputs import Model
     if not isinstance(spreads, dict):
         raise InputError("spreads", "(argument)", f"a mapping of input key -> std or Spread, got {type(spreads).__name__}")
     spreads = {k: v if isinstance(v, Spread) else Spread("normal", v) for k, v in spreads.items()}
@@ -210,7 +210,7 @@ def uncertainty(bike, spreads, rider=None, stiffness="infinite", combine="exact"
 
 def _montecarlo(model, spreads, n, seed, speeds, matrices, speed_out, eig_modes, inputs):
     from ..stability import follow_modes
-    from .inputs import get_path
+    from ..scenario.inputs import get_path
     rng = np.random.default_rng(seed)
     keys = list(spreads)
     nominal = {k: get_path(model, k) for k in keys}

@@ -84,7 +84,7 @@ def derived_chart(bicycle):
 def geometry_chart(bicycle, size=None):
     """The derived chart (m, deg; :data:`CHART_ORDER`) of anything ``bm.load_bicycle`` takes;
     ``size`` picks one size of a size run."""
-    from ..catalog import load_bicycle
+    from ..scenario.catalog import load_bicycle
     return derived_chart(load_bicycle(bicycle, size=size))
 
 

@@ -88,7 +88,7 @@ def _bike_options(p, data, figure):
 
 def _inputs(args):
     """Checked figure options (or None), parameters and stiffness of BIKE/--rider/--stiffness."""
-    from .. import catalog
+    from ..scenario import catalog
     from ..core.errors import InputError
 
     options = dialect.figure_checked(args)
@@ -114,7 +114,7 @@ def run_sensitivity(args):
     result = sensitivity(params, S, vmax=args.max_speed)
     geometry = {}
     if keys:
-        from ..analysis.inputs import Model
+        from ..scenario.inputs import Model
         model = Model(args.bike, args.rider, args.stiffness, args.combine, origin="--inputs")
         geometry = geometry_sensitivity(model, keys, result, args.step)
 
@@ -192,7 +192,7 @@ def read_std_file(path):
 
 
 def run_uncertainty(args):
-    from ..analysis.inputs import Model
+    from ..scenario.inputs import Model
     from ..analysis.uncertainty import Spread, propagate, uncertainty_figure
     from ..core.errors import InputError
 

@@ -75,13 +75,13 @@ def allow_off_contact_option(p):
 
 def _seated(args):
     """(bicycle, rider seated on it or None) of BIKE and --rider."""
-    from .. import catalog
+    from ..scenario import catalog
     bicycle = catalog.load_bicycle(args.bike)
     return bicycle, catalog.seated_rider(bicycle, args.rider, args.allow_off_contact)
 
 
 def run_params(args):
-    from .. import catalog
+    from ..scenario import catalog
     from ..core.errors import InputError
     from ..models.parameter_export import format_parameters
 
@@ -131,7 +131,7 @@ def comparison_table(params, reference, name, reference_name):
 
 
 def run_draw(args):
-    from .. import catalog
+    from ..scenario import catalog
     from ..plots.side_view import plot_side_view
 
     options = dialect.figure_checked(args)
@@ -146,7 +146,7 @@ def run_draw(args):
 
 
 def run_export(args):
-    from .. import catalog
+    from ..scenario import catalog
     from ..bicycle.scene import build_scene, export_scene
     from ..core.errors import InputError
     from ..core.output import write_atomic

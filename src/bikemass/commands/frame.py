@@ -53,7 +53,7 @@ def register(subparsers):
 
 
 def run_stiffness(args):
-    from ..frame import frame_stiffness
+    from ..scenario.frame import frame_stiffness
 
     S = frame_stiffness(args.bike, args.material, args.procedure, args.beam)
 
@@ -69,10 +69,10 @@ def run_stiffness(args):
 
 
 def run_modes(args):
-    from ..catalog import load_bicycle
+    from ..scenario.catalog import load_bicycle
     from ..core.errors import InputError
     from ..fe.model import element_count
-    from ..frame import frame_modes, frame_structure
+    from ..scenario.frame import frame_modes, frame_structure
 
     options = dialect.figure_checked(args)
     if args.n > args.max_modes:

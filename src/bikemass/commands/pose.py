@@ -83,7 +83,7 @@ def _report(solution, gaps, hands, crank):
 
 
 def run_pose(args):
-    from ..posing import pose_rider
+    from ..scenario.posing import pose_rider
 
     options = dialect.figure_checked(args)
     posed = pose_rider(args.bike, args.body, args.hands, args.crank, _fixed(args), args.name)

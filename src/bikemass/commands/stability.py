@@ -78,7 +78,7 @@ def _max_speeds(p):
 
 def _inputs(args, rider=None, stiffness=None):
     """(parameter set, S or None) of BIKE with ``rider`` and ``stiffness`` (default: the options')."""
-    from ..catalog import load_bicycle, parameters, stiffness as frame_stiffness
+    from ..scenario.catalog import load_bicycle, parameters, stiffness as frame_stiffness
 
     bike = load_bicycle(args.bike)
     return (parameters(bike, rider or args.rider, args.combine, allow_off_contact=args.allow_off_contact),

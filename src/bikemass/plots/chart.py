@@ -77,7 +77,7 @@ def annotate_chart(ax, bicycle):
 def plot_chart(bicycle, title=None, size=None):
     """Figure: frame centre lines, wheels, steer axis and the chart's dimensions (m, height up);
     ``bicycle``: anything :func:`bikemass.load_bicycle` takes."""
-    from ..catalog import load_bicycle
+    from ..scenario.catalog import load_bicycle
     from .figure import new_figure
 
     bicycle = load_bicycle(bicycle)

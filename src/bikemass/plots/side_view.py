@@ -65,7 +65,7 @@ def plot_side_view(bicycle, rider=None, title=None, size=None, xlim=None, ylim=N
     in the x-z plane) drawn round it, the steer axis dashed; the legend sits below the axes.
     ``bicycle`` and ``rider``: anything :func:`bikemass.load_bicycle` and :func:`bikemass.load_rider` take.
     """
-    from ..catalog import load_bicycle, load_rider
+    from ..scenario.catalog import load_bicycle, load_rider
     from .figure import check_limits, new_figure
 
     bicycle, rider = load_bicycle(bicycle), load_rider(rider)

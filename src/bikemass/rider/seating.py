@@ -123,7 +123,7 @@ def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, toleran
     if isinstance(pose, Rider):
         (node, as_printed), source, pose = pose.spec, pose.spec[0].source, pose.pose
     elif isinstance(pose, Mapping):
-        from ..catalog import MAPPING
+        from ..scenario.catalog import MAPPING
         from ..core.gate import plain_input
         source, node = MAPPING, Node(plain_input(pose, MAPPING), MAPPING, "")
         pose = node.value.get("name", MAPPING) if isinstance(node.value, dict) else MAPPING

@@ -17,7 +17,7 @@ The benchmark bicycle is the same parameter file in every run.
 
 from dataclasses import dataclass
 
-from .. import catalog
+from ..scenario import catalog
 from ..bicycle import bicycle_parameters
 from ..fe import equivalent_stiffness
 from ..mass.materials import load_materials

@@ -1,6 +1,6 @@
 """One chunk of configurations -> result rows.  Runs in the caller's process or on a Dask worker.
 
-The :class:`~bikemass.analysis.inputs.Model` (parsed YAML, built bicycles, riders and
+The :class:`~bikemass.scenario.inputs.Model` (parsed YAML, built bicycles, riders and
 stiffnesses) lives as long as the process and is shared by every chunk of the same sweep.
 BLAS runs on one thread (the worker, not the library, is the unit of parallelism):
 :func:`bikemass.core.threads.one_blas_thread`.
@@ -34,7 +34,7 @@ class Chunk:
 
 
 def _model(setup):
-    from ..analysis.inputs import Model
+    from ..scenario.inputs import Model
     if setup not in _MODELS:
         bike, rider, stiffness, combine, source = setup
         _MODELS.clear()

@@ -48,7 +48,7 @@ def check_keys(spec):
     """Every varied key names an input of the spec's bicycle or rider, and the spec's stiffness
     (and each stiffness name it varies) is one the bicycle has (InputError otherwise): a
     misspelt choice fails once here instead of on every row."""
-    from ..analysis.inputs import STIFFNESS_KEY, Model, get_path
+    from ..scenario.inputs import STIFFNESS_KEY, Model, get_path
     model = Model(spec.bike, spec.rider, spec.stiffness, spec.combine, origin=spec.source)
     for key in spec.keys:
         if key != STIFFNESS_KEY:

@@ -14,7 +14,7 @@ global_sensitivity: false  # true: Saltelli sample (SALib) of n base points and 
 chunk: 500                 # optional: configurations per task (default: docs/analysis.md, Engines)
 ```
 
-Keys are those of :mod:`bikemass.analysis.inputs` (the 26 parameters, ``stiffness``,
+Keys are those of :mod:`bikemass.scenario.inputs` (the 26 parameters, ``stiffness``,
 dotted paths into the bicycle or pose YAML).
 """
 

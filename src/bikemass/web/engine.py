@@ -102,7 +102,7 @@ class Engine:
 
     def _bicycle(self, key):
         """The bicycle of a :attr:`PageState.bicycle_key`: ``(bike, size, chart edits)``."""
-        from ..catalog import load_bicycle
+        from ..scenario.catalog import load_bicycle
 
         bike, size, chart = key
         size = size or None
@@ -113,7 +113,7 @@ class Engine:
     def _rider(self, key):
         """The rider of a :attr:`PageState.rider_key` as loaded (a body rider: its pose mapping,
         which only a bicycle can solve)."""
-        from ..catalog import load_rider
+        from ..scenario.catalog import load_rider
         if isinstance(key, tuple):
             return body_pose(key)
         if "/" in key or "\\" in key or key.startswith("."):
@@ -122,7 +122,7 @@ class Engine:
 
     def _seated(self, bicycle_key, rider_key):
         """The rider seated on the bicycle (None for no rider); InputError if it cannot sit."""
-        from ..catalog import seated_rider
+        from ..scenario.catalog import seated_rider
         return seated_rider(self.bicycle(bicycle_key), self.rider(rider_key))
 
     def _base_parameters(self, key, rider, combine):
@@ -132,7 +132,7 @@ class Engine:
         return bicycle_parameters(self.bicycle(key), self.seated(key, rider), check(Combine, combine).value, "mesh")
 
     def _stiffness(self, key, material):
-        from ..catalog import stiffness
+        from ..scenario.catalog import stiffness
         return stiffness(self.bicycle(key), material)
 
     def warm(self, states=(PageState(),)):

@@ -7,8 +7,8 @@ import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from .core.choices import Grip, check
-from .core.frozen import freeze, short_repr
+from ..core.choices import Grip, check
+from ..core.frozen import freeze, short_repr
 
 DEFAULT_BODY = "thesis_rider"
 """The anthropometry (``bodies/``) posed when none is named."""
@@ -57,7 +57,7 @@ def _degrees(value, what):
     """``value`` as a float angle in [-:data:`MAX_ANGLE`, :data:`MAX_ANGLE`] deg, else InputError."""
     import math
     import numbers
-    from .core.errors import InputError, short
+    from ..core.errors import InputError, short
     if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value) \
             or abs(value) > MAX_ANGLE:
         raise InputError(what, short(value), f"an angle in degrees within +-{MAX_ANGLE:g}")
@@ -94,14 +94,14 @@ def pose_rider(bicycle, body=DEFAULT_BODY, hands=None, crank=None, fixed=None, n
         A bicycle without contacts, an unknown grip or joint, or a contact out of reach.
     """
     from .catalog import load_bicycle
-    from .core.config import Node
-    from .core.errors import BikemassWarning, InputError
-    from .rider import Rider
-    from .rider.body import chain_of, load_body
-    from .rider.chain import JOINTS, joint_gaps
-    from .rider.chain_file import bicycle_contacts, default_hands
-    from .rider.pose import read_pose
-    from .rider.solve import solve_on_bicycle
+    from ..core.config import Node
+    from ..core.errors import BikemassWarning, InputError
+    from ..rider import Rider
+    from ..rider.body import chain_of, load_body
+    from ..rider.chain import JOINTS, joint_gaps
+    from ..rider.chain_file import bicycle_contacts, default_hands
+    from ..rider.pose import read_pose
+    from ..rider.solve import solve_on_bicycle
 
     model = load_bicycle(bicycle)
     model = bicycle_contacts(model, Node(model.source, model.source, "contacts"))
@@ -110,7 +110,7 @@ def pose_rider(bicycle, body=DEFAULT_BODY, hands=None, crank=None, fixed=None, n
     chain_body = chain_of(loaded, body_node)
     hands = default_hands(model.contacts) if hands is None else check(Grip, hands, "hands").value
     if fixed is not None and not isinstance(fixed, Mapping):
-        from .core.errors import wrong_type
+        from ..core.errors import wrong_type
         raise wrong_type("fixed", fixed, "a mapping of joint -> angle (deg)")
     fixed = dict(fixed or {})
     for joint, value in fixed.items():

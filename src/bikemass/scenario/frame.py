@@ -2,9 +2,9 @@
 (``bm.frame_stiffness``; :func:`bikemass.stiffness` also knows published values) and its
 natural frequencies (``bm.frame_modes``)."""
 
-from .core.choices import Beam, Procedure, Support, check
-from .fe.defaults import DEFAULT_ELEMENT_SIZE
-from .options import MAX_ELEMENTS
+from ..core.choices import Beam, Procedure, Support, check
+from ..fe.defaults import DEFAULT_ELEMENT_SIZE
+from ..options import MAX_ELEMENTS
 
 
 def frame_structure(bicycle):
@@ -26,7 +26,7 @@ def frame_structure(bicycle):
         If the bicycle's file names no ``structure:`` (e.g. a parameter file).
     """
     from .catalog import load_bicycle
-    from .core.errors import InputError
+    from ..core.errors import InputError
 
     model = load_bicycle(bicycle)
     if model.structure is None:
@@ -55,9 +55,9 @@ def frame_stiffness(bicycle, material=None, procedure=Procedure.CONDENSED, beam=
     numpy.ndarray of shape (2, 2)
         S in N m/rad on (roll, steer) at the bottom head-tube keypoint, dropouts clamped.
     """
-    from .fe import equivalent_stiffness
+    from ..fe import equivalent_stiffness
 
-    from .core.errors import InputError
+    from ..core.errors import InputError
 
     procedure, beam = check(Procedure, procedure), check(Beam, beam)
     structure, material = frame_structure(bicycle), _material(material)
@@ -74,10 +74,10 @@ def _real(value):
 
 
 def _material(material):
-    from .mass.materials import Material
+    from ..mass.materials import Material
     if material is None or isinstance(material, Material):
         return material
-    from .fe import resolve_material
+    from ..fe import resolve_material
     return resolve_material(str(material))
 
 
@@ -109,9 +109,9 @@ def frame_modes(bicycle, support=Support.FREE, count=10, material=None, element_
     Modes
         ``.frequencies_hz`` (count,) ascending, ``.shapes`` (n_dof, count) mass-normalised.
     """
-    from .core.errors import InputError
-    from .fe import frame_modes as solve
-    from .fe.model import element_count
+    from ..core.errors import InputError
+    from ..fe import frame_modes as solve
+    from ..fe.model import element_count
 
     support, beam = check(Support, support, "support"), check(Beam, beam)
     if not _real(count) or int(count) != count or count < 1:

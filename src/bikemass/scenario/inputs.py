@@ -186,14 +186,14 @@ class Model:
 
     def rider_bodies(self, bike_changes=(), rider_changes=()):
         """``{body: MassProperties}`` of the rider seated on the changed bicycle (as
-        :func:`bikemass.catalog.seated_rider` does), or ``None``."""
+        :func:`bikemass.scenario.catalog.seated_rider` does), or ``None``."""
         rider = self.posed_rider(rider_changes)
         if rider is None:
             return None
 
         def build():
             from ..bicycle.benchmark import rider_bodies
-            from ..catalog import seated_rider
+            from .catalog import seated_rider
             return rider_bodies(seated_rider(self.bicycle(bike_changes), rider), self.method)
         return _lru(self._seated, (bike_changes, rider_changes), build)
 
@@ -234,9 +234,9 @@ class Model:
 
     def frame_stiffness(self, which, bike_changes=()):
         """2x2 S (N m/rad) or None, for stiffness choice ``which`` on the changed bicycle (as
-        :func:`bikemass.catalog.stiffness`; a changed bicycle's S is computed, never published)."""
+        :func:`bikemass.scenario.catalog.stiffness`; a changed bicycle's S is computed, never published)."""
         def build():
-            from .. import catalog
+            from . import catalog
             if which in (None, "infinite", "rigid") or which not in self.materials():
                 return catalog.stiffness(self.bike, which)
             return catalog.stiffness(self.bicycle(bike_changes), which, "computed" if bike_changes else "auto")

@@ -16,9 +16,9 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from .core.choices import RIGID, Beam, Combine, Method, Procedure, Source, check
-from .core.errors import InputError
-from .models.plausibility import check_stiffness
+from ..core.choices import RIGID, Beam, Combine, Method, Procedure, Source, check
+from ..core.errors import InputError
+from ..models.plausibility import check_stiffness
 
 COMBINE_CHOICES = Combine.values()
 """Rider + rear frame: 'exact' = parallel-axis theorem; 'thesis' = inertias added (Eq. 3.6)."""
@@ -52,10 +52,10 @@ def load_bicycle(bicycle, name=None, size=None):
     InputError
         Unknown name (the closest shipped name is suggested) or bad content.
     """
-    from .bicycle import Bicycle
-    from .bicycle.loader import bicycle_from_mapping, bicycle_from_parameters
-    from .bicycle.loader import load_bicycle as load_file
-    from .models.parameters import BenchmarkParameters
+    from ..bicycle import Bicycle
+    from ..bicycle.loader import bicycle_from_mapping, bicycle_from_parameters
+    from ..bicycle.loader import load_bicycle as load_file
+    from ..models.parameters import BenchmarkParameters
 
     if isinstance(bicycle, Bicycle):
         return bicycle
@@ -65,7 +65,7 @@ def load_bicycle(bicycle, name=None, size=None):
         return bicycle_from_mapping(bicycle, name or MAPPING, size)
     if isinstance(bicycle, (str, os.PathLike)):
         return load_file(os.fspath(bicycle), size)
-    from .core.errors import wrong_type
+    from ..core.errors import wrong_type
     raise wrong_type("bicycle", bicycle, "a bicycle is a name, a file path, a mapping, a BenchmarkParameters "
                      "or a Bicycle")
 
@@ -98,8 +98,8 @@ def load_rider(rider, as_printed=False, name=None):
     InputError
         Unknown pose (the closest is suggested) or bad content.
     """
-    from .rider import Rider, rider_from_mapping
-    from .rider import load_rider as load_file
+    from ..rider import Rider, rider_from_mapping
+    from ..rider import load_rider as load_file
 
     if rider is None or (isinstance(rider, str) and rider == "none"):
         return None
@@ -109,7 +109,7 @@ def load_rider(rider, as_printed=False, name=None):
         return rider_from_mapping(rider, name or MAPPING, as_printed)
     if isinstance(rider, (str, os.PathLike)):
         return load_file(os.fspath(rider), as_printed=as_printed)
-    from .core.errors import wrong_type
+    from ..core.errors import wrong_type
     raise wrong_type("rider", rider, "a rider is a pose name, a file path, a mapping, a Rider or None")
 
 
@@ -137,7 +137,7 @@ def parameters(bicycle, rider=None, combine=Combine.EXACT, method=Method.MESH, a
         in kg m^2, ...) and ``p.to_dict()`` as plain floats.  A parameter file without a
         rider returns its own values exactly.
     """
-    from .bicycle import bicycle_parameters
+    from ..bicycle import bicycle_parameters
     combine, method = check(Combine, combine), check(Method, method)
     model = load_bicycle(bicycle)
     return bicycle_parameters(model, seated_rider(model, rider, allow_off_contact), combine.value, method.value)
@@ -169,9 +169,9 @@ def seated_rider(bicycle, rider, allow_off_contact=False, as_printed=False):
         :class:`~bikemass.core.errors.BikemassWarning` s.
     """
     import warnings
-    from .core.errors import BikemassWarning
-    from .rider.seating import seat_rider
-    from .bicycle.benchmark import refuse_second_rider
+    from ..core.errors import BikemassWarning
+    from ..rider.seating import seat_rider
+    from ..bicycle.benchmark import refuse_second_rider
     if rider is None or (isinstance(rider, str) and rider == "none"):
         return None
     model = load_bicycle(bicycle)
@@ -215,7 +215,7 @@ def stiffness(bicycle, which, source=Source.AUTO, procedure=Procedure.CONDENSED,
         Unknown material or file, a bicycle with neither a published S nor a rear-frame
         structure, or a matrix that is not symmetric positive definite.
     """
-    from .mass.materials import Material, load_materials
+    from ..mass.materials import Material, load_materials
     source, procedure, beam = check(Source, source), check(Procedure, procedure), check(Beam, beam)
     if which is None or (isinstance(which, str) and which in (RIGID, "rigid")):
         return None
@@ -225,8 +225,8 @@ def stiffness(bicycle, which, source=Source.AUTO, procedure=Procedure.CONDENSED,
     material = which if isinstance(which, Material) else materials.get(os.fspath(which))
     if material is not None:
         return _material_stiffness(load_bicycle(bicycle), material, source, procedure, beam)
-    from .core.config import load_yaml
-    from .core.paths import closest_name
+    from ..core.config import load_yaml
+    from ..core.paths import closest_name
     path = os.fspath(which)
     if not os.path.lexists(path):          # an existing non-file reaches the input gate, which says what it is
         names = sorted(materials)
