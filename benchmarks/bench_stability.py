@@ -18,7 +18,7 @@ import numpy as np
 from bikemass.scenario.catalog import parameters
 from bikemass.models.parameter_export import format_parameters
 from bikemass.models.canonical import canonical_matrices
-from bikemass.stability import eigen_sweep, follow_modes, speed_grid, stability
+from bikemass.analysis.stability import eigen_sweep, follow_modes, speed_grid, stability
 
 
 def best(fn, number):

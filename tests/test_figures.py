@@ -28,7 +28,7 @@ from bikemass.scenario.frame import frame_structure
 from bikemass.plots.critical_speeds import plot_critical_speeds
 from bikemass.plots.stability import plot_eigenvalues
 from bikemass.models.canonical import canonical_matrices
-from bikemass.stability import speed_grid, stability
+from bikemass.analysis.stability import speed_grid, stability
 
 result = stability(canonical_matrices(catalog.parameters("benchmark", "none", "exact")), speed_grid(0, 8, 0.5))
 figures = [plot_eigenvalues(result, "benchmark"), plot_eigenvalues(result.modes),
@@ -124,7 +124,7 @@ def test_eig_figure_names_the_weave_and_capsize_speeds(tmp_path, capsys):
 def benchmark_stability():
     from bikemass.scenario import catalog
     from bikemass.models.canonical import canonical_matrices
-    from bikemass.stability import speed_grid, stability
+    from bikemass.analysis.stability import speed_grid, stability
     return stability(canonical_matrices(catalog.parameters("benchmark", "none", "exact")), speed_grid(0, 30, 0.05))
 
 

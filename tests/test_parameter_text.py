@@ -21,7 +21,7 @@ from bikemass.core.errors import InputError
 from bikemass.bicycle.parameter_text import (ParameterFileWarning, combined_front_frame, load_parameter_text,
                                              parse_parameter_text)
 from bikemass.models.canonical import canonical_matrices
-from bikemass.stability import eigen_sweep, speed_grid
+from bikemass.analysis.stability import eigen_sweep, speed_grid
 
 BP_DATA = Path(bp.__file__).parent / "app-data"
 SHIPPED = sorted(p.parent.parent.name for p in BP_DATA.glob("bicycles/*/Parameters/*Benchmark.txt"))

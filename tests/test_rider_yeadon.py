@@ -12,7 +12,7 @@ from bikemass.bicycle import bicycle_parameters, load_bicycle
 from bikemass.cli import main
 from bikemass.rider.seating import seat_rider
 from bikemass.models.canonical import canonical_matrices
-from bikemass.stability import stability
+from bikemass.analysis.stability import stability
 
 yeadon = pytest.importorskip("yeadon")
 

@@ -13,14 +13,14 @@ from bikemass.analysis.sensitivity import sensitivity
 from bikemass.cli import main
 from bikemass.models.parameters import NAMES
 from bikemass.models.canonical import canonical_matrices
-from bikemass.stability import speed_grid, stability
+from bikemass.analysis.stability import speed_grid, stability
 from bikemass.models.flexible_static import with_frame_stiffness
 
 GRID = speed_grid(0, 8, 0.05)
 
 
 def _tracked_speeds(params):
-    """Weave and capsize speeds from the tracked-mode root finder of bikemass.stability."""
+    """Weave and capsize speeds from the tracked-mode root finder of bikemass.analysis.stability."""
     s = stability(canonical_matrices(params), GRID)
     return s.weave_speeds[0], s.capsize_speeds[0]
 
@@ -87,7 +87,7 @@ def test_matrix_derivatives_complex_step_equal_differences():
     ("benchmark", None, "infinite"), ("jamis-thesis", None, "aluminum"),
     ("cargo-loaded-thesis", None, "infinite"), ("jamis-thesis", None, "infinite")])
 def test_closed_form_crossings_equal_tracked_roots(bike, rider, stiffness):
-    """The quadratic-in-v^2 crossings equal every Re = 0 crossing of bikemass.stability (root
+    """The quadratic-in-v^2 crossings equal every Re = 0 crossing of bikemass.analysis.stability (root
     finding on tracked modes, 0.05 grid) to 1e-9 m/s with the same kind (oscillatory/real) and
     direction, and the strict stable ranges agree."""
     p, S = catalog.parameters(bike, rider), catalog.stiffness(bike, stiffness)

@@ -8,11 +8,11 @@ from scipy.optimize import linear_sum_assignment
 
 from bikemass.scenario.catalog import parameters
 from bikemass.models.canonical import canonical_matrices
-from bikemass.stability import eigen_sweep, follow_modes, speed_grid, stability, state_matrices
+from bikemass.analysis.stability import eigen_sweep, follow_modes, speed_grid, stability, state_matrices
 from bikemass.models.flexible_static import static_stiffness, with_frame_stiffness
-from bikemass.stability.quartic import quartic_roots
-from bikemass.stability.ranges import intersect
-from bikemass.stability.tracking import best_permutations, pair_violations, step_costs
+from bikemass.analysis.stability.quartic import quartic_roots
+from bikemass.analysis.stability.ranges import intersect
+from bikemass.analysis.stability.tracking import best_permutations, pair_violations, step_costs
 from thesis_sets import RIDERS, stiffness, thesis_set
 
 BENCHMARK = parameters("benchmark")  # frames/benchmark.yaml (Meijaard 2007, Table 1)

@@ -21,11 +21,11 @@ import pytest
 from bikemass.scenario import catalog
 from bikemass.cli import main
 from bikemass.models.canonical import canonical_matrices
-from bikemass.stability import critical_speeds, follow_modes, stability, state_matrices
+from bikemass.analysis.stability import critical_speeds, follow_modes, stability, state_matrices
 from bikemass.models.flexible_static import with_frame_stiffness
-from bikemass.stability.analysis import speed_grid
-from bikemass.stability.critical import SpeedEigenvalues
-from bikemass.stability.roots import brent
+from bikemass.analysis.stability.analysis import speed_grid
+from bikemass.analysis.stability.critical import SpeedEigenvalues
+from bikemass.analysis.stability.roots import brent
 from thesis_sets import stiffness as thesis_stiffness
 from thesis_sets import thesis_set
 
@@ -197,7 +197,7 @@ def test_critical_speeds_need_no_scipy_optimize():
     code = ("import sys\n"
             "from bikemass.models.parameters import BenchmarkParameters\n"
             "from bikemass.models.canonical import canonical_matrices\n"
-            "from bikemass.stability import stability\n"
+            "from bikemass.analysis.stability import stability\n"
             "p = BenchmarkParameters(w=1.02, c=0.08, lam=0.3141592653589793, g=9.81, rR=0.3, mR=2.0,"
             " IRxx=0.0603, IRyy=0.12, xB=0.3, zB=-0.9, mB=85.0, IBxx=9.2, IByy=11.0, IBzz=2.8, IBxz=2.4,"
             " xH=0.9, zH=-0.7, mH=4.0, IHxx=0.05892, IHyy=0.06, IHzz=0.00708, IHxz=-0.00756, rF=0.35,"

@@ -10,7 +10,7 @@ The one entry that is not reproduced is explained in docs/stability.md.
 import pytest
 
 from bikemass.models.canonical import canonical_matrices
-from bikemass.stability import stability
+from bikemass.analysis.stability import stability
 from bikemass.models.flexible_static import with_frame_stiffness
 from thesis_sets import CHAPTER4, CHAPTER5, TABLES, stiffness, thesis_set
 

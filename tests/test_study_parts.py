@@ -6,7 +6,7 @@ import pytest
 
 from bikemass.scenario import catalog
 from bikemass.bicycle import bicycle_parameters
-from bikemass.stability import stability
+from bikemass.analysis.stability import stability
 from bikemass.models.flexible_static import with_frame_stiffness
 from bikemass.study import figures
 from bikemass.study.configurations import Configuration, configurations

@@ -11,7 +11,7 @@ import pytest
 from bikemass.scenario import catalog
 from bikemass.cli import main
 from bikemass.models.canonical import canonical_matrices
-from bikemass.stability import stability
+from bikemass.analysis.stability import stability
 
 GRID = """bike: benchmark
 vary:
@@ -57,7 +57,7 @@ def test_engines_give_identical_tables(tmp_path):
 
 
 def test_rows_equal_independent_stability_runs(tmp_path):
-    """Every row's critical speeds and strict stable range equal bikemass.stability (root finding on
+    """Every row's critical speeds and strict stable range equal bikemass.analysis.stability (root finding on
     tracked modes, crossings by kind) on the benchmark with that c and lam, to 1e-9 m/s."""
     spec = _spec(tmp_path, GRID)
     assert main(["sweep", spec, "--out", str(tmp_path / "o"), "--quiet"]) == 0

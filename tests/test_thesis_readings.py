@@ -116,7 +116,7 @@ def test_prose_numbers_that_no_table_holds():
     """docs/thesis.md#prose-that-disagrees-with-the-tables."""
     from bikemass.scenario import catalog
     from bikemass.models.canonical import canonical_matrices
-    from bikemass.stability import follow_modes
+    from bikemass.analysis.stability import follow_modes
 
     modes = follow_modes(canonical_matrices(catalog.parameters("benchmark")), np.arange(0, 30.001, 0.01))
     capsize = modes["capsize"].real

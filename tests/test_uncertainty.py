@@ -58,7 +58,7 @@ def test_linear_eigenvalue_std_equals_differences():
     spreads = {"c": Spread("normal", 0.002), "lam": Spread("normal", 0.004), "mB": Spread("normal", 0.3)}
     r = propagate(Model("benchmark"), spreads, speeds=np.array([3.0, 5.0, 8.0]))
     from bikemass.models.canonical import canonical_matrices
-    from bikemass.stability import follow_modes
+    from bikemass.analysis.stability import follow_modes
     speeds = np.concatenate([np.linspace(0, 3, 61), [5.0, 8.0]])
     fd = {}
     for k, s in spreads.items():

@@ -24,8 +24,8 @@ __version__ = "0.1.0"
 _API = {
     "load_bicycle": "scenario.catalog", "load_rider": "scenario.catalog", "parameters": "scenario.catalog",
     "stiffness": "scenario.catalog",
-    "stability": "dynamics", "eigenvalues": "dynamics", "matrices": "dynamics", "speeds": "dynamics",
-    "StabilityResult": "dynamics",
+    "stability": "analysis.stability.result", "eigenvalues": "analysis.stability.result", "matrices": "analysis.stability.result", "speeds": "analysis.stability.result",
+    "StabilityResult": "analysis.stability.result",
     "frame_modes": "scenario.frame", "frame_stiffness": "scenario.frame", "frame_structure": "scenario.frame",
     "pose_rider": "scenario.posing", "PosedRider": "scenario.posing", "seated_rider": "scenario.catalog",
     "plot_eigenvalues": "plots.stability", "plot_critical_speeds": "plots.critical_speeds",
@@ -62,9 +62,9 @@ def __dir__():
 
 
 class _Package(types.ModuleType):
-    """``bikemass`` keeps ``bm.stability`` and ``bm.parameters`` the API functions even after
-    the subpackages of the same names (``bikemass.stability``, ``bikemass.parameters``) are
-    imported: those stay importable as modules (``from bikemass.stability import ...``)."""
+    """``bikemass`` keeps ``bm.sweep`` the API function even after the subpackage of the same
+    name (``bikemass.sweep``) is imported: it stays importable as a module
+    (``from bikemass.sweep import ...``)."""
 
     def __setattr__(self, name, value):
         if name in _API and isinstance(value, types.ModuleType):

@@ -116,7 +116,7 @@ class Propagation:
 def linear_derivatives(params, S, dirs, speeds):
     """``{key: {"matrices": {name: 2x2}, "eig": (n, 4) complex, "weave_speed": float|None, ...}}``
     and the nominal modes, critical speeds."""
-    from ..stability import follow_modes
+    from .stability import follow_modes
     sys0 = system(values_of(params), S)
     modes = follow_modes(sys0.canonical(), speeds)
     X = modes.eigenvectors                                 # (n, 4, 4), columns = labelled modes
@@ -144,7 +144,7 @@ def linear_derivatives(params, S, dirs, speeds):
 def propagate(model, spreads, method="linear", samples=1000, seed=0, speeds=None, step=1e-4):
     """:class:`Propagation` of ``spreads`` (``{key: Spread}``) through ``model``
     (:class:`~bikemass.scenario.inputs.Model`); ``speeds`` (m/s) for the eigenvalue bands."""
-    from ..stability import speed_grid
+    from .stability import speed_grid
     _check_options(spreads, method, samples, seed)
     speeds = speed_grid(0, 10, 0.1) if speeds is None else np.asarray(speeds, dtype=float)
     params, S = model.build()
@@ -209,7 +209,7 @@ def uncertainty(bike, spreads, rider=None, stiffness="infinite", combine="exact"
 
 
 def _montecarlo(model, spreads, n, seed, speeds, matrices, speed_out, eig_modes, inputs):
-    from ..stability import follow_modes
+    from .stability import follow_modes
     from ..scenario.inputs import get_path
     rng = np.random.default_rng(seed)
     keys = list(spreads)

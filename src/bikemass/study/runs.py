@@ -22,11 +22,11 @@ from ..bicycle import bicycle_parameters
 from ..fe import equivalent_stiffness
 from ..mass.materials import load_materials
 from ..models.canonical import canonical_matrices
-from ..stability import follow_modes, speed_grid, stability
+from ..analysis.stability import follow_modes, speed_grid, stability
 from ..models.flexible_static import with_frame_stiffness
-from ..stability.criteria import MARGINAL_THRESHOLD, is_stable
-from ..stability.labels import LABELS
-from ..stability.ranges import grid_ranges
+from ..analysis.stability.criteria import MARGINAL_THRESHOLD, is_stable
+from ..analysis.stability.labels import LABELS
+from ..analysis.stability.ranges import grid_ranges
 from .configurations import BENCHMARK, BENCHMARK_RIDER, FE_FRAME
 
 CRITERIA = ("strict", "marginal")

@@ -49,7 +49,7 @@ def _rider_of(chain, body_name, source):
 def _speeds(bike, rider, combine, method):
     from ..bicycle import bicycle_parameters
     from ..models.canonical import canonical_matrices
-    from ..stability import stability
+    from ..analysis.stability import stability
     result = stability(canonical_matrices(bicycle_parameters(bike, rider, combine, method)))
     return result.weave_speeds, result.capsize_speeds
 

@@ -156,7 +156,7 @@ class Engine:
 
     def evaluate(self, state: PageState, speeds=None):
         """:class:`Evaluation` of ``state`` over ``speeds`` (default grid)."""
-        from ..dynamics import stability
+        from ..analysis.stability.result import stability
 
         params = self.parameters(state)
         S = self.stiffness(state.bicycle_key, state.stiffness)

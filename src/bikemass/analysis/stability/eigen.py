@@ -6,7 +6,7 @@ The state is ``x = [phi, delta, phi', delta']`` and ``x' = A(v) x`` with::
 
 Its eigenvalues are the roots of the quartic ``det(M s^2 + v C1 s + g K0 + v^2 K2)``,
 whose five coefficients are written out in closed form for all speeds at once and
-solved by :func:`~bikemass.stability.quartic.quartic_roots`; each eigenvector is
+solved by :func:`~bikemass.analysis.stability.quartic.quartic_roots`; each eigenvector is
 ``[q, s q]`` with ``q`` spanning the null space of that 2x2 matrix.  This gives the
 same numbers as ``np.linalg.eig`` of the stacked state matrices (the tests hold
 them together) several times faster.
@@ -84,7 +84,7 @@ class ModalQuantities:
 class EigenSweep(ModalQuantities):
     """Eigenvalues (n, 4) [1/s] and unit eigenvectors (n, 4, 4) [columns] at speeds (n,) [m/s].
 
-    Columns are in no particular order; :func:`~bikemass.stability.tracking.track`
+    Columns are in no particular order; :func:`~bikemass.analysis.stability.tracking.track`
     orders them into modes.
     """
 

@@ -24,7 +24,7 @@ def speed_grid(start=DEFAULT_SPEEDS[0], stop=DEFAULT_SPEEDS[1], step=DEFAULT_SPE
 class Stability:
     """Critical speeds (m/s) and stable ranges of one bicycle.
 
-    ``crossings``: every :class:`~bikemass.stability.critical.Crossing` of ``Re = 0`` by
+    ``crossings``: every :class:`~bikemass.analysis.stability.critical.Crossing` of ``Re = 0`` by
     speed (``speed``, ``kind`` oscillatory|real, ``direction``, tracked ``mode`` label);
     ``ranges[criterion]`` and ``mode_ranges[label][criterion]`` =
     ``{"exact": [[start, stop], ...], "grid": [...]}`` with criterion ``"strict"``
@@ -70,7 +70,7 @@ class Stability:
 
 
 def critical_speeds(matrices, speeds=None):
-    """Every :class:`~bikemass.stability.critical.Crossing` of ``Re = 0`` (tuple by speed), without
+    """Every :class:`~bikemass.analysis.stability.critical.Crossing` of ``Re = 0`` (tuple by speed), without
     the ranges: the part of :func:`stability` a sweep over many configurations needs."""
     modes = follow_modes(matrices, speed_grid() if speeds is None else speeds)
     return tuple(all_crossings(SpeedEigenvalues(matrices), modes))

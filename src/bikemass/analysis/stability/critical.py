@@ -1,7 +1,7 @@
 """Critical speeds as roots: where a mode's real part (or stability margin) crosses zero.
 
 Each sign change of a mode on the speed grid brackets one root; Brent's method
-(:mod:`~bikemass.stability.roots`) then finds it to ``roots.XTOL`` (1e-13 m/s) on the eigenvalue, at any
+(:mod:`~bikemass.analysis.stability.roots`) then finds it to ``roots.XTOL`` (1e-13 m/s) on the eigenvalue, at any
 speed, that continues the tracked mode (the root nearest to the straight line between
 the two bracketing values).  Eigenvalues at single speeds come from LAPACK on the 4x4
 state matrix and are memoised (:class:`SpeedEigenvalues`): the two members of a pair,

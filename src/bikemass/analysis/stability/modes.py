@@ -1,9 +1,9 @@
 """Modes followed across speed and labelled: the result of an eigenvalue sweep.
 
 :func:`follow_modes` solves the eigenvalue problem at all speeds at once
-(:mod:`~bikemass.stability.eigen`), follows every root from speed to speed
-(:mod:`~bikemass.stability.tracking`) and names the modes
-(:mod:`~bikemass.stability.labels`).  Labels are fixed at standstill: a sweep that
+(:mod:`~bikemass.analysis.stability.eigen`), follows every root from speed to speed
+(:mod:`~bikemass.analysis.stability.tracking`) and names the modes
+(:mod:`~bikemass.analysis.stability.labels`).  Labels are fixed at standstill: a sweep that
 starts above 0 m/s is extended down to 0 m/s (step at most ``START_STEP``) for the
 labelling and the extension is dropped again.
 """
@@ -41,7 +41,7 @@ class Modes(ModalQuantities):
     def names(self):
         """What each root is at every speed (array (n, 4) of str, columns as ``labels``):
         ``weave`` while the weave roots are a pair, ``weave, real (upper|lower)`` when
-        they are real, ``capsize``, ``caster`` (:func:`~bikemass.stability.labels.mode_names`)."""
+        they are real, ``capsize``, ``caster`` (:func:`~bikemass.analysis.stability.labels.mode_names`)."""
         return mode_names(self.eigenvalues, self.labels)
 
     def to_dict(self):
@@ -55,7 +55,7 @@ class Modes(ModalQuantities):
 def check_speeds(speeds):
     """``speeds`` as a 1-D float array; InputError (a ValueError) unless numbers, at least one,
     finite, >= 0 and strictly increasing."""
-    from ..core.errors import InputError, short
+    from ...core.errors import InputError, short
     try:
         v = np.atleast_1d(np.asarray(speeds, dtype=float))
     except (TypeError, ValueError):

@@ -3,7 +3,7 @@
 A grid range is a run of consecutive grid speeds at which the criterion holds,
 written ``[first, last]`` as in the thesis's tables.  The exact range of the same
 run moves each end that is not an end of the grid to the root of the stability
-margin in the neighbouring grid step (:mod:`~bikemass.stability.critical`).
+margin in the neighbouring grid step (:mod:`~bikemass.analysis.stability.critical`).
 """
 
 import numpy as np
@@ -51,7 +51,7 @@ def intersect(a, b):
 
 def overall_ranges(at, modes, marginal=None):
     """``{"exact": [...], "grid": [...]}`` where every eigenvalue meets the criterion
-    (``at``: canonical matrices or their :class:`~bikemass.stability.critical.SpeedEigenvalues`)."""
+    (``at``: canonical matrices or their :class:`~bikemass.analysis.stability.critical.SpeedEigenvalues`)."""
     mask = is_stable(modes.eigenvalues, marginal).all(axis=1)
     f = overall_margin(at, marginal)
     return {"exact": exact_ranges(modes.speeds, mask, lambda k: f),

@@ -1,4 +1,4 @@
-"""Following the eigenvalues of an :class:`~bikemass.stability.eigen.EigenSweep` across speed.
+"""Following the eigenvalues of an :class:`~bikemass.analysis.stability.eigen.EigenSweep` across speed.
 
 Between neighbouring speeds every eigenvalue is matched to one at the next speed by
 an optimal assignment on the cost::
@@ -11,7 +11,7 @@ distance term separates eigenvalues that are far apart; the eigenvector term dec
 where eigenvalues cross (and, at ``v = 0``, between a root and its mirror image
 ``-lambda``, whose eigenvectors ``[q, +-lambda q]`` differ).  Where two real roots
 merge into a complex pair or a pair splits, both partners are equally good: which
-one continues which is settled by :mod:`~bikemass.stability.labels`.
+one continues which is settled by :mod:`~bikemass.analysis.stability.labels`.
 
 Roots of a real polynomial move in complex-conjugate pairs, so a permutation that
 breaks a pair (one member continuing as a real root while the other stays complex, or
