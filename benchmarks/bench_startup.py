@@ -1,7 +1,7 @@
 """Whole-command start-up time against ``python -c "import numpy"`` on the same machine.
 
 Run by hand: ``python benchmarks/bench_startup.py``.  Each command is a fresh Python
-process started the way the ``bikemass`` console script starts it (``from bikemass.cli
+process started the way the ``bikemass`` console script starts it (``from bikemass.cli.main
 import main``), with this checkout's ``src`` first on the path; best of 5 wall-clock
 runs.  Targets (issue 11): ``bikemass --help`` at most 1.5x and ``bikemass params
 benchmark --format json`` at most 2.5x the numpy import.  It also lists which heavy
@@ -16,7 +16,7 @@ from pathlib import Path
 
 SRC = Path(__file__).resolve().parents[1] / "src"
 REPEAT = 5
-ENTRY = "import sys; from bikemass.cli import main; sys.argv[0] = 'bikemass'; sys.exit(main())"
+ENTRY = "import sys; from bikemass.cli.main import main; sys.argv[0] = 'bikemass'; sys.exit(main())"
 HEAVY = ("numpy", "scipy", "yaml", "trimesh", "matplotlib")
 COMMANDS = {
     "bikemass --help": (["--help"], 1.5),

@@ -1,7 +1,7 @@
 """Wall time, CPU time and peak memory of ``bikemass study``, without and with figures.
 
 Run by hand: ``python benchmarks/bench_study.py [--repeat 3]``.  Each measurement runs
-the command in a fresh process (``python -m bikemass.cli study --out TMP ...``) under a
+the command in a fresh process (``python -m bikemass.cli.main study --out TMP ...``) under a
 small wrapper process whose ``getrusage(RUSAGE_CHILDREN)`` then holds the study's CPU
 time and the peak resident memory of its largest process (the main process or one of
 its forked workers).  Targets (issue 6, this 2-core machine): under 5 s without
@@ -29,7 +29,7 @@ TARGETS = {"without figures": 5.0, "with figures": 60.0}
 
 def measure(figures, env=None):
     with tempfile.TemporaryDirectory() as out:
-        cmd = [sys.executable, "-m", "bikemass.cli", "study", "--out", out] + ([] if figures else ["--no-figures"])
+        cmd = [sys.executable, "-m", "bikemass.cli.main", "study", "--out", out] + ([] if figures else ["--no-figures"])
         text = subprocess.run([sys.executable, "-c", WRAPPER, *cmd], check=True, capture_output=True,
                               text=True, env={**os.environ, **(env or {})}).stdout
     return json.loads(text)

@@ -38,7 +38,7 @@ def main():
         def log_request(self, *args):
             pass
 
-    command = [sys.executable, "-m", "bikemass.cli", "stability", "jamis", "--rider", "relaxed",
+    command = [sys.executable, "-m", "bikemass.cli.main", "stability", "jamis", "--rider", "relaxed",
                "--stiffness", "steel", "--format", "json"]
     cli = min(seconds(lambda: subprocess.run(command, check=True, capture_output=True)) for _ in range(5))
     cli_weave = json.loads(subprocess.run(command, check=True, capture_output=True).stdout)["weave_speeds"]

@@ -35,7 +35,7 @@ def study(tmp_path_factory):
     """One ``bikemass study --no-figures`` of the checkout (tests/test_study.py checks it, and
     tests/test_wheel.py compares the installed wheel's run with it): ``(folder, stdout, results,
     progress bar)``."""
-    from bikemass.cli import main
+    from bikemass.cli.main import main
     from bikemass.study import pipeline
     out = tmp_path_factory.mktemp("study")
     stdout = io.StringIO()

@@ -13,7 +13,7 @@ import pytest
 import yaml
 
 import bikemass as bm
-from bikemass.cli import main
+from bikemass.cli.main import main
 from bikemass.core.paths import bodies_dir
 
 

@@ -11,7 +11,7 @@ import yaml
 
 from bikemass.bicycle import load_bicycle
 from bikemass.bicycle.scene import equivalent_ellipsoid
-from bikemass.cli import main
+from bikemass.cli.main import main
 from bikemass.mass.inertia import MassProperties
 
 from test_bicycle import MEIJAARD_2007

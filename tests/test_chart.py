@@ -9,7 +9,7 @@ import yaml
 
 from bikemass.bicycle import bicycle_parameters, load_bicycle
 from bikemass.bicycle.derived_chart import derived_chart
-from bikemass.cli import main
+from bikemass.cli.main import main
 from bikemass.core.errors import InputError
 from printed import number_after
 

@@ -4,7 +4,7 @@ import pytest
 import yaml
 
 from bikemass.bicycle import load_bicycle
-from bikemass.cli import main
+from bikemass.cli.main import main
 
 
 def _folding(tmp_path, stem_length):

@@ -34,7 +34,7 @@ from pathlib import Path
 import pytest
 import yaml
 
-from bikemass.cli import main
+from bikemass.cli.main import main
 from bikemass.core.output import ZERO
 from printed import NUMBER
 

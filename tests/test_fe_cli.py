@@ -10,7 +10,7 @@ import json
 import numpy as np
 import pytest
 
-from bikemass import cli
+from bikemass.cli import main as cli
 from bikemass.scenario import frame
 from bikemass.fe import equivalent_stiffness, frame_modes
 from bikemass.mass.materials import Material

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from bikemass.cli import main
+from bikemass.cli.main import main
 from bikemass.plots.critical_speeds import plot_critical_speeds
 from bikemass.plots.stability import plot_eigenvalues
 

@@ -109,7 +109,7 @@ def test_sweep_stiffness_choices_are_checked_once(tmp_path):
 
 
 def _cli(capsys, *argv):
-    from bikemass.cli import main
+    from bikemass.cli.main import main
     status = main(list(argv))
     return status, capsys.readouterr().err.strip().splitlines()
 

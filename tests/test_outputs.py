@@ -7,7 +7,7 @@ import stat
 import numpy as np
 import pytest
 
-from bikemass.cli import main
+from bikemass.cli.main import main
 from bikemass.fe import frame_modes
 from bikemass.fe.modes import DENSE_LIMIT
 from bikemass.fe.model import build_mesh

@@ -16,7 +16,7 @@ import pytest
 
 import bicycleparameters as bp
 from bikemass.bicycle import load_bicycle
-from bikemass.cli import main
+from bikemass.cli.main import main
 from bikemass.core.errors import InputError
 from bikemass.bicycle.parameter_text import (ParameterFileWarning, combined_front_frame, load_parameter_text,
                                              parse_parameter_text)

@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from bikemass.core import paths
-from bikemass.cli import main
+from bikemass.cli.main import main
 
 ROOT = Path(__file__).resolve().parents[1]
 

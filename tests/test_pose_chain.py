@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from bikemass.bicycle import load_bicycle
-from bikemass.cli import main
+from bikemass.cli.main import main
 from bikemass.core.config import Node
 from bikemass.core.convention import thesis_segment_rotation
 from bikemass.core.errors import InputError

@@ -8,7 +8,7 @@ import pytest
 import yaml
 
 from bikemass.bicycle import load_bicycle
-from bikemass.cli import main
+from bikemass.cli.main import main
 from bikemass.core.errors import InputError
 from bikemass.rider import load_rider
 from bikemass.study.thesis_fit import compare_with_chain

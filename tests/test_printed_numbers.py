@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 import bikemass
-from bikemass.cli import main
+from bikemass.cli.main import main
 from bikemass.core.output import (SIGNIFICANT, ZERO, as_shown, as_written, csv_text, dumps, formatted, table,
                                   with_units)
 
@@ -92,7 +92,7 @@ def _printed(tmp_path, coretype=None):
     if coretype:
         env["OPENBLAS_CORETYPE"] = coretype
     code = ("import contextlib, io, json, sys\n"
-            "from bikemass.cli import main\n"
+            "from bikemass.cli.main import main\n"
             "for argv in (['rider', sys.argv[1]], ['pose', 'jamis', '--torso-lean', '30', '--hands', 'hoods'],\n"
             "             ['rider', 'relaxed', '--bike', 'jamis']):\n"
             "    assert main(argv) == 0\n")

@@ -10,7 +10,7 @@ import yaml
 
 from bikemass.scenario import catalog
 from bikemass.bicycle import bicycle_parameters, load_bicycle
-from bikemass.cli import main
+from bikemass.cli.main import main
 from bikemass.rider import load_rider
 from bikemass.rider.seating import seat_rider
 

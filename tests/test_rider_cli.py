@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 import yaml
 
-from bikemass.cli import main
+from bikemass.cli.main import main
 from bikemass.rider import THESIS_POSES, load_rider
 
 BODIES = Path(__file__).parents[1] / "bodies"
@@ -146,7 +146,7 @@ def test_unknown_pose_name(capsys):
 def test_console_script_exit_status_and_single_line(tmp_path):
     """The installed entry point, as a user runs it: exit 2, one line on stderr, no traceback."""
     path = _pose(tmp_path, RELAXED.replace("body: thesis_rider", "body: martian"))
-    proc = subprocess.run([sys.executable, "-m", "bikemass.cli", "rider", str(path)],
+    proc = subprocess.run([sys.executable, "-m", "bikemass.cli.main", "rider", str(path)],
                           capture_output=True, text=True)
     assert proc.returncode == 2 and proc.stdout == ""
     assert proc.stderr.strip().count("\n") == 0 and "Traceback" not in proc.stderr

@@ -5,7 +5,7 @@ from pathlib import Path
 
 import numpy as np
 
-from bikemass.cli import main
+from bikemass.cli.main import main
 from bikemass.rider import load_rider
 
 DOC = (Path(__file__).parents[1] / "docs" / "riders.md").read_text()

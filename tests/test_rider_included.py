@@ -7,7 +7,7 @@ import pytest
 import yaml
 
 from bikemass.scenario import catalog
-from bikemass.cli import main
+from bikemass.cli.main import main
 from bikemass.core.errors import InputError
 
 

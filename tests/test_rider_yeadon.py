@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from bikemass.bicycle import bicycle_parameters, load_bicycle
-from bikemass.cli import main
+from bikemass.cli.main import main
 from bikemass.rider.seating import seat_rider
 from bikemass.models.canonical import canonical_matrices
 from bikemass.analysis.stability import stability

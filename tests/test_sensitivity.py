@@ -10,7 +10,7 @@ from bikemass.scenario import catalog
 from bikemass.analysis.crossings import critical_speeds
 from bikemass.analysis.model import matrix_derivatives, system, values_of
 from bikemass.analysis.sensitivity import sensitivity
-from bikemass.cli import main
+from bikemass.cli.main import main
 from bikemass.models.parameters import NAMES
 from bikemass.models.canonical import canonical_matrices
 from bikemass.analysis.stability import speed_grid, stability

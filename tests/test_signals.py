@@ -37,7 +37,7 @@ def _alive(pid):
 def test_stopping_a_study(tmp_path, signum, status, word):
     out = tmp_path / "study"
     env = {**os.environ, "PYTHONPATH": f"{SRC}{os.pathsep}{os.environ.get('PYTHONPATH', '')}"}
-    proc = subprocess.Popen([sys.executable, "-m", "bikemass.cli", "study", "--out", str(out), "--no-figures",
+    proc = subprocess.Popen([sys.executable, "-m", "bikemass.cli.main", "study", "--out", str(out), "--no-figures",
                              "--jobs", "2"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
     workers = []
     deadline = time.monotonic() + 120

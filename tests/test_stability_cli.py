@@ -7,7 +7,7 @@ import numpy as np
 
 import pytest
 
-from bikemass.cli import main
+from bikemass.cli.main import main
 from bikemass.core.paths import frames_dir
 from bikemass.models.canonical import canonical_matrices
 from bikemass.analysis.stability import follow_modes, speed_grid

@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 
 from bikemass.scenario import catalog
-from bikemass.cli import main
+from bikemass.cli.main import main
 from bikemass.models.canonical import canonical_matrices
 from bikemass.analysis.stability import critical_speeds, follow_modes, stability, state_matrices
 from bikemass.models.flexible_static import with_frame_stiffness

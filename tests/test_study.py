@@ -13,7 +13,7 @@ from html.parser import HTMLParser
 import pytest
 
 from bikemass.scenario import catalog
-from bikemass.cli import main
+from bikemass.cli.main import main
 
 BIKES = {"benchmark", "jamis", "cargo", "cargo-loaded"}
 RIDERS = {"included", "none", "no-hands", "relaxed", "on-hoods", "aerobars", "aero-tuck"}

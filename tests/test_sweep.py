@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from bikemass.scenario import catalog
-from bikemass.cli import main
+from bikemass.cli.main import main
 from bikemass.models.canonical import canonical_matrices
 from bikemass.analysis.stability import stability
 

@@ -12,7 +12,7 @@ from uncertainties import unumpy
 from bikemass.scenario import catalog
 from bikemass.scenario.inputs import Model
 from bikemass.analysis.uncertainty import Spread, propagate
-from bikemass.cli import main
+from bikemass.cli.main import main
 
 BP_DATA = Path(bicycleparameters.__file__).parent / "app-data"
 BROWSER = BP_DATA / "bicycles" / "Browser" / "Parameters" / "BrowserBenchmark.txt"

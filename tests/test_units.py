@@ -10,7 +10,7 @@ import yaml
 from hypothesis import given, settings, strategies as st
 
 from bikemass.scenario import catalog
-from bikemass.cli import main
+from bikemass.cli.main import main
 from bikemass.core.units import DIMENSIONS, INCH, POUND, UnitError, convert, dimension_of, to_si
 
 ROOT = Path(__file__).parents[1]

@@ -14,6 +14,6 @@ def test_version_has_one_source():
 
 
 def test_command_line_prints_the_version():
-    out = subprocess.run([sys.executable, "-m", "bikemass.cli", "--version"], capture_output=True, text=True)
+    out = subprocess.run([sys.executable, "-m", "bikemass.cli.main", "--version"], capture_output=True, text=True)
     assert out.returncode == 0
     assert out.stdout.strip() == f"bikemass {bikemass.__version__}"

@@ -15,7 +15,7 @@ import yaml
 
 pytest.importorskip("dash")
 
-from bikemass.cli import main  # noqa: E402
+from bikemass.cli.main import main  # noqa: E402
 from bikemass.core.errors import InputError  # noqa: E402
 from bikemass.models.parameters import NAMES  # noqa: E402
 from bikemass.web import create_app  # noqa: E402

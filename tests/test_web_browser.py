@@ -72,7 +72,7 @@ def browser():
 
 
 def _cli_weave(*argv):
-    from bikemass.cli import main
+    from bikemass.cli.main import main
     out = io.StringIO()
     with contextlib.redirect_stdout(out):
         main(["stability", *argv, "--format", "json"])

@@ -25,7 +25,7 @@ from pathlib import Path
 import pytest
 
 import bikemass
-from bikemass.cli import main
+from bikemass.cli.main import main
 
 ROOT = Path(__file__).resolve().parents[1]
 SOURCES = ("pyproject.toml", "README.md", "src", "bodies", "frames", "reference")

@@ -4,7 +4,7 @@ natural frequencies (``bm.frame_modes``)."""
 
 from ..core.choices import Beam, Procedure, Support, check
 from ..fe.defaults import DEFAULT_ELEMENT_SIZE
-from ..options import MAX_ELEMENTS
+from ..cli.options import MAX_ELEMENTS
 
 
 def frame_structure(bicycle):

@@ -8,7 +8,7 @@ SPEED_LIMIT = "speed, m/s"
 
 
 def register(sub):
-    from ..options import number
+    from .options import number
 
     eig = sub.add_parser(
         "eig", help="eigenvalues of the labelled modes (weave, capsize, caster) against speed",
@@ -71,7 +71,7 @@ def _common(p):
 
 
 def _max_speeds(p):
-    from ..options import MAX_SPEEDS, count
+    from .options import MAX_SPEEDS, count
     p.add_argument("--max-speeds", type=count(), default=MAX_SPEEDS, metavar="N",
                    help=f"raise the limit on the speeds in the grid (default {MAX_SPEEDS})")
 

@@ -31,7 +31,7 @@ examples:
 def register(sub):
     import argparse
 
-    from ..options import jobs
+    from .options import jobs
 
     p = sub.add_parser("study", help="reproduce the thesis end to end and write a report (the main job)",
                        description=DESCRIPTION, epilog=EPILOG,

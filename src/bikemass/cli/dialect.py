@@ -101,7 +101,7 @@ def add_speeds(p):
 def parse_speeds(text, max_speeds=None):
     """``"start:stop:step"`` -> speed grid (m/s); InputError if malformed or over ``max_speeds``."""
     from ..core.errors import InputError, short
-    from ..options import MAX_SPEED, MAX_SPEEDS, MIN_SPEED_STEP
+    from .options import MAX_SPEED, MAX_SPEEDS, MIN_SPEED_STEP
     from ..analysis.stability import speed_grid
 
     limit = max_speeds or MAX_SPEEDS

@@ -11,7 +11,7 @@ JOINT_HELP = "torso_lean, neck, shoulder, elbow, hip, knee"
 
 
 def register(sub):
-    from ..options import angle
+    from .options import angle
 
     p = sub.add_parser("pose", help="pose a rider by joint angles on a bicycle (hips, hands, feet)",
                        description="Solve the rider's joint angles (scipy least squares) so that the hips "
@@ -50,7 +50,7 @@ def _fixed(args):
     from argparse import ArgumentTypeError
 
     from ..core.errors import InputError
-    from ..options import angle
+    from .options import angle
     from ..rider.chain import JOINTS
     fixed = {}
     for item in args.fix:

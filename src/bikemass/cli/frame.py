@@ -17,7 +17,7 @@ def _common(parser):
 
 
 def register(subparsers):
-    from ..options import MAX_ELEMENTS, MAX_MODES, count, number
+    from .options import MAX_ELEMENTS, MAX_MODES, count, number
 
     p = subparsers.add_parser(
         "stiffness", help="equivalent rear-frame stiffness S (roll, steer) at the head tube",

@@ -1,4 +1,4 @@
-"""The ``bikemass`` command line: sub-commands registered from :mod:`bikemass.commands`."""
+"""The ``bikemass`` command line: sub-commands registered from :mod:`bikemass.cli`."""
 
 import argparse
 import importlib
@@ -6,9 +6,9 @@ import os
 import sys
 import warnings
 
-from .commands.dialect import check_output
-from .core.errors import BikemassWarning, InputError, one_line
-from .core.stopping import Terminated, stop_on_signals
+from .dialect import check_output
+from ..core.errors import BikemassWarning, InputError, one_line
+from ..core.stopping import Terminated, stop_on_signals
 
 COMMAND_MODULES = (
     "bicycle",
@@ -21,7 +21,7 @@ COMMAND_MODULES = (
     "serve",
     "analysis",
 )
-"""Modules under ``bikemass.commands`` whose ``register(subparsers)`` adds sub-commands."""
+"""Modules under ``bikemass.cli`` whose ``register(subparsers)`` adds sub-commands."""
 
 EPILOG = """\
 Bicycles: a shipped name (bikemass params --help lists them) or a YAML file.
@@ -57,11 +57,11 @@ def build_parser():
         description="Bicycle + rider geometry (YAML) -> mass properties, benchmark "
                     "parameters, frame stiffness and stability.",
         epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
-    from . import __version__
+    from .. import __version__
     parser.add_argument("--version", action="version", version=f"bikemass {__version__}")
     sub = parser.add_subparsers(title="commands", metavar="COMMAND", required=True)
     for name in COMMAND_MODULES:
-        importlib.import_module(f"bikemass.commands.{name}").register(sub)
+        importlib.import_module(f"bikemass.cli.{name}").register(sub)
     for command in sub.choices.values():
         command.add_argument("--strict", action="store_true",
                              help="treat warnings about unusual input as errors (exit status 2)")
@@ -83,9 +83,9 @@ def main(argv=None):
 
 
 def _run(args):
-    from .core.gate import track_inputs
+    from ..core.gate import track_inputs
     from .options import check_outputs
-    from .core.output import collect_warnings
+    from ..core.output import collect_warnings
     status = 0
     with warnings.catch_warnings(record=True) as caught, collect_warnings(caught), track_inputs():
         warnings.simplefilter("always")

@@ -10,7 +10,7 @@ import argparse
 import math
 import os
 
-from .core.errors import short
+from ..core.errors import short
 
 MAX_SPEEDS = 100_000
 """Most speeds in one grid (``--max-speeds`` raises it)."""
@@ -65,7 +65,7 @@ OUTPUT_OPTIONS = ("output", "plot", "out")
 def check_outputs(args):
     """Refuse bad output paths of ``args`` before the command runs (:func:`bikemass.core.output.check_output`):
     folders where files are wanted, unwritable places, and the command's own input files."""
-    from .core.output import check_folder, check_output
+    from ..core.output import check_folder, check_output
 
     folders = getattr(args, "folder_outputs", ())
     inputs = [v for key, value in vars(args).items() if key not in OUTPUT_OPTIONS
@@ -85,8 +85,8 @@ def check_outputs(args):
 
 
 def _check_figure_name(path, option):
-    from .core.errors import InputError
-    from .plots.figure import figure_format
+    from ..core.errors import InputError
+    from ..plots.figure import figure_format
     try:
         figure_format(path)
     except ValueError as exc:
