@@ -148,7 +148,7 @@ def test_subpackages_of_the_same_name_do_not_hide_the_functions():
     import bikemass.sweep
     from bikemass.sweep import read_spec
     assert callable(bm.sweep) and bm.sweep.__module__ == "bikemass.sweep.run" and callable(read_spec)
-    assert bm.stability.__module__ == "bikemass.analysis.stability.result"
+    assert bm.stability.__module__ == "bikemass.analysis.results"
     assert bm.parameters.__module__ == "bikemass.scenario.catalog"
 
 

@@ -24,8 +24,8 @@ __version__ = "0.1.0"
 _API = {
     "load_bicycle": "scenario.catalog", "load_rider": "scenario.catalog", "parameters": "scenario.catalog",
     "stiffness": "scenario.catalog",
-    "stability": "analysis.stability.result", "eigenvalues": "analysis.stability.result", "matrices": "analysis.stability.result", "speeds": "analysis.stability.result",
-    "StabilityResult": "analysis.stability.result",
+    "stability": "analysis.results", "eigenvalues": "analysis.results", "matrices": "analysis.results",
+    "speeds": "analysis.results", "StabilityResult": "analysis.results",
     "frame_modes": "scenario.frame", "frame_stiffness": "scenario.frame", "frame_structure": "scenario.frame",
     "pose_rider": "scenario.posing", "PosedRider": "scenario.posing", "seated_rider": "scenario.catalog",
     "plot_eigenvalues": "plots.stability", "plot_critical_speeds": "plots.critical_speeds",

@@ -101,7 +101,7 @@ def sensitivity(params, S=None, vmax=30.0, names=NAMES):
 
 def _checked(params, S, vmax, names):
     """``(params, S, names)`` checked as :func:`sensitivity` needs them (InputError otherwise)."""
-    from .stability.result import _stiffness
+    from .results import _stiffness
     from ..core.errors import InputError, short
     from ..models.parameters import BenchmarkParameters
     from ..models.plausibility import check_parameters

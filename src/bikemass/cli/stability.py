@@ -103,7 +103,7 @@ def _title(args):
 
 
 def run_eig(args):
-    from ..analysis.stability.result import eigenvalues
+    from ..analysis.results import eigenvalues
 
     options = dialect.figure_checked(args)
     speeds = dialect.parse_speeds(args.speeds, args.max_speeds)
@@ -116,7 +116,7 @@ def run_eig(args):
         return eig_table(modes, csv=fmt == "csv")
     dialect.emit(args, render)
     if args.plot:
-        from ..analysis.stability.result import stability
+        from ..analysis.results import stability
         from ..plots.stability import plot_eigenvalues
         result = stability(*inputs, speeds)          # marks v_w, v_c and shades the stable speeds
         dialect.save_plot(args, plot_eigenvalues(result, _title(args), options.size, **options.limits()), options)
@@ -155,7 +155,7 @@ def weave_cells(a, b, paired):
 
 
 def run_stability(args):
-    from ..analysis.stability.result import stability
+    from ..analysis.results import stability
     from ..core.errors import InputError
 
     options = dialect.figure_checked(args)
@@ -186,7 +186,7 @@ def ranges_csv(result):
 
 
 def run_compare(args):
-    from ..analysis.stability.result import stability
+    from ..analysis.results import stability
     from ..core.errors import InputError, short
 
     options = dialect.figure_checked(args)

@@ -156,7 +156,7 @@ class Engine:
 
     def evaluate(self, state: PageState, speeds=None):
         """:class:`Evaluation` of ``state`` over ``speeds`` (default grid)."""
-        from ..analysis.stability.result import stability
+        from ..analysis.results import stability
 
         params = self.parameters(state)
         S = self.stiffness(state.bicycle_key, state.stiffness)
