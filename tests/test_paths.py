@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from bikemass.core import paths
+from bikemass.core import data_folder, paths
 from bikemass.cli.main import main
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -16,7 +16,7 @@ ROOT = Path(__file__).resolve().parents[1]
 
 def copy_of_the_data(folder, wheelbase):
     """The shipped folders copied into ``folder``, the benchmark's wheelbase set to ``wheelbase`` (m)."""
-    for name in paths.SHIPPED:
+    for name in data_folder.SHIPPED:
         shutil.copytree(ROOT / name, folder / name)
     benchmark = folder / "frames" / "benchmark.yaml"
     text = benchmark.read_text()
@@ -34,7 +34,7 @@ def wheelbase(capsys):
 def no_package_data(monkeypatch, tmp_path):
     """A checkout as it is: no ``bikemass/shipped`` beside the code, BIKEMASS_DATA unset."""
     monkeypatch.delenv("BIKEMASS_DATA", raising=False)
-    monkeypatch.setattr(paths, "installed_data", lambda: tmp_path / "no-package-data")
+    monkeypatch.setattr(data_folder, "installed_data", lambda: tmp_path / "no-package-data")
 
 
 def test_the_checkout_is_used_without_package_data(no_package_data, capsys):
@@ -44,13 +44,13 @@ def test_the_checkout_is_used_without_package_data(no_package_data, capsys):
 
 def test_package_data_come_before_the_checkout(no_package_data, monkeypatch, tmp_path, capsys):
     installed = copy_of_the_data(tmp_path / "shipped", 1.5)
-    monkeypatch.setattr(paths, "installed_data", lambda: installed)
+    monkeypatch.setattr(data_folder, "installed_data", lambda: installed)
     assert paths.data_root() == installed
     assert wheelbase(capsys) == 1.5
 
 
 def test_bikemass_data_comes_first(no_package_data, monkeypatch, tmp_path, capsys):
-    monkeypatch.setattr(paths, "installed_data", lambda: copy_of_the_data(tmp_path / "shipped", 1.5))
+    monkeypatch.setattr(data_folder, "installed_data", lambda: copy_of_the_data(tmp_path / "shipped", 1.5))
     monkeypatch.setenv("BIKEMASS_DATA", str(copy_of_the_data(tmp_path / "mine", 1.25)))
     assert wheelbase(capsys) == 1.25
 
@@ -60,8 +60,8 @@ def test_bikemass_data_comes_first(no_package_data, monkeypatch, tmp_path, capsy
                                   ["study", "--out", "OUT", "--no-figures"]])
 def test_no_data_anywhere_is_one_line_and_status_2(argv, from_checkout, monkeypatch, tmp_path, capsys):
     monkeypatch.delenv("BIKEMASS_DATA", raising=False)
-    monkeypatch.setattr(paths, "installed_data", lambda: tmp_path / "site-packages" / "bikemass" / "shipped")
-    monkeypatch.setattr(paths, "checkout", lambda: tmp_path / "top" if from_checkout else None)
+    monkeypatch.setattr(data_folder, "installed_data", lambda: tmp_path / "site-packages" / "bikemass" / "shipped")
+    monkeypatch.setattr(data_folder, "checkout", lambda: tmp_path / "top" if from_checkout else None)
     out = tmp_path / "study"
     assert main([str(out) if a == "OUT" else a for a in argv]) == 2
     captured = capsys.readouterr()

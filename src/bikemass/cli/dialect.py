@@ -180,9 +180,10 @@ def save_plot(args, fig, options):
 
 
 def document(data, fmt, extra_units=None):
-    """``data`` as JSON or YAML text with its ``units`` block."""
+    """``data`` as JSON or YAML text with its ``units`` block (the benchmark parameters' included)."""
     from ..core.output import dumps, with_units
-    return dumps(with_units(data, extra_units), fmt)
+    from ..models.parameters import parameter_units
+    return dumps(with_units(data, {**parameter_units(), **(extra_units or {})}), fmt)
 
 
 def csv_text(headers, rows):

@@ -4,11 +4,14 @@ take their values from here (the command line's ``choices=`` lists included).
 Each member *is* its string (``Combine.EXACT == "exact"``), so plain strings work
 everywhere an enum is expected.  :func:`check` turns a string into the member or
 raises a ValueError naming the choices (and the closest one).  Only the standard
-library is imported: ``bikemass --help`` builds its option lists from these.
+library and :mod:`bikemass.core.errors` are imported: ``bikemass --help`` builds its option
+lists from these.
 """
 
 import difflib
 from enum import Enum
+
+from .errors import InputError, short
 
 
 class Choice(str, Enum):
@@ -153,7 +156,6 @@ def check(kind, value, what=None):
     InputError
         (a ValueError) If ``value`` is not one of ``kind.values()``; the message names them and the closest.
     """
-    from .errors import InputError, short
     try:
         return kind(value)
     except (ValueError, TypeError):

@@ -6,8 +6,9 @@ characters (a newline in a key, say) are escaped and long parts are cut, so a
 hostile value can neither split the line nor flood the terminal.
 """
 
-
 from pathlib import Path
+
+from .data_folder import found_root
 
 MAX_PART = 300
 """Longest file name, key or expectation shown in a message (characters)."""
@@ -27,7 +28,6 @@ def one_line(text, limit=MAX_PART):
 
 def shown(source):
     """A shipped file as ``frames/jamis.yaml`` rather than its absolute path."""
-    from .paths import found_root
     root = found_root()
     try:
         return str(Path(source).resolve().relative_to(root.resolve())) if root else str(source)

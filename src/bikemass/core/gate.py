@@ -17,6 +17,7 @@ import contextlib
 import contextvars
 import os
 import stat
+from collections.abc import Mapping
 from pathlib import Path
 
 import yaml
@@ -25,6 +26,7 @@ from yaml.events import (AliasEvent, DocumentEndEvent, MappingEndEvent, ScalarEv
 from yaml.nodes import MappingNode, ScalarNode, SequenceNode
 
 from .errors import InputError, short as _short
+from .plain import plain
 
 MAX_BYTES = 1_000_000
 """Largest input file read (bytes); the largest shipped file is under 20 kB."""
@@ -226,11 +228,9 @@ def _attach(source, parent, node):
 
 def plain_input(value, source):
     """A Python value given in place of a file (a mapping passed to ``bm.load_bicycle``, ...) as
-    plain Python (:func:`bikemass.core.output.plain`), after the limits a file has: nested at most
+    plain Python (:func:`bikemass.core.plain.plain`), after the limits a file has: nested at most
     :data:`MAX_DEPTH` levels (a mapping that contains itself is infinitely deep) and at most
     :data:`MAX_VALUES` values; checked by a loop, so no nesting exhausts the stack."""
-    from collections.abc import Mapping
-    from .output import plain
     stack, count = [(value, 0)], 0
     while stack:
         item, depth = stack.pop()

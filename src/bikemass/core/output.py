@@ -10,18 +10,23 @@ at all.
 
 import contextlib
 import contextvars
+import csv
+import io
 import json
 import os
 import shutil
 import stat
 import tempfile
 from collections.abc import Mapping
+from numbers import Integral, Real
 from pathlib import Path
 
 import numpy as np
 import yaml
 
 from .errors import InputError, short
+from .gate import was_read
+from .plain import plain
 from .stopping import deferred
 
 _WARNINGS = contextvars.ContextVar("bikemass_warnings", default=None)
@@ -37,19 +42,6 @@ def collect_warnings(caught):
         yield caught
     finally:
         _WARNINGS.reset(token)
-
-
-def plain(obj):
-    """Convert numpy scalars/arrays (recursively) into plain Python for JSON/YAML."""
-    if isinstance(obj, Mapping):
-        return {str(k): plain(v) for k, v in obj.items()}
-    if isinstance(obj, (list, tuple)):
-        return [plain(v) for v in obj]
-    if isinstance(obj, np.ndarray):
-        return plain(obj.tolist())
-    if isinstance(obj, np.generic):
-        return obj.item()
-    return obj
 
 
 ZERO = 1e-12
@@ -133,10 +125,6 @@ def _header_unit(header):
 def csv_text(headers, rows):
     """CSV text: ``None`` as an empty cell, floats in full (``repr``), 0 below :data:`ZERO` in a
     column whose header names a unit of :data:`ZERO_UNITS` (``"x (m)"``)."""
-    import csv
-    import io
-    from numbers import Integral, Real
-
     units = [_header_unit(h) for h in headers]
 
     def cell(v, unit):
@@ -162,14 +150,14 @@ UNITS = {
     "location": "m", "angle": "deg", "angles": "deg", "hip_joints": "m", "residuals": "m", "gaps": "m",
     "residual": "m",
 }
-"""The SI unit of every key that holds a quantity in a JSON/YAML document bikemass writes
-(the 26 benchmark parameters come from :data:`bikemass.models.parameters.DESCRIPTIONS`)."""
+"""The SI unit of every key that holds a quantity in a JSON/YAML document bikemass writes (a
+document holding the 26 benchmark parameters passes their units as ``extra``:
+:func:`bikemass.models.parameters.parameter_units`)."""
 
 
 def units_of(obj, extra=None):
     """``{key: unit}`` for every key of ``obj`` (at any depth) with a unit, in order of appearance."""
-    from ..models.parameters import parameter_units
-    table = {**parameter_units(), **UNITS, **(extra or {})}
+    table = {**UNITS, **(extra or {})}
     found = {}
 
     def walk(value):
@@ -228,8 +216,6 @@ def write_atomic(path, data):
     its target is replaced.  A file read as input in this run (:func:`bikemass.core.gate.was_read`)
     is refused.
     """
-    from .gate import was_read
-
     path = Path(path)
     check_output(path)
     target = Path(os.path.realpath(path))

@@ -14,46 +14,22 @@ A name that is an existing file path is used as it is.
 """
 
 import os
-from importlib.resources import files
 from pathlib import Path
 
+from . import data_folder
+from .choices import closest
 from .errors import InputError
-
-SHIPPED = ("bodies", "frames", "reference")
-"""The shipped data folders."""
 
 
 def data_root() -> Path:
     """Folder holding ``bodies/``, ``frames/`` and ``reference/`` (see the module's lookup order)."""
-    root = found_root()
+    root = data_folder.found_root()
     if root is None:
-        places = [f"the installed package ({installed_data()})"]
-        places += [f"the checkout ({top})" for top in [checkout()] if top is not None]
+        places = [f"the installed package ({data_folder.installed_data()})"]
+        places += [f"the checkout ({top})" for top in [data_folder.checkout()] if top is not None]
         raise InputError("bikemass", "shipped data", f"bodies/, frames/ and reference/ in {' or in '.join(places)}; "
                          "none found (reinstall bikemass)")
     return root
-
-
-def found_root():
-    """The data folder by the module's lookup order, or None when neither the package nor a checkout has one."""
-    env = os.environ.get("BIKEMASS_DATA")
-    if env:
-        return Path(env)
-    for root in (installed_data(), checkout()):
-        if root is not None and all((root / name).is_dir() for name in SHIPPED):
-            return root
-    return None
-
-
-def checkout():
-    """The repository's top folder when bikemass runs from a checkout (``<top>/src/bikemass``), else None."""
-    package = Path(__file__).resolve().parents[1]     # this file is <top>/src/bikemass/core/paths.py
-    return package.parents[1] if package.parent.name == "src" else None
-
-
-def installed_data() -> Path:
-    """``bikemass/shipped/`` of the installed package (absent in a checkout: the data sit at its top)."""
-    return Path(str(files("bikemass") / "shipped"))
 
 
 def shipped_dir(name) -> Path:
@@ -111,7 +87,6 @@ def _resolve(name, folder, what):
 
 def closest_name(name, names):
     """``" (did you mean 'x'?)"`` for the entry of ``names`` closest to a misspelt ``name``, else ``""``."""
-    from .choices import closest
     return closest(Path(str(name)).stem.replace("_", "-"), names)
 
 

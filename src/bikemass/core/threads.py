@@ -19,10 +19,11 @@ as a decorator too: ``@one_blas_thread()``.
 
 import contextlib
 
+from threadpoolctl import get_cached_controller
+
 
 @contextlib.contextmanager
 def one_blas_thread():
     """Run the block (or the decorated function) on one BLAS thread; the previous limits come back on exit."""
-    from threadpoolctl import get_cached_controller
     with get_cached_controller().limit(limits=1):
         yield

@@ -21,7 +21,8 @@ def format_parameters(params, fmt, title="", rider_included=False):
     ``rider_included``: the rear body B holds a rider."""
     values = params.to_dict()
     if fmt in ("yaml", "json"):
-        return dumps(with_units({**values, **({"rider_included": True} if rider_included else {})}), fmt)
+        return dumps(with_units({**values, **({"rider_included": True} if rider_included else {})},
+                                parameter_units()), fmt)
     if fmt == "bicycleparameters":
         return bicycleparameters_text(params, title + (" (rider included in B)" if rider_included else ""))
     units = parameter_units()

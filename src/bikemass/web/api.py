@@ -23,14 +23,17 @@ DOWNLOADS = {
 
 def stability_document(evaluation):
     """The ``bikemass stability --format json`` document of an :class:`~.engine.Evaluation`."""
-    from ..core.output import plain, with_units, written
-    return written(with_units(plain(evaluation.stability.to_dict())))
+    from ..core.output import with_units, written
+    from ..core.plain import plain
+    from ..models.parameters import parameter_units
+    return written(with_units(plain(evaluation.stability.to_dict()), parameter_units()))
 
 
 def parameters_document(params):
     """The ``bikemass params --format json`` document of a parameter set."""
     from ..core.output import with_units, written
-    return written(with_units(params.to_dict()))
+    from ..models.parameters import parameter_units
+    return written(with_units(params.to_dict(), parameter_units()))
 
 
 def download(engine, filename, state):

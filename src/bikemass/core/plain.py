@@ -1,0 +1,20 @@
+"""Plain Python data from values holding numpy scalars and arrays: what JSON and YAML can hold
+(:mod:`bikemass.core.output` writes it; :func:`bikemass.core.gate.plain_input` checks Python
+input with it as it checks a file)."""
+
+from collections.abc import Mapping
+
+import numpy as np
+
+
+def plain(obj):
+    """Convert numpy scalars/arrays (recursively) into plain Python for JSON/YAML."""
+    if isinstance(obj, Mapping):
+        return {str(k): plain(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [plain(v) for v in obj]
+    if isinstance(obj, np.ndarray):
+        return plain(obj.tolist())
+    if isinstance(obj, np.generic):
+        return obj.item()
+    return obj
