@@ -105,8 +105,7 @@ def _saddle_fit(node, keypoints, bottom_bracket):
     if node.has("seat_tube_angle") == node.has("towards"):
         node.fail("exactly one of seat_tube_angle (from horizontal) or towards (a keypoint on the seat tube)")
     if node.has("seat_tube_angle"):
-        from ..rider.pose import angle_deg
-        a = np.radians(angle_deg(node["seat_tube_angle"]))
+        a = np.radians(node["seat_tube_angle"].number("angle", unit="deg"))
         if not 0 < a < np.pi:
             node.fail("a seat tube angle between 0 and 180 deg from horizontal", "seat_tube_angle")
         return rule, np.array([-np.cos(a), 0.0, -np.sin(a)]), setback, lowest

@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from ..core.config import Node, load_yaml
-from ..core.gate import read_text
+from ..core.gate import plain_input, read_text
 from ..core.errors import InputError, short
 from ..mass.inertia import MassProperties
 from ..mass.materials import load_materials, read_materials
@@ -58,7 +58,6 @@ def bicycle_from_mapping(mapping, source, size=None):
     """:class:`Bicycle` from a Python mapping holding what a bicycle or parameter file holds;
     errors name ``source``.  A ``base`` is looked up as a shipped name or relative to the
     working folder."""
-    from ..core.gate import plain_input
     node = Node(plain_input(mapping, source), source, "")
     if not isinstance(node.value, dict):
         node.fail("a mapping of a bicycle or of the 26 benchmark parameters")

@@ -23,6 +23,7 @@ is also issued as a :class:`ParameterFileWarning`.  Nominal values build the
 ``S`` when combined) for uncertainty propagation.
 """
 
+import os
 import re
 import warnings
 from dataclasses import dataclass
@@ -32,7 +33,8 @@ from types import MappingProxyType
 import numpy as np
 
 from ..core.config import Node
-from ..core.errors import BikemassWarning, InputError
+from ..core.errors import BikemassWarning, InputError, wrong_type
+from ..core.gate import read_text
 from ..mass.inertia import MassProperties, combine
 from ..models.parameters import NAMES, from_node
 
@@ -126,7 +128,6 @@ def parse_parameter_text(text, source="(text)"):
 
 def read_parameter_text(path):
     """:class:`ParameterText` of the file at ``path``."""
-    from ..core.gate import read_text
     path = Path(path)
     return parse_parameter_text(read_text(path), str(path))
 
@@ -249,8 +250,6 @@ def measured_parameters(pt):
 
 def load_parameter_text(path):
     """:class:`MeasuredParameters` of the BicycleParameters file at ``path``."""
-    import os
     if not isinstance(path, (str, os.PathLike)):
-        from ..core.errors import wrong_type
         raise wrong_type("path", path, "a BicycleParameters file path")
     return measured_parameters(read_parameter_text(path))
