@@ -224,6 +224,8 @@ def _attach(source, parent, node):
         parent[1] = None
 
 
+MAPPING = "<mapping>"
+"""The source named in errors about a bicycle or rider given as a Python mapping."""
 
 
 def plain_input(value, source):

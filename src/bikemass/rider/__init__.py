@@ -9,10 +9,12 @@ for the file format.
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..core.config import load_yaml
+from ..core.config import Node, load_yaml
 from ..core.errors import InputError
+from ..core.gate import plain_input
 from ..mass.parts import METHODS, OVERLAPS, body_properties
 from ..core.paths import available, bodies_dir, resolve
+from .chain_file import read_chain_pose
 from .pose import read_pose
 
 THESIS_POSES = ("no-hands", "relaxed", "on-hoods", "aerobars", "aero-tuck")
@@ -87,9 +89,6 @@ def rider_from_mapping(mapping, source, as_printed=False):
     """The rider of a Python mapping in any form a pose file takes (placement, chain or
     lumped segments); errors name ``source``.  A chain pose's ``bike`` may also be a
     :class:`~bikemass.bicycle.Bicycle`."""
-    from ..core.config import Node
-    from ..core.gate import plain_input
-
     node = Node(plain_input(mapping, source), source, "")
     if not isinstance(node.value, dict):
         node.fail("a mapping of a pose (segments: or chain:)")
@@ -98,7 +97,6 @@ def rider_from_mapping(mapping, source, as_printed=False):
 
 def _read_document(node, pose, as_printed):
     if isinstance(node.value, dict) and "chain" in node.value:
-        from .chain_file import read_chain_pose
         name, parts, _, _ = read_chain_pose(node)
         return Rider(pose, name, parts, (node, as_printed))
     name, parts = read_pose(node, as_printed)

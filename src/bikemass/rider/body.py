@@ -13,8 +13,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..core.config import Node, load_yaml
+from . import stature
 from .anthropometry import Anthropometry, find_anthropometry, load_anthropometry
 from .chain import CHAIN_SEGMENTS, ChainBody, load_chain_body
+from .yeadon_body import yeadon_body
 
 
 @dataclass(frozen=True, eq=False)
@@ -43,10 +45,8 @@ def load_body(node: Node) -> Body:
 
 def _from_spec(node, label):
     if node.has("yeadon"):
-        from .yeadon_body import yeadon_body
-        return yeadon_body(node, label)
+        return Body(*yeadon_body(node), label)
     if node.has("height") or node.has("mass") or node.has("sex"):
-        from . import stature
         name, built = stature.read_spec(node)
         anthropometry = stature.anthropometry(built, name, node.source)
         j = stature.joints(built)

@@ -17,8 +17,9 @@ optional.  The same keys form the ``posture:`` of a placement-form pose.  See do
 import warnings
 from pathlib import Path
 
+from ..bicycle import Bicycle, load_bicycle
 from ..core.config import Node
-from ..core.errors import BikemassWarning, InputError
+from ..core.errors import BikemassWarning, InputError, shown
 from .body import chain_of, load_body
 from .chain import CHAIN_SEGMENTS, JOINTS
 from .pose import angle_deg, read_pose
@@ -36,7 +37,6 @@ def default_hands(contacts):
 def bicycle_contacts(bike, node):
     """The bicycle ``bike`` (a Bicycle, or a name or file; a relative file is looked up next to
     the pose file first) with its ``contacts``; ``node`` is blamed if the bicycle has none."""
-    from ..bicycle import Bicycle, load_bicycle
     if isinstance(bike, Bicycle):
         bicycle = bike
     else:
@@ -48,14 +48,12 @@ def bicycle_contacts(bike, node):
                 raise
             node.fail(f"{exc.expected} [{exc.source}]")
     if bicycle.contacts is None:
-        from ..core.errors import shown
         node.fail(f"a bicycle with a contacts: section (saddle, bottom_bracket, crank_length, grips); "
                   f"{shown(bicycle.source)} has none")
     return bicycle
 
 
 def _is_bicycle(value):
-    from ..bicycle import Bicycle
     return isinstance(value, Bicycle)
 
 
@@ -66,11 +64,9 @@ def _hands(node, contacts):
         names = [e.string() for e in node.elements()]
         found = [n for n in names if n in choices]
         if not found:
-            from ..core.errors import shown
             node.fail(f"a grip of {shown(contacts.source)} ({', '.join(choices)}), got {', '.join(names)}")
         return found[0]
     if not isinstance(node.value, str) or node.value not in choices:
-        from ..core.errors import shown
         node.fail(f"a grip of {shown(contacts.source)} ({', '.join(choices)}), got {node.value!r}")
     return node.value
 
@@ -89,6 +85,7 @@ def solve_chain(chain, body, bicycle):
     """:class:`~bikemass.rider.solve.Solution` of the ``chain``/``posture`` node for ``body``
     (:class:`~bikemass.rider.chain.ChainBody`) on ``bicycle``; an unreachable contact is an
     error naming the chain key and the bicycle key."""
+    # lazy: rider.solve loads scipy.optimize (slower to import than numpy); only chain poses need it
     from .solve import solve_on_bicycle
     hands, crank, fixed, front = chain_settings(chain, bicycle.contacts)
     solution = solve_on_bicycle(body, bicycle.contacts, hands, crank, fixed)

@@ -29,8 +29,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.config import Node, load_yaml
-from ..core.errors import InputError
+from ..core.errors import InputError, shown, wrong_type
+from ..core.gate import MAPPING, plain_input
 from ..core.paths import resolve
+from . import Rider, poses_dir
+from .body import load_body
+from .chain_file import bicycle_contacts, chain_settings, read_chain_pose, solve_chain
+from .pose import read_pose
 
 CONTACT_TOLERANCE = 1e-3
 """A contact further than this (m) from its target is off the bicycle."""
@@ -100,7 +105,6 @@ def _off(contacts, tolerance):
 
 
 def _gap_lines(pose, bicycle, off):
-    from ..core.errors import shown
     return [f"{pose}: {name} {gap * 1000:.1f} mm from {shown(bicycle.source)}: {key}"
             for name, (gap, key) in off.items()]
 
@@ -111,11 +115,6 @@ def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, toleran
 
     Bad input, an unreachable contact or a contact off by more than ``tolerance`` (m) without
     ``allow_off_contact`` raise :class:`InputError`."""
-    from . import Rider, poses_dir
-    from .body import load_body
-    from .chain_file import chain_settings, read_chain_pose, solve_chain
-    from .pose import read_pose
-
     if isinstance(pose, Rider) and pose.spec is None:
         return SeatedRider(pose, bicycle, "unchecked", {}, None,
                            (f"{pose.name}: contacts with {bicycle.name} not checked (a Rider built "
@@ -123,13 +122,10 @@ def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, toleran
     if isinstance(pose, Rider):
         (node, as_printed), source, pose = pose.spec, pose.spec[0].source, pose.pose
     elif isinstance(pose, Mapping):
-        from ..scenario.catalog import MAPPING
-        from ..core.gate import plain_input
         source, node = MAPPING, Node(plain_input(pose, MAPPING), MAPPING, "")
         pose = node.value.get("name", MAPPING) if isinstance(node.value, dict) else MAPPING
     else:
         if not isinstance(pose, (str, os.PathLike)):
-            from ..core.errors import wrong_type
             raise wrong_type("rider", pose, "a rider is a pose name, a file path, a mapping, a Rider or None")
         source = resolve(os.fspath(pose), poses_dir(), "pose")
         node = load_yaml(source)
@@ -138,11 +134,9 @@ def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, toleran
         node.fail("a pose (a mapping with segments: or chain:)")
     lumped_only = "chain" not in node.value and "body" not in node.value
     if contacts is None and "chain" in node.value and not node.has("bike"):
-        from .chain_file import bicycle_contacts
         bicycle_contacts(bicycle, node["chain"])      # the error: a bicycle with a contacts: section
     if contacts is None or lumped_only:
         rider = _load(pose, node, as_printed)
-        from ..core.errors import shown
         why = (f"{shown(bicycle.source)} has no contacts: section" if contacts is None
                else "a rider of lumped bodies has no contact points")
         return SeatedRider(rider, bicycle, "unchecked", {}, None,
@@ -185,9 +179,6 @@ def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, toleran
 
 def _load(pose, node, as_printed):
     """The rider of a pose node as written (a chain pose solved on its own ``bike:``)."""
-    from . import Rider
-    from .chain_file import read_chain_pose
-    from .pose import read_pose
     if "chain" in node.value:
         name, parts, _, _ = read_chain_pose(node)
     else:

@@ -23,6 +23,7 @@ the seat (sit point below the hip joints) is the thigh radius at the crotch (Lk1
 """
 
 import contextlib
+import importlib.util
 import io
 import warnings
 from functools import lru_cache
@@ -30,6 +31,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ..core.errors import BikemassWarning, shown
+from ..core.gate import load_data
 from ..mass.inertia import MassProperties, combine
 from ..mass.solids import Lumped
 from .anthropometry import Anthropometry, BodySegment
@@ -56,10 +59,10 @@ def read_measurements(path):
     """(``{name: m}`` of the 95 measurements, total mass in kg or None) of a yeadon measurement
     file; ValueError naming the first bad or missing entry."""
     try:
+        # lazy: yeadon is optional (the yeadon extra); only yeadon bodies need it
         import yeadon
     except ImportError:
         raise ImportError("the yeadon package: pip install 'bikemass[yeadon]'") from None
-    from ..core.gate import load_data
     content = load_data(path)            # the input gate: size, type, encoding, YAML limits
     if not isinstance(content, dict):
         raise ValueError("no 'name: value' lines")
@@ -91,7 +94,6 @@ def _human_class():
     attribute that ``totalmass`` scaling overwrites in place, so every later Human of the
     process (ours included) would inherit the last file's scaling; a private copy of the
     module keeps yeadon's own densities."""
-    import importlib.util
     spec = importlib.util.find_spec("yeadon.human")
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
@@ -108,7 +110,6 @@ def human(path):
 
 @lru_cache(maxsize=16)
 def _human_of(path, mtime_ns, size):
-    from ..core.errors import BikemassWarning, shown
     measurements, mass = read_measurements(path)
     with contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
@@ -137,9 +138,9 @@ def segments_of(h, scale=1.0):
     return {k: (_props(solids[k], scale), top[k], float(far[k][2] - top[k][2])) for k in solids}
 
 
-def yeadon_body(node, label):
-    """:class:`~bikemass.rider.body.Body` of ``{yeadon: PATH}`` (PATH relative to ``node``'s file)."""
-    from .body import Body
+def yeadon_body(node):
+    """(:class:`~bikemass.rider.anthropometry.Anthropometry`, :class:`~bikemass.rider.chain.ChainBody`)
+    of ``{yeadon: PATH}`` (PATH relative to ``node``'s file)."""
     node.check_keys(required=("yeadon",), optional=("name", "source", "note"))
     given = Path(node["yeadon"].string())
     path = given if given.is_absolute() else Path(node.source).parent / given
@@ -164,4 +165,4 @@ def yeadon_body(node, label):
     name = node.get("name", path.stem).string()
     anthropometry = Anthropometry(name, path, segments)
     chain = ChainBody(name, path, lengths, np.zeros(3), shoulder, hip, float(seat))
-    return Body(anthropometry, chain, label)
+    return anthropometry, chain

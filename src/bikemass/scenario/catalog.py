@@ -18,13 +18,11 @@ import numpy as np
 
 from ..core.choices import RIGID, Beam, Combine, Method, Procedure, Source, check
 from ..core.errors import InputError
+from ..core.gate import MAPPING
 from ..models.plausibility import check_stiffness
 
 COMBINE_CHOICES = Combine.values()
 """Rider + rear frame: 'exact' = parallel-axis theorem; 'thesis' = inertias added (Eq. 3.6)."""
-
-MAPPING = "<mapping>"
-"""The source named in errors about a bicycle or rider given as a Python mapping."""
 
 
 def load_bicycle(bicycle, name=None, size=None):
