@@ -81,13 +81,6 @@ def derived_chart(bicycle):
     return {k: (None if v is None else float(v)) for k, v in out.items()}
 
 
-def geometry_chart(bicycle, size=None):
-    """The derived chart (m, deg; :data:`CHART_ORDER`) of anything ``bm.load_bicycle`` takes;
-    ``size`` picks one size of a size run."""
-    from ..scenario.catalog import load_bicycle
-    return derived_chart(load_bicycle(bicycle, size=size))
-
-
 def chart_mapping(chart):
     """A ``chart:`` mapping (values with units) that rebuilds the frame of ``derived_chart`` output."""
     keys = ("stack", "reach", "head_tube_angle", "seat_tube_angle", "head_tube_length", "seat_tube_length",

@@ -9,6 +9,7 @@ dimensions (``bikemass geometry --plot``, the figure of docs/bicycles.md).
 import numpy as np
 
 from ..bicycle.derived_chart import derived_chart, frame_points
+from .figure import new_figure
 
 DIMENSION_COLOUR = "tab:red"
 GAP = 0.06
@@ -76,11 +77,8 @@ def annotate_chart(ax, bicycle):
 
 def plot_chart(bicycle, title=None, size=None):
     """Figure: frame centre lines, wheels, steer axis and the chart's dimensions (m, height up);
-    ``bicycle``: anything :func:`bikemass.load_bicycle` takes."""
-    from ..scenario.catalog import load_bicycle
-    from .figure import new_figure
-
-    bicycle = load_bicycle(bicycle)
+    ``bicycle``: a loaded :class:`~bikemass.bicycle.Bicycle` (``bm.plot_chart`` also takes its name:
+    :mod:`bikemass.scenario.views`)."""
     fig = new_figure(size or (10, 6.5))
     ax = fig.subplots()
     for tube in bicycle.tubes:

@@ -1,8 +1,12 @@
 """Many configurations compared by their result: a dot plot of each one's weave and capsize
 speeds and the stable speeds between them (one row per configuration, one colour per series)."""
 
-import numpy as np
+from collections.abc import Mapping
 
+import numpy as np
+from matplotlib import colormaps
+
+from ..core.errors import InputError, wrong_type
 from .figure import check_limits, new_figure
 from .stability import CriticalSpeeds
 
@@ -15,7 +19,6 @@ def _critical(result):
 
 def series_colours(count):
     """``count`` colours of one sequential scale, dark to light (rigid to softest frame, say)."""
-    from matplotlib import colormaps
     return [colormaps["viridis"](x) for x in np.linspace(0.0, 0.8, count)] if count > 1 else ["tab:blue"]
 
 
@@ -37,8 +40,6 @@ def plot_critical_speeds(results, title="", size=None, xlim=None, values=True):
     where no crossing speeds are given) if ``values``.
     ``xlim``: speed range (m/s); default from 0 to beyond the largest critical speed.
     """
-    from collections.abc import Mapping
-    from ..core.errors import InputError, wrong_type
     if not isinstance(results, Mapping) or not all(isinstance(row, Mapping) for row in results.values()):
         raise wrong_type("results", results, "a mapping {row: {series: result}}")
     if not results or not any(results.values()):

@@ -4,11 +4,16 @@ matplotlib can write, and saving a figure with its text kept as text in vector f
 No pyplot and no ``matplotlib.use``: the caller's backend and open figures are left alone.
 """
 
+import math
 from io import BytesIO
 from pathlib import Path
 
+from matplotlib import rc_context
 from matplotlib.backend_bases import FigureCanvasBase
 from matplotlib.figure import Figure
+
+from ..core.errors import InputError, short, wrong_type
+from ..core.output import write_atomic
 
 DPI = 150
 """Default resolution of raster output (dots per inch)."""
@@ -30,8 +35,6 @@ MAX_PIXELS = 200_000_000
 
 def _pair(value, what, expected, ok):
     """``value`` as a tuple of two finite floats passing ``ok(a, b)``, else InputError."""
-    import math
-    from ..core.errors import InputError, short
     try:
         a, b = (float(x) for x in value)
     except (TypeError, ValueError):
@@ -64,7 +67,6 @@ def figure_formats():
 def figure_format(path):
     """The format of figure file ``path`` from its suffix; InputError (a ValueError) naming the
     formats if unknown."""
-    from ..core.errors import InputError
     suffix = Path(path).suffix.lower().lstrip(".")
     if suffix not in figure_formats():
         raise InputError(path, "(figure file)", "an image file name ending in "
@@ -74,11 +76,8 @@ def figure_format(path):
 
 def figure_bytes(fig, fmt="png", dpi=DPI):
     """``fig`` rendered as ``fmt`` (bytes); text stays text in SVG and PDF."""
-    from matplotlib import rc_context
-
     width, height = fig.get_size_inches()
     if fmt not in ("pdf", "svg", "svgz", "eps", "ps") and width * height * dpi * dpi > MAX_PIXELS:
-        from ..core.errors import InputError
         raise InputError("dpi", dpi, f"a figure of at most {MAX_PIXELS} pixels ({width:g} x {height:g} in at "
                          f"{dpi:g} dpi is {width * height * dpi * dpi:.3g})")
     buffer = BytesIO()
@@ -89,8 +88,6 @@ def figure_bytes(fig, fmt="png", dpi=DPI):
 
 def save_figure(fig, path, dpi=DPI):
     """Write ``fig`` to ``path`` (format from the suffix) atomically: never half-written."""
-    from ..core.errors import InputError, wrong_type
-    from ..core.output import write_atomic
     if not isinstance(fig, Figure):
         raise wrong_type("fig", fig, "a matplotlib Figure")
     if isinstance(dpi, bool) or not isinstance(dpi, (int, float)) or not MIN_DPI <= dpi <= MAX_DPI:

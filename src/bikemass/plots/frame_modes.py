@@ -3,6 +3,9 @@ view) with axes, the undeformed frame, the clamped points and the mode's type.""
 
 import numpy as np
 
+from ..core.errors import wrong_type
+from .figure import new_figure
+
 SIDE, TOP = ((0, 2), (0, 1))
 """Global axes shown in the side view (x, height = -z) and the top view (x, y)."""
 OUT_OF_PLANE = 0.8
@@ -72,10 +75,7 @@ def plot_frame_modes(modes, scale=0.12, size=None):
     dimension (stated on the figure).  Clamped nodes are black markers; each row names the
     frequency and the mode type (:func:`classify`).
     """
-    from .figure import new_figure
-
     if not hasattr(modes, "mesh"):
-        from ..core.errors import wrong_type
         raise wrong_type("modes", modes, "frame Modes (bm.frame_modes)")
 
     mesh = modes.mesh

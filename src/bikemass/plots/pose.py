@@ -2,6 +2,8 @@
 
 import numpy as np
 
+from .side_view import plot_side_view
+
 CHAIN_LINES = (("head_top", "neck", "torso_top", "hip_centre"), ("torso_top", "shoulder", "elbow", "hand"),
                ("hip_centre", "hip", "knee", "foot"))
 """Polylines through the chain's named points (:meth:`ChainPose.points`)."""
@@ -17,8 +19,6 @@ def plot_pose(bicycle, rider, solution, title=None, size=None, xlim=None, ylim=N
     """Figure: the side view of ``rider`` (solved :class:`~bikemass.rider.solve.Solution`) on
     ``bicycle``: part outlines and CoMs (bikemass.plots.side_view),
     the chain's centre lines, joints (circles), hands and feet, and contact targets (crosses)."""
-    from .side_view import plot_side_view
-
     fig = plot_side_view(bicycle, rider, title, size, xlim, ylim)
     ax = fig.axes[0]
     pose = solution.pose

@@ -1,9 +1,11 @@
 """Side view (x-z plane) of a bicycle with rider: part outlines, body CoMs, inertia ellipses."""
 
 import numpy as np
+from matplotlib.patches import Patch
 
 from ..bicycle.benchmark import combined_bodies
 from ..bicycle.components import BODIES
+from .figure import check_limits, new_figure
 
 COLOURS = {"rear_frame": "tab:blue", "front_frame": "tab:orange",
            "rear_wheel": "tab:purple", "front_wheel": "tab:brown"}
@@ -32,6 +34,7 @@ def gyration_ellipse(props, samples=100):
 
 
 def _outline(mesh):
+    # lazy: scipy.spatial is slower to import than numpy; only the outlines of parts need it
     from scipy.spatial import ConvexHull
     xz = mesh.vertices[:, [0, 2]] * [1, -1]
     return xz[ConvexHull(xz).vertices]
@@ -63,12 +66,9 @@ def plot_side_view(bicycle, rider=None, title=None, size=None, xlim=None, ylim=N
     parameter-file bicycles), each body's centre of mass labelled with its name and mass,
     its ellipse of gyration (semi-axes = radii of gyration sqrt(I/m) about the principal axes
     in the x-z plane) drawn round it, the steer axis dashed; the legend sits below the axes.
-    ``bicycle`` and ``rider``: anything :func:`bikemass.load_bicycle` and :func:`bikemass.load_rider` take.
+    ``bicycle`` and ``rider``: a :class:`~bikemass.bicycle.Bicycle` and a :class:`~bikemass.rider.Rider`
+    or None, as loaded (``bm.plot_side_view`` also takes their names: :mod:`bikemass.scenario.views`).
     """
-    from ..scenario.catalog import load_bicycle, load_rider
-    from .figure import check_limits, new_figure
-
-    bicycle, rider = load_bicycle(bicycle), load_rider(rider)
     xlim, ylim = check_limits(xlim, "xlim"), check_limits(ylim, "ylim")
     fig = new_figure(size or (6.5, 7.2))
     ax = fig.subplots()
@@ -108,7 +108,6 @@ def plot_side_view(bicycle, rider=None, title=None, size=None, xlim=None, ylim=N
     ax.plot([], [], "-", color="0.4", linewidth=1.1,
             label="ellipse of gyration: semi-axes =\nradii of gyration $\\sqrt{I/m}$ about the\n"
                   "principal axes in the x-z plane")
-    from matplotlib.patches import Patch
     handles = [Patch(facecolor=COLOURS[b], alpha=0.5, label=NAMES[b]) for b in ("rear_frame", "front_frame")
                if b in drawn]
     if "rider" in drawn:

@@ -7,6 +7,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core.errors import wrong_type
 from .figure import check_limits, new_figure
 
 SIZE = (7.0, 4.6)
@@ -54,7 +55,6 @@ def plot_eigenvalues(result, title="", size=None, xlim=None, ylim=None):
     ``xlim`` (m/s) and ``ylim`` (1/s) override the automatic zoom.
     """
     if not hasattr(result, "modes") and not hasattr(result, "eigenvalues"):
-        from ..core.errors import wrong_type
         raise wrong_type("result", result, "a StabilityResult (bm.stability) or Modes (bm.eigenvalues)")
     if hasattr(result, "modes"):
         return eigenvalue_figure(result.modes, CriticalSpeeds.of(result), title, size, xlim, ylim)

@@ -16,6 +16,7 @@ from collections.abc import Mapping
 
 import numpy as np
 
+from ..bicycle.derived_chart import derived_chart
 from ..core.choices import RIGID, Beam, Combine, Method, Procedure, Source, check
 from ..core.errors import InputError
 from ..core.gate import MAPPING
@@ -263,3 +264,10 @@ def stiffness_matrix(values):
         raise InputError("stiffness", "(matrix)", "a symmetric positive definite 2x2 stiffness matrix "
                                                   f"in N m/rad, got {values!r}")
     return S
+
+
+def geometry_chart(bicycle, size=None):
+    """The derived chart (m, deg; :data:`~bikemass.bicycle.derived_chart.CHART_ORDER`) of anything
+    ``bm.load_bicycle`` takes;
+    ``size`` picks one size of a size run."""
+    return derived_chart(load_bicycle(bicycle, size=size))
