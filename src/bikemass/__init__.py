@@ -22,7 +22,7 @@ import types
 __version__ = "0.1.0"
 
 _API = {
-    "load_bicycle": "scenario.catalog", "load_rider": "scenario.catalog", "parameters": "scenario.catalog",
+    "load_bicycle": "scenario.loading", "load_rider": "scenario.loading", "parameters": "scenario.catalog",
     "stiffness": "scenario.catalog",
     "stability": "analysis.results", "eigenvalues": "analysis.results", "matrices": "analysis.results",
     "speeds": "analysis.results", "StabilityResult": "analysis.results",

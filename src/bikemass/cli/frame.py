@@ -1,7 +1,7 @@
 """``bikemass stiffness`` and ``bikemass modes``: the rear frame's beam model (S and natural frequencies)."""
 
 from ..core.choices import Beam, Procedure, Support
-from ..fe.defaults import DEFAULT_ELEMENT_SIZE
+from ..fe.defaults import DEFAULT_ELEMENT_SIZE, MAX_ELEMENTS
 from . import dialect
 from .sizes import add_size_option, every_size
 
@@ -17,7 +17,7 @@ def _common(parser):
 
 
 def register(subparsers):
-    from .options import MAX_ELEMENTS, MAX_MODES, count, number
+    from .options import MAX_MODES, count, number
 
     p = subparsers.add_parser(
         "stiffness", help="equivalent rear-frame stiffness S (roll, steer) at the head tube",

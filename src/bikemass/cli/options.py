@@ -18,8 +18,6 @@ MAX_SPEED = 1000.0
 """Highest speed of a grid (m/s)."""
 MIN_SPEED_STEP = 1e-6
 """Finest speed step (m/s): finer steps print as duplicate speeds."""
-MAX_ELEMENTS = 5000
-"""Most beam elements in a frame-mode model (``--max-elements`` raises it)."""
 MAX_MODES = 200
 """Most natural frequencies asked for at once (``--max-modes`` raises it)."""
 

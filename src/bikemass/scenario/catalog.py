@@ -1,115 +1,31 @@
-"""Names, files, mappings -> models: what ``bm.load_bicycle``, ``bm.load_rider``,
-``bm.parameters`` and ``bm.stiffness`` do, and what every command calls with its
-BIKE / POSE / stiffness arguments.
-
-A bicycle is a shipped name (``jamis``), a bicycle YAML file, a benchmark parameter
-file, a mapping holding either (as the YAML would), a
-:class:`~bikemass.models.parameters.BenchmarkParameters` set, or a :class:`Bicycle` already
-loaded.  A rider is a shipped pose name, a pose file, a mapping in any pose form the
-YAML accepts (placement, chain or lumped), a :class:`Rider`, or ``None``/``"none"``.
+"""Names, files, mappings -> models: what ``bm.parameters``, ``bm.seated_rider``, ``bm.stiffness``
+and ``bm.geometry_chart`` do, and what every command calls with its BIKE / POSE / stiffness
+arguments.  Bicycles and riders are anything :mod:`bikemass.scenario.loading` loads.
 Bad input raises :class:`~bikemass.core.errors.InputError` (a ValueError) naming the
 source (``<mapping>`` for Python values), the key and what was expected.
 """
 
 import os
+import warnings
 from collections.abc import Mapping
 
 import numpy as np
 
+from ..bicycle import bicycle_parameters
+from ..bicycle.benchmark import refuse_second_rider
 from ..bicycle.derived_chart import derived_chart
 from ..core.choices import RIGID, Beam, Combine, Method, Procedure, Source, check
-from ..core.errors import InputError
-from ..core.gate import MAPPING
+from ..core.config import load_yaml
+from ..core.errors import BikemassWarning, InputError
+from ..core.paths import closest_name
+from ..mass.materials import Material, load_materials
 from ..models.plausibility import check_stiffness
+from ..rider.seating import seat_rider
+from .frame import frame_stiffness
+from .loading import load_bicycle, load_rider
 
 COMBINE_CHOICES = Combine.values()
 """Rider + rear frame: 'exact' = parallel-axis theorem; 'thesis' = inertias added (Eq. 3.6)."""
-
-
-def load_bicycle(bicycle, name=None, size=None):
-    """A bicycle from a name, a file, a mapping or a parameter set.
-
-    Parameters
-    ----------
-    bicycle : str, os.PathLike, Mapping, BenchmarkParameters or Bicycle
-        A shipped name (``"jamis"``, ``"benchmark"``; ``bikemass params --help`` lists
-        them), a bicycle YAML file or benchmark parameter file (YAML/JSON with the 26
-        Meijaard names, SI), a mapping with the content of either, or a parameter set.
-        A :class:`~bikemass.bicycle.Bicycle` is returned as it is.
-    name : str, optional
-        Display name for a mapping or parameter set (default: its ``name`` key).
-    size : str, optional
-        The size of a size run (``sizes:``); a name may also say ``"BIKE@SIZE"``.
-
-    Returns
-    -------
-    Bicycle
-        Immutable; ``bicycle.parts`` hold every placed solid in the benchmark frame (m, kg).
-
-    Raises
-    ------
-    InputError
-        Unknown name (the closest shipped name is suggested) or bad content.
-    """
-    from ..bicycle import Bicycle
-    from ..bicycle.loader import bicycle_from_mapping, bicycle_from_parameters
-    from ..bicycle.loader import load_bicycle as load_file
-    from ..models.parameters import BenchmarkParameters
-
-    if isinstance(bicycle, Bicycle):
-        return bicycle
-    if isinstance(bicycle, BenchmarkParameters):
-        return bicycle_from_parameters(bicycle, name or "parameters", name or "<parameters>")
-    if isinstance(bicycle, Mapping):
-        return bicycle_from_mapping(bicycle, name or MAPPING, size)
-    if isinstance(bicycle, (str, os.PathLike)):
-        return load_file(os.fspath(bicycle), size)
-    from ..core.errors import wrong_type
-    raise wrong_type("bicycle", bicycle, "a bicycle is a name, a file path, a mapping, a BenchmarkParameters "
-                     "or a Bicycle")
-
-
-def load_rider(rider, as_printed=False, name=None):
-    """A rider from a pose name, a pose file or a mapping; ``None`` for no rider.
-
-    Parameters
-    ----------
-    rider : str, os.PathLike, Mapping, Rider or None
-        A shipped pose (``"relaxed"``; ``"relaxed-thesis"`` is the published Table 3-4
-        rider), a pose YAML file, or a mapping in any pose form the YAML accepts:
-        placement (``body`` + ``segments`` with ``location`` in m and ``angle`` such as
-        ``"15 deg"``), chain (``body``, ``bike``, ``chain`` joint angles such as ``"30 deg"``;
-        solved on the bicycle's contacts) or lumped segments (``mass`` kg, ``com`` m,
-        ``inertia`` kg m^2).  Values may carry units as strings (``"1.2 m"``); angles must
-        (a bare angle is refused, README "Units in YAML").  ``None`` or ``"none"``: no rider.
-    as_printed : bool
-        Use the values as printed in the thesis (``printed:`` keys) instead of the errata.
-    name : str, optional
-        Display name of a mapping's rider (default: its ``name`` key).
-
-    Returns
-    -------
-    Rider or None
-        Immutable; ``rider.properties()`` gives mass (kg), CoM (m), inertia (kg m^2).
-
-    Raises
-    ------
-    InputError
-        Unknown pose (the closest is suggested) or bad content.
-    """
-    from ..rider import Rider, rider_from_mapping
-    from ..rider import load_rider as load_file
-
-    if rider is None or (isinstance(rider, str) and rider == "none"):
-        return None
-    if isinstance(rider, Rider):
-        return rider
-    if isinstance(rider, Mapping):
-        return rider_from_mapping(rider, name or MAPPING, as_printed)
-    if isinstance(rider, (str, os.PathLike)):
-        return load_file(os.fspath(rider), as_printed=as_printed)
-    from ..core.errors import wrong_type
-    raise wrong_type("rider", rider, "a rider is a pose name, a file path, a mapping, a Rider or None")
 
 
 def parameters(bicycle, rider=None, combine=Combine.EXACT, method=Method.MESH, allow_off_contact=False):
@@ -136,7 +52,6 @@ def parameters(bicycle, rider=None, combine=Combine.EXACT, method=Method.MESH, a
         in kg m^2, ...) and ``p.to_dict()`` as plain floats.  A parameter file without a
         rider returns its own values exactly.
     """
-    from ..bicycle import bicycle_parameters
     combine, method = check(Combine, combine), check(Method, method)
     model = load_bicycle(bicycle)
     return bicycle_parameters(model, seated_rider(model, rider, allow_off_contact), combine.value, method.value)
@@ -167,10 +82,6 @@ def seated_rider(bicycle, rider, allow_off_contact=False, as_printed=False):
         of reach, a bicycle whose rear body already holds a rider (``rider_included``), or bad input.  Gaps allowed, and contacts that cannot be checked, are
         :class:`~bikemass.core.errors.BikemassWarning` s.
     """
-    import warnings
-    from ..core.errors import BikemassWarning
-    from ..rider.seating import seat_rider
-    from ..bicycle.benchmark import refuse_second_rider
     if rider is None or (isinstance(rider, str) and rider == "none"):
         return None
     model = load_bicycle(bicycle)
@@ -214,7 +125,6 @@ def stiffness(bicycle, which, source=Source.AUTO, procedure=Procedure.CONDENSED,
         Unknown material or file, a bicycle with neither a published S nor a rear-frame
         structure, or a matrix that is not symmetric positive definite.
     """
-    from ..mass.materials import Material, load_materials
     source, procedure, beam = check(Source, source), check(Procedure, procedure), check(Beam, beam)
     if which is None or (isinstance(which, str) and which in (RIGID, "rigid")):
         return None
@@ -224,8 +134,6 @@ def stiffness(bicycle, which, source=Source.AUTO, procedure=Procedure.CONDENSED,
     material = which if isinstance(which, Material) else materials.get(os.fspath(which))
     if material is not None:
         return _material_stiffness(load_bicycle(bicycle), material, source, procedure, beam)
-    from ..core.config import load_yaml
-    from ..core.paths import closest_name
     path = os.fspath(which)
     if not os.path.lexists(path):          # an existing non-file reaches the input gate, which says what it is
         names = sorted(materials)
@@ -239,7 +147,6 @@ def stiffness(bicycle, which, source=Source.AUTO, procedure=Procedure.CONDENSED,
 def _material_stiffness(model, material, source, procedure, beam):
     S = None if source is Source.COMPUTED else model.published_stiffness(material)
     if S is None and source is not Source.PUBLISHED and model.structure is not None:
-        from .frame import frame_stiffness
         S = frame_stiffness(model, material, procedure, beam)
     if S is None:
         wanted = {Source.AUTO: f"a published stiffness for {material.key} or a rear-frame structure for "

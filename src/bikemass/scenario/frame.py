@@ -2,9 +2,14 @@
 (``bm.frame_stiffness``; :func:`bikemass.stiffness` also knows published values) and its
 natural frequencies (``bm.frame_modes``)."""
 
+import numbers
+
 from ..core.choices import Beam, Procedure, Support, check
-from ..fe.defaults import DEFAULT_ELEMENT_SIZE
-from ..cli.options import MAX_ELEMENTS
+from ..core.errors import InputError
+from ..fe.defaults import DEFAULT_ELEMENT_SIZE, MAX_ELEMENTS
+from ..fe.model import element_count, resolve_material
+from ..mass.materials import Material
+from .loading import load_bicycle
 
 
 def frame_structure(bicycle):
@@ -25,9 +30,6 @@ def frame_structure(bicycle):
     InputError
         If the bicycle's file names no ``structure:`` (e.g. a parameter file).
     """
-    from .catalog import load_bicycle
-    from ..core.errors import InputError
-
     model = load_bicycle(bicycle)
     if model.structure is None:
         raise InputError(model.source, "structure", "a bicycle whose frame names its structural tubes, "
@@ -55,9 +57,8 @@ def frame_stiffness(bicycle, material=None, procedure=Procedure.CONDENSED, beam=
     numpy.ndarray of shape (2, 2)
         S in N m/rad on (roll, steer) at the bottom head-tube keypoint, dropouts clamped.
     """
-    from ..fe import equivalent_stiffness
-
-    from ..core.errors import InputError
+    # lazy: the beam model's solver loads scipy.sparse (slower to import than numpy); only S needs it
+    from ..fe.stiffness import equivalent_stiffness
 
     procedure, beam = check(Procedure, procedure), check(Beam, beam)
     structure, material = frame_structure(bicycle), _material(material)
@@ -69,15 +70,12 @@ def frame_stiffness(bicycle, material=None, procedure=Procedure.CONDENSED, beam=
 
 def _real(value):
     """True for an int or float (not a bool)."""
-    import numbers
     return isinstance(value, numbers.Real) and not isinstance(value, bool)
 
 
 def _material(material):
-    from ..mass.materials import Material
     if material is None or isinstance(material, Material):
         return material
-    from ..fe import resolve_material
     return resolve_material(str(material))
 
 
@@ -109,9 +107,8 @@ def frame_modes(bicycle, support=Support.FREE, count=10, material=None, element_
     Modes
         ``.frequencies_hz`` (count,) ascending, ``.shapes`` (n_dof, count) mass-normalised.
     """
-    from ..core.errors import InputError
-    from ..fe import frame_modes as solve
-    from ..fe.model import element_count
+    # lazy: the modal solver loads scipy.linalg and scipy.sparse; only frame modes need it
+    from ..fe.modes import frame_modes as solve
 
     support, beam = check(Support, support, "support"), check(Beam, beam)
     if not _real(count) or int(count) != count or count < 1:

@@ -19,9 +19,21 @@ import copy
 import pickle
 from collections import OrderedDict
 
+from ..bicycle.benchmark import merge_rider, parameters_from_bodies, refuse_second_rider, rider_bodies
+from ..bicycle.loader import _is_parameter_text, _with_base, bicycle_from_mapping, bicycle_from_parameters
+from ..bicycle.model import BODIES
+from ..bicycle.parameter_text import load_parameter_text
+from ..bicycle.sizes import split_size
 from ..core.config import Node, load_yaml
 from ..core.errors import InputError
+from ..core.paths import frames_dir, resolve
+from ..mass.inertia import combine
+from ..mass.materials import load_materials
 from ..models.parameters import NAMES
+from ..models.plausibility import check_parameters
+from ..rider import _read_document, poses_dir
+from . import catalog
+from .catalog import seated_rider
 
 RIDER_PREFIX = "rider."
 STIFFNESS_KEY = "stiffness"
@@ -121,12 +133,6 @@ class Model:
     """``Model(bike, rider, stiffness, combine).build(changes)`` -> :class:`Built`."""
 
     def __init__(self, bike, rider=None, stiffness="infinite", combine="exact", method="mesh", origin="spec"):
-        from ..bicycle.loader import _is_parameter_text, _with_base
-        from ..bicycle.sizes import split_size
-        from ..bicycle.parameter_text import load_parameter_text
-        from ..core.paths import frames_dir, resolve
-        from ..rider import poses_dir
-
         self.bike, self.rider, self.stiffness, self.combine, self.method = bike, rider, stiffness, combine, method
         self.origin = origin
         name, self._size = split_size(bike)
@@ -161,7 +167,6 @@ class Model:
 
     def bicycle(self, changes=()):
         def build():
-            from ..bicycle.loader import bicycle_from_mapping, bicycle_from_parameters
             if self._measured is not None:        # read as the file reader does (bikemass.bicycle.parameter_text)
                 if changes:
                     raise InputError(self.origin, changes[0][0], "one of the 26 parameter names (the bicycle "
@@ -179,7 +184,6 @@ class Model:
             return None
 
         def build():
-            from ..rider import _read_document
             doc = self._document(self._rider_doc, changes, self._rider_source)
             return _read_document(Node(doc, self._rider_source, ""), self.rider, False)
         return _lru(self._riders, changes, build)
@@ -192,15 +196,12 @@ class Model:
             return None
 
         def build():
-            from ..bicycle.benchmark import rider_bodies
-            from .catalog import seated_rider
             return rider_bodies(seated_rider(self.bicycle(bike_changes), rider), self.method)
         return _lru(self._seated, (bike_changes, rider_changes), build)
 
     def parameters(self, bike_changes=(), rider_changes=()):
         """Benchmark parameters of the bicycle and rider with their changes (before parameter changes)."""
         def build():
-            from ..bicycle.benchmark import merge_rider, parameters_from_bodies, refuse_second_rider
             bicycle = self.bicycle(bike_changes)
             refuse_second_rider(bicycle, self.posed_rider(rider_changes))
             riders = self.rider_bodies(bike_changes, rider_changes)
@@ -213,9 +214,6 @@ class Model:
     def _bicycle_bodies(self, bicycle):
         """``bicycle.bodies(method)`` with each part's mass properties (its mesh) computed once per
         distinct part: a changed tube wall re-meshes only the tubes of that section."""
-        from ..bicycle.model import BODIES
-        from ..mass.inertia import combine
-
         def props(part):
             key = pickle.dumps((part.name, part.solid, part.mass, part.placement, part.body))
             cached = self._parts.get(key)
@@ -228,7 +226,6 @@ class Model:
 
     def materials(self):
         if self._materials is None:
-            from ..mass.materials import load_materials
             self._materials = load_materials()
         return self._materials
 
@@ -236,7 +233,6 @@ class Model:
         """2x2 S (N m/rad) or None, for stiffness choice ``which`` on the changed bicycle (as
         :func:`bikemass.scenario.catalog.stiffness`; a changed bicycle's S is computed, never published)."""
         def build():
-            from . import catalog
             if which in (None, "infinite", "rigid") or which not in self.materials():
                 return catalog.stiffness(self.bike, which)
             return catalog.stiffness(self.bicycle(bike_changes), which, "computed" if bike_changes else "auto")
@@ -247,6 +243,5 @@ class Model:
         bike, rider, params, stiffness = split_changes(changes or {})
         p = self.parameters(bike, rider)
         if params:
-            from ..models.plausibility import check_parameters
             p = check_parameters(p.replace(**dict(params)), self.origin)
         return p, self.frame_stiffness(self.stiffness if stiffness is None else stiffness, bike)

@@ -3,12 +3,22 @@ saddle, hands on a grip, feet on the pedals, the free joint angles solved (scipy
 squares, :mod:`bikemass.rider.solve`).  Joint angles outside typical human ranges are
 reported with :mod:`warnings` (:class:`~bikemass.core.errors.BikemassWarning`), not refused."""
 
+import math
+import numbers
 import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass
 
 from ..core.choices import Grip, check
+from ..core.config import Node
+from ..core.errors import BikemassWarning, InputError, short, wrong_type
 from ..core.frozen import freeze, short_repr
+from ..rider import Rider
+from ..rider.body import chain_of, load_body
+from ..rider.chain import JOINTS, joint_gaps
+from ..rider.chain_file import bicycle_contacts, default_hands
+from ..rider.pose import read_pose
+from .loading import load_bicycle
 
 DEFAULT_BODY = "thesis_rider"
 """The anthropometry (``bodies/``) posed when none is named."""
@@ -55,9 +65,6 @@ MAX_ANGLE = 360.0
 
 def _degrees(value, what):
     """``value`` as a float angle in [-:data:`MAX_ANGLE`, :data:`MAX_ANGLE`] deg, else InputError."""
-    import math
-    import numbers
-    from ..core.errors import InputError, short
     if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value) \
             or abs(value) > MAX_ANGLE:
         raise InputError(what, short(value), f"an angle in degrees within +-{MAX_ANGLE:g}")
@@ -93,14 +100,7 @@ def pose_rider(bicycle, body=DEFAULT_BODY, hands=None, crank=None, fixed=None, n
     InputError
         A bicycle without contacts, an unknown grip or joint, or a contact out of reach.
     """
-    from .catalog import load_bicycle
-    from ..core.config import Node
-    from ..core.errors import BikemassWarning, InputError
-    from ..rider import Rider
-    from ..rider.body import chain_of, load_body
-    from ..rider.chain import JOINTS, joint_gaps
-    from ..rider.chain_file import bicycle_contacts, default_hands
-    from ..rider.pose import read_pose
+    # lazy: rider.solve loads scipy.optimize (slower to import than numpy); only this call needs it
     from ..rider.solve import solve_on_bicycle
 
     model = load_bicycle(bicycle)
@@ -110,7 +110,6 @@ def pose_rider(bicycle, body=DEFAULT_BODY, hands=None, crank=None, fixed=None, n
     chain_body = chain_of(loaded, body_node)
     hands = default_hands(model.contacts) if hands is None else check(Grip, hands, "hands").value
     if fixed is not None and not isinstance(fixed, Mapping):
-        from ..core.errors import wrong_type
         raise wrong_type("fixed", fixed, "a mapping of joint -> angle (deg)")
     fixed = dict(fixed or {})
     for joint, value in fixed.items():
