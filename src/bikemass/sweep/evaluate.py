@@ -11,9 +11,13 @@ import pickle
 
 import numpy as np
 
+from ..analysis.crossings import critical_speeds
+from ..analysis.model import system, values_of
 from ..core.errors import InputError
+from ..core.threads import one_blas_thread
+from ..scenario.inputs import Model
+from .table import OUTPUTS, csv_lines
 
-OUTPUTS = ("weave_speed", "capsize_speed", "stable_from", "stable_to", "total_mass", "error")
 _MODELS = {}
 
 
@@ -34,7 +38,6 @@ class Chunk:
 
 
 def _model(setup):
-    from ..scenario.inputs import Model
     if setup not in _MODELS:
         bike, rider, stiffness, combine, source = setup
         _MODELS.clear()
@@ -45,8 +48,6 @@ def _model(setup):
 def evaluate(model, changes, max_speed):
     """Result row (dict of :data:`OUTPUTS`) of one configuration; a configuration the model
     refuses gets its one-line reason in ``error`` and empty outputs."""
-    from ..analysis.crossings import critical_speeds
-    from ..analysis.model import system, values_of
     try:
         p, S = model.build(changes)
         found = critical_speeds(system(values_of(p), S), max_speed)
@@ -60,7 +61,6 @@ def evaluate(model, changes, max_speed):
 def evaluate_chunk(setup, chunk, max_speed):
     """Rows for the configurations of a :class:`Chunk`; ``setup`` = (bike, rider, stiffness,
     combine, spec source)."""
-    from ..core.threads import one_blas_thread
     model = _model(setup)
     with one_blas_thread():
         return [evaluate(model, c, max_speed) for c in chunk.configurations]
@@ -71,7 +71,6 @@ def finish_chunk(setup, chunk, max_speed, keys):
     the text of its chunk file (JSON) and its lines of ``results.csv``
     (:func:`bikemass.sweep.table.csv_lines`; ``keys`` = the varied keys).  Formatting on the
     workers keeps the one process that gathers the chunks from formatting every row itself."""
-    from .table import csv_lines
     rows = evaluate_chunk(setup, chunk, max_speed)
     return rows, json.dumps(rows), csv_lines(keys, chunk.configurations, rows)
 

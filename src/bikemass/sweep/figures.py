@@ -1,6 +1,7 @@
 """Figures of a sweep: heat maps over two varied keys, lines over one, scatter for samples."""
 
 import numpy as np
+from matplotlib.figure import Figure
 
 SPEED_COLUMNS = ("weave_speed", "capsize_speed")
 
@@ -15,7 +16,6 @@ def _numeric(rows, key):
 
 def heatmap_figure(rows, spec, size=None):
     """Weave and capsize speed over the grid of the first two varied keys (others at their first value)."""
-    from matplotlib.figure import Figure
     kx, ky = spec.keys[:2]
     xs, ys = spec.variables[0].grid(), spec.variables[1].grid()
     first = {v.key: v.grid()[0] for v in spec.variables[2:]}
@@ -34,7 +34,6 @@ def heatmap_figure(rows, spec, size=None):
 
 def lines_figure(rows, spec, size=None, max_lines=8):
     """Critical speeds against the first varied key; one line per value of the second (up to ``max_lines``)."""
-    from matplotlib.figure import Figure
     kx = spec.keys[0]
     fig = Figure(figsize=size or (11, 4.5), layout="constrained")
     axes = fig.subplots(1, 2, sharex=True)
@@ -58,7 +57,6 @@ def lines_figure(rows, spec, size=None, max_lines=8):
 
 def scatter_figure(rows, spec, size=None):
     """Each critical speed against each varied key (sampled designs)."""
-    from matplotlib.figure import Figure
     keys = [k for k in spec.keys if _numeric(rows, k)]
     fig = Figure(figsize=size or (3.2 * max(len(keys), 1) + 1, 6), layout="constrained")
     axes = fig.subplots(2, max(len(keys), 1), squeeze=False)

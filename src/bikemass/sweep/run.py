@@ -18,15 +18,20 @@ progress bar's steps).  Never more than :data:`MAX_CHUNK` configurations a chunk
 sweep loses little when interrupted.
 """
 
+import importlib
 import json
+import os
 import pickle
 import re
 from contextlib import contextmanager
 from pathlib import Path
 
-from ..core.errors import InputError, short
+from ..core.errors import InputError, short, wrong_type
 from ..core.output import write_atomic
+from ..models.parameters import NAMES
+from ..scenario.inputs import STIFFNESS_KEY, Model, get_path
 from .evaluate import Chunk, finish_chunk, finish_chunk_pickled
+from .spec import SweepSpec, read_spec
 from .table import csv_lines, write_results
 
 TASKS_PER_WORKER = 4
@@ -37,7 +42,6 @@ _CHUNK_NAME = re.compile(r"(\d+)-(\d+)\.json")
 
 def require(module, extra="sweep"):
     """Import ``module`` or fail with the install command."""
-    import importlib
     try:
         return importlib.import_module(module)
     except ImportError:
@@ -48,7 +52,6 @@ def check_keys(spec):
     """Every varied key names an input of the spec's bicycle or rider, and the spec's stiffness
     (and each stiffness name it varies) is one the bicycle has (InputError otherwise): a
     misspelt choice fails once here instead of on every row."""
-    from ..scenario.inputs import STIFFNESS_KEY, Model, get_path
     model = Model(spec.bike, spec.rider, spec.stiffness, spec.combine, origin=spec.source)
     for key in spec.keys:
         if key != STIFFNESS_KEY:
@@ -80,7 +83,6 @@ def chunk_size(count, slots=None, fixed=None, cheap=False):
 def parameters_only(spec):
     """True if every varied key is one of the 26 benchmark parameters: each configuration is
     then a set of parameters to critical speeds, well under a millisecond."""
-    from ..models.parameters import NAMES
     return all(key in NAMES for key in spec.keys)
 
 
@@ -144,7 +146,6 @@ def run_sweep(spec, out, workers=None, scheduler=None, progress=None):
     """
     _check_arguments(spec, out, workers, progress)
     if not hasattr(spec, "configurations"):
-        from .spec import read_spec
         spec = read_spec(spec)
     check_keys(spec)
     if Path(out).exists() and not Path(out).is_dir():
@@ -175,15 +176,11 @@ def run_sweep(spec, out, workers=None, scheduler=None, progress=None):
 
 def max_workers():
     """Most local worker processes a sweep starts: 4 per core."""
-    import os
     return 4 * (os.cpu_count() or 1)
 
 
 def _check_arguments(spec, out, workers, progress):
     """InputError for arguments :func:`run_sweep` cannot use (before any folder is made)."""
-    import os
-    from ..core.errors import wrong_type
-    from .spec import SweepSpec
     if not isinstance(spec, (str, os.PathLike, SweepSpec)):
         raise wrong_type("spec", spec, "a sweep spec file or a SweepSpec")
     if not isinstance(out, (str, os.PathLike)):
@@ -261,6 +258,7 @@ def _client(distributed, workers, scheduler):
 def local_cluster(workers):
     """The Dask cluster of ``--workers N``: ``workers`` single-threaded worker processes on
     loopback, with :data:`QUIET_CLUSTER`'s settings."""
+    # lazy: dask is optional (the sweep extra) and slow to import; only --workers needs it
     import dask
     distributed = require("distributed")
     with dask.config.set(QUIET_CLUSTER):

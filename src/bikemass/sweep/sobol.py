@@ -6,6 +6,7 @@ import numpy as np
 def sobol_indices(rows, spec):
     """``{output: {key: {S1, S1_conf, ST, ST_conf}}}``; an output that some configurations lack
     (no crossing) is given as ``{"skipped": reason}``."""
+    # lazy: SALib is optional (the sweep extra) and slow to import; only Sobol indices need it
     from SALib.analyze import sobol
     out = {}
     for col in ("weave_speed", "capsize_speed"):

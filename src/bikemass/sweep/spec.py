@@ -23,6 +23,7 @@ import itertools
 import json
 import math
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 
@@ -80,11 +81,13 @@ class SweepSpec:
     def configurations(self):
         """List of ``{key: value}`` in a fixed order (the rows of results.csv)."""
         if self.global_sensitivity:
+            # lazy: SALib is optional (the sweep extra) and slow to import; only Sobol samples need it
             from SALib.sample import sobol
             x = sobol.sample(self.problem(), self.n, calc_second_order=False, seed=self.seed)
             return [dict(zip(self.keys, map(float, row))) for row in x]
         if self.method == "grid":
             return [dict(zip(self.keys, combo)) for combo in itertools.product(*(v.grid() for v in self.variables))]
+        # lazy: scipy.stats is slow to import (more than numpy); only random samples need it
         from scipy.stats import qmc
         d = len(self.variables)
         engine = qmc.LatinHypercube(d=d, seed=self.seed) if self.method == "lhs" else qmc.Sobol(d=d, seed=self.seed)
@@ -143,7 +146,6 @@ def _variable(key, node):
 
 def _near(spec_path, name):
     """A file named relative to the spec file, if it exists there; else the name as given."""
-    from pathlib import Path
     here = Path(spec_path).parent / name
     return str(here.resolve()) if here.is_file() else name
 

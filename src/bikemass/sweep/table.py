@@ -1,16 +1,19 @@
 """A sweep's results table: one CSV line per configuration, ``results.csv`` and ``results.parquet``.
 
-Columns: the varied keys (as named in the spec), then :data:`~bikemass.sweep.evaluate.OUTPUTS`.
+Columns: the varied keys (as named in the spec), then :data:`OUTPUTS`.
 Numbers are written in full (``repr``: they read back to the same float), a missing value
 as an empty cell.  Lines are formatted where their chunk was computed (a Dask worker
 formats its own); only rows kept from an earlier run's chunk files are formatted by the
 process that writes the table.
 """
 
+from io import BytesIO
 from pathlib import Path
 
 from ..core.output import write_atomic
-from .evaluate import OUTPUTS
+
+OUTPUTS = ("weave_speed", "capsize_speed", "stable_from", "stable_to", "total_mass", "error")
+"""The outputs of a configuration (:func:`bikemass.sweep.evaluate.evaluate`), the last columns."""
 
 
 def _cell(value):
@@ -34,11 +37,11 @@ def write_results(rows, keys, out, lines):
     columns = list(keys) + list(OUTPUTS)
     write_atomic(Path(out) / "results.csv", "\n".join([",".join(columns), *lines]) + "\n")
     try:
+        # lazy: pyarrow is optional (the sweep extra) and slow to import; only the Parquet file needs it
         import pyarrow as pa
         import pyarrow.parquet as pq
     except ImportError:
         return
-    from io import BytesIO
     table = pa.table({c: [r.get(c) for r in rows] for c in columns})
     buf = BytesIO()
     pq.write_table(table, buf)
