@@ -52,7 +52,7 @@ def download(engine, filename, state):
     elif filename == "Benchmark.txt":
         text = format_parameters(engine.parameters(state), "bicycleparameters", title)
     elif filename == "eigenvalues.csv":
-        from ..cli.stability import eig_table
+        from ..analysis.eigen_table import eig_table
         text = eig_table(engine.evaluate(state).stability.modes, csv=True)
     elif filename == "bicycle.yaml" and state.chart:
         import yaml
