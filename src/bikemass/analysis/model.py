@@ -11,7 +11,7 @@ from types import SimpleNamespace
 import numpy as np
 
 from ..models.parameters import NAMES
-from ..models.canonical import canonical_matrices
+from ..models.canonical import CanonicalMatrices, canonical_matrices
 
 STEP = 1e-30
 """Complex step (dimensionless multiple of i)."""
@@ -35,7 +35,6 @@ class System:
 
     def canonical(self):
         """The real :class:`~bikemass.models.canonical.CanonicalMatrices` (``K0 = K / g``) for the stability code."""
-        from ..models.canonical import CanonicalMatrices
         return CanonicalMatrices(M=np.real(self.M), C1=np.real(self.C1), K0=np.real(self.K0),
                                  K2=np.real(self.K2), g=float(np.real(self.g)))
 

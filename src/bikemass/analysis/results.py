@@ -11,7 +11,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core.choices import RIGID
+from ..core.errors import InputError, InputTypeError, wrong_type
 from ..core.frozen import freeze, readonly, short_repr
+from ..models.canonical import CanonicalMatrices, canonical_matrices
+from ..models.flexible_static import with_frame_stiffness
+from ..models.parameters import BenchmarkParameters
+from ..models.plausibility import check_parameters
+from ..scenario.catalog import stiffness_matrix
+from .stability import follow_modes, speed_grid, stability as analyse
+from .stability.modes import check_speeds
 
 DEFAULT_MARGINAL = 2.0
 """Modulus (rad/s) below which an unstable eigenvalue counts as marginally stable (the thesis's)."""
@@ -33,31 +42,22 @@ def matrices(params, stiffness=None):
         ``M`` (kg m^2), ``C1`` (kg m^2), ``K0`` (kg m), ``K2`` (kg m), ``g`` (m/s^2); with S,
         ``g K0`` is the static stiffness ``gK0 - gK0^T (gK0 + S)^-1 gK0``.
     """
-    from ..models.parameters import BenchmarkParameters
-    from ..models.canonical import CanonicalMatrices, canonical_matrices
-    from ..models.flexible_static import with_frame_stiffness
-
     if isinstance(params, CanonicalMatrices):
         base = params
     elif isinstance(params, BenchmarkParameters):
-        from ..models.plausibility import check_parameters
         base = canonical_matrices(check_parameters(params, "params"))
     else:
-        from ..core.errors import wrong_type
         raise wrong_type("params", params, "params must be BenchmarkParameters (bm.parameters) or CanonicalMatrices")
     return with_frame_stiffness(base, _stiffness(stiffness))
 
 
 def _stiffness(S):
     """``S`` checked as a 2x2 symmetric positive definite array (N m/rad), or None for rigid."""
-    from ..core.choices import RIGID
     if S is None or (isinstance(S, str) and S in (RIGID, "rigid")):
         return None
     if isinstance(S, str):
-        from ..core.errors import InputTypeError
         raise InputTypeError("stiffness", S, f"a 2x2 array in N m/rad; for a material use "
                              f"bm.stiffness(bicycle, {S!r})")
-    from ..scenario.catalog import stiffness_matrix
     return stiffness_matrix(S)
 
 
@@ -69,8 +69,6 @@ def speeds(start=0.0, stop=30.0, step=0.05):
     InputError
         Unless ``0 <= start < stop``, ``step > 0`` and at most 100000 speeds.
     """
-    from ..core.errors import InputError
-    from .stability import speed_grid
     if not all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in (start, stop, step)):
         raise InputError("speeds", f"{start!r}:{stop!r}:{step!r}", "start, stop and step as numbers (m/s)")
     if not (0 <= start < stop and step > 0 and (stop - start) / step <= 1e5):
@@ -82,7 +80,6 @@ def speeds(start=0.0, stop=30.0, step=0.05):
 def _speeds(values):
     if values is None:
         return speeds()
-    from .stability.modes import check_speeds
     return check_speeds(values)
 
 
@@ -103,7 +100,6 @@ def eigenvalues(params, stiffness=None, speeds=None):
         ``.eigenvalues`` (n, 4) complex 1/s, ``.eigenvectors`` (n, 4, 4); ``modes["capsize"]``
         is one column.  Arrays are read-only.
     """
-    from .stability import follow_modes
     modes = follow_modes(matrices(params, stiffness), _speeds(speeds))
     for a in (modes.speeds, modes.eigenvalues, modes.eigenvectors):
         a.setflags(write=False)
@@ -242,9 +238,7 @@ def stability(params, stiffness=None, speeds=None, marginal=DEFAULT_MARGINAL):
         ``.speeds`` (n,), ``.eigenvalues`` (n, 4) complex, ``.weave_speeds``,
         ``.capsize_speeds``, ``.ranges``, ``.mode_ranges``, ``.modes``.
     """
-    from .stability import stability as analyse
     if isinstance(marginal, bool) or not isinstance(marginal, (int, float)) or not 0 < marginal < float("inf"):
-        from ..core.errors import InputError
         raise InputError("marginal", marginal, "a positive finite modulus in rad/s")
     S = _stiffness(stiffness)
     m = matrices(params, S)

@@ -19,9 +19,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..models.parameters import NAMES
+from ..core.errors import InputError, short, wrong_type
+from ..models.parameters import NAMES, BenchmarkParameters
+from ..models.plausibility import check_parameters
+from ..scenario.inputs import Model, get_path
 from .crossings import OSCILLATORY, REAL, critical_speeds
 from .model import STIFFNESS_ENTRIES, state_matrix_derivatives, stiffness_state_derivatives, system, values_of
+from .results import _stiffness
 
 SPEEDS = {"weave_speed": OSCILLATORY, "capsize_speed": REAL}
 """Output name -> crossing kind (first crossing of that kind on (0, vmax])."""
@@ -101,12 +105,7 @@ def sensitivity(params, S=None, vmax=30.0, names=NAMES):
 
 def _checked(params, S, vmax, names):
     """``(params, S, names)`` checked as :func:`sensitivity` needs them (InputError otherwise)."""
-    from .results import _stiffness
-    from ..core.errors import InputError, short
-    from ..models.parameters import BenchmarkParameters
-    from ..models.plausibility import check_parameters
     if not isinstance(params, BenchmarkParameters):
-        from ..core.errors import wrong_type
         raise wrong_type("params", params, "BenchmarkParameters (bm.parameters)")
     check_parameters(params, "params")
     S = _stiffness(S)
@@ -119,6 +118,7 @@ def _checked(params, S, vmax, names):
 
 def sensitivity_figure(result, title="", size=None):
     """Horizontal bar chart of the elasticities of both speeds (a matplotlib Figure; ``size`` in inches)."""
+    # lazy: matplotlib is slow to import (more than numpy); only the figure needs it
     from matplotlib.figure import Figure
 
     fig = Figure(figsize=size or (10, 7.5), layout="constrained")
@@ -148,7 +148,6 @@ GEOMETRY_STEP = 1e-4
 def input_value(model, key):
     """Current value of an input key of a :class:`~bikemass.scenario.inputs.Model` (SI, or the
     unit the YAML file uses for it, e.g. degrees for chain angles)."""
-    from ..scenario.inputs import get_path
     return get_path(model, key)
 
 
@@ -163,10 +162,7 @@ def geometry_sensitivity(model, keys, result=None, step=GEOMETRY_STEP):
     an estimate of the finite-difference error.
     Returns ``{key: {value, step, d_weave_speed, d_capsize_speed, difference_check}}``.
     """
-    from ..core.errors import InputError, short
-    from ..scenario.inputs import Model
     if not isinstance(model, Model):
-        from ..core.errors import wrong_type
         raise wrong_type("model", model, "a bikemass.scenario.inputs.Model")
     if isinstance(keys, str):
         keys = [keys]

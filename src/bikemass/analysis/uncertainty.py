@@ -25,9 +25,11 @@ import numpy as np
 
 from ..core.errors import InputError
 from ..models.parameters import NAMES
+from ..scenario.inputs import Model, get_path
 from .crossings import critical_speeds
 from .model import MATRICES, STEP, system, values_of
 from .sensitivity import SPEEDS, speed_derivatives
+from .stability import follow_modes, speed_grid
 
 DISTRIBUTIONS = ("normal", "uniform")
 
@@ -69,7 +71,6 @@ def read_spreads(node):
 def directions(model, spreads, step=1e-4):
     """``{key: (dp, dS)}``: derivative of the 26 parameters (dict) and of S (2x2 or None) per unit
     of each input; exact unit vectors for parameter names, central differences for the rest."""
-    from ..scenario.inputs import get_path
     p0, S0 = model.build()
     out = {}
     for key in spreads:
@@ -116,7 +117,6 @@ class Propagation:
 def linear_derivatives(params, S, dirs, speeds):
     """``{key: {"matrices": {name: 2x2}, "eig": (n, 4) complex, "weave_speed": float|None, ...}}``
     and the nominal modes, critical speeds."""
-    from .stability import follow_modes
     sys0 = system(values_of(params), S)
     modes = follow_modes(sys0.canonical(), speeds)
     X = modes.eigenvectors                                 # (n, 4, 4), columns = labelled modes
@@ -144,7 +144,6 @@ def linear_derivatives(params, S, dirs, speeds):
 def propagate(model, spreads, method="linear", samples=1000, seed=0, speeds=None, step=1e-4):
     """:class:`Propagation` of ``spreads`` (``{key: Spread}``) through ``model``
     (:class:`~bikemass.scenario.inputs.Model`); ``speeds`` (m/s) for the eigenvalue bands."""
-    from .stability import speed_grid
     _check_options(spreads, method, samples, seed)
     speeds = speed_grid(0, 10, 0.1) if speeds is None else np.asarray(speeds, dtype=float)
     params, S = model.build()
@@ -201,7 +200,6 @@ def uncertainty(bike, spreads, rider=None, stiffness="infinite", combine="exact"
                 samples=1000, seed=0, speeds=None):
     """:class:`Propagation` for a bicycle (name or file), rider and stiffness choice; ``spreads``
     maps input keys to a standard deviation (normal) or a :class:`Spread`."""
-    from ..scenario.inputs import Model
     if not isinstance(spreads, dict):
         raise InputError("spreads", "(argument)", f"a mapping of input key -> std or Spread, got {type(spreads).__name__}")
     spreads = {k: v if isinstance(v, Spread) else Spread("normal", v) for k, v in spreads.items()}
@@ -209,8 +207,6 @@ def uncertainty(bike, spreads, rider=None, stiffness="infinite", combine="exact"
 
 
 def _montecarlo(model, spreads, n, seed, speeds, matrices, speed_out, eig_modes, inputs):
-    from .stability import follow_modes
-    from ..scenario.inputs import get_path
     rng = np.random.default_rng(seed)
     keys = list(spreads)
     nominal = {k: get_path(model, k) for k in keys}
@@ -258,9 +254,10 @@ def _montecarlo(model, spreads, n, seed, speeds, matrices, speed_out, eig_modes,
 def uncertainty_figure(result, title="", size=None):
     """Real parts against speed with +-2 std bands (linear) and 95 % Monte Carlo bands, and the
     Monte Carlo histograms of the critical speeds (a matplotlib Figure)."""
+    # lazy: matplotlib (plots/ loads it) is slow to import; only the figure needs it
     from matplotlib.figure import Figure
-
     from ..plots.stability import COLOURS, OTHER_COLOUR
+
     fig = Figure(figsize=size or (11, 5), layout="constrained")
     axes = fig.subplots(1, 2, width_ratios=(2, 1))
     v = result.eigen["speeds"]

@@ -72,6 +72,7 @@ def body_properties(parts, method="mesh", overlap="sum", segments=DEFAULT_SEGMEN
 
 def _union_pieces(parts, segments):
     """Each part's mass properties minus the volume already held by earlier parts."""
+    # lazy: trimesh (and manifold3d behind its booleans) is slow to import; only overlap=union needs it
     import trimesh.boolean
     pieces, taken = [], None
     for p in parts:

@@ -41,6 +41,7 @@ def ring_prism(bottom, top, length, inner_bottom=None, inner_top=None):
     ``bottom``/``top`` are (N, 2) outer rings; optional inner rings of the same N
     make a hollow prism.  Side faces join vertex i to i+1 of each ring.
     """
+    # lazy: trimesh is slow to import (more than numpy); only meshes need it
     import trimesh
     n = len(bottom)
     i = np.arange(n)
@@ -248,6 +249,7 @@ class Box(Solid):
         return MassProperties(m, np.zeros(3), np.diag([b + c, a + c, a + b]) * m / 12)
 
     def mesh(self, segments=DEFAULT_SEGMENTS):
+        # lazy: trimesh is slow to import (more than numpy); only meshes need it
         import trimesh.creation
         return trimesh.creation.box(extents=[self.size_x, self.size_y, self.size_z])
 

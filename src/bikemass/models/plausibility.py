@@ -16,7 +16,8 @@ import warnings
 
 import numpy as np
 
-from ..core.errors import BikemassWarning
+from ..core.errors import BikemassWarning, InputError, short
+from .parameters import NAMES
 
 RELATIVE_TOLERANCE = 1e-9
 """Asymmetry, negative moments and triangle excess below this fraction of the largest moment pass."""
@@ -96,8 +97,6 @@ def check_parameters(params, source):
     configurations, uncertainty draws); plain arithmetic, a few microseconds.  The triangle
     inequality is not asked for here: a measured near-planar frame sits on its boundary and a
     small spread crosses it."""
-    from ..core.errors import InputError, short
-    from .parameters import NAMES
     values = {key: getattr(params, key) for key in NAMES}
     for key, value in values.items():
         if isinstance(value, bool) or not isinstance(value, numbers.Real):

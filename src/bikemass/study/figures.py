@@ -21,6 +21,7 @@ STIFFNESS_NAMES = {"infinite": "rigid frame", "steel": "steel frame", "titanium"
 def critical_speeds(outcome):
     """:class:`~bikemass.plots.stability.CriticalSpeeds` of a study outcome: exact speeds and
     ranges where the run has them, else the stable runs of the grid."""
+    # lazy: plots/ loads matplotlib (slower to import than numpy); study --no-figures runs without it
     from ..plots.stability import CriticalSpeeds
     if outcome.weave_speeds is not None:
         return CriticalSpeeds(tuple(outcome.weave_speeds), tuple(outcome.capsize_speeds),
@@ -63,16 +64,19 @@ def figure_count():
 
 
 def draw_critical(results, title):
+    # lazy: plots/ loads matplotlib (slower to import than numpy); study --no-figures runs without it
     from ..plots.critical_speeds import plot_critical_speeds
     return plot_critical_speeds(results, title)
 
 
 def draw_eigenvalues(modes, critical, title):
+    # lazy: plots/ loads matplotlib (slower to import than numpy); study --no-figures runs without it
     from ..plots.stability import eigenvalue_figure
     return eigenvalue_figure(modes, critical, title)
 
 
 def draw_pose(bicycle, rider, title):
+    # lazy: plots/ loads matplotlib (slower to import than numpy); study --no-figures runs without it
     from ..plots.side_view import plot_side_view
     return plot_side_view(bicycle, rider, title)
 
@@ -84,6 +88,7 @@ def job_path(job):
 
 def run_job(job):
     """Draw one figure and save it (PNG); returns the path."""
+    # lazy: plots/ loads matplotlib (slower to import than numpy); study --no-figures runs without it
     from ..plots.figure import save_figure
     function, *args, path, title = job
     save_figure(function(*args, title), path)

@@ -15,6 +15,7 @@ from .frames import FRAMES, MATERIALS, frame_results
 from .parallel import executor
 from .records import records
 from .report import render
+from .report_html import render_html
 from .runs import CORRECTED, GEOMETRY, THESIS, Inputs, run
 from .stability_tables import CHAPTER4, CHAPTER5, compare, entry_table
 
@@ -148,5 +149,4 @@ def draw(results, out, workers=WORKERS, step=lambda label: None):
 
 def write_html(results, out, figure_paths=()):
     """``report.html`` with the figures at ``figure_paths`` (PNG) embedded."""
-    from .report_html import render_html
     write_atomic(out / "report.html", render_html(results, {p.name: p.read_bytes() for p in figure_paths}))

@@ -17,6 +17,7 @@ The benchmark bicycle is the same parameter file in every run.
 
 from dataclasses import dataclass
 
+from ..rider.seating import seat_rider
 from ..scenario import catalog
 from ..bicycle import bicycle_parameters
 from ..fe import equivalent_stiffness
@@ -139,7 +140,6 @@ class Inputs:
             if bike is None:
                 self._riders[key] = catalog.load_rider(name)
             else:
-                from ..rider.seating import seat_rider
                 seated = seat_rider(name, self.bicycle(bike), allow_off_contact=True)
                 self._riders[key], self.contacts[key] = seated.rider, seated.contacts
         return self._riders.get(key)

@@ -2,6 +2,8 @@
 
 from dataclasses import dataclass, field
 
+from ..core.output import csv_text, formatted
+
 
 @dataclass(frozen=True)
 class Table:
@@ -20,7 +22,6 @@ class Table:
 
     def to_csv(self):
         """CSV text, header line first (:func:`bikemass.core.output.csv_text`: full precision)."""
-        from ..core.output import csv_text
         return csv_text(self.headers, self.rows)
 
     def cell(self, column, value):
@@ -29,7 +30,6 @@ class Table:
         if isinstance(value, bool):
             return "yes" if value else "no"
         if isinstance(value, float):
-            from ..core.output import formatted
             return formatted(self.formats.get(column, "{:.3f}"), value)        # no "-0.000"
         return str(value)
 

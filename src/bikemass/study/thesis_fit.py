@@ -11,16 +11,20 @@ from dataclasses import replace
 
 import numpy as np
 
+from ..analysis.stability import stability
+from ..bicycle import bicycle_parameters, load_bicycle
 from ..core.config import Node, load_yaml
 from ..core.paths import resolve
+from ..models.canonical import canonical_matrices
+from ..rider import Rider, load_rider, poses_dir
 from ..rider.anthropometry import find_anthropometry
 from ..rider.chain import joint_gaps, load_chain_body
-from ..rider.pose import angle_deg
+from ..rider.pose import angle_deg, read_pose
+from ..rider.solve import fit_to_placements
 
 
 def pose_placements(pose):
     """(``{segment: (location, angle)}`` of a placement pose's right copies, its anthropometry path)."""
-    from ..rider import poses_dir
     node = load_yaml(resolve(pose, poses_dir(), "pose"))
     placements = {k: (s["location"].vector("length", 3), angle_deg(s["angle"])) for k, s in node["segments"].items()}
     return placements, find_anthropometry(node["body"])
@@ -30,7 +34,6 @@ def closest_chain_pose(pose):
     """(ChainBody, placements, ChainPose, rms, max) of the chain pose closest to placement pose
     ``pose`` (m).  The chain's shoulders take the pose's upper-arm y (Aerobars and Aero Tuck
     bring the arms in), so that only the joining differs."""
-    from ..rider.solve import fit_to_placements
     placements, path = pose_placements(pose)
     body = load_chain_body(path)
     shoulder = np.array([body.shoulder[0], placements["upper_arm"][0][1], body.shoulder[2]])
@@ -40,16 +43,11 @@ def closest_chain_pose(pose):
 
 
 def _rider_of(chain, body_name, source):
-    from ..rider import Rider
-    from ..rider.pose import read_pose
     name, parts = read_pose(Node(chain.placement_form("closest chain pose", body_name), source, None))
     return Rider("chain", name, parts)
 
 
 def _speeds(bike, rider, combine, method):
-    from ..bicycle import bicycle_parameters
-    from ..models.canonical import canonical_matrices
-    from ..analysis.stability import stability
     result = stability(canonical_matrices(bicycle_parameters(bike, rider, combine, method)))
     return result.weave_speeds, result.capsize_speeds
 
@@ -57,8 +55,6 @@ def _speeds(bike, rider, combine, method):
 def compare_with_chain(pose, bike="jamis-thesis", combine="exact", method="exact"):
     """Dict: fit (rms, max, m), joint gaps (m) of the pose and of its chain pose, both riders'
     MassProperties, and weave/capsize speeds (m/s) of ``bike`` carrying each."""
-    from ..bicycle import load_bicycle
-    from ..rider import load_rider
     body, placements, chain, rms, worst = closest_chain_pose(pose)
     thesis = load_rider(pose)
     fitted = _rider_of(chain, body.name, body.source)

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ...core.errors import InputError, short
 from .eigen import ModalQuantities, eigen_sweep
 from .labels import LABELS, mode_names, settle_splits, standstill_labels
 from .tracking import reorder, track
@@ -55,7 +56,6 @@ class Modes(ModalQuantities):
 def check_speeds(speeds):
     """``speeds`` as a 1-D float array; InputError (a ValueError) unless numbers, at least one,
     finite, >= 0 and strictly increasing."""
-    from ...core.errors import InputError, short
     try:
         v = np.atleast_1d(np.asarray(speeds, dtype=float))
     except (TypeError, ValueError):
