@@ -7,7 +7,19 @@ JSON, BicycleParameters), the eigenvalues (CSV) and the bicycle and pose YAML.
 A bad query answers 400 with ``{"error": "<one line>"}``.
 """
 
+import yaml
+from flask import Response, jsonify, request
+
+from ..analysis.eigen_table import eig_table
 from ..core.errors import InputError
+from ..core.gate import read_text
+from ..core.output import with_units, written
+from ..core.paths import resolve
+from ..core.plain import plain
+from ..models.parameter_export import format_parameters
+from ..models.parameters import parameter_units
+from ..rider import poses_dir
+from .engine import edited_chart
 from .state import PageState
 
 DOWNLOADS = {
@@ -23,24 +35,16 @@ DOWNLOADS = {
 
 def stability_document(evaluation):
     """The ``bikemass stability --format json`` document of an :class:`~.engine.Evaluation`."""
-    from ..core.output import with_units, written
-    from ..core.plain import plain
-    from ..models.parameters import parameter_units
     return written(with_units(plain(evaluation.stability.to_dict()), parameter_units()))
 
 
 def parameters_document(params):
     """The ``bikemass params --format json`` document of a parameter set."""
-    from ..core.output import with_units, written
-    from ..models.parameters import parameter_units
     return written(with_units(params.to_dict(), parameter_units()))
 
 
 def download(engine, filename, state):
     """``(bytes, mime type)`` of the download ``filename`` for ``state``; InputError if unknown."""
-    from ..models.parameter_export import format_parameters
-    from ..core.gate import read_text
-
     if filename not in DOWNLOADS:
         raise InputError("URL", "download", f"one of {', '.join(DOWNLOADS)}")
     mime = DOWNLOADS[filename][0]
@@ -52,32 +56,23 @@ def download(engine, filename, state):
     elif filename == "Benchmark.txt":
         text = format_parameters(engine.parameters(state), "bicycleparameters", title)
     elif filename == "eigenvalues.csv":
-        from ..analysis.eigen_table import eig_table
         text = eig_table(engine.evaluate(state).stability.modes, csv=True)
     elif filename == "bicycle.yaml" and state.chart:
-        import yaml
-
-        from .engine import edited_chart
         text = yaml.safe_dump(edited_chart(engine.source(state.bike), dict(state.chart)), sort_keys=False)
     elif filename == "bicycle.yaml":
         text = read_text(engine.bicycle(state.bicycle_key).source)
     else:
         rider = engine.rider(state.rider_key)
         if isinstance(rider, dict):
-            import yaml
             return yaml.safe_dump(rider, sort_keys=False).encode(), mime
         if rider is None:
             raise InputError("URL", "rider", "a rider (this configuration has none)")
-        from ..core.paths import resolve
-        from ..rider import poses_dir
         text = read_text(resolve(rider.pose, poses_dir(), "pose"))
     return text.encode(), mime
 
 
 def register_routes(server, engine):
     """Add the API and download routes to the Flask ``server``."""
-    from flask import Response, jsonify, request
-
     def state_or_error():
         return PageState.from_query(request.args.to_dict())
 

@@ -7,15 +7,25 @@ then costs one stability analysis (milliseconds).  Uploaded files live in the
 engine's own temporary folder under a name made from their content.
 """
 
+import copy
 import hashlib
 import tempfile
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
+from ..analysis.results import stability
+from ..bicycle import bicycle_parameters
+from ..bicycle.chart import CHECKED_KEYS
+from ..bicycle.loader import bicycle_sizes
+from ..core.choices import Combine, check
+from ..core.config import load_yaml
 from ..core.errors import InputError
+from ..core.paths import available, frames_dir, resolve
 from ..models.parameters import BenchmarkParameters
-from .state import PageState
+from ..models.plausibility import check_parameters
+from ..scenario.catalog import load_bicycle, load_rider, seated_rider, stiffness
+from .state import CHART_ANGLES, SOURCE, PageState
 
 UPLOAD_LIMIT = 1_000_000
 """Largest accepted upload (bytes)."""
@@ -89,21 +99,15 @@ class Engine:
 
     def sizes(self, bike):
         """The size names of ``bike``'s size run, ``()`` if it has none."""
-        from ..bicycle.loader import bicycle_sizes
         return bicycle_sizes(self.source(bike))
 
     def is_chart(self, bike):
         """True if ``bike`` is written as a geometry chart (so the page can edit its chart)."""
-        from ..core.config import load_yaml
-        from ..core.paths import frames_dir, resolve
-
         path = resolve(self.source(bike), frames_dir(), "bicycle")
         return path.suffix != ".txt" and load_yaml(path).has("chart")
 
     def _bicycle(self, key):
         """The bicycle of a :attr:`PageState.bicycle_key`: ``(bike, size, chart edits)``."""
-        from ..scenario.catalog import load_bicycle
-
         bike, size, chart = key
         size = size or None
         if not chart:
@@ -113,7 +117,6 @@ class Engine:
     def _rider(self, key):
         """The rider of a :attr:`PageState.rider_key` as loaded (a body rider: its pose mapping,
         which only a bicycle can solve)."""
-        from ..scenario.catalog import load_rider
         if isinstance(key, tuple):
             return body_pose(key)
         if "/" in key or "\\" in key or key.startswith("."):
@@ -122,17 +125,13 @@ class Engine:
 
     def _seated(self, bicycle_key, rider_key):
         """The rider seated on the bicycle (None for no rider); InputError if it cannot sit."""
-        from ..scenario.catalog import seated_rider
         return seated_rider(self.bicycle(bicycle_key), self.rider(rider_key))
 
     def _base_parameters(self, key, rider, combine):
         """Parameters of the bicycle with its rider seated once (:meth:`seated`, cached)."""
-        from ..bicycle import bicycle_parameters
-        from ..core.choices import Combine, check
         return bicycle_parameters(self.bicycle(key), self.seated(key, rider), check(Combine, combine).value, "mesh")
 
     def _stiffness(self, key, material):
-        from ..scenario.catalog import stiffness
         return stiffness(self.bicycle(key), material)
 
     def warm(self, states=(PageState(),)):
@@ -150,14 +149,10 @@ class Engine:
         base = self.base_parameters(state.bicycle_key, state.rider_key, state.combine)
         if not state.overrides:
             return base
-        from ..models.plausibility import check_parameters
-        from .state import SOURCE
         return check_parameters(base.replace(**dict(state.overrides)), SOURCE)
 
     def evaluate(self, state: PageState, speeds=None):
         """:class:`Evaluation` of ``state`` over ``speeds`` (default grid)."""
-        from ..analysis.results import stability
-
         params = self.parameters(state)
         S = self.stiffness(state.bicycle_key, state.stiffness)
         return Evaluation(params, S, stability(params, S, speeds))
@@ -176,13 +171,6 @@ def edited_chart(source, edits):
     """The mapping of chart bicycle ``source`` with ``edits`` (``{key: mm or deg}``) typed over
     its chart; the published redundant values (wheelbase, trail, ...) are dropped, since they
     describe the unedited frame."""
-    import copy
-
-    from ..bicycle.chart import CHECKED_KEYS
-    from ..core.config import load_yaml
-    from ..core.paths import frames_dir, resolve
-    from .state import CHART_ANGLES
-
     path = resolve(source, frames_dir(), "bicycle")
     node = load_yaml(path)
     if not node.has("chart"):
@@ -199,9 +187,6 @@ def edited_chart(source, edits):
 
 def _check_references(path):
     """An uploaded bicycle may build on a shipped bicycle (``base: jamis``), never on a file."""
-    from ..core.config import load_yaml
-    from ..core.paths import available, frames_dir
-
     if path.suffix == ".txt":
         return
     node = load_yaml(path)

@@ -7,11 +7,21 @@ configuration); every change of a control recomputes through the cached
 
 import base64
 
+import dash
+import numpy as np
+from dash import ALL, Dash, Input, Output, State, ctx, dcc, html, no_update
+
+from ..bicycle.derived_chart import ANGLES, CHART_ORDER, derived_chart
 from ..core.errors import InputError
+from ..core.paths import available, frames_dir
 from ..models.parameters import DESCRIPTIONS, NAMES
-from .api import DOWNLOADS
-from .engine import UPLOAD_LIMIT
-from .state import BODY_RIDER, CHART_ANGLES, CHART_KEYS, HANDS, SEXES, STIFFNESS_CHOICES, PageState
+from ..plots.figure import figure_bytes
+from ..plots.side_view import plot_side_view
+from ..plots.stability import plot_eigenvalues
+from ..rider import shipped_poses
+from .api import DOWNLOADS, register_routes
+from .engine import UPLOAD_LIMIT, Engine
+from .state import BODY_RIDER, CHART_ANGLES, CHART_KEYS, HANDS, SEXES, SOURCE, STIFFNESS_CHOICES, PageState
 
 STYLE = """
 body { font-family: system-ui, sans-serif; margin: 0; color: #222; background: #fafafa; }
@@ -45,14 +55,7 @@ INDEX = """<!DOCTYPE html>
 
 def create_app(engine=None):
     """The Dash application (its Flask server has the JSON API and downloads)."""
-    from dash import Dash
-
-    from .api import register_routes
-    from .engine import Engine
-
     engine = engine or Engine()
-    import dash
-
     app = Dash(__name__, title="bikemass", update_title=None, serve_locally=True, use_pages=True,
                pages_folder="", index_string=INDEX, suppress_callback_exceptions=True)
     dash.register_page("explorer", path="/", title="bikemass", layout=lambda **query: _layout(query))
@@ -65,16 +68,12 @@ def create_app(engine=None):
 
 
 def _shipped():
-    from ..core.paths import available, frames_dir
-    from ..rider import shipped_poses
     body = {"label": "a body from height, mass and sex", "value": BODY_RIDER}
     return available(frames_dir()), ["none"] + shipped_poses() + [body]
 
 
 def _layout(query):
     """The page for the URL query ``query`` (a mapping of strings); a bad query shows its error."""
-    from dash import dcc, html
-
     try:
         state, error = PageState.from_query(query), ""
     except InputError as exc:
@@ -139,7 +138,6 @@ def _layout(query):
 
 def _editor(summary, kind, keys, values, unit, label):
     """A table of text inputs ``{"type": kind, "key": key}``, empty = the computed value."""
-    from dash import dcc, html
     return html.Details(open=True, children=[
         html.Summary(summary),
         html.Table(className="params", children=[
@@ -151,7 +149,6 @@ def _editor(summary, kind, keys, values, unit, label):
 
 
 def _panel(title, content):
-    from dash import html
     return html.Div(className="figure", children=[html.H4(title), content])
 
 
@@ -161,8 +158,6 @@ def _shown(value):
 
 def _parse(keys, texts, prefix=""):
     """``{key: float or None}`` from typed texts (empty = None); InputError names a bad one."""
-    from .state import SOURCE
-
     out = {}
     for key, text in zip(keys, texts):
         text = (text or "").strip()
@@ -174,7 +169,6 @@ def _parse(keys, texts, prefix=""):
 
 
 def _number(what, ident):
-    from dash import html
     return html.Div(className="number", children=[html.Div(what, className="what"),
                                                   html.Div(id=ident, className="value")])
 
@@ -188,20 +182,16 @@ def _range_text(ranges):
 
 
 def _svg_uri(fig):
-    from ..plots.figure import figure_bytes
     return "data:image/svg+xml;base64," + base64.b64encode(figure_bytes(fig, "svg")).decode()
 
 
 def _html_table(headers, rows):
-    from dash import html
     return html.Table(className="params", children=[html.Tr([html.Th(h) for h in headers])]
                       + [html.Tr([html.Td(c) for c in row]) for row in rows])
 
 
 def _bodies_table(p):
     """Mass, CoM and principal moments of inertia of the four benchmark bodies."""
-    import numpy as np
-
     com = {"R": (0.0, -p.rR), "B": (p.xB, p.zB), "H": (p.xH, p.zH), "F": (p.w, -p.rF)}
     names = {"R": "rear wheel", "B": "rear frame (+ rider)", "H": "front frame", "F": "front wheel"}
     rows = []
@@ -213,7 +203,6 @@ def _bodies_table(p):
 
 
 def _geometry_table(chart):
-    from ..bicycle.derived_chart import ANGLES, CHART_ORDER
     rows = [[key.replace("_", " "), f"{chart[key]:.1f} deg" if key in ANGLES else f"{1000 * chart[key]:.1f} mm"]
             for key in CHART_ORDER if chart.get(key) is not None]
     return _html_table(["quantity", "value"], rows)
@@ -229,8 +218,6 @@ def _state(bike, size, rider, body, stiffness, combine, chart_texts, param_texts
 
 
 def _callbacks(app, engine):
-    from dash import ALL, Input, Output, State, ctx, html, no_update
-
     @app.callback(Output("bike", "options"), Output("bike", "value"),
                   Output("error", "children", allow_duplicate=True),
                   Input("upload", "contents"), State("upload", "filename"), State("bike", "options"),
@@ -273,8 +260,6 @@ def _callbacks(app, engine):
                   Input("stiffness", "value"), Input("combine", "value"),
                   Input({"type": "chart", "key": ALL}, "value"), Input({"type": "param", "key": ALL}, "value"))
     def update(bike, size, rider, height, mass, sex, hands, stiffness, combine, chart_texts, param_texts):
-        from ..bicycle.derived_chart import derived_chart
-
         blank = ("-",) * 4 + ("", "", "", "", [], no_update, [""] * len(NAMES), [""] * len(CHART_KEYS),
                  no_update)
         try:
@@ -325,13 +310,11 @@ def _placeholder(key, value):
 
 
 def _eigenvalue_figure(result, state):
-    from ..plots.stability import plot_eigenvalues
     rider = (f"a {state.sex} rider of {state.height:g} m and {state.mass:g} kg" if state.rider == BODY_RIDER
              else "no rider" if state.rider == "none" else f"rider {state.rider}")
     return plot_eigenvalues(result, title=f"{state.bike}, {rider}, stiffness {state.stiffness}")
 
 
 def _side_view_figure(bicycle, rider):
-    from ..plots.side_view import plot_side_view
     title = bicycle.name + (f" + rider {rider.name}" if rider is not None else "")
     return plot_side_view(bicycle, rider, title=title)
