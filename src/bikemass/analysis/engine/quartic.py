@@ -1,0 +1,75 @@
+"""Roots of many real quartics at once (vectorised: no Python loop over polynomials).
+
+Ferrari's closed form (via the resolvent cubic, complex arithmetic) gives starting
+values; a few Aberth-Ehrlich sweeps then polish all four roots together to
+machine precision.  Roots that are real to rounding are returned with zero
+imaginary part.
+"""
+
+import numpy as np
+
+_OMEGA = np.exp(2j * np.pi * np.arange(3) / 3)
+
+
+def _cubic_roots(p, q):
+    """The three roots of ``t**3 + p t + q`` (complex, shape (n, 3))."""
+    d = np.sqrt(q * q / 4 + p ** 3 / 27 + 0j)
+    d = np.where((np.conj(-q / 2) * d).real >= 0, d, -d)   # the larger of -q/2 +- d
+    c = (-q / 2 + d) ** (1 / 3)
+    c = c[:, None] * _OMEGA
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = c - p[:, None] / (3 * c)
+    return np.where(c == 0, 0j, t)
+
+
+def _ferrari(b, c, d, e):
+    """Approximate roots of the monic quartic ``x^4 + b x^3 + c x^2 + d x + e`` (shape (n, 4))."""
+    p = c - 3 * b * b / 8
+    q = d - b * c / 2 + b ** 3 / 8
+    r = e - b * d / 4 + b * b * c / 16 - 3 * b ** 4 / 256
+    # resolvent m^3 + p m^2 + (p^2/4 - r) m - q^2/8 = 0, shifted m = t - p/3
+    m = _cubic_roots(-p * p / 12 - r + 0j, -p ** 3 / 108 + p * r / 3 - q * q / 8 + 0j) - p[:, None] / 3
+    m = m[np.arange(len(m)), np.argmax(np.abs(m), axis=1)]      # a non-zero root if any
+    s = np.sqrt(2 * m)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        h = np.where(s == 0, 0, q / (2 * s))
+    # y^2 + s y + (p/2 + m - h) = 0  and  y^2 - s y + (p/2 + m + h) = 0
+    roots = []
+    for sign in (1, -1):
+        k = p / 2 + m - sign * h
+        disc = np.sqrt(s * s / 4 - k)
+        roots += [-sign * s / 2 + disc, -sign * s / 2 - disc]
+    return np.stack(roots, axis=1) - b[:, None] / 4
+
+
+def _aberth(coeffs, z, sweeps):
+    """Polish all roots ``z`` (n, 4) of the polynomials ``coeffs`` (n, 5, highest first)."""
+    k = z.shape[1]
+    for _ in range(sweeps):
+        p = np.zeros_like(z)
+        dp = np.zeros_like(z)
+        for a in coeffs.T:                      # Horner for p and p'
+            dp = dp * z + p
+            p = p * z + a[:, None]
+        repulsion = np.zeros_like(z)            # sum over j != i of 1 / (z_i - z_j)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            for i in range(k):
+                for j in range(i + 1, k):
+                    d = z[:, i] - z[:, j]
+                    inv = np.where(d == 0, 0, 1 / d)
+                    repulsion[:, i] += inv
+                    repulsion[:, j] -= inv
+            w = p / dp
+            step = w / (1 - w * repulsion)
+        z = np.where(np.isfinite(step), z - step, z)
+    return z
+
+
+def quartic_roots(coeffs, sweeps=1):
+    """Roots (n, 4) of real quartics with coefficients ``coeffs`` (n, 5), highest power first."""
+    coeffs = np.asarray(coeffs, dtype=float)
+    monic = coeffs[:, 1:] / coeffs[:, :1]
+    z = _ferrari(*monic.T)
+    z = _aberth(np.concatenate([np.ones((len(z), 1)), monic], axis=1), z, sweeps)
+    real = np.abs(z.imag) <= 1e-13 * (1 + np.abs(z))
+    return np.where(real, z.real + 0j, z)
