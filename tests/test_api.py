@@ -146,8 +146,8 @@ def test_pose_warning_goes_through_warnings():
 
 def test_subpackages_of_the_same_name_do_not_hide_the_functions():
     import bikemass.parameters
-    import bikemass.stability
-    from bikemass.stability import follow_modes
+    import bikemass.analysis.engine
+    from bikemass.analysis.engine.modes import follow_modes
     assert callable(bm.stability) and bm.stability.__module__ == "bikemass.dynamics"
     assert bm.parameters.__module__ == "bikemass.catalog" and callable(follow_modes)
 

@@ -6,7 +6,7 @@ import pytest
 
 from bikemass import catalog
 from bikemass.exporters import format_parameters
-from bikemass.stability.matrices import canonical_matrices
+from bikemass.models.canonical import canonical_matrices
 
 bp = pytest.importorskip("bicycleparameters")
 

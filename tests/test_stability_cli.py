@@ -9,7 +9,6 @@ import pytest
 
 from bikemass.cli import main
 from bikemass.paths import frames_dir
-from bikemass.stability import canonical_matrices, follow_modes, speed_grid
 from thesis_sets import RIDERS, thesis_set
 
 BENCHMARK = str(frames_dir() / "benchmark.yaml")

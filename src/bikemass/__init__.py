@@ -24,7 +24,7 @@ __version__ = "0.1.0"
 _API = {
     "load_bicycle": "catalog", "load_rider": "catalog", "parameters": "catalog", "stiffness": "catalog",
     "stability": "dynamics", "eigenvalues": "dynamics", "matrices": "dynamics", "speeds": "dynamics",
-    "StabilityResult": "dynamics",
+    "linear_model": "dynamics", "StabilityResult": "analysis.engine.stability", "LinearModel": "models.linear",
     "frame_modes": "frame", "frame_stiffness": "frame", "frame_structure": "frame",
     "pose_rider": "posing", "PosedRider": "posing", "seated_rider": "catalog",
     "plot_eigenvalues": "plots.stability", "plot_critical_speeds": "plots.critical_speeds",

@@ -102,7 +102,7 @@ def parse_speeds(text, max_speeds=None):
     """``"start:stop:step"`` -> speed grid (m/s); InputError if malformed or over ``max_speeds``."""
     from ..errors import InputError, short
     from ..options import MAX_SPEED, MAX_SPEEDS, MIN_SPEED_STEP
-    from ..stability import speed_grid
+    from ..analysis.engine.stability import speed_grid
 
     limit = max_speeds or MAX_SPEEDS
     expected = (f"START:STOP:STEP in m/s with 0 <= START < STOP <= {MAX_SPEED:g}, "

@@ -17,8 +17,8 @@ gravity; ``M``, ``C1`` and ``K2`` stay.
 
 import numpy as np
 
-from ..stability.flexible import static_stiffness
-from ..stability.matrices import canonical_matrices
+from .flexible_static import static_stiffness
+from .canonical import canonical_matrices
 from .linear import Signal, second_order_model
 
 ROLL_ANGLE = Signal("roll-angle", "rad", "roll angle of the rear frame, positive to the right")
@@ -40,7 +40,8 @@ def whipple_model(params, stiffness=None):
     Parameters
     ----------
     params : BenchmarkParameters
-        The 26 Meijaard et al. (2007) parameters (SI).
+        The 26 Meijaard et al. (2007) parameters (SI); any object with those attributes works, and
+        complex values give a complex model (the complex-step derivatives of the sensitivities).
     stiffness : array_like (2, 2) or None
         The rear frame's stiffness S (N m/rad, rows and columns roll and steer); ``None``: rigid.
 
@@ -52,7 +53,7 @@ def whipple_model(params, stiffness=None):
         with a stiffness.
     """
     m = canonical_matrices(params)
-    gK0 = static_stiffness(m.gK0, stiffness)
+    gK0 = static_stiffness(params.g * m.K0, stiffness)      # params.g, not m.g: it may be complex
     cl = np.cos(params.lam)
     heading = [np.array([0, 0, 0, params.c * cl / params.w, 0, 0]),
                np.array([0, cl / params.w, 0, 0, 0, 0])]

@@ -48,8 +48,9 @@ def _rider_of(chain, body_name, source):
 
 def _speeds(bike, rider, combine, method):
     from ..bicycle import bicycle_parameters
-    from ..stability import canonical_matrices, stability
-    result = stability(canonical_matrices(bicycle_parameters(bike, rider, combine, method)))
+    from ..analysis.engine.stability import analyse
+    from ..models.whipple import whipple_model
+    result = analyse(whipple_model(bicycle_parameters(bike, rider, combine, method)))
     return result.weave_speeds, result.capsize_speeds
 
 

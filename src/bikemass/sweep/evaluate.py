@@ -45,11 +45,11 @@ def _model(setup):
 def evaluate(model, changes, max_speed):
     """Result row (dict of :data:`OUTPUTS`) of one configuration; a configuration the model
     refuses gets its one-line reason in ``error`` and empty outputs."""
-    from ..analysis.crossings import critical_speeds
-    from ..analysis.model import system, values_of
+    from ..analysis.engine.critical import critical_speeds
+    from ..models.whipple import whipple_model
     try:
         p, S = model.build(changes)
-        found = critical_speeds(system(values_of(p), S), max_speed)
+        found = critical_speeds(whipple_model(p, S), max_speed)
     except (InputError, ValueError, np.linalg.LinAlgError) as exc:
         return {**{k: None for k in OUTPUTS}, "error": str(exc).replace("\n", " ")}
     values = (found.weave_speed, found.capsize_speed, found.stable_from, found.stable_to, p.mR + p.mB + p.mH + p.mF)

@@ -84,3 +84,24 @@ def axis_crossings(model, lo, hi):
     found = [(float(s), REAL, 0.0) for s in real if lo < s <= hi]
     found += [(float(s), OSCILLATORY, float(f)) for s, f in zip(osc, w) if lo < s <= hi]
     return sorted(found)
+
+
+def quartic(p, v):
+    """Coefficients ``(a4, a3, a2, a1, a0)`` of the characteristic quartic at speed ``v`` (m/s)."""
+    u = v * v
+    return (p["a4"], v * p["alpha"], p["a20"] + u * p["a21"], v * (p["beta"] + u * p["gamma"]),
+            p["d0"] + u * p["d1"] + u * u * p["d2"])
+
+
+def unstable_count(coefficients):
+    """Number of roots with Re > 0 of a real quartic (highest power first): sign changes in the
+    first column of the Routh array; ``np.roots`` where that column has a zero."""
+    a4, a3, a2, a1, a0 = coefficients
+    if a3 != 0:
+        b1 = (a3 * a2 - a4 * a1) / a3
+        if b1 != 0:
+            c1 = (b1 * a1 - a3 * a0) / b1
+            if c1 != 0 and a0 != 0:
+                column = np.sign([a4, a3, b1, c1, a0])
+                return int(np.sum(column[1:] != column[:-1]))
+    return int(np.sum(np.roots(coefficients).real > 0))

@@ -21,6 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
+from ...core.results import Result, quantity
 from .compound import additive_coefficients, multiplicative_coefficients
 from .polynomial import real_roots
 
@@ -39,8 +40,8 @@ MERGE_TOL = 1e-9
 """Candidates closer than this (m/s) are one crossing."""
 
 
-@dataclass(frozen=True)
-class Crossing:
+@dataclass(frozen=True, eq=False)
+class Crossing(Result):
     """One crossing of ``Re = 0`` by an eigenvalue of a model.
 
     Attributes
@@ -58,15 +59,11 @@ class Crossing:
         The tracked mode that crosses (``"weave 1"``, ``"capsize"``, ...), ``""`` if not tracked.
     """
 
-    speed: float
-    kind: str
-    direction: str
-    frequency: float
+    speed: float = quantity("m/s")
+    kind: str = ""
+    direction: str = ""
+    frequency: float = quantity("rad/s", default=0.0)
     mode: str = ""
-
-    def to_dict(self):
-        return {"speed": self.speed, "kind": self.kind, "direction": self.direction,
-                "frequency": self.frequency, "mode": self.mode}
 
 
 class Eigenvalues:

@@ -1,15 +1,15 @@
 """One call from a linear model to its modes, exact critical speeds and stable speed ranges."""
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from scipy.optimize import linear_sum_assignment
 
-from ...frozen import freeze
-from .crossings import OSCILLATORY, REAL, STABILISING, DESTABILISING, TOUCHING, Crossing, Eigenvalues
-from .crossings import axis_crossings, circle_speeds
-from . import closed_form
+from ...core.results import Result, quantity
+from ...frozen import freeze, short_repr
+from .critical import critical_speeds
+from .crossings import OSCILLATORY, REAL, Crossing, Eigenvalues, circle_speeds
 from .eigen import eigen_sweep
 from .modes import follow_modes
 from .naming import family
@@ -32,10 +32,11 @@ def speed_grid(start=DEFAULT_SPEEDS[0], stop=DEFAULT_SPEEDS[1], step=DEFAULT_SPE
 class _Tracked:
     """The root continuing each tracked mode at any speed inside the grid.
 
-    Inside a grid cell the modes are followed again on a fine sub-grid (:data:`SUBSTEPS` steps,
-    the same tracking as on the grid), so that roots that meet, split or trade places inside one
-    grid step are still told apart; at a speed between sub-grid points the root nearest the
-    straight line between the mode's two neighbouring values continues it.
+    Where the roots move by less than a quarter of their smallest distance across a grid cell,
+    the root nearest the straight line between the mode's values at the cell's ends continues it.
+    In any other cell (roots that meet, split or trade places inside one grid step) the modes are
+    followed again on a fine sub-grid of :data:`SUBSTEPS` steps (the same tracking as on the grid)
+    and the straight line is drawn between sub-grid points.
     """
 
     SUBSTEPS = 32
@@ -47,7 +48,12 @@ class _Tracked:
     def _cell(self, k):
         cell = self._cells.get(k)
         if cell is None:
-            s = self.modes.speeds
+            s, values = self.modes.speeds, self.modes.eigenvalues
+            ends = values[k:k + 2]
+            apart = np.where(np.eye(ends.shape[1], dtype=bool), np.inf, np.abs(ends[:, :, None] - ends[:, None, :]))
+            if np.max(np.abs(ends[1] - ends[0])) < 0.25 * np.min(apart):
+                cell = self._cells[k] = (s[k:k + 2], ends)
+                return cell
             sub = np.linspace(s[k], s[k + 1], self.SUBSTEPS + 1)
             sweep = eigen_sweep(self.model, sub)
             start = self.modes.eigenvalues[k]
@@ -90,22 +96,51 @@ def _named(tracked, speed, kind, frequency, labels):
 
 
 @dataclass(frozen=True, eq=False)
-class Stability:
-    """Modes, critical speeds (m/s) and stable speed ranges of one linear model.
+class StabilityResult(Result):
+    """Modes, critical speeds and stable speed ranges of one linear model (``bm.stability``).
 
-    ``crossings``: every :class:`~bikemass.analysis.engine.crossings.Crossing` of ``Re = 0`` on the
-    grid's span, by speed.  ``ranges[criterion]`` and ``mode_ranges[label][criterion]`` are
-    ``{"exact": ((start, stop), ...), "grid": (...)}`` with criterion ``"strict"`` or
-    ``"marginal"`` (an eigenvalue of modulus below ``marginal`` rad/s also counts).  Exact ends
-    are boundary speeds found without a grid; grid ends are the first and last stable grid speeds.
+    Attributes
+    ----------
+    model : LinearModel
+        The model analysed (``model.name``: ``"whipple"``, ``"whipple+flexible-static"``, ...).
+    modes : Modes
+        Eigenvalues (1/s) and eigenvectors over ``speeds`` (m/s), followed and named.
+    marginal : float
+        Modulus (rad/s) below which an unstable eigenvalue counts as marginally stable.
+    crossings : tuple of Crossing
+        Every crossing of ``Re = 0`` in the grid's span, by speed: exact, found without a grid.
+    ranges : mapping
+        ``{"strict"|"marginal": {"exact"|"grid": ((start, stop), ...)}}`` (m/s) where every mode
+        is stable; ``exact`` ends are boundary speeds, ``grid`` ends the first and last stable
+        grid speeds.
+    mode_ranges : mapping
+        ``{label: {criterion: {"exact"|"grid": ((start, stop), ...)}}}`` (m/s) of each mode.
+    stiffness : numpy.ndarray of shape (2, 2) or None
+        The rear frame's stiffness S (N m/rad) of a quasi-static flexible frame; ``None``: rigid.
     """
 
-    model: str
+    model: object
     modes: object
-    marginal: float
-    crossings: tuple
-    ranges: object
-    mode_ranges: object
+    marginal: float = quantity("rad/s")
+    crossings: tuple = ()
+    ranges: object = quantity("m/s", default=None)
+    mode_ranges: object = quantity("m/s", default=None)
+    stiffness: object = quantity("N m/rad", default=None)
+
+    @property
+    def speeds(self):
+        """Speeds (m/s), shape (n,)."""
+        return self.modes.speeds
+
+    @property
+    def eigenvalues(self):
+        """Eigenvalues (1/s), complex, shape (n, m); columns in :attr:`labels` order."""
+        return self.modes.eigenvalues
+
+    @property
+    def labels(self):
+        """Column labels of :attr:`eigenvalues` (weave 1, weave 2, capsize, caster, ...)."""
+        return self.modes.labels
 
     def speeds_of(self, kind, wobble=False):
         """Sorted speeds (m/s) of the crossings of ``kind``; oscillatory ones of the wobble family
@@ -128,6 +163,16 @@ class Stability:
         """Speeds (m/s) where the wobble pair crosses ``Re = 0``, ascending."""
         return self.speeds_of(OSCILLATORY, wobble=True)
 
+    @property
+    def caster_speeds(self):
+        """Speeds (m/s) where the root tracked as the caster mode crosses ``Re = 0``, ascending."""
+        return tuple(c.speed for c in self.mode_crossings("caster"))
+
+    @property
+    def stable_speeds(self):
+        """``((start, stop), ...)`` (m/s) where every mode is strictly stable (exact ends)."""
+        return self.ranges["strict"]["exact"]
+
     def mode_crossings(self, label):
         """The crossings of the tracked mode ``label`` (a pair's crossing counts for both members)."""
         return tuple(c for c in self.crossings if c.mode == label or c.mode == family(label) != label)
@@ -140,60 +185,55 @@ class Stability:
 
     def to_dict(self):
         """The ``bikemass stability --format json`` document (``modes`` adds ``weave``: both roots)."""
-        plain = lambda x: [list(r) for r in x]
+        plain = lambda x: [list(r) for r in x]      # noqa: E731
+        ranges = lambda r: {c: {k: plain(v) for k, v in byk.items()} for c, byk in r.items()}   # noqa: E731
         return {
-            "model": self.model,
+            "model": self.model.name,
             "weave_speeds": list(self.weave_speeds),
             "capsize_speeds": list(self.capsize_speeds),
             **({"wobble_speeds": list(self.wobble_speeds)} if self.wobble_speeds else {}),
             "crossings": [c.to_dict() for c in self.crossings],
             "marginal_threshold": self.marginal,
-            "ranges": {c: {k: plain(r) for k, r in v.items()} for c, v in self.ranges.items()},
-            "modes": {label: {c: {k: plain(r) for k, r in v.items()} for c, v in ranges.items()}
-                      for label, ranges in {"weave": self.weave_ranges, **self.mode_ranges}.items()},
+            "ranges": ranges(self.ranges),
+            "modes": {label: ranges(r) for label, r in {"weave": self.weave_ranges, **self.mode_ranges}.items()},
         }
 
+    def units(self):
+        """The ``units`` block of :meth:`to_dict`."""
+        return {"weave_speeds": "m/s", "capsize_speeds": "m/s", "wobble_speeds": "m/s", **Crossing.field_units(),
+                "marginal_threshold": "rad/s", "ranges": "m/s", "modes": "m/s"}
 
-def _directions(at, found, lo, hi):
-    """Each crossing's direction from the number of unstable roots on either side."""
-    speeds = sorted({s for s, _, _ in found})
-    ends = [lo, *speeds, hi]
-    count = {}
-    for a, b in zip(ends, ends[1:]):
-        count[(a, b)] = int(np.sum(at(0.5 * (a + b)).real > 0)) if b > a else None
-    out = []
-    for speed, kind, w in found:
-        k = speeds.index(speed)
-        before, after = count[(ends[k], speed)], count[(speed, ends[k + 2])]
-        if before is None or after is None or before == after:
-            out.append(TOUCHING)
-        else:
-            out.append(STABILISING if after < before else DESTABILISING)
-    return out
+    def __repr__(self):
+        v = self.speeds
+        fmt = lambda xs: "(" + ", ".join(f"{x:.4f}" for x in xs) + ")"    # noqa: E731
+        return short_repr(self, ("model", self.model.name), ("speeds", f"{v[0]:g}..{v[-1]:g} m/s x {len(v)}"),
+                          ("weave_speeds", fmt(self.weave_speeds)), ("capsize_speeds", fmt(self.capsize_speeds)),
+                          ("stable", "(" + ", ".join(f"{a:.4f}..{b:.4f}" for a, b in self.stable_speeds) + ")"))
 
 
-def analyse(model, speeds=None, marginal=MARGINAL_THRESHOLD):
+def analyse(model, speeds=None, marginal=MARGINAL_THRESHOLD, stiffness=None):
     """:class:`Stability` of a :class:`~bikemass.models.linear.LinearModel` over ``speeds`` (m/s;
-    default the thesis's 0..30 m/s grid in steps of 0.05 m/s); ``marginal`` in rad/s."""
+    default the thesis's 0..30 m/s grid in steps of 0.05 m/s); ``marginal`` in rad/s; ``stiffness`` the
+    quasi-static frame's S (N m/rad) the model was built with, kept in the result."""
     modes = follow_modes(model, speed_grid() if speeds is None else speeds)
     v = modes.speeds
     lo, hi = float(v[0]), float(v[-1])
     at = Eigenvalues(model)
     tracked = _Tracked(model, modes, at)
-    found = closed_form.axis_crossings(model, lo, hi) if closed_form.applies(model) else axis_crossings(model, lo, hi, at)
-    crossings = tuple(Crossing(s, kind, direction, w, _named(tracked, s, kind, w, modes.labels))
-                      for (s, kind, w), direction in zip(found, _directions(at, found, lo, hi)))
+    critical = critical_speeds(model, hi, lo)
+    crossings = tuple(replace(c, mode=_named(tracked, c.speed, c.kind, c.frequency, modes.labels))
+                      for c in critical.crossings)
     axis = [c.speed for c in crossings]
     limits = {"strict": None, "marginal": marginal}
     boundaries = {"strict": axis, "marginal": sorted([*axis, *circle_speeds(model, marginal, lo, hi, at)])}
     ranges, mode_ranges = {}, {label: {} for label in modes.labels}
     for criterion, r in limits.items():
-        ranges[criterion] = {
-            "exact": interval_ranges(lo, hi, boundaries[criterion], lambda x: bool(np.all(margin(at(x), r) < 0))),
-            "grid": grid_ranges(v, is_stable(modes.eigenvalues, r).all(axis=1))}
+        exact = (critical.stable if r is None else
+                 interval_ranges(lo, hi, boundaries[criterion], lambda x: bool(np.all(margin(at(x), r) < 0))))
+        ranges[criterion] = {"exact": exact, "grid": grid_ranges(v, is_stable(modes.eigenvalues, r).all(axis=1))}
         for c, label in enumerate(modes.labels):
             mode_ranges[label][criterion] = {
                 "exact": interval_ranges(lo, hi, boundaries[criterion],
                                          lambda x: bool(margin(tracked.root(x, c), r) < 0)),
                 "grid": grid_ranges(v, is_stable(modes.eigenvalues[:, c], r))}
-    return Stability(model.name, modes, float(marginal), crossings, freeze(ranges), freeze(mode_ranges))
+    return StabilityResult(model, modes, float(marginal), crossings, ranges, mode_ranges, stiffness)

@@ -8,13 +8,23 @@ assignment (``scipy.optimize.linear_sum_assignment``) on the cost::
 where ``MAC_ij = |x_i^H x_j|^2`` is the overlap of the unit state eigenvectors and ``scale_k`` the
 largest eigenvalue modulus at the two speeds (at least 1 1/s).  The distance separates roots far
 apart; the eigenvector term decides where roots cross (and, at ``v = 0``, between a root and its
-mirror ``-l``).  The costs are symmetric under complex conjugation, so the optimum keeps conjugate
-pairs together; the half-plane term breaks the one tie that symmetry leaves (a root of the upper
-half-plane continuing as its partner's image).  Where a pair splits into two real roots both
-partners continue equally well: naming settles which is which (:mod:`.naming`).
+mirror ``-l``).  Where a pair splits into two real roots both partners continue equally well:
+naming settles which is which (:mod:`.naming`).
+
+Roots of a real matrix move in complex-conjugate pairs: while a pair stays complex its members'
+images must be partners again; a pair may only split into two real roots, and real roots only
+merge with each other.  The costs are symmetric under conjugation, so the optimum mostly keeps
+pairs by itself, and the half-plane term stops a root from continuing as its partner's image.
+But where a pair passes close to a real root, the assignment that trades one member with the
+real root and the one that trades the other cost the same, and the solver may pick either.  Such
+a step is repaired exactly: the roots involved (the broken pairs, their images' partners, and so
+on until closed; a handful) are assigned again by trying every permutation of them, and the
+cheapest that breaks no pair wins.
 """
 
 import numpy as np
+from itertools import permutations
+
 from scipy.optimize import linear_sum_assignment
 
 HALF_PLANE_PENALTY = 10.0
@@ -32,15 +42,55 @@ def step_costs(values, vectors):
     return dist / scale + (1.0 - mac) + HALF_PLANE_PENALTY * flip
 
 
+def broken_pairs(step, before, after):
+    """Rows whose conjugate pair ``step`` breaks (``before``/``after``: partner indices at the two speeds)."""
+    return np.flatnonzero(_breaks(step[None], before[None], after[None])[0])
+
+
+def _breaks(steps, before, after):
+    """Boolean (k, m): row i's pair broken by ``steps[k]`` (all arrays stacked over k)."""
+    rows = np.arange(steps.shape[1])
+    k = np.arange(len(steps))[:, None]
+    partner_of_image = after[k, steps]
+    image_of_partner = steps[k, before]
+    return (before != rows) & (partner_of_image != steps) & (partner_of_image != image_of_partner)
+
+
+def _repaired(step, cost, before, after):
+    """``step`` with its broken pairs repaired by the cheapest valid permutation of the rows involved."""
+    rows = set(broken_pairs(step, before, after).tolist())
+    while True:                                   # close the set: partners, and rows onto images' partners
+        grown = set(rows)
+        for i in rows:
+            grown.add(int(before[i]))
+            grown.update(int(r) for r in np.flatnonzero(step == after[step[i]]))
+        if grown == rows:
+            break
+        rows = grown
+    rows = sorted(rows)
+    images = step[rows]
+    best, best_cost = step, np.inf
+    for q in permutations(images):
+        trial = step.copy()
+        trial[rows] = q
+        c = cost[np.arange(len(step)), trial].sum()
+        if c < best_cost and not len(broken_pairs(trial, before, after)):
+            best, best_cost = trial, c
+    return best
+
+
 def track(values, vectors):
     """Column order (n, m): ``order[k, i]`` is the column, at speed ``k``, of the root that starts
     as column ``i`` at the first speed."""
     costs = step_costs(values, vectors)
+    part = partners(values)
     n, m = values.shape
+    steps = np.array([linear_sum_assignment(c)[1] for c in costs], dtype=int).reshape(n - 1, m)
+    for k in np.flatnonzero(_breaks(steps, part[:-1], part[1:]).any(axis=1)):
+        steps[k] = _repaired(steps[k], costs[k], part[k], part[k + 1])
     order = np.empty((n, m), dtype=int)
     order[0] = np.arange(m)
-    for k, cost in enumerate(costs):
-        _, step = linear_sum_assignment(cost)       # row i (speed k) -> column step[i] (speed k + 1)
+    for k, step in enumerate(steps):              # row i (speed k) -> column step[i] (speed k + 1)
         order[k + 1] = step[order[k]]
     return order
 

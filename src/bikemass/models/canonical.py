@@ -79,4 +79,4 @@ def canonical_matrices(p):
                    [0.0, (SA + SF * sl) / p.w * cl]])
     C1 = np.array([[0.0, mu * ST + SF * cl + ITxz / p.w * cl - mu * mT * zT],
                    [-(mu * ST + SF * cl), IAlz / p.w * cl + mu * (SA + ITzz / p.w * cl)]])
-    return CanonicalMatrices(M=M, C1=C1, K0=K0, K2=K2, g=float(p.g))
+    return CanonicalMatrices(M=M, C1=C1, K0=K0, K2=K2, g=p.g)

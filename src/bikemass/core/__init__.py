@@ -1,0 +1,1 @@
+"""Plumbing: units, conventions, errors, YAML gate, output, paths, choices, progress, results."""
