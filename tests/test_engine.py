@@ -29,6 +29,9 @@ MEIJAARD = {   # Meijaard et al. 2007, Sec. 4 (K0 without g)
     "K2": [["0", "76.59734589573222"], ["0", "2.65431523794604"]],
 }
 PRINTED = {"weave": 4.29238253634111, "capsize": 6.02426201538837}   # their Sec. 4, 15 digits
+EXACT = {"weave": 4.2923825363411039587, "capsize": 6.0242620153883588899}
+"""From the exact parameters (lam = pi/10) through Meijaard's Appendix A and the characteristic
+polynomial, by mpmath at 50 digits (the printed 15-digit values are these rounded, +-1 in the last)."""
 
 
 def meijaard_speeds():
@@ -54,13 +57,17 @@ def test_benchmark_matches_meijaard_to_the_last_digit():
     weave, capsize = meijaard_speeds()
     assert weave == pytest.approx(PRINTED["weave"], abs=1e-13)     # the matrices are printed to 1e-14
     assert capsize == pytest.approx(PRINTED["capsize"], abs=1e-13)
+    assert EXACT["weave"] == pytest.approx(weave, abs=1e-13) and EXACT["capsize"] == pytest.approx(capsize, abs=1e-13)
     st = analyse(whipple_model(BENCHMARK))
     assert [c.kind for c in st.crossings] == ["oscillatory", "real"]
-    assert st.crossings[0].speed == pytest.approx(weave, abs=1e-12)
-    assert st.crossings[1].speed == pytest.approx(capsize, abs=1e-12)
+    assert st.crossings[0].speed == pytest.approx(EXACT["weave"], abs=1e-13)
+    assert st.crossings[1].speed == pytest.approx(EXACT["capsize"], abs=1e-13)
     assert [c.mode for c in st.crossings] == ["weave", "capsize"]
     assert [c.direction for c in st.crossings] == ["stabilising", "destabilising"]
-    assert st.ranges["strict"]["exact"] == ((pytest.approx(weave, abs=1e-12), pytest.approx(capsize, abs=1e-12)),)
+    assert st.ranges["strict"]["exact"] == ((pytest.approx(EXACT["weave"], abs=1e-13),
+                                             pytest.approx(EXACT["capsize"], abs=1e-13)),)
+    for speed, kind, _ in crossings.axis_crossings(whipple_model(BENCHMARK), 0.0, 30.0):    # the general path
+        assert speed == pytest.approx(EXACT["weave" if kind == "oscillatory" else "capsize"], abs=1e-13)
 
 
 def test_compounds_have_the_eigenvalue_sums_and_products():
