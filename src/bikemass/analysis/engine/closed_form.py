@@ -105,3 +105,59 @@ def unstable_count(coefficients):
                 column = np.sign([a4, a3, b1, c1, a0])
                 return int(np.sum(column[1:] != column[:-1]))
     return int(np.sum(np.roots(coefficients).real > 0))
+
+
+def unstable_counts(coefficients):
+    """Roots with Re > 0 (int array) of stacked real quartics ``coefficients`` (..., 5), highest power
+    first: the Routh array's first column, vectorised; LAPACK on the companion matrix where that
+    column has a zero or is not finite (a root on the axis, or a missing term)."""
+    c = np.asarray(coefficients, dtype=float)
+    a4, a3, a2, a1, a0 = np.moveaxis(c, -1, 0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        b1 = (a3 * a2 - a4 * a1) / a3
+        c1 = (b1 * a1 - a3 * a0) / b1
+    column = np.stack([a4, a3, b1, c1, a0], axis=-1)
+    count = np.sum(np.sign(column[..., 1:]) != np.sign(column[..., :-1]), axis=-1)
+    odd = ~np.all(np.isfinite(column) & (column != 0), axis=-1)
+    if np.any(odd):
+        rows = c[odd]
+        companion = np.zeros((len(rows), 4, 4))
+        companion[:, 0] = -rows[:, 1:] / rows[:, :1]
+        companion[:, 1:, :3] = np.eye(3)
+        count[odd] = np.sum(np.linalg.eigvals(companion).real > 0, axis=-1)
+    return count
+
+
+def batch_critical_speeds(p, vmax):
+    """First weave speed, first capsize speed and the first strictly stable range of stacked pieces
+    ``p`` (:func:`pieces` of (B,) configurations) on ``(0, vmax]`` m/s: a dict of (B,) float arrays
+    ``weave_speed``, ``capsize_speed``, ``stable_from``, ``stable_to`` (``nan`` where there is none).
+    One evaluation for the whole chunk: what a sweep's parameter-level chunk costs."""
+    real, osc, _ = candidates(p)
+    inside = lambda x: np.where((x > 0) & (x <= vmax), x, np.nan)     # noqa: E731
+    real, osc = inside(real), inside(osc)
+    with np.errstate(invalid="ignore"):
+        weave, capsize = np.nanmin(np.where(np.isnan(osc), np.inf, osc), axis=-1), \
+            np.nanmin(np.where(np.isnan(real), np.inf, real), axis=-1)
+    weave, capsize = np.where(np.isinf(weave), np.nan, weave), np.where(np.isinf(capsize), np.nan, capsize)
+    B = real.shape[0]
+    cuts = np.sort(np.concatenate([real, osc], axis=-1), axis=-1)             # nan last
+    ends = np.concatenate([np.zeros((B, 1)), np.where(np.isnan(cuts), vmax, cuts), np.full((B, 1), vmax)], axis=-1)
+    lo, hi = ends[:, :-1], ends[:, 1:]
+    mid = 0.5 * (lo + hi)
+    u = mid * mid
+    coefficients = np.stack([np.broadcast_to(p["a4"][:, None], mid.shape), mid * p["alpha"][:, None],
+                             p["a20"][:, None] + u * p["a21"][:, None],
+                             mid * (p["beta"][:, None] + u * p["gamma"][:, None]),
+                             p["d0"][:, None] + u * p["d1"][:, None] + u * u * p["d2"][:, None]], axis=-1)
+    stable = (unstable_counts(coefficients) == 0) & (hi > lo)
+    first = np.argmax(stable, axis=-1)
+    has = stable[np.arange(B), first]
+    start = np.where(has, lo[np.arange(B), first], np.nan)
+    # the run goes on while the next intervals are stable (or empty: a repeated cut)
+    run = stable | (hi <= lo)
+    after = np.arange(run.shape[1])[None, :] >= first[:, None]
+    stops = np.where(after & ~run, lo, np.inf)
+    stop = np.min(np.concatenate([stops, np.full((B, 1), vmax)], axis=-1), axis=-1)
+    return {"weave_speed": weave, "capsize_speed": capsize, "stable_from": start,
+            "stable_to": np.where(has, stop, np.nan)}

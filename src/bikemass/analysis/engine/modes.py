@@ -12,7 +12,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...frozen import readonly
+from ...core.results import Result, quantity
+from ...frozen import short_repr
 from .eigen import damping_ratio, eigen_sweep, natural_frequency
 from .naming import mode_names, settle_splits, split_rank, standstill_labels
 from .tracking import reorder, track
@@ -22,7 +23,7 @@ START_STEP = 0.05
 
 
 @dataclass(frozen=True, eq=False)
-class Modes:
+class Modes(Result):
     """Eigenvalues (n, m) [1/s] and unit state eigenvectors (n, N, m) of named modes.
 
     Column ``i`` of ``eigenvalues`` (and ``eigenvectors[:, :, i]``) is mode ``labels[i]`` at every
@@ -30,14 +31,10 @@ class Modes:
     are read-only.
     """
 
-    speeds: np.ndarray
-    labels: tuple
-    eigenvalues: np.ndarray
-    eigenvectors: np.ndarray
-
-    def __post_init__(self):
-        for name in ("speeds", "eigenvalues", "eigenvectors"):
-            object.__setattr__(self, name, readonly(getattr(self, name)))
+    speeds: np.ndarray = quantity("m/s")
+    labels: tuple = ()
+    eigenvalues: np.ndarray = quantity("1/s (pairs: real, imaginary)", default=None)
+    eigenvectors: np.ndarray = quantity("", default=None)
 
     def __getitem__(self, label):
         """Eigenvalues (n,) of mode ``label``."""
@@ -58,6 +55,14 @@ class Modes:
         while the weave roots are a pair, ``weave, real (upper|lower)`` when they are real,
         ``capsize``, ``caster``, ... (:func:`~bikemass.analysis.engine.naming.mode_names`)."""
         return mode_names(self.eigenvalues, self.labels)
+
+    def units(self):
+        """The ``units`` block of :meth:`to_dict`."""
+        return {"speeds": "m/s", "eigenvalues": self.field_units()["eigenvalues"]}
+
+    def __repr__(self):
+        v = self.speeds
+        return short_repr(self, ("speeds", f"{v[0]:g}..{v[-1]:g} m/s x {len(v)}"), ("labels", self.labels))
 
     def to_dict(self):
         """``{"speeds": [...], "modes": [{"label", "eigenvalues": [[re, im], ...]}, ...]}``."""
