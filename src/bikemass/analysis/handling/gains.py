@@ -4,6 +4,8 @@ published tables are written (Moore's HumanControl ``gains/*SteerGains.txt``)::
     speed,kDelta,kPhiDot,kPhi,kPsi,kY
     5.000,46.5457,-0.0522,12.6611,0.1849,0.0959
 
+(further columns after the six, as ``bikemass handling --format csv`` writes, are ignored).
+
 Units follow from the loops (:mod:`~bikemass.analysis.handling.rider`): ``k_delta`` N m/rad
 (steer angle error -> neuromuscular command), ``k_phi_dot`` s (roll-rate error, rad/s -> steer
 command, rad), ``k_phi`` 1/s (roll error -> roll-rate command), ``k_psi`` rad/rad (heading error
@@ -70,19 +72,20 @@ def parse_gain_table(text, source):
     speeds increasing); InputError naming the line otherwise."""
     rows = list(csv.reader(io.StringIO(text)))
     rows = [(n, [cell.strip() for cell in row]) for n, row in enumerate(rows, 1) if any(c.strip() for c in row)]
-    if not rows or tuple(rows[0][1]) != HEADER:
+    if not rows or tuple(rows[0][1][:len(HEADER)]) != HEADER:
         raise InputError(source, "line 1", f"the header {','.join(HEADER)}"
                          + (f", got {short(','.join(rows[0][1]))}" if rows else ", got an empty file"))
     if len(rows) > MAX_ROWS + 1:
         raise InputError(source, "(file)", f"at most {MAX_ROWS} rows of gains")
     table = {}
     for n, row in rows[1:]:
-        if len(row) != len(HEADER):
-            raise InputError(source, f"line {n}", f"{len(HEADER)} numbers ({','.join(HEADER)}), got {len(row)}")
+        if len(row) != len(rows[0][1]):
+            raise InputError(source, f"line {n}", f"{len(rows[0][1])} cells as the header, got {len(row)}")
         try:
-            speed, *values = (float(cell) for cell in row)
+            speed, *values = (float(cell) for cell in row[:len(HEADER)])
         except ValueError:
-            raise InputError(source, f"line {n}", f"numbers, got {short(','.join(row))}") from None
+            raise InputError(source, f"line {n}", f"six numbers {','.join(HEADER)}, got "
+                             f"{short(','.join(row[:len(HEADER)]))}") from None
         if not (math.isfinite(speed) and speed >= 0):
             raise InputError(source, f"line {n} (speed)", f"a speed in m/s, finite and >= 0, got {short(row[0])}")
         if table and speed <= max(table):

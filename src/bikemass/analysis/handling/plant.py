@@ -14,6 +14,7 @@ import numbers
 
 import numpy as np
 
+from ...choices import closest
 from ...errors import InputError, short, wrong_type
 from ...models.linear import LinearModel
 
@@ -62,7 +63,8 @@ def check_speed(speed, what="speed"):
 def input_index(model, name):
     """Position of the input ``name`` of ``model``; InputError naming the inputs otherwise."""
     if not isinstance(name, str) or name not in model.input_names:
-        raise InputError("input", short(name), f"one of {', '.join(model.input_names)}")
+        raise InputError("input", short(name), f"one of {', '.join(model.input_names)}"
+                         f"{closest(name, model.input_names)}")
     return model.input_names.index(name)
 
 
@@ -70,7 +72,8 @@ def output_row(model, name):
     """The row (N,) giving the output ``name`` (a state or a further output) from the states;
     InputError naming the outputs otherwise."""
     if not isinstance(name, str) or name not in model.output_names:
-        raise InputError("output", short(name), f"one of {', '.join(model.output_names)}")
+        raise InputError("output", short(name), f"one of {', '.join(model.output_names)}"
+                         f"{closest(name, model.output_names)}")
     return model.output_matrix([name])[0]
 
 

@@ -199,7 +199,7 @@ def handling(system, speeds=None, gains=None, stiffness=None):
             try:
                 g = tune_gains(plant)
             except GainsNotFound as exc:
-                warnings.warn(f"{exc}: no gains, handling left out at {speed:g} m/s", BikemassWarning, stacklevel=2)
+                warnings.warn(f"{exc}; that speed is left out", BikemassWarning, stacklevel=2)
         rows.append(_at_speed(plant, g))
     return HandlingResult(v, tuple(r[0] for r in rows), tuple("given" if g is not None else "tuned" for g in chosen),
                           np.array([r[1] for r in rows], bool), np.array([r[2] for r in rows]),

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ...choices import closest
 from ...errors import InputError, short, wrong_type
 from ...frozen import FrozenMap, readonly, short_repr
 from .discrete import march
@@ -46,7 +47,8 @@ def initial_state(model, initial):
         raise wrong_type("initial", initial, "initial conditions are a mapping {state name: value}")
     for name, value in initial.items():
         if name not in model.state_names:
-            raise InputError("initial", short(name), f"a state of the model: {', '.join(model.state_names)}")
+            raise InputError("initial", short(name), f"a state of the model: {', '.join(model.state_names)}"
+                             f"{closest(name, model.state_names)}")
         x0[model.state_index(name)] = _number(value, "initial", name)
     return x0
 
