@@ -193,3 +193,42 @@ def plot_lane_change(runs, title="", size=None):
     angles.legend(fontsize="x-small", ncol=2)
     lateral.set_title(title or "lane change with the rider in the loop")
     return fig
+
+
+def plot_handling_by_rider(results, title="", size=None, stable_speeds=None):
+    """Figure: the HQM peak against speed of several riders (or configurations) of one bicycle,
+    over the handling-quality Levels, and beneath it each one's self-stable speeds as a bar.
+
+    ``results``: ``{name: HandlingResult}``; ``stable_speeds``: ``{name: ((start, stop), ...)}``
+    (m/s).  Points where the closed loop is unstable or no gains were found are left out.
+    """
+    from ..analysis.handling.survey import HandlingResult
+    if not isinstance(results, dict) or not results or not all(isinstance(r, HandlingResult) for r in results.values()):
+        raise wrong_type("results", results, "a mapping {name: HandlingResult}")
+    stable_speeds = stable_speeds or {}
+    fig = new_figure(size or (7.0, 5.6))
+    peaks, bars = fig.subplots(2, 1, sharex=True, height_ratios=(3, 1))
+    finite = [r.hqm_peak[r.closed_loop_stable] for r in results.values()]
+    top = max([float(f.max()) for f in finite if f.size], default=10.0)
+    top = min(max(1.1 * top, 9.0), 40.0)
+    _level_bands(peaks, top)
+    for k, (name, r) in enumerate(results.items()):
+        shown = np.where(r.closed_loop_stable, r.hqm_peak, np.nan)
+        peaks.plot(r.speeds, shown, "o-", ms=3, color=f"C{k}", label=name)
+        for start, stop in stable_speeds.get(name, ()):
+            bars.plot([start, stop], [k, k], color=f"C{k}", lw=6, solid_capstyle="butt")
+    if not any(np.isfinite(np.where(r.closed_loop_stable, r.hqm_peak, np.nan)).any() for r in results.values()):
+        peaks.text(0.5, 0.5, "no gains close the loop stably", transform=peaks.transAxes, ha="center",
+                   va="center", color="0.3")
+    peaks.set_ylim(0, top)
+    peaks.set_ylabel("HQM peak")
+    peaks.legend(fontsize="x-small", loc="upper right")
+    bars.set_yticks(range(len(results)), list(results), fontsize="x-small")
+    bars.set_ylim(-0.7, len(results) - 0.3)
+    bars.invert_yaxis()
+    bars.set_xlabel("speed, m/s")
+    bars.set_title("self-stable speeds (no rider control)", fontsize="small")
+    for ax in (peaks, bars):
+        ax.grid(True, axis="x", alpha=0.3)
+    peaks.set_title(title or "handling quality against speed", fontsize="medium")
+    return fig

@@ -14,9 +14,11 @@ open:
    finds them, on its grid of 1000 frequencies from 0.01 to 100 rad/s
    (:func:`peak_to_valley`).  Where HumanControl starts its root finder from the published gains,
    bikemass scans the gain (``k_delta > 0``, ``k_phidot < 0``: Moore 2012, the roll-rate
-   feedback is positive) and takes, of the gains where the ratio rises through 10 dB, the one
-   whose peak lies at the highest frequency: the neuromuscular peak, not the weave's (at low
-   speeds the weave makes a 10 dB peak of its own near 2 rad/s at small ``k_delta``).
+   feedback is positive) and, of the gains where the ratio passes 10 dB, keeps those whose peak
+   belongs to a stable pole pair (past the gain where the loop's resonance turns unstable the
+   ratio falls through 10 dB again) and takes the one whose peak lies nearest 10 rad/s (Moore
+   2012's design requirement 3): the neuromuscular peak, not the weave's (at low speeds the
+   weave makes a 10 dB peak of its own near 2 rad/s at small ``k_delta``).
 2. ``k_phi``, ``k_psi``, ``k_y``: the open roll, heading and lateral loops cross over at 2, 1 and
    0.5 rad/s: ``k = 1 / |G_o(j w_c)|`` with that loop's gain 1 (Moore 2012, Eqs. ``eqKPhi``,
    ``eqKPsi``, ``eqKYq``).  HumanControl interpolates ``|G_o|`` linearly on 1000 frequencies
@@ -49,6 +51,9 @@ SCANS = ((0.5, 5e3, 1.0), (1e-4, 10.0, -1.0))
 SCAN_FACTOR = 1.25
 """Ratio of consecutive gains of the scan (the neuromuscular root and the next root of the same
 loop, where that loop's closure turns unstable and back, lie a factor of about 3 apart)."""
+NEUROMUSCULAR_TARGET = 10.0
+"""Where the closed inner loops' neuromuscular peak should lie (rad/s): Moore 2012, design
+requirement 3 ("a natural frequency around 10 rad/s", typical of laboratory tracking tasks)."""
 
 
 class GainsNotFound(ValueError):
@@ -85,24 +90,45 @@ def closed_magnitude(plant, gains, loop):
     return np.abs(response(A[np.ix_(keep, keep)], b[keep], c[keep], PEAK_FREQUENCIES))
 
 
+def resonance_is_stable(plant, gains, loop, frequency):
+    """Whether the closed-loop pole that makes the peak at ``frequency`` (rad/s; the pole of
+    positive imaginary part nearest ``j frequency``) has a negative real part: a peak of an
+    unstable loop is no resonance."""
+    A, b, c = loop_system(plant, gains, loop, (True,) * (loop + 1))
+    poles = np.linalg.eigvals(A)
+    upper = poles[poles.imag > 0]
+    if not upper.size:
+        return False
+    return bool(upper[np.argmin(np.abs(upper - 1j * frequency))].real < 0)
+
+
 def inner_gain(plant, gains, loop):
-    """``k_delta`` (``loop`` 0) or ``k_phidot`` (1) with the inner ``gains`` set: the 10 dB peak."""
+    """``k_delta`` (``loop`` 0) or ``k_phidot`` (1) with the inner ``gains`` set: the 10 dB peak.
+
+    Every gain of the scan where the peak-to-valley ratio passes 10 dB (either way) is a
+    candidate, refined to its root.  Candidates whose peak belongs to a stable pole pair come
+    first (where there are any), and of those the one whose peak lies nearest
+    :data:`NEUROMUSCULAR_TARGET` (on a log scale) is taken.
+    """
     low, high, sign = SCANS[loop]
     target = 10 ** (PEAK_DB / 20)
 
     def excess(size):
         magnitude = closed_magnitude(plant, (*gains, sign * size), loop)
-        return peak_to_valley(magnitude, loop) - target, PEAK_FREQUENCIES[int(np.argmax(magnitude))]
+        return peak_to_valley(magnitude, loop) - target
 
     sizes = np.geomspace(low, high, int(np.ceil(np.log(high / low) / np.log(SCAN_FACTOR))) + 1)
-    values = [excess(k) for k in sizes]
-    rises = [(values[i + 1][1], i) for i in range(len(sizes) - 1) if values[i][0] < 0 <= values[i + 1][0]]
-    if not rises:
+    values = np.array([excess(k) for k in sizes])
+    found = []
+    for i in np.nonzero(np.sign(values[:-1]) != np.sign(values[1:]))[0]:
+        size = scipy.optimize.brentq(excess, sizes[i], sizes[i + 1], xtol=1e-12, rtol=1e-13)
+        k = (*gains, sign * size)
+        peak = PEAK_FREQUENCIES[int(np.argmax(closed_magnitude(plant, k, loop)))]
+        found.append((not resonance_is_stable(plant, k, loop, peak), abs(np.log(peak / NEUROMUSCULAR_TARGET)), size))
+    if not found:
         raise GainsNotFound(f"no {('k_delta', 'k_phi_dot')[loop]} gives the {PEAK_DB:g} dB neuromuscular peak "
                             f"at {plant.speed:g} m/s")
-    _, i = max(rises)
-    size = scipy.optimize.brentq(lambda k: excess(k)[0], sizes[i], sizes[i + 1], xtol=1e-12, rtol=1e-13)
-    return sign * size
+    return sign * min(found)[2]
 
 
 def crossover_gain(plant, gains, loop, frequency):
