@@ -22,7 +22,6 @@ import numpy as np
 import pytest
 
 import bikemass as bm
-from bikemass.analysis.handling.gains import read_gain_table
 from bikemass.analysis.handling.rider import loop_system, rider_plant
 from bikemass.analysis.handling.transfer import zeros_poles_gain
 from bikemass.analysis.handling.tuning import crossover_gain

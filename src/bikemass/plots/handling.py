@@ -4,6 +4,12 @@ new :class:`matplotlib.figure.Figure` (no pyplot)."""
 
 import numpy as np
 
+from ..analysis.handling.frequency import FrequencyResponse
+from ..analysis.handling.lane_change import LaneChange
+from ..analysis.handling.mode_shapes import ModeShapes
+from ..analysis.handling.quality import LEVEL_BOUNDS
+from ..analysis.handling.survey import HandlingResult
+from ..analysis.handling.time_response import TimeResponse
 from ..errors import wrong_type
 from .figure import new_figure
 
@@ -29,7 +35,6 @@ def plot_bode(responses, title="", size=None):
     ``responses``: a :class:`~bikemass.analysis.handling.frequency.FrequencyResponse` or a list of
     them (one curve each, labelled by speed).
     """
-    from ..analysis.handling.frequency import FrequencyResponse
     items = _many(responses, FrequencyResponse, "a FrequencyResponse (bm.frequency_response) or a list of them")
     fig = new_figure(size or BODE_SIZE)
     mag, phase = fig.subplots(2, 1, sharex=True)
@@ -52,7 +57,6 @@ def plot_bode(responses, title="", size=None):
 def plot_time_response(response, title="", size=None):
     """Figure: every state of a :class:`~bikemass.analysis.handling.time_response.TimeResponse`
     against time (s), one panel per unit (angles, rates, lengths)."""
-    from ..analysis.handling.time_response import TimeResponse
     if not isinstance(response, TimeResponse):
         raise wrong_type("response", response, "a TimeResponse (bm.simulate)")
     units = list(dict.fromkeys(response.units))
@@ -85,7 +89,6 @@ def plot_mode_shapes(shapes, title="", size=None):
     :class:`~bikemass.analysis.handling.mode_shapes.ModeShapes` (a conjugate pair once), each
     mechanical coordinate (roll, steer, ...) an arrow of its amplitude and phase relative to the
     mode's largest one (the heading and lateral position are in the table, ``shapes.to_dict()``)."""
-    from ..analysis.handling.mode_shapes import ModeShapes
     if not isinstance(shapes, ModeShapes):
         raise wrong_type("shapes", shapes, "ModeShapes (bm.mode_shapes)")
     modes = _shown_modes(shapes)
@@ -111,7 +114,6 @@ def plot_mode_shapes(shapes, title="", size=None):
 
 
 def _level_bands(ax, top):
-    from ..analysis.handling.quality import LEVEL_BOUNDS
     edges = (0.0, *LEVEL_BOUNDS, max(top, LEVEL_BOUNDS[-1] * 1.25))
     for k, colour in enumerate(LEVEL_COLOURS):
         ax.axhspan(edges[k], edges[k + 1], color=colour, zorder=0)
@@ -126,7 +128,6 @@ def plot_handling(result, title="", size=None, stable_speeds=()):
     ``stable_speeds``: ``((start, stop), ...)`` (m/s) where the bicycle without rider is
     self-stable, shaded on the right.
     """
-    from ..analysis.handling.survey import HandlingResult
     if not isinstance(result, HandlingResult):
         raise wrong_type("result", result, "a HandlingResult (bm.handling)")
     fig = new_figure(size or HANDLING_SIZE)
@@ -168,7 +169,6 @@ def plot_lane_change(runs, title="", size=None):
     rider's steer torque (N m) against the distance along the road (m; the front contact's, the
     lane change starting at 35 m), one line per
     :class:`~bikemass.analysis.handling.lane_change.LaneChange` of ``runs``."""
-    from ..analysis.handling.lane_change import LaneChange
     items = _many(runs, LaneChange, "a LaneChange (bm.lane_change) or a list of them")
     fig = new_figure(size or LANE_SIZE)
     lateral, angles, torque = fig.subplots(3, 1, sharex=True)
@@ -202,7 +202,6 @@ def plot_handling_by_rider(results, title="", size=None, stable_speeds=None):
     ``results``: ``{name: HandlingResult}``; ``stable_speeds``: ``{name: ((start, stop), ...)}``
     (m/s).  Points where the closed loop is unstable or no gains were found are left out.
     """
-    from ..analysis.handling.survey import HandlingResult
     if not isinstance(results, dict) or not results or not all(isinstance(r, HandlingResult) for r in results.values()):
         raise wrong_type("results", results, "a mapping {name: HandlingResult}")
     stable_speeds = stable_speeds or {}

@@ -8,9 +8,13 @@ from the published procedure at each speed (:func:`bikemass.handling`): the peak
 quality metric against speed, beside the position's self-stable speeds (corrected run, exact).
 """
 
+import warnings
+
 import numpy as np
 
 from ..analysis.handling.quality import LEVEL_BOUNDS
+from ..analysis.handling.survey import handling
+from ..errors import BikemassWarning
 from .configurations import RIDERS, THESIS_NAMES, Configuration
 from .runs import CORRECTED
 from .tables import Table
@@ -25,10 +29,6 @@ SHOWN = (3.0, 4.0, 5.0, 6.0, 8.0, 10.0)
 
 def handling_results(inputs):
     """``{bike: {rider: HandlingResult}}`` of the five rider positions, rigid frame (corrected run)."""
-    import warnings
-
-    from ..analysis.handling.survey import handling
-    from ..errors import BikemassWarning
     out = {}
     for bike in BICYCLES:
         for rider in RIDERS[1:]:

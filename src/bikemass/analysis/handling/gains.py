@@ -19,6 +19,7 @@ import os
 from dataclasses import astuple, dataclass, fields
 
 from ...errors import InputError, short
+from ...gate import read_text
 
 HEADER = ("speed", "kDelta", "kPhiDot", "kPhi", "kPsi", "kY")
 """The header of a gains file."""
@@ -99,12 +100,5 @@ def parse_gain_table(text, source):
 
 def read_gain_table(path):
     """``{speed (m/s): Gains}`` of the gains file ``path``; InputError for a missing or bad file."""
-    from ...gate import read_text
     return parse_gain_table(read_text(os.fspath(path)), os.fspath(path))
 
-
-def gain_table_text(speeds, gains):
-    """A gains file (:data:`HEADER`) of ``speeds`` (m/s) and their :class:`Gains`, every digit."""
-    lines = [",".join(HEADER)]
-    lines += [",".join(repr(float(x)) for x in (v, *g)) for v, g in zip(speeds, gains)]
-    return "\n".join(lines) + "\n"

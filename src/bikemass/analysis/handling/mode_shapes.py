@@ -89,18 +89,6 @@ class ModeShapes:
         """Phase (m, k) in degrees in (-180, 180], relative to each mode's reference coordinate."""
         return readonly(np.degrees(np.angle(self.shapes)) + 0.0)
 
-    @property
-    def natural_frequency(self):
-        """``|l|`` (rad/s), (m,)."""
-        return readonly(np.abs(self.eigenvalues))
-
-    @property
-    def damping_ratio(self):
-        """``-Re(l) / |l|`` (m,); ``nan`` for ``l = 0``."""
-        mag = np.abs(self.eigenvalues)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            return readonly(np.where(mag > 0, -self.eigenvalues.real / mag, np.nan))
-
     def shape(self, label):
         """``{coordinate: (amplitude, phase in deg)}`` of the mode ``label``."""
         i = self.labels.index(label)

@@ -16,7 +16,10 @@ import numpy as np
 
 from ...choices import closest
 from ...errors import InputError, short, wrong_type
+from ...dynamics import matrices
 from ...models.linear import LinearModel
+from ...models.whipple import whipple_model
+from ...parameters import BenchmarkParameters
 
 MAX_SPEED = 1000.0
 """Highest forward speed (m/s) an analysis accepts (as the speed grids of ``bikemass stability``)."""
@@ -37,15 +40,12 @@ def linear_model(system, stiffness=None):
     -------
     LinearModel
     """
-    from ...parameters import BenchmarkParameters
     if isinstance(system, LinearModel):
         if stiffness is not None:
             raise InputError("stiffness", "(argument)", "a LinearModel carries its own frame: give the "
                              "stiffness to the model's builder (whipple_model(params, stiffness))")
         return system
     if isinstance(system, BenchmarkParameters):
-        from ...dynamics import matrices
-        from ...models.whipple import whipple_model
         matrices(system, stiffness)                       # checks the parameters and S (InputError)
         S = None if stiffness is None else np.asarray(stiffness, dtype=float)
         return whipple_model(system, S)

@@ -44,8 +44,6 @@ LATERAL_FED_BACK = ("front-lateral", "lateral")
 """The outermost loop's signal: the front contact's lateral position (Moore 2012: ``y_q``), or
 the rear contact's where a model does not name the front contact."""
 
-LOOP_NAMES = ("steer angle", "roll rate", "roll angle", "heading", "lateral position")
-
 
 @dataclass(frozen=True, eq=False)
 class RiderPlant:

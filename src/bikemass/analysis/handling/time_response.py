@@ -22,9 +22,6 @@ from .plant import check_speed, input_index, linear_model
 KINDS = ("step", "impulse")
 """How an input is applied."""
 
-KIND_UNITS = {"step": "", "impulse": " s"}
-"""What a size is in, after the input's own unit: a step in N m, an impulse in N m s."""
-
 MAX_SAMPLES = 1_000_000
 """Most time samples of one response."""
 
