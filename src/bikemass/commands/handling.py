@@ -193,14 +193,14 @@ def tf_text(tf, title):
 def _frequencies(text):
     from ..analysis.handling.frequency import log_frequencies
     from ..errors import InputError
-    expected = "START:STOP:N in rad/s with 0 < START < STOP and N >= 2 points (logarithmic)"
+    expected = "START:STOP:N in rad/s with START < STOP and N >= 2 points (logarithmic)"
     try:
         start, stop, count = text.split(":")
         return log_frequencies(float(start), float(stop), int(count))
-    except ValueError:
-        raise InputError("--frequencies", text, expected) from None
     except InputError as exc:
         raise InputError("--frequencies", text, exc.expected) from None
+    except ValueError:
+        raise InputError("--frequencies", text, expected) from None
 
 
 def run_bode(args):
@@ -336,13 +336,18 @@ def _speeds(text):
     """``--speeds`` of handling: comma-separated speeds (m/s), an item ``START:STOP:STEP`` a grid."""
     import numpy as np
 
+    from ..analysis.handling.survey import MAX_SURVEY_SPEEDS
     from ..errors import InputError
     expected = "comma-separated speeds in m/s (an item START:STOP:STEP is a grid), increasing"
     values = []
     for item in text.split(","):
         item = item.strip()
         if ":" in item:
-            values.extend(dialect.parse_speeds(item, 10_000).tolist())
+            try:
+                values.extend(dialect.parse_speeds(item, MAX_SURVEY_SPEEDS).tolist())
+            except InputError:
+                raise InputError("--speeds", text, f"{expected}; a grid START:STOP:STEP of at most "
+                                 f"{MAX_SURVEY_SPEEDS} speeds") from None
             continue
         try:
             values.append(float(item))

@@ -17,6 +17,9 @@ from .plant import linear_model, signal_unit, siso
 
 MAX_FREQUENCIES = 1_000_000
 """Most frequencies of one response."""
+FREQUENCY_RANGE = (1e-9, 1e9)
+"""Angular frequencies (rad/s) a response is computed at (beyond, a bicycle's response is only
+its asymptotes, and floating point overflows)."""
 
 
 def response(A, b, c, frequencies):
@@ -41,7 +44,7 @@ def response(A, b, c, frequencies):
     s = 1j * np.asarray(frequencies, dtype=float)
     n = len(A)
     x = np.zeros((n, s.size), dtype=complex)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         for i in range(n - 1, -1, -1):        # element-wise sums: no BLAS call (its threads only spin here)
             x[i] = (y[i] + (T[i, i + 1:, None] * x[i + 1:]).sum(axis=0)) / (s - T[i, i])
     return (row[:, None] * x).sum(axis=0)
@@ -62,10 +65,11 @@ def log_frequencies(start, stop, count):
     """``count`` angular frequencies (rad/s) spaced logarithmically from ``start`` to ``stop``;
     InputError unless ``0 < start < stop`` and ``2 <= count <=`` :data:`MAX_FREQUENCIES`."""
     values = (start, stop, count)
+    low, high = FREQUENCY_RANGE
     if not all(isinstance(x, (int, float)) and not isinstance(x, bool) and np.isfinite(x) for x in values) \
-            or not (0 < start < stop) or int(count) != count or not 2 <= count <= MAX_FREQUENCIES:
-        raise InputError("frequencies", short(values), "START:STOP:N in rad/s with 0 < START < STOP and "
-                         f"2 <= N <= {MAX_FREQUENCIES} points (spaced logarithmically)")
+            or not (low <= start < stop <= high) or int(count) != count or not 2 <= count <= MAX_FREQUENCIES:
+        raise InputError("frequencies", short(values), f"START:STOP:N in rad/s with {low:g} <= START < STOP <= "
+                         f"{high:g} and 2 <= N <= {MAX_FREQUENCIES} points (spaced logarithmically)")
     return np.geomspace(start, stop, int(count))
 
 
@@ -76,9 +80,10 @@ def check_frequencies(frequencies):
         w = np.atleast_1d(np.asarray(frequencies, dtype=float))
     except (TypeError, ValueError):
         raise InputError("frequencies", short(frequencies), "angular frequencies in rad/s: numbers") from None
-    if w.ndim != 1 or not 1 <= w.size <= MAX_FREQUENCIES or not np.all(np.isfinite(w)) or w[0] <= 0 \
-            or np.any(np.diff(w) <= 0):
-        raise InputError("frequencies", short(frequencies), "angular frequencies in rad/s: finite, > 0, "
+    low, high = FREQUENCY_RANGE
+    if w.ndim != 1 or not 1 <= w.size <= MAX_FREQUENCIES or not np.all(np.isfinite(w)) or w[0] < low \
+            or w[-1] > high or np.any(np.diff(w) <= 0):
+        raise InputError("frequencies", short(frequencies), f"angular frequencies in rad/s: in {low:g}..{high:g}, "
                          f"increasing, at most {MAX_FREQUENCIES}")
     return w
 
