@@ -9,7 +9,7 @@ from bikemass.bicycle import bicycle_parameters
 from bikemass.analysis.engine.stability import analyse
 from bikemass.models.whipple import whipple_model
 from bikemass.study import figures
-from bikemass.study.configurations import Configuration, configurations
+from bikemass.study.configurations import RIDERS, Configuration, configurations
 from bikemass.study.explain import PrintedInputs, half_unit_of_stiffness, with_rider
 from bikemass.study.runs import CORRECTED, THESIS, Inputs, evaluate
 
@@ -95,8 +95,9 @@ def test_figure_count_matches_the_jobs(tmp_path, inputs):
     from types import SimpleNamespace
 
     from bikemass.study.pipeline import figure_jobs
-    empty = {"grid": {"strict": {"overall": []}, "marginal": {"overall": []}}}
+    empty = {kind: {"strict": {"overall": []}, "marginal": {"overall": []}} for kind in ("grid", "exact")}
     run = {c: SimpleNamespace(modes=None, ranges=empty, weave_speeds=None) for c in configurations()}
-    jobs = figure_jobs(SimpleNamespace(runs={"thesis": run, "corrected": run}), inputs, tmp_path)
-    assert len(jobs) == figures.figure_count() == 2 * 3 + 73 + 5
+    handling = {bike: {rider: None for rider in RIDERS[1:]} for bike in ("jamis", "cargo")}
+    jobs = figure_jobs(SimpleNamespace(runs={"thesis": run, "corrected": run}, handling=handling), inputs, tmp_path)
+    assert len(jobs) == figures.figure_count() == 2 * 3 + 73 + 5 + 2
     assert len({figures.job_path(job) for job in jobs}) == len(jobs)          # every figure has its own file

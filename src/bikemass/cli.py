@@ -20,6 +20,7 @@ COMMAND_MODULES = (
     "study",
     "serve",
     "analysis",
+    "handling",
 )
 """Modules under ``bikemass.commands`` whose ``register(subparsers)`` adds sub-commands."""
 

@@ -23,6 +23,8 @@ UPLOAD_SUFFIXES = (".yaml", ".yml", ".json", ".txt")
 """Uploads: bicycle YAML/JSON (keypoints, chart or parameters) or a BicycleParameters text file."""
 UPLOAD_PREFIX = "upload-"
 """Bicycle names that refer to an uploaded file: ``upload-<digest>``."""
+HANDLING_SPEEDS = (3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 10.0)
+"""Speeds (m/s) of the page's rider in the loop (a tuning costs about 0.2 s per speed)."""
 
 
 @dataclass(frozen=True)
@@ -45,6 +47,7 @@ class Engine:
         self.seated = lru_cache(maxsize=64)(self._seated)
         self.base_parameters = lru_cache(maxsize=64)(self._base_parameters)
         self.stiffness = lru_cache(maxsize=64)(self._stiffness)
+        self.handling = lru_cache(maxsize=16)(self._handling)
 
     # -- inputs ---------------------------------------------------------------
     def add_upload(self, filename, content):
@@ -153,6 +156,22 @@ class Engine:
         from ..plausibility import check_parameters
         from .state import SOURCE
         return check_parameters(base.replace(**dict(state.overrides)), SOURCE)
+
+    def model(self, state: PageState):
+        """The linear model (:func:`~bikemass.models.whipple.whipple_model`) of ``state``."""
+        from ..analysis.handling.plant import linear_model
+        return linear_model(self.parameters(state), self.stiffness(state.bicycle_key, state.stiffness))
+
+    def _handling(self, state):
+        """``bm.handling`` of ``state`` at :data:`HANDLING_SPEEDS` (cached per state): speeds where
+        the procedure finds no gains are ``nan`` (their warnings are dropped: the page shows the gap)."""
+        import warnings
+
+        from ..analysis.handling.survey import handling
+        from ..errors import BikemassWarning
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", BikemassWarning)
+            return handling(self.model(state), HANDLING_SPEEDS)
 
     def evaluate(self, state: PageState, speeds=None):
         """:class:`Evaluation` of ``state`` over ``speeds`` (default grid)."""
