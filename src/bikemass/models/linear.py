@@ -95,6 +95,10 @@ class LinearModel:
         ``B[k]`` multiplies ``v**k``; read-only.
     mechanics : SecondOrder or None
         ``M, C(v), K(v), F`` where the model has mechanical coordinates.
+    families : tuple of (str, tuple of int)
+        Mode families and the dynamic states that belong to them (for naming modes): the
+        Whipple bicycle's roll and steer states are ``"bicycle"``; a richer model adds, e.g.,
+        ``("lean", (4, 9))``.  Default: every dynamic state in ``"bicycle"``.
     """
 
     name: str
@@ -104,8 +108,11 @@ class LinearModel:
     A: np.ndarray
     B: np.ndarray
     mechanics: SecondOrder = field(default=None)
+    families: tuple = ()
 
     def __post_init__(self):
+        if not self.families:
+            object.__setattr__(self, "families", (("bicycle", tuple(range(self.n_dynamic))),))
         n, m = len(self.states), len(self.inputs)
         if self.A.shape[1:] != (n, n) or self.B.shape[1:] != (n, m) or not 0 < self.n_dynamic <= n:
             raise ValueError(f"model {self.name!r}: A {self.A.shape}, B {self.B.shape} do not fit "
@@ -180,7 +187,7 @@ class LinearModel:
                 f"inputs=({', '.join(self.input_names)}), degree={len(self.A) - 1})")
 
 
-def second_order_model(name, coordinates, rates, M, C, K, F, inputs, kinematics=()):
+def second_order_model(name, coordinates, rates, M, C, K, F, inputs, kinematics=(), families=None):
     """A :class:`LinearModel` from ``M q'' + C(v) q' + K(v) q = F u`` and kinematic states.
 
     Parameters
@@ -201,6 +208,9 @@ def second_order_model(name, coordinates, rates, M, C, K, F, inputs, kinematics=
         Kinematic states ``z_j' = sum_k v**k r_jk . [q, q', z]``, each given by its Signal and the
         coefficients ``r_jk`` (rows of length ``2 n + len(kinematics)``, zero on the dynamic block's
         feedback: kinematic states must not feed back).
+    families : mapping of str to sequence of int, optional
+        Mode families by coordinate index (each takes the coordinate and its rate); default:
+        every coordinate in ``"bicycle"``.
 
     Returns
     -------
@@ -225,4 +235,5 @@ def second_order_model(name, coordinates, rates, M, C, K, F, inputs, kinematics=
     B = np.zeros((1, N, len(inputs)))
     B[0, n:2 * n] = Minv @ F
     states = (*coordinates, *rates, *(s for s, _ in kinematics))
-    return LinearModel(name, tuple(states), 2 * n, tuple(inputs), readonly(A), readonly(B), mech)
+    groups = tuple((f, tuple(sorted((*idx, *(n + i for i in idx))))) for f, idx in (families or {}).items())
+    return LinearModel(name, tuple(states), 2 * n, tuple(inputs), readonly(A), readonly(B), mech, groups)
