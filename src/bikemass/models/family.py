@@ -13,7 +13,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..frozen import readonly
-from ..parameters import BenchmarkParameters
+from ..parameters import NAMES, BenchmarkParameters
 from .lean import RiderLeanParameters
 from .linear import LinearModel, SecondOrder
 from .registry import module_name, parse_model
@@ -63,10 +63,10 @@ def _state_form(code, E, A, B):
     """``E^-1 A``, ``E^-1 B`` of the generated ``(E, A, B)`` (solved on E's mass rows only: every other
     row of E is a row of the identity, so exact zeros stay exact)."""
     mass = slice(code.COORDINATES, code.N_DYNAMIC)
-    Em = E[..., None, mass, mass]
+    inverse = np.linalg.inv(E[..., None, mass, mass])
     A, B = A.copy(), B.copy()
-    A[..., mass, :] = np.linalg.solve(Em, A[..., mass, :])
-    B[..., mass, :] = np.linalg.solve(Em, B[..., mass, :])
+    A[..., mass, :] = inverse @ A[..., mass, :]
+    B[..., mass, :] = inverse @ B[..., mass, :]
     return A, B
 
 
@@ -101,7 +101,7 @@ def values(model, bicycle, tyres=None):
     elif isinstance(bicycle, RiderLeanParameters):
         out = bicycle.rigid().to_dict()
     elif isinstance(bicycle, BenchmarkParameters):
-        out = bicycle.to_dict()
+        out = {name: getattr(bicycle, name) for name in NAMES}
     else:
         raise InputError("model", choice.name, f"benchmark or rider-lean parameters, not {type(bicycle).__name__}")
     if choice.has("tyre"):

@@ -19,7 +19,7 @@ from dataclasses import dataclass, field, fields
 import numpy as np
 
 from ..inertia import MassProperties, combine
-from ..parameters import BenchmarkParameters
+from ..parameters import NAMES, BenchmarkParameters
 
 
 def unit(symbol, description):
@@ -78,7 +78,7 @@ class RiderLeanParameters:
     def values(self):
         """``{name: float}`` of the generated code's parameters (the 26 benchmark ones and the member's)."""
         u, j = self.upper, self.joint
-        return {**self.bicycle.to_dict(), "mU": u.mass, "xU": u.x, "zU": u.z, "IUxx": u.Ixx, "IUyy": u.Iyy,
+        return {**{name: getattr(self.bicycle, name) for name in NAMES}, "mU": u.mass, "xU": u.x, "zU": u.z, "IUxx": u.Ixx, "IUyy": u.Iyy,
                 "IUzz": u.Izz, "IUxz": u.Ixz, "zhip": u.hip_z, "klean": j.stiffness, "clean": j.damping}
 
     def rigid(self):

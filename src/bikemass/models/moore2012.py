@@ -107,7 +107,8 @@ def from_moore_values(values, source="values") -> RiderLeanParameters:
     try:
         lam = _steer_tilt(p["d1"], p["d2"], p["d3"], p["rr"], p["rf"])
     except ValueError as exc:
-        raise InputError(source, "values.d2", f"a geometry whose front wheel reaches the ground ({exc})") from None
+        raise InputError(source, "values", f"d1, d2, d3, rf, rr of a bicycle whose front wheel reaches the "
+                         f"ground ({exc})") from None
     c = math.cos(lam)
     R = _pitched(lam)
     trail = p["rf"] * math.tan(lam) - p["d3"] / c
