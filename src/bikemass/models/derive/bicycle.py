@@ -70,7 +70,6 @@ class Wheel:
     """
 
     name: str
-    body: object
     centre: object
     contact: object
     velocity: object
@@ -124,7 +123,13 @@ class ExtraState:
 
 @dataclass
 class Bicycle:
-    """The multibody system under construction (see the module docstring)."""
+    """The multibody system under construction (see the module docstring).
+
+    Besides what :class:`~bikemass.models.derive.kane.System` takes: the parameters' symbols,
+    units and meanings (in declaration order), the dynamic coordinates of the linear model
+    (:class:`Coordinate`), the wheels (:class:`Wheel`), the speeds a member frees (``(u, name,
+    unit, family)``), the named frames and points, and the heading and lateral coordinates.
+    """
 
     frame: object = None
     parameters: dict = field(default_factory=dict)
@@ -147,7 +152,10 @@ class Bicycle:
     extra_speeds: list = field(default_factory=list)
     frames: dict = field(default_factory=dict)
     points: dict = field(default_factory=dict)
+    heading: object = None
+    lateral: object = None
     speed = sm.Symbol("v")
+    """The forward speed (m/s): the steady motion's, in every coefficient."""
 
     def parameter(self, name, unit, description):
         """The symbol of parameter ``name`` (declared on first use, in order)."""
@@ -160,14 +168,14 @@ class Bicycle:
         """A declared parameter's symbol."""
         return self.parameters[name]
 
-    def coordinate(self, name, speed_name=None, value=0, rate=0):
-        """A new coordinate and its speed (``q' = u``), at ``value`` and ``rate`` at the steady motion."""
+    def coordinate(self, name, speed_name=None, rate=0):
+        """A new coordinate and its speed (``q' = u``): zero at the steady motion, its speed ``rate``."""
         q = me.dynamicsymbols(name)
         u = me.dynamicsymbols(speed_name or f"u_{name}")
         self.coordinates.append(q)
         self.speeds.append(u)
         self.kinematics[q] = u
-        self.point[q], self.point[u] = value, rate
+        self.point[q], self.point[u] = 0, rate
         return q, u
 
     def input(self, name, unit):
@@ -189,6 +197,7 @@ class Bicycle:
 
     @property
     def coordinate_rates(self):
+        """``{q_i'(t): N(q) u}`` for substitution."""
         return {q.diff(me.dynamicsymbols._t): rate for q, rate in self.kinematics.items()}
 
     def system(self):
@@ -236,9 +245,8 @@ def rear(bike):
     bike.body("rear frame", p("mB"), Bo, C, inertia(C, p("IBxx"), p("IByy"), p("IBzz"), p("IBxz")))
     contact = p("rR") * B.z
     velocity = Rc.vel(N) + R.ang_vel_in(N).xreplace(bike.coordinate_rates).cross(contact)
-    bike.wheels.append(Wheel("rear", R, Rc, contact, velocity, A.x, A.y, C.y & N.z, u_betaR, u_lat))
-    bike.roll_torque = bike.input("roll-torque", "N m")
-    bike.loads.append((C, bike.roll_torque * A.x))
+    bike.wheels.append(Wheel("rear", Rc, contact, velocity, A.x, A.y, C.y & N.z, u_betaR, u_lat))
+    bike.loads.append((C, bike.input("roll-torque", "N m") * A.x))
 
 
 def front(bike, head):
@@ -254,8 +262,8 @@ def front(bike, head):
     Ho = S0.locatenew("Ho", (p("xH") - p("w") - p("c")) * E.x + p("zH") * E.z)
     bike.points.update(S0=S0, Ho=Ho)
     bike.body("front frame", p("mH"), Ho, E, inertia(E, p("IHxx"), p("IHyy"), p("IHzz"), p("IHxz")))
-    bike.steer_torque = bike.input("steer-torque", "N m")
-    bike.loads += [(E, bike.steer_torque * S.z), (head, -bike.steer_torque * S.z)]
+    torque = bike.input("steer-torque", "N m")
+    bike.loads += [(E, torque * S.z), (head, -torque * S.z)]
 
 
 def front_wheel(bike, axle):
@@ -274,7 +282,7 @@ def front_wheel(bike, axle):
     velocity = Fc.vel(N) + Fw.ang_vel_in(N).xreplace(bike.coordinate_rates).cross(contact)
     ahead = axle.y.cross(N.z) / sm.sqrt(1 - tilt ** 2)
     u_psi = bike.speeds[bike.coordinates.index(bike.heading)]
-    bike.wheels.append(Wheel("front", Fw, Fc, contact, velocity, ahead, N.z.cross(ahead), tilt, u_betaF, u_psi))
+    bike.wheels.append(Wheel("front", Fc, contact, velocity, ahead, N.z.cross(ahead), tilt, u_betaF, u_psi))
 
 
 def rolling(bike, wheel):

@@ -192,7 +192,7 @@ def linearise(system):
     ind_q = [z for z in q if z not in dep_q]
     ind_u = [z for z in u if z not in dep_u]
     iq, iu = [q.index(z) for z in ind_q], [u.index(z) for z in ind_u]
-    dq_, du_ = [q.index(z) for z in dep_q], [u.index(z) for z in dep_u]
+    jq, ju = [q.index(z) for z in dep_q], [u.index(z) for z in dep_u]
 
     # linearised configuration constraints: dq = Q dq_I
     Q = sm.zeros(len(q), len(ind_q))
@@ -200,8 +200,8 @@ def linearise(system):
         Q[i, a] = 1
     if dep_q:
         J = grad(fc, q)
-        theta = -J[:, dq_].LUsolve(J[:, iq])
-        for a, i in enumerate(dq_):
+        theta = -J[:, jq].LUsolve(J[:, iq])
+        for a, i in enumerate(jq):
             Q[i, :] = theta[a, :]
 
     # velocity constraints: A(q) u = 0
@@ -209,7 +209,7 @@ def linearise(system):
     if A.has(*u):
         raise ValueError("a velocity constraint that is not linear in the speeds")
     A0 = A.xreplace(point)
-    AD, AI = A0[:, du_], A0[:, iu]
+    AD, AI = A0[:, ju], A0[:, iu]
     W0 = -AD.LUsolve(AI)
     dA = grad(list(A), q)                                   # row (i, j) of A, column k: dA_ij/dq_k
     P = -AD.LUsolve(grad(fv, q))                             # fv = A u, so d(A u0)/dq = d fv/dq at u0
@@ -218,11 +218,11 @@ def linearise(system):
     PQ = P * Q
     for a, i in enumerate(iu):
         S[i, a] = 1
-    for a, i in enumerate(du_):
+    for a, i in enumerate(ju):
         S[i, :] = W0[a, :]
         T[i, :] = PQ[a, :]
     Pfull = sm.zeros(len(u), len(q))
-    for a, i in enumerate(du_):
+    for a, i in enumerate(ju):
         Pfull[i, :] = P[a, :]
 
     # kinematics: dq' = N0 du + d(N u0)/dq dq
@@ -232,17 +232,17 @@ def linearise(system):
     G = sm.zeros(len(ind_u), len(u))
     for a, i in enumerate(iu):
         G[a, i] = 1
-    for a, i in enumerate(du_):
+    for a, i in enumerate(ju):
         G[:, i] = W0[a, :].T
     Hq, Hu, Hud, Hr = grad(H, q), grad(H, u), grad(H, ud), grad(H, r)
-    H0D = sm.Matrix([jet.value(H[i]) for i in du_])
+    H0D = sm.Matrix([jet.value(H[i]) for i in ju])
     M = G * Hud * S
     C = G * (Hu * S + Hud * Pfull * Ku_all)
     K = G * (Hq * Q + Hu * T + Hud * Pfull * Kq_all)
     cols = A.shape[1]
     for k in range(len(q)):
         dAk = sm.Matrix(A.shape[0], cols, list(dA[:, k]))
-        dW = -AD.LUsolve(dAk[:, du_] * W0 + dAk[:, iu])
+        dW = -AD.LUsolve(dAk[:, ju] * W0 + dAk[:, iu])
         K += (dW.T * H0D) * Q[k, :]
     F = G * Hr
     return Linearised([system.coordinates[i] for i in iq], [system.speeds[i] for i in iu], list(system.inputs),
