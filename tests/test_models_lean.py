@@ -157,3 +157,51 @@ def test_the_hip_joint_default_is_de_lorenzos(jamis_relaxed):
     m, g, h = lean.upper.mass, lean.bicycle.g, lean.upper.hip_z - lean.upper.z
     assert lean.gravity_stiffness == pytest.approx(m * g * h, rel=1e-15)
     assert math.isclose(hip_axis_z(jamis_relaxed[1]), lean.upper.hip_z)
+
+
+HANDS_ON_BARS = """name: Upright, hands on the bars
+body: thesis_rider
+segments:
+  head:      {location: [0.266, 0.000, -1.919], angle: 5 deg}
+  torso:     {location: [0.240, 0.000, -1.625], angle: 5 deg}
+  upper_arm: {location: [0.240, 0.238, -1.625], angle: -30 deg, mirror: true}
+  lower_arm: {location: [0.395, 0.238, -1.356], angle: -60 deg, mirror: true, frame: front}
+  thigh:     {location: [0.153, 0.086, -1.084], angle: -45.220 deg, mirror: true}
+  lower_leg: {location: [0.529, 0.086, -0.706], angle: 15.043 deg, mirror: true}
+"""
+
+
+def test_forearms_on_the_bars_stay_with_the_front_frame(tmp_path):
+    """The docs/riders.md example pose: the lower arms move with the front frame, so they neither lean
+    nor join B; the split still recombines to the whole rider's benchmark set."""
+    path = tmp_path / "upright.yaml"
+    path.write_text(HANDS_ON_BARS)
+    bike = load_bicycle("jamis")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        rider = seated_rider(bike, str(path), allow_off_contact=True)
+        lean = rider_lean_parameters(bike, rider, method="exact")
+        whole = bicycle_parameters(bike, rider, method="exact")
+        alone = bicycle_parameters(bike, None, method="exact")
+    arms = [p for p in rider.parts if p.name.startswith("lower_arm")]
+    assert len(arms) == 2 and all(p.body == "front_frame" for p in arms)
+    upper = [p for p in rider.parts if p.name in UPPER_PARTS and p.body == "rear_frame"]
+    assert lean.upper.mass == pytest.approx(sum(p.mass for p in upper), rel=1e-12)
+    assert lean.bicycle.mH == pytest.approx(alone.mH + sum(p.mass for p in arms), rel=1e-12)
+    for k, v in lean.rigid().to_dict().items():
+        assert v == pytest.approx(getattr(whole, k), rel=1e-12, abs=1e-12), k
+
+
+def test_a_values_mapping_gives_the_model_in_one_call():
+    from bikemass.models.moore2012 import moore_linear_model
+    model = moore_linear_model(BROWSER_JASON)
+    assert model.name == "rider-lean" and model.input_names == ("roll-torque", "steer-torque", "lean-torque")
+    assert moore_linear_model(BROWSER_JASON, model="whipple").name == "whipple"
+
+
+def test_joint_and_upper_body_refuse_nonsense():
+    from bikemass.models.lean import UpperBody
+    with pytest.raises(InputError, match="lean joint: damping: a non-negative number"):
+        LeanJoint(stiffness=128.0, damping=-1.0)
+    with pytest.raises(InputError, match="upper body: mass: a positive number"):
+        UpperBody(mass=0.0, x=0.3, z=-1.3, Ixx=2.0, Iyy=2.0, Izz=1.0, Ixz=0.0, hip_z=-1.0)

@@ -147,3 +147,10 @@ def test_bad_tyre_files_are_one_line_naming_file_and_key(tmp_path, change, messa
     with pytest.raises(InputError) as err:
         load_tyres(path)
     assert str(path) in str(err.value) and message in str(err.value) and "\n" not in str(err.value)
+
+
+def test_a_tyre_refuses_nonsense():
+    with pytest.raises(InputError, match="tyre: relaxation_length: a positive number"):
+        Tyre(cornering_coefficient=11.0, camber_coefficient=0.5, relaxation_length=0.0)
+    with pytest.raises(InputError, match="tyre: cornering_coefficient: a positive number"):
+        Tyre(cornering_coefficient=float("nan"), camber_coefficient=0.5, relaxation_length=0.2)

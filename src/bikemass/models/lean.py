@@ -14,10 +14,12 @@ values with which his leaning rider is stable between about 5 and 7 m/s on the B
 ``k < m g h``: :attr:`RiderLeanParameters.gravity_stiffness` gives ``m g h`` to compare.
 """
 
+import math
 from dataclasses import dataclass, field, fields
 
 import numpy as np
 
+from ..errors import InputError
 from ..inertia import MassProperties, combine
 from ..parameters import NAMES, BenchmarkParameters
 
@@ -30,6 +32,18 @@ def unit(symbol, description):
 def units(cls):
     """``{field: SI unit}`` of a dataclass with :func:`unit` metadata."""
     return {f.name: f.metadata["unit"] for f in fields(cls) if "unit" in f.metadata}
+
+
+def _checked(value, what, positive=(), nonnegative=()):
+    """Every field a finite float (``positive`` or ``nonnegative`` where asked); InputError otherwise."""
+    for f in fields(value):
+        x = getattr(value, f.name)
+        if isinstance(x, bool) or not isinstance(x, (int, float)) or not math.isfinite(x):
+            raise InputError(what, f.name, f"a finite number ({f.metadata['unit']}), got {x!r}")
+        if (f.name in positive and not x > 0) or (f.name in nonnegative and x < 0):
+            raise InputError(what, f.name, f"a {'positive' if f.name in positive else 'non-negative'} number "
+                             f"({f.metadata['unit']}), got {x!r}")
+        object.__setattr__(value, f.name, float(x))
 
 
 LEAN_STIFFNESS = 128.0
@@ -52,6 +66,9 @@ class UpperBody:
     Ixz: float = unit("kg m^2", "Ixz (tensor element) about the centre of mass")
     hip_z: float = unit("m", "z of the lean (hip) axis, a line parallel to x (negative: above the ground)")
 
+    def __post_init__(self):
+        _checked(self, "upper body", positive=("mass", "Ixx", "Iyy", "Izz"))
+
     def properties(self):
         """The upper body as :class:`~bikemass.inertia.MassProperties`."""
         I = np.array([[self.Ixx, 0.0, self.Ixz], [0.0, self.Iyy, 0.0], [self.Ixz, 0.0, self.Izz]])
@@ -64,6 +81,9 @@ class LeanJoint:
 
     stiffness: float = field(default=LEAN_STIFFNESS, metadata={"unit": "N m/rad", "description": "stiffness"})
     damping: float = field(default=LEAN_DAMPING, metadata={"unit": "N m s/rad", "description": "damping"})
+
+    def __post_init__(self):
+        _checked(self, "lean joint", nonnegative=("stiffness", "damping"))
 
 
 @dataclass(frozen=True)

@@ -20,6 +20,7 @@ import yaml
 
 from ..errors import InputError
 from ..parameters import BenchmarkParameters
+from .family import build
 from .lean import LeanJoint, RiderLeanParameters, UpperBody
 
 PARAMETERIZATION = "MooreRiderLean2012"
@@ -126,3 +127,10 @@ def from_moore_values(values, source="values") -> RiderLeanParameters:
     upper = UpperBody(mass=p["mg"], x=p["l5"], z=hip_z + p["l6"], Ixx=p["ig11"], Iyy=p["ig22"],
                       Izz=p["ig33"], Ixz=p["ig31"], hip_z=hip_z)
     return RiderLeanParameters(bicycle, upper, LeanJoint(stiffness=p["k9"], damping=p["c9"]))
+
+
+def moore_linear_model(values, model="rider-lean", tyres=None, source="values"):
+    """The :class:`~bikemass.models.linear.LinearModel` of ``model`` (default ``rider-lean``; any
+    combination, see :func:`~bikemass.models.family.build`) from a ``MooreRiderLean2012`` values
+    mapping (see :func:`from_moore_values`)."""
+    return build(model, from_moore_values(values, source), tyres)

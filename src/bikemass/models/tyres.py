@@ -15,9 +15,11 @@ Vehicle System Dynamics 50(8), "Measuring sideslip and camber characteristics of
 0.35 /deg, camber 0.0075 to 0.015 /deg, per unit load).
 """
 
-from dataclasses import dataclass, field
+import math
+from dataclasses import dataclass, field, fields
 
 from ..config import Node, load_yaml
+from ..errors import InputError
 from ..gate import plain_input
 
 KEYS = ("cornering_coefficient", "camber_coefficient", "relaxation_length")
@@ -32,6 +34,15 @@ class Tyre:
     cornering_coefficient: float = field(metadata={"unit": "1/rad", "description": "d(F_y/N)/d(slip angle)"})
     camber_coefficient: float = field(metadata={"unit": "1/rad", "description": "d(F_y/N)/d(camber angle)"})
     relaxation_length: float = field(metadata={"unit": "m", "description": "distance rolled to build up the force"})
+
+    def __post_init__(self):
+        for f in fields(self):
+            x = getattr(self, f.name)
+            least = "a number >= 0" if f.name == "camber_coefficient" else "a positive number"
+            if isinstance(x, bool) or not isinstance(x, (int, float)) or not math.isfinite(x) or x < 0 or (
+                    x == 0 and f.name != "camber_coefficient"):
+                raise InputError("tyre", f.name, f"{least} ({f.metadata['unit']}), got {x!r}")
+            object.__setattr__(self, f.name, float(x))
 
 
 @dataclass(frozen=True)
