@@ -24,8 +24,8 @@ with the perturbations tied to the independent ones by the linearised constraint
 This is the linearisation that ``sympy.physics.mechanics.Linearizer`` performs (Peterson, Gede &
 Hubbard 2014, Multibody System Dynamics 31), but every derivative is taken at the operating point
 (:class:`~bikemass.models.derive.jet.Jet`) instead of solving the constraints for a general
-configuration first: the Linearizer did not finish the Whipple bicycle in 20 minutes, this takes
-seconds.
+configuration first: minutes there for the Whipple bicycle (docs/models.md, "The derivation"),
+seconds here.
 """
 
 from dataclasses import dataclass, field
