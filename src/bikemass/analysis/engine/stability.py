@@ -12,14 +12,18 @@ from .critical import critical_speeds
 from .crossings import OSCILLATORY, REAL, Crossing, Eigenvalues, circle_speeds
 from .eigen import eigen_sweep
 from .modes import follow_modes
-from .naming import family
+from .naming import family, participation
 from .tracking import reorder, track
 from .ranges import MARGINAL_THRESHOLD, grid_ranges, interval_ranges, intersect, is_stable, margin
 
 DEFAULT_SPEEDS = (0.0, 30.0, 0.05)
 """The thesis's speed grid: start, stop, step (m/s)."""
 WOBBLE = "wobble"
-"""The family name of a steer-dominated high-frequency mode of a flexible model."""
+"""The name of a steer-dominated high-frequency oscillation (shimmy): what a flexible frame and
+fork or tyres that slip add to the Whipple bicycle's modes."""
+WOBBLE_MIN_FREQUENCY = 2 * np.pi * 3.0
+"""Lowest frequency (rad/s, 3 Hz) of an oscillation named wobble; the weave of a bicycle stays
+below it up to about 15 m/s, the wobble of the literature lies at 6-12 Hz (docs/models.md)."""
 CRITERIA = ("strict", "marginal")
 
 
@@ -82,8 +86,29 @@ class _Tracked:
         return int(np.argmin(np.abs(self.guess(v) - root)))
 
 
-def _named(tracked, speed, kind, frequency, labels):
-    """The tracked mode that crosses at ``speed``: a label, or a pair's family (``"weave"``)."""
+def coordinate(state):
+    """The coordinate a state belongs to: ``"steer-angle"``, ``"steer-rate"`` -> ``"steer"``."""
+    head, _, tail = state.rpartition("-")
+    return head if tail in ("angle", "rate") else state
+
+
+def is_wobble(model, speed, frequency):
+    """Whether the oscillation of ``frequency`` (rad/s) at ``speed`` is wobble: at least 3 Hz and
+    its largest share (participation factors, summed by coordinate) on the steer coordinate."""
+    if frequency < WOBBLE_MIN_FREQUENCY:
+        return False
+    values, vectors = np.linalg.eig(model.dynamic_matrix(speed))
+    k = int(np.argmin(np.abs(values - 1j * frequency)))
+    share = participation(vectors)[:, k]
+    by = {}
+    for state, x in zip(model.dynamic_states, share):
+        by[coordinate(state.name)] = by.get(coordinate(state.name), 0.0) + x
+    return max(by, key=by.get) == "steer"
+
+
+def _named(model, tracked, speed, kind, frequency, labels):
+    """The tracked mode that crosses at ``speed``: a label, a pair's family (``"weave"``), or
+    ``"wobble"`` for a steer-dominated high-frequency pair (:func:`is_wobble`) of another family."""
     root = 1j * frequency if kind == OSCILLATORY else 0.0
     first = tracked.column_of(speed, root)
     if kind == REAL:
@@ -92,7 +117,10 @@ def _named(tracked, speed, kind, frequency, labels):
     guess[first] = np.inf
     second = int(np.argmin(np.abs(guess - np.conj(root))))
     a, b = labels[first], labels[second]
-    return family(a) if family(a) == family(b) and a != b else " + ".join(sorted((a, b)))
+    name = family(a) if family(a) == family(b) and a != b else " + ".join(sorted((a, b)))
+    if name not in ("weave", WOBBLE) and is_wobble(model, speed, frequency):
+        return WOBBLE
+    return name
 
 
 @dataclass(frozen=True, eq=False)
@@ -221,7 +249,7 @@ def analyse(model, speeds=None, marginal=MARGINAL_THRESHOLD, stiffness=None):
     at = Eigenvalues(model)
     tracked = _Tracked(model, modes, at)
     critical = critical_speeds(model, hi, lo)
-    crossings = tuple(replace(c, mode=_named(tracked, c.speed, c.kind, c.frequency, modes.labels))
+    crossings = tuple(replace(c, mode=_named(model, tracked, c.speed, c.kind, c.frequency, modes.labels))
                       for c in critical.crossings)
     axis = [c.speed for c in crossings]
     limits = {"strict": None, "marginal": marginal}
