@@ -2,8 +2,8 @@
 
 Run by hand:  python benchmarks/bench_stability.py
 Both libraries run in this process on the same parameters; best of several repeats.
-The last line is the whole stability analysis (tracked modes, every crossing of Re = 0
-as a root to 1e-13 m/s, exact and grid ranges, strict and marginal) against
+The last line is the whole stability analysis (tracked and named modes, every crossing of
+Re = 0 found exactly, exact and grid ranges, strict and marginal) against
 BicycleParameters' ``Bicycle.eig`` at the same 601 speeds (issue 14 asks for <= 0.25).
 Then the same analysis with the machine's default BLAS pool and on one BLAS thread
 (issue 10: does the stability core gain from :func:`bikemass.core.threads.one_blas_thread`?).
@@ -17,8 +17,10 @@ import numpy as np
 
 from bikemass.scenario.catalog import parameters
 from bikemass.models.parameter_export import format_parameters
-from bikemass.models.canonical import canonical_matrices
-from bikemass.analysis.stability import eigen_sweep, follow_modes, speed_grid, stability
+from bikemass.analysis.engine.eigen import eigen_sweep
+from bikemass.analysis.engine.modes import follow_modes
+from bikemass.analysis.engine.stability import analyse, speed_grid
+from bikemass.models.whipple import whipple_model
 
 
 def best(fn, number):
@@ -34,10 +36,10 @@ def main():
     peer = Meijaard2007Model(Meijaard2007ParameterSet({**p.to_dict(), "v": 0.0}, True))
 
     def ours_eig():
-        return eigen_sweep(canonical_matrices(p), speeds)
+        return eigen_sweep(whipple_model(p), speeds)
 
     def ours_tracked():
-        return follow_modes(canonical_matrices(p), speeds)
+        return follow_modes(whipple_model(p), speeds)
 
     def peer_eig():
         return peer.calc_eigen(v=speeds)
@@ -66,12 +68,8 @@ def main():
 
 
 def _api_stability(p):
-    """``bm.stability(params)`` where the top-level API offers it, else the stability package's."""
-    import bikemass
-    api = getattr(bikemass, "stability", None)
-    if callable(api):
-        return api(p)
-    return stability(canonical_matrices(p))
+    """``bm.stability(params)``: the model built and analysed."""
+    return analyse(whipple_model(p))
 
 
 def _bicycle_eig(p, speeds):

@@ -145,11 +145,11 @@ def test_pose_warning_goes_through_warnings():
 
 
 def test_subpackages_of_the_same_name_do_not_hide_the_functions():
-    import bikemass.sweep
-    from bikemass.sweep import read_spec
-    assert callable(bm.sweep) and bm.sweep.__module__ == "bikemass.sweep.run" and callable(read_spec)
-    assert bm.stability.__module__ == "bikemass.analysis.results"
-    assert bm.parameters.__module__ == "bikemass.scenario.catalog"
+    import bikemass.models.parameters
+    import bikemass.analysis.engine
+    from bikemass.analysis.engine.modes import follow_modes
+    assert callable(bm.stability) and bm.stability.__module__ == "bikemass.analysis.results"
+    assert bm.parameters.__module__ == "bikemass.scenario.catalog" and callable(follow_modes)
 
 
 def test_import_bikemass_loads_no_numpy():

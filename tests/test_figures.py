@@ -27,10 +27,10 @@ from bikemass.plots.frame_modes import plot_frame_modes
 from bikemass.scenario.frame import frame_structure
 from bikemass.plots.critical_speeds import plot_critical_speeds
 from bikemass.plots.stability import plot_eigenvalues
-from bikemass.models.canonical import canonical_matrices
-from bikemass.analysis.stability import speed_grid, stability
+from bikemass.analysis.engine.stability import analyse, speed_grid
+from bikemass.models.whipple import whipple_model
 
-result = stability(canonical_matrices(catalog.parameters("benchmark", "none", "exact")), speed_grid(0, 8, 0.5))
+result = analyse(whipple_model(catalog.parameters("benchmark", "none", "exact")), speed_grid(0, 8, 0.5))
 figures = [plot_eigenvalues(result, "benchmark"), plot_eigenvalues(result.modes),
            plot_critical_speeds({"no rider": {"rigid": result}}),
            plot_side_view(catalog.load_bicycle("benchmark")),
@@ -122,10 +122,11 @@ def test_eig_figure_names_the_weave_and_capsize_speeds(tmp_path, capsys):
 
 @pytest.fixture(scope="module")
 def benchmark_stability():
+    """The benchmark's stability on the thesis's grid (exact mass properties)."""
     from bikemass.scenario import catalog
-    from bikemass.models.canonical import canonical_matrices
-    from bikemass.analysis.stability import speed_grid, stability
-    return stability(canonical_matrices(catalog.parameters("benchmark", "none", "exact")), speed_grid(0, 30, 0.05))
+    from bikemass.analysis.engine.stability import analyse, speed_grid
+    from bikemass.models.whipple import whipple_model
+    return analyse(whipple_model(catalog.parameters("benchmark", "none", "exact")), speed_grid(0, 30, 0.05))
 
 
 def _lines(ax, label):

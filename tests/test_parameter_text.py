@@ -19,9 +19,10 @@ from bikemass.bicycle import load_bicycle
 from bikemass.cli.main import main
 from bikemass.core.errors import InputError
 from bikemass.bicycle.parameter_text import (ParameterFileWarning, combined_front_frame, load_parameter_text,
-                                             parse_parameter_text)
-from bikemass.models.canonical import canonical_matrices
-from bikemass.analysis.stability import eigen_sweep, speed_grid
+                                     parse_parameter_text)
+from bikemass.analysis.engine.eigen import eigen_sweep
+from bikemass.analysis.engine.stability import speed_grid
+from bikemass.models.whipple import whipple_model
 
 BP_DATA = Path(bp.__file__).parent / "app-data"
 SHIPPED = sorted(p.parent.parent.name for p in BP_DATA.glob("bicycles/*/Parameters/*Benchmark.txt"))
@@ -42,7 +43,7 @@ def test_shipped_bicycle_gives_bicycleparameters_eigenvalues_to_1e_9(name, capsy
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")            # uncertainties: std 0; our H check on Rigid
         theirs, _ = bp.Bicycle(name, pathToData=str(BP_DATA)).eig(speeds)
-        ours = eigen_sweep(canonical_matrices(load_parameter_text(bp_file(name)).parameters), speeds).eigenvalues
+        ours = eigen_sweep(whipple_model(load_parameter_text(bp_file(name)).parameters), speeds).eigenvalues
     capsys.readouterr()                             # BicycleParameters prints a note
     # best matching of the four roots at every speed, then the largest difference
     gap = np.abs(ours[:, PERMUTATIONS] - theirs[:, None, :]).max(axis=2).min(axis=1)

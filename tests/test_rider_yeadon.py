@@ -11,8 +11,8 @@ import pytest
 from bikemass.bicycle import bicycle_parameters, load_bicycle
 from bikemass.cli.main import main
 from bikemass.rider.seating import seat_rider
-from bikemass.models.canonical import canonical_matrices
-from bikemass.analysis.stability import stability
+from bikemass.analysis.engine.stability import analyse
+from bikemass.models.whipple import whipple_model
 
 yeadon = pytest.importorskip("yeadon")
 
@@ -48,7 +48,7 @@ def test_measured_rider_on_the_jamis(jason_on_jamis, jamis):
                                                                   rel=1e-12)
     assert seated.rider.properties("exact").mass == pytest.approx(83.5, rel=1e-12)    # the file's totalmass
     assert max(seated.residuals().values()) <= 1e-3
-    weave = stability(canonical_matrices(bicycle_parameters(jamis, seated.rider))).weave_speeds
+    weave = analyse(whipple_model(bicycle_parameters(jamis, seated.rider))).weave_speeds
     assert len(weave) >= 1 and 3.0 < weave[0] < 10.0
 
 

@@ -7,27 +7,27 @@ import numpy as np
 import pytest
 
 from bikemass.scenario import catalog
-from bikemass.analysis.crossings import critical_speeds
-from bikemass.analysis.model import matrix_derivatives, system, values_of
+from bikemass.analysis.engine import crossings
+from bikemass.analysis.engine.critical import critical_speeds
+from bikemass.analysis.model import matrix_derivatives
 from bikemass.analysis.sensitivity import sensitivity
 from bikemass.cli.main import main
-from bikemass.models.parameters import NAMES
 from bikemass.models.canonical import canonical_matrices
-from bikemass.analysis.stability import speed_grid, stability
-from bikemass.models.flexible_static import with_frame_stiffness
-
-GRID = speed_grid(0, 8, 0.05)
+from bikemass.models.whipple import whipple_model
+from bikemass.models.parameters import NAMES
 
 
-def _tracked_speeds(params):
-    """Weave and capsize speeds from the tracked-mode root finder of bikemass.analysis.stability."""
-    s = stability(canonical_matrices(params), GRID)
-    return s.weave_speeds[0], s.capsize_speeds[0]
+def general_speeds(params, S=None):
+    """Weave and capsize speeds from the engine's general path (polynomial eigenvalue problems of
+    the compound matrices), not the closed form that the sensitivities use."""
+    found = crossings.axis_crossings(whipple_model(params, S), 0.0, 30.0)
+    return (next(s for s, k, _ in found if k == "oscillatory"), next(s for s, k, _ in found if k == "real"))
+
 
 
 def test_benchmark_52_derivatives_equal_central_differences(capsys):
     """All 52 derivatives of `bikemass sensitivity benchmark --format json` equal central
-    differences (relative step 1e-5) of speeds found by root finding on the tracked eigenvalues, to 1e-4
+    differences (relative step 1e-5) of speeds found by the engine's general path, to 1e-4
     relative.  Derivatives that are zero by the physics (IByy, IHyy; the capsize speed does not
     depend on the inertias that only enter M) are held to 1e-6 in elasticity: FD noise is ~1e-9."""
     assert main(["sensitivity", "benchmark", "--format", "json"]) == 0
@@ -38,7 +38,7 @@ def test_benchmark_52_derivatives_equal_central_differences(capsys):
     for name in NAMES:
         x = getattr(p, name)
         h = 1e-5 * abs(x)
-        hi, lo = _tracked_speeds(p.replace(**{name: x + h})), _tracked_speeds(p.replace(**{name: x - h}))
+        hi, lo = general_speeds(p.replace(**{name: x + h})), general_speeds(p.replace(**{name: x - h}))
         for k, key in enumerate(("weave_speed", "capsize_speed")):
             fd = (hi[k] - lo[k]) / (2 * h)
             exact = doc["d_" + key][name]
@@ -59,8 +59,7 @@ def test_flexible_frame_derivatives_equal_differences():
     r = sensitivity(p, S)
 
     def speeds(q):
-        c = critical_speeds(system(values_of(q), S))
-        return c.weave_speed, c.capsize_speed
+        return general_speeds(q, S)
     for name in ("c", "lam", "mB", "IFyy"):
         x = getattr(p, name)
         h = 1e-6 * abs(x)
@@ -76,8 +75,8 @@ def test_matrix_derivatives_complex_step_equal_differences():
     for name in ("w", "c", "lam", "xH", "IHxz", "rF"):
         x = getattr(p, name)
         h = 1e-5 * abs(x)
-        hi = system(values_of(p.replace(**{name: x + h})))
-        lo = system(values_of(p.replace(**{name: x - h})))
+        hi = canonical_matrices(p.replace(**{name: x + h}))
+        lo = canonical_matrices(p.replace(**{name: x - h}))
         for m in ("M", "C1", "K0", "K2"):
             np.testing.assert_allclose(d[name][m], (getattr(hi, m) - getattr(lo, m)) / (2 * h),
                                        rtol=1e-6, atol=1e-8)
@@ -86,27 +85,36 @@ def test_matrix_derivatives_complex_step_equal_differences():
 @pytest.mark.parametrize("bike, rider, stiffness", [
     ("benchmark", None, "infinite"), ("jamis-thesis", None, "aluminum"),
     ("cargo-loaded-thesis", None, "infinite"), ("jamis-thesis", None, "infinite")])
-def test_closed_form_crossings_equal_tracked_roots(bike, rider, stiffness):
-    """The quadratic-in-v^2 crossings equal every Re = 0 crossing of bikemass.analysis.stability (root
-    finding on tracked modes, 0.05 grid) to 1e-9 m/s with the same kind (oscillatory/real) and
-    direction, and the strict stable ranges agree."""
+def test_closed_form_crossings_equal_the_general_engines(bike, rider, stiffness):
+    """The quadratic-in-v^2 crossings (the fast path of sensitivities and sweeps) equal every
+    Re = 0 crossing that the general path finds from the compound matrices, to 1e-9 m/s with
+    the same kind, and the strict stable ranges equal the runs of a stable eigenvalue count on a
+    0.001 m/s grid."""
     p, S = catalog.parameters(bike, rider), catalog.stiffness(bike, stiffness)
-    ref = stability(with_frame_stiffness(canonical_matrices(p), S))
-    mine = critical_speeds(system(values_of(p), S))
-    tracked = sorted({(round(c.speed, 9), c.kind, c.direction) for c in ref.crossings})
-    assert [(c.kind, c.direction) for c in mine.crossings] == [t[1:] for t in tracked]
-    np.testing.assert_allclose([c.speed for c in mine.crossings], [t[0] for t in tracked], atol=1e-9)
-    np.testing.assert_allclose(np.array(mine.stable, dtype=float).reshape(-1, 2),
-                               np.array(ref.ranges["strict"]["exact"], dtype=float).reshape(-1, 2), atol=1e-9)
+    model = whipple_model(p, S)
+    mine = critical_speeds(model)
+    general = crossings.axis_crossings(model, 0.0, 30.0)
+    assert [c.kind for c in mine.crossings] == [k for _, k, _ in general]
+    np.testing.assert_allclose([c.speed for c in mine.crossings], [s for s, _, _ in general], atol=1e-9)
+    v = np.arange(0.0005, 30.0, 0.001)
+    stable = np.all(np.linalg.eigvals(model.dynamic_matrix(v)).real < 0, axis=1)
+    for (a, b) in mine.stable:
+        inside = (v > a + 1e-3) & (v < b - 1e-3)
+        assert stable[inside].all()
+    outside = np.ones_like(stable)
+    for (a, b) in mine.stable:
+        outside &= ~((v >= a - 1e-3) & (v <= b + 1e-3))
+    assert not stable[outside].any()
 
 
 def test_crossing_kinds_follow_the_root_that_crosses():
     """A real root crossing at s = 0 is a capsize-type crossing even when the tracker calls it
     weave (Cargo loaded, thesis body: the split weave pair's real branch at 22.1 m/s)."""
     p = catalog.parameters("cargo-loaded-thesis")
-    mine = critical_speeds(system(values_of(p)))
+    model = whipple_model(p)
+    mine = critical_speeds(model)
     for c in mine.crossings:
-        A = system(values_of(p)).state_matrix(c.speed)
+        A = model.dynamic_matrix(c.speed)
         ev = np.linalg.eigvals(A)
         on_axis = ev[np.argmin(np.abs(ev.real))]
         assert abs(on_axis.real) < 1e-8
@@ -168,8 +176,7 @@ def test_stiffness_derivatives_equal_differences():
             Sh = np.array(S, dtype=float)
             for cell in cells:
                 Sh[cell] += sign * h
-            c = critical_speeds(system(values_of(p), Sh))
-            speeds.append((c.weave_speed, c.capsize_speed))
+            speeds.append(general_speeds(p, Sh))
         for k, key in enumerate(("weave_speed", "capsize_speed")):
             fd = (speeds[0][k] - speeds[1][k]) / (2 * h)
             assert r.d_stiffness[key][entry] == pytest.approx(fd, rel=1e-5, abs=1e-12), (entry, key)
@@ -186,9 +193,9 @@ def test_geometry_chain_equals_direct_difference(capsys):
     x, h = g["value"], g["step"]
     assert x == pytest.approx(0.040)                       # in the file's unit, inches
     (pa, Sa), (pb, Sb) = model.build({key: x + h}), model.build({key: x - h})
-    ca, cb = critical_speeds(system(values_of(pa), Sa)), critical_speeds(system(values_of(pb), Sb))
-    assert g["weave_speed"] == pytest.approx((ca.weave_speed - cb.weave_speed) / (2 * h), rel=1e-5)
-    assert g["capsize_speed"] == pytest.approx((ca.capsize_speed - cb.capsize_speed) / (2 * h), rel=1e-5)
+    ca, cb = general_speeds(pa, Sa), general_speeds(pb, Sb)
+    assert g["weave_speed"] == pytest.approx((ca[0] - cb[0]) / (2 * h), rel=1e-5)
+    assert g["capsize_speed"] == pytest.approx((ca[1] - cb[1]) / (2 * h), rel=1e-5)
     assert abs(g["weave_speed"]) > 1 and g["difference_check"] < 1e-4 * abs(g["weave_speed"])
     assert main(["sensitivity", "benchmark", "--inputs", "geometry.no_such_key"]) == 2
     assert "--inputs: geometry.no_such_key" in capsys.readouterr().err

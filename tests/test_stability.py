@@ -6,13 +6,17 @@ import numpy as np
 import pytest
 from scipy.optimize import linear_sum_assignment
 
+from bikemass.analysis.engine.eigen import eigen_sweep
+from bikemass.analysis.engine.modes import follow_modes
+from bikemass.analysis.engine.quartic import quartic_roots
+from bikemass.analysis.engine.ranges import intersect
+from bikemass.analysis.engine.stability import analyse, speed_grid
+from bikemass.analysis.engine.tracking import partners, step_costs, track
 from bikemass.scenario.catalog import parameters
 from bikemass.models.canonical import canonical_matrices
-from bikemass.analysis.stability import eigen_sweep, follow_modes, speed_grid, stability, state_matrices
 from bikemass.models.flexible_static import static_stiffness, with_frame_stiffness
-from bikemass.analysis.stability.quartic import quartic_roots
-from bikemass.analysis.stability.ranges import intersect
-from bikemass.analysis.stability.tracking import best_permutations, pair_violations, step_costs
+from bikemass.models.linear import Signal, second_order_model
+from bikemass.models.whipple import whipple_model
 from thesis_sets import RIDERS, stiffness, thesis_set
 
 BENCHMARK = parameters("benchmark")  # frames/benchmark.yaml (Meijaard 2007, Table 1)
@@ -41,6 +45,18 @@ TABLE_4_1 = [
 ]
 
 
+def model(p, S=None):
+    return whipple_model(p, S)
+
+
+def from_matrices(m):
+    """A Whipple-form model of canonical matrices (no kinematics): for matrices no parameter set has."""
+    q = [Signal("roll-angle", "rad"), Signal("steer-angle", "rad")]
+    r = [Signal("roll-rate", "rad/s"), Signal("steer-rate", "rad/s")]
+    return second_order_model("matrices", q, r, m.M, [None, m.C1], [m.gK0, None, m.K2], np.eye(2),
+                              [Signal("roll-torque", "N m"), Signal("steer-torque", "N m")])
+
+
 def test_canonical_matrices_match_table_3_13_to_1e_13():
     m = canonical_matrices(BENCHMARK)
     for name, ref in TABLE_3_13.items():
@@ -51,7 +67,7 @@ def test_canonical_matrices_match_table_3_13_to_1e_13():
 
 
 def test_eigenvalues_match_table_4_1_to_1e_12():
-    modes = follow_modes(canonical_matrices(BENCHMARK), np.arange(11.0))
+    modes = follow_modes(model(BENCHMARK), np.arange(11.0))
     at0 = {label: modes[label][0] for label in modes.labels}
     assert at0["weave 1"] == pytest.approx(3.13164324790656, abs=1e-12)
     assert at0["weave 2"] == pytest.approx(5.53094371765393, abs=1e-12)
@@ -65,13 +81,13 @@ def test_eigenvalues_match_table_4_1_to_1e_12():
 
 
 def test_weave_and_capsize_speeds_are_roots_to_1e_9():
-    st = stability(canonical_matrices(BENCHMARK))
+    st = analyse(model(BENCHMARK))
     assert len(st.weave_speeds) == 1 and len(st.capsize_speeds) == 1
     assert abs(st.weave_speeds[0] - 4.29238253634110) < 1e-9     # Meijaard 2007, Sec. 4
     assert abs(st.capsize_speeds[0] - 6.02426201538838) < 1e-9
-    assert st.ranges["strict"]["exact"] == [[st.weave_speeds[0], st.capsize_speeds[0]]]
-    assert st.ranges["strict"]["grid"] == [[4.3, 6.0]]           # thesis Table 4-2, Benchmark
-    assert st.ranges["marginal"]["grid"] == [[4.3, 30.0]]        # thesis Table 4-3
+    assert st.ranges["strict"]["exact"] == ((st.weave_speeds[0], st.capsize_speeds[0]),)
+    assert st.ranges["strict"]["grid"] == ((4.3, 6.0),)          # thesis Table 4-2, Benchmark
+    assert st.ranges["marginal"]["grid"] == ((4.3, 30.0),)       # thesis Table 4-3
 
 
 def sets():
@@ -94,7 +110,7 @@ def test_bicycleparameters_gives_same_matrices_and_eigenvalues_to_1e_10():
         for got, ref in zip((ours.M, ours.C1, ours.K0, ours.K2), peer.form_reduced_canonical_matrices()):
             np.testing.assert_allclose(got, ref, rtol=1e-10, atol=1e-10, err_msg=name)
         ref_values, _ = peer.calc_eigen(v=speeds)
-        got_values = eigen_sweep(ours, speeds).eigenvalues
+        got_values = eigen_sweep(model(p), speeds).eigenvalues
         for g, r in zip(got_values, ref_values):
             rows, cols = linear_sum_assignment(np.abs(g[:, None] - r[None, :]))
             assert np.max(np.abs(g[rows] - r[cols])) < 1e-10, name
@@ -103,9 +119,9 @@ def test_bicycleparameters_gives_same_matrices_and_eigenvalues_to_1e_10():
 def test_batched_eigen_solve_agrees_with_lapack_and_eigenvectors_solve_the_state_equation():
     v = speed_grid()
     for name, p, S in sets():
-        m = with_frame_stiffness(canonical_matrices(p), S)
+        m = model(p, S)
         sweep = eigen_sweep(m, v)
-        A = state_matrices(m, v)
+        A = m.dynamic_matrix(v)
         ref = np.linalg.eigvals(A)
         for k in range(len(v)):   # no double roots fall on these grids: 1e-11 holds (found 2.3e-13)
             rows, cols = linear_sum_assignment(np.abs(sweep.eigenvalues[k][:, None] - ref[k][None, :]))
@@ -131,34 +147,41 @@ def test_quartic_roots_against_numpy_roots_and_multiple_roots():
 
 
 def test_natural_frequency_and_damping_ratio():
-    sweep = eigen_sweep(canonical_matrices(BENCHMARK), [5.0])
-    lam = sweep.eigenvalues[0]
-    np.testing.assert_allclose(sweep.natural_frequency[0], np.abs(lam))
-    np.testing.assert_allclose(sweep.damping_ratio[0], -lam.real / np.abs(lam))
+    modes = follow_modes(model(BENCHMARK), [5.0])
+    lam = modes.eigenvalues[0]
+    np.testing.assert_allclose(modes.natural_frequency[0], np.abs(lam))
+    np.testing.assert_allclose(modes.damping_ratio[0], -lam.real / np.abs(lam))
     weave = lam[np.abs(lam.imag) > 0][0]
     assert abs(weave) == pytest.approx(np.hypot(-0.77534188219585, 4.46486771378823), abs=1e-12)
 
 
-def test_vectorised_assignment_is_the_optimal_assignment():
-    m = canonical_matrices(thesis_set("Cargo load", "No Rider"))
+def test_tracking_is_the_optimal_assignment_that_keeps_conjugate_pairs():
+    """Each step of the tracking is the cheapest of the 24 permutations of four roots among those
+    that break no conjugate pair (checked by brute force, without the tracking's own penalty)."""
+    m = model(thesis_set("Cargo load", "No Rider"))
     sweep = eigen_sweep(m, speed_grid())
-    costs = step_costs(sweep)
-    perms = best_permutations(costs, sweep.eigenvalues)
+    values, vectors = sweep.eigenvalues, sweep.eigenvectors
+    plain = step_costs(values, vectors) - 10.0 * ((np.sign(values.imag)[:-1, :, None]
+                                                   * np.sign(values.imag)[1:, None, :]) < 0)
+    order = track(values, vectors)
+    part = partners(values)
     every = np.array(list(permutations(range(4))))
-    valid = pair_violations(sweep.eigenvalues, every) == 0
-    for k, (c, perm) in enumerate(zip(costs, perms)):
-        chosen = c[np.arange(4), perm].sum()
-        assert chosen == pytest.approx(min(c[np.arange(4), q].sum() for q in every[valid[k]]), abs=1e-12)
-        rows, cols = linear_sum_assignment(c)
-        if valid[k][np.flatnonzero((every == cols).all(axis=1))[0]]:
-            assert c[rows, cols].sum() == pytest.approx(chosen, abs=1e-12)
+    for k in range(len(values) - 1):
+        step = np.empty(4, dtype=int)
+        step[order[k]] = order[k + 1]                      # root i at speed k -> step[i] at k + 1
+
+        def keeps_pairs(q):
+            return all(part[k + 1, q[i]] == q[part[k, i]] for i in range(4)
+                       if part[k, i] != i and part[k + 1, q[i]] != q[i])
+        best = min(plain[k][np.arange(4), q].sum() for q in every if keeps_pairs(q))
+        assert keeps_pairs(step) and plain[k][np.arange(4), step].sum() == pytest.approx(best, abs=1e-12)
 
 
 def test_a_conjugate_pair_passing_a_real_root_stays_a_pair():
     # Jamis + No Hands on the steel frame: near 6.7 m/s the weave pair passes within 0.44 1/s
     # of the capsize root; on the 0.05 grid the nearest-value assignment would swap a member
-    modes = follow_modes(with_frame_stiffness(canonical_matrices(thesis_set("Jamis", "No Hands")),
-                                              stiffness("Jamis", "Steel")), speed_grid(6.5, 7.0, 0.05))
+    modes = follow_modes(model(thesis_set("Jamis", "No Hands"), stiffness("Jamis", "Steel")),
+                         speed_grid(6.5, 7.0, 0.05))
     np.testing.assert_allclose(modes["weave 1"], modes["weave 2"].conj(), atol=1e-12)
     assert np.all(modes["capsize"].imag == 0)
 
@@ -178,7 +201,7 @@ def test_tracking_on_the_thesis_grid_agrees_with_a_five_times_finer_grid():
     times less per step (a wrong assignment on either grid shows up as a difference)."""
     coarse_v, fine_v = speed_grid(), speed_grid(0, 30, 0.01)
     for name, p, S in all_thesis_sets():
-        m = with_frame_stiffness(canonical_matrices(p), S)
+        m = model(p, S)
         coarse, fine = follow_modes(m, coarse_v), follow_modes(m, fine_v)
         for label in coarse.labels:
             a, b = coarse[label], fine[label][::5]
@@ -188,7 +211,7 @@ def test_tracking_on_the_thesis_grid_agrees_with_a_five_times_finer_grid():
 def test_labels_follow_the_physics_not_the_solver_order():
     # riderless Jamis: caster and capsize merge at 0.4 m/s and split at 2.15 m/s; after the
     # split capsize is the slow root that goes (marginally) unstable, caster stays stable
-    modes = follow_modes(canonical_matrices(thesis_set("Jamis", "No Rider")), speed_grid())
+    modes = follow_modes(model(thesis_set("Jamis", "No Rider")), speed_grid())
     v = modes.speeds
     split = (v > 2.2)
     assert np.all(modes["capsize"][split].real > modes["caster"][split].real)
@@ -197,13 +220,13 @@ def test_labels_follow_the_physics_not_the_solver_order():
     assert np.all(modes["capsize"][merged].imag != 0)
     assert modes["capsize"][-1].real > 0 and modes["caster"][-1].real < -10
     # riderless Cargo: weave 1 and capsize form one oscillation at all speeds (thesis Sec. 4.4)
-    modes = follow_modes(canonical_matrices(thesis_set("Cargo", "No Rider")), speed_grid())
+    modes = follow_modes(model(thesis_set("Cargo", "No Rider")), speed_grid())
     np.testing.assert_allclose(modes["weave 1"], modes["capsize"].conj(), atol=1e-12)
     assert np.all(modes["weave 1"].imag > 0)
     assert np.all(modes["weave 2"].imag == 0) and np.all(modes["caster"].real < 0)
     # the same labels whether or not the sweep starts at standstill
-    later = follow_modes(canonical_matrices(BENCHMARK), np.linspace(3, 8, 11))
-    whole = follow_modes(canonical_matrices(BENCHMARK), np.linspace(0, 8, 33))
+    later = follow_modes(model(BENCHMARK), np.linspace(3, 8, 11))
+    whole = follow_modes(model(BENCHMARK), np.linspace(0, 8, 33))
     for label in later.labels:
         np.testing.assert_allclose(later[label], whole[label][12::2], atol=1e-12)
 
@@ -212,30 +235,30 @@ def test_zero_eigenvalues_at_standstill_do_not_break_tracking():
     m = canonical_matrices(BENCHMARK)
     # make g K0 singular: one static mode neutral, two roots exactly 0 at v = 0
     w, V = np.linalg.eigh(m.K0)
-    singular = m.replace(K0=V @ np.diag([0.0, w[1]]) @ V.T)
+    singular = from_matrices(m.replace(K0=V @ np.diag([0.0, w[1]]) @ V.T))
     modes = follow_modes(singular, speed_grid(0, 10, 0.05))
     assert np.all(np.isfinite(modes.eigenvalues))
     assert sorted(np.abs(modes.eigenvalues[0])) [:2] == [0.0, 0.0]
     assert np.all(np.isfinite(modes.eigenvectors))
-    st = stability(singular, speed_grid(0, 10, 0.05))
+    st = analyse(singular, speed_grid(0, 10, 0.05))
     assert all(np.isfinite(c.speed) for c in st.crossings)
 
 
 def test_several_crossings_are_all_reported():
     # loaded Cargo, no rider: weave becomes stable near 7.75 m/s; the pair splits and one of
     # its real roots (tracked as weave 1) turns unstable near 22.1 m/s: a capsize-like crossing
-    st = stability(canonical_matrices(thesis_set("Cargo load", "No Rider")))
+    st = analyse(model(thesis_set("Cargo load", "No Rider")))
     dirs = {label: [c.direction for c in st.mode_crossings(label)] for label in st.modes.labels}
     assert dirs["weave 1"] == ["stabilising", "destabilising"]
     assert dirs["weave 2"] == ["stabilising"]
     w, c = st.weave_speeds, st.capsize_speeds
     assert len(w) == 1 and 7.70 < w[0] < 7.75 and len(c) == 1 and 22.05 < c[0] < 22.15
-    assert st.ranges["strict"]["exact"] == [[w[0], c[0]]]
+    assert st.ranges["strict"]["exact"] == ((w[0], c[0]),)
 
 
 def test_exact_ranges_lie_between_the_grid_points():
     for name, p, S in sets():
-        st = stability(with_frame_stiffness(canonical_matrices(p), S))
+        st = analyse(model(p, S))
         for ranges in [st.ranges[c] for c in ("strict", "marginal")] + \
                 [st.mode_ranges[m][c] for m in st.mode_ranges for c in ("strict", "marginal")]:
             assert len(ranges["exact"]) == len(ranges["grid"]), name
@@ -260,7 +283,7 @@ def test_frame_flexibility():
 
 
 def test_result_objects_serialise():
-    st = stability(canonical_matrices(BENCHMARK), speed_grid(0, 10, 0.5))
+    st = analyse(model(BENCHMARK), speed_grid(0, 10, 0.5))
     d = st.to_dict()
     assert set(d) >= {"weave_speeds", "capsize_speeds", "ranges", "modes"}
     assert set(d["ranges"]) == {"strict", "marginal"} and set(d["ranges"]["strict"]) == {"exact", "grid"}
@@ -272,7 +295,7 @@ def test_result_objects_serialise():
 
 
 def test_speeds_must_increase():
-    m = canonical_matrices(BENCHMARK)
+    m = model(BENCHMARK)
     for bad in ([1.0, 0.5], [-1.0, 2.0], [0.0, np.nan]):
         with pytest.raises(ValueError):
             follow_modes(m, bad)
@@ -287,7 +310,7 @@ def test_intersect():
 
 def test_weave_ranges_in_json_are_where_both_weave_roots_are_stable():
     """Issue 4's JSON: ``modes.weave`` = intersection of the two weave roots' ranges."""
-    st = stability(canonical_matrices(BENCHMARK))
+    st = analyse(model(BENCHMARK))
     doc = st.to_dict()
     assert set(doc["modes"]) == {"weave", "weave 1", "weave 2", "capsize", "caster"}
     strict = doc["modes"]["weave"]["strict"]

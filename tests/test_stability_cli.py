@@ -9,8 +9,6 @@ import pytest
 
 from bikemass.cli.main import main
 from bikemass.core.paths import frames_dir
-from bikemass.models.canonical import canonical_matrices
-from bikemass.analysis.stability import follow_modes, speed_grid
 from thesis_sets import RIDERS, thesis_set
 
 BENCHMARK = str(frames_dir() / "benchmark.yaml")

@@ -24,8 +24,8 @@ KEYS = {"bike", "rider", "stiffness", "mode", "criterion", "start", "stop", "ran
 
 def test_progress_bar_counts_every_step(study):
     bar = study[3]
-    assert len(bar.labels) == bar.total == 73 + 1 + 1 + 2 * 3 + 1
-    assert bar.labels[-1] == "frame models"
+    assert len(bar.labels) == bar.total == 73 + 1 + 1 + 2 * 3 + 1 + 1
+    assert bar.labels[-2:] == ["frame models", "rider in the loop"]
 
 
 def read_csv(path):
@@ -228,3 +228,18 @@ def test_report_html_is_one_self_contained_file_with_the_figures(study, tmp_path
     assert order == sorted(order)
     findings = text[order[0]:order[1]]
     assert "of 894</b>" in findings and "Jamis, rigid frame" in findings and findings.count("<img") >= 3
+
+
+def test_handling_table_answers_for_every_rider_position(study):
+    """The rider in the loop (study/handling.py): one row per position on the Jamis and the Cargo;
+    on the Jamis every position has tuned gains that close the loop from 5 m/s on, and its HQM
+    peak falls with speed (Hess, Moore & Hubbard 2012: speed dominates the handling qualities)."""
+    header, rows = read_csv(study[0] / "handling.csv")
+    assert header[:3] == ["bicycle", "rider", "self-stable (m/s)"] and len(rows) == 10
+    jamis = [r for r in rows if r[0] == "Jamis"]
+    columns = [header.index(f"HQM {v} m/s") for v in (5, 6, 8, 10)]
+    for row in jamis:
+        peaks = [float(row[c]) for c in columns]
+        assert peaks == sorted(peaks, reverse=True) and peaks[-1] < 5
+    report = (study[0] / "report.md").read_text()
+    assert "## Handling: a rider in the loop" in report and "Sec. 6.1" in report

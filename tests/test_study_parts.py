@@ -6,10 +6,10 @@ import pytest
 
 from bikemass.scenario import catalog
 from bikemass.bicycle import bicycle_parameters
-from bikemass.analysis.stability import stability
-from bikemass.models.flexible_static import with_frame_stiffness
+from bikemass.analysis.engine.stability import analyse
+from bikemass.models.whipple import whipple_model
 from bikemass.study import figures
-from bikemass.study.configurations import Configuration, configurations
+from bikemass.study.configurations import RIDERS, Configuration, configurations
 from bikemass.study.explain import PrintedInputs, half_unit_of_stiffness, with_rider
 from bikemass.study.runs import CORRECTED, THESIS, Inputs, evaluate
 
@@ -32,13 +32,13 @@ def test_73_configurations():
                                     Configuration("cargo-loaded", "aero-tuck", "titanium")])
 def test_grid_only_ranges_equal_the_stability_cores_grid_ranges(inputs, config):
     """The thesis run reads ranges off tracked modes without the exact roots: same grid ranges."""
-    m, S = inputs.matrices(THESIS, config), inputs.stiffness(THESIS, config)
-    quick = evaluate(m, config, None, S, exact=False).ranges["grid"]
-    full = stability(with_frame_stiffness(m, S))
+    p, S = inputs.parameters(THESIS, config), inputs.stiffness(THESIS, config)
+    quick = evaluate(config, p, S, exact=False).ranges["grid"]
+    full = analyse(whipple_model(p, S))
     for criterion in ("strict", "marginal"):
-        assert quick[criterion]["overall"] == full.ranges[criterion]["grid"]
+        assert tuple(map(tuple, quick[criterion]["overall"])) == full.ranges[criterion]["grid"]
         for label in ("weave 1", "weave 2", "capsize", "caster"):
-            assert quick[criterion][label] == full.mode_ranges[label][criterion]["grid"]
+            assert tuple(map(tuple, quick[criterion][label])) == full.mode_ranges[label][criterion]["grid"]
 
 
 def test_runs_build_parameters_as_the_catalog_does(inputs):
@@ -79,7 +79,7 @@ def test_half_units_of_printed_values():
 
 def test_one_configurations_figures(tmp_path, inputs):
     c = Configuration("jamis", "relaxed", "infinite")
-    outcomes = {c: evaluate(inputs.matrices(THESIS, c), c, None, None, exact=True)}
+    outcomes = {c: evaluate(c, inputs.parameters(THESIS, c), None, exact=True)}
     jobs = (figures.eigenvalue_jobs(outcomes, tmp_path) + figures.critical_jobs(outcomes, tmp_path)[:1]
             + figures.pose_jobs(inputs.bicycle("jamis"), {"relaxed": inputs.rider("relaxed")}, tmp_path))
     written = [figures.run_job(job) for job in jobs]
@@ -95,8 +95,9 @@ def test_figure_count_matches_the_jobs(tmp_path, inputs):
     from types import SimpleNamespace
 
     from bikemass.study.pipeline import figure_jobs
-    empty = {"grid": {"strict": {"overall": []}, "marginal": {"overall": []}}}
+    empty = {kind: {"strict": {"overall": []}, "marginal": {"overall": []}} for kind in ("grid", "exact")}
     run = {c: SimpleNamespace(modes=None, ranges=empty, weave_speeds=None) for c in configurations()}
-    jobs = figure_jobs(SimpleNamespace(runs={"thesis": run, "corrected": run}), inputs, tmp_path)
-    assert len(jobs) == figures.figure_count() == 2 * 3 + 73 + 5
+    handling = {bike: {rider: None for rider in RIDERS[1:]} for bike in ("jamis", "cargo")}
+    jobs = figure_jobs(SimpleNamespace(runs={"thesis": run, "corrected": run}, handling=handling), inputs, tmp_path)
+    assert len(jobs) == figures.figure_count() == 2 * 3 + 73 + 5 + 2
     assert len({figures.job_path(job) for job in jobs}) == len(jobs)          # every figure has its own file

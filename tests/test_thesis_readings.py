@@ -100,7 +100,7 @@ def test_cargo_titanium_kdd_erratum_in_the_stability_tables():
             S = np.array(inputs.stiffness(THESIS, c), float)
             assert S[1, 1] == 2207.0
             S[1, 1] = 2007.0
-            printed[c] = evaluate(inputs.matrices(THESIS, c), c, inputs.parameters(THESIS, c), S, False)
+            printed[c] = evaluate(c, inputs.parameters(THESIS, c), S, False)
 
     def misses(result):
         return [e for e in compare(result) if not e.match]
@@ -115,10 +115,10 @@ def test_cargo_titanium_kdd_erratum_in_the_stability_tables():
 def test_prose_numbers_that_no_table_holds():
     """docs/thesis.md#prose-that-disagrees-with-the-tables."""
     from bikemass.scenario import catalog
-    from bikemass.models.canonical import canonical_matrices
-    from bikemass.analysis.stability import follow_modes
+    from bikemass.analysis.engine.modes import follow_modes
+    from bikemass.models.whipple import whipple_model
 
-    modes = follow_modes(canonical_matrices(catalog.parameters("benchmark")), np.arange(0, 30.001, 0.01))
+    modes = follow_modes(whipple_model(catalog.parameters("benchmark")), np.arange(0, 30.001, 0.01))
     capsize = modes["capsize"].real
     assert capsize[-1] == pytest.approx(0.0763, abs=5e-5)          # "maximum 0.0763": its value at 30 m/s
     assert capsize.max() == pytest.approx(0.161, abs=1e-3)          # the maximum, near 10 m/s

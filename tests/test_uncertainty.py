@@ -57,15 +57,15 @@ def test_linear_eigenvalue_std_equals_differences():
     p = catalog.parameters("benchmark")
     spreads = {"c": Spread("normal", 0.002), "lam": Spread("normal", 0.004), "mB": Spread("normal", 0.3)}
     r = propagate(Model("benchmark"), spreads, speeds=np.array([3.0, 5.0, 8.0]))
-    from bikemass.models.canonical import canonical_matrices
-    from bikemass.analysis.stability import follow_modes
+    from bikemass.analysis.engine.modes import follow_modes
+    from bikemass.models.whipple import whipple_model
     speeds = np.concatenate([np.linspace(0, 3, 61), [5.0, 8.0]])
     fd = {}
     for k, s in spreads.items():
         x = getattr(p, k)
         h = 1e-6 * abs(x)
-        a = follow_modes(canonical_matrices(p.replace(**{k: x + h})), speeds).eigenvalues[-3:]
-        b = follow_modes(canonical_matrices(p.replace(**{k: x - h})), speeds).eigenvalues[-3:]
+        a = follow_modes(whipple_model(p.replace(**{k: x + h})), speeds).eigenvalues[-3:]
+        b = follow_modes(whipple_model(p.replace(**{k: x - h})), speeds).eigenvalues[-3:]
         fd[k] = (a - b) / (2 * h) * s.std
     rss_re = np.sqrt(sum(d.real ** 2 for d in fd.values()))
     for i, label in enumerate(("weave 1", "weave 2", "capsize", "caster")):

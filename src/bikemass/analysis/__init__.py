@@ -1,2 +1,2 @@
 """Analyses over many bicycles or parameters: exact sensitivities of the critical speeds,
-uncertainty propagation and design sweeps.  Built on :mod:`bikemass.analysis.stability`."""
+uncertainty propagation and design sweeps.  Built on the one engine, :mod:`bikemass.analysis.engine`."""

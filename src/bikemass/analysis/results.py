@@ -1,26 +1,26 @@
 """The linear stability of a bicycle as one typed, immutable result (``bm.stability``).
 
-:func:`stability` takes a benchmark parameter set and an optional rear-frame stiffness S,
-builds the Whipple model's matrices (rigid, or with S in series with gravity, Williams
-2015 Eq. 3.27-3.30), follows the eigenvalues over a speed grid, labels the modes, and
-finds critical speeds and stable ranges (:mod:`bikemass.analysis.stability` does the work; the
-:class:`StabilityResult` carries its answer through unchanged as ``result.analysis``).
+:func:`stability` takes a benchmark parameter set and an optional rear-frame stiffness S (or
+any :class:`~bikemass.models.linear.LinearModel`), builds the model (the Whipple bicycle, rigid
+or with S in series with gravity, Williams 2015 Eq. 3.27-3.30), and hands it to the one engine
+(:mod:`bikemass.analysis.engine`): modes followed and named over a speed grid, exact critical
+speeds and stable ranges.
 """
-
-from dataclasses import dataclass
-
-import numpy as np
-
-from ..core.choices import RIGID
-from ..core.errors import InputError, InputTypeError, wrong_type
-from ..core.frozen import freeze, readonly, short_repr
+from ..models.parameters import BenchmarkParameters
 from ..models.canonical import CanonicalMatrices, canonical_matrices
 from ..models.flexible_static import with_frame_stiffness
-from ..models.parameters import BenchmarkParameters
 from ..models.plausibility import check_parameters
+from ..core.errors import wrong_type
+from ..core.choices import RIGID
+from ..core.errors import InputTypeError
 from ..scenario.catalog import stiffness_matrix
-from .stability import follow_modes, speed_grid, stability as analyse
-from .stability.modes import check_speeds
+from ..core.errors import InputError
+from .engine.stability import speed_grid
+from .engine.modes import check_speeds
+from ..models.linear import LinearModel
+from ..models.whipple import whipple_model
+from .engine.modes import follow_modes
+from .engine.stability import analyse
 
 DEFAULT_MARGINAL = 2.0
 """Modulus (rad/s) below which an unstable eigenvalue counts as marginally stable (the thesis's)."""
@@ -32,7 +32,7 @@ def matrices(params, stiffness=None):
     Parameters
     ----------
     params : BenchmarkParameters or CanonicalMatrices
-        From :func:`bikemass.parameters` (SI); matrices are taken as they are.
+        From :func:`bikemass.models.parameters` (SI); matrices are taken as they are.
     stiffness : array_like of shape (2, 2), optional
         Rear-frame stiffness S (N m/rad) from :func:`bikemass.stiffness`; ``None`` = rigid.
 
@@ -42,6 +42,7 @@ def matrices(params, stiffness=None):
         ``M`` (kg m^2), ``C1`` (kg m^2), ``K0`` (kg m), ``K2`` (kg m), ``g`` (m/s^2); with S,
         ``g K0`` is the static stiffness ``gK0 - gK0^T (gK0 + S)^-1 gK0``.
     """
+
     if isinstance(params, CanonicalMatrices):
         base = params
     elif isinstance(params, BenchmarkParameters):
@@ -83,138 +84,51 @@ def _speeds(values):
     return check_speeds(values)
 
 
+def linear_model(params, stiffness=None):
+    """The linear model of a parameter set: the Whipple bicycle, rigid or with the quasi-static
+    flexible rear frame of stiffness S (a :class:`~bikemass.models.linear.LinearModel` is
+    returned as it is).
+
+    Parameters
+    ----------
+    params : BenchmarkParameters or LinearModel
+        From :func:`bikemass.models.parameters` (SI).
+    stiffness : array_like of shape (2, 2), optional
+        Rear-frame stiffness S (N m/rad) from :func:`bikemass.stiffness`; ``None`` = rigid.
+
+    Returns
+    -------
+    LinearModel
+        States roll-angle, steer-angle, roll-rate, steer-rate, heading, lateral; inputs
+        roll-torque, steer-torque; ``A(v)``, ``B(v)`` as polynomials in speed.
+    """
+    if isinstance(params, LinearModel):
+        if stiffness is not None:
+            raise InputError("stiffness", "(matrix)", "no stiffness with a LinearModel (it is built in)")
+        return params
+    if not isinstance(params, BenchmarkParameters):
+        raise wrong_type("params", params, "params must be BenchmarkParameters (bm.parameters) or a LinearModel")
+    return whipple_model(check_parameters(params, "params"), _stiffness(stiffness))
+
+
 def eigenvalues(params, stiffness=None, speeds=None):
-    """Eigenvalues over speed, followed across speed and labelled.
+    """Eigenvalues over speed, followed across speed and named.
 
     Parameters
     ----------
     params, stiffness
-        As for :func:`matrices`.
+        As for :func:`linear_model`.
     speeds : array_like of shape (n,), optional
         Increasing speeds >= 0 (m/s); default 0..30 m/s in 0.05 m/s steps.
 
     Returns
     -------
     Modes
-        ``.speeds`` (n,) m/s, ``.labels`` (weave 1, weave 2, capsize, caster),
-        ``.eigenvalues`` (n, 4) complex 1/s, ``.eigenvectors`` (n, 4, 4); ``modes["capsize"]``
+        ``.speeds`` (n,) m/s, ``.labels`` (weave 1, weave 2, capsize, caster, ...),
+        ``.eigenvalues`` (n, m) complex 1/s, ``.eigenvectors`` (n, N, m); ``modes["capsize"]``
         is one column.  Arrays are read-only.
     """
-    modes = follow_modes(matrices(params, stiffness), _speeds(speeds))
-    for a in (modes.speeds, modes.eigenvalues, modes.eigenvectors):
-        a.setflags(write=False)
-    return modes
-
-
-@dataclass(frozen=True, eq=False, repr=False)
-class StabilityResult:
-    """Eigenvalues over speed, critical speeds and stable ranges of one bicycle.
-
-    Attributes
-    ----------
-    analysis : Stability
-        What :func:`bikemass.analysis.stability.stability` returned (modes, crossings, ranges).
-    stiffness : numpy.ndarray of shape (2, 2) or None
-        The rear-frame stiffness S used (N m/rad), ``None`` for a rigid frame.
-    matrices : CanonicalMatrices
-        The model's matrices (S included).
-
-    Speeds are m/s, eigenvalues 1/s (complex), arrays read-only, ranges tuples of
-    ``(start, stop)`` pairs.  Criteria: ``strict`` (every real part < 0) and
-    ``marginal`` (also counts an eigenvalue with modulus below :attr:`marginal` rad/s).
-    """
-
-    analysis: object
-    stiffness: np.ndarray
-    matrices: object
-
-    def __post_init__(self):
-        object.__setattr__(self, "stiffness", readonly(self.stiffness))
-        for a in (self.modes.speeds, self.modes.eigenvalues, self.modes.eigenvectors):
-            a.setflags(write=False)
-
-    @property
-    def modes(self):
-        """The labelled modes (:class:`~bikemass.analysis.stability.Modes`): ``modes["weave 1"]`` is (n,)."""
-        return self.analysis.modes
-
-    @property
-    def speeds(self):
-        """Speeds (m/s), shape (n,)."""
-        return self.modes.speeds
-
-    @property
-    def eigenvalues(self):
-        """Eigenvalues (1/s), complex, shape (n, 4); columns in :attr:`labels` order."""
-        return self.modes.eigenvalues
-
-    @property
-    def labels(self):
-        """Column labels of :attr:`eigenvalues`: weave 1, weave 2, capsize, caster."""
-        return tuple(self.modes.labels)
-
-    @property
-    def marginal(self):
-        """Modulus (rad/s) below which an unstable eigenvalue counts as marginally stable."""
-        return self.analysis.marginal
-
-    @property
-    def weave_speeds(self):
-        """Speeds (m/s) where an oscillatory pair crosses ``Re = 0`` (weave-like), ascending."""
-        return tuple(float(v) for v in self.analysis.weave_speeds)
-
-    @property
-    def capsize_speeds(self):
-        """Speeds (m/s) where a real root crosses ``Re = 0`` (capsize-like; also a branch of a
-        split weave pair), ascending."""
-        return tuple(float(v) for v in self.analysis.capsize_speeds)
-
-    @property
-    def caster_speeds(self):
-        """Speeds (m/s) where the root tracked as the caster mode crosses ``Re = 0``, ascending."""
-        return tuple(c.speed for c in self.analysis.mode_crossings("caster"))
-
-    @property
-    def crossings(self):
-        """Every crossing of ``Re = 0`` by speed: :class:`~bikemass.analysis.stability.Crossing` with
-        ``speed`` (m/s), ``kind`` (oscillatory|real: the root that crosses), ``direction``
-        (stabilising|destabilising) and ``mode`` (the tracked label)."""
-        return self.analysis.crossings
-
-    @property
-    def ranges(self):
-        """``{"strict"|"marginal": {"exact"|"grid": ((start, stop), ...)}}``: all modes stable (m/s).
-
-        ``exact`` ends are roots; ``grid`` ends are the first and last stable grid speeds.
-        """
-        return freeze(self.analysis.ranges)
-
-    @property
-    def mode_ranges(self):
-        """``{label: {criterion: {"exact"|"grid": ((start, stop), ...)}}}``: where each mode is stable (m/s)."""
-        return freeze(self.analysis.mode_ranges)
-
-    @property
-    def weave_ranges(self):
-        """``{criterion: {"exact"|"grid": ((start, stop), ...)}}``: where both weave roots are stable (m/s)."""
-        return freeze(self.analysis.weave_ranges)
-
-    @property
-    def stable_speeds(self):
-        """``((start, stop), ...)`` (m/s) where every mode is strictly stable (exact ends)."""
-        return self.ranges["strict"]["exact"]
-
-    def to_dict(self):
-        """Plain data: the ``bikemass stability --format json`` document (without its units)."""
-        return self.analysis.to_dict()
-
-    def __repr__(self):
-        v = self.speeds
-        fmt = lambda xs: "(" + ", ".join(f"{x:.4f}" for x in xs) + ")"
-        return short_repr(self, ("speeds", f"{v[0]:g}..{v[-1]:g} m/s x {len(v)}"),
-                          ("weave_speeds", fmt(self.weave_speeds)), ("capsize_speeds", fmt(self.capsize_speeds)),
-                          ("stable", "(" + ", ".join(f"{a:.4f}..{b:.4f}" for a, b in self.stable_speeds) + ")"),
-                          ("stiffness", "rigid" if self.stiffness is None else "S"))
+    return follow_modes(linear_model(params, stiffness), _speeds(speeds))
 
 
 def stability(params, stiffness=None, speeds=None, marginal=DEFAULT_MARGINAL):
@@ -222,24 +136,30 @@ def stability(params, stiffness=None, speeds=None, marginal=DEFAULT_MARGINAL):
 
     Parameters
     ----------
-    params : BenchmarkParameters or CanonicalMatrices
-        From :func:`bikemass.parameters`.
+    params : BenchmarkParameters or LinearModel
+        From :func:`bikemass.models.parameters`, or any model of the family.
     stiffness : array_like of shape (2, 2), optional
         Rear-frame stiffness S (N m/rad), e.g. ``bm.stiffness(bike, "steel")``; ``None`` = rigid.
     speeds : array_like of shape (n,), optional
         Increasing speeds >= 0 (m/s); default 0..30 m/s in 0.05 m/s steps (the thesis's).
-        Critical speeds are roots (to 1e-13 m/s) between grid speeds.
+        Critical speeds are exact (found without a grid) on the grid's span.
     marginal : float
         Modulus (rad/s) below which an unstable eigenvalue counts as marginally stable.
 
     Returns
     -------
     StabilityResult
-        ``.speeds`` (n,), ``.eigenvalues`` (n, 4) complex, ``.weave_speeds``,
+        ``.speeds`` (n,), ``.eigenvalues`` (n, m) complex, ``.crossings``, ``.weave_speeds``,
         ``.capsize_speeds``, ``.ranges``, ``.mode_ranges``, ``.modes``.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> result = bm.stability(bm.parameters("benchmark"))
+    >>> [round(c.speed, 6) for c in result.crossings]
+    [4.292383, 6.024262]
     """
     if isinstance(marginal, bool) or not isinstance(marginal, (int, float)) or not 0 < marginal < float("inf"):
         raise InputError("marginal", marginal, "a positive finite modulus in rad/s")
     S = _stiffness(stiffness)
-    m = matrices(params, S)
-    return StabilityResult(analyse(m, _speeds(speeds), marginal=marginal), S, m)
+    return analyse(linear_model(params, S), _speeds(speeds), marginal, S)

@@ -9,9 +9,10 @@ and, by the implicit function theorem on ``Re lambda(v, p) = 0``::
 
     d v* / d p = -Re(d lambda / d p) / Re(d lambda / d v)
 
-``dA/dp`` comes from the complex step through the matrix formulas
+``dA/dp`` comes from the complex step through the one model builder
 (:mod:`bikemass.analysis.model`), so every number is exact to rounding: there is no
-finite-difference step anywhere.  Elasticities are ``(p / v*) d v* / d p``
+finite-difference step anywhere.  The critical speeds are the engine's closed form
+(:mod:`bikemass.analysis.engine.closed_form`), the same numbers ``bm.stability`` reports.  Elasticities are ``(p / v*) d v* / d p``
 (per cent change of the speed per per cent change of the parameter).
 """
 
@@ -19,13 +20,17 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.errors import InputError, short, wrong_type
-from ..models.parameters import NAMES, BenchmarkParameters
-from ..models.plausibility import check_parameters
-from ..scenario.inputs import Model, get_path
-from .crossings import OSCILLATORY, REAL, critical_speeds
-from .model import STIFFNESS_ENTRIES, state_matrix_derivatives, stiffness_state_derivatives, system, values_of
+from ..models.parameters import NAMES
+from .engine import closed_form
+from .engine.crossings import OSCILLATORY, REAL
+from .model import STIFFNESS_ENTRIES, model_of, state_matrix_derivatives, stiffness_state_derivatives, values_of
 from .results import _stiffness
+from ..core.errors import InputError, short
+from ..models.parameters import BenchmarkParameters
+from ..models.plausibility import check_parameters
+from ..core.errors import wrong_type
+from ..scenario.inputs import get_path
+from ..scenario.inputs import Model
 
 SPEEDS = {"weave_speed": OSCILLATORY, "capsize_speed": REAL}
 """Output name -> crossing kind (first crossing of that kind on (0, vmax])."""
@@ -39,15 +44,17 @@ def crossing_root(A, kind, frequency):
     return int(np.argmin(np.abs(values - target))), values, X
 
 
-def speed_derivatives(sys_, dA, speed, kind, frequency):
-    """``{name: d speed / d p}`` at a crossing from ``{name: dA/dp}`` (see the module docstring)."""
-    A = np.real(sys_.state_matrix(speed))
+def speed_derivatives(model, dA, speed, kind, frequency):
+    """``{name: d speed / d p}`` at a crossing of ``model`` from ``{name: dA/dp}`` (dynamic blocks;
+    see the module docstring)."""
+    n = model.n_dynamic
+    A = np.real(model.dynamic_matrix(speed))
     i, _, X = crossing_root(A, kind, frequency)
     Y = np.linalg.inv(X)                      # rows: left eigenvectors, normalised so y^H x = 1
 
     def dlam(dM):
         return Y[i] @ dM @ X[:, i]
-    dv = dlam(np.real(sys_.state_matrix_speed_derivative(speed))).real
+    dv = dlam(np.real(model.speed_derivative(speed))[:n, :n]).real
     return {name: float(-dlam(d).real / dv) for name, d in dA.items()}
 
 
@@ -83,18 +90,18 @@ def sensitivity(params, S=None, vmax=30.0, names=NAMES):
     InputError for parameters the model is not defined for, an S that is not symmetric positive
     definite, a ``vmax`` that is not a positive finite speed or ``names`` not among the 26."""
     params, S, names = _checked(params, S, vmax, names)
-    sys_ = system(values_of(params), S)
-    found = critical_speeds(sys_, vmax)
+    model = model_of(values_of(params), S)
+    found = closed_form.axis_crossings(model, 0.0, vmax)
     speeds, derivs = {}, {}
     for key, kind in SPEEDS.items():
-        crossing = next((c for c in found.crossings if c.kind == kind), None)
-        speeds[key] = None if crossing is None else crossing.speed
+        crossing = next(((speed, w) for speed, k, w in found if k == kind), None)
+        speeds[key] = None if crossing is None else crossing[0]
         if crossing is None:
             derivs[key] = {n: None for n in (*names, *(STIFFNESS_ENTRIES if S is not None else ()))}
             continue
-        dA = {**state_matrix_derivatives(params, crossing.speed, S, names),
-              **stiffness_state_derivatives(params, crossing.speed, S)}
-        derivs[key] = speed_derivatives(sys_, dA, crossing.speed, kind, crossing.frequency)
+        dA = {**state_matrix_derivatives(params, crossing[0], S, names),
+              **stiffness_state_derivatives(params, crossing[0], S)}
+        derivs[key] = speed_derivatives(model, dA, crossing[0], kind, crossing[1])
     d_s = None
     if S is not None:
         d_s = {key: {k: d.pop(k, None) for k in STIFFNESS_ENTRIES} for key, d in derivs.items()}
@@ -118,7 +125,7 @@ def _checked(params, S, vmax, names):
 
 def sensitivity_figure(result, title="", size=None):
     """Horizontal bar chart of the elasticities of both speeds (a matplotlib Figure; ``size`` in inches)."""
-    # lazy: matplotlib is slow to import (more than numpy); only the figure needs it
+    # lazy: matplotlib only for a figure
     from matplotlib.figure import Figure
 
     fig = Figure(figsize=size or (10, 7.5), layout="constrained")

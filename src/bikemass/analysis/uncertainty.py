@@ -25,11 +25,14 @@ import numpy as np
 
 from ..core.errors import InputError
 from ..models.parameters import NAMES
-from ..scenario.inputs import Model, get_path
-from .crossings import critical_speeds
-from .model import MATRICES, STEP, system, values_of
+from .engine.critical import critical_speeds
+from .engine.modes import follow_modes
+from .engine.stability import speed_grid
+from .model import MATRICES, STEP, model_of, values_of
 from .sensitivity import SPEEDS, speed_derivatives
-from .stability import follow_modes, speed_grid
+from ..scenario.inputs import get_path
+from ..scenario.inputs import Model
+from ..plots.stability import COLOURS, OTHER_COLOUR
 
 DISTRIBUTIONS = ("normal", "uniform")
 
@@ -85,12 +88,18 @@ def directions(model, spreads, step=1e-4):
     return out
 
 
-def _directional_system(params, S, dp, dS):
-    """:class:`~bikemass.analysis.model.System` at ``params + i h dp``, ``S + i h dS`` (complex step)."""
+def _directional_model(params, S, dp, dS):
+    """The model at ``params + i h dp``, ``S + i h dS`` (complex step) and its values."""
     base = values_of(params)
     values = {n: base[n] + 1j * STEP * dp[n] for n in NAMES}
     Sc = None if S is None else np.asarray(S, dtype=float) + 1j * STEP * (0 if dS is None else dS)
-    return system(values, Sc)
+    return model_of(values, Sc), values
+
+
+def matrices_of(model, g):
+    """``{"M", "C1", "K0", "K2"}`` of a Whipple model (``K0`` = static stiffness / g)."""
+    mech = model.mechanics
+    return {"M": mech.M, "C1": mech.C[1], "K0": mech.K[0] / g, "K2": mech.K[2]}
 
 
 @dataclass(frozen=True)
@@ -117,26 +126,22 @@ class Propagation:
 def linear_derivatives(params, S, dirs, speeds):
     """``{key: {"matrices": {name: 2x2}, "eig": (n, 4) complex, "weave_speed": float|None, ...}}``
     and the nominal modes, critical speeds."""
-    sys0 = system(values_of(params), S)
-    modes = follow_modes(sys0.canonical(), speeds)
+    model0 = model_of(values_of(params), S)
+    modes = follow_modes(model0, speeds)
     X = modes.eigenvectors                                 # (n, 4, 4), columns = labelled modes
     Y = np.linalg.inv(X)
-    found = critical_speeds(sys0, vmax=max(float(np.max(speeds)), 30.0))
+    found = critical_speeds(model0, max(float(np.max(speeds)), 30.0))
     crossings = {key: next((c for c in found.crossings if c.kind == kind), None) for key, kind in SPEEDS.items()}
     v = np.asarray(speeds, dtype=float)
     out = {}
     for key, (dp, dS) in dirs.items():
-        sc = _directional_system(params, S, dp, dS)
-        d = {"matrices": {m: np.imag(getattr(sc, m)) / STEP for m in MATRICES}}
-        Minv = np.linalg.inv(sc.M)
-        dK, dK2, dC = (np.imag(Minv @ x) / STEP for x in (sc.K, sc.K2, sc.C1))
-        dA = np.zeros((len(v), 4, 4))
-        dA[:, 2:, :2] = -(dK + v[:, None, None] ** 2 * dK2)
-        dA[:, 2:, 2:] = -v[:, None, None] * dC
+        mc, values = _directional_model(params, S, dp, dS)
+        d = {"matrices": {m: np.imag(x) / STEP for m, x in matrices_of(mc, values["g"]).items()}}
+        dA = np.imag(mc.dynamic_matrix(v)) / STEP
         d["eig"] = np.einsum("nij,njk,nki->ni", Y, dA, X)
         for name, c in crossings.items():
             d[name] = None if c is None else speed_derivatives(
-                sys0, {key: np.imag(sc.state_matrix(c.speed)) / STEP}, c.speed, SPEEDS[name], c.frequency)[key]
+                model0, {key: np.imag(mc.dynamic_matrix(c.speed)) / STEP}, c.speed, SPEEDS[name], c.frequency)[key]
         out[key] = d
     return out, modes, crossings
 
@@ -149,12 +154,12 @@ def propagate(model, spreads, method="linear", samples=1000, seed=0, speeds=None
     params, S = model.build()
     sigma = {k: s.std for k, s in spreads.items()}
     derivs, modes, crossings = linear_derivatives(params, S, directions(model, spreads, step), speeds)
-    nominal = system(values_of(params), S)
+    nominal = matrices_of(model_of(values_of(params), S), params.g)
 
     def rss(get):
         return np.sqrt(sum((np.asarray(get(derivs[k]), dtype=float) * sigma[k]) ** 2 for k in spreads))
 
-    matrices = {m: {"nominal": np.real(getattr(nominal, m)), "std": rss(lambda d: d["matrices"][m])}
+    matrices = {m: {"nominal": np.real(nominal[m]), "std": rss(lambda d: d["matrices"][m])}
                 for m in MATRICES}
     speed_out = {}
     for name, c in crossings.items():
@@ -220,14 +225,14 @@ def _montecarlo(model, spreads, n, seed, speeds, matrices, speed_out, eig_modes,
         except InputError as exc:            # a draw the model is not defined for: the spread is too wide
             raise InputError(exc.source, exc.key, f"spreads whose Monte Carlo draws stay valid (draw {j + 1} of "
                              f"{n}: {exc.expected})") from None
-        s = system(values_of(p), S)
-        for m in MATRICES:
-            mats[m].append(np.real(getattr(s, m)))
-        found = critical_speeds(s)
+        m_j = model_of(values_of(p), S)
+        for m, x in matrices_of(m_j, p.g).items():
+            mats[m].append(np.real(x))
+        found = critical_speeds(m_j)
         for name in SPEEDS:
             v = getattr(found, name)
             crit[name].append(np.nan if v is None else v)
-        reals.append(follow_modes(s.canonical(), speeds).eigenvalues.real)
+        reals.append(follow_modes(m_j, speeds).eigenvalues.real)
     for m in MATRICES:
         a = np.array(mats[m])
         matrices[m] = {**matrices[m], "linear_std": matrices[m]["std"], "std": a.std(axis=0, ddof=1),
@@ -254,9 +259,8 @@ def _montecarlo(model, spreads, n, seed, speeds, matrices, speed_out, eig_modes,
 def uncertainty_figure(result, title="", size=None):
     """Real parts against speed with +-2 std bands (linear) and 95 % Monte Carlo bands, and the
     Monte Carlo histograms of the critical speeds (a matplotlib Figure)."""
-    # lazy: matplotlib (plots/ loads it) is slow to import; only the figure needs it
+    # lazy: matplotlib only for a figure
     from matplotlib.figure import Figure
-    from ..plots.stability import COLOURS, OTHER_COLOUR
 
     fig = Figure(figsize=size or (11, 5), layout="constrained")
     axes = fig.subplots(1, 2, width_ratios=(2, 1))

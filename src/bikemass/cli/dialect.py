@@ -103,7 +103,7 @@ def add_speeds(p):
 def parse_speeds(text, max_speeds=None):
     """``"start:stop:step"`` -> speed grid (m/s); InputError if malformed or over ``max_speeds``."""
     # lazy: the library loads numpy; bikemass --help must not
-    from ..analysis.stability import speed_grid
+    from ..analysis.engine.stability import speed_grid
 
     limit = max_speeds or MAX_SPEEDS
     expected = (f"START:STOP:STEP in m/s with 0 <= START < STOP <= {MAX_SPEED:g}, "

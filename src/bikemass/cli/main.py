@@ -22,6 +22,7 @@ COMMAND_MODULES = (
     "study",
     "serve",
     "analysis",
+    "handling",
 )
 """Modules under ``bikemass.cli`` whose ``register(subparsers)`` adds sub-commands."""
 

@@ -56,8 +56,10 @@ def angle(limit):
     return number(-limit, limit, what="an angle in degrees")
 
 
-OUTPUT_OPTIONS = ("output", "plot", "out")
+OUTPUT_OPTIONS = ("output", "plot", "out", "lane_change")
 """Attributes of parsed arguments that name an output file (a folder where a command says so)."""
+FIGURE_OPTIONS = ("plot", "lane_change")
+"""Those of them that name a figure file."""
 
 
 def check_outputs(args):
@@ -73,10 +75,10 @@ def check_outputs(args):
         path = getattr(args, key, None)
         if not isinstance(path, str) or not path:
             continue
-        option = "-o" if key == "output" else f"--{key}"
+        option = "-o" if key == "output" else f"--{key.replace('_', '-')}"
         if key in folders:
             check_folder(path, option=option)
-        elif key == "plot":
+        elif key in FIGURE_OPTIONS:
             _check_figure_name(path, option)
             check_output(path, None, inputs, "a figure file", option)
         else:

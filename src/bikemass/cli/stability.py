@@ -213,18 +213,16 @@ KIND_WORDS = {"oscillatory": "an oscillatory pair (weave-like)", "real": "a real
 
 
 def _crossing_rows(result):
-    """One row per crossing speed: a pair's two members on one row, named by what the root is."""
+    """One row per crossing: speed, what crosses, direction, the tracked mode (a pair by its family),
+    and what that root is named at the nearest grid speed."""
     # lazy: the library loads numpy; bikemass --help must not
     import numpy as np
 
-    names = result.modes.names()
+    names, labels = result.modes.names(), result.modes.labels
     rows = []
     for c in result.crossings:
-        if rows and abs(rows[-1][0] - c.speed) < 1e-8 and rows[-1][2] == c.direction:
-            rows[-1][3] += f", {c.mode}"
-            continue
         k = min(np.searchsorted(result.modes.speeds, c.speed), len(names) - 1)
-        name = names[k, result.modes.labels.index(c.mode)]
+        name = names[k, labels.index(c.mode)] if c.mode in labels else c.mode
         rows.append([c.speed, KIND_WORDS[c.kind], c.direction, c.mode, name])
     return rows
 

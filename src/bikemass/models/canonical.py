@@ -45,7 +45,11 @@ class CanonicalMatrices:
 
 
 def canonical_matrices(p):
-    """:class:`CanonicalMatrices` of a :class:`~bikemass.models.parameters.BenchmarkParameters` set."""
+    """:class:`CanonicalMatrices` of a :class:`~bikemass.models.parameters.BenchmarkParameters` set.
+
+    Any object with the 26 attributes works; arrays of one shape (B,) give stacked matrices
+    (B, 2, 2) (a sweep's chunk of configurations at once), complex values complex matrices.
+    """
     sl, cl = np.sin(p.lam), np.cos(p.lam)
     # whole bicycle (T) about the rear contact point
     mT = p.mR + p.mB + p.mH + p.mF
@@ -72,11 +76,17 @@ def canonical_matrices(p):
     ST = SR + SF
     SA = mA * uA + mu * mT * xT
 
-    M = np.array([[ITxx, IAlx + mu * ITxz],
-                  [IAlx + mu * ITxz, IAll + 2 * mu * IAlz + mu ** 2 * ITzz]])
-    K0 = np.array([[mT * zT, -SA], [-SA, -SA * sl]])
-    K2 = np.array([[0.0, (ST - mT * zT) / p.w * cl],
-                   [0.0, (SA + SF * sl) / p.w * cl]])
-    C1 = np.array([[0.0, mu * ST + SF * cl + ITxz / p.w * cl - mu * mT * zT],
-                   [-(mu * ST + SF * cl), IAlz / p.w * cl + mu * (SA + ITzz / p.w * cl)]])
-    return CanonicalMatrices(M=M, C1=C1, K0=K0, K2=K2, g=float(p.g))
+    M = _matrix([[ITxx, IAlx + mu * ITxz],
+                 [IAlx + mu * ITxz, IAll + 2 * mu * IAlz + mu ** 2 * ITzz]])
+    K0 = _matrix([[mT * zT, -SA], [-SA, -SA * sl]])
+    K2 = _matrix([[0.0, (ST - mT * zT) / p.w * cl],
+                  [0.0, (SA + SF * sl) / p.w * cl]])
+    C1 = _matrix([[0.0, mu * ST + SF * cl + ITxz / p.w * cl - mu * mT * zT],
+                  [-(mu * ST + SF * cl), IAlz / p.w * cl + mu * (SA + ITzz / p.w * cl)]])
+    return CanonicalMatrices(M=M, C1=C1, K0=K0, K2=K2, g=p.g)
+
+
+def _matrix(rows):
+    """A 2x2 matrix from entries that may be arrays of one shape (B,): shape (2, 2) or (B, 2, 2)."""
+    entries = np.broadcast_arrays(*(np.asarray(x) for row in rows for x in row))
+    return np.stack(entries, axis=-1).reshape(*entries[0].shape, 2, 2)

@@ -13,10 +13,10 @@ import numpy as np
 
 def static_stiffness(gK0, S):
     """``gK0 - gK0^T (gK0 + S)^-1 gK0`` (N m/rad); ``S=None`` returns ``gK0``."""
-    gK0 = np.asarray(gK0, dtype=float)
+    gK0 = np.asarray(gK0)
     if S is None:
         return gK0
-    S = np.asarray(S, dtype=float)
+    S = np.asarray(S)
     return gK0 - gK0.T @ np.linalg.solve(gK0 + S, gK0)
 
 

@@ -34,10 +34,22 @@ class Signal:
     description: str = ""
 
 
-def _coefficients(terms, shape):
+@dataclass(frozen=True, eq=False)
+class Output:
+    """A named output that is not a state but a fixed combination of them: ``y = row . x``
+    (``row`` of length N, read-only; units of ``signal.unit``)."""
+
+    signal: Signal
+    row: np.ndarray
+
+    def __post_init__(self):
+        object.__setattr__(self, "row", readonly(self.row))        # complex in the complex-step derivatives
+
+
+def _coefficients(terms, shape, dtype=float):
     """``terms`` (a sequence of arrays, coefficient of ``v**k`` at index ``k``) as one read-only array
     of shape ``(d + 1, *shape)``; ``None`` entries are zero."""
-    out = np.zeros((max(len(terms), 1), *shape))
+    out = np.zeros((max(len(terms), 1), *shape), dtype=dtype)
     for k, t in enumerate(terms):
         if t is not None:
             out[k] = t
@@ -95,6 +107,13 @@ class LinearModel:
         ``B[k]`` multiplies ``v**k``; read-only.
     mechanics : SecondOrder or None
         ``M, C(v), K(v), F`` where the model has mechanical coordinates.
+    families : tuple of (str, tuple of int)
+        Mode families and the dynamic states that belong to them (for naming modes): the
+        Whipple bicycle's roll and steer states are ``"bicycle"``; a richer model adds, e.g.,
+        ``("lean", (4, 9))``.  Default: every dynamic state in ``"bicycle"``.
+    outputs : tuple of Output
+        Further named outputs beside the states, each a fixed combination of them (the Whipple
+        bicycle's lateral position of the front contact).
     """
 
     name: str
@@ -104,14 +123,20 @@ class LinearModel:
     A: np.ndarray
     B: np.ndarray
     mechanics: SecondOrder = field(default=None)
+    families: tuple = ()
+    outputs: tuple = ()
 
     def __post_init__(self):
+        if not self.families:
+            object.__setattr__(self, "families", (("bicycle", tuple(range(self.n_dynamic))),))
         n, m = len(self.states), len(self.inputs)
         if self.A.shape[1:] != (n, n) or self.B.shape[1:] != (n, m) or not 0 < self.n_dynamic <= n:
             raise ValueError(f"model {self.name!r}: A {self.A.shape}, B {self.B.shape} do not fit "
                              f"{n} states ({self.n_dynamic} dynamic) and {m} inputs")
         if np.any(self.A[:, :self.n_dynamic, self.n_dynamic:]):
             raise ValueError(f"model {self.name!r}: kinematic states feed back into the dynamic ones")
+        if any(o.row.shape != (n,) for o in self.outputs):
+            raise ValueError(f"model {self.name!r}: every output's row must have {n} entries")
 
     @property
     def state_names(self):
@@ -158,20 +183,48 @@ class LinearModel:
         n = self.n_dynamic
         return self.A[:, :n, :n]
 
+    def speed_derivative(self, speed):
+        """``dA/dv`` (N, N) at one speed (m/s)."""
+        k = np.arange(1, len(self.A))
+        return np.tensordot(k * float(speed) ** (k - 1), self.A[1:], axes=1) if len(k) else np.zeros_like(self.A[0])
+
     def dynamic_matrix(self, speed):
         """The dynamic block of ``A(v)``: (n, n) for one speed, (k, n, n) for k speeds."""
         return polynomial(self.dynamic_coefficients, speed)
 
+    @property
+    def output_names(self):
+        """What can be an output: every state, then the further outputs, by name."""
+        return self.state_names + tuple(o.signal.name for o in self.outputs)
+
+    def output_signal(self, name):
+        """The :class:`Signal` of the output ``name`` (a state or a further output)."""
+        signals = self.states + tuple(o.signal for o in self.outputs)
+        return signals[self._output_position(name)]
+
+    def _output_position(self, name):
+        try:
+            return self.output_names.index(name)
+        except ValueError:
+            raise ValueError(f"model {self.name!r} has no output {name!r} "
+                             f"(outputs: {', '.join(self.output_names)})") from None
+
     def output_matrix(self, names=None):
-        """``C`` (p, N) selecting the states ``names`` (default: every state) as outputs."""
+        """``C`` (p, N) giving the outputs ``names`` (states or further outputs; default: every
+        state) from the states."""
         names = self.state_names if names is None else tuple(names)
         C = np.zeros((len(names), len(self.states)))
         for row, name in enumerate(names):
-            C[row, self.state_index(name)] = 1.0
+            k = self._output_position(name)
+            if k < len(self.states):
+                C[row, k] = 1.0
+            else:
+                C[row] = self.outputs[k - len(self.states)].row
         return C
 
     def state_space(self, speed, outputs=None):
-        """``(A, B, C, D)`` at one speed (m/s); ``C`` selects ``outputs`` (state names; default all)."""
+        """``(A, B, C, D)`` at one speed (m/s); ``C`` gives ``outputs`` (names of states or further
+        outputs; default every state)."""
         C = self.output_matrix(outputs)
         return self.state_matrix(speed), self.input_matrix(speed), C, np.zeros((len(C), len(self.inputs)))
 
@@ -180,7 +233,7 @@ class LinearModel:
                 f"inputs=({', '.join(self.input_names)}), degree={len(self.A) - 1})")
 
 
-def second_order_model(name, coordinates, rates, M, C, K, F, inputs, kinematics=()):
+def second_order_model(name, coordinates, rates, M, C, K, F, inputs, kinematics=(), families=None, outputs=()):
     """A :class:`LinearModel` from ``M q'' + C(v) q' + K(v) q = F u`` and kinematic states.
 
     Parameters
@@ -201,20 +254,27 @@ def second_order_model(name, coordinates, rates, M, C, K, F, inputs, kinematics=
         Kinematic states ``z_j' = sum_k v**k r_jk . [q, q', z]``, each given by its Signal and the
         coefficients ``r_jk`` (rows of length ``2 n + len(kinematics)``, zero on the dynamic block's
         feedback: kinematic states must not feed back).
+    families : mapping of str to sequence of int, optional
+        Mode families by coordinate index (each takes the coordinate and its rate); default:
+        every coordinate in ``"bicycle"``.
+    outputs : sequence of (Signal, array_like)
+        Further outputs, each a fixed combination (a row of length ``2 n + len(kinematics)``)
+        of the states.
 
     Returns
     -------
     LinearModel
     """
-    M = np.asarray(M, dtype=float)
+    dtype = np.result_type(float, M, *(x for x in (*C, *K) if x is not None))   # complex for the complex step
+    M = np.asarray(M, dtype=dtype)
     n = len(M)
     F = np.asarray(F, dtype=float).reshape(n, len(inputs))
     N = 2 * n + len(kinematics)
     degree = max(len(C), len(K), 1, *(len(rows) for _, rows in kinematics)) - 1
-    mech = SecondOrder(tuple(coordinates), readonly(M), _coefficients(C, (n, n)), _coefficients(K, (n, n)),
-                       readonly(F))
+    mech = SecondOrder(tuple(coordinates), readonly(M), _coefficients(C, (n, n), dtype),
+                       _coefficients(K, (n, n), dtype), readonly(F))
     Minv = np.linalg.inv(M)
-    A = np.zeros((degree + 1, N, N))
+    A = np.zeros((degree + 1, N, N), dtype=dtype)
     A[0, :n, n:2 * n] = np.eye(n)
     A[:len(mech.K), n:2 * n, :n] = -Minv @ mech.K
     A[:len(mech.C), n:2 * n, n:2 * n] = -Minv @ mech.C
@@ -222,7 +282,9 @@ def second_order_model(name, coordinates, rates, M, C, K, F, inputs, kinematics=
         for k, row in enumerate(rows):
             if row is not None:
                 A[k, 2 * n + j] = row
-    B = np.zeros((1, N, len(inputs)))
+    B = np.zeros((1, N, len(inputs)), dtype=dtype)
     B[0, n:2 * n] = Minv @ F
     states = (*coordinates, *rates, *(s for s, _ in kinematics))
-    return LinearModel(name, tuple(states), 2 * n, tuple(inputs), readonly(A), readonly(B), mech)
+    groups = tuple((f, tuple(sorted((*idx, *(n + i for i in idx))))) for f, idx in (families or {}).items())
+    return LinearModel(name, tuple(states), 2 * n, tuple(inputs), readonly(A), readonly(B), mech, groups,
+                       tuple(Output(signal, row) for signal, row in outputs))

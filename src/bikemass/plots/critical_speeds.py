@@ -32,7 +32,7 @@ def _write_values(ax, speeds, y, xlim):
 
 def plot_critical_speeds(results, title="", size=None, xlim=None, values=True):
     """Figure: ``results`` = ``{row: {series: result}}`` (e.g. rider -> stiffness ->
-    :class:`~bikemass.analysis.stability.analysis.Stability` or
+    :class:`~bikemass.analysis.engine.stability.StabilityResult` or
     :class:`~bikemass.plots.stability.CriticalSpeeds`), rows top to bottom.
 
     Each configuration is a line: a bar over its stable speeds, a circle at each weave speed,

@@ -20,7 +20,7 @@ LEGEND_ORDER = ("weave", REAL_WEAVE, "capsize", "caster")
 
 
 def legend_name(name):
-    """The name a reader sees for a name of :meth:`~bikemass.analysis.stability.modes.Modes.names`: the
+    """The name a reader sees for a name of :meth:`~bikemass.analysis.engine.modes.Modes.names`: the
     weave's real branches as one entry (a tracked weave label alone is a real root whose
     partner has paired elsewhere), tracking numbers dropped from other pairs."""
     if name.startswith("weave, real") or name in ("weave 1", "weave 2"):
@@ -42,7 +42,7 @@ class CriticalSpeeds:
 
     @classmethod
     def of(cls, stability):
-        """From a :class:`~bikemass.analysis.stability.analysis.Stability` (exact speeds, strict ranges)."""
+        """From a :class:`~bikemass.analysis.engine.stability.StabilityResult` (exact speeds, strict ranges)."""
         return cls(tuple(stability.weave_speeds), tuple(stability.capsize_speeds),
                    tuple(map(tuple, stability.ranges["strict"]["exact"])))
 
@@ -50,8 +50,8 @@ class CriticalSpeeds:
 def plot_eigenvalues(result, title="", size=None, xlim=None, ylim=None):
     """Figure: eigenvalues (1/s) of ``result`` against speed (m/s).
 
-    ``result``: a :class:`~bikemass.analysis.stability.analysis.Stability` (weave and capsize speeds
-    marked, stable speeds shaded) or bare :class:`~bikemass.analysis.stability.modes.Modes`.
+    ``result``: a :class:`~bikemass.analysis.engine.stability.StabilityResult` (weave and capsize speeds
+    marked, stable speeds shaded) or bare :class:`~bikemass.analysis.engine.modes.Modes`.
     ``xlim`` (m/s) and ``ylim`` (1/s) override the automatic zoom.
     """
     if not hasattr(result, "modes") and not hasattr(result, "eigenvalues"):

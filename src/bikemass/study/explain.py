@@ -15,7 +15,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..mass.inertia import MassProperties, combine, combine_without_parallel_axis
-from ..models.canonical import canonical_matrices
 from .runs import THESIS, evaluate
 from .stability_tables import TOLERANCE, single_run
 
@@ -127,7 +126,7 @@ def _largest_effects(base, values, names, half, count=3):
 
 
 def _value(entry, params, S, configuration):
-    outcome = evaluate(canonical_matrices(params), configuration, params, S, exact=False)
+    outcome = evaluate(configuration, params, S, exact=False)
     return single_run(outcome.ranges["grid"][entry.criterion][entry.mode], entry.part)[0]
 
 

@@ -5,7 +5,9 @@
   stable speeds of the thesis run (0.05 m/s grid, the tables' numbers);
 * ``eig_<bike>_<rider>_<stiffness>.png``: one configuration's eigenvalues against speed
   (Meijaard et al. 2007, Fig. 3 style; corrected run, v_w and v_c marked);
-* ``pose_<pose>.png``: side view of each of the five poses on the geometry Jamis.
+* ``pose_<pose>.png``: side view of each of the five poses on the geometry Jamis;
+* ``handling_<bike>.png``: the HQM peak of the Hess, Moore & Hubbard (2012) rider against speed
+  for every rider position of the Jamis and the Cargo, beside their self-stable speeds.
 
 A job is ``(function, *arguments, path, title)``; ``function(*arguments, title)`` returns
 the Figure.
@@ -13,6 +15,9 @@ the Figure.
 
 from ..rider import THESIS_POSES
 from .configurations import BICYCLES, THESIS_NAMES, configurations
+from .handling import stable_speeds
+from .handling import BICYCLES as HANDLED
+from ..analysis.handling.figures import plot_handling_by_rider
 
 STIFFNESS_NAMES = {"infinite": "rigid frame", "steel": "steel frame", "titanium": "titanium frame",
                    "aluminum": "aluminium frame"}
@@ -58,9 +63,19 @@ def pose_jobs(bicycle, riders, folder):
              f"{pose} on the {bicycle.name}") for pose, rider in riders.items()]
 
 
+def handling_jobs(handling, outcomes, folder):
+    """Jobs drawing the rider positions' HQM peaks of each bicycle of the handling question."""
+    return [(draw_handling, {THESIS_NAMES[r]: res for r, res in by_rider.items()},
+             {THESIS_NAMES[r]: stable_speeds(outcomes, bike, r) for r in by_rider},
+             folder / f"handling_{bike}.png",
+             f"{THESIS_NAMES[bike]}, rigid frame: handling quality of every rider position")
+            for bike, by_rider in handling.items()]
+
+
 def figure_count():
-    """How many figures the study draws (:func:`critical_jobs` twice, :func:`eigenvalue_jobs`, :func:`pose_jobs`)."""
-    return 2 * len(BICYCLES) + len(configurations()) + len(THESIS_POSES)
+    """How many figures the study draws (:func:`critical_jobs` twice, :func:`eigenvalue_jobs`,
+    :func:`pose_jobs`, :func:`handling_jobs`)."""
+    return 2 * len(BICYCLES) + len(configurations()) + len(THESIS_POSES) + len(HANDLED)
 
 
 def draw_critical(results, title):
@@ -73,6 +88,10 @@ def draw_eigenvalues(modes, critical, title):
     # lazy: plots/ loads matplotlib (slower to import than numpy); study --no-figures runs without it
     from ..plots.stability import eigenvalue_figure
     return eigenvalue_figure(modes, critical, title)
+
+
+def draw_handling(results, stable, title):
+    return plot_handling_by_rider(results, title, stable_speeds=stable)
 
 
 def draw_pose(bicycle, rider, title):

@@ -12,12 +12,14 @@ from .configurations import BICYCLES, Configuration, configurations
 from .explain import explain
 from .frame_tables import modes_table, stiffness_table
 from .frames import FRAMES, MATERIALS, frame_results
+from .handling import handling_results
 from .parallel import executor
 from .records import records
 from .report import render
 from .report_html import render_html
 from .runs import CORRECTED, GEOMETRY, THESIS, Inputs, run
 from .stability_tables import CHAPTER4, CHAPTER5, compare, entry_table
+from .handling import handling_table
 
 WORKERS = min(2, os.cpu_count() or 1)
 _INPUTS = None
@@ -36,6 +38,8 @@ class StudyResults:
     correction_summary: list
     contacts: dict = field(default_factory=dict)
     """``{(pose, bike): {contact: (gap m, key)}}``: the geometry riders as the thesis placed them."""
+    handling: dict = field(default_factory=dict)
+    """``{bike: {rider: HandlingResult}}``: the rider in the loop (:mod:`~bikemass.study.handling`)."""
 
 
 def _preload(inputs):
@@ -63,6 +67,10 @@ def _frames():
     return frame_results(_INPUTS)
 
 
+def _handling():
+    return handling_results(_INPUTS)
+
+
 def _by_bike(configs):
     """Configurations grouped into jobs of about equal size (the benchmark joins the first bicycle)."""
     groups = {bike: [c for c in configs if c.bike == bike] for bike in BICYCLES}
@@ -81,6 +89,7 @@ def compute(workers=WORKERS, step=lambda label: None):
     configs = configurations()
     with executor(workers) as pool:
         frames_job = pool.submit(_frames)
+        handling_job = pool.submit(_handling)
         parts = [(spec, pool.submit(_run_part, spec, part)) for spec in (CORRECTED, GEOMETRY)
                  for part in _by_bike(configs)]
         thesis = run(THESIS, configs, inputs, step)
@@ -98,6 +107,8 @@ def compute(workers=WORKERS, step=lambda label: None):
             step(f"{spec.name} run")
         frames = frames_job.result()
         step("frame models")
+        handling = handling_job.result()
+        step("rider in the loop")
     published = {(f, m): inputs.bicycle(f"{f}-thesis").published_stiffness(inputs.material(m))
                  for f in FRAMES for m in MATERIALS}
     input_tables += [stiffness_table(frames, published), modes_table(frames, "jamis"), modes_table(frames, "cargo")]
@@ -106,12 +117,12 @@ def compute(workers=WORKERS, step=lambda label: None):
                          corrections.stiffness_table(thesis, runs["corrected"]),
                          corrections.range_table(thesis, runs["corrected"], runs["geometry"])]
     return StudyResults(runs, entries, explanations, input_tables, correction_tables,
-                        corrections.summary(thesis, runs["corrected"]), dict(inputs.contacts))
+                        corrections.summary(thesis, runs["corrected"]), dict(inputs.contacts), handling)
 
 
 def steps(with_figures=True):
     """How many times :func:`compute` (and :func:`draw`) call ``step``."""
-    n = len(configurations()) + 2 + 2 * len(BICYCLES) + 1
+    n = len(configurations()) + 2 + 2 * len(BICYCLES) + 2
     return n + (figures.figure_count() if with_figures else 0)
 
 
@@ -123,8 +134,13 @@ def write_files(results, out):
                  dumps(records(results.runs["corrected"], "exact"), "json"))
     write_atomic(out / "stability_ranges_geometry.json", dumps(records(results.runs["geometry"], "grid"), "json"))
     tables = [entry_table(t, results.entries, results.explanations) for t in (*CHAPTER4, *CHAPTER5)]
-    for table in tables + results.input_tables + results.correction_tables:
+    for table in tables + results.input_tables + results.correction_tables + handling_tables(results):
         write_atomic(out / f"{table.key}.csv", table.to_csv())
+
+
+def handling_tables(results):
+    """The handling table (:mod:`~bikemass.study.handling`), if the rider was in the loop."""
+    return [handling_table(results.handling, results.runs["corrected"])] if results.handling else []
 
 
 def figure_jobs(results, inputs, folder):
@@ -132,7 +148,8 @@ def figure_jobs(results, inputs, folder):
     return (figures.critical_jobs(results.runs["corrected"], folder)
             + figures.critical_jobs(results.runs["thesis"], folder, "_thesis", "thesis run, 0.05 m/s grid")
             + figures.eigenvalue_jobs(results.runs["corrected"], folder)
-            + figures.pose_jobs(inputs.bicycle("jamis"), {p: inputs.rider(p) for p in THESIS_POSES}, folder))
+            + figures.pose_jobs(inputs.bicycle("jamis"), {p: inputs.rider(p) for p in THESIS_POSES}, folder)
+            + figures.handling_jobs(results.handling, results.runs["corrected"], folder))
 
 
 @one_blas_thread()

@@ -7,7 +7,7 @@ where a mode has no stable range.  ``mode``: ``overall`` (every eigenvalue), ``w
 ``capsize``, ``caster``; ``criterion``: ``strict`` or ``marginal``.
 """
 
-from ..analysis.stability.ranges import intersect
+from ..analysis.engine.ranges import intersect
 from .runs import CRITERIA
 
 RECORD_MODES = {"overall": ("overall",), "weave": ("weave 1", "weave 2"), "capsize": ("capsize",),

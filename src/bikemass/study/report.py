@@ -2,6 +2,8 @@
 
 from .runs import RUNS
 from .stability_tables import CHAPTER4, CHAPTER5, TOLERANCE, compare, title
+from .handling import handling_findings
+from .handling import handling_table
 
 LEGEND = (f"Each cell: our value (m/s, first or last speed of the stable run on the 0..30 m/s grid, or "
           f"its length; `-` = no stable run), the thesis's in brackets where it differs, then "
@@ -69,7 +71,8 @@ def render(results):
     out += [f"* {t.title.split(':')[0]}: {t.notes[0]}" for t in r.input_tables if t.notes]
     out += ["* Corrections (parallel-axis theorem, condensed S from the beam model, exact critical speeds; "
             "see the section below):"]
-    out += [f"  * {line}" for line in r.correction_summary] + [""]
+    out += [f"  * {line}" for line in r.correction_summary]
+    out += _handling_summary(r) + [""]
     out += ["## The runs\n"]
     out += [f"* **{spec.name}**: {spec.title}." for spec in RUNS]
     out += ["", "The 73 configurations: the benchmark bicycle (Meijaard et al. 2007) and the Jamis, the "
@@ -90,6 +93,7 @@ def render(results):
     out += ["## Corrections: what changes and by how much\n"]
     out += [f"* {line}" for line in r.correction_summary] + [""]
     out += [_table_section(t) for t in r.correction_tables]
+    out += _handling_section(r)
     out += ["## Files\n",
             "* `stability_ranges.json` (thesis run, grid ranges) and `stability_ranges_corrected.json` "
             "(corrected run, exact ranges): records `{bike, rider, stiffness, mode, criterion, start, stop, "
@@ -99,8 +103,29 @@ def render(results):
             "* `figures/` (unless `--no-figures`): `critical_<bike>.png` (every rider and frame by its weave "
             "and capsize speeds, corrected run) and `critical_<bike>_thesis.png` (stable speeds of the thesis "
             "run), `eig_<bike>_<rider>_<stiffness>.png` (eigenvalues against speed, corrected run), "
-            "`pose_<pose>.png` (the poses on the Jamis).\n"]
+            "`pose_<pose>.png` (the poses on the Jamis), `handling_<bike>.png` (the rider in the loop: HQM "
+            "peak against speed of every position, beside the self-stable speeds); `handling.csv`.\n"]
     return "\n".join(out)
+
+
+def _handling_summary(r):
+    """The summary's bullets on the thesis's open question (Sec. 6.1), answered with a rider in the loop."""
+    if not r.handling:
+        return []
+    return ["* The thesis's open question (Sec. 6.1: Aerobars and Aero Tuck are self-stable to higher speeds, "
+            "against riders' perception), with the Hess, Moore & Hubbard (2012) rider in the loop "
+            "(docs/handling.md):"] + [f"  * {line}" for line in handling_findings(r.handling, r.runs["corrected"])]
+
+
+def _handling_section(r):
+    if not r.handling:
+        return []
+    return ["## Handling: a rider in the loop\n",
+            "Self-stability says whether the bicycle rights itself; the rider's effort is another question. "
+            "Each rider position on the Jamis and the Cargo (corrected run, rigid frame) is ridden by the Hess, "
+            "Moore & Hubbard (2012) rider, tuned by the published procedure at each speed; the handling quality "
+            "metric's peak measures the rate feedback the rider must supply (docs/handling.md).\n",
+            _table_section(handling_table(r.handling, r.runs["corrected"]))]
 
 
 def _contact_section(contacts):

@@ -10,6 +10,8 @@ from .configurations import BICYCLES, RIDERS, THESIS_NAMES
 from .report import LEGEND, match_counts
 from .runs import RUNS
 from .stability_tables import CHAPTER4, CHAPTER5, TOLERANCE, title
+from .handling import handling_findings
+from .handling import handling_table
 
 STYLE = """
 body { font-family: Georgia, 'Times New Roman', serif; max-width: 60em; margin: 2em auto; padding: 0 1em;
@@ -100,6 +102,19 @@ def thesis_findings(thesis):
     return lines
 
 
+def _handling_findings(r):
+    """The findings' part on the thesis's open question (Sec. 6.1), with its figure."""
+    if not r.handling:
+        return []
+    out = ["<h3>The thesis's open question, with a rider in the loop</h3>",
+           "<p>Williams (2015, Sec. 6.1) found the Aerobars and Aero Tuck positions self-stable up to higher "
+           "speeds, against riders' perception, and left the cause to control. The rider model of Hess, Moore "
+           "&amp; Hubbard (2012), tuned by its published procedure at each speed, measures the rider's effort by "
+           "the peak of its handling quality metric (HQM; Level 1 below 5, Level 3 above 8):</p><ul>"]
+    out += [f"<li>{_inline(line)}</li>" for line in handling_findings(r.handling, r.runs["corrected"])]
+    return out + ["</ul>"]
+
+
 def _figure_or_note(figures, name, caption):
     png = figures.get(name)
     return figure(png, caption) if png is not None else ""
@@ -132,7 +147,8 @@ def render_html(results, figures):
             f"printed inputs (see <a href='#misses'>Misses</a>).</p>",
             "<h3>What the corrections change, and by how much</h3><ul>"]
     out += [f"<li>{_inline(line)}</li>" for line in r.correction_summary]
-    out += ["</ul></div>",
+    out += ["</ul>"] + _handling_findings(r)
+    out += ["</div>",
             "<div class='pair'>",
             _figure_or_note(figures, f"critical_{KEY_BIKE}_thesis.png",
                             f"{name} as the thesis computed it: stable speeds of every rider and frame "
@@ -147,6 +163,10 @@ def render_html(results, figures):
                             "result here rests on."),
             _figure_or_note(figures, f"eig_{KEY_BIKE}_relaxed_steel.png",
                             f"{name}, relaxed rider, steel frame (corrected run)."),
+            _figure_or_note(figures, f"handling_{KEY_BIKE}.png",
+                            f"{name}, rigid frame, every rider position ridden by the Hess, Moore & Hubbard (2012) "
+                            "rider: the HQM peak against speed (Level 1 below 5), and the self-stable speeds "
+                            "beneath."),
             "<h2>The reproduction: thesis run against the thesis's tables</h2>",
             f"<p>{_inline(LEGEND)} Cells that miss are shaded.</p>"]
     for table in list(CHAPTER4) + list(CHAPTER5):
@@ -175,6 +195,11 @@ def render_html(results, figures):
     out += [table_html(t) for t in r.input_tables]
     out += ["<h3>Corrections, table by table</h3>"]
     out += [table_html(t) for t in r.correction_tables]
+    if r.handling:
+        out += ["<h3>Handling: a rider in the loop</h3>", table_html(handling_table(r.handling, r.runs["corrected"]))]
+        out += [_figure_or_note(figures, f"handling_{bike}.png", f"{THESIS_NAMES[bike]}, rigid frame: the HQM "
+                                "peak of every rider position against speed (Level 1 below 5), and its self-stable "
+                                "speeds beneath.") for bike in r.handling if bike != KEY_BIKE]
     if not figures:
         out.append("<p>Drawn without figures (<code>--no-figures</code>).</p>")
     out.append("</body></html>")

@@ -17,18 +17,17 @@ The benchmark bicycle is the same parameter file in every run.
 
 from dataclasses import dataclass
 
-from ..rider.seating import seat_rider
 from ..scenario import catalog
 from ..bicycle import bicycle_parameters
 from ..fe import equivalent_stiffness
 from ..mass.materials import load_materials
-from ..models.canonical import canonical_matrices
-from ..analysis.stability import follow_modes, speed_grid, stability
-from ..models.flexible_static import with_frame_stiffness
-from ..analysis.stability.criteria import MARGINAL_THRESHOLD, is_stable
-from ..analysis.stability.labels import LABELS
-from ..analysis.stability.ranges import grid_ranges
+from ..analysis.engine.modes import follow_modes
+from ..analysis.engine.naming import BICYCLE_LABELS as LABELS
+from ..analysis.engine.ranges import MARGINAL_THRESHOLD, grid_ranges, is_stable
+from ..analysis.engine.stability import analyse, speed_grid
+from ..models.whipple import whipple_model
 from .configurations import BENCHMARK, BENCHMARK_RIDER, FE_FRAME
+from ..rider.seating import seat_rider
 
 CRITERIA = ("strict", "marginal")
 METHOD = "exact"
@@ -106,15 +105,16 @@ def _exact_ranges(st):
                    for criterion in CRITERIA} for kind in ("grid", "exact")}
 
 
-def evaluate(matrices, configuration, parameters, S, exact):
-    """:class:`Outcome` of canonical ``matrices`` (rigid) with rear-frame stiffness ``S`` on the thesis's grid."""
-    m = with_frame_stiffness(matrices, S)
+def evaluate(configuration, parameters, S, exact):
+    """:class:`Outcome` of a parameter set with rear-frame stiffness ``S`` (N m/rad, ``None``: rigid) on
+    the thesis's grid."""
+    model = whipple_model(parameters, S)
     speeds = speed_grid()
     if exact:
-        st = stability(m, speeds)
+        st = analyse(model, speeds, stiffness=S)
         return Outcome(configuration, parameters, S, st.modes, _exact_ranges(st),
-                       st.weave_speeds, st.capsize_speeds)
-    modes = follow_modes(m, speeds)
+                       list(st.weave_speeds), list(st.capsize_speeds))
+    modes = follow_modes(model, speeds)
     return Outcome(configuration, parameters, S, modes, {"grid": grid_outcome_ranges(modes)})
 
 
@@ -125,7 +125,7 @@ class Inputs:
         self._bicycles, self._riders, self._parameters, self._stiffness = {}, {}, {}, {}
         self.contacts = {}
         """``{(rider, bike): {contact: (gap m, bicycle key)}}`` of every rider seated so far."""
-        self._matrices, self._materials = {}, None
+        self._materials = None
 
     def bicycle(self, name):
         if name not in self._bicycles:
@@ -152,13 +152,6 @@ class Inputs:
             self._parameters[key] = bicycle_parameters(self.bicycle(bike), self.rider(rider, bike), combine,
                                                        METHOD)
         return self._parameters[key]
-
-    def matrices(self, spec, configuration):
-        """Rigid-frame canonical matrices of ``configuration`` in ``spec`` (cached)."""
-        p = self.parameters(spec, configuration)
-        if id(p) not in self._matrices:
-            self._matrices[id(p)] = canonical_matrices(p)
-        return self._matrices[id(p)]
 
     def stiffness(self, spec, configuration):
         """2x2 S (N m/rad) of ``configuration`` in ``spec``, ``None`` if rigid."""
@@ -190,8 +183,7 @@ def run(spec, configurations, inputs, step=None):
     """``{configuration: Outcome}`` of one run; ``step(label)`` is called after each configuration."""
     out = {}
     for c in configurations:
-        out[c] = evaluate(inputs.matrices(spec, c), c, inputs.parameters(spec, c),
-                          inputs.stiffness(spec, c), spec.exact)
+        out[c] = evaluate(c, inputs.parameters(spec, c), inputs.stiffness(spec, c), spec.exact)
         if step is not None:
             step(f"{spec.name}: {c.label}")
     return out

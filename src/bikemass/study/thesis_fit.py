@@ -11,16 +11,20 @@ from dataclasses import replace
 
 import numpy as np
 
-from ..analysis.stability import stability
-from ..bicycle import bicycle_parameters, load_bicycle
 from ..core.config import Node, load_yaml
 from ..core.paths import resolve
-from ..models.canonical import canonical_matrices
-from ..rider import Rider, load_rider, poses_dir
 from ..rider.anthropometry import find_anthropometry
 from ..rider.chain import joint_gaps, load_chain_body
-from ..rider.pose import angle_deg, read_pose
+from ..rider.pose import angle_deg
+from ..rider import poses_dir
 from ..rider.solve import fit_to_placements
+from ..rider import Rider
+from ..rider.pose import read_pose
+from ..bicycle import bicycle_parameters
+from ..analysis.engine.stability import analyse
+from ..models.whipple import whipple_model
+from ..bicycle import load_bicycle
+from ..rider import load_rider
 
 
 def pose_placements(pose):
@@ -48,7 +52,7 @@ def _rider_of(chain, body_name, source):
 
 
 def _speeds(bike, rider, combine, method):
-    result = stability(canonical_matrices(bicycle_parameters(bike, rider, combine, method)))
+    result = analyse(whipple_model(bicycle_parameters(bike, rider, combine, method)))
     return result.weave_speeds, result.capsize_speeds
 
 

@@ -11,13 +11,14 @@ import pickle
 
 import numpy as np
 
-from ..analysis.crossings import critical_speeds
-from ..analysis.model import system, values_of
 from ..core.errors import InputError
-from ..core.threads import one_blas_thread
 from ..scenario.inputs import Model
-from .table import OUTPUTS, csv_lines
+from ..analysis.engine.critical import critical_speeds
+from ..models.whipple import whipple_model
+from ..core.threads import one_blas_thread
+from .table import csv_lines
 
+OUTPUTS = ("weave_speed", "capsize_speed", "stable_from", "stable_to", "total_mass", "error")
 _MODELS = {}
 
 
@@ -50,7 +51,7 @@ def evaluate(model, changes, max_speed):
     refuses gets its one-line reason in ``error`` and empty outputs."""
     try:
         p, S = model.build(changes)
-        found = critical_speeds(system(values_of(p), S), max_speed)
+        found = critical_speeds(whipple_model(p, S), max_speed)
     except (InputError, ValueError, np.linalg.LinAlgError) as exc:
         return {**{k: None for k in OUTPUTS}, "error": str(exc).replace("\n", " ")}
     values = (found.weave_speed, found.capsize_speed, found.stable_from, found.stable_to, p.mR + p.mB + p.mH + p.mF)

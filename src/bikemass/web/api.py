@@ -1,8 +1,9 @@
 """The JSON API and the downloads behind the page (Flask routes on the Dash server).
 
 ``GET /api/stability?<state>`` returns the document of ``bikemass stability
---format json`` and ``GET /api/params?<state>`` that of ``bikemass params
---format json``; ``/download/<file>?<state>`` serves the parameter set (YAML,
+--format json``, ``GET /api/params?<state>`` that of ``bikemass params
+--format json`` and ``GET /api/handling?<state>`` that of ``bikemass handling --speeds
+3,4,5,6,7,8,10 --format json`` (the rider in the loop); ``/download/<file>?<state>`` serves the parameter set (YAML,
 JSON, BicycleParameters), the eigenvalues (CSV) and the bicycle and pose YAML.
 A bad query answers 400 with ``{"error": "<one line>"}``.
 """
@@ -41,6 +42,11 @@ def stability_document(evaluation):
 def parameters_document(params):
     """The ``bikemass params --format json`` document of a parameter set."""
     return written(with_units(params.to_dict(), parameter_units()))
+
+
+def handling_document(result):
+    """The ``bikemass handling --format json`` document of a :class:`HandlingResult`."""
+    return written(with_units(result.to_dict(), result.unit_block()))
 
 
 def download(engine, filename, state):
@@ -89,6 +95,10 @@ def register_routes(server, engine):
     @server.route("/api/params")
     def api_params():
         return answer(lambda s: jsonify(parameters_document(engine.parameters(s))))
+
+    @server.route("/api/handling")
+    def api_handling():
+        return answer(lambda s: jsonify(handling_document(engine.handling(s))))
 
     @server.route("/download/<filename>")
     def api_download(filename):

@@ -26,6 +26,10 @@ from ..models.parameters import BenchmarkParameters
 from ..models.plausibility import check_parameters
 from ..scenario.catalog import load_bicycle, load_rider, seated_rider, stiffness
 from .state import CHART_ANGLES, SOURCE, PageState
+from ..analysis.handling.plant import linear_model
+from ..analysis.handling.survey import handling
+from ..core.errors import BikemassWarning
+import warnings
 
 UPLOAD_LIMIT = 1_000_000
 """Largest accepted upload (bytes)."""
@@ -33,6 +37,8 @@ UPLOAD_SUFFIXES = (".yaml", ".yml", ".json", ".txt")
 """Uploads: bicycle YAML/JSON (keypoints, chart or parameters) or a BicycleParameters text file."""
 UPLOAD_PREFIX = "upload-"
 """Bicycle names that refer to an uploaded file: ``upload-<digest>``."""
+HANDLING_SPEEDS = (3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 10.0)
+"""Speeds (m/s) of the page's rider in the loop (a tuning costs about 0.2 s per speed)."""
 
 
 @dataclass(frozen=True)
@@ -55,6 +61,7 @@ class Engine:
         self.seated = lru_cache(maxsize=64)(self._seated)
         self.base_parameters = lru_cache(maxsize=64)(self._base_parameters)
         self.stiffness = lru_cache(maxsize=64)(self._stiffness)
+        self.handling = lru_cache(maxsize=16)(self._handling)
 
     # -- inputs ---------------------------------------------------------------
     def add_upload(self, filename, content):
@@ -150,6 +157,18 @@ class Engine:
         if not state.overrides:
             return base
         return check_parameters(base.replace(**dict(state.overrides)), SOURCE)
+
+    def model(self, state: PageState):
+        """The linear model (:func:`~bikemass.models.whipple.whipple_model`) of ``state``."""
+        return linear_model(self.parameters(state), self.stiffness(state.bicycle_key, state.stiffness))
+
+    def _handling(self, state):
+        """``bm.handling`` of ``state`` at :data:`HANDLING_SPEEDS` (cached per state): speeds where
+        the procedure finds no gains are ``nan`` (their warnings are dropped: the page shows the gap)."""
+
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", BikemassWarning)
+            return handling(self.model(state), HANDLING_SPEEDS)
 
     def evaluate(self, state: PageState, speeds=None):
         """:class:`Evaluation` of ``state`` over ``speeds`` (default grid)."""

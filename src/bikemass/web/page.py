@@ -22,6 +22,10 @@ from ..rider import shipped_poses
 from .api import DOWNLOADS, register_routes
 from .engine import UPLOAD_LIMIT, Engine
 from .state import BODY_RIDER, CHART_ANGLES, CHART_KEYS, HANDS, SEXES, SOURCE, STIFFNESS_CHOICES, PageState
+from .engine import HANDLING_SPEEDS
+from ..analysis.handling.frequency import frequency_response
+from ..analysis.handling.figures import plot_bode
+from ..analysis.handling.figures import plot_handling
 
 STYLE = """
 body { font-family: system-ui, sans-serif; margin: 0; color: #222; background: #fafafa; }
@@ -128,12 +132,38 @@ def _layout(query):
         html.Div(className="grid2", children=[
             _panel("Rear-frame stiffness S (N m/rad)", html.Pre(id="stiffness-matrix")),
             _panel("Downloads", html.Div(id="downloads", className="downloads"))]),
+        _handling_panel(),
     ])
     return html.Div([
         dcc.Location(id="url", refresh=False),
         html.Header([html.H1("bikemass"), html.Span("a bicycle and its rider: parameters and stability")]),
         html.Div(className="columns", children=[controls, results]),
     ])
+
+
+BODE_INPUTS = ("steer-torque", "roll-torque")
+BODE_OUTPUTS = ("roll-angle", "steer-angle", "roll-rate", "steer-rate", "heading", "lateral", "front-lateral")
+
+
+def _handling_panel():
+    """Handling: the Bode plot of one input and output at one speed, and the Hess, Moore & Hubbard
+    (2012) rider's handling quality metric against speed."""
+
+    controls = html.Div(className="numbers", children=[
+        html.Div(["speed (m/s) ", dcc.Input(id="bode-speed", type="text", value="5", debounce=True,
+                                            inputMode="decimal", style={"width": "70px"})]),
+        html.Div(["input ", dcc.Dropdown(id="bode-input", options=list(BODE_INPUTS), value="steer-torque",
+                                         clearable=False, style={"width": "170px"})]),
+        html.Div(["output ", dcc.Dropdown(id="bode-output", options=list(BODE_OUTPUTS), value="roll-angle",
+                                          clearable=False, style={"width": "170px"})])])
+    return html.Div(className="grid2", children=[
+        _panel("Frequency response (Bode plot)",
+               html.Div([controls, html.Div(id="bode-error", className="error"),
+                         dcc.Loading(html.Img(id="bode-figure", alt="Bode plot"))])),
+        _panel(f"Handling: the Hess, Moore & Hubbard (2012) rider at "
+               f"{', '.join(f'{v:g}' for v in HANDLING_SPEEDS)} m/s (docs/handling.md)",
+               dcc.Loading(html.Div([html.Img(id="hqm-figure", alt="handling quality metric"),
+                                     html.Div(id="hqm-summary")])))])
 
 
 def _editor(summary, kind, keys, values, unit, label):
@@ -297,6 +327,37 @@ def _callbacks(app, engine):
         except InputError:
             return ""
 
+    configuration = [Input("bike", "value"), Input("size", "value"), Input("rider", "value"),
+                     Input("height", "value"), Input("mass", "value"), Input("sex", "value"), Input("hands", "value"),
+                     Input("stiffness", "value"), Input("combine", "value"),
+                     Input({"type": "chart", "key": ALL}, "value"), Input({"type": "param", "key": ALL}, "value")]
+
+    @app.callback(Output("bode-figure", "src"), Output("bode-error", "children"),
+                  *configuration, Input("bode-speed", "value"), Input("bode-input", "value"),
+                  Input("bode-output", "value"))
+    def bode(bike, size, rider, height, mass, sex, hands, stiffness, combine, chart_texts, param_texts,
+             speed, inp, out):
+        try:
+            state = _state(bike, size, rider, (height, mass, sex, hands), stiffness, combine, chart_texts,
+                           param_texts)
+            v = _parse(["bode speed"], [speed])["bode speed"]
+            fr = frequency_response(engine.model(state), 5.0 if v is None else v, inp, out)
+        except InputError as exc:
+            return "", str(exc)
+        return _svg_uri(_bode_figure(fr, state)), ""
+
+    @app.callback(Output("hqm-figure", "src"), Output("hqm-summary", "children"), *configuration)
+    def handling_quality(bike, size, rider, height, mass, sex, hands, stiffness, combine, chart_texts,
+                         param_texts):
+        try:
+            state = _state(bike, size, rider, (height, mass, sex, hands), stiffness, combine, chart_texts,
+                           param_texts)
+            result = engine.handling(state)
+            stable = engine.evaluate(state).stability.ranges["strict"]["exact"]
+        except InputError as exc:
+            return "", str(exc)
+        return _svg_uri(_handling_figure(result, stable, state)), _handling_summary(result)
+
     @app.callback(Output("body-controls", "style"), Input("rider", "value"))
     def body_controls(rider):
         return {} if rider == BODY_RIDER else {"display": "none"}
@@ -313,6 +374,27 @@ def _eigenvalue_figure(result, state):
     rider = (f"a {state.sex} rider of {state.height:g} m and {state.mass:g} kg" if state.rider == BODY_RIDER
              else "no rider" if state.rider == "none" else f"rider {state.rider}")
     return plot_eigenvalues(result, title=f"{state.bike}, {rider}, stiffness {state.stiffness}")
+
+
+def _bode_figure(fr, state):
+    return plot_bode(fr, f"{state.bike}: {fr.output} / {fr.input} at {fr.speed:g} m/s", size=(6.4, 4.6))
+
+
+def _handling_figure(result, stable, state):
+    return plot_handling(result, f"{state.bike}, rider {state.rider}: handling quality metric", size=(8.0, 3.4),
+                         stable_speeds=stable)
+
+
+def _handling_summary(result):
+    """One line per speed: the HQM peak and level, or why there is none."""
+    lines = []
+    for v, peak, stable, level in zip(result.speeds, result.hqm_peak, result.closed_loop_stable, result.levels):
+        if not level:
+            lines.append(f"{v:g} m/s: no gains found by the published procedure")
+        else:
+            lines.append(f"{v:g} m/s: HQM peak {peak:.2f} (Level {level})"
+                         + ("" if stable else ", closed loop unstable"))
+    return "; ".join(lines)
 
 
 def _side_view_figure(bicycle, rider):

@@ -1,0 +1,166 @@
+"""Exact critical speeds: every speed where an eigenvalue of a linear model reaches ``Re = 0``.
+
+An eigenvalue of the dynamic state matrix ``A(v)`` (:class:`~bikemass.models.linear.LinearModel`)
+is on the imaginary axis at ``v`` exactly when
+
+* a **real** root passes through zero: ``det A(v) = 0``, or
+* an **oscillatory** pair sits at ``+-i w``: two eigenvalues sum to zero, so the additive compound
+  ``A(v)^[2]`` is singular (:mod:`~bikemass.analysis.engine.compound`).
+
+Both are polynomial eigenvalue problems in ``v`` (:mod:`~bikemass.analysis.engine.polynomial`),
+solved once for all speeds: nothing between grid points is missed.  Each candidate is verified
+on the eigenvalues at its speed (a real pair ``l, -l`` also sums to zero and is dropped: no
+eigenvalue is on the axis there), then refined by Brent's method on the real part of the
+crossing root.  For the marginal criterion the boundary is also where an eigenvalue with
+``Re >= 0`` has modulus ``r``: ``det(A(v) - r I) = 0`` (a real root) or ``C_2(A(v)) - r^2 I``
+singular (a pair; the multiplicative compound).
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import brentq
+
+from ...core.results import Result, quantity
+from .compound import additive_coefficients, multiplicative_coefficients
+from .polynomial import real_roots
+
+OSCILLATORY, REAL = "oscillatory", "real"
+KINDS = (OSCILLATORY, REAL)
+"""What crosses ``Re = 0``: a complex pair (weave-like) or a real root (capsize-like)."""
+STABILISING, DESTABILISING, TOUCHING = "stabilising", "destabilising", "touching"
+DIRECTIONS = (STABILISING, DESTABILISING, TOUCHING)
+"""As speed grows, the crossing makes the model more stable, less stable, or neither."""
+
+VERIFY_TOL = 1e-6
+"""A candidate is a crossing when its root's real part is within VERIFY_TOL (1 + |root|) of zero."""
+XTOL = 1e-13
+"""Absolute tolerance (m/s) of a refined critical speed."""
+MERGE_TOL = 1e-9
+"""Candidates closer than this (m/s) are one crossing."""
+
+
+@dataclass(frozen=True, eq=False)
+class Crossing(Result):
+    """One crossing of ``Re = 0`` by an eigenvalue of a model.
+
+    Attributes
+    ----------
+    speed : float
+        Forward speed (m/s).
+    kind : str
+        ``"oscillatory"`` (a complex pair crosses) or ``"real"`` (a real root passes through 0).
+    direction : str
+        ``"stabilising"``, ``"destabilising"`` or ``"touching"`` (the number of unstable roots is
+        the same on both sides).
+    frequency : float
+        ``|Im|`` of the crossing root (rad/s); 0 for a real root.
+    mode : str
+        The tracked mode that crosses (``"weave 1"``, ``"capsize"``, ...), ``""`` if not tracked.
+    """
+
+    speed: float = quantity("m/s")
+    kind: str = ""
+    direction: str = ""
+    frequency: float = quantity("rad/s", default=0.0)
+    mode: str = ""
+
+
+class Eigenvalues:
+    """``model``'s dynamic eigenvalues (1/s) at single speeds, memoised: ``at(v)``."""
+
+    def __init__(self, model):
+        self.coefficients = np.asarray(model.dynamic_coefficients, dtype=float)
+        self._cache = {}
+
+    def __call__(self, v):
+        v = float(v)
+        out = self._cache.get(v)
+        if out is None:
+            powers = v ** np.arange(len(self.coefficients))
+            out = self._cache[v] = np.linalg.eigvals(np.tensordot(powers, self.coefficients, axes=1))
+        return out
+
+
+def _refine(f, v, lo, hi):
+    """``v`` moved to the root of ``f`` in a small bracket around it (kept if ``f`` keeps its sign)."""
+    for h in (1e-9, 1e-7, 1e-5):
+        a, b = max(lo, v - h * (1 + v)), min(hi, v + h * (1 + v))
+        fa, fb = f(a), f(b)
+        if fa == 0:
+            return a
+        if fb == 0:
+            return b
+        if np.sign(fa) != np.sign(fb):
+            return brentq(f, a, b, xtol=XTOL, rtol=4 * np.finfo(float).eps)
+    return v
+
+
+def _real_crossing(at, v, lo, hi):
+    """``(speed, 0.0)`` if a real root is at zero at ``v`` (refined), else ``None``."""
+    roots = at(v)
+    k = np.argmin(np.abs(roots))
+    if abs(roots[k]) > VERIFY_TOL * (1 + np.abs(roots).max()) or abs(roots[k].imag) > VERIFY_TOL:
+        return None
+
+    def f(x):
+        r = at(x)
+        return float(r[np.argmin(np.abs(r))].real)
+    return _refine(f, v, lo, hi), 0.0
+
+
+def _oscillatory_crossing(at, v, lo, hi):
+    """``(speed, w)`` if a complex pair is on the imaginary axis at ``v`` (refined), else ``None``."""
+    roots = at(v)
+    upper = roots[roots.imag > VERIFY_TOL * (1 + np.abs(roots))]
+    if not len(upper):
+        return None
+    k = np.argmin(np.abs(upper.real))
+    if abs(upper[k].real) > VERIFY_TOL * (1 + abs(upper[k])):
+        return None
+    w0 = upper[k].imag
+
+    def root(x):
+        r = at(x)
+        return r[np.argmin(np.abs(r - 1j * w0))]
+    speed = _refine(lambda x: float(root(x).real), v, lo, hi)
+    return speed, float(abs(root(speed).imag))
+
+
+def axis_crossings(model, lo, hi, at=None):
+    """``[(speed, kind, frequency)]``, ascending: every verified crossing of ``Re = 0`` in ``(lo, hi]``.
+
+    ``at`` may pass a shared :class:`Eigenvalues` of the model.
+    """
+    at = at or Eigenvalues(model)
+    P = at.coefficients
+    found = []
+    for kind, coefficients, check in ((REAL, P, _real_crossing),
+                                      (OSCILLATORY, additive_coefficients(P), _oscillatory_crossing)):
+        for v in real_roots(coefficients, lo, hi):
+            if v <= lo:
+                continue
+            hit = check(at, v, lo, hi)
+            if hit is not None and lo < hit[0] <= hi:
+                found.append((float(hit[0]), kind, hit[1]))
+    found.sort()
+    out = []
+    for c in found:
+        if out and c[1] == out[-1][1] and c[0] - out[-1][0] <= MERGE_TOL * (1 + c[0]):
+            continue
+        out.append(c)
+    return out
+
+
+def circle_speeds(model, radius, lo, hi, at=None):
+    """Speeds in ``(lo, hi)`` where an eigenvalue may have modulus ``radius`` (1/s): candidates for the
+    ends of marginally stable ranges (unverified: an extra speed only splits an interval)."""
+    at = at or Eigenvalues(model)
+    P = at.coefficients
+    n = P.shape[-1]
+    shifted = P.copy()
+    shifted[0] = shifted[0] - radius * np.eye(n)
+    C2 = multiplicative_coefficients(P)
+    C2[0] = C2[0] - radius ** 2 * np.eye(len(C2[0]))
+    v = np.concatenate([real_roots(shifted, lo, hi), real_roots(C2, lo, hi)])
+    return np.sort(v[(v > lo) & (v < hi)])

@@ -1,0 +1,90 @@
+"""Eigenvalues and eigenvectors of a linear model's dynamic states over a vector of speeds.
+
+The general path is LAPACK's ``geev`` on the stacked state matrices (``numpy.linalg.eig``, one
+batched call).  A model with two mechanical coordinates and no other dynamic states (the Whipple
+bicycle, rigid or with the quasi-static flexible frame) takes a fast path with the same numbers:
+the roots of the quartic ``det(M s^2 + C(v) s + K(v))`` in closed form
+(:mod:`~bikemass.analysis.engine.quartic`), each eigenvector ``[q, s q]`` with ``q`` spanning the
+null space of that 2 x 2 matrix.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .quartic import quartic_roots
+
+
+def _det2_poly(a, b, c):
+    """Coefficients (n, 5), highest first, of ``det(a s^2 + b s + c)`` for stacked 2x2 ``a, b, c``."""
+    def cross(x, y):   # x11 y22 + y11 x22 - x12 y21 - y12 x21
+        return (x[..., 0, 0] * y[..., 1, 1] + y[..., 0, 0] * x[..., 1, 1]
+                - x[..., 0, 1] * y[..., 1, 0] - y[..., 0, 1] * x[..., 1, 0])
+    return np.stack([cross(a, a) / 2, cross(a, b), cross(a, c) + cross(b, b) / 2,
+                     cross(b, c), cross(c, c) / 2], axis=-1)
+
+
+def has_quartic_path(model):
+    """Whether ``model`` is a two-coordinate second-order model (the closed-form fast path)."""
+    mech = model.mechanics
+    return mech is not None and len(mech.M) == 2 and model.n_dynamic == 4
+
+
+def characteristic_coefficients(mechanics, speeds):
+    """Coefficients (n, 5), highest power first, of ``det(M s^2 + C(v) s + K(v))`` at ``speeds``."""
+    v = np.asarray(speeds, dtype=float)
+    M = np.broadcast_to(mechanics.M, v.shape + (2, 2))
+    return _det2_poly(M, mechanics.damping(v), mechanics.stiffness(v))
+
+
+def _quartic_eigenvectors(mechanics, speeds, s):
+    """Unit state eigenvectors (n, 4, 4), column i for eigenvalue ``s[:, i]``."""
+    v = np.asarray(speeds, dtype=float)
+    K = mechanics.stiffness(v)[:, None]                 # (n, 1, 2, 2)
+    C = mechanics.damping(v)[:, None]
+    M = mechanics.M
+
+    def P(i, j):                                  # entry (i, j) of M s^2 + C(v) s + K(v)
+        return (s * M[i, j] + C[..., i, j]) * s + K[..., i, j]
+
+    p00, p01, p10, p11 = P(0, 0), P(0, 1), P(1, 0), P(1, 1)
+    row1 = np.abs(p00) + np.abs(p01) >= np.abs(p10) + np.abs(p11)   # null vector from the larger row
+    phi = np.where(row1, -p01, p11)
+    delta = np.where(row1, p00, -p10)
+    zero = (phi == 0) & (delta == 0)
+    phi = np.where(zero, 1.0, phi)
+    x = np.stack([phi, delta, s * phi, s * delta], axis=1)
+    return x / np.linalg.norm(x, axis=1, keepdims=True)
+
+
+@dataclass(frozen=True, eq=False)
+class EigenSweep:
+    """Eigenvalues (n, m) [1/s] and unit eigenvectors (n, N, m) [columns] at speeds (n,) [m/s], in
+    no particular column order (:mod:`~bikemass.analysis.engine.tracking` orders them)."""
+
+    speeds: np.ndarray
+    eigenvalues: np.ndarray
+    eigenvectors: np.ndarray
+
+
+def eigen_sweep(model, speeds):
+    """:class:`EigenSweep` of ``model``'s dynamic states at every speed of ``speeds`` (m/s)."""
+    v = np.atleast_1d(np.asarray(speeds, dtype=float))
+    if has_quartic_path(model):
+        s = quartic_roots(characteristic_coefficients(model.mechanics, v))
+        return EigenSweep(v, s, _quartic_eigenvectors(model.mechanics, v, s))
+    values, vectors = np.linalg.eig(model.dynamic_matrix(v))
+    values = np.where(values.imag == 0, values.real + 0j, values)
+    return EigenSweep(v, values.astype(complex), vectors.astype(complex))
+
+
+def natural_frequency(eigenvalues):
+    """Undamped natural frequency ``|l|`` (rad/s)."""
+    return np.abs(eigenvalues)
+
+
+def damping_ratio(eigenvalues):
+    """Damping ratio ``-Re(l) / |l|``; ``nan`` where ``l = 0``."""
+    mag = np.abs(eigenvalues)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(mag > 0, -eigenvalues.real / mag, np.nan)

@@ -1,0 +1,147 @@
+"""Naming tracked modes from their physics: weave, capsize, caster, and the modes of richer models.
+
+At standstill (``v = 0``) the Whipple bicycle's four roots are ``+-sqrt(mu)`` for the two static
+modes, ``mu`` the eigenvalues of ``-M^-1 g K0``: a slow pair (the whole bicycle falling over) and a
+fast one (the front assembly flopping to the side).  The positive (or ``+i``) root of each pair is
+a weave root, the two of which merge into the weave oscillation as speed grows; the negative
+(``-i``) root of the slow pair is the capsize mode and that of the fast pair the caster mode.
+Pairs are found from the values (``l`` and ``-l``), never from a solver's order.
+
+A richer model's further roots belong to its other mode families (a leaning rider, a flexing
+frame or fork, tyres): each root at standstill goes to the family whose states take the largest
+share of it (participation factors ``|x_k y_k|`` of right and left eigenvectors, Perez-Arriaga,
+Verghese & Schweppe 1982: independent of the states' units), the four most bicycle-like roots
+keep the rules above, and the others are named ``family`` or ``family 1``, ``family 2``, ...
+
+When a complex pair splits into two real roots again the tracking cannot tell which root
+continues which label (both leave one point).  The convention (the one Williams 2015's tables
+follow): of the two labels, the one earlier in the rank (weave 1, weave 2, capsize, caster, then
+the other families) takes the root with the larger real part.
+"""
+
+import numpy as np
+
+from .tracking import partners
+
+BICYCLE = "bicycle"
+"""The family of the Whipple bicycle's own modes (roll and steer)."""
+BICYCLE_LABELS = ("weave 1", "weave 2", "capsize", "caster")
+WEAVE = ("weave 1", "weave 2")
+_PAIRINGS = (((0, 1), (2, 3)), ((0, 2), (1, 3)), ((0, 3), (1, 2)))
+
+
+def participation(vectors):
+    """Participation factors (N, m) of the states in each mode: ``|x_ki (X^-1)_ik|``, columns sum to 1."""
+    P = np.abs(vectors * np.linalg.inv(vectors).T)
+    return P / P.sum(axis=0)
+
+
+def family(label):
+    """The family of a tracked label: ``"weave 1"`` -> ``"weave"``, ``"lean 2"`` -> ``"lean"``."""
+    head, _, tail = label.rpartition(" ")
+    return head if tail.isdigit() else label
+
+
+def _bicycle_labels(values):
+    """Labels of four bicycle roots at standstill (list in the order of ``values``)."""
+    pairs = min(_PAIRINGS, key=lambda pr: sum(abs(values[a] + values[b]) for a, b in pr))
+    slow, fast = sorted(pairs, key=lambda pr: abs(values[pr[0]] ** 2))
+    labels = [None] * 4
+    for (a, b), (up, down) in ((slow, ("weave 1", "capsize")), (fast, ("weave 2", "caster"))):
+        first = (values[a].real, values[a].imag) >= (values[b].real, values[b].imag)
+        labels[a], labels[b] = (up, down) if first else (down, up)
+    return labels
+
+
+def standstill_labels(values, vectors, families):
+    """Labels of the roots ``values`` (m,) with state eigenvectors ``vectors`` (N, m) at standstill.
+
+    ``families`` maps each family name to the indices of its dynamic states; the Whipple states
+    form :data:`BICYCLE`.  Returns a list of unique labels in the order of ``values``.
+    """
+    values = np.asarray(values)
+    if len(families) == 1:
+        return _bicycle_labels(values)
+    share = participation(vectors)
+    names = list(families)
+    weight = np.array([share[list(families[f])].sum(axis=0) for f in names])     # (families, m)
+    bicycle = np.argsort(-weight[names.index(BICYCLE)], kind="stable")[:4]
+    labels = [None] * len(values)
+    for i, label in zip(bicycle, _bicycle_labels(values[bicycle])):
+        labels[i] = label
+    others = [f for f in names if f != BICYCLE]
+    rest = [i for i in range(len(values)) if labels[i] is None]
+    home = {i: others[int(np.argmax([weight[names.index(f), i] for f in others]))] for i in rest}
+    for f in others:
+        mine = sorted((i for i in rest if home[i] == f), key=lambda i: (-values[i].real, -values[i].imag))
+        for k, i in enumerate(mine):
+            labels[i] = f if len(mine) == 1 else f"{f} {k + 1}"
+    return labels
+
+
+def split_rank(labels):
+    """Labels in split-rank order: the bicycle's first, then the others as given."""
+    return [*[b for b in BICYCLE_LABELS if b in labels], *[x for x in labels if x not in BICYCLE_LABELS]]
+
+
+def _is_pair(values, i, j):
+    """Speeds where columns i and j are a complex-conjugate pair (bool array)."""
+    a, b = values[:, i], values[:, j]
+    return (a.imag != 0) & (np.abs(a - b.conj()) <= 1e-9 * (1 + np.abs(a)))
+
+
+def settle_splits(values, labels):
+    """Column order (n, m) applying the split-rank convention after every split of a pair.
+
+    ``values`` (n, m) are tracked roots whose column ``c`` carries ``labels[c]``.
+    """
+    values = np.array(values)
+    n, m = values.shape
+    order = np.tile(np.arange(m), (n, 1))
+    ranking = split_rank(labels)
+    rank = [ranking.index(label) for label in labels]
+    for i in range(m):
+        for j in range(i + 1, m):
+            paired = _is_pair(values, i, j)
+            real = (values[:, i].imag == 0) & (values[:, j].imag == 0)
+            for k in np.flatnonzero(paired[:-1] & real[1:]) + 1:
+                ahead = np.flatnonzero(~real[k:])      # first speed after the split where the roots differ
+                end = k + (ahead[0] if len(ahead) else n - k)
+                differ = np.flatnonzero(values[k:end, i].real != values[k:end, j].real)
+                if not len(differ):
+                    continue
+                d = k + differ[0]
+                upper_is_i = values[d, i].real > values[d, j].real
+                if upper_is_i != (rank[i] < rank[j]):
+                    values[k:, [i, j]] = values[k:, [j, i]]
+                    order[k:, [i, j]] = order[k:, [j, i]]
+    return order
+
+
+def mode_names(values, labels):
+    """What each root is at every speed, for people to read: array (n, m) of str.
+
+    Two roots of one family (``weave 1`` and ``weave 2``) that are a complex pair are named by the
+    family (``"weave"``); split into real roots, ``"weave, real (upper)"`` and ``"..., real (lower)"``
+    by real part; a single-root family as tracked (``"capsize"``, ``"caster"``); roots of different
+    families paired up ``"<label> + <label> oscillation"``.
+    """
+    values = np.asarray(values)
+    partner = partners(values)
+    names = np.empty(values.shape, dtype=object)
+    for c, label in enumerate(labels):
+        names[:, c] = label
+        for k in np.flatnonzero(partner[:, c] != c):
+            other = labels[partner[k, c]]
+            names[k, c] = (family(label) if family(label) == family(other) and label != other
+                           else " + ".join(sorted((label, other))) + " oscillation")
+    for c, label in enumerate(labels):
+        mates = [o for o, x in enumerate(labels) if o != c and family(x) == family(label) and x != family(x)]
+        if len(mates) != 1:
+            continue
+        other = mates[0]
+        real = (partner[:, c] == c) & (partner[:, other] == other)
+        upper = (values[:, c].real > values[:, other].real) | ((values[:, c].real == values[:, other].real) & (c < other))
+        names[real & upper, c] = f"{family(label)}, real (upper)"
+        names[real & ~upper, c] = f"{family(label)}, real (lower)"
+    return names.astype(str)

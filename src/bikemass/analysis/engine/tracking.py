@@ -1,0 +1,109 @@
+"""Following eigenvalues across speed: which root at one speed continues which at the next.
+
+Between neighbouring speeds every eigenvalue is matched to one at the next speed by an optimal
+assignment (``scipy.optimize.linear_sum_assignment``) on the cost::
+
+    |l_j(k+1) - l_i(k)| / scale_k  +  (1 - MAC_ij)  +  HALF_PLANE_PENALTY [both complex, Im of opposite signs]
+
+where ``MAC_ij = |x_i^H x_j|^2`` is the overlap of the unit state eigenvectors and ``scale_k`` the
+largest eigenvalue modulus at the two speeds (at least 1 1/s).  The distance separates roots far
+apart; the eigenvector term decides where roots cross (and, at ``v = 0``, between a root and its
+mirror ``-l``).  Where a pair splits into two real roots both partners continue equally well:
+naming settles which is which (:mod:`.naming`).
+
+Roots of a real matrix move in complex-conjugate pairs: while a pair stays complex its members'
+images must be partners again; a pair may only split into two real roots, and real roots only
+merge with each other.  The costs are symmetric under conjugation, so the optimum mostly keeps
+pairs by itself, and the half-plane term stops a root from continuing as its partner's image.
+But where a pair passes close to a real root, the assignment that trades one member with the
+real root and the one that trades the other cost the same, and the solver may pick either.  Such
+a step is repaired exactly: the roots involved (the broken pairs, their images' partners, and so
+on until closed; a handful) are assigned again by trying every permutation of them, and the
+cheapest that breaks no pair wins.
+"""
+
+import numpy as np
+from itertools import permutations
+
+from scipy.optimize import linear_sum_assignment
+
+HALF_PLANE_PENALTY = 10.0
+"""Cost of matching an upper-half-plane root to a lower one (the largest other cost is about 3)."""
+
+
+def step_costs(values, vectors):
+    """Assignment costs (n - 1, m, m): row i = root i at speed k, column j = root j at speed k + 1."""
+    dist = np.abs(values[1:, None, :] - values[:-1, :, None])
+    scale = np.maximum(np.abs(values).max(axis=1), 1.0)
+    scale = np.maximum(scale[1:], scale[:-1])[:, None, None]
+    mac = np.abs(np.einsum("kai,kaj->kij", vectors[:-1].conj(), vectors[1:])) ** 2
+    sign = np.sign(values.imag)
+    flip = (sign[:-1, :, None] * sign[1:, None, :]) < 0
+    return dist / scale + (1.0 - mac) + HALF_PLANE_PENALTY * flip
+
+
+def broken_pairs(step, before, after):
+    """Rows whose conjugate pair ``step`` breaks (``before``/``after``: partner indices at the two speeds)."""
+    return np.flatnonzero(_breaks(step[None], before[None], after[None])[0])
+
+
+def _breaks(steps, before, after):
+    """Boolean (k, m): row i's pair broken by ``steps[k]`` (all arrays stacked over k)."""
+    rows = np.arange(steps.shape[1])
+    k = np.arange(len(steps))[:, None]
+    partner_of_image = after[k, steps]
+    image_of_partner = steps[k, before]
+    return (before != rows) & (partner_of_image != steps) & (partner_of_image != image_of_partner)
+
+
+def _repaired(step, cost, before, after):
+    """``step`` with its broken pairs repaired by the cheapest valid permutation of the rows involved."""
+    rows = set(broken_pairs(step, before, after).tolist())
+    while True:                                   # close the set: partners, and rows onto images' partners
+        grown = set(rows)
+        for i in rows:
+            grown.add(int(before[i]))
+            grown.update(int(r) for r in np.flatnonzero(step == after[step[i]]))
+        if grown == rows:
+            break
+        rows = grown
+    rows = sorted(rows)
+    images = step[rows]
+    best, best_cost = step, np.inf
+    for q in permutations(images):
+        trial = step.copy()
+        trial[rows] = q
+        c = cost[np.arange(len(step)), trial].sum()
+        if c < best_cost and not len(broken_pairs(trial, before, after)):
+            best, best_cost = trial, c
+    return best
+
+
+def track(values, vectors):
+    """Column order (n, m): ``order[k, i]`` is the column, at speed ``k``, of the root that starts
+    as column ``i`` at the first speed."""
+    costs = step_costs(values, vectors)
+    part = partners(values)
+    n, m = values.shape
+    steps = np.array([linear_sum_assignment(c)[1] for c in costs], dtype=int).reshape(n - 1, m)
+    for k in np.flatnonzero(_breaks(steps, part[:-1], part[1:]).any(axis=1)):
+        steps[k] = _repaired(steps[k], costs[k], part[k], part[k + 1])
+    order = np.empty((n, m), dtype=int)
+    order[0] = np.arange(m)
+    for k, step in enumerate(steps):              # row i (speed k) -> column step[i] (speed k + 1)
+        order[k + 1] = step[order[k]]
+    return order
+
+
+def reorder(values, vectors, order):
+    """``values`` (n, m) and ``vectors`` (n, N, m) with their columns put in ``order``."""
+    return (np.take_along_axis(values, order, axis=1),
+            np.take_along_axis(vectors, order[:, None, :], axis=2))
+
+
+def partners(values):
+    """Index (n, m) of each root's complex-conjugate partner; a real root is its own partner."""
+    d = np.abs(values[:, :, None] - values[:, None, :].conj())
+    m = values.shape[1]
+    d[:, np.arange(m), np.arange(m)] = np.inf
+    return np.where(values.imag == 0, np.arange(m), np.argmin(d, axis=2))

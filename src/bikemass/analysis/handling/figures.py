@@ -1,0 +1,233 @@
+"""Handling figures: Bode plots, time responses, mode shapes as phasors, the handling quality
+metric against frequency and its peak against speed, and lane changes.  Each function returns a
+new :class:`matplotlib.figure.Figure` (no pyplot)."""
+
+import numpy as np
+
+from .frequency import FrequencyResponse
+from .lane_change import LaneChange
+from .mode_shapes import ModeShapes
+from .quality import LEVEL_BOUNDS
+from .survey import HandlingResult
+from .time_response import TimeResponse
+from ...core.errors import wrong_type
+from ...plots.figure import new_figure
+
+BODE_SIZE = (6.4, 5.2)
+TIME_SIZE = (7.0, 5.6)
+SHAPES_SIZE = (8.0, 3.4)
+HANDLING_SIZE = (9.0, 3.8)
+LANE_SIZE = (7.0, 6.4)
+LEVEL_COLOURS = ("#e3f1e0", "#fbf1d3", "#f7dcdc")
+"""Background of the handling-quality Levels 1, 2, 3."""
+
+
+def _many(value, kind, what):
+    items = list(value) if isinstance(value, (list, tuple)) else [value]
+    if not items or not all(isinstance(v, kind) for v in items):
+        raise wrong_type("result", value, what)
+    return items
+
+
+def plot_bode(responses, title="", size=None):
+    """Figure: magnitude (dB) and phase (deg) against angular frequency (rad/s, logarithmic).
+
+    ``responses``: a :class:`~bikemass.analysis.handling.frequency.FrequencyResponse` or a list of
+    them (one curve each, labelled by speed).
+    """
+    items = _many(responses, FrequencyResponse, "a FrequencyResponse (bm.frequency_response) or a list of them")
+    fig = new_figure(size or BODE_SIZE)
+    mag, phase = fig.subplots(2, 1, sharex=True)
+    for r in items:
+        label = f"{r.speed:g} m/s"
+        mag.semilogx(r.frequencies, r.magnitude, label=label)
+        phase.semilogx(r.frequencies, r.phase, label=label)
+    first = items[0]
+    mag.set_ylabel(f"magnitude, dB ({first.ratio_unit})")
+    phase.set_ylabel("phase, deg")
+    phase.set_xlabel("frequency, rad/s")
+    for ax in (mag, phase):
+        ax.grid(True, which="both", alpha=0.3)
+    if len(items) > 1:
+        mag.legend(fontsize="small")
+    mag.set_title(title or f"{first.output} / {first.input}")
+    return fig
+
+
+def plot_time_response(response, title="", size=None):
+    """Figure: every state of a :class:`~bikemass.analysis.handling.time_response.TimeResponse`
+    against time (s), one panel per unit (angles, rates, lengths)."""
+    if not isinstance(response, TimeResponse):
+        raise wrong_type("response", response, "a TimeResponse (bm.simulate)")
+    units = list(dict.fromkeys(response.units))
+    fig = new_figure(size or TIME_SIZE)
+    axes = np.atleast_1d(fig.subplots(len(units), 1, sharex=True))
+    for ax, unit in zip(axes, units):
+        for name, u in zip(response.names, response.units):
+            if u == unit:
+                ax.plot(response.time, response[name], label=name)
+        ax.set_ylabel(unit)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize="small", loc="best")
+    axes[-1].set_xlabel("time, s")
+    axes[0].set_title(title or f"time response at {response.speed:g} m/s")
+    return fig
+
+
+def _shown_modes(shapes):
+    """Indices of the modes drawn: each distinct mode once (a conjugate pair by its +i member)."""
+    shown = []
+    for i, z in enumerate(shapes.eigenvalues):
+        if z.imag < 0 and any(abs(w - z.conjugate()) <= 1e-9 * max(1.0, abs(z)) for w in shapes.eigenvalues):
+            continue
+        shown.append(i)
+    return shown
+
+
+def plot_mode_shapes(shapes, title="", size=None):
+    """Figure: one polar panel per mode of a
+    :class:`~bikemass.analysis.handling.mode_shapes.ModeShapes` (a conjugate pair once), each
+    mechanical coordinate (roll, steer, ...) an arrow of its amplitude and phase relative to the
+    mode's largest one (the heading and lateral position are in the table, ``shapes.to_dict()``)."""
+    if not isinstance(shapes, ModeShapes):
+        raise wrong_type("shapes", shapes, "ModeShapes (bm.mode_shapes)")
+    modes = _shown_modes(shapes)
+    angles = list(range(shapes.n_mechanical))
+    fig = new_figure(size or SHAPES_SIZE)
+    axes = [fig.add_subplot(1, len(modes), j + 1, projection="polar") for j in range(len(modes))]
+    colours = [f"C{k}" for k in range(len(angles))]
+    for ax, i in zip(axes, modes):
+        reach = max(shapes.amplitude[i, k] for k in angles)
+        for colour, k in zip(colours, angles):
+            a, p = shapes.amplitude[i, k], np.radians(shapes.phase[i, k])
+            ax.annotate("", xy=(p, a), xytext=(0, 0),
+                        arrowprops={"arrowstyle": "->", "color": colour, "lw": 1.8})
+            ax.plot([], [], color=colour, label=shapes.coordinates[k])
+        ax.set_rmax(1.1 * reach)
+        ax.set_rticks([])
+        z = shapes.eigenvalues[i]
+        ax.set_title(f"{shapes.names[i]}\n{z.real:.3g} {'+' if z.imag >= 0 else '-'} {abs(z.imag):.3g}j 1/s",
+                     fontsize="small")
+    axes[0].legend(loc="lower left", bbox_to_anchor=(-0.3, -0.35), fontsize="small")
+    fig.suptitle(title or f"mode shapes at {shapes.speed:g} m/s", fontsize="medium")
+    return fig
+
+
+def _level_bands(ax, top):
+    edges = (0.0, *LEVEL_BOUNDS, max(top, LEVEL_BOUNDS[-1] * 1.25))
+    for k, colour in enumerate(LEVEL_COLOURS):
+        ax.axhspan(edges[k], edges[k + 1], color=colour, zorder=0)
+        ax.text(0.99, (edges[k] + min(edges[k + 1], top)) / 2, f"Level {k + 1}", transform=ax.get_yaxis_transform(),
+                ha="right", va="center", fontsize="x-small", color="0.35")
+
+
+def plot_handling(result, title="", size=None, stable_speeds=()):
+    """Figure: the HQM against frequency at every speed (left) and its peak against speed (right)
+    over the handling-quality Levels, for a :class:`~bikemass.analysis.handling.survey.HandlingResult`.
+
+    ``stable_speeds``: ``((start, stop), ...)`` (m/s) where the bicycle without rider is
+    self-stable, shaded on the right.
+    """
+    if not isinstance(result, HandlingResult):
+        raise wrong_type("result", result, "a HandlingResult (bm.handling)")
+    fig = new_figure(size or HANDLING_SIZE)
+    curves, peaks = fig.subplots(1, 2)
+    finite = np.isfinite(result.hqm_peak)
+    top = float(np.nanmax(result.hqm_peak)) * 1.1 if finite.any() else 10.0
+    top = min(max(top, 9.0), 40.0)
+    for v, curve, ok in zip(result.speeds, result.hqm, finite):
+        if ok:
+            curves.plot(result.hqm_frequencies, curve, label=f"{v:g} m/s")
+    curves.set_xlim(0, 20)
+    curves.set_ylim(0, top)
+    _level_bands(curves, top)
+    curves.set_xlabel("frequency, rad/s")
+    curves.set_ylabel("HQM")
+    if finite.sum() <= 10:
+        curves.legend(fontsize="x-small", loc="upper left")
+    for start, stop in stable_speeds:
+        peaks.axvspan(start, stop, color="tab:green", alpha=0.15, zorder=1, label="self-stable")
+    peaks.plot(result.speeds, result.hqm_peak, "o-", ms=3, color="k", zorder=3)
+    unstable = ~result.closed_loop_stable & finite
+    if unstable.any():
+        peaks.plot(result.speeds[unstable], result.hqm_peak[unstable], "x", color="tab:red", zorder=4,
+                   label="closed loop unstable")
+    peaks.set_ylim(0, top)
+    _level_bands(peaks, top)
+    peaks.set_xlabel("speed, m/s")
+    peaks.set_ylabel("HQM peak")
+    handles, labels = peaks.get_legend_handles_labels()
+    if handles:
+        unique = dict(zip(labels, handles))
+        peaks.legend(unique.values(), unique.keys(), fontsize="x-small", loc="upper right")
+    fig.suptitle(title or "handling quality metric (Hess, Moore & Hubbard 2012)", fontsize="medium")
+    return fig
+
+
+def plot_lane_change(runs, title="", size=None):
+    """Figure: lateral positions (road and front contact), roll and steer angles (deg) and the
+    rider's steer torque (N m) against the distance along the road (m; the front contact's, the
+    lane change starting at 35 m), one line per
+    :class:`~bikemass.analysis.handling.lane_change.LaneChange` of ``runs``."""
+    items = _many(runs, LaneChange, "a LaneChange (bm.lane_change) or a list of them")
+    fig = new_figure(size or LANE_SIZE)
+    lateral, angles, torque = fig.subplots(3, 1, sharex=True)
+    for k, run in enumerate(items):
+        x = run.distance
+        colour = f"C{k}"
+        lat = next(name for name in ("front-lateral", "lateral") if name in run.signals)
+        if k == 0:
+            lateral.plot(x, run.road, color="0.5", lw=3, alpha=0.5, label="road")
+        lateral.plot(x, run.signals[lat], color=colour, label=f"{lat}, {run.speed:g} m/s")
+        angles.plot(x, np.degrees(run.signals["roll-angle"]), color=colour, label=f"roll, {run.speed:g} m/s")
+        angles.plot(x, np.degrees(run.signals["steer-angle"]), color=colour, ls="--",
+                    label=f"steer, {run.speed:g} m/s")
+        torque.plot(x, run.signals["steer-torque"], color=colour)
+    lateral.set_ylabel("lateral position, m")
+    angles.set_ylabel("angle, deg")
+    torque.set_ylabel("steer torque, N m")
+    torque.set_xlabel("distance along the road, m")
+    for ax in (lateral, angles, torque):
+        ax.grid(True, alpha=0.3)
+    lateral.legend(fontsize="x-small")
+    angles.legend(fontsize="x-small", ncol=2)
+    lateral.set_title(title or "lane change with the rider in the loop")
+    return fig
+
+
+def plot_handling_by_rider(results, title="", size=None, stable_speeds=None):
+    """Figure: the HQM peak against speed of several riders (or configurations) of one bicycle,
+    over the handling-quality Levels, and beneath it each one's self-stable speeds as a bar.
+
+    ``results``: ``{name: HandlingResult}``; ``stable_speeds``: ``{name: ((start, stop), ...)}``
+    (m/s).  Points where the closed loop is unstable or no gains were found are left out.
+    """
+    if not isinstance(results, dict) or not results or not all(isinstance(r, HandlingResult) for r in results.values()):
+        raise wrong_type("results", results, "a mapping {name: HandlingResult}")
+    stable_speeds = stable_speeds or {}
+    fig = new_figure(size or (7.0, 5.6))
+    peaks, bars = fig.subplots(2, 1, sharex=True, height_ratios=(3, 1))
+    finite = [r.hqm_peak[r.closed_loop_stable] for r in results.values()]
+    top = max([float(f.max()) for f in finite if f.size], default=10.0)
+    top = min(max(1.1 * top, 9.0), 40.0)
+    _level_bands(peaks, top)
+    for k, (name, r) in enumerate(results.items()):
+        shown = np.where(r.closed_loop_stable, r.hqm_peak, np.nan)
+        peaks.plot(r.speeds, shown, "o-", ms=3, color=f"C{k}", label=name)
+        for start, stop in stable_speeds.get(name, ()):
+            bars.plot([start, stop], [k, k], color=f"C{k}", lw=6, solid_capstyle="butt")
+    if not any(np.isfinite(np.where(r.closed_loop_stable, r.hqm_peak, np.nan)).any() for r in results.values()):
+        peaks.text(0.5, 0.5, "no gains close the loop stably", transform=peaks.transAxes, ha="center",
+                   va="center", color="0.3")
+    peaks.set_ylim(0, top)
+    peaks.set_ylabel("HQM peak")
+    peaks.legend(fontsize="x-small", loc="upper right")
+    bars.set_yticks(range(len(results)), list(results), fontsize="x-small")
+    bars.set_ylim(-0.7, len(results) - 0.3)
+    bars.invert_yaxis()
+    bars.set_xlabel("speed, m/s")
+    bars.set_title("self-stable speeds (no rider control)", fontsize="small")
+    for ax in (peaks, bars):
+        ax.grid(True, axis="x", alpha=0.3)
+    peaks.set_title(title or "handling quality against speed", fontsize="medium")
+    return fig

@@ -1,0 +1,94 @@
+"""What every handling analysis starts from: a :class:`~bikemass.models.linear.LinearModel` at one
+speed, its input column and its output row, with the arguments checked.
+
+A *system* is a :class:`~bikemass.models.linear.LinearModel` (any member of the family: the
+Whipple bicycle, a flexible frame, a leaning rider, ...) or a
+:class:`~bikemass.models.parameters.BenchmarkParameters` set, which is the Whipple bicycle of
+:func:`~bikemass.models.whipple.whipple_model` (with the rear-frame stiffness S, N m/rad, when
+one is given).  Bad arguments raise :class:`~bikemass.core.errors.InputError` naming the argument and
+the choices.
+"""
+
+import math
+import numbers
+
+import numpy as np
+
+from ...core.choices import closest
+from ...core.errors import InputError, short, wrong_type
+from ..results import matrices
+from ...models.linear import LinearModel
+from ...models.whipple import whipple_model
+from ...models.parameters import BenchmarkParameters
+
+MAX_SPEED = 1000.0
+"""Highest forward speed (m/s) an analysis accepts (as the speed grids of ``bikemass stability``)."""
+
+
+def linear_model(system, stiffness=None):
+    """``system`` as a :class:`~bikemass.models.linear.LinearModel`.
+
+    Parameters
+    ----------
+    system : LinearModel or BenchmarkParameters
+        A model, or the 26 Meijaard et al. (2007) parameters (SI) of a Whipple bicycle.
+    stiffness : array_like (2, 2) or None
+        Rear-frame stiffness S (N m/rad) of a parameter set; ``None`` for a rigid frame.  Not
+        allowed with a model (a model carries its own frame).
+
+    Returns
+    -------
+    LinearModel
+    """
+    if isinstance(system, LinearModel):
+        if stiffness is not None:
+            raise InputError("stiffness", "(argument)", "a LinearModel carries its own frame: give the "
+                             "stiffness to the model's builder (whipple_model(params, stiffness))")
+        return system
+    if isinstance(system, BenchmarkParameters):
+        matrices(system, stiffness)                       # checks the parameters and S (InputError)
+        S = None if stiffness is None else np.asarray(stiffness, dtype=float)
+        return whipple_model(system, S)
+    raise wrong_type("system", system, "a system is a LinearModel or BenchmarkParameters (bm.parameters)")
+
+
+def check_speed(speed, what="speed"):
+    """``speed`` as a float (m/s); InputError unless a finite number in [0, :data:`MAX_SPEED`]."""
+    if isinstance(speed, bool) or not isinstance(speed, numbers.Real) or not math.isfinite(speed) \
+            or not 0 <= speed <= MAX_SPEED:
+        raise InputError(what, short(speed), f"a forward speed in m/s, a finite number in 0..{MAX_SPEED:g}")
+    return float(speed)
+
+
+def input_index(model, name):
+    """Position of the input ``name`` of ``model``; InputError naming the inputs otherwise."""
+    if not isinstance(name, str) or name not in model.input_names:
+        raise InputError("input", short(name), f"one of {', '.join(model.input_names)}"
+                         f"{closest(name, model.input_names)}")
+    return model.input_names.index(name)
+
+
+def output_row(model, name):
+    """The row (N,) giving the output ``name`` (a state or a further output) from the states;
+    InputError naming the outputs otherwise."""
+    if not isinstance(name, str) or name not in model.output_names:
+        raise InputError("output", short(name), f"one of {', '.join(model.output_names)}"
+                         f"{closest(name, model.output_names)}")
+    return model.output_matrix([name])[0]
+
+
+def siso(model, speed, input, output):
+    """``(A, b, c)`` of ``model`` at ``speed`` (m/s) from ``input`` to ``output`` (names): the
+    state matrix (N, N), the input's column (N,) and the output's row (N,)."""
+    v = check_speed(speed)
+    j = input_index(model, input)
+    c = output_row(model, output)
+    return model.state_matrix(v), model.input_matrix(v)[:, j], c
+
+
+def signal_unit(model, name):
+    """The unit of the input or output ``name`` of ``model``."""
+    for s in model.inputs:
+        if s.name == name:
+            return s.unit
+    return model.output_signal(name).unit

@@ -1,0 +1,216 @@
+"""Handling against speed (``bm.handling``): at every speed the rider's gains (tuned, or given),
+the closed loop's stability, and the handling quality metric and its peak."""
+
+import math
+import numbers
+import os
+import warnings
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...core.errors import BikemassWarning, InputError, short
+from ...core.frozen import readonly, short_repr
+from ...core.threads import one_blas_thread
+from .gains import NAMES, UNITS, as_gains, read_gain_table
+from .plant import MAX_SPEED, linear_model
+from .quality import hqm, hqm_peak, level
+from .rider import closed_loop, rider_plant
+from .tuning import GainsNotFound, tune_gains
+
+CURVE_FREQUENCIES = np.linspace(0.01, 40.0, 800)
+"""Frequencies (rad/s) of the HQM curves kept for figures (linear, as the published figures)."""
+MAX_SURVEY_SPEEDS = 1000
+"""Most speeds of one survey (the gains of one speed cost about 0.2 s)."""
+SPEED_MATCH = 1e-9
+"""How close (m/s) a speed must be to a gains file's to take its gains."""
+
+
+def check_speeds(speeds):
+    """``speeds`` (m/s) as an increasing 1-D float array in [0, MAX_SPEED]; InputError otherwise."""
+    values = np.atleast_1d(np.asarray(speeds, dtype=object))
+    if values.ndim != 1 or not 1 <= values.size <= MAX_SURVEY_SPEEDS or not all(
+            isinstance(v, numbers.Real) and not isinstance(v, bool) and math.isfinite(v) and 0 <= v <= MAX_SPEED
+            for v in values):
+        raise InputError("speeds", short(speeds), f"1 to {MAX_SURVEY_SPEEDS} forward speeds in m/s, finite, "
+                         f"in 0..{MAX_SPEED:g}")
+    v = values.astype(float)
+    if np.any(np.diff(v) <= 0):
+        raise InputError("speeds", short(speeds), "increasing speeds (m/s)")
+    return v
+
+
+def given_gains(gains, speeds):
+    """``(speeds, [Gains or None per speed])`` from the ``gains`` argument of :func:`handling`."""
+    if gains is None:
+        if speeds is None:
+            raise InputError("speeds", "(argument)", "the speeds (m/s) at which to tune the rider's gains")
+        v = check_speeds(speeds)
+        return v, [None] * len(v)
+    if isinstance(gains, (str, os.PathLike)):
+        table, source = read_gain_table(gains), os.fspath(gains)
+    elif isinstance(gains, Mapping):
+        table, source = {float(k): as_gains(g, "gains", f"speed {k}") for k, g in gains.items()}, "gains"
+    else:
+        fixed = as_gains(gains)
+        v = check_speeds(speeds) if speeds is not None else None
+        if v is None:
+            raise InputError("speeds", "(argument)", "the speeds (m/s) at which to use the gains")
+        return v, [fixed] * len(v)
+    v = check_speeds(sorted(table) if speeds is None else speeds)
+    known = np.array(sorted(table))
+    chosen = []
+    for speed in v:
+        k = int(np.argmin(np.abs(known - speed)))
+        if abs(known[k] - speed) > SPEED_MATCH:
+            raise InputError(source, f"speed {speed:g}", "a row of gains for every speed asked for (speeds in the "
+                             f"file: {', '.join(f'{s:g}' for s in known[:12])}{', ...' if len(known) > 12 else ''})")
+        chosen.append(table[float(known[k])])
+    return v, chosen
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class HandlingResult:
+    """The rider and bicycle at every speed.
+
+    Attributes
+    ----------
+    speeds : numpy.ndarray (n,)
+        m/s.
+    gains : tuple of Gains or None
+        The gains used at each speed (``None`` where the procedure found none).
+    gain_source : tuple of str
+        ``"tuned"`` (the published procedure, :mod:`~bikemass.analysis.handling.tuning`) or
+        ``"given"`` at each speed.
+    closed_loop_stable : numpy.ndarray (n,) of bool
+        Whether every closed-loop eigenvalue has a negative real part.
+    max_real : numpy.ndarray (n,)
+        The largest closed-loop real part (1/s).
+    hqm_peak, hqm_peak_frequency : numpy.ndarray (n,)
+        The HQM's peak (dimensionless) and where it is (rad/s); ``nan`` without gains.
+    hqm_frequencies : numpy.ndarray (k,)
+        rad/s, of :attr:`hqm`.
+    hqm : numpy.ndarray (n, k)
+        The HQM against frequency at each speed.
+    lateral : str
+        The lateral position the outer loop feeds back (``front-lateral``, or ``lateral``).
+    """
+
+    speeds: np.ndarray
+    gains: tuple
+    gain_source: tuple
+    closed_loop_stable: np.ndarray
+    max_real: np.ndarray
+    hqm_peak: np.ndarray
+    hqm_peak_frequency: np.ndarray
+    hqm_frequencies: np.ndarray
+    hqm: np.ndarray
+    lateral: str
+
+    def __post_init__(self):
+        for name in ("speeds", "closed_loop_stable", "max_real", "hqm_peak", "hqm_peak_frequency",
+                     "hqm_frequencies", "hqm"):
+            object.__setattr__(self, name, readonly(getattr(self, name)))
+
+    @property
+    def levels(self):
+        """The handling-quality level (1, 2, 3) at each speed; 0 without gains."""
+        return tuple(0 if not np.isfinite(p) else level(p) for p in self.hqm_peak)
+
+    def gain(self, name):
+        """One gain (``k_delta``, ...) at every speed, (n,); ``nan`` without gains."""
+        return readonly([getattr(g, name) if g is not None else np.nan for g in self.gains])
+
+    def to_dict(self):
+        """Plain data: speeds, gains, gain_source, closed_loop_stable, closed_loop_max_real,
+        hqm_peak, hqm_peak_frequency, level, lateral_feedback (``null`` where no gains were found)."""
+        def listed(values):
+            return [float(x) if np.isfinite(x) else None for x in values]
+        return {"speeds": self.speeds.tolist(),
+                "gains": {name: listed(self.gain(name)) for name in NAMES},
+                "gain_source": list(self.gain_source),
+                "closed_loop_stable": [bool(x) for x in self.closed_loop_stable],
+                "closed_loop_max_real": listed(self.max_real),
+                "hqm_peak": listed(self.hqm_peak), "hqm_peak_frequency": listed(self.hqm_peak_frequency),
+                "level": list(self.levels), "lateral_feedback": self.lateral}
+
+    def unit_block(self):
+        """The unit of each key of :meth:`to_dict` that holds a quantity."""
+        return {"speeds": "m/s", **UNITS, "closed_loop_max_real": "1/s", "hqm_peak": "1",
+                "hqm_peak_frequency": "rad/s"}
+
+    def __repr__(self):
+        v = self.speeds
+        peaks = ", ".join(f"{p:.3g}" for p in self.hqm_peak[:6]) + (", ..." if len(v) > 6 else "")
+        return short_repr(self, ("speeds", f"{v[0]:g}..{v[-1]:g} m/s x {len(v)}"),
+                          ("stable", f"{int(self.closed_loop_stable.sum())}/{len(v)}"), ("hqm_peak", f"({peaks})"))
+
+
+@one_blas_thread()
+def handling(system, speeds=None, gains=None, stiffness=None):
+    """The rider in the loop at every speed: gains, closed-loop stability and handling qualities.
+
+    Parameters
+    ----------
+    system : LinearModel or BenchmarkParameters
+        A linear model with a steer-torque input and the signals the rider feeds back (every
+        bicycle model of bikemass), or a benchmark parameter set (the Whipple bicycle).
+    speeds : array_like (n,), optional
+        Increasing forward speeds (m/s); default the speeds of a gains file or mapping.
+    gains : None, str, os.PathLike, mapping or five numbers
+        ``None``: tuned at every speed by the published procedure
+        (:mod:`~bikemass.analysis.handling.tuning`); a gains file (CSV, header
+        ``speed,kDelta,kPhiDot,kPhi,kPsi,kY``) or ``{speed: (k_delta, k_phi_dot, k_phi, k_psi,
+        k_y)}``: given per speed (every speed asked for must be there); five numbers: the same at
+        every speed.
+    stiffness : array_like (2, 2), optional
+        Rear-frame stiffness S (N m/rad) of a parameter set.
+
+    Returns
+    -------
+    HandlingResult
+        ``gains``, ``closed_loop_stable``, ``hqm_peak`` and the HQM curves at every speed.
+
+    Warns
+    -----
+    BikemassWarning
+        At a speed where the procedure finds no gains (results there are ``nan``, not stable).
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> r = bm.handling(bm.parameters("benchmark"), [5.0])
+    >>> g = r.gains[0]
+    >>> print(f"{g.k_delta:.4f} {g.k_phi_dot:.4f} {g.k_phi:.4f} {g.k_psi:.4f} {g.k_y:.4f}")
+    46.5455 -0.0522 12.6611 0.1849 0.0959
+    >>> print(bool(r.closed_loop_stable[0]), f"HQM peak {r.hqm_peak[0]:.3f} at {r.hqm_peak_frequency[0]:.2f} rad/s")
+    True HQM peak 4.686 at 13.48 rad/s
+    """
+    model = linear_model(system, stiffness)
+    v, chosen = given_gains(gains, speeds)
+    rows = []
+    lateral = None
+    for speed, given in zip(v, chosen):
+        plant = rider_plant(model, speed)
+        lateral = plant.lateral
+        g = given
+        if g is None:
+            try:
+                g = tune_gains(plant)
+            except GainsNotFound as exc:
+                warnings.warn(f"{exc}; that speed is left out", BikemassWarning, stacklevel=2)
+        rows.append(_at_speed(plant, g))
+    return HandlingResult(v, tuple(r[0] for r in rows), tuple("given" if g is not None else "tuned" for g in chosen),
+                          np.array([r[1] for r in rows], bool), np.array([r[2] for r in rows]),
+                          np.array([r[3] for r in rows]), np.array([r[4] for r in rows]), CURVE_FREQUENCIES,
+                          np.array([r[5] for r in rows]).reshape(len(v), len(CURVE_FREQUENCIES)), lateral)
+
+
+def _at_speed(plant, gains):
+    """``(gains, stable, max real, peak, peak frequency, curve)`` at one speed."""
+    if gains is None:
+        return None, False, np.nan, np.nan, np.nan, np.full(len(CURVE_FREQUENCIES), np.nan)
+    closed = closed_loop(plant, gains)
+    peak, where = hqm_peak(plant, gains)
+    return closed.gains, closed.stable, closed.max_real, peak, where, hqm(plant, gains, CURVE_FREQUENCIES)

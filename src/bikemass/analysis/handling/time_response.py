@@ -1,0 +1,188 @@
+"""Time responses of a linear model: from initial conditions, and to steps and impulses of its
+inputs, sampled at ``0, dt, 2 dt, ..., T`` and exact at the samples (the matrix exponential,
+:mod:`~bikemass.analysis.handling.discrete`).
+
+A step of size ``a`` (N m) holds the input at ``a`` from ``t = 0``; an impulse of size ``J``
+(N m s) adds ``B J`` to the state at ``t = 0``, so the first sample is the state just after it.
+"""
+
+import math
+import numbers
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...core.choices import closest
+from ...core.errors import InputError, short, wrong_type
+from ...core.frozen import FrozenMap, readonly, short_repr
+from .discrete import march
+from .plant import check_speed, input_index, linear_model
+
+KINDS = ("step", "impulse")
+"""How an input is applied."""
+
+MAX_SAMPLES = 1_000_000
+"""Most time samples of one response."""
+
+DEFAULT_DURATION = 5.0
+DEFAULT_STEP = 0.01
+
+
+def _number(value, source, key):
+    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value):
+        raise InputError(source, key, f"a finite number, got {short(value)}")
+    return float(value)
+
+
+def initial_state(model, initial):
+    """The state vector (N,) from ``{state name: value}`` (the states' units), zero elsewhere."""
+    x0 = np.zeros(len(model.states))
+    if initial is None:
+        return x0
+    if not isinstance(initial, Mapping):
+        raise wrong_type("initial", initial, "initial conditions are a mapping {state name: value}")
+    for name, value in initial.items():
+        if name not in model.state_names:
+            raise InputError("initial", short(name), f"a state of the model: {', '.join(model.state_names)}"
+                             f"{closest(name, model.state_names)}")
+        x0[model.state_index(name)] = _number(value, "initial", name)
+    return x0
+
+
+def applied_inputs(model, inputs):
+    """``{input name: (kind, size)}`` checked: kind ``step`` (N m) or ``impulse`` (N m s)."""
+    if inputs is None:
+        return {}
+    if not isinstance(inputs, Mapping):
+        raise wrong_type("inputs", inputs, "inputs are a mapping {input name: (kind, size)}")
+    out = {}
+    for name, spec in inputs.items():
+        input_index(model, name)
+        if not (isinstance(spec, (tuple, list)) and len(spec) == 2 and spec[0] in KINDS):
+            raise InputError("inputs", short(name), f"(kind, size) with kind one of {', '.join(KINDS)}, "
+                             f"got {short(spec)}")
+        out[name] = (spec[0], _number(spec[1], "inputs", name))
+    return out
+
+
+def sample_times(duration, step):
+    """``0, step, 2 step, ...`` up to ``duration`` (s); InputError unless both are positive and
+    finite with at most :data:`MAX_SAMPLES` samples."""
+    for key, value in (("duration", duration), ("step", step)):
+        if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value) or value <= 0:
+            raise InputError(key, short(value), "a positive, finite time in s")
+    count = math.floor(duration / step * (1 + 1e-12)) + 1
+    if count > MAX_SAMPLES or count < 2:
+        raise InputError("step", short(step), f"2 to {MAX_SAMPLES} samples from 0 to the duration "
+                         f"{duration:g} s, got {count}")
+    return step * np.arange(count)
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class TimeResponse:
+    """The states of a linear model against time.
+
+    Attributes
+    ----------
+    speed : float
+        Forward speed (m/s).
+    time : numpy.ndarray (n,)
+        Samples ``0, dt, ..., T`` (s).
+    names, units : tuple of str
+        The states' names and units, in the model's order.
+    values : numpy.ndarray (n, N)
+        The states at the samples (their units); read-only.
+    inputs : mapping
+        ``{input name: (kind, size)}`` that was applied (steps in N m, impulses in N m s).
+    """
+
+    speed: float
+    time: np.ndarray
+    names: tuple
+    units: tuple
+    values: np.ndarray
+    inputs: Mapping
+
+    def __post_init__(self):
+        object.__setattr__(self, "time", readonly(self.time, float))
+        object.__setattr__(self, "values", readonly(self.values, float))
+        object.__setattr__(self, "inputs", FrozenMap(self.inputs))
+
+    def __getitem__(self, name):
+        """The samples (n,) of the state ``name``."""
+        if name not in self.names:
+            raise KeyError(f"no state {name!r} (states: {', '.join(self.names)})")
+        return self.values[:, self.names.index(name)]
+
+    @property
+    def states(self):
+        """``{name: samples}`` of every state (read-only arrays)."""
+        return FrozenMap({name: self[name] for name in self.names})
+
+    def to_dict(self):
+        """Plain data: speed, time (s) and states (``{name: samples}`` in their units)."""
+        return {"speed": self.speed, "time": self.time.tolist(),
+                "states": {name: self[name].tolist() for name in self.names}}
+
+    def unit_block(self):
+        """The unit of each key of :meth:`to_dict` that holds a quantity."""
+        return {"speed": "m/s", "time": "s", **dict(zip(self.names, self.units))}
+
+    def __repr__(self):
+        t = self.time
+        applied = ", ".join(f"{k}={kind}:{size:g}" for k, (kind, size) in self.inputs.items()) or "none"
+        return short_repr(self, ("speed", f"{self.speed:g} m/s"), ("time", f"0..{t[-1]:g} s x {len(t)}"),
+                          ("states", len(self.names)), ("inputs", applied))
+
+
+def simulate(system, speed, initial=None, inputs=None, duration=DEFAULT_DURATION, step=DEFAULT_STEP,
+             stiffness=None):
+    """The time response from initial conditions and to steps and impulses of the inputs.
+
+    Parameters
+    ----------
+    system : LinearModel or BenchmarkParameters
+        A linear model, or a benchmark parameter set (the Whipple bicycle).
+    speed : float
+        Forward speed (m/s).
+    initial : mapping, optional
+        ``{state name: value}`` at ``t = 0`` in the states' units (rad, rad/s, m), e.g.
+        ``{"roll-rate": 0.5}``; other states start at zero.
+    inputs : mapping, optional
+        ``{input name: (kind, size)}``: ``("step", a)`` holds the input at ``a`` N m from
+        ``t = 0``; ``("impulse", J)`` is an impulse of ``J`` N m s at ``t = 0``.
+    duration, step : float
+        The samples ``0, step, 2 step, ...`` up to ``duration`` (s); default 5 s in 0.01 s.
+    stiffness : array_like (2, 2), optional
+        Rear-frame stiffness S (N m/rad) of a parameter set.
+
+    Returns
+    -------
+    TimeResponse
+        ``time`` (s) and ``values`` (n, N); ``response["roll-rate"]`` is one state's samples.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> r = bm.simulate(bm.parameters("benchmark"), 4.6, initial={"roll-rate": 0.5}, duration=1.0)
+    >>> print(r)
+    TimeResponse(speed=4.6 m/s, time=0..1 s x 101, states=6, inputs=none)
+    >>> print(f"{r['roll-rate'][-1]:.6f} rad/s")
+    -0.249568 rad/s
+    """
+    model = linear_model(system, stiffness)
+    v = check_speed(speed)
+    x0 = initial_state(model, initial)
+    applied = applied_inputs(model, inputs)
+    t = sample_times(duration, step)
+    A, B = model.state_matrix(v), model.input_matrix(v)
+    u = np.zeros(len(model.inputs))
+    for name, (kind, size) in applied.items():
+        j = model.input_names.index(name)
+        if kind == "impulse":
+            x0 = x0 + B[:, j] * size
+        else:
+            u[j] = size
+    values = march(A, B, x0, np.broadcast_to(u, (len(t), len(u))), float(step))
+    return TimeResponse(v, t, model.state_names, tuple(s.unit for s in model.states), values, applied)

@@ -1,0 +1,150 @@
+"""The rider's gains for any bicycle and speed: the automated procedure of Hess, Moore & Hubbard
+(2012) as Moore (2012) states it and his HumanControl code runs it (``generate_data.m``,
+``exact_gains``; tags ``ieee`` and ``dissertation``).
+
+Sequential loop closure, inner to outer, each loop with the inner ones closed and the outer ones
+open:
+
+1. ``k_delta`` and ``k_phidot``: the closed steer-angle loop ``delta / delta_c``, then the closed
+   roll-rate loop ``phidot / phidot_c``, has a resonant (neuromuscular) peak 10 dB above the
+   "valley" just below it (Moore 2012: "the desired 10 dB peaking", Fig. 10.13; "The gain
+   choices for proper neuromuscular peaks ... require good initial guesses, as there are often
+   multiple solutions.  The correct solution puts the neuromuscular natural frequency at a
+   typical value").  The peak and the valley are found as HumanControl's ``delta_mag_closed``
+   finds them, on its grid of 1000 frequencies from 0.01 to 100 rad/s
+   (:func:`peak_to_valley`).  Where HumanControl starts its root finder from the published gains,
+   bikemass scans the gain (``k_delta > 0``, ``k_phidot < 0``: Moore 2012, the roll-rate
+   feedback is positive) and, of the gains where the ratio passes 10 dB, keeps those whose peak
+   belongs to a stable pole pair (past the gain where the loop's resonance turns unstable the
+   ratio falls through 10 dB again) and takes the one whose peak lies nearest 10 rad/s (Moore
+   2012's design requirement 3): the neuromuscular peak, not the weave's (at low speeds the
+   weave makes a 10 dB peak of its own near 2 rad/s at small ``k_delta``).
+2. ``k_phi``, ``k_psi``, ``k_y``: the open roll, heading and lateral loops cross over at 2, 1 and
+   0.5 rad/s: ``k = 1 / |G_o(j w_c)|`` with that loop's gain 1 (Moore 2012, Eqs. ``eqKPhi``,
+   ``eqKPsi``, ``eqKYq``).  HumanControl interpolates ``|G_o|`` linearly on 1000 frequencies
+   instead, which moves the fourth or fifth digit; bikemass evaluates it at ``w_c``.
+
+The procedure and its two other published variants (Moore 2012's worked root-locus example,
+Moore, Hubbard & Hess 2016's pole placement) are compared in docs/handling.md.
+"""
+
+import numpy as np
+import scipy.optimize
+
+from ...core.threads import one_blas_thread
+from .frequency import response
+from .gains import Gains
+from .rider import loop_system
+from .transfer import coupled_states
+
+PEAK_DB = 10.0
+"""Height of the neuromuscular peak over the valley below it (dB)."""
+PEAK_FREQUENCIES = np.logspace(-2, 2, 1000)
+"""Where the closed inner loops' magnitude is looked at (rad/s): HumanControl's grid."""
+VALLEY_FALLBACK = 3.0
+"""Where the roll-rate loop's valley is taken when the magnitude has no flat point (rad/s;
+HumanControl's ``wMid``)."""
+CROSSOVERS = (2.0, 1.0, 0.5)
+"""Crossover frequencies (rad/s) of the open roll angle, heading and lateral loops."""
+SCANS = ((0.5, 5e3, 1.0), (1e-4, 10.0, -1.0))
+"""``(smallest, largest |k|, sign)`` over which ``k_delta`` and ``k_phidot`` are scanned."""
+SCAN_FACTOR = 1.25
+"""Ratio of consecutive gains of the scan (the neuromuscular root and the next root of the same
+loop, where that loop's closure turns unstable and back, lie a factor of about 3 apart)."""
+NEUROMUSCULAR_TARGET = 10.0
+"""Where the closed inner loops' neuromuscular peak should lie (rad/s): Moore 2012, design
+requirement 3 ("a natural frequency around 10 rad/s", typical of laboratory tracking tasks)."""
+
+
+class GainsNotFound(ValueError):
+    """The procedure found no gain for a loop (at very low speeds the 10 dB peak may not exist)."""
+
+
+def peak_to_valley(magnitude, loop):
+    """``|G|`` at its peak over ``|G|`` at the valley below it, by HumanControl's rule.
+
+    The magnitude is cut at its maximum; the valley is the last point before the maximum of the
+    second difference at which the second difference turns from negative to positive (the flat
+    part of the slope).  Without one, the steer loop takes the smallest first difference and
+    the roll-rate loop the frequency nearest :data:`VALLEY_FALLBACK`.
+    """
+    top = int(np.argmax(magnitude))
+    m = magnitude[:top + 1]
+    first = np.concatenate([[0.0], np.diff(m)])
+    second = np.concatenate([[0.0], np.diff(first)])
+    start = int(np.argmax(second))
+    turns = np.nonzero((second[:start] < 0) & (second[1:start + 1] > 0))[0]
+    if turns.size:
+        valley = int(turns[-1]) + 1
+    elif loop == 0:
+        valley = int(np.argmin(first))
+    else:
+        valley = int(np.argmin(np.abs(VALLEY_FALLBACK - PEAK_FREQUENCIES[:top + 1])))
+    return magnitude[top] / m[valley]
+
+
+def closed_magnitude(plant, gains, loop):
+    """``|G|`` of the closed loop ``loop`` (inner loops closed) on :data:`PEAK_FREQUENCIES`."""
+    A, b, c = loop_system(plant, gains, loop, (True,) * (loop + 1))
+    keep = coupled_states(A, b, c)
+    return np.abs(response(A[np.ix_(keep, keep)], b[keep], c[keep], PEAK_FREQUENCIES))
+
+
+def resonance_is_stable(plant, gains, loop, frequency):
+    """Whether the closed-loop pole that makes the peak at ``frequency`` (rad/s; the pole of
+    positive imaginary part nearest ``j frequency``) has a negative real part: a peak of an
+    unstable loop is no resonance."""
+    A, b, c = loop_system(plant, gains, loop, (True,) * (loop + 1))
+    poles = np.linalg.eigvals(A)
+    upper = poles[poles.imag > 0]
+    if not upper.size:
+        return False
+    return bool(upper[np.argmin(np.abs(upper - 1j * frequency))].real < 0)
+
+
+def inner_gain(plant, gains, loop):
+    """``k_delta`` (``loop`` 0) or ``k_phidot`` (1) with the inner ``gains`` set: the 10 dB peak.
+
+    Every gain of the scan where the peak-to-valley ratio passes 10 dB (either way) is a
+    candidate, refined to its root.  Candidates whose peak belongs to a stable pole pair come
+    first (where there are any), and of those the one whose peak lies nearest
+    :data:`NEUROMUSCULAR_TARGET` (on a log scale) is taken.
+    """
+    low, high, sign = SCANS[loop]
+    target = 10 ** (PEAK_DB / 20)
+
+    def excess(size):
+        magnitude = closed_magnitude(plant, (*gains, sign * size), loop)
+        return peak_to_valley(magnitude, loop) - target
+
+    sizes = np.geomspace(low, high, int(np.ceil(np.log(high / low) / np.log(SCAN_FACTOR))) + 1)
+    values = np.array([excess(k) for k in sizes])
+    found = []
+    for i in np.nonzero(np.sign(values[:-1]) != np.sign(values[1:]))[0]:
+        size = scipy.optimize.brentq(excess, sizes[i], sizes[i + 1], xtol=1e-12, rtol=1e-13)
+        k = (*gains, sign * size)
+        peak = PEAK_FREQUENCIES[int(np.argmax(closed_magnitude(plant, k, loop)))]
+        found.append((not resonance_is_stable(plant, k, loop, peak), abs(np.log(peak / NEUROMUSCULAR_TARGET)), size))
+    if not found:
+        raise GainsNotFound(f"no {('k_delta', 'k_phi_dot')[loop]} gives the {PEAK_DB:g} dB neuromuscular peak "
+                            f"at {plant.speed:g} m/s")
+    return sign * min(found)[2]
+
+
+def crossover_gain(plant, gains, loop, frequency):
+    """The gain of the open ``loop`` (2, 3 or 4; inner ``gains`` set) that crosses it over at
+    ``frequency`` (rad/s): ``1 / |G_o(j w_c)|``."""
+    A, b, c = loop_system(plant, (*gains, 1.0), loop, (True,) * loop + (False,))
+    return float(1 / np.abs(response(A, b, c, [frequency])[0]))
+
+
+@one_blas_thread()
+def tune_gains(plant):
+    """The five gains of a :class:`~bikemass.analysis.handling.rider.RiderPlant` by the procedure
+    above; :class:`GainsNotFound` when a loop has no solution."""
+    gains = []
+    for loop in (0, 1):
+        gains.append(inner_gain(plant, gains, loop))
+    for loop, frequency in zip((2, 3, 4), CROSSOVERS):
+        gains.append(crossover_gain(plant, gains, loop, frequency))
+    return Gains(*gains)

@@ -1,0 +1,469 @@
+"""``bikemass tf``, ``bode``, ``simulate``, ``mode-shapes`` and ``handling``: inputs and outputs of
+the bicycle, and the Hess-Moore-Hubbard rider in the loop (docs/handling.md)."""
+
+from . import dialect
+from .sizes import every_size
+import math
+
+INPUTS = ("steer-torque", "roll-torque")
+OUTPUTS = ("roll-angle", "steer-angle", "roll-rate", "steer-rate", "heading", "lateral", "front-lateral")
+DEFAULT_FREQUENCIES = "0.1:100:1000"
+
+
+def register(sub):
+    # lazy: the library loads numpy; bikemass --help must not
+    from .options import number
+
+    speed = number(0, 1000, what="a forward speed in m/s")
+    tf = sub.add_parser(
+        "tf", help="transfer function (zeros, poles, gain) from an input to an output at one speed",
+        description="The transfer function G(s) = gain * prod(s - z) / prod(s - p) of the linear bicycle "
+                    "from steer or roll torque to roll, steer, their rates, the heading or the lateral "
+                    "position (rear contact; front-lateral: front contact), at one speed.")
+    _bicycle(tf)
+    tf.add_argument("--speed", type=speed, required=True, metavar="V", help="forward speed, m/s")
+    _input_output(tf)
+    _data(tf, "the zeros, poles and gain")
+    tf.set_defaults(run=every_size(run_tf))
+
+    bode = sub.add_parser(
+        "bode", help="frequency response (magnitude in dB, phase in degrees) and the Bode plot",
+        description="The frequency response G(jw) = C (jwI - A)^-1 B from an input to an output at one "
+                    "speed: magnitude (dB) and phase (degrees, unwrapped) at N frequencies spaced "
+                    "logarithmically from START to STOP rad/s.")
+    _bicycle(bode)
+    bode.add_argument("--speed", type=speed, required=True, metavar="V", help="forward speed, m/s")
+    _input_output(bode)
+    bode.add_argument("--frequencies", metavar="START:STOP:N", default=DEFAULT_FREQUENCIES,
+                      help=f"N angular frequencies from START to STOP rad/s, logarithmic (default {DEFAULT_FREQUENCIES})")
+    _data(bode, "the magnitude and phase at every frequency")
+    dialect.add_plot(bode, "the Bode plot")
+    bode.set_defaults(run=every_size(run_bode))
+
+    sim = sub.add_parser(
+        "simulate", help="time response from initial conditions, steps and impulses (exact, matrix exponential)",
+        description="The states of the linear bicycle (roll, steer, their rates, heading, lateral position "
+                    "of the rear contact) at 0, DT, 2 DT, ..., T: from initial conditions and steps or impulses "
+                    "of the inputs, exact at the samples (the matrix exponential).")
+    _bicycle(sim)
+    sim.add_argument("--speed", type=speed, required=True, metavar="V", help="forward speed, m/s")
+    sim.add_argument("--initial", action="append", metavar="STATE=VALUE",
+                     help="initial value of a state in its unit (rad, rad/s, m), e.g. roll-rate=0.5; "
+                          "several comma-separated or the option repeated; others start at 0")
+    sim.add_argument("--input", action="append", metavar="INPUT=KIND:SIZE",
+                     help="steer-torque or roll-torque as step:SIZE (N m from t = 0) or impulse:SIZE (N m s "
+                          "at t = 0), e.g. steer-torque=step:1")
+    sim.add_argument("--duration", type=number(0, 1e6, open_low=True, what="a duration in s"), default=5.0,
+                     metavar="T", help="end time, s (default 5)")
+    sim.add_argument("--step", type=number(0, 1e6, open_low=True, what="a time step in s"), default=0.01,
+                     metavar="DT", help="time step of the samples, s (default 0.01)")
+    dialect.add_output(sim, what="the samples")
+    dialect.add_plot(sim, "every state against time")
+    sim.set_defaults(run=every_size(run_simulate))
+
+    shapes = sub.add_parser(
+        "mode-shapes", help="each mode's eigenvector as amplitude and phase of roll, steer, heading, lateral",
+        description="The modes of the linear bicycle at one speed (weave, capsize, caster), each eigenvector "
+                    "scaled so its largest mechanical coordinate is 1 at phase 0: the amplitude and phase of "
+                    "roll, steer, heading and lateral position; --plot draws them as phasors.")
+    _bicycle(shapes)
+    shapes.add_argument("--speed", type=speed, required=True, metavar="V", help="forward speed, m/s")
+    dialect.add_output(shapes, what="the mode shapes")
+    dialect.add_plot(shapes, "the mode shapes as phasors")
+    shapes.set_defaults(run=every_size(run_mode_shapes))
+
+    hand = sub.add_parser(
+        "handling", help="the Hess-Moore-Hubbard rider in the loop: gains, closed-loop stability, HQM",
+        description="The rider of Hess, Moore & Hubbard (2012) on the bicycle at each speed: the five "
+                    "loop gains by the published procedure (or from --gains), the closed loop's stability "
+                    "and the peak of the handling quality metric (Level 1 below 5, Level 3 above 8).")
+    _bicycle(hand)
+    hand.add_argument("--speeds", metavar="V1,V2,...",
+                      help="forward speeds in m/s, comma-separated (an item START:STOP:STEP is a grid); "
+                           "default: the speeds of the --gains file")
+    hand.add_argument("--gains", metavar="FILE.csv",
+                      help="given gains: a CSV with the header speed,kDelta,kPhiDot,kPhi,kPsi,kY "
+                           "(the published tables' form) holding every speed asked for")
+    _data(hand, "the gains, stability and HQM peaks (CSV: a gains file with more columns)")
+    dialect.add_plot(hand, "the HQM against frequency and its peak against speed")
+    hand.add_argument("--lane-change", metavar="FILE",
+                      help="also draw the double lane change at every speed into FILE (.png, .pdf, ...)")
+    hand.set_defaults(run=every_size(run_handling))
+
+
+def _bicycle(p):
+    # lazy: the library loads numpy; bikemass --help must not
+    from .bicycle import allow_off_contact_option
+    # lazy: the library loads numpy; bikemass --help must not
+    from .sizes import add_size_option
+    dialect.add_bike(p)
+    dialect.add_rider(p)
+    allow_off_contact_option(p)
+    dialect.add_combine(p)
+    dialect.add_stiffness(p)
+    add_size_option(p, "--bike-size")
+
+
+def _input_output(p):
+    p.add_argument("--input", required=True, choices=INPUTS, help="the input (N m)")
+    p.add_argument("--output", dest="response", required=True, metavar="|".join(OUTPUTS[:6]),
+                   help="the output: roll-angle, steer-angle (rad), roll-rate, steer-rate (rad/s), heading "
+                        "(rad), lateral (rear contact, m) or front-lateral (front contact, m)")
+
+
+def _data(p, what):
+    """``-o FILE`` (here only the short form: ``--output`` names the output signal), ``--format``, ``--quiet``."""
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..core.choices import Format
+    p.add_argument("-o", dest="output", metavar="FILE",
+                   help=f"write {what} to FILE instead of stdout (format from --format, else the suffix)")
+    p.add_argument("--format", choices=dialect.TABULAR, default=None,
+                   help=f"{', '.join(dialect.TABULAR)} (default table; JSON and YAML carry a units block)")
+    dialect.add_quiet(p)
+    p.set_defaults(default_format=Format.TABLE.value, format_choices=dialect.TABULAR)
+
+
+def bicycle_model(args):
+    """The :class:`~bikemass.models.linear.LinearModel` of BIKE with ``--rider``, ``--combine``,
+    ``--allow-off-contact`` and ``--stiffness``: the one place these commands build their model."""
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..analysis.handling.plant import linear_model
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..scenario.catalog import load_bicycle, parameters, stiffness
+
+    bike = load_bicycle(args.bike)
+    params = parameters(bike, args.rider, args.combine, allow_off_contact=args.allow_off_contact)
+    return linear_model(params, stiffness(bike, args.stiffness))
+
+
+def _title(args):
+    rider = "no rider" if args.rider == "none" else args.rider
+    frame = "rigid frame" if args.stiffness == "infinite" else f"{args.stiffness} frame"
+    return f"{args.bike}, {rider}, {frame}"
+
+
+def _output_name(model, name):
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..core.choices import closest
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..core.errors import InputError
+    if name not in model.output_names:
+        raise InputError("--output", name, f"one of {', '.join(model.output_names)}{closest(name, model.output_names)}")
+    return name
+
+
+def run_tf(args):
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..analysis.handling.transfer import transfer_function
+
+    model = bicycle_model(args)
+    tf = transfer_function(model, args.speed, args.input, _output_name(model, args.response))
+
+    def render(fmt):
+        if fmt in ("json", "yaml"):
+            return dialect.document(tf.to_dict(), fmt, tf.units())
+        if fmt == "csv":
+            rows = [["zero", z.real, z.imag, "1/s"] for z in tf.zeros] + \
+                   [["pole", p.real, p.imag, "1/s"] for p in tf.poles] + [["gain", tf.gain, 0.0, tf.gain_unit]]
+            return dialect.csv_text(["part", "real", "imaginary", "unit"], rows)
+        return tf_text(tf, _title(args))
+    dialect.emit(args, render)
+    return 0
+
+
+def _root(z):
+    return f"{z.real:.6g}" if z.imag == 0 else f"{z.real:.6g} {'+' if z.imag > 0 else '-'} {abs(z.imag):.6g}j"
+
+
+def _signed(x):
+    return f"{'-' if x < 0 else '+'} {abs(x):.6g}"
+
+
+def factors(roots):
+    """``(s + a) (s^2 + b s + c) ...``: a real root one factor, a complex pair one quadratic."""
+    out = []
+    for z in roots:
+        if z.imag == 0:
+            out.append("s" if z.real == 0 else f"(s {_signed(-z.real)})")
+        elif z.imag > 0:
+            out.append(f"(s^2 {_signed(-2 * z.real)} s {_signed(abs(z) ** 2)})")
+    return " ".join(out) or "1"
+
+
+def tf_text(tf, title):
+    """The transfer function as text: the factored form, then every zero and pole."""
+    lines = [f"{title}: {tf.output} / {tf.input} at {tf.speed:g} m/s",
+             f"G(s) = {tf.gain:.8g} {factors(tf.zeros)} / [{factors(tf.poles)}]",
+             f"gain: {tf.gain!r} {tf.gain_unit}",
+             "zeros (1/s): " + (", ".join(_root(z) for z in tf.zeros) or "none"),
+             "poles (1/s): " + (", ".join(_root(p) for p in tf.poles) or "none")]
+    return "\n".join(lines) + "\n"
+
+
+def _frequencies(text):
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..analysis.handling.frequency import log_frequencies
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..core.errors import InputError
+    expected = "START:STOP:N in rad/s with START < STOP and N >= 2 points (logarithmic)"
+    try:
+        start, stop, count = text.split(":")
+        return log_frequencies(float(start), float(stop), int(count))
+    except InputError as exc:
+        raise InputError("--frequencies", text, exc.expected) from None
+    except ValueError:
+        raise InputError("--frequencies", text, expected) from None
+
+
+def run_bode(args):
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..analysis.handling.frequency import frequency_response
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..core.output import table
+
+    options = dialect.figure_checked(args)
+    w = _frequencies(args.frequencies)
+    model = bicycle_model(args)
+    fr = frequency_response(model, args.speed, args.input, _output_name(model, args.response), w)
+
+    def render(fmt):
+        if fmt in ("json", "yaml"):
+            return dialect.document(fr.to_dict(), fmt, fr.units())
+        rows = list(zip(fr.frequencies.tolist(), fr.magnitude.tolist(), fr.phase.tolist()))
+        if fmt == "csv":
+            return dialect.csv_text(["frequency (rad/s)", "magnitude (dB)", "phase (deg)"], rows)
+        return table(["frequency (rad/s)", "magnitude (dB)", "phase (deg)"], rows, floatfmt="{:.6g}")
+    dialect.emit(args, render)
+    if args.plot:
+        # lazy: matplotlib only for a figure
+        from ..analysis.handling.figures import plot_bode
+        title = f"{_title(args)}: {fr.output} / {fr.input} at {fr.speed:g} m/s"
+        dialect.save_plot(args, plot_bode(fr, title, options.size), options)
+    return 0
+
+
+def _pairs(items, option):
+    """``["a=1,b=2", "c=3"]`` -> ``[("a", "1"), ("b", "2"), ("c", "3")]``; InputError for a bad item."""
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..core.errors import InputError
+    out = []
+    for item in items or ():
+        for part in item.split(","):
+            name, sep, value = part.partition("=")
+            if not sep or not name.strip() or not value.strip():
+                raise InputError(option, part, "NAME=VALUE")
+            out.append((name.strip(), value.strip()))
+    return out
+
+
+def _initial(args):
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..core.errors import InputError
+    values = {}
+    for name, value in _pairs(args.initial, "--initial"):
+        try:
+            values[name] = float(value)
+        except ValueError:
+            raise InputError("--initial", f"{name}={value}", "a number in the state's unit") from None
+    return values
+
+
+def _inputs(args):
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..analysis.handling.time_response import KINDS
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..core.choices import closest
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..core.errors import InputError
+    applied = {}
+    for name, value in _pairs(args.input, "--input"):
+        kind, sep, size = value.partition(":")
+        expected = "INPUT=step:SIZE (N m) or INPUT=impulse:SIZE (N m s)"
+        try:
+            applied[name] = (kind, float(size))
+        except ValueError:
+            raise InputError("--input", f"{name}={value}", expected) from None
+        if not sep or kind not in KINDS:
+            raise InputError("--input", f"{name}={value}", expected + closest(kind, KINDS))
+    return applied
+
+
+def _with_option_names(call, names):
+    """``call()``, with an InputError about an argument renamed to its option (``initial`` ->
+    ``--initial``)."""
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..core.errors import InputError
+    try:
+        return call()
+    except InputError as exc:
+        if exc.source in names:
+            raise InputError(names[exc.source], exc.key, exc.expected) from None
+        raise
+
+
+def run_simulate(args):
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..analysis.handling.time_response import simulate
+
+    options = dialect.figure_checked(args)
+    initial, applied = _initial(args), _inputs(args)
+    model = bicycle_model(args)
+    r = _with_option_names(lambda: simulate(model, args.speed, initial, applied, args.duration, args.step),
+                           {"initial": "--initial", "inputs": "--input", "input": "--input", "step": "--step",
+                            "duration": "--duration"})
+
+    def render(fmt):
+        if fmt in ("json", "yaml"):
+            return dialect.document(r.to_dict(), fmt, r.unit_block())
+        headers = ["time (s)", *(f"{n} ({u})" for n, u in zip(r.names, r.units))]
+        rows = [[t, *x] for t, x in zip(r.time.tolist(), r.values.tolist())]
+        if fmt == "csv":
+            return dialect.csv_text(headers, rows)
+        # lazy: the library loads numpy; bikemass --help must not
+        # lazy: the library loads numpy; bikemass --help must not
+        from ..core.output import table
+        return table(headers, rows, floatfmt="{:.6g}")
+    dialect.emit(args, render)
+    if args.plot:
+        # lazy: matplotlib only for a figure
+        from ..analysis.handling.figures import plot_time_response
+        dialect.save_plot(args, plot_time_response(r, f"{_title(args)} at {r.speed:g} m/s", options.size), options)
+    return 0
+
+
+def run_mode_shapes(args):
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..analysis.handling.mode_shapes import mode_shapes
+
+    options = dialect.figure_checked(args)
+    shapes = mode_shapes(bicycle_model(args), args.speed)
+
+    def render(fmt):
+        if fmt in ("json", "yaml"):
+            return dialect.document(shapes.to_dict(), fmt, shapes.unit_block())
+        rows = [[label, name, z.real, z.imag, coordinate, shapes.amplitude[i, k], shapes.phase[i, k]]
+                for i, (label, name, z) in enumerate(zip(shapes.labels, shapes.names, shapes.eigenvalues))
+                for k, coordinate in enumerate(shapes.coordinates)]
+        headers = ["mode", "name", "real (1/s)", "imaginary (1/s)", "coordinate", "amplitude", "phase (deg)"]
+        if fmt == "csv":
+            return dialect.csv_text(headers, rows)
+        # lazy: the library loads numpy; bikemass --help must not
+        # lazy: the library loads numpy; bikemass --help must not
+        from ..core.output import table
+        return (f"{_title(args)} at {shapes.speed:g} m/s: amplitudes per unit of each mode's largest "
+                f"mechanical coordinate (phase 0)\n" + table(headers, rows, floatfmt="{:.6g}"))
+    dialect.emit(args, render)
+    if args.plot:
+        # lazy: matplotlib only for a figure
+        from ..analysis.handling.figures import plot_mode_shapes
+        fig = plot_mode_shapes(shapes, f"{_title(args)}: mode shapes at {shapes.speed:g} m/s", options.size)
+        dialect.save_plot(args, fig, options)
+    return 0
+
+
+def _speeds(text):
+    """``--speeds`` of handling: comma-separated speeds (m/s), an item ``START:STOP:STEP`` a grid."""
+    # lazy: the library loads numpy; bikemass --help must not
+    import numpy as np
+
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..analysis.handling.survey import MAX_SURVEY_SPEEDS
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..core.errors import InputError
+    expected = "comma-separated speeds in m/s (an item START:STOP:STEP is a grid), increasing"
+    values = []
+    for item in text.split(","):
+        item = item.strip()
+        if ":" in item:
+            try:
+                values.extend(dialect.parse_speeds(item, MAX_SURVEY_SPEEDS).tolist())
+            except InputError:
+                raise InputError("--speeds", text, f"{expected}; a grid START:STOP:STEP of at most "
+                                 f"{MAX_SURVEY_SPEEDS} speeds") from None
+            continue
+        try:
+            values.append(float(item))
+        except ValueError:
+            raise InputError("--speeds", text, expected) from None
+    v = np.array(values)
+    if not len(v) or not np.all(np.isfinite(v)) or np.any(v < 0) or np.any(np.diff(v) <= 0):
+        raise InputError("--speeds", text, expected)
+    return v
+
+
+def run_handling(args):
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..analysis.handling.survey import handling
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..core.errors import InputError
+
+    options = dialect.figure_checked(args)
+    if args.lane_change:
+        # lazy: the library loads numpy; bikemass --help must not
+        from .figure_options import figure_options
+        options = figure_options(args, args.lane_change) if options is None else options
+    if args.speeds is None and args.gains is None:
+        raise InputError("--speeds", "(missing)", "the speeds in m/s (V1,V2,...), or a --gains file whose speeds are used")
+    speeds = None if args.speeds is None else _speeds(args.speeds)
+    model = bicycle_model(args)
+    result = _with_option_names(lambda: handling(model, speeds, args.gains), {"speeds": "--speeds"})
+
+    def render(fmt):
+        if fmt in ("json", "yaml"):
+            return dialect.document(result.to_dict(), fmt, result.unit_block())
+        if fmt == "csv":
+            return handling_csv(result)
+        return handling_text(result, _title(args))
+    dialect.emit(args, render)
+    if args.plot:
+        # lazy: matplotlib only for a figure
+        from ..analysis.handling.figures import plot_handling
+        dialect.save_plot(args, plot_handling(result, f"{_title(args)}: handling quality metric", options.size),
+                          options)
+    if args.lane_change:
+        _draw_lane_changes(args, model, result, options)
+    return 0
+
+
+def _draw_lane_changes(args, model, result, options):
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..analysis.handling.lane_change import lane_change
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..plots.figure import save_figure
+    # lazy: matplotlib only for a figure
+    from ..analysis.handling.figures import plot_lane_change
+    runs = [lane_change(model, v, g) for v, g in zip(result.speeds, result.gains) if g is not None and v > 0]
+    if runs:
+        fig = plot_lane_change(runs, f"{_title(args)}: double lane change", options.size)
+        save_figure(fig, args.lane_change, options.dpi)
+
+
+def handling_csv(result):
+    """A gains file (``speed,kDelta,kPhiDot,kPhi,kPsi,kY``) with the results as further columns."""
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..analysis.handling.gains import HEADER, NAMES
+    rows = [[v, *(None if g is None else getattr(g, n) for n in NAMES), bool(ok), _finite(p), _finite(w), level]
+            for v, g, ok, p, w, level in zip(result.speeds.tolist(), result.gains, result.closed_loop_stable,
+                                             result.hqm_peak, result.hqm_peak_frequency, result.levels)]
+    return dialect.csv_text([*HEADER, "closed_loop_stable", "hqm_peak", "hqm_peak_frequency (rad/s)", "level"], rows)
+
+
+def _finite(x):
+    return float(x) if math.isfinite(x) else None
+
+
+def handling_text(result, title):
+    """The gains, stability and HQM peak at every speed as a text table."""
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..analysis.handling.gains import NAMES
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..core.output import table
+    rows = [[v, *(None if g is None else getattr(g, n) for n in NAMES), "yes" if ok else "no", _finite(p),
+             _finite(w), level or "-", source]
+            for v, g, ok, p, w, level, source in zip(result.speeds.tolist(), result.gains, result.closed_loop_stable,
+                                                     result.hqm_peak, result.hqm_peak_frequency, result.levels,
+                                                     result.gain_source)]
+    headers = ["speed (m/s)", "k_delta", "k_phi_dot", "k_phi", "k_psi", "k_y", "stable", "HQM peak",
+               "at (rad/s)", "level", "gains"]
+    return (f"{title}: Hess, Moore & Hubbard (2012) rider, lateral feedback {result.lateral}\n"
+            + table(headers, rows, floatfmt="{:.4f}"))
