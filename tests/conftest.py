@@ -46,7 +46,7 @@ def study(tmp_path_factory):
         return write_html(results, folder, paths)
 
     write_html = pipeline.write_html
-    with contextlib.redirect_stdout(stdout), mock.patch("bikemass.core.progress.Progress", CountingProgress), \
+    with contextlib.redirect_stdout(stdout), mock.patch("bikemass.cli.study.Progress", CountingProgress), \
             mock.patch.object(pipeline, "write_html", keep):
         code = main(["study", "--out", str(out), "--no-figures"])
     assert code == 0

@@ -1,5 +1,9 @@
 """``bikemass sensitivity``, ``bikemass uncertainty`` and ``bikemass sweep``."""
 
+from pathlib import Path
+
+from ..core.errors import InputError
+from ..core.progress import Progress
 from . import dialect
 from .figure_options import add_figure_options, figure_options, write_figure
 
@@ -88,8 +92,8 @@ def _bike_options(p, data, figure):
 
 def _inputs(args):
     """Checked figure options (or None), parameters and stiffness of BIKE/--rider/--stiffness."""
+    # lazy: the library loads numpy; bikemass --help must not
     from ..scenario import catalog
-    from ..core.errors import InputError
 
     options = dialect.figure_checked(args)
     if not 0 < args.max_speed < 1e4:
@@ -102,8 +106,8 @@ def _title(args):
 
 
 def run_sensitivity(args):
+    # lazy: the library loads numpy; bikemass --help must not
     from ..analysis.sensitivity import geometry_sensitivity, sensitivity, sensitivity_figure
-    from ..core.errors import InputError
 
     options, params, S = _inputs(args)
     keys = [k.strip() for k in (args.inputs or "").split(",") if k.strip()]
@@ -114,6 +118,7 @@ def run_sensitivity(args):
     result = sensitivity(params, S, vmax=args.max_speed)
     geometry = {}
     if keys:
+        # lazy: the library loads numpy; bikemass --help must not
         from ..scenario.inputs import Model
         model = Model(args.bike, args.rider, args.stiffness, args.combine, origin="--inputs")
         geometry = geometry_sensitivity(model, keys, result, args.step)
@@ -123,6 +128,7 @@ def run_sensitivity(args):
             return sensitivity_table(result, _title(args), geometry)
         if fmt == "csv":
             return sensitivity_csv(result, geometry)
+        # lazy: the library loads numpy; bikemass --help must not
         from ..core.output import dumps
         doc = result.to_dict()
         if geometry:
@@ -138,6 +144,7 @@ def sensitivity_csv(result, geometry=None):
     """One row per input: the two critical speeds first (kind ``speed``), then the 26
     parameters, the rear-frame S entries and any geometry-level inputs, each with its value,
     unit and the derivatives (and, for parameters, elasticities) of both speeds."""
+    # lazy: the library loads numpy; bikemass --help must not
     from ..models.parameters import parameter_units
 
     units = parameter_units()
@@ -155,6 +162,7 @@ def sensitivity_csv(result, geometry=None):
 
 
 def sensitivity_table(result, title, geometry=None):
+    # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import table
 
     ew, ec = result.elasticities("weave_speed"), result.elasticities("capsize_speed")
@@ -184,6 +192,7 @@ def _speed(v):
 
 def read_std_file(path):
     """``{key: Spread}`` from the ``uncertainty:`` mapping of a YAML file."""
+    # lazy: the library loads numpy; bikemass --help must not
     from ..analysis.uncertainty import read_spreads
     from ..core.config import load_yaml
     node = load_yaml(path)
@@ -192,9 +201,9 @@ def read_std_file(path):
 
 
 def run_uncertainty(args):
+    # lazy: the library loads numpy; bikemass --help must not
     from ..scenario.inputs import Model
     from ..analysis.uncertainty import Spread, propagate, uncertainty_figure
-    from ..core.errors import InputError
 
     options = _inputs(args)[0]
     if not 2 <= args.samples <= 10 ** 6:
@@ -227,6 +236,7 @@ UNCERTAINTY_UNITS = {"M": "kg m^2", "C1": "kg m^2 (per m/s)", "K0": "kg m (times
 
 
 def uncertainty_table(result, title):
+    # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import table
 
     lines = [title, f"method {result.method}; inputs: " + ", ".join(
@@ -264,8 +274,8 @@ def uncertainty_csv(result):
 
 
 def run_sweep_command(args):
+    # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import dumps, write_atomic
-    from ..core.progress import Progress
     from ..sweep import read_spec, run_sweep
     from ..sweep.spec import count_of
     from ..sweep.figures import sweep_figures
@@ -278,11 +288,11 @@ def run_sweep_command(args):
         if args.quiet:
             bar.enabled = False
         rows = run_sweep(spec, args.out, args.workers, args.scheduler, progress=lambda n: bar.step(n=n))
-    from pathlib import Path
     out = Path(args.out)
     for stem, fig in sweep_figures(rows, spec, options.size).items():
         write_figure(fig, out / f"{stem}.{args.plot_format}", options)
     if spec.global_sensitivity:
+        # lazy: the library loads numpy; bikemass --help must not
         from ..sweep.sobol import sobol_indices
         write_atomic(out / "sobol.json", dumps(sobol_indices(rows, spec), "json"))
     if not args.quiet:
@@ -294,6 +304,7 @@ def run_sweep_command(args):
 
 def require_for_sweep(args):
     """The packages the chosen engine needs (one clear line if missing)."""
+    # lazy: the library loads numpy; bikemass --help must not
     from ..sweep.run import require
     if args.workers is not None or args.scheduler is not None:
         require("distributed")

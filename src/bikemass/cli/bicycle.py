@@ -4,6 +4,8 @@ benchmark parameters, a side-view drawing, or a 3D model."""
 from pathlib import Path
 
 from ..core.choices import PARAMETER_FORMATS
+from ..core.errors import InputError
+from ..core.paths import available, frames_dir
 from . import dialect
 from .sizes import add_size_option, every_size
 
@@ -12,8 +14,6 @@ MODEL_FORMATS = ("glb", "stl", "obj")
 
 def _params_description():
     """``params --help``'s description, with the shipped bicycles listed (or why none are)."""
-    from ..core.errors import InputError
-    from ..core.paths import available, frames_dir
     try:
         shipped = ", ".join(available(frames_dir()))
     except InputError as exc:
@@ -75,14 +75,15 @@ def allow_off_contact_option(p):
 
 def _seated(args):
     """(bicycle, rider seated on it or None) of BIKE and --rider."""
+    # lazy: the library loads numpy; bikemass --help must not
     from ..scenario import catalog
     bicycle = catalog.load_bicycle(args.bike)
     return bicycle, catalog.seated_rider(bicycle, args.rider, args.allow_off_contact)
 
 
 def run_params(args):
+    # lazy: the library loads numpy; bikemass --help must not
     from ..scenario import catalog
-    from ..core.errors import InputError
     from ..models.parameter_export import format_parameters
 
     if args.compare:
@@ -108,6 +109,7 @@ def comparison(params, reference, name, reference_name, fmt):
         return dialect.document({name: ours, reference_name: theirs,
                                  "difference": {k: ours[k] - theirs[k] for k in ours}}, fmt)
     if fmt == "csv":
+        # lazy: the library loads numpy; bikemass --help must not
         from ..models.parameters import parameter_units
         units = parameter_units()
         return dialect.csv_text(["parameter", "unit", name, reference_name, "difference"],
@@ -117,6 +119,7 @@ def comparison(params, reference, name, reference_name, fmt):
 
 def comparison_table(params, reference, name, reference_name):
     """Plain-text table: each parameter of ``params`` beside ``reference`` and their difference."""
+    # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import table
     from ..models.parameters import DESCRIPTIONS
 
@@ -131,6 +134,7 @@ def comparison_table(params, reference, name, reference_name):
 
 
 def run_draw(args):
+    # lazy: plots/ load matplotlib; only the figure needs it
     from ..scenario import catalog
     from ..plots.side_view import plot_side_view
 
@@ -139,6 +143,7 @@ def run_draw(args):
     title = bicycle.name + (f" + rider {rider.name}" if rider is not None else "")
     fig = plot_side_view(bicycle, rider, title, options.size, **options.limits())
     if bicycle.chart is not None:
+        # lazy: plots/ load matplotlib; only the figure needs it
         from ..plots.chart import annotate_chart
         annotate_chart(fig.axes[0], bicycle)
     dialect.save_plot(args, fig, options)
@@ -146,9 +151,9 @@ def run_draw(args):
 
 
 def run_export(args):
+    # lazy: the library loads numpy; bikemass --help must not
     from ..scenario import catalog
     from ..bicycle.scene import build_scene, export_scene
-    from ..core.errors import InputError
     from ..core.output import write_atomic
 
     fmt = Path(args.output).suffix.lower().lstrip(".")

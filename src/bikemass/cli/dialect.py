@@ -23,7 +23,9 @@ import sys
 from pathlib import Path
 
 from ..core.choices import RIGID, Combine, Format, Method
+from ..core.errors import InputError, short
 from .figure_options import add_figure_options, figure_options, write_figure
+from .options import MAX_SPEED, MAX_SPEEDS, MIN_SPEED_STEP
 
 TABULAR = (Format.TABLE.value, Format.CSV.value, Format.JSON.value, Format.YAML.value)
 """The formats of every command's data (``params`` adds ``bicycleparameters``)."""
@@ -100,8 +102,7 @@ def add_speeds(p):
 
 def parse_speeds(text, max_speeds=None):
     """``"start:stop:step"`` -> speed grid (m/s); InputError if malformed or over ``max_speeds``."""
-    from ..core.errors import InputError, short
-    from .options import MAX_SPEED, MAX_SPEEDS, MIN_SPEED_STEP
+    # lazy: the library loads numpy; bikemass --help must not
     from ..analysis.stability import speed_grid
 
     limit = max_speeds or MAX_SPEEDS
@@ -124,7 +125,6 @@ def check_output(args):
     """Before any work: an ``-o`` file that looks like a figure is refused (figures go to --plot)."""
     if getattr(args, "format_choices", None) and args.output and \
             Path(args.output).suffix.lower() in IMAGE_SUFFIXES:
-        from ..core.errors import InputError
         raise InputError(args.output, "-o", "a data file (table, csv, json, yaml); a figure goes to --plot FILE")
 
 
@@ -154,6 +154,7 @@ def emit(args, render):
         return
     text = render(data_format(args))
     if args.output:
+        # lazy: the library loads numpy; bikemass --help must not
         from ..core.output import write_atomic
         write_atomic(args.output, text)
     else:
@@ -163,6 +164,7 @@ def emit(args, render):
 def write_data(args, text):
     """Write already rendered data: to ``-o`` (atomically) or stdout, unless ``--quiet``."""
     if getattr(args, "output", None):
+        # lazy: the library loads numpy; bikemass --help must not
         from ..core.output import write_atomic
         write_atomic(args.output, text)
     elif not getattr(args, "quiet", False):
@@ -181,6 +183,7 @@ def save_plot(args, fig, options):
 
 def document(data, fmt, extra_units=None):
     """``data`` as JSON or YAML text with its ``units`` block (the benchmark parameters' included)."""
+    # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import dumps, with_units
     from ..models.parameters import parameter_units
     return dumps(with_units(data, {**parameter_units(), **(extra_units or {})}), fmt)
@@ -188,5 +191,6 @@ def document(data, fmt, extra_units=None):
 
 def csv_text(headers, rows):
     """CSV text (:func:`bikemass.core.output.csv_text`: numbers in full, below ``ZERO`` as 0)."""
+    # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import csv_text as text
     return text(headers, rows)

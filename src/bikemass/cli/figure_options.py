@@ -3,6 +3,8 @@
 
 from dataclasses import dataclass
 
+from ..core.errors import InputError
+
 
 @dataclass(frozen=True)
 class FigureOptions:
@@ -32,7 +34,6 @@ def add_figure_options(parser, xlim=None, ylim=None):
 
 
 def _numbers(text, option, separator, count, expected):
-    from ..core.errors import InputError
     try:
         values = tuple(float(x) for x in text.split(separator))
     except ValueError:
@@ -43,7 +44,6 @@ def _numbers(text, option, separator, count, expected):
 
 
 def _limit(args, name):
-    from ..core.errors import InputError
     text = getattr(args, name, None)
     if text is None:
         return None
@@ -57,7 +57,7 @@ def _limit(args, name):
 def figure_options(args, path):
     """:class:`FigureOptions` from parsed ``args``; InputError (one line) for a bad option or a
     figure file ``path`` whose format matplotlib cannot write.  Call before the work."""
-    from ..core.errors import InputError
+    # lazy: plots/ load matplotlib; only the figure needs it
     from ..plots.figure import figure_format
 
     if path is not None:
@@ -79,5 +79,6 @@ def figure_options(args, path):
 
 def write_figure(fig, path, options):
     """Save ``fig`` to ``path`` at ``options.dpi`` (atomic; text kept as text in SVG and PDF)."""
+    # lazy: plots/ load matplotlib; only the figure needs it
     from ..plots.figure import save_figure
     save_figure(fig, path, options.dpi)

@@ -1,8 +1,10 @@
 """``bikemass stiffness`` and ``bikemass modes``: the rear frame's beam model (S and natural frequencies)."""
 
 from ..core.choices import Beam, Procedure, Support
+from ..core.errors import InputError
 from ..fe.defaults import DEFAULT_ELEMENT_SIZE, MAX_ELEMENTS
 from . import dialect
+from .options import MAX_MODES, count, number
 from .sizes import add_size_option, every_size
 
 
@@ -17,8 +19,6 @@ def _common(parser):
 
 
 def register(subparsers):
-    from .options import MAX_MODES, count, number
-
     p = subparsers.add_parser(
         "stiffness", help="equivalent rear-frame stiffness S (roll, steer) at the head tube",
         description="2x2 stiffness S (N m/rad) on roll and steer rotations at the bottom head-tube "
@@ -53,6 +53,7 @@ def register(subparsers):
 
 
 def run_stiffness(args):
+    # lazy: the library loads numpy; bikemass --help must not
     from ..scenario.frame import frame_stiffness
 
     S = frame_stiffness(args.bike, args.material, args.procedure, args.beam)
@@ -63,14 +64,15 @@ def run_stiffness(args):
         rows = [["roll", *S[0]], ["steer", *S[1]]]
         if fmt == "csv":
             return dialect.csv_text(["S (N m/rad)", "roll", "steer"], rows)
+        # lazy: the library loads numpy; bikemass --help must not
         from ..core.output import table
         return f"S (N m/rad), procedure {args.procedure}\n" + table(["", "roll", "steer"], rows, "{:.1f}")
     dialect.emit(args, render)
 
 
 def run_modes(args):
+    # lazy: the library loads numpy; bikemass --help must not
     from ..scenario.catalog import load_bicycle
-    from ..core.errors import InputError
     from ..fe.model import element_count
     from ..scenario.frame import frame_modes, frame_structure
 
@@ -85,6 +87,7 @@ def run_modes(args):
     modes = frame_modes(bicycle, args.bc, args.n, args.material, args.element_size, args.beam,
                         max_elements=args.max_elements)
     if args.plot:
+        # lazy: plots/ load matplotlib; only the figure needs it
         from ..plots.frame_modes import plot_frame_modes
         dialect.save_plot(args, plot_frame_modes(modes, size=options.size), options)
 
@@ -94,6 +97,7 @@ def run_modes(args):
         rows = [[i + 1, f] for i, f in enumerate(modes.frequencies_hz)]
         if fmt == "csv":
             return dialect.csv_text(["mode", "frequency (Hz)"], rows)
+        # lazy: the library loads numpy; bikemass --help must not
         from ..core.output import table
         return f"natural frequencies, {args.bc}\n" + table(["mode", "frequency (Hz)"], rows, "{:.3f}")
     dialect.emit(args, render)

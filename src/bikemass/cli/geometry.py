@@ -1,6 +1,8 @@
 """``bikemass geometry``: the derived geometry chart of bicycles (chart or keypoints, every size)."""
 
+from ..core.errors import InputError
 from . import dialect
+from .figure_options import figure_options, write_figure
 
 
 def register(sub):
@@ -24,6 +26,7 @@ def register(sub):
 
 def charts(bikes, size=None):
     """``{BIKE: chart}`` or, for a size run without ``size``, ``{BIKE: {size: chart}}`` (m, deg)."""
+    # lazy: the library loads numpy; bikemass --help must not
     from ..bicycle.derived_chart import derived_chart
     from ..bicycle.loader import bicycle_sizes, load_bicycle
 
@@ -49,6 +52,7 @@ def _columns(result):
 
 def chart_table(result, csv=False):
     """Rows = chart keys (mm, deg), columns = bicycles."""
+    # lazy: the library loads numpy; bikemass --help must not
     from ..bicycle.derived_chart import ANGLES, CHART_ORDER
     from ..core.output import table
 
@@ -70,8 +74,6 @@ def chart_table(result, csv=False):
 
 
 def run_geometry(args):
-    from ..core.errors import InputError
-
     if args.plot and len(args.bikes) != 1:
         raise InputError("--plot", args.plot, "one BIKE to draw (got several)")
     if args.plot:
@@ -80,6 +82,7 @@ def run_geometry(args):
 
     def render(fmt):
         if fmt in ("json", "yaml"):
+            # lazy: the library loads numpy; bikemass --help must not
             from ..bicycle.derived_chart import ANGLES, CHART_ORDER
             return dialect.document(result, fmt, {k: "deg" if k in ANGLES else "m" for k in CHART_ORDER})
         return chart_table(result, csv=fmt == "csv")
@@ -88,10 +91,9 @@ def run_geometry(args):
 
 
 def _plot(args):
+    # lazy: plots/ load matplotlib; only the figure needs it
     from ..plots.chart import plot_chart
     from ..bicycle.loader import bicycle_sizes, load_bicycle
-    from ..core.errors import InputError
-    from .figure_options import figure_options, write_figure
 
     options = figure_options(args, args.plot)
     bike = args.bikes[0]

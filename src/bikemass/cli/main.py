@@ -6,9 +6,11 @@ import os
 import sys
 import warnings
 
-from .dialect import check_output
+from .. import __version__
 from ..core.errors import BikemassWarning, InputError, one_line
 from ..core.stopping import Terminated, stop_on_signals
+from .dialect import check_output
+from .options import check_outputs
 
 COMMAND_MODULES = (
     "bicycle",
@@ -57,7 +59,6 @@ def build_parser():
         description="Bicycle + rider geometry (YAML) -> mass properties, benchmark "
                     "parameters, frame stiffness and stability.",
         epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
-    from .. import __version__
     parser.add_argument("--version", action="version", version=f"bikemass {__version__}")
     sub = parser.add_subparsers(title="commands", metavar="COMMAND", required=True)
     for name in COMMAND_MODULES:
@@ -83,8 +84,8 @@ def main(argv=None):
 
 
 def _run(args):
+    # lazy: the library loads numpy; bikemass --help must not
     from ..core.gate import track_inputs
-    from .options import check_outputs
     from ..core.output import collect_warnings
     status = 0
     with warnings.catch_warnings(record=True) as caught, collect_warnings(caught), track_inputs():

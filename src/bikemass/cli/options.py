@@ -10,7 +10,7 @@ import argparse
 import math
 import os
 
-from ..core.errors import short
+from ..core.errors import InputError, short
 
 MAX_SPEEDS = 100_000
 """Most speeds in one grid (``--max-speeds`` raises it)."""
@@ -63,6 +63,7 @@ OUTPUT_OPTIONS = ("output", "plot", "out")
 def check_outputs(args):
     """Refuse bad output paths of ``args`` before the command runs (:func:`bikemass.core.output.check_output`):
     folders where files are wanted, unwritable places, and the command's own input files."""
+    # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import check_folder, check_output
 
     folders = getattr(args, "folder_outputs", ())
@@ -83,7 +84,7 @@ def check_outputs(args):
 
 
 def _check_figure_name(path, option):
-    from ..core.errors import InputError
+    # lazy: plots/ load matplotlib; only the figure needs it
     from ..plots.figure import figure_format
     try:
         figure_format(path)

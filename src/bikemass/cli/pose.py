@@ -2,17 +2,18 @@
 ``bikemass pose-fit``: the thesis poses against their closest joined-up chain poses."""
 
 import warnings
+from argparse import ArgumentTypeError
 
 from ..core.choices import Grip
+from ..core.errors import BikemassWarning, InputError
 from . import dialect
+from .options import angle
 from .sizes import add_size_option, every_size
 
 JOINT_HELP = "torso_lean, neck, shoulder, elbow, hip, knee"
 
 
 def register(sub):
-    from .options import angle
-
     p = sub.add_parser("pose", help="pose a rider by joint angles on a bicycle (hips, hands, feet)",
                        description="Solve the rider's joint angles (scipy least squares) so that the hips "
                                    "sit on the saddle, the hands on a grip and the feet on the pedals "
@@ -47,10 +48,7 @@ def register(sub):
 
 
 def _fixed(args):
-    from argparse import ArgumentTypeError
-
-    from ..core.errors import InputError
-    from .options import angle
+    # lazy: the library loads numpy; bikemass --help must not
     from ..rider.chain import JOINTS
     fixed = {}
     for item in args.fix:
@@ -67,6 +65,7 @@ def _fixed(args):
 
 
 def _report(solution, gaps, hands, crank):
+    # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import as_written, table
     from ..rider.chain import JOINTS
     pose = solution.pose
@@ -83,12 +82,14 @@ def _report(solution, gaps, hands, crank):
 
 
 def run_pose(args):
+    # lazy: the library loads numpy; bikemass --help must not
     from ..scenario.posing import pose_rider
 
     options = dialect.figure_checked(args)
     posed = pose_rider(args.bike, args.body, args.hands, args.crank, _fixed(args), args.name)
     dialect.emit(args, lambda fmt: _pose_text(args, posed, fmt))
     if args.plot:
+        # lazy: plots/ load matplotlib; only the figure needs it
         from ..plots.pose import plot_pose
         fig = plot_pose(posed.bicycle, posed.rider, posed.solution, f"{posed.rider.name}: chain pose",
                         options.size, **options.limits())
@@ -122,7 +123,7 @@ FIT_UNITS = {"plane_gaps": "m", "fit_rms": "m", "fit_max": "m", "chain_gap": "m"
 
 
 def run_fit(args):
-    from ..core.errors import BikemassWarning
+    # lazy: the library loads numpy; bikemass --help must not
     from ..rider import THESIS_POSES
     from ..study.thesis_fit import compare_with_chain
 
@@ -138,6 +139,7 @@ def run_fit(args):
 
 def _fit_record(r):
     """The ``pose-fit`` result of one pose as plain data (SI, degrees)."""
+    # lazy: the library loads numpy; bikemass --help must not
     from ..study.thesis_fit import first
 
     t, c = r["thesis"], r["fitted"]
@@ -150,6 +152,7 @@ def _fit_record(r):
 
 
 def _fit_text(args, fits, fmt):
+    # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import as_written, table
     from ..rider.chain import JOINTS
 

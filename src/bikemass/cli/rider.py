@@ -1,7 +1,11 @@
 """``bikemass rider POSE`` and ``bikemass riders``: rider mass, centre of mass and inertia."""
 
+import warnings
+
 from ..core.choices import Overlap
+from ..core.errors import BikemassWarning, shown
 from . import dialect
+from .bicycle import allow_off_contact_option
 
 TABLE_3_4_ROWS = (("mass (kg)", lambda p: p.mass),
                   ("x (m)", lambda p: p.com[0]), ("y (m)", lambda p: p.com[1]),
@@ -21,7 +25,6 @@ def register(sub):
                      help="seat the rider on this bicycle (its contacts: section) and report the contacts")
     one.add_argument("--segments", action="store_true",
                      help="json/yaml: add each segment's mass, centre of mass and inertia")
-    from .bicycle import allow_off_contact_option
     allow_off_contact_option(one)
     _common_options(one)
     one.set_defaults(run=run_rider)
@@ -46,18 +49,18 @@ def _common_options(p):
 def _clean(x, digits=4):
     """Float rounded for display (after :func:`bikemass.core.output.as_shown`), without a minus sign
     on a rounded zero."""
+    # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import as_shown
     return round(as_shown(x), digits) + 0.0
 
 
 def _seated(args):
     """(rider, SeatedRider or None) of ``args.pose`` (seated on ``args.bike`` if given)."""
-    import warnings
-
-    from ..core.errors import BikemassWarning
+    # lazy: the library loads numpy; bikemass --help must not
     from ..rider import load_rider
     if args.bike is None:
         return load_rider(args.pose, as_printed=args.as_printed), None
+    # lazy: the library loads numpy; bikemass --help must not
     from ..bicycle import load_bicycle
     from ..rider.seating import seat_rider
     seated = seat_rider(args.pose, load_bicycle(args.bike), args.as_printed, args.allow_off_contact)
@@ -78,7 +81,7 @@ def rider_document(rider, props, seated, method, segments):
 
 
 def _contacts_table(seated):
-    from ..core.errors import shown
+    # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import as_written, table
     rows = [(name, as_written(gap, "m") * 1000, key) for name, (gap, key) in seated.contacts.items()]
     head = (f"On {seated.bicycle.name} ({shown(seated.bicycle.source)}): pose {seated.how}"
@@ -98,6 +101,7 @@ SEGMENT_HEADERS = ["segment", "frame", "mass (kg)", "x (m)", "y (m)", "z (m)", "
 
 
 def _rider_text(args, rider, props, seated, fmt):
+    # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import table
 
     if fmt in ("json", "yaml"):
@@ -126,6 +130,7 @@ def _rider_text(args, rider, props, seated, fmt):
 
 
 def run_riders(args):
+    # lazy: the library loads numpy; bikemass --help must not
     from ..rider import PUBLISHED_SUFFIX, load_rider, shipped_poses
 
     poses = shipped_poses()
@@ -139,6 +144,7 @@ def run_riders(args):
 
 
 def _comparison_text(poses, props, published, fmt):
+    # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import table
 
     if fmt in ("json", "yaml"):
@@ -157,6 +163,7 @@ def _comparison_text(poses, props, published, fmt):
 
 
 def _riders_text(poses, props, fmt):
+    # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import table
 
     if fmt in ("json", "yaml"):

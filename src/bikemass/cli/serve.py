@@ -1,5 +1,9 @@
 """``bikemass serve``: the local web page (Dash) and its JSON API."""
 
+import threading
+
+from ..core.errors import InputError
+
 DEFAULT_PORT = 8050
 LOOPBACK = "127.0.0.1"
 
@@ -22,17 +26,17 @@ def register(sub):
 
 
 def run_serve(args):
-    from ..core.errors import InputError
     if not 0 < args.port < 65536:
         raise InputError("--port", args.port, "a TCP port between 1 and 65535")
     try:
+        # lazy: the web page loads dash; only bikemass serve needs it
         from ..web import create_app
         app = create_app()
     except ImportError as exc:
         raise InputError("serve", "(extra)", f"the web extra: pip install 'bikemass[web]' ({exc.name} "
                          "is missing)") from None
-    import threading
 
+    # lazy: the web page loads dash; only bikemass serve needs it
     from ..web.state import STIFFNESS_CHOICES, PageState
     defaults = [PageState(stiffness=s) for s in STIFFNESS_CHOICES]
     # not a daemon: a daemon thread stopped inside native code at exit aborts the interpreter

@@ -7,7 +7,11 @@ under a ``size NAME`` heading each.
 
 import contextlib
 import io
+import json
 from copy import copy
+
+from ..core.errors import InputError
+from .dialect import data_format, document
 
 DATA_FORMATS = ("json", "yaml")
 
@@ -22,10 +26,9 @@ def every_size(run, many=True):
     """``run`` for one bicycle, or once per size of a size run with the outputs joined
     (``many=False``: the size must be picked)."""
     def wrapped(args):
+        # lazy: the library loads numpy; bikemass --help must not
         from ..bicycle.loader import bicycle_sizes
-        from ..core.errors import InputError
         from ..core.output import write_atomic
-        from .dialect import data_format, document
 
         if args.bike_size is not None:
             args.bike = f"{args.bike}@{args.bike_size}"
@@ -46,8 +49,7 @@ def every_size(run, many=True):
                 run(one)
             outputs[size] = buffer.getvalue()
         if fmt in DATA_FORMATS:
-            import json
-
+            # lazy: yaml stays out of bikemass --help (this module is loaded to build it)
             import yaml
             load = json.loads if fmt == "json" else yaml.safe_load
             documents = {size: load(out) for size, out in outputs.items()}

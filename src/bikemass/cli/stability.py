@@ -1,15 +1,16 @@
 """``bikemass eig``, ``bikemass stability`` and ``bikemass compare``: eigenvalues over speed,
 critical speeds, stable ranges."""
 
+from ..core.errors import InputError, short
 from . import dialect
+from .bicycle import allow_off_contact_option
+from .options import MAX_SPEEDS, count, number
 from .sizes import add_size_option, every_size
 
 SPEED_LIMIT = "speed, m/s"
 
 
 def register(sub):
-    from .options import number
-
     eig = sub.add_parser(
         "eig", help="eigenvalues of the labelled modes (weave, capsize, caster) against speed",
         description="Eigenvalues of the linearised Whipple bicycle (Meijaard et al. 2007) at every "
@@ -56,7 +57,6 @@ def register(sub):
 
 
 def _allow(p):
-    from .bicycle import allow_off_contact_option
     allow_off_contact_option(p)
 
 
@@ -71,13 +71,13 @@ def _common(p):
 
 
 def _max_speeds(p):
-    from .options import MAX_SPEEDS, count
     p.add_argument("--max-speeds", type=count(), default=MAX_SPEEDS, metavar="N",
                    help=f"raise the limit on the speeds in the grid (default {MAX_SPEEDS})")
 
 
 def _inputs(args, rider=None, stiffness=None):
     """(parameter set, S or None) of BIKE with ``rider`` and ``stiffness`` (default: the options')."""
+    # lazy: the library loads numpy; bikemass --help must not
     from ..scenario.catalog import load_bicycle, parameters, stiffness as frame_stiffness
 
     bike = load_bicycle(args.bike)
@@ -103,6 +103,7 @@ def _title(args):
 
 
 def run_eig(args):
+    # lazy: the library loads numpy; bikemass --help must not
     from ..analysis.eigen_table import eig_table
     from ..analysis.results import eigenvalues
 
@@ -117,6 +118,7 @@ def run_eig(args):
         return eig_table(modes, csv=fmt == "csv")
     dialect.emit(args, render)
     if args.plot:
+        # lazy: plots/ load matplotlib; only the figure needs it
         from ..analysis.results import stability
         from ..plots.stability import plot_eigenvalues
         result = stability(*inputs, speeds)          # marks v_w, v_c and shades the stable speeds
@@ -125,8 +127,8 @@ def run_eig(args):
 
 
 def run_stability(args):
+    # lazy: the library loads numpy; bikemass --help must not
     from ..analysis.results import stability
-    from ..core.errors import InputError
 
     options = dialect.figure_checked(args)
     if not args.marginal > 0:
@@ -142,6 +144,7 @@ def run_stability(args):
         return stability_text(result, _title(args))
     dialect.emit(args, render)
     if args.plot:
+        # lazy: plots/ load matplotlib; only the figure needs it
         from ..plots.stability import plot_eigenvalues
         dialect.save_plot(args, plot_eigenvalues(result, _title(args), options.size, **options.limits()), options)
     return 0
@@ -156,8 +159,8 @@ def ranges_csv(result):
 
 
 def run_compare(args):
+    # lazy: the library loads numpy; bikemass --help must not
     from ..analysis.results import stability
-    from ..core.errors import InputError, short
 
     options = dialect.figure_checked(args)
     speeds = dialect.parse_speeds(args.speeds, args.max_speeds)
@@ -176,6 +179,7 @@ def run_compare(args):
                          "stable_speeds": [list(r) for r in result.stable_speeds]})
     dialect.emit(args, lambda fmt: comparison_text(runs, fmt))
     if args.plot:
+        # lazy: plots/ load matplotlib; only the figure needs it
         from ..plots.critical_speeds import plot_critical_speeds
         fig = plot_critical_speeds(results, f"{args.bike}: weave and capsize speeds ({_combine(args.combine)})",
                                    options.size, options.xlim)
@@ -192,6 +196,7 @@ def comparison_text(runs, fmt):
     if fmt == "csv":
         return dialect.csv_text(["rider", "stiffness", "weave speeds (m/s)", "capsize speeds (m/s)",
                                  "stable (strict, m/s)"], rows)
+    # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import table
     return table(["rider", "stiffness", "weave speeds", "capsize speeds", "stable (strict)"], rows)
 
@@ -209,6 +214,7 @@ KIND_WORDS = {"oscillatory": "an oscillatory pair (weave-like)", "real": "a real
 
 def _crossing_rows(result):
     """One row per crossing speed: a pair's two members on one row, named by what the root is."""
+    # lazy: the library loads numpy; bikemass --help must not
     import numpy as np
 
     names = result.modes.names()
@@ -225,6 +231,7 @@ def _crossing_rows(result):
 
 def stability_text(result, title):
     """Human-readable report: critical speeds in words, every crossing, then ranges overall and per mode."""
+    # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import table
 
     v = result.modes.speeds

@@ -1,5 +1,11 @@
 """``bikemass study``: the thesis reproduced end to end, compared entry by entry, then corrected."""
 
+import argparse
+from pathlib import Path
+
+from ..core.progress import Progress
+from .options import jobs
+
 DESCRIPTION = """\
 Reproduce Williams (2015) from the shipped data and compare every number with the thesis.
 
@@ -29,10 +35,6 @@ examples:
 
 
 def register(sub):
-    import argparse
-
-    from .options import jobs
-
     p = sub.add_parser("study", help="reproduce the thesis end to end and write a report (the main job)",
                        description=DESCRIPTION, epilog=EPILOG,
                        formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -48,10 +50,8 @@ def register(sub):
 
 
 def run_study(args):
-    from pathlib import Path
-
+    # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import new_folder
-    from ..core.progress import Progress
     from ..study import pipeline
     from ..study.report import match_counts
 
