@@ -1,6 +1,6 @@
 """Chart dimensions drawn on a side view (x forward, height up, m): stack, reach, angles, ...
 
-:func:`annotate_chart` adds the dimension lines of :func:`~.derived_chart.derived_chart` to
+:func:`annotate_chart` adds the dimension lines of :func:`~bikemass.bicycle.derived_chart.derived_chart` to
 any matplotlib axes showing the bicycle side on (``bikemass draw`` of a chart bicycle);
 :func:`plot_chart` makes a figure of the frame's centre lines, the wheels and the
 dimensions (``bikemass geometry --plot``, the figure of docs/bicycles.md).
