@@ -10,8 +10,8 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ..models.parameters import NAMES
 from ..models.canonical import CanonicalMatrices, canonical_matrices
+from ..models.parameters import NAMES
 
 STEP = 1e-30
 """Complex step (dimensionless multiple of i)."""

@@ -17,17 +17,17 @@ The benchmark bicycle is the same parameter file in every run.
 
 from dataclasses import dataclass
 
-from ..rider.seating import seat_rider
-from ..scenario import catalog
+from ..analysis.stability import follow_modes, speed_grid, stability
+from ..analysis.stability.criteria import MARGINAL_THRESHOLD, is_stable
+from ..analysis.stability.labels import LABELS
+from ..analysis.stability.ranges import grid_ranges
 from ..bicycle import bicycle_parameters
 from ..fe import equivalent_stiffness
 from ..mass.materials import load_materials
 from ..models.canonical import canonical_matrices
-from ..analysis.stability import follow_modes, speed_grid, stability
 from ..models.flexible_static import with_frame_stiffness
-from ..analysis.stability.criteria import MARGINAL_THRESHOLD, is_stable
-from ..analysis.stability.labels import LABELS
-from ..analysis.stability.ranges import grid_ranges
+from ..rider.seating import seat_rider
+from ..scenario import catalog
 from .configurations import BENCHMARK, BENCHMARK_RIDER, FE_FRAME
 
 CRITERIA = ("strict", "marginal")
