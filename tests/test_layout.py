@@ -184,7 +184,8 @@ def unexplained_lazy_imports(src):
                 row = node.lineno - 1
                 while row > 0 and lines[row - 1].lstrip().startswith(("import ", "from ")):
                     row -= 1                      # the first of a run of imports
-                marked = LAZY_MARK in lines[node.lineno - 1] or (row > 0 and lines[row - 1].lstrip().startswith(LAZY_MARK))
+                above = lines[row - 1].lstrip() if row > 0 else ""
+                marked = LAZY_MARK in lines[node.lineno - 1] or above.startswith(LAZY_MARK)
                 if not marked:
                     bad.append(f"{name}:{node.lineno}: {lines[node.lineno - 1].strip()}")
     return sorted(set(bad))
@@ -249,5 +250,6 @@ def test_the_checks_find_each_fault(broken):
                               "bikemass.mass.solid:1 -> bikemass.scenario.catalog (scenario/ ranks above mass/)",
                               "bikemass.scenario.catalog:1 -> the facade bikemass (*)"]
     assert cycles(src) == [["bikemass.core.a:2 -> bikemass.core.b", "bikemass.core.b:1 -> bikemass.core.a"],
-                           ["bikemass.rider.pose:1 -> bikemass.rider.seat", "bikemass.rider.seat:1 -> bikemass.rider.pose"]]
+                           ["bikemass.rider.pose:1 -> bikemass.rider.seat",
+                            "bikemass.rider.seat:1 -> bikemass.rider.pose"]]
     assert unexplained_lazy_imports(src) == ["bikemass.core.a:2: from . import b"]

@@ -16,10 +16,9 @@ import numpy as np
 from ..core.errors import InputError
 from ..mass.inertia import combine as combine_exact
 from ..mass.inertia import combine_without_parallel_axis
-from ..core.errors import InputError
+from ..mass.parts import body_properties
 from ..models.parameters import BenchmarkParameters
 from ..models.plausibility import warn_parameters, warn_rider
-from ..mass.parts import body_properties
 
 COMBINE_CHOICES = ("exact", "thesis")
 

@@ -12,10 +12,10 @@ import numpy as np
 
 from ..core.convention import thesis_segment_rotation
 from ..mass.inertia import MassProperties
-from ..models.plausibility import check_inertia
 from ..mass.parts import Part
 from ..mass.placement import Placement
 from ..mass.solids import Box, Cylinder, Hoop, Lumped, PointMass, RoundTube, SquareTube, TrapezoidalPrism
+from ..models.plausibility import check_inertia
 
 BODIES = ("rear_frame", "front_frame", "rear_wheel", "front_wheel")
 """The four rigid bodies of the benchmark model."""

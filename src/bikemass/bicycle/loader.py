@@ -14,24 +14,24 @@ from pathlib import Path
 import numpy as np
 
 from ..core.config import Node, load_yaml
-from ..core.gate import plain_input, read_text
 from ..core.errors import InputError, short
+from ..core.gate import plain_input, read_text
+from ..core.paths import frames_dir, resolve
 from ..mass.inertia import MassProperties
 from ..mass.materials import load_materials, read_materials
-from .parameter_text import load_parameter_text, looks_like_parameter_text
-from ..models.parameters import from_node, is_parameter_file
 from ..mass.parts import Part
-from ..core.paths import frames_dir, resolve
 from ..mass.placement import Placement
-from ..models.plausibility import check_parameter_node, check_stiffness
 from ..mass.sections import RoundSection, SquareSection
 from ..mass.solids import Lumped, RoundTube, SquareTube
 from ..mass.tubes import Structure, Tube
+from ..models.parameters import from_node, is_parameter_file
+from ..models.plausibility import check_parameter_node, check_stiffness
 from .chart_build import expand_chart
 from .components import materials_lookup, read_component, read_wheel
 from .contacts import read_contacts
 from .geometry import Geometry, check_keypoints, read_geometry
 from .model import Bicycle
+from .parameter_text import load_parameter_text, looks_like_parameter_text
 from .sizes import select_size, size_names, split_size
 
 TOP_KEYS = ("name", "base", "source", "description", "geometry", "keypoints", "material", "sections", "tubes",

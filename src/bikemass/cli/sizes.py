@@ -7,7 +7,6 @@ under a ``size NAME`` heading each.
 
 import contextlib
 import io
-import json
 from copy import copy
 
 from ..core.errors import InputError
@@ -49,7 +48,8 @@ def every_size(run, many=True):
                 run(one)
             outputs[size] = buffer.getvalue()
         if fmt in DATA_FORMATS:
-            # lazy: yaml stays out of bikemass --help (this module is loaded to build it)
+            # lazy: json and yaml stay out of bikemass --help (this module is loaded to build it)
+            import json
             import yaml
             load = json.loads if fmt == "json" else yaml.safe_load
             documents = {size: load(out) for size, out in outputs.items()}

@@ -5,7 +5,6 @@ relative to this folder.
 """
 
 import os
-from importlib.resources import files
 from pathlib import Path
 
 SHIPPED = ("bodies", "frames", "reference")
@@ -32,4 +31,6 @@ def checkout():
 
 def installed_data() -> Path:
     """``bikemass/shipped/`` of the installed package (absent in a checkout: the data sit at its top)."""
+    # lazy: importlib.resources (and tempfile, random, typing behind it) stays out of bikemass --help
+    from importlib.resources import files
     return Path(str(files("bikemass") / "shipped"))

@@ -12,8 +12,8 @@ from pathlib import Path
 from ..core.config import Node, load_yaml
 from ..core.errors import InputError
 from ..core.gate import plain_input
-from ..mass.parts import METHODS, OVERLAPS, body_properties
 from ..core.paths import available, bodies_dir, resolve
+from ..mass.parts import METHODS, OVERLAPS, body_properties
 from .chain_file import read_chain_pose
 from .pose import read_pose
 

@@ -25,10 +25,10 @@ tensor products) is a lumped body and needs no anthropometry.
 import numpy as np
 
 from ..mass.inertia import MassProperties
-from ..models.plausibility import check_inertia
 from ..mass.parts import Part
 from ..mass.placement import Placement
 from ..mass.solids import Lumped
+from ..models.plausibility import check_inertia
 from .body import load_body
 
 FRAMES = {"rear": "rear_frame", "front": "front_frame"}

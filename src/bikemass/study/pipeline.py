@@ -4,8 +4,8 @@ import os
 from dataclasses import dataclass, field
 
 from ..core.output import dumps, write_atomic
-from ..rider import THESIS_POSES
 from ..core.threads import one_blas_thread
+from ..rider import THESIS_POSES
 from . import corrections, figures
 from .body_tables import bicycle_table, rider_table
 from .configurations import BICYCLES, Configuration, configurations

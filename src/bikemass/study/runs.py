@@ -17,15 +17,15 @@ The benchmark bicycle is the same parameter file in every run.
 
 from dataclasses import dataclass
 
-from ..scenario import catalog
-from ..bicycle import bicycle_parameters
-from ..fe import equivalent_stiffness
-from ..mass.materials import load_materials
 from ..analysis.engine.modes import follow_modes
 from ..analysis.engine.naming import BICYCLE_LABELS as LABELS
 from ..analysis.engine.ranges import MARGINAL_THRESHOLD, grid_ranges, is_stable
 from ..analysis.engine.stability import analyse, speed_grid
+from ..bicycle import bicycle_parameters
+from ..fe import equivalent_stiffness
+from ..mass.materials import load_materials
 from ..models.whipple import whipple_model
+from ..scenario import catalog
 from .configurations import BENCHMARK, BENCHMARK_RIDER, FE_FRAME
 from ..rider.seating import seat_rider
 
