@@ -34,10 +34,10 @@ class Signal:
     description: str = ""
 
 
-def _coefficients(terms, shape):
+def _coefficients(terms, shape, dtype=float):
     """``terms`` (a sequence of arrays, coefficient of ``v**k`` at index ``k``) as one read-only array
     of shape ``(d + 1, *shape)``; ``None`` entries are zero."""
-    out = np.zeros((max(len(terms), 1), *shape))
+    out = np.zeros((max(len(terms), 1), *shape), dtype=dtype)
     for k, t in enumerate(terms):
         if t is not None:
             out[k] = t
@@ -95,6 +95,10 @@ class LinearModel:
         ``B[k]`` multiplies ``v**k``; read-only.
     mechanics : SecondOrder or None
         ``M, C(v), K(v), F`` where the model has mechanical coordinates.
+    families : tuple of (str, tuple of int)
+        Mode families and the dynamic states that belong to them (for naming modes): the
+        Whipple bicycle's roll and steer states are ``"bicycle"``; a richer model adds, e.g.,
+        ``("lean", (4, 9))``.  Default: every dynamic state in ``"bicycle"``.
     """
 
     name: str
@@ -104,8 +108,11 @@ class LinearModel:
     A: np.ndarray
     B: np.ndarray
     mechanics: SecondOrder = field(default=None)
+    families: tuple = ()
 
     def __post_init__(self):
+        if not self.families:
+            object.__setattr__(self, "families", (("bicycle", tuple(range(self.n_dynamic))),))
         n, m = len(self.states), len(self.inputs)
         if self.A.shape[1:] != (n, n) or self.B.shape[1:] != (n, m) or not 0 < self.n_dynamic <= n:
             raise ValueError(f"model {self.name!r}: A {self.A.shape}, B {self.B.shape} do not fit "
@@ -158,6 +165,11 @@ class LinearModel:
         n = self.n_dynamic
         return self.A[:, :n, :n]
 
+    def speed_derivative(self, speed):
+        """``dA/dv`` (N, N) at one speed (m/s)."""
+        k = np.arange(1, len(self.A))
+        return np.tensordot(k * float(speed) ** (k - 1), self.A[1:], axes=1) if len(k) else np.zeros_like(self.A[0])
+
     def dynamic_matrix(self, speed):
         """The dynamic block of ``A(v)``: (n, n) for one speed, (k, n, n) for k speeds."""
         return polynomial(self.dynamic_coefficients, speed)
@@ -180,7 +192,7 @@ class LinearModel:
                 f"inputs=({', '.join(self.input_names)}), degree={len(self.A) - 1})")
 
 
-def second_order_model(name, coordinates, rates, M, C, K, F, inputs, kinematics=()):
+def second_order_model(name, coordinates, rates, M, C, K, F, inputs, kinematics=(), families=None):
     """A :class:`LinearModel` from ``M q'' + C(v) q' + K(v) q = F u`` and kinematic states.
 
     Parameters
@@ -201,20 +213,24 @@ def second_order_model(name, coordinates, rates, M, C, K, F, inputs, kinematics=
         Kinematic states ``z_j' = sum_k v**k r_jk . [q, q', z]``, each given by its Signal and the
         coefficients ``r_jk`` (rows of length ``2 n + len(kinematics)``, zero on the dynamic block's
         feedback: kinematic states must not feed back).
+    families : mapping of str to sequence of int, optional
+        Mode families by coordinate index (each takes the coordinate and its rate); default:
+        every coordinate in ``"bicycle"``.
 
     Returns
     -------
     LinearModel
     """
-    M = np.asarray(M, dtype=float)
+    dtype = np.result_type(float, M, *(x for x in (*C, *K) if x is not None))   # complex for the complex step
+    M = np.asarray(M, dtype=dtype)
     n = len(M)
     F = np.asarray(F, dtype=float).reshape(n, len(inputs))
     N = 2 * n + len(kinematics)
     degree = max(len(C), len(K), 1, *(len(rows) for _, rows in kinematics)) - 1
-    mech = SecondOrder(tuple(coordinates), readonly(M), _coefficients(C, (n, n)), _coefficients(K, (n, n)),
-                       readonly(F))
+    mech = SecondOrder(tuple(coordinates), readonly(M), _coefficients(C, (n, n), dtype),
+                       _coefficients(K, (n, n), dtype), readonly(F))
     Minv = np.linalg.inv(M)
-    A = np.zeros((degree + 1, N, N))
+    A = np.zeros((degree + 1, N, N), dtype=dtype)
     A[0, :n, n:2 * n] = np.eye(n)
     A[:len(mech.K), n:2 * n, :n] = -Minv @ mech.K
     A[:len(mech.C), n:2 * n, n:2 * n] = -Minv @ mech.C
@@ -222,7 +238,8 @@ def second_order_model(name, coordinates, rates, M, C, K, F, inputs, kinematics=
         for k, row in enumerate(rows):
             if row is not None:
                 A[k, 2 * n + j] = row
-    B = np.zeros((1, N, len(inputs)))
+    B = np.zeros((1, N, len(inputs)), dtype=dtype)
     B[0, n:2 * n] = Minv @ F
     states = (*coordinates, *rates, *(s for s, _ in kinematics))
-    return LinearModel(name, tuple(states), 2 * n, tuple(inputs), readonly(A), readonly(B), mech)
+    groups = tuple((f, tuple(sorted((*idx, *(n + i for i in idx))))) for f, idx in (families or {}).items())
+    return LinearModel(name, tuple(states), 2 * n, tuple(inputs), readonly(A), readonly(B), mech, groups)
