@@ -11,6 +11,8 @@ The rule for bare numbers (one rule, every YAML format):
 * a bare number is SI: m, kg, kg m^2, Pa, kg/m^3, N m/rad, m/s^2;
 * an angle always carries its unit (``"72 deg"`` or ``"1.2566 rad"``): a bare
   number where an angle is expected could be read either way and is refused.
+  So does a coefficient per angle (``"11.5 1/rad"``, ``"0.2 1/deg"``: tyre data are
+  printed in both).
   The one exception is a format whose definition fixes the unit: the benchmark
   parameter set of Meijaard et al. (2007), whose ``lam`` is radians (as
   BicycleParameters writes it); its reader passes ``bare_unit="rad"``.
@@ -36,12 +38,16 @@ DIMENSIONS = {
     "density": ("kg/m^3", {"kg/m^3": 1.0, "g/cm^3": 1e3, "g/cc": 1e3, "lb/in^3": POUND / INCH**3}),
     "stiffness": ("N m/rad", {"N m/rad": 1.0, "N*m/rad": 1.0, "kN m/rad": 1e3}),
     "acceleration": ("m/s^2", {"m/s^2": 1.0}),
+    "inverse angle": ("1/rad", {"1/rad": 1.0, "1/deg": 180 / math.pi}),
     "dimensionless": ("", {"": 1.0}),
 }
 """dimension -> (SI unit, {unit: factor to SI}).  ``pressure`` also covers elastic moduli,
-``stiffness`` is rotational (moment per angle)."""
+``stiffness`` is rotational (moment per angle), ``inverse angle`` a coefficient per angle (a tyre's
+force per unit load per radian of slip)."""
 
-ARTICLES = {"angle": "an", "acceleration": "an", "inertia": "an"}
+ARTICLES = {"angle": "an", "acceleration": "an", "inertia": "an", "inverse angle": "an"}
+UNIT_REQUIRED = ("angle", "inverse angle")
+"""Dimensions whose bare numbers are refused (radians or degrees could be meant)."""
 
 _QUANTITY = re.compile(r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*")
 _UNIT_DIMENSION = {unit: dim for dim, (_, table) in DIMENSIONS.items() for unit in table}
@@ -66,6 +72,9 @@ def describe(dimension):
     if dimension == "angle":
         return (f"{noun} with its unit ('<number> deg' or '<number> rad'; "
                 "a bare number could be either)")
+    if dimension == "inverse angle":
+        return (f"a coefficient per angle with its unit ('<number> 1/rad' or '<number> 1/deg'; "
+                "a bare number could be either)")
     return f"{noun} (a number in {si}, or '<number> <unit>' with unit {others})"
 
 
@@ -87,7 +96,7 @@ def convert(value, dimension, unit, *, bare_unit=None):
     si, table = DIMENSIONS[dimension]
     number, given = _split(value, dimension)
     if given == "":
-        given = bare_unit or (None if dimension == "angle" else si)
+        given = bare_unit or (None if dimension in UNIT_REQUIRED else si)
         if given is None:
             raise UnitError(f"{describe(dimension)}, got {_short(value)}")
     if given not in table:

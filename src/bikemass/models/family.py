@@ -1,0 +1,128 @@
+"""The members' linear models from the generated code: one combination's matrices for any parameters.
+
+:func:`build` takes the typed parameters (a benchmark set, the leaning rider's, tyres) and returns
+the :class:`~bikemass.models.linear.LinearModel`; :func:`linear_model` does the same from the flat
+``{name: float}`` the generated code takes; :func:`state_coefficients` evaluates thousands of
+configurations at once (arrays for parameters) for sweeps.
+"""
+
+import importlib
+from functools import lru_cache
+
+import numpy as np
+
+from ..errors import InputError
+from ..frozen import readonly
+from ..parameters import NAMES, BenchmarkParameters
+from .lean import RiderLeanParameters
+from .linear import LinearModel, SecondOrder
+from .registry import module_name, parse_model
+from .signals import signal
+from .tyres import DEFAULT_TYRES, Tyres
+
+
+@lru_cache(maxsize=None)
+def generated(model):
+    """The generated module of ``model`` (a name or :class:`~bikemass.models.registry.ModelChoice`).
+
+    Imported on first use, not with bikemass: each module is a few hundred lines of numpy that
+    only a model of that combination needs."""
+    return importlib.import_module(f"{__package__}.generated.{module_name(parse_model(model).members)}")
+
+
+def parameter_names(model):
+    """The names of the parameters that the code of ``model`` takes, in order."""
+    return tuple(name for name, _, _ in generated(model).PARAMETERS)
+
+
+def coefficients(model, values):
+    """``(E, A, B)`` of ``model`` in descriptor form (see :mod:`bikemass.models.derive.build`) at
+    ``values`` (``{name: float or array}``, every name of :func:`parameter_names`; arrays broadcast,
+    their shape leads the results)."""
+    code = generated(model)
+    try:
+        args = [values[name] for name, _, _ in code.PARAMETERS]
+    except KeyError:
+        missing = [name for name, _, _ in code.PARAMETERS if name not in values]
+        raise ValueError(f"model {code.NAME!r}: parameters missing: {', '.join(missing)}") from None
+    return code.coefficients(*(x if type(x) is float else _number(x) for x in args))
+
+
+def _number(x):
+    """A parameter value as the generated code takes it: a Python float, or a float array."""
+    return float(x) if np.ndim(x) == 0 else np.asarray(x, dtype=float)
+
+
+def state_coefficients(model, values):
+    """``(A, B)`` of ``x' = sum_k v**k A[k] x + sum_k v**k B[k] u`` at ``values``: shapes
+    (..., d + 1, N, N) and (..., d + 1, N, m), the leading dimensions those of the parameters."""
+    return _state_form(generated(model), *coefficients(model, values))
+
+
+def _state_form(code, E, A, B):
+    """``E^-1 A``, ``E^-1 B`` of the generated ``(E, A, B)`` (solved on E's mass rows only: every other
+    row of E is a row of the identity, so exact zeros stay exact)."""
+    mass = slice(code.COORDINATES, code.N_DYNAMIC)
+    inverse = np.linalg.inv(E[..., None, mass, mass])
+    A, B = A.copy(), B.copy()
+    A[..., mass, :] = inverse @ A[..., mass, :]
+    B[..., mass, :] = inverse @ B[..., mass, :]
+    return A, B
+
+
+def linear_model(model, values):
+    """The :class:`~bikemass.models.linear.LinearModel` of ``model`` at ``values`` (``{name: float}``)."""
+    code = generated(model)
+    E, A_terms, B_terms = coefficients(model, values)
+    if E.ndim != 2:
+        raise ValueError(f"model {code.NAME!r}: one value per parameter expected (use state_coefficients "
+                         f"for arrays)")
+    A, B = _state_form(code, E, A_terms, B_terms)
+    states = tuple(signal(n, u) for n, u in code.STATES)
+    inputs = tuple(signal(n, u) for n, u in code.INPUTS)
+    mechanics = None
+    if code.SECOND_ORDER:
+        n = code.COORDINATES
+        q, dq = slice(0, n), slice(n, 2 * n)
+        mechanics = SecondOrder(states[:n], readonly(E[dq, dq]), readonly(-A_terms[:, dq, dq]),
+                                readonly(-A_terms[:, dq, q]), readonly(B_terms[0, dq]))
+    return LinearModel(code.NAME, states, code.N_DYNAMIC, inputs, readonly(A), readonly(B), mechanics,
+                       code.FAMILIES)
+
+
+def values(model, bicycle, tyres=None):
+    """The ``{name: float}`` of ``model`` from typed parameters (see :func:`build`)."""
+    choice = parse_model(model)
+    if choice.has("rider-lean"):
+        if not isinstance(bicycle, RiderLeanParameters):
+            raise InputError("model", choice.name, "the rider-lean model needs the rider split at the hips "
+                             "(RiderLeanParameters: rider_lean_parameters(bicycle, rider) or from_moore_values)")
+        out = bicycle.values()
+    elif isinstance(bicycle, RiderLeanParameters):
+        out = bicycle.rigid().to_dict()
+    elif isinstance(bicycle, BenchmarkParameters):
+        out = {name: getattr(bicycle, name) for name in NAMES}
+    else:
+        raise InputError("model", choice.name, f"benchmark or rider-lean parameters, not {type(bicycle).__name__}")
+    if choice.has("tyre"):
+        tyres = DEFAULT_TYRES if tyres is None else tyres
+        if not isinstance(tyres, Tyres):
+            raise InputError("tyres", choice.name, f"Tyres (front, rear), not {type(tyres).__name__}")
+        out.update(tyres.values())
+    elif tyres is not None:
+        raise InputError("tyres", choice.name, f"no tyres for the model {choice.name} (add the tyre member: "
+                         f"{'+'.join((*choice.members, 'tyre'))})")
+    return out
+
+
+def build(model, bicycle, tyres=None):
+    """The :class:`~bikemass.models.linear.LinearModel` of ``model`` (``"whipple"``, ``"rider-lean"``,
+    ``"tyre"``, ``"rider-lean+tyre"``, or a :class:`~bikemass.models.registry.ModelChoice`).
+
+    ``bicycle``: :class:`~bikemass.parameters.BenchmarkParameters`, or
+    :class:`~bikemass.models.lean.RiderLeanParameters` (needed by ``rider-lean``; a model without
+    it holds the upper body rigid: :meth:`~bikemass.models.lean.RiderLeanParameters.rigid`).
+    ``tyres``: :class:`~bikemass.models.tyres.Tyres` for the ``tyre`` member (default
+    :data:`~bikemass.models.tyres.DEFAULT_TYRES`); an error for a model without tyres.
+    """
+    return linear_model(model, values(model, bicycle, tyres))

@@ -1,0 +1,120 @@
+"""The leaning rider's parameters: the bicycle without the rider's upper body, the upper body, the hip joint.
+
+The rider is split at the hips (Moore 2012, PhD thesis UC Davis, ch. "Extensions of the Whipple
+model", section "Leaning rider extension"): the benchmark rear frame B keeps the bicycle's rear frame,
+the legs and the pelvis; the upper body (torso, head, and the arms unless they hold the bars and move
+with the front frame) leans about a longitudinal axis through the hip joints against a torsional
+spring and damper.
+
+The defaults of the joint, ``k = 128 N m/rad`` and ``c = 50 N m s/rad``, are de Lorenzo & Hubbard's
+(1996, unpublished) estimates as quoted by Moore (2012, same section, text before his Fig. 4.16, the
+values with which his leaning rider is stable between about 5 and 7 m/s on the Batavus Browser);
+``k = c = 0`` is his free lean joint (Fig. 4.15).  An upper body of mass ``m`` with its centre of mass
+``h`` above the hip axis is statically unstable on the joint alone (bicycle held) when
+``k < m g h``: :attr:`RiderLeanParameters.gravity_stiffness` gives ``m g h`` to compare.
+"""
+
+import math
+from dataclasses import dataclass, field, fields
+
+import numpy as np
+
+from ..errors import InputError
+from ..inertia import MassProperties, combine
+from ..parameters import NAMES, BenchmarkParameters
+
+
+def unit(symbol, description):
+    """A dataclass field's metadata: its SI unit and meaning."""
+    return field(metadata={"unit": symbol, "description": description})
+
+
+def units(cls):
+    """``{field: SI unit}`` of a dataclass with :func:`unit` metadata."""
+    return {f.name: f.metadata["unit"] for f in fields(cls) if "unit" in f.metadata}
+
+
+def _checked(value, what, positive=(), nonnegative=()):
+    """Every field a finite float (``positive`` or ``nonnegative`` where asked); InputError otherwise."""
+    for f in fields(value):
+        x = getattr(value, f.name)
+        if isinstance(x, bool) or not isinstance(x, (int, float)) or not math.isfinite(x):
+            raise InputError(what, f.name, f"a finite number ({f.metadata['unit']}), got {x!r}")
+        if (f.name in positive and not x > 0) or (f.name in nonnegative and x < 0):
+            raise InputError(what, f.name, f"a {'positive' if f.name in positive else 'non-negative'} number "
+                             f"({f.metadata['unit']}), got {x!r}")
+        object.__setattr__(value, f.name, float(x))
+
+
+LEAN_STIFFNESS = 128.0
+"""De Lorenzo & Hubbard (1996) via Moore (2012): passive lean stiffness, N m/rad."""
+LEAN_DAMPING = 50.0
+"""De Lorenzo & Hubbard (1996) via Moore (2012): passive lean damping, N m s/rad."""
+
+
+@dataclass(frozen=True)
+class UpperBody:
+    """The leaning part of the rider, upright, in the benchmark frame (x forward, z down, origin at
+    the rear contact); inertia about its own centre of mass, products as tensor elements."""
+
+    mass: float = unit("kg", "mass")
+    x: float = unit("m", "centre of mass x")
+    z: float = unit("m", "centre of mass z (negative: above the ground)")
+    Ixx: float = unit("kg m^2", "Ixx about the centre of mass")
+    Iyy: float = unit("kg m^2", "Iyy about the centre of mass")
+    Izz: float = unit("kg m^2", "Izz about the centre of mass")
+    Ixz: float = unit("kg m^2", "Ixz (tensor element) about the centre of mass")
+    hip_z: float = unit("m", "z of the lean (hip) axis, a line parallel to x (negative: above the ground)")
+
+    def __post_init__(self):
+        _checked(self, "upper body", positive=("mass", "Ixx", "Iyy", "Izz"))
+
+    def properties(self):
+        """The upper body as :class:`~bikemass.inertia.MassProperties`."""
+        I = np.array([[self.Ixx, 0.0, self.Ixz], [0.0, self.Iyy, 0.0], [self.Ixz, 0.0, self.Izz]])
+        return MassProperties(self.mass, [self.x, 0.0, self.z], I)
+
+
+@dataclass(frozen=True)
+class LeanJoint:
+    """The hip joint's passive torque ``-(stiffness lean + damping lean')``."""
+
+    stiffness: float = field(default=LEAN_STIFFNESS, metadata={"unit": "N m/rad", "description": "stiffness"})
+    damping: float = field(default=LEAN_DAMPING, metadata={"unit": "N m s/rad", "description": "damping"})
+
+    def __post_init__(self):
+        _checked(self, "lean joint", nonnegative=("stiffness", "damping"))
+
+
+@dataclass(frozen=True)
+class RiderLeanParameters:
+    """Parameters of the ``rider-lean`` model: ``bicycle`` is the benchmark set whose rear frame B holds
+    the bicycle's rear frame with the rider's legs and pelvis (not the upper body)."""
+
+    bicycle: BenchmarkParameters
+    upper: UpperBody
+    joint: LeanJoint = LeanJoint()
+
+    def values(self):
+        """``{name: float}`` of the generated code's parameters (the 26 benchmark ones and the member's)."""
+        u, j = self.upper, self.joint
+        return {**{name: getattr(self.bicycle, name) for name in NAMES}, "mU": u.mass, "xU": u.x, "zU": u.z, "IUxx": u.Ixx, "IUyy": u.Iyy,
+                "IUzz": u.Izz, "IUxz": u.Ixz, "zhip": u.hip_z, "klean": j.stiffness, "clean": j.damping}
+
+    def rigid(self):
+        """The benchmark set of the same bicycle and rider with the upper body held rigid (merged into B)."""
+        b = self.bicycle
+        I = np.array([[b.IBxx, 0.0, b.IBxz], [0.0, b.IByy, 0.0], [b.IBxz, 0.0, b.IBzz]])
+        whole = combine((MassProperties(b.mB, [b.xB, 0.0, b.zB], I), self.upper.properties()))
+        J = whole.inertia
+        return b.replace(mB=whole.mass, xB=whole.com[0], zB=whole.com[2], IBxx=J[0, 0], IByy=J[1, 1],
+                         IBzz=J[2, 2], IBxz=J[0, 2])
+
+    @property
+    def gravity_stiffness(self):
+        """``m g h`` (N m/rad): the upper body's gravity torque per radian of lean about the hip axis."""
+        return self.upper.mass * self.bicycle.g * (self.upper.hip_z - self.upper.z)
+
+    def replace(self, **changes):
+        """A copy with ``bicycle``, ``upper`` or ``joint`` changed."""
+        return RiderLeanParameters(**{**{f.name: getattr(self, f.name) for f in fields(self)}, **changes})

@@ -1,0 +1,55 @@
+"""The model family's names: ``--model`` strings to member combinations and back."""
+
+from dataclasses import dataclass
+
+from ..errors import InputError
+
+BASE = "whipple"
+"""The Whipple bicycle of Meijaard et al. (2007): every member extends it."""
+MEMBERS = ("rider-lean", "tyre", "flexible")
+"""Every member of the family, in the canonical order of a combination's name."""
+BUILT = ("rider-lean", "tyre")
+"""The members that exist today."""
+
+
+@dataclass(frozen=True)
+class ModelChoice:
+    """A member combination: ``members`` in canonical order (empty for the Whipple bicycle)."""
+
+    members: tuple = ()
+
+    @property
+    def name(self):
+        """``"whipple"``, ``"rider-lean"``, ..., ``"rider-lean+tyre"``."""
+        return "+".join(self.members) or BASE
+
+    def has(self, member):
+        """Whether ``member`` is on."""
+        return member in self.members
+
+
+def parse_model(text, source="--model"):
+    """The :class:`ModelChoice` of ``text`` (``"whipple"``, ``"tyre+rider-lean"``, ...; order does not
+    matter, ``whipple`` may be named alongside); :class:`~bikemass.errors.InputError` naming the
+    choices for anything else."""
+    if isinstance(text, ModelChoice):
+        return text
+    choices = f"{BASE}, {', '.join(MEMBERS)}, or members joined by '+' (e.g. rider-lean+tyre)"
+    if not isinstance(text, str) or not text.strip():
+        raise InputError(source, "model", f"a model name: {choices}")
+    names = [part.strip() for part in text.split("+")]
+    for name in names:
+        if name != BASE and name not in MEMBERS:
+            raise InputError(source, "model", f"unknown model {name!r}: one of {choices}")
+        if names.count(name) > 1:
+            raise InputError(source, "model", f"{name!r} given twice in {text!r}")
+    for name in names:
+        if name in MEMBERS and name not in BUILT:
+            raise InputError(source, "model", f"the {name} member (frame twist and fork bending with their "
+                             f"inertia) is not built yet; built: {BASE}, {', '.join(BUILT)} and their combinations")
+    return ModelChoice(tuple(m for m in MEMBERS if m in names))
+
+
+def module_name(members):
+    """The generated module of a combination: ``whipple``, ``rider_lean``, ``tyre``, ``rider_lean_tyre``."""
+    return "_".join(m.replace("-", "_") for m in members) or BASE

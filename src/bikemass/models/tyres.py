@@ -1,0 +1,90 @@
+"""Tyre parameters of the ``tyre`` model: per wheel, lateral force per unit normal load from slip and camber.
+
+A tyre file (YAML, read through the input gate; every coefficient carries its unit, ``1/rad`` or
+``1/deg``, since tyre data are printed per degree as often as per radian)::
+
+    front: {cornering_coefficient: 11.46 1/rad, camber_coefficient: 0.573 1/rad, relaxation_length: 0.175 m}
+    rear:  {cornering_coefficient: 11.46 1/rad, camber_coefficient: 0.573 1/rad, relaxation_length: 0.175 m}
+
+Default (:data:`DEFAULT_TYRES`): 11.46 /rad, 0.573 /rad and 0.175 m on both wheels, the TU Delft
+Bicycle Lab's values for the Batavus Browser's tyres (``mechmotum/bicycle-kickplate-model``,
+``parameters.py``: "estimates from Andrew's dissertation"), i.e. from Dressel's measurements of
+bicycle tyres (Dressel 2013, PhD thesis, University of Wisconsin-Milwaukee; Dressel & Rahman 2012,
+Vehicle System Dynamics 50(8), "Measuring sideslip and camber characteristics of bicycle tyres"):
+0.200 /deg and 0.0100 /deg, inside the ranges Dressel reports for 14 tyres (cornering 0.15 to
+0.35 /deg, camber 0.0075 to 0.015 /deg, per unit load).
+"""
+
+import math
+from dataclasses import dataclass, field, fields
+
+from ..config import Node, load_yaml
+from ..errors import InputError
+from ..gate import plain_input
+
+KEYS = ("cornering_coefficient", "camber_coefficient", "relaxation_length")
+_DIMENSIONS = {"cornering_coefficient": "inverse angle", "camber_coefficient": "inverse angle",
+               "relaxation_length": "length"}
+
+
+@dataclass(frozen=True)
+class Tyre:
+    """One tyre: lateral force ``N (C_alpha alpha + C_gamma gamma)`` lagging over ``relaxation_length``."""
+
+    cornering_coefficient: float = field(metadata={"unit": "1/rad", "description": "d(F_y/N)/d(slip angle)"})
+    camber_coefficient: float = field(metadata={"unit": "1/rad", "description": "d(F_y/N)/d(camber angle)"})
+    relaxation_length: float = field(metadata={"unit": "m", "description": "distance rolled to build up the force"})
+
+    def __post_init__(self):
+        for f in fields(self):
+            x = getattr(self, f.name)
+            least = "a number >= 0" if f.name == "camber_coefficient" else "a positive number"
+            if isinstance(x, bool) or not isinstance(x, (int, float)) or not math.isfinite(x) or x < 0 or (
+                    x == 0 and f.name != "camber_coefficient"):
+                raise InputError("tyre", f.name, f"{least} ({f.metadata['unit']}), got {x!r}")
+            object.__setattr__(self, f.name, float(x))
+
+
+@dataclass(frozen=True)
+class Tyres:
+    """The front and rear tyres."""
+
+    front: Tyre
+    rear: Tyre
+
+    def values(self):
+        """``{name: float}`` of the generated code's tyre parameters."""
+        f, r = self.front, self.rear
+        return {"CaR": r.cornering_coefficient, "CgR": r.camber_coefficient, "sigmaR": r.relaxation_length,
+                "CaF": f.cornering_coefficient, "CgF": f.camber_coefficient, "sigmaF": f.relaxation_length}
+
+
+DEFAULT_TYRE = Tyre(cornering_coefficient=11.46, camber_coefficient=0.573, relaxation_length=0.175)
+"""The TU Delft Bicycle Lab's Browser tyre from Dressel's measurements (see the module docstring)."""
+DEFAULT_TYRES = Tyres(front=DEFAULT_TYRE, rear=DEFAULT_TYRE)
+
+
+def _tyre(node):
+    node.check_keys(required=KEYS, optional=("note",))
+    return Tyre(cornering_coefficient=node["cornering_coefficient"].number("inverse angle", positive=True),
+                camber_coefficient=node["camber_coefficient"].number("inverse angle", nonnegative=True),
+                relaxation_length=node["relaxation_length"].number("length", positive=True))
+
+
+def tyres_from_node(node):
+    """:class:`Tyres` of a config :class:`~bikemass.config.Node` (``front:`` and ``rear:``)."""
+    node.check_keys(required=("front", "rear"), optional=("name", "source", "description"))
+    return Tyres(front=_tyre(node["front"]), rear=_tyre(node["rear"]))
+
+
+def load_tyres(path):
+    """:class:`Tyres` of a tyre file; bad input is an :class:`~bikemass.errors.InputError` naming the
+    file and the key."""
+    return tyres_from_node(load_yaml(path))
+
+
+def tyres_from_mapping(mapping, source="tyres"):
+    """:class:`Tyres` of a Python mapping in the tyre file's form (errors name ``source``)."""
+    node = Node(plain_input(mapping, source), source, "")
+    node.mapping()
+    return tyres_from_node(node)

@@ -1,0 +1,156 @@
+"""The tyre member: the knife-edge limit, a hand derivation of the slip and camber it sees, Newton's
+second law in a steady turn, the default tyres' effect on the benchmark, and the tyre file."""
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+
+from bikemass.catalog import parameters
+from bikemass.errors import InputError
+from bikemass.models.family import build
+from bikemass.models.tyres import DEFAULT_TYRE, DEFAULT_TYRES, Tyre, Tyres, load_tyres, tyres_from_mapping
+
+BENCHMARK = parameters("benchmark")
+SPEEDS = [0.0, 0.5, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0]
+
+
+@pytest.mark.parametrize("camber", [0.0, 1.0])
+def test_very_stiff_tyres_give_back_the_whipple_eigenvalues_to_1e_3(camber):
+    """Cornering coefficient 1e5 /rad and relaxation length 1e-5 m; the camber coefficient must stay
+    small beside the cornering one (0 or the tangent rule's 1 /rad): a stiff tyre slips by
+    C_gamma / C_alpha times its camber, so 1e4 /rad would leave a slip of 0.1 gamma (docs/models.md)."""
+    stiff = Tyre(cornering_coefficient=1e5, camber_coefficient=camber, relaxation_length=1e-5)
+    tyres, whipple = build("tyre", BENCHMARK, Tyres(stiff, stiff)), build("whipple", BENCHMARK)
+    for v in SPEEDS:
+        mine = np.linalg.eigvals(tyres.dynamic_matrix(v))
+        for z in np.linalg.eigvals(whipple.dynamic_matrix(v)):
+            assert np.min(np.abs(mine - z)) <= 1e-3 * abs(z), (v, z)
+
+
+def _loads(p):
+    """Static normal loads (N): moments about the rear contact."""
+    mass = p.mR + p.mB + p.mH + p.mF
+    front = p.g * (p.mB * p.xB + p.mH * p.xH + p.mF * p.w) / p.w
+    return {"rear": p.g * mass - front, "front": front}
+
+
+def _row(model, state, v):
+    A = model.state_matrix(v)
+    return dict(zip(model.state_names, A[model.state_index(state)]))
+
+
+@pytest.mark.parametrize("v", [1.0, 4.0, 7.5])
+def test_slip_and_camber_equal_a_hand_derivation(v):
+    """sigma F' = N (C_gamma v gamma - C_alpha s) - v F with, to first order (small angles, the
+    front contact a trail c behind the steer axis' ground point, the wheel's heading psi + delta cos lam):
+    rear slip s = lateral velocity, camber = roll; front slip s = lateral velocity + w yaw rate
+    - c cos(lam) steer rate - v cos(lam) steer, camber = roll + sin(lam) steer."""
+    p, loads = BENCHMARK, _loads(BENCHMARK)
+    cl, sl = np.cos(p.lam), np.sin(p.lam)
+    slip = {"rear": {"lateral-velocity": 1.0},
+            "front": {"lateral-velocity": 1.0, "yaw-rate": p.w, "steer-rate": -p.c * cl, "steer-angle": -v * cl}}
+    camber = {"rear": {"roll-angle": 1.0}, "front": {"roll-angle": 1.0, "steer-angle": sl}}
+    sigma = 0.2
+    no_camber = build("tyre", p, Tyres(*[Tyre(12.0, 0.0, sigma)] * 2))
+    with_camber = build("tyre", p, Tyres(*[Tyre(12.0, 0.7, sigma)] * 2))
+    for wheel in ("rear", "front"):
+        force = f"{wheel}-lateral-force"
+        a, b = _row(no_camber, force, v), _row(with_camber, force, v)
+        for state in no_camber.state_names:
+            if state == force:
+                assert a[state] == pytest.approx(-v / sigma, rel=1e-12)
+                continue
+            expect_slip = -loads[wheel] * 12.0 / sigma * slip[wheel].get(state, 0.0)
+            expect_camber = loads[wheel] * 0.7 * v / sigma * camber[wheel].get(state, 0.0)
+            assert a[state] == pytest.approx(expect_slip, rel=1e-12, abs=1e-9), (wheel, state)
+            assert b[state] - a[state] == pytest.approx(expect_camber, rel=1e-9, abs=1e-9), (wheel, state)
+
+
+@pytest.mark.parametrize("v", [2.0, 5.0, 9.0])
+def test_a_steady_turn_obeys_newtons_second_law(v):
+    """Held in a steady turn by a steer torque, every mass centre accelerates by v r toward the
+    centre: the tyre forces sum to m v r and their moment about the rear contact is sum(m x) v r,
+    so each tyre carries v r / g of its static load."""
+    model = build("tyre", BENCHMARK, DEFAULT_TYRES)
+    n = model.n_dynamic
+    A, B = model.dynamic_matrix(v), model.input_matrix(v)[:n]
+    x = np.linalg.solve(A, -B[:, model.input_index("steer-torque")])
+    x = dict(zip(model.state_names, x))
+    r, g, loads = x["yaw-rate"], BENCHMARK.g, _loads(BENCHMARK)
+    assert abs(r) > 1e-4 and abs(x["roll-rate"]) < 1e-12 and abs(x["steer-rate"]) < 1e-12
+    for wheel in ("rear", "front"):
+        assert x[f"{wheel}-lateral-force"] == pytest.approx(v * r / g * loads[wheel], rel=1e-10)
+
+
+def _critical(model):
+    """Weave speed (the pair of 1..20 rad/s crossing) and capsize speed (the slow real root), m/s."""
+    def weave(v):
+        ev = np.linalg.eigvals(model.dynamic_matrix(v))
+        return ev[(np.abs(ev.imag) > 0.5) & (np.abs(ev.imag) < 20.0)].real.max()
+
+    def capsize(v):
+        ev = np.linalg.eigvals(model.dynamic_matrix(v))
+        return ev[(ev.imag == 0) & (np.abs(ev) < 2.0)].real.max()
+    return brentq(weave, 3.5, 5.0, xtol=1e-12), brentq(capsize, 5.0, 7.0, xtol=1e-12)
+
+
+def test_default_tyres_move_the_benchmark_weave_and_capsize_speeds_as_docs_models_md_says():
+    """Contract with docs/models.md ("The default tyres and the benchmark"): the numbers it prints."""
+    whipple = _critical(build("whipple", BENCHMARK))
+    assert whipple == pytest.approx((4.29238253634110, 6.02426201538838), abs=1e-9)   # Meijaard 2007, Sec. 4
+    assert _critical(build("tyre", BENCHMARK)) == pytest.approx((4.3123, 5.9759), abs=5e-5)
+    no_camber = replace(DEFAULT_TYRE, camber_coefficient=0.0)
+    weave, capsize = _critical(build("tyre", BENCHMARK, Tyres(no_camber, no_camber)))
+    assert weave == pytest.approx(4.4283, abs=5e-5)
+    assert capsize == pytest.approx(whipple[1], abs=1e-8)    # equal slip at both wheels: a Whipple turn
+
+
+def test_the_default_tyres_are_the_delft_labs_values_from_dressels_measurements():
+    assert DEFAULT_TYRES == Tyres(DEFAULT_TYRE, DEFAULT_TYRE)
+    assert (DEFAULT_TYRE.cornering_coefficient, DEFAULT_TYRE.camber_coefficient,
+            DEFAULT_TYRE.relaxation_length) == (11.46, 0.573, 0.175)
+    deg = np.pi / 180
+    assert 0.15 <= DEFAULT_TYRE.cornering_coefficient * deg <= 0.35       # Dressel (2013): per degree
+    assert 0.0075 <= DEFAULT_TYRE.camber_coefficient * deg <= 0.015
+
+
+TYRE_FILE = """front: {cornering_coefficient: 11.5 1/rad, camber_coefficient: 0.8 1/rad, relaxation_length: 0.2 m}
+rear:  {cornering_coefficient: 0.2 1/deg, camber_coefficient: 0.01 1/deg, relaxation_length: 175 mm}
+"""
+
+
+def test_a_tyre_file_with_units(tmp_path):
+    path = tmp_path / "tyres.yaml"
+    path.write_text(TYRE_FILE)
+    tyres = load_tyres(path)
+    assert tyres.front == Tyre(11.5, 0.8, 0.2)
+    assert tyres.rear.cornering_coefficient == pytest.approx(0.2 * 180 / np.pi, rel=1e-15)
+    assert tyres.rear.relaxation_length == pytest.approx(0.175, rel=1e-15)
+    assert tyres_from_mapping({"front": {"cornering_coefficient": "11.5 1/rad", "camber_coefficient": "0.8 1/rad",
+                                         "relaxation_length": 0.2}, "rear": {
+        "cornering_coefficient": "11.5 1/rad", "camber_coefficient": "0.8 1/rad",
+        "relaxation_length": "0.2 m"}}) == Tyres(tyres.front, tyres.front)
+
+
+@pytest.mark.parametrize("change, message", [
+    (("11.5 1/rad", "11.5"), "front.cornering_coefficient: a coefficient per angle with its unit"),
+    (("0.2 m}", "0.2 kg}"), "front.relaxation_length: a length"),
+    (("0.2 m}", "-0.2 m}"), "front.relaxation_length: a positive number"),
+    (("front:", "fornt:"), "front: a required key that is missing"),
+    (("0.8 1/rad,", "0.8 1/rad, grip: 1,"), "front.grip: no such key"),
+])
+def test_bad_tyre_files_are_one_line_naming_file_and_key(tmp_path, change, message):
+    path = tmp_path / "tyres.yaml"
+    path.write_text(TYRE_FILE.replace(*change, 1))
+    with pytest.raises(InputError) as err:
+        load_tyres(path)
+    assert str(path) in str(err.value) and message in str(err.value) and "\n" not in str(err.value)
+
+
+def test_a_tyre_refuses_nonsense():
+    with pytest.raises(InputError, match="tyre: relaxation_length: a positive number"):
+        Tyre(cornering_coefficient=11.0, camber_coefficient=0.5, relaxation_length=0.0)
+    with pytest.raises(InputError, match="tyre: cornering_coefficient: a positive number"):
+        Tyre(cornering_coefficient=float("nan"), camber_coefficient=0.5, relaxation_length=0.2)
