@@ -12,7 +12,8 @@ central differences of the configuration.  At standstill the linearised equation
 
 The tubes' Ritz fields enter as the derivation represents them (a particle displaced sideways in the
 parent's axes beside a negative particle fixed in the parent); their equivalence to the beam model's
-field is argued in docs/models-flexible.md, not tested here.
+field is argued in docs/models-flexible.md, not tested here.  ``p`` holds the flexible model's values
+(bikemass.models.family.values).
 """
 
 import numpy as np
@@ -84,9 +85,9 @@ class Geometry:
         out = [(pose["in_B"]([p["xB"], 0, p["zB"]]), p["mB"]), (pose["R0"], p["mR"]),
                (pose["in_H"]([p["xH"], 0, p["zH"]]), p["mH"]), (pose["F0"], p["mF"])]
         for key, place, R, theta in (("r", pose["in_B"], pose["RB"], thr), ("f", pose["in_H"], pose["RH"], thf)):
-            L, Jx, Jz, m = p[f"L{key}"], p[f"J{key}x"], p[f"J{key}z"], p[f"m{key}"]
-            at = place([Jz / L, 0, -Jx / L])
-            out += [(at + (m / L) * theta * R[:, 1], L ** 2 / m), (at, -L ** 2 / m)]
+            at = place([p[f"xt{key}"], 0, p[f"zt{key}"]])
+            mass = p[f"mt{key}"]
+            out += [(at + p[f"dt{key}"] * theta * R[:, 1], mass), (at, -mass)]
         return out
 
     def solve_pitch(self, c):

@@ -10,6 +10,7 @@ import pytest
 from scipy.integrate import quad
 
 import bikemass as bm
+from bikemass.errors import InputError
 from bikemass.fe.compliance import Compliance, frame_twist
 from bikemass.fe.fork import DEFAULT_SECTIONS, Fork, fork_bending, fork_structure
 from bikemass.fe.model import resolve_material
@@ -238,7 +239,9 @@ def test_compliance_value():
     assert c.scaled(stiffness=3).stiffness == 3000.0
     with pytest.raises(AttributeError):
         c.stiffness = 1.0
-    with pytest.raises(ValueError, match="unit vector"):
+    with pytest.raises(InputError, match="direction: a unit vector"):
         Compliance("x", (0, 0), (1.0, 1.0), 1.0, 0, (0, 0), 0)
-    with pytest.raises(ValueError, match="not positive"):
+    with pytest.raises(InputError, match="stiffness: a positive number"):
         Compliance("x", (0, 0), (1.0, 0.0), 0.0, 0, (0, 0), 0)
+    with pytest.raises(InputError, match="finite numbers"):
+        Compliance("x", (0, 0), (1.0, 0.0), float("inf"), 0, (0, 0), 0)

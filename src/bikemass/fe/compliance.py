@@ -26,6 +26,7 @@ from dataclasses import dataclass, field, fields, replace
 import numpy as np
 import scipy.sparse.linalg as spla
 
+from ..errors import InputError
 from .assembly import assemble
 from .boundary import free_dofs
 from .model import build_mesh
@@ -39,24 +40,23 @@ class Compliance:
     """One compliance as a rotation ``theta`` about a line in the plane of symmetry (benchmark frame,
     reference configuration), with its stiffness and the modal inertia of the tubes that deform.
 
-    Every field's unit is in its metadata (:meth:`units`).  ``rigid()`` and ``massless()`` give the
-    limits of infinite stiffness and of tubes without inertia.
+    Every field's unit and meaning are in its metadata (:meth:`units`); :meth:`scaled` and
+    :meth:`massless` give stiffer or softer compliances and the limit of tubes without inertia.
     """
 
-    name: str = field(metadata={"unit": ""})
-    point: tuple = field(metadata={"unit": "m"})
-    """(x, z) of a point of the axis."""
-    direction: tuple = field(metadata={"unit": ""})
-    """(x, z) of the axis' unit direction; ``theta`` turns right-handed about it."""
-    stiffness: float = field(metadata={"unit": "N m/rad"})
-    modal_momentum: float = field(metadata={"unit": "kg m/rad"})
-    """``L``: lateral (y) linear momentum of the deforming tubes per unit ``theta`` rate."""
-    modal_moment: tuple = field(metadata={"unit": "kg m^2/rad"})
-    """``(Jx, Jz)``: the moment of that momentum about the benchmark origin (x and z components)."""
-    modal_mass: float = field(metadata={"unit": "kg m^2/rad^2"})
-    """``m``: the deforming tubes' kinetic energy is ``m theta_dot**2 / 2`` (relative to the parent)."""
-    load_point: tuple = field(default=None, metadata={"unit": "m"})
-    """(x, z) where the design load (unit lateral force) acts: the line of action's point on the steer axis."""
+    name: str = field(metadata={"unit": "", "description": "which compliance"})
+    point: tuple = field(metadata={"unit": "m", "description": "(x, z) of a point of the axis"})
+    direction: tuple = field(metadata={"unit": "1", "description": "(x, z) of the axis' unit direction; "
+                                                                   "theta turns right-handed about it"})
+    stiffness: float = field(metadata={"unit": "N m/rad", "description": "torsional stiffness about the axis"})
+    modal_momentum: float = field(metadata={"unit": "kg m/rad", "description": (
+        "L: lateral (y) momentum of the deforming tubes per unit theta rate")})
+    modal_moment: tuple = field(metadata={"unit": "kg m^2/rad", "description": (
+        "(Jx, Jz): the moment of that momentum about the benchmark origin")})
+    modal_mass: float = field(metadata={"unit": "kg m^2/rad^2", "description": (
+        "m: the deforming tubes' kinetic energy is m theta'**2 / 2 (relative to the parent)")})
+    load_point: tuple = field(default=None, metadata={"unit": "m", "description": (
+        "(x, z) of the design load's (unit lateral force's) point on the steer axis")})
 
     def __post_init__(self):
         for name in ("point", "direction", "modal_moment", "load_point"):
@@ -65,16 +65,20 @@ class Compliance:
                 object.__setattr__(self, name, tuple(float(x) for x in value))
         for name in ("stiffness", "modal_momentum", "modal_mass"):
             object.__setattr__(self, name, float(getattr(self, name)))
+        values = (*self.point, *self.direction, self.stiffness, self.modal_momentum, *self.modal_moment,
+                  self.modal_mass)
+        if not np.all(np.isfinite(values)):
+            raise InputError(f"compliance {self.name}", "(values)", f"finite numbers, got {values}")
         if not np.isclose(np.hypot(*self.direction), 1.0, atol=1e-9):
-            raise ValueError(f"compliance {self.name!r}: direction {self.direction} is not a unit vector")
+            raise InputError(f"compliance {self.name}", "direction", f"a unit vector (x, z), got {self.direction}")
         if not self.stiffness > 0:
-            raise ValueError(f"compliance {self.name!r}: stiffness {self.stiffness} N m/rad is not positive")
+            raise InputError(f"compliance {self.name}", "stiffness", f"a positive number (N m/rad), got {self.stiffness}")
         if self.modal_mass < 0:
-            raise ValueError(f"compliance {self.name!r}: modal mass {self.modal_mass} is negative")
+            raise InputError(f"compliance {self.name}", "modal_mass", f"a number >= 0 (kg m^2/rad^2), got {self.modal_mass}")
 
     @classmethod
     def units(cls):
-        """``{field: unit}`` of every field (empty for dimensionless ones)."""
+        """``{field: SI unit}`` of every field (``"1"`` dimensionless, ``""`` not a quantity)."""
         return {f.name: f.metadata["unit"] for f in fields(cls)}
 
     def scaled(self, stiffness=1.0, inertia=1.0):

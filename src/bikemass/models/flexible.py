@@ -1,150 +1,125 @@
-"""The ``flexible`` member of the model family: the Whipple bicycle whose rear frame twists and whose fork
-bends, each a rotation about an axis with the stiffness and the inertia of its tubes' beam model
+"""The ``flexible`` member's parameters: the rear frame's twist and the fork's bending, each reduced from
+the beam model of its tubes to one rotation about an axis, with its stiffness and its tubes' inertia
 (docs/models-flexible.md).
-
-Coordinates ``q = [roll, steer, frame twist, fork bending]`` (rad), equations (Kane's method,
-:mod:`bikemass.models.derive.flexible`, shipped as :mod:`bikemass.models.generated.flexible_matrices`)::
-
-    M q'' + v C1 q' + (K0 + v**2 K2) q = [T_phi, T_delta, 0, 0]
-    psi' = H0 . q' + v H1 . q,      y' = v psi
 
 From Python::
 
     bike = bm.load_bicycle("jamis")
     params = bm.parameters(bike, bm.load_rider("relaxed"))
-    flexible = flexible_parameters(bike, "steel", params)        # the beam models, reduced
-    model = flexible_model(flexible)                            # a LinearModel
+    flexible = compliances(bike, "steel")                  # the beam models, reduced
+    model = build("flexible", params, compliances=flexible)    # bikemass.models.family.build
 
-An infinitely stiff compliance (``None``) drops its coordinate: ``flexible_model(flexible.rigid())``
-is the Whipple bicycle.
+Any combination with the member takes them the same way (``"tyre+flexible"``, ``"rider-lean+flexible"``,
+...).  An infinitely stiff compliance (``None``) holds its coordinate at zero: ``compliances(bike,
+"steel").rigid()`` gives back the bicycle without the member, to round-off.
 """
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, fields, replace
 
 import numpy as np
 
+from ..errors import InputError
 from ..fe.compliance import Compliance, frame_twist
 from ..fe.fork import fork_bending, fork_structure
 from ..fe.model import resolve_material
 from ..fe.stiffness import head_tube_axis
 from ..materials import Material
-from ..parameters import BenchmarkParameters
-from .generated import flexible_matrices as generated
-from .linear import Signal, second_order_model
-from .whipple import HEADING, INPUTS, LATERAL, ROLL_ANGLE, ROLL_RATE, STEER_ANGLE, STEER_RATE
 
-FRAME_TWIST = Signal("frame-twist", "rad", "rotation of the head tube (and the front assembly) relative to the "
-                                           "rear frame about the frame's twist axis")
-FORK_BENDING = Signal("fork-bending", "rad", "rotation of the front wheel's hub relative to the front frame "
-                                             "about the fork's bending axis")
-FRAME_TWIST_RATE = Signal("frame-twist-rate", "rad/s", "frame twist rate")
-FORK_BENDING_RATE = Signal("fork-bending-rate", "rad/s", "fork bending rate")
-WOBBLE = "wobble"
-"""The family of the compliances' modes (the engine names a mode by the family holding most of it)."""
-NAME = "whipple+flexible"
-
-_COMPLIANCE_KEYS = {"frame": "r", "fork": "f"}
+COORDINATES = {"frame": "frame-twist", "fork": "fork-bending"}
+"""Each compliance's coordinate (the state's name in the linear model)."""
+_KEYS = {"frame": "r", "fork": "f"}
+_PLACEHOLDER = Compliance("held", (0.0, 0.0), (1.0, 0.0), 1.0, 0.0, (0.0, 0.0), 0.0)
+"""Values for a compliance held rigid (its coordinate is removed, so they enter nothing)."""
 
 
 @dataclass(frozen=True)
-class FlexibleParameters:
-    """A rigid benchmark parameter set and the two compliances; ``None`` is an infinitely stiff one."""
+class Compliances:
+    """The rear frame's twist and the fork's bending (:class:`~bikemass.fe.compliance.Compliance`);
+    ``None`` is infinitely stiff (the coordinate held at zero)."""
 
-    rigid: BenchmarkParameters
     frame: Compliance = None
     fork: Compliance = None
 
+    def __post_init__(self):
+        for f in fields(self):
+            value = getattr(self, f.name)
+            if value is not None and not isinstance(value, Compliance):
+                raise InputError("compliances", f.name, f"a Compliance or None, got {type(value).__name__}")
+
     def values(self):
-        """``{name: float}`` for :data:`~bikemass.models.generated.flexible_matrices.PARAMETERS`
-        (an absent compliance gets placeholder values: its coordinate is dropped)."""
-        out = self.rigid.to_dict()
-        for which, key in _COMPLIANCE_KEYS.items():
-            c = getattr(self, which) or Compliance(which, (0.0, 0.0), (1.0, 0.0), 1.0, 0.0, (0.0, 0.0), 0.0)
+        """``{name: float}`` of the member's parameters (:mod:`bikemass.models.derive.flexible`): each
+        axis, stiffness, and the particle that carries its tubes' modal inertia exactly (mass ``L**2/m``
+        at ``(Jz/L, -Jx/L)``, sideways ``m/L`` per radian; none for tubes without inertia)."""
+        out = {}
+        for which, key in _KEYS.items():
+            c = getattr(self, which) or _PLACEHOLDER
             out[f"x{key}"], out[f"z{key}"] = c.point
             out[f"n{key}x"], out[f"n{key}z"] = c.direction
-            out[f"k{key}"], out[f"L{key}"], out[f"m{key}"] = c.stiffness, c.modal_momentum, c.modal_mass
-            out[f"J{key}x"], out[f"J{key}z"] = c.modal_moment
+            out[f"k{key}"] = c.stiffness
+            L, (Jx, Jz), m = c.modal_momentum, c.modal_moment, c.modal_mass
+            if L == 0 and (m != 0 or Jx != 0 or Jz != 0):
+                raise InputError(f"compliance {c.name}", "modal_momentum", "a nonzero lateral momentum where the "
+                                 "tubes have modal inertia (their field is carried by one particle)")
+            out[f"mt{key}"], out[f"xt{key}"], out[f"zt{key}"], out[f"dt{key}"] = (
+                (L ** 2 / m, Jz / L, -Jx / L, m / L) if L != 0 else (0.0, 0.0, 0.0, 0.0))
         return out
 
     @property
-    def coordinates(self):
-        """Indices of the coordinates kept (0 roll, 1 steer, 2 frame twist, 3 fork bending)."""
-        return (0, 1) + ((2,) if self.frame is not None else ()) + ((3,) if self.fork is not None else ())
+    def held(self):
+        """The coordinates held at zero (the infinitely stiff compliances)."""
+        return tuple(COORDINATES[w] for w in COORDINATES if getattr(self, w) is None)
 
-    def rigid_limit(self):
-        """Both compliances infinitely stiff: the Whipple bicycle of :attr:`rigid`."""
-        return replace(self, frame=None, fork=None)
+    def rigid(self):
+        """Both infinitely stiff."""
+        return Compliances()
 
     def scaled(self, stiffness=1.0, inertia=1.0):
-        """Both compliances with their stiffness and their tubes' inertia multiplied by factors."""
-        return replace(self, **{w: c.scaled(stiffness, inertia) for w in _COMPLIANCE_KEYS
-                                if (c := getattr(self, w)) is not None})
+        """Both with their stiffness and their tubes' inertia multiplied by factors."""
+        return replace(self, **{w: c.scaled(stiffness, inertia) for w in COORDINATES if (c := getattr(self, w))})
+
+    def massless(self):
+        """Both with tubes of no inertia (what rides on them keeps its own)."""
+        return self.scaled(inertia=0.0)
 
 
-def flexible_parameters(bicycle, material, params, frame=True, fork=True, timoshenko=True):
-    """:class:`FlexibleParameters` of a bicycle: its rear frame's and fork's beam models, reduced.
+def compliances(bicycle, material=None, frame=True, fork=True, timoshenko=True):
+    """The :class:`Compliances` of a bicycle from the beam models of its rear frame and its fork.
 
     Parameters
     ----------
     bicycle : Bicycle
-        A bicycle with a rear-frame ``structure`` (:func:`bikemass.load_bicycle`); its fork is its
-        front-frame tubes ``fork*``/``steerer`` or the default fork (:mod:`bikemass.fe.fork`).
+        With a rear-frame ``structure`` (:func:`bikemass.load_bicycle`); the fork is its front-frame
+        tubes ``fork*``/``steerer`` or the default fork (:mod:`bikemass.fe.fork`).
     material : str, Material or None
         Every frame and fork tube in this material (a name of ``frames/materials.yaml`` or a
-        one-material file); ``None`` keeps each tube's own.  The mass properties in ``params`` stay
-        as they are (as the thesis kept the steel frames' for every material).
-    params : BenchmarkParameters
-        The rigid parameter set (bicycle and rider), e.g. ``bm.parameters(bicycle, rider)``.
+        one-material file); ``None`` keeps each tube's own.  The mass properties of the parameter set
+        are not touched (as the thesis kept the steel frames' for every material).
     frame, fork : bool
-        Whether the rear frame twists and the fork bends (``False``: that part is rigid).
+        Whether the rear frame twists and the fork bends (``False``: held rigid).
     timoshenko : bool
         Timoshenko beams (default) or Euler-Bernoulli.
 
     Returns
     -------
-    FlexibleParameters
+    Compliances
+        The twist about an axis at right angles to the steer axis, and the fork's bending axis, each
+        with its stiffness (N m/rad) and its tubes' modal inertia, loaded as the front contact loads
+        them (:mod:`bikemass.fe.compliance`).
+
+    Raises
+    ------
+    InputError
+        A bicycle without a rear-frame structure (a parameter file, the published ``*-thesis`` bodies).
     """
     if isinstance(material, str):
         material = resolve_material(material)
     if material is not None and not isinstance(material, Material):
-        raise TypeError(f"material: a name or a Material, got {type(material).__name__}")
+        raise InputError("material", "(flexible)", f"a material name or a Material, got {type(material).__name__}")
     if bicycle.structure is None:
-        raise ValueError(f"bicycle {bicycle.name!r} has no rear-frame beam structure ('structure:' in its "
-                         "file): the flexible model needs the frame's tubes")
-    contact = np.array([params.w, 0.0, 0.0])
+        raise InputError(bicycle.source, "structure", "a bicycle whose frame names its structural tubes, dropouts "
+                                                      "and head tube (the flexible model's beam models need them)")
+    contact = np.array([bicycle.geometry.wheelbase, 0.0, 0.0])
     axis = head_tube_axis(bicycle.structure)
-    if abs(np.arctan2(axis[0], axis[2]) - params.lam) > 1e-3:
-        raise ValueError(f"bicycle {bicycle.name!r}: the head tube's axis is tilted "
-                         f"{np.arctan2(axis[0], axis[2]):.4f} rad, the parameter set's steer axis {params.lam:.4f} rad")
     twist = frame_twist(bicycle.structure, contact, material, timoshenko) if frame else None
     bending = fork_bending(fork_structure(bicycle, material), contact, axis, timoshenko) if fork else None
-    return FlexibleParameters(params, twist, bending)
-
-
-def flexible_matrices(flexible):
-    """``(M, C1, K0, K2)`` on the kept coordinates (:attr:`FlexibleParameters.coordinates`)."""
-    keep = np.ix_(flexible.coordinates, flexible.coordinates)
-    return tuple(X[keep] for X in generated.matrices(flexible.values()))
-
-
-def flexible_model(flexible):
-    """The :class:`~bikemass.models.linear.LinearModel` of :class:`FlexibleParameters`.
-
-    States: roll, steer and the kept compliances, their rates, then heading and lateral (kinematic);
-    inputs roll-torque and steer-torque.  Families: ``"bicycle"`` (roll, steer) and ``"wobble"`` (the
-    compliances).  Named ``"whipple+flexible"`` (``"whipple"`` when both compliances are rigid).
-    """
-    keep = flexible.coordinates
-    M, C1, K0, K2 = flexible_matrices(flexible)
-    H0, H1 = (h[list(keep)] for h in generated.heading(flexible.values()))
-    n = len(keep)
-    extra = {2: (FRAME_TWIST, FRAME_TWIST_RATE), 3: (FORK_BENDING, FORK_BENDING_RATE)}
-    coordinates = (ROLL_ANGLE, STEER_ANGLE, *(extra[k][0] for k in keep[2:]))
-    rates = (ROLL_RATE, STEER_RATE, *(extra[k][1] for k in keep[2:]))
-    heading = [np.r_[np.zeros(n), H0, 0.0, 0.0], np.r_[H1, np.zeros(n), 0.0, 0.0]]
-    lateral = [None, np.r_[np.zeros(2 * n), 1.0, 0.0]]
-    F = np.zeros((n, 2))
-    F[0, 0] = F[1, 1] = 1.0
-    families = {"bicycle": (0, 1), **({WOBBLE: tuple(range(2, n))} if n > 2 else {})}
-    return second_order_model(NAME if n > 2 else "whipple", coordinates, rates, M, [None, C1], [K0, None, K2], F,
-                              INPUTS, kinematics=[(HEADING, heading), (LATERAL, lateral)], families=families)
+    return Compliances(twist, bending)
