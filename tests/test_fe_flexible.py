@@ -11,11 +11,12 @@ from scipy.integrate import quad
 
 import bikemass as bm
 from bikemass.errors import InputError
-from bikemass.fe.compliance import Compliance, frame_twist
+from bikemass.fe.compliance import Compliance
 from bikemass.fe.fork import DEFAULT_SECTIONS, Fork, fork_bending, fork_structure
 from bikemass.fe.model import resolve_material
 from bikemass.fe.properties import beam_properties
 from bikemass.fe.stiffness import head_tube_axis
+from bikemass.fe.twist import frame_twist
 from bikemass.materials import Material
 from bikemass.sections import RoundSection
 from bikemass.tubes import Structure, Tube

@@ -9,7 +9,7 @@ steerer is held in its two bearings (translations) and against turning about the
 
 :func:`fork_bending` loads it with a unit lateral force at the front contact's foot on the steer axis
 (through the wheel, taken rigid), and reduces the hub's motion to a rotation about a line
-(:mod:`bikemass.fe.compliance`).
+(:mod:`bikemass.fe.twist`).
 """
 
 from dataclasses import dataclass, replace
@@ -21,9 +21,10 @@ from ..frozen import frozen_fields
 from ..sections import RoundSection
 from ..tubes import Structure, Tube
 from .assembly import assemble
-from .compliance import Compliance, _foot, line_of_rotation, modal_inertia
+from .compliance import Compliance
 from .model import build_mesh, with_material
 from .stiffness import head_tube_axis
+from .twist import foot, line_of_rotation, modal_inertia
 
 FORK_NAMES = ("fork", "steerer")
 """A front-frame tube belongs to the fork when its name starts with one of these."""
@@ -182,7 +183,7 @@ def fork_bending(fork, contact, steer_axis, timoshenko=True, element_size=None):
         Timoshenko beams (default) or Euler-Bernoulli.
     element_size : float or None
         Element length (m); ``None``: one element per tube, which is exact here (as in
-        :func:`~bikemass.fe.compliance.frame_twist`).
+        :func:`~bikemass.fe.twist.frame_twist`).
     """
     s = np.asarray(steer_axis, float)
     keypoints = {**fork.keypoints, "hub": fork.hub}
@@ -200,7 +201,7 @@ def fork_bending(fork, contact, steer_axis, timoshenko=True, element_size=None):
     scale = np.mean(np.diag(K))
     K = K + scale * np.outer(twist, twist)        # the load has no moment about the axis: any value holds
     free = [j for j in range(len(kept)) if j not in held]
-    Q = _foot(np.asarray(contact, float), np.asarray(fork.keypoints[fork.bearings[1]], float), s)
+    Q = foot(np.asarray(contact, float), np.asarray(fork.keypoints[fork.bearings[1]], float), s)
     load = np.zeros(len(kept))
     arm = Q - fork.hub
     load[column[6 * hub + 1]] = 1.0

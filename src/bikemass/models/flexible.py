@@ -19,10 +19,7 @@ from dataclasses import dataclass, fields, replace
 import numpy as np
 
 from ..errors import InputError
-from ..fe.compliance import Compliance, frame_twist
-from ..fe.fork import fork_bending, fork_structure
-from ..fe.model import resolve_material
-from ..fe.stiffness import head_tube_axis
+from ..fe.compliance import Compliance
 from ..materials import Material
 
 COORDINATES = {"frame": "frame-twist", "fork": "fork-bending"}
@@ -104,13 +101,20 @@ def compliances(bicycle, material=None, frame=True, fork=True, timoshenko=True):
     Compliances
         The twist about an axis at right angles to the steer axis, and the fork's bending axis, each
         with its stiffness (N m/rad) and its tubes' modal inertia, loaded as the front contact loads
-        them (:mod:`bikemass.fe.compliance`).
+        them (:mod:`bikemass.fe.twist`).
 
     Raises
     ------
     InputError
         A bicycle without a rear-frame structure (a parameter file, the published ``*-thesis`` bodies).
     """
+    # the beam models load scipy: imported here, not with this module, which the model family (and with
+    # it every command) imports for the Compliances value
+    from ..fe.fork import fork_bending, fork_structure
+    from ..fe.model import resolve_material
+    from ..fe.stiffness import head_tube_axis
+    from ..fe.twist import frame_twist
+
     if isinstance(material, str):
         material = resolve_material(material)
     if material is not None and not isinstance(material, Material):

@@ -10,7 +10,7 @@ the plane of symmetry against a torsional spring, and the tubes that deform carr
   line through ``(xf, 0, zf)`` with direction ``(nfx, 0, nfz)``; the front wheel turns on K's axle.
   Spring ``kf``.
 
-The tubes' inertia is their Ritz field's (:mod:`bikemass.fe.compliance`): the modal momentum ``L``, its
+The tubes' inertia is their Ritz field's (:mod:`bikemass.fe.twist`): the modal momentum ``L``, its
 moment about the origin ``(Jx, Jz)`` and the modal mass ``m`` of the deformation relative to the parent
 body (the rear frame for the twist, the front frame for the fork).  The linearised equations need no
 more of a field than these four numbers: Kane's generalised inertia forces of a field ``phi`` riding on
