@@ -1,14 +1,15 @@
-"""An independent numerical route to the flexible model's mass matrix and static stiffness (test support).
+"""An independent numerical route to the flexible model's linear equations (test support).
 
 Plain numpy geometry, sharing nothing with the sympy derivation: exact rotation matrices (Rodrigues)
-for every joint, the pitch found by Newton's method from the front contact's height, velocities by
-central differences of the configuration.  At standstill the linearised equations are
-``M q'' + K0 q = 0`` with
+for every joint, the pitch found by Newton's method from the front contact's height, velocities and
+accelerations by central differences of the configuration along its motion.
 
-* ``K0`` the Hessian of the potential energy (gravity on every mass, the two springs) over the lateral
-  coordinates, the pitch following them on the ground;
-* ``M`` the kinetic energy's Hessian over the lateral rates, the dependent rates (rear-contact
-  velocity, yaw, pitch, front spin) solved from the rolling constraints (no slip at either contact).
+* :func:`linear_matrices`: Kane's equations ``F_r + F_r*`` of the four lateral speeds, evaluated
+  numerically (the dependent rates and accelerations solved from the rolling constraints at each
+  configuration, the constrained partial velocities likewise), differentiated by central differences
+  in the state: ``M``, ``C(v)``, ``K(v)`` at any speed;
+* :func:`static_stiffness`: ``K0`` as the Hessian of the potential energy (gravity on every mass, the
+  two springs) over the lateral coordinates, the pitch following them on the ground.
 
 The tubes' Ritz fields enter as the derivation represents them (a particle displaced sideways in the
 parent's axes beside a negative particle fixed in the parent); their equivalence to the beam model's
