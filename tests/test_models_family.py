@@ -7,6 +7,7 @@ import pytest
 from bikemass.scenario.catalog import parameters
 from bikemass.core.errors import InputError
 from bikemass.models.family import build, coefficients, linear_model, state_coefficients, values
+from bikemass.models.flexible import Compliances
 from bikemass.models.registry import ModelChoice, parse_model
 from bikemass.models.whipple import whipple_model
 from test_stability import TABLE_3_13, TABLE_4_1
@@ -71,13 +72,13 @@ def test_arrays_of_parameters_give_stacked_matrices():
 @pytest.mark.parametrize("text, members", [
     ("whipple", ()), ("rider-lean", ("rider-lean",)), ("tyre", ("tyre",)),
     ("rider-lean+tyre", ("rider-lean", "tyre")), ("tyre+rider-lean", ("rider-lean", "tyre")),
-    (" tyre + whipple ", ("tyre",)), (ModelChoice(("tyre",)), ("tyre",))])
+    (" tyre + whipple ", ("tyre",)), (ModelChoice(("tyre",)), ("tyre",)),
+    ("flexible+rider-lean+tyre", ("rider-lean", "tyre", "flexible"))])
 def test_model_names_in_any_order(text, members):
     assert parse_model(text).members == members
 
 
 @pytest.mark.parametrize("text, message", [
-    ("flexible", "flexible member .* is not built yet"), ("tyre+flexible", "not built yet"),
     ("wobble", "unknown model 'wobble': one of whipple, rider-lean, tyre, flexible"),
     ("tyre+tyre", "'tyre' given twice"), ("", "a model name"), ("tyre+", "unknown model ''")])
 def test_bad_model_names_are_one_line_naming_the_choices(text, message):
@@ -91,5 +92,9 @@ def test_a_model_gets_the_parameters_it_needs():
         build("rider-lean", BENCHMARK)
     with pytest.raises(InputError, match="no tyres for the model whipple"):
         build("whipple", BENCHMARK, tyres=object())
+    with pytest.raises(InputError, match="flexible model needs the frame's and the fork's compliances"):
+        build("tyre+flexible", BENCHMARK)
+    with pytest.raises(InputError, match=r"no compliances for the model tyre \(add the flexible member: tyre\+flexible\)"):
+        build("tyre", BENCHMARK, compliances=Compliances())
     with pytest.raises(ValueError, match="parameters missing: w"):
         coefficients("whipple", {k: v for k, v in values("whipple", BENCHMARK).items() if k != "w"})

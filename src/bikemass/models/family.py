@@ -13,6 +13,7 @@ import numpy as np
 
 from ..core.errors import InputError
 from ..core.frozen import readonly
+from .flexible import Compliances
 from .parameters import NAMES, BenchmarkParameters
 from .lean import RiderLeanParameters
 from .linear import LinearModel, SecondOrder
@@ -70,13 +71,42 @@ def _state_form(code, E, A, B):
     return A, B
 
 
-def linear_model(model, values):
-    """The :class:`~bikemass.models.linear.LinearModel` of ``model`` at ``values`` (``{name: float}``)."""
+class _Layout:
+    """What :func:`linear_model` needs of a generated module, with some coordinates held at zero: the
+    coordinate, its rate and its equation of motion removed (the constraint's force is what the
+    removed equation would have said)."""
+
+    def __init__(self, code, held):
+        names = [n for n, _ in code.STATES]
+        unknown = [h for h in held if h not in names[:code.COORDINATES]]
+        if unknown:
+            raise ValueError(f"model {code.NAME!r} has no coordinate {', '.join(unknown)}")
+        drop = {names.index(h) for h in held} | {names.index(h) + code.COORDINATES for h in held}
+        self.keep = [i for i in range(len(names)) if i not in drop]
+        new = {old: k for k, old in enumerate(self.keep)}
+        self.NAME, self.INPUTS, self.SECOND_ORDER = code.NAME, code.INPUTS, code.SECOND_ORDER
+        self.STATES = tuple(code.STATES[i] for i in self.keep)
+        self.COORDINATES = code.COORDINATES - len(held)
+        self.N_DYNAMIC = code.N_DYNAMIC - 2 * len(held)
+        self.FAMILIES = tuple((f, tuple(new[i] for i in ix if i in new)) for f, ix in code.FAMILIES
+                              if any(i in new for i in ix))
+
+    def reduce(self, E, A, B):
+        k = self.keep
+        return E[np.ix_(k, k)], A[:, k][:, :, k], B[:, k]
+
+
+def linear_model(model, values, held=()):
+    """The :class:`~bikemass.models.linear.LinearModel` of ``model`` at ``values`` (``{name: float}``);
+    the coordinates named in ``held`` (e.g. ``"frame-twist"``) are held at zero."""
     code = generated(model)
     E, A_terms, B_terms = coefficients(model, values)
     if E.ndim != 2:
         raise ValueError(f"model {code.NAME!r}: one value per parameter expected (use state_coefficients "
                          f"for arrays)")
+    if held:
+        code = _Layout(code, tuple(held))
+        E, A_terms, B_terms = code.reduce(E, A_terms, B_terms)
     A, B = _state_form(code, E, A_terms, B_terms)
     states = tuple(signal(n, u) for n, u in code.STATES)
     inputs = tuple(signal(n, u) for n, u in code.INPUTS)
@@ -90,7 +120,7 @@ def linear_model(model, values):
                        code.FAMILIES)
 
 
-def values(model, bicycle, tyres=None):
+def values(model, bicycle, tyres=None, compliances=None):
     """The ``{name: float}`` of ``model`` from typed parameters (see :func:`build`)."""
     choice = parse_model(model)
     if choice.has("rider-lean"):
@@ -111,18 +141,36 @@ def values(model, bicycle, tyres=None):
         out.update(tyres.values())
     elif tyres is not None:
         raise InputError("tyres", choice.name, f"no tyres for the model {choice.name} (add the tyre member: "
-                         f"{'+'.join((*choice.members, 'tyre'))})")
+                         f"{_with(choice, 'tyre')})")
+    if choice.has("flexible"):
+        if not isinstance(compliances, Compliances):
+            raise InputError("compliances", choice.name, "the flexible model needs the frame's and the fork's "
+                             "compliances (Compliances: bikemass.fe.flexible.compliances(bicycle, material))")
+        out.update(compliances.values())
+    elif compliances is not None:
+        raise InputError("compliances", choice.name, f"no compliances for the model {choice.name} (add the "
+                         f"flexible member: {_with(choice, 'flexible')})")
     return out
 
 
-def build(model, bicycle, tyres=None):
+def _with(choice, member):
+    """The name of ``choice`` with ``member`` added."""
+    return parse_model("+".join((*choice.members, member))).name
+
+
+def build(model, bicycle, tyres=None, compliances=None):
     """The :class:`~bikemass.models.linear.LinearModel` of ``model`` (``"whipple"``, ``"rider-lean"``,
-    ``"tyre"``, ``"rider-lean+tyre"``, or a :class:`~bikemass.models.registry.ModelChoice`).
+    ``"tyre"``, ``"flexible"`` or members joined by ``+``, or a
+    :class:`~bikemass.models.registry.ModelChoice`).
 
     ``bicycle``: :class:`~bikemass.models.parameters.BenchmarkParameters`, or
     :class:`~bikemass.models.lean.RiderLeanParameters` (needed by ``rider-lean``; a model without
     it holds the upper body rigid: :meth:`~bikemass.models.lean.RiderLeanParameters.rigid`).
     ``tyres``: :class:`~bikemass.models.tyres.Tyres` for the ``tyre`` member (default
     :data:`~bikemass.models.tyres.DEFAULT_TYRES`); an error for a model without tyres.
+    ``compliances``: :class:`~bikemass.models.flexible.Compliances` for the ``flexible`` member
+    (:func:`bikemass.fe.flexible.compliances`; required); an infinitely stiff one (``None``)
+    holds its coordinate at zero; an error for a model without the member.
     """
-    return linear_model(model, values(model, bicycle, tyres))
+    held = compliances.held if parse_model(model).has("flexible") and isinstance(compliances, Compliances) else ()
+    return linear_model(model, values(model, bicycle, tyres, compliances), held)

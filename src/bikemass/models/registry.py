@@ -8,8 +8,6 @@ BASE = "whipple"
 """The Whipple bicycle of Meijaard et al. (2007): every member extends it."""
 MEMBERS = ("rider-lean", "tyre", "flexible")
 """Every member of the family, in the canonical order of a combination's name."""
-BUILT = ("rider-lean", "tyre")
-"""The members that exist today."""
 
 
 @dataclass(frozen=True)
@@ -43,10 +41,6 @@ def parse_model(text, source="--model"):
             raise InputError(source, "model", f"unknown model {name!r}: one of {choices}")
         if names.count(name) > 1:
             raise InputError(source, "model", f"{name!r} given twice in {text!r}")
-    for name in names:
-        if name in MEMBERS and name not in BUILT:
-            raise InputError(source, "model", f"the {name} member (frame twist and fork bending with their "
-                             f"inertia) is not built yet; built: {BASE}, {', '.join(BUILT)} and their combinations")
     return ModelChoice(tuple(m for m in MEMBERS if m in names))
 
 

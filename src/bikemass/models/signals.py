@@ -12,6 +12,12 @@ SIGNALS = {s.name: s for s in (
     Signal("lateral-velocity", "m/s", "velocity of the rear contact to the right of the heading (tyre slip)"),
     Signal("rear-lateral-force", "N", "lateral force of the ground on the rear tyre, to the right"),
     Signal("front-lateral-force", "N", "lateral force of the ground on the front tyre, to the right"),
+    Signal("frame-twist", "rad", "rotation of the head tube (and the front assembly) relative to the rear frame "
+                                 "about the frame's twist axis"),
+    Signal("frame-twist-rate", "rad/s", "frame twist rate"),
+    Signal("fork-bending", "rad", "rotation of the front wheel's hub relative to the front frame about the fork's "
+                                  "bending axis"),
+    Signal("fork-bending-rate", "rad/s", "fork bending rate"),
 )}
 """State or input name -> :class:`~bikemass.models.linear.Signal`."""
 

@@ -20,7 +20,9 @@ A member changes the system through the hooks of :class:`Member`, called in this
 axis: the rear frame, or the rear frame's twisted head tube of the flexible member), ``axle`` (the
 frame that carries the front axle: the front frame, or the fork's bent tip), ``contact`` (how a
 wheel meets the ground: rolling without slip, or a tyre), ``states`` (first-order states added
-after the linearisation: the tyres' lateral forces).
+after the linearisation: the tyres' lateral forces).  A ``head`` or ``axle`` frame turned about a
+line away from the default pivot (the rear axle; the steer axis's ground point) names the point it
+turns about in ``bike.pivots`` (see :attr:`Bicycle.pivots`).
 """
 
 from dataclasses import dataclass, field
@@ -154,6 +156,10 @@ class Bicycle:
     points: dict = field(default_factory=dict)
     heading: object = None
     lateral: object = None
+    pivots: dict = field(default_factory=dict)
+    """``{"head" or "axle": (point, (x, z))}``: a point fixed in both the hook's frame and the frame it
+    turns from, and its benchmark coordinates in the reference configuration; the steer axis (the front
+    axle) is placed from it.  Default: the rear axle ``Rc`` (the steer axis's ground point ``S0``)."""
     speed = sm.Symbol("v")
     """The forward speed (m/s): the steady motion's, in every coefficient."""
 
@@ -258,7 +264,8 @@ def front(bike, head):
     Es = S.orientnew("Es", "Axis", (delta, S.z))
     E = Es.orientnew("E", "Axis", (-p("lam"), Es.y))             # the benchmark axes when straight
     bike.frames.update(S=S, E=E)
-    S0 = bike.points["Rc"].locatenew("S0", (p("w") + p("c")) * head.x + p("rR") * head.z)
+    pivot, (x, z) = bike.pivots.get("head", (bike.points["Rc"], (0, -p("rR"))))
+    S0 = pivot.locatenew("S0", (p("w") + p("c") - x) * head.x - z * head.z)
     Ho = S0.locatenew("Ho", (p("xH") - p("w") - p("c")) * E.x + p("zH") * E.z)
     bike.points.update(S0=S0, Ho=Ho)
     bike.body("front frame", p("mH"), Ho, E, inertia(E, p("IHxx"), p("IHyy"), p("IHzz"), p("IHxz")))
@@ -273,7 +280,8 @@ def front_wheel(bike, axle):
     betaF, u_betaF = bike.coordinate("betaF", rate=-v / p("rF"))
     Fw = axle.orientnew("F", "Axis", (betaF, axle.y))
     bike.frames["F"] = Fw
-    Fc = bike.points["S0"].locatenew("Fc", -p("c") * axle.x - p("rF") * axle.z)
+    pivot, (x, z) = bike.pivots.get("axle", (bike.points["S0"], (p("w") + p("c"), 0)))
+    Fc = pivot.locatenew("Fc", (p("w") - x) * axle.x - (p("rF") + z) * axle.z)
     bike.points["Fc"] = Fc
     bike.body("front wheel", p("mF"), Fc, Fw, inertia(axle, p("IFxx"), p("IFyy"), p("IFxx")))
     tilt = N.z & axle.y
