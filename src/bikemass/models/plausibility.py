@@ -116,6 +116,42 @@ def check_parameters(params, source):
     return params
 
 
+def refused_parameters(columns, rows):
+    """(B,) bool: the rows of stacked parameter sets that :func:`check_parameters` refuses.
+
+    Parameters
+    ----------
+    columns : dict
+        ``{name: (B,) float64 array or float}`` for each of the 26 names (SI; a float is the
+        same in every row; values that are not real numbers have no place here: the caller
+        sends those rows to :func:`check_parameters`).
+    rows : int
+        B, the number of rows.
+
+    Returns
+    -------
+    numpy.ndarray of bool, shape (B,)
+        True where a value is not finite, a length, mass or moment is not positive, ``lam`` is
+        outside (0, pi/2) or the B or H inertia tensor is not positive semi-definite: the tests
+        of :func:`check_parameters`, in the same float64 arithmetic, so a row is refused here
+        exactly when that function refuses it (which then says why).
+    """
+    refused = np.zeros(rows, dtype=bool)
+    columns = {key: np.asarray(columns[key], dtype=float) for key in NAMES}
+    for key in NAMES:
+        value = columns[key]
+        refused |= ~np.isfinite(value)
+        if key not in SIGNED_PARAMETERS:
+            refused |= value <= 0
+    lam = columns["lam"]
+    refused |= ~((lam > 0) & (lam < math.pi / 2))
+    for body in "BH":
+        xx, zz, xz = columns[f"I{body}xx"], columns[f"I{body}zz"], columns[f"I{body}xz"]
+        with np.errstate(invalid="ignore", over="ignore"):
+            refused |= xx * zz - xz * xz < -RELATIVE_TOLERANCE * np.maximum(xx, zz) ** 2
+    return refused
+
+
 def warn_parameters(params, source):
     """Warnings for a legal but unusual benchmark parameter set read from or built for ``source``."""
     if params.c < 0:
