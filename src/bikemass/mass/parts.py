@@ -55,11 +55,15 @@ class Part:
         return m
 
     def mass_properties(self, method="mesh", segments=DEFAULT_SEGMENTS):
-        """Mass properties from the mesh (trimesh) or closed form (``method``)."""
-        mesh = self.mesh(segments) if method == "mesh" else None
-        if mesh is None:
-            return self.exact()
-        return MassProperties.from_trimesh(mesh, self.density)
+        """Mass properties in the bicycle frame of the solid's mesh (``method="mesh"``: round
+        sections as ``segments``-sided polygons) or of the solid itself (``"exact"``), both in
+        closed form (:meth:`~bikemass.mass.solids.Solid.faceted_with_mass`; the trimesh of the
+        mesh gives the same numbers, tests/test_solids.py, without being built here)."""
+        if method == "mesh":
+            local = self.solid.faceted_with_mass(self.mass, segments)
+        else:
+            local = self.solid.exact_with_mass(self.mass)
+        return local.transformed(self.placement.rotation, self.placement.translation)
 
 
 def body_properties(parts, method="mesh", overlap="sum", segments=DEFAULT_SEGMENTS):

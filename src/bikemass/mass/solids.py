@@ -9,6 +9,14 @@ Round sections are tessellated as regular polygons of equal area
 (circumradius scaled by sqrt(2 pi / (N sin(2 pi / N)))): mesh volume and mass
 are then exact and the polar moment's relative error is (2 pi / N)^4 / 180 to
 leading order (5.2e-7 at the default N = 64).
+
+``faceted_with_mass(mass, segments)`` gives the mass properties of that mesh in closed form,
+without building it (the mesh route's numbers, to rounding, with neither trimesh nor a mesh):
+a regular N-gon of circumradius R has the polar second moment of area
+``N R^4 sin(2 pi / N) (2 + cos(2 pi / N)) / 12`` about its centre (N triangles from the
+centre, each ``A (|P|^2 + |Q|^2 + P.Q) / 6``), split equally between x and y (a regular polygon
+of three or more sides has an isotropic second moment); every other solid's mesh is the solid
+itself (flat faces), so its closed form is :meth:`Solid.exact_with_mass`.
 """
 
 from dataclasses import dataclass
@@ -81,6 +89,11 @@ class Solid:
         """A watertight trimesh of the solid in the local frame."""
         raise NotImplementedError
 
+    def faceted_with_mass(self, mass, segments=DEFAULT_SEGMENTS):
+        """Mass properties in the local frame of :meth:`mesh` (``segments`` sides to a round
+        section) for a total ``mass`` (kg), in closed form: the solid's own unless it is round."""
+        return self.exact_with_mass(mass)
+
 
 @dataclass(frozen=True)
 class _Annular(Solid):
@@ -108,6 +121,16 @@ class _Annular(Solid):
         r2 = self.outer_radius**2 + self.inner_radius**2
         ixx = m * (3 * r2 + self.length**2) / 12
         return MassProperties(m, [0, 0, self.length / 2 + self._offset()], np.diag([ixx, ixx, m * r2 / 2]))
+
+    def faceted_with_mass(self, mass, segments=DEFAULT_SEGMENTS):
+        """The mesh's mass properties: equal-area regular polygons (see the module docstring)."""
+        theta = 2 * np.pi / segments
+        per_r4 = np.pi ** 2 * (2 + np.cos(theta)) / (3 * segments * np.sin(theta))   # J / r^4 of the polygon
+        polar = per_r4 * (self.outer_radius ** 4 - self.inner_radius ** 4)           # m^4
+        area = np.pi * (self.outer_radius ** 2 - self.inner_radius ** 2)
+        ixx = mass * (polar / (2 * area) + self.length ** 2 / 12)
+        return MassProperties(mass, [0, 0, self.length / 2 + self._offset()],
+                              np.diag([ixx, ixx, mass * polar / area]))
 
     def mesh(self, segments=DEFAULT_SEGMENTS):
         outer = equal_area_circle(self.outer_radius, segments)
