@@ -272,6 +272,61 @@ vary:
     assert (tmp_path / "g" / "heatmap.png").stat().st_size > 10000
 
 
+PERSON = """name: a person on the hoods
+body: {height: 1.80 m, mass: 75 kg, sex: male}
+chain: {hands: hoods}
+"""
+
+
+def test_chart_sweep_reseats_a_person_on_every_frame(tmp_path):
+    """A chart bicycle's stack and head angle with a chain pose that has no bicycle of its own:
+    every row valid (the chart's published wheelbase, trail, ... no longer describe the changed
+    frame and are not checked), each equal to the chart edited by hand (its redundant values
+    removed) with the person solved on it, by the general engine."""
+    import yaml
+    from bikemass.bicycle.chart import CHECKED_KEYS
+    from bikemass.core.paths import frames_dir
+    (tmp_path / "person.yaml").write_text(PERSON)
+    spec = _spec(tmp_path, """bike: specialized_diverge@56
+rider: person.yaml
+vary:
+  chart.stack: [590, 613, 640]
+  chart.head_tube_angle: [71.5, 72.5]
+""")
+    assert main(["sweep", spec, "--out", str(tmp_path / "g"), "--quiet"]) == 0
+    rows = _rows(tmp_path / "g")
+    assert len(rows) == 6 and not any(r["error"] for r in rows)
+    assert len({r["weave_speed"] for r in rows}) == 6
+    document = yaml.safe_load((frames_dir() / "specialized_diverge.yaml").read_text())
+    size = document["sizes"].index(56)
+    for row in (rows[0], rows[5]):
+        edited = {**document, "chart": {k: v for k, v in document["chart"].items() if k not in CHECKED_KEYS}}
+        for key in ("stack", "head_tube_angle"):
+            values = list(edited["chart"][key])
+            values[size] = float(row[f"chart.{key}"])
+            edited["chart"][key] = values
+        bicycle = catalog.load_bicycle(edited, size="56")
+        p = catalog.parameters(bicycle, str(tmp_path / "person.yaml"))
+        weave = next(s for s, k, _ in general_crossings(p) if k == "oscillatory")
+        assert float(row["weave_speed"]) == pytest.approx(weave, abs=1e-9)
+        assert float(row["total_mass"]) == pytest.approx(p.mR + p.mB + p.mH + p.mF, rel=1e-12)
+
+
+def test_a_poses_own_bicycle_is_read_once(tmp_path, monkeypatch):
+    """A chain pose naming its bicycle (solved there, then seated on each changed frame): that
+    bicycle is loaded once for a whole geometry-level sweep, not per configuration."""
+    from bikemass.rider import chain_file
+    from bikemass.scenario.inputs import Model
+    loads = []
+    real = chain_file.load_bicycle
+    monkeypatch.setattr(chain_file, "load_bicycle", lambda *a, **k: loads.append(a) or real(*a, **k))
+    (tmp_path / "own.yaml").write_text(PERSON + "bike: jamis\n")
+    model = Model("jamis", str(tmp_path / "own.yaml"))
+    for wall in (0.03, 0.04, 0.05):                          # inches, the unit the file writes
+        model.build({"sections.seat_stay.wall": wall})
+    assert len(loads) == 1
+
+
 @pytest.mark.parametrize("text, key", [
     ("bike: benchmark\nvary: {}\n", "vary"),
     ("bike: benchmark\nvary: {c: {from: 1, to: 0, num: 3}}\n", "vary.c"),

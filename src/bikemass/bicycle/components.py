@@ -6,7 +6,13 @@ solid's local z), or ``angle`` (deg, Williams 2015 Table 3-7: clockwise about y
 seen with x to the right, local z turned from straight down), or neither (local
 axes = bicycle axes).  ``mirror_y: true`` adds the same part mirrored to -y.
 A ``lumped`` component is a body known by its mass, CoM ``at`` and ``inertia``.
+
+A component's parts are read once per distinct mapping (by value: its ``repr``, the file and
+key it came from and the materials): a sweep rebuilds the same saddle, bar and wheels' hubs for
+every configuration that leaves them as they were.
 """
+
+from collections import OrderedDict
 
 import numpy as np
 
@@ -67,8 +73,23 @@ def _rotation(node):
     return np.eye(3)
 
 
+COMPONENT_CACHE_SIZE = 1024
+_COMPONENTS = OrderedDict()
+
+
 def read_component(node, materials, default_body=None):
-    """Parts (one, or two with ``mirror_y``) of one component mapping."""
+    """Parts (one, or two with ``mirror_y``) of one component mapping (a tuple; see the module
+    docstring for the cache)."""
+    key = (repr(node.value), node.source, node.key, default_body, tuple(materials.items()))
+    parts = _COMPONENTS.get(key)
+    if parts is None:
+        parts = _COMPONENTS[key] = tuple(_read_component(node, materials, default_body))
+        if len(_COMPONENTS) > COMPONENT_CACHE_SIZE:
+            _COMPONENTS.popitem(last=False)
+    return list(parts)
+
+
+def _read_component(node, materials, default_body):
     shape = node["shape"].string(choices=tuple(SHAPES) + ("lumped",))
     name = node["name"].string()
     if not node.has("body") and default_body is None:

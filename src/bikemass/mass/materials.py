@@ -1,5 +1,6 @@
 """Materials: Young's modulus E (Pa), Poisson's ratio nu, density (kg/m^3)."""
 
+import os
 from dataclasses import dataclass
 
 from ..core.config import load_yaml
@@ -22,9 +23,25 @@ class Material:
         return self.E / (2 * (1 + self.nu))
 
 
+_READ = {}
+"""The last table read from each materials file, with the file's modification time and size."""
+
+
 def load_materials(path=None):
-    """``{key or alias: Material}`` from a materials YAML file (default ``frames/materials.yaml``)."""
-    return read_materials(load_yaml(path or frames_dir() / "materials.yaml"))
+    """``{key or alias: Material}`` from a materials YAML file (default ``frames/materials.yaml``).
+
+    Read once per version of the file (its modification time and size: every bicycle a sweep
+    builds asks for the table); a new dict each call."""
+    path = os.fspath(path or frames_dir() / "materials.yaml")
+    try:
+        stat = os.stat(path)
+        version = (stat.st_mtime_ns, stat.st_size)
+    except OSError:
+        version = None                                   # load_yaml names the problem
+    cached = _READ.get(path)
+    if version is None or cached is None or cached[0] != version:
+        cached = _READ[path] = (version, read_materials(load_yaml(path)))
+    return dict(cached[1])
 
 
 def read_materials(root):

@@ -6,6 +6,18 @@ import numpy as np
 
 from ..core.convention import thesis_segment_rotation
 
+_EYE = np.eye(3)
+_ORTHONORMAL_TOLERANCE = 1e-9 + 1e-5 * _EYE
+"""|R^T R - I| allowed entry by entry: what ``np.allclose(R.T @ R, I, atol=1e-9)`` allows (its
+relative 1e-5 counts on the unit diagonal), without its cost (a placement is made for every
+part of every configuration)."""
+
+
+def _det(R):
+    """Determinant of a 3x3 array (the rule of Sarrus, on Python floats: cheaper than LAPACK here)."""
+    (a, b, c), (d, e, f), (g, h, i) = R.tolist()
+    return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g)
+
 
 @dataclass(frozen=True, eq=False)
 class Placement:
@@ -16,7 +28,7 @@ class Placement:
 
     def __post_init__(self):
         R = np.array(self.rotation, dtype=float).reshape(3, 3)
-        if not np.allclose(R.T @ R, np.eye(3), atol=1e-9) or np.linalg.det(R) < 0:
+        if not (np.abs(R.T @ R - _EYE) <= _ORTHONORMAL_TOLERANCE).all() or _det(R) < 0:
             raise ValueError("rotation must be a proper orthonormal 3x3 matrix")
         t = np.array(self.translation, dtype=float).reshape(3)
         R.setflags(write=False)
@@ -41,14 +53,16 @@ class Placement:
         ``side`` the global x axis is used instead.
         """
         z = np.asarray(direction, dtype=float)
-        z = z / np.linalg.norm(z)
+        z = z / np.sqrt(z @ z)
         s = np.asarray(side, dtype=float)
         y = s - (s @ z) * z
-        if np.linalg.norm(y) < 1e-9:
+        if np.sqrt(y @ y) < 1e-9:
             s = np.array([1.0, 0.0, 0.0])
             y = s - (s @ z) * z
-        y /= np.linalg.norm(y)
-        return cls(np.column_stack([np.cross(y, z), y, z]), origin)
+        y = y / np.sqrt(y @ y)
+        (y0, y1, y2), (z0, z1, z2) = y.tolist(), z.tolist()
+        x = (y1 * z2 - y2 * z1, y2 * z0 - y0 * z2, y0 * z1 - y1 * z0)     # y x z, as np.cross does it
+        return cls(np.array([[x[0], y0, z0], [x[1], y1, z1], [x[2], y2, z2]]), origin)
 
     @classmethod
     def thesis_segment(cls, location, angle_deg):

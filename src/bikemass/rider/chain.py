@@ -101,6 +101,8 @@ class ChainPose:
     body: ChainBody
     root: np.ndarray
     angles: dict = field(default_factory=dict)
+    _points: dict = field(default_factory=dict, init=False, repr=False)
+    """:meth:`points` of each side, once computed (a solver's residual asks for several points of one pose)."""
 
     def angle(self, joint, side="right"):
         """Joint angle (deg); ``side='left'`` gives ``hip_left``/``knee_left`` when set."""
@@ -122,7 +124,13 @@ class ChainPose:
                 "lower_leg": thigh + self.angle("knee", side)}
 
     def points(self, side="right"):
-        """Named points (m, benchmark frame) of the right limbs, or the left legs' with ``side``."""
+        """Named points (m, benchmark frame) of the right limbs, or the left legs' with ``side``
+        (computed once per side; the arrays are shared, do not change them)."""
+        if side not in self._points:
+            self._points[side] = self._compute_points(side)
+        return self._points[side]
+
+    def _compute_points(self, side):
         a, L, b = self.segment_angles(side), self.body.lengths, self.body
         sign = -1.0 if side == "left" else 1.0
         R = thesis_segment_rotation(a["torso"])
@@ -138,6 +146,31 @@ class ChainPose:
         p["knee"] = p["hip"] + L["thigh"] * thesis_segment_axis(a["thigh"])
         p["foot"] = p["knee"] + L["lower_leg"] * thesis_segment_axis(a["lower_leg"])
         return p
+
+    def point_jacobian(self, name, side="right"):
+        """``{variable: (dx, dz)}``: the derivative of point ``name`` of :meth:`points` (``seat``,
+        ``hand`` or ``foot``; the left foot with ``side``) in the x-z plane, m per radian of each
+        joint angle it depends on (``hip_left``/``knee_left`` for the left foot) and m per m of
+        ``root_x``/``root_z``.  What a solver needs instead of finite differences."""
+        a = {k: np.radians(v) for k, v in self.segment_angles(side).items()}
+        L = self.body.lengths
+
+        def turn(segment):          # d/da of L * axis(a) in (x, z): axis = (-sin a, cos a)
+            return L[segment] * np.array([-np.cos(a[segment]), -np.sin(a[segment])])
+        out = {"root_x": np.array([1.0, 0.0]), "root_z": np.array([0.0, 1.0])}
+        if name == "hand":
+            c, s = np.cos(a["torso"]), np.sin(a["torso"])
+            v = np.asarray(self.body.shoulder, dtype=float) - _midplane(self.body.hip)
+            torso = np.array([-s * v[0] - c * v[2], c * v[0] - s * v[2]])      # d(R(t) v)/dt, x and z
+            arm, forearm = turn("upper_arm"), turn("lower_arm")
+            out.update({"torso_lean": torso + arm + forearm, "shoulder": -(arm + forearm), "elbow": -forearm})
+        elif name == "foot":
+            hip, knee = (f"{j}_left" if side == "left" and f"{j}_left" in self.angles else j for j in SIDED)
+            thigh, shank = turn("thigh"), turn("lower_leg")
+            out.update({"torso_lean": thigh + shank, hip: -(thigh + shank), knee: shank})
+        elif name != "seat":
+            raise ValueError(f"no derivative of point {name!r} (seat, hand or foot)")
+        return out
 
     def placements(self):
         """``{segment: (location, angle)}`` in the placement form (right copy of pairs), and

@@ -110,8 +110,9 @@ def _gap_lines(pose, bicycle, off):
 
 
 def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, tolerance=CONTACT_TOLERANCE):
-    """:class:`SeatedRider`: ``pose`` (shipped name, pose file, a mapping in any pose form, or a
-    :class:`~bikemass.rider.Rider`, which is used unchecked) on ``bicycle``; see the module doc.
+    """:class:`SeatedRider`: ``pose`` (shipped name, pose file, a mapping in any pose form, the
+    :class:`~bikemass.core.config.Node` of a pose document (errors name its source), or a
+    :class:`~bikemass.rider.Rider`) on ``bicycle``; see the module doc.
 
     Bad input, an unreachable contact or a contact off by more than ``tolerance`` (m) without
     ``allow_off_contact`` raise :class:`InputError`."""
@@ -121,6 +122,9 @@ def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, toleran
                             "from parts carries no body to seat; pass its pose instead)",))
     if isinstance(pose, Rider):
         (node, as_printed), source, pose = pose.spec, pose.spec[0].source, pose.pose
+    elif isinstance(pose, Node):
+        node, source = pose, pose.source
+        pose = node.value.get("name", str(source)) if isinstance(node.value, dict) else str(source)
     elif isinstance(pose, Mapping):
         source, node = MAPPING, Node(plain_input(pose, MAPPING), MAPPING, "")
         pose = node.value.get("name", MAPPING) if isinstance(node.value, dict) else MAPPING

@@ -35,7 +35,9 @@ DEFAULT_ELBOW = 20.0
 
 @dataclass(frozen=True, eq=False)
 class Target:
-    """A contact: ``point(pose)`` (m) must meet ``target`` (m, x and z); ``key`` names it in errors."""
+    """A contact: ``point(pose)`` (m) must meet ``target`` (m, x and z); ``key`` names it in errors;
+    the point is the pose's point ``point_name`` of the limbs of ``side``
+    (:meth:`~bikemass.rider.chain.ChainPose.points`)."""
 
     name: str
     point: object
@@ -43,6 +45,8 @@ class Target:
     source: str
     key: str
     why: str
+    point_name: str = ""
+    side: str = "right"
 
 
 @dataclass(frozen=True, eq=False)
@@ -77,11 +81,14 @@ def _pose_from(x, free, fixed, body):
     return ChainPose(body, root, angles)
 
 
-def _least_squares(residual, free, fixed, body, start):
+def _least_squares(residual, free, fixed, body, start, jacobian=None):
+    """The pose minimising ``residual(pose)``; ``jacobian(pose, free)`` its derivative (rows as the
+    residual's, a column per free variable), else finite differences."""
     lo = [-np.inf if n.startswith("root") else np.radians(BOUNDS[n.replace("_left", "")][0]) for n in free]
     hi = [np.inf if n.startswith("root") else np.radians(BOUNDS[n.replace("_left", "")][1]) for n in free]
     x0 = np.clip([start[n] for n in free], np.array(lo) + 1e-9, np.array(hi) - 1e-9)
-    result = least_squares(lambda x: residual(_pose_from(x, free, fixed, body)), x0, bounds=(lo, hi),
+    jac = "2-point" if jacobian is None else (lambda x: jacobian(_pose_from(x, free, fixed, body), free))
+    result = least_squares(lambda x: residual(_pose_from(x, free, fixed, body)), x0, jac=jac, bounds=(lo, hi),
                            xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=2000)
     return _pose_from(result.x, free, fixed, body)
 
@@ -94,22 +101,32 @@ def contact_targets(body, contacts, hands, crank):
     """The :class:`Target` list for ``hands`` (a grip name or ``"none"``) and ``crank`` (deg or None)."""
     src = contacts.source
     targets = [Target("hips", lambda p: p.points()["seat"], _xz(contacts.sit_point(body.inseam)), src,
-                      f"{contacts.key}.saddle", "the sit point is fixed to the saddle")]
+                      f"{contacts.key}.saddle", "the sit point is fixed to the saddle", "seat")]
     if hands != "none":
         if hands not in contacts.grips:
             raise InputError(src, f"{contacts.key}.grips.{hands}",
                              f"a grip named {hands} (this bicycle has: {', '.join(contacts.grips) or 'none'})")
         targets.append(Target("hands", lambda p: p.points()["hand"], _xz(contacts.grips[hands]), src,
-                              f"{contacts.key}.grips.{hands}", "arms too short for the bars"))
+                              f"{contacts.key}.grips.{hands}", "arms too short for the bars", "hand"))
     if crank is None:
         targets.append(Target("feet", lambda p: p.points()["foot"], _xz(contacts.bottom_bracket), src,
-                              f"{contacts.key}.bottom_bracket", "saddle too high for the pedals"))
+                              f"{contacts.key}.bottom_bracket", "saddle too high for the pedals", "foot"))
     else:
         for side in ("right", "left"):
             targets.append(Target(f"{side} foot", lambda p, s=side: p.points(s)["foot"],
                                   _xz(contacts.pedal(crank, side)), src, f"{contacts.key}.crank_length",
-                                  f"saddle too high for the {side} pedal at crank {crank:g} deg"))
+                                  f"saddle too high for the {side} pedal at crank {crank:g} deg", "foot", side))
     return targets
+
+
+def targets_jacobian(targets, pose, free):
+    """Derivative of the stacked x-z residuals of ``targets`` at ``pose``: a row per residual,
+    a column per variable of ``free`` (m per rad, m per m)."""
+    rows = []
+    for t in targets:
+        d = pose.point_jacobian(t.point_name, t.side)
+        rows.append(np.array([d.get(v, (0.0, 0.0)) for v in free]).T)
+    return np.vstack(rows)
 
 
 def solve_on_bicycle(body, contacts, hands="hoods", crank=None, fixed=None):
@@ -134,7 +151,7 @@ def solve_on_bicycle(body, contacts, hands="hoods", crank=None, fixed=None):
     start = {**{k: np.radians(v) for k, v in START.items()},
              "hip_left": np.radians(START["hip"]), "knee_left": np.radians(START["knee"])}
     pose = _least_squares(lambda p: np.concatenate([_xz(t.point(p)) - t.target for t in targets]),
-                          free, fixed_rad, body, start)
+                          free, fixed_rad, body, start, lambda p, names: targets_jacobian(targets, p, names))
     residuals = {t.name: float(np.linalg.norm(_xz(t.point(pose)) - t.target)) for t in targets}
     return Solution(pose, residuals, tuple(free), tuple(targets))
 

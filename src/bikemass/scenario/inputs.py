@@ -12,14 +12,21 @@ Inputs are named by keys:
 
 The YAML files are parsed once; a bicycle (its meshes' mass properties, and its stiffness)
 and a rider are built once per distinct set of their own changes and reused by every
-configuration that shares them.
+configuration that shares them; each part's mass properties once per distinct part (a
+changed stack re-computes only the parts it moves or resizes).
+
+A changed chart value (``chart.stack``, ``chart.head_tube_angle``, ...) drops the chart's
+published redundant values (``wheelbase``, ``trail``, ... : what the loader checks the built frame
+against), since they describe the unchanged frame; a varied redundant value itself is kept
+(and checked).  A chain-form pose is solved on each configuration's bicycle when it has no
+``bike:`` of its own (the rider re-seated on every changed frame); a pose's own ``bike:`` is
+read once.
 """
 
-import copy
-import pickle
 from collections import OrderedDict
 
 from ..bicycle.benchmark import merge_rider, parameters_from_bodies, refuse_second_rider, rider_bodies
+from ..bicycle.chart import CHECKED_KEYS
 from ..bicycle.loader import _is_parameter_text, _with_base, bicycle_from_mapping, bicycle_from_parameters
 from ..bicycle.model import BODIES
 from ..bicycle.parameter_text import load_parameter_text
@@ -32,6 +39,7 @@ from ..mass.materials import load_materials
 from ..models.parameters import NAMES
 from ..models.plausibility import check_parameters
 from ..rider import _read_document, poses_dir
+from ..rider.chain_file import bicycle_contacts
 from . import catalog
 from .catalog import seated_rider
 
@@ -39,6 +47,7 @@ RIDER_PREFIX = "rider."
 STIFFNESS_KEY = "stiffness"
 CACHE_SIZE = 32
 PART_CACHE_SIZE = 4096
+CHART = "chart"
 
 
 def _lru(cache, key, build):
@@ -129,6 +138,35 @@ def split_changes(changes):
     return tuple(sorted(bike)), tuple(sorted(rider)), tuple(sorted(params)), stiffness
 
 
+def _shallow(value):
+    return dict(value) if isinstance(value, dict) else list(value) if isinstance(value, list) else value
+
+
+def _copied_along(document, paths):
+    """``document`` with every mapping and list on the way to each dotted path of ``paths`` (and
+    the value there, if it is one) copied, the rest shared: what :func:`set_path` may then change
+    without touching ``document`` (a whole deep copy costs more than the bicycle it describes)."""
+    out = _shallow(document)
+    for path in paths:
+        node = out
+        for step in path.split("."):
+            slot = _slot(node, step)
+            if slot is None:
+                break                              # set_path names the missing step
+            node[slot] = _shallow(node[slot])
+            node = node[slot]
+    return out
+
+
+def _drop_redundant_chart_values(doc, changes):
+    """Remove from ``doc``'s chart its published redundant values (:data:`CHECKED_KEYS`) when
+    ``changes`` change a chart value (keeping any redundant value that is itself changed)."""
+    changed = {path.split(".")[1] for path, _ in changes if path.startswith(CHART + ".") and path.count(".") >= 1}
+    chart = doc.get(CHART) if isinstance(doc, dict) else None
+    if changed and isinstance(chart, dict):
+        doc[CHART] = {k: v for k, v in chart.items() if k not in CHECKED_KEYS or k in changed}
+
+
 class Model:
     """``Model(bike, rider, stiffness, combine).build(changes)`` -> :class:`Built`."""
 
@@ -157,10 +195,11 @@ class Model:
         self._bicycles, self._bodies, self._riders, self._seated, self._stiffness, self._params, self._parts = (
             OrderedDict() for _ in range(7))
         self._materials = None
+        self._pose_bicycles = {}
 
     # -- pieces, each cached by its own changes -------------------------------------------
     def _document(self, doc, changes, source, size_index=None):
-        out = copy.deepcopy(doc)
+        out = _copied_along(doc, [path for path, _ in changes])
         for path, value in changes:
             set_path(out, path, value, source, self.origin, size_index)
         return out
@@ -173,11 +212,13 @@ class Model:
                                      "is a parameter file)")
                 return bicycle_from_parameters(self._measured, self._bike_doc["name"], self._bike_source)
             doc = self._document(self._bike_doc, changes, self._bike_source, self._size_index)
+            _drop_redundant_chart_values(doc, changes)
             return bicycle_from_mapping(doc, self._bike_source, self._size)
         return _lru(self._bicycles, changes, build)
 
     def posed_rider(self, changes=()):
-        """The rider (pose file with ``changes``) as written, or ``None``."""
+        """The rider (pose file with ``changes``) as written, or ``None``; a chain-form pose as its
+        :class:`~bikemass.core.config.Node`, solved where it is seated (:meth:`rider_bodies`)."""
         if self._rider_doc is None:
             if changes:
                 raise InputError(self.origin, changes[0][0], "a rider to change (no rider given)")
@@ -185,8 +226,18 @@ class Model:
 
         def build():
             doc = self._document(self._rider_doc, changes, self._rider_source)
+            if isinstance(doc, dict) and "chain" in doc:
+                if isinstance(doc.get("bike"), str):
+                    doc["bike"] = self._pose_bicycle(doc["bike"])
+                return Node(doc, self._rider_source, "")
             return _read_document(Node(doc, self._rider_source, ""), self.rider, False)
         return _lru(self._riders, changes, build)
+
+    def _pose_bicycle(self, name):
+        """The bicycle a chain pose names as its own ``bike:`` (loaded once per name)."""
+        if name not in self._pose_bicycles:
+            self._pose_bicycles[name] = bicycle_contacts(name, Node(self._rider_doc, self._rider_source, "bike"))
+        return self._pose_bicycles[name]
 
     def rider_bodies(self, bike_changes=(), rider_changes=()):
         """``{body: MassProperties}`` of the rider seated on the changed bicycle (as
@@ -215,7 +266,9 @@ class Model:
         """``bicycle.bodies(method)`` with each part's mass properties (its mesh) computed once per
         distinct part: a changed tube wall re-meshes only the tubes of that section."""
         def props(part):
-            key = pickle.dumps((part.name, part.solid, part.mass, part.placement, part.body))
+            placement = part.placement
+            key = (part.name, part.solid, part.mass, placement.rotation.tobytes(), placement.translation.tobytes(),
+                   part.body)
             cached = self._parts.get(key)
             if cached is None:
                 cached = self._parts[key] = part.mass_properties(self.method)
