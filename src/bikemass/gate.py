@@ -11,11 +11,17 @@ through: aliases and anchors (no "billion laughs"), nesting deeper than
 :data:`MAX_INT_DIGITS` digits, non-scalar keys, a second document, and a key
 given twice in one mapping (named with both lines).  Every refusal is one
 :class:`~bikemass.errors.InputError` naming the file and the line.
+
+A parser may refuse deep flow nesting itself before its events reach the depth check (libyaml
+looks ahead through ``[[[[...`` for a possible key and has its own limit, in its own words):
+when the parser fails, :func:`flow_depth_line` measures the nesting of the text up to the
+failure, so deep nesting is answered by :data:`MAX_DEPTH` whatever the parser or its version.
 """
 
 import contextlib
 import contextvars
 import os
+import re
 import stat
 from pathlib import Path
 
@@ -41,6 +47,9 @@ _READ = contextvars.ContextVar("bikemass_inputs", default=None)
 _LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 """libyaml's parser where it is installed (about 7x faster), the pure-Python one otherwise."""
 _INT_TAG = "tag:yaml.org,2002:int"
+_FLOW_MARKS = re.compile(r"""(?<![^\s\[{,:])(?:'(?:[^']|'')*'?|"(?:[^"\\]|\\.)*"?)|(?<!\S)#[^\n]*|[\[{\]}\n]""")
+"""What :func:`flow_depth_line` looks at: a quoted scalar where a token may start, a comment, a
+bracket, a line break."""
 _FILE_KINDS = ((stat.S_ISDIR, "a folder"), (stat.S_ISFIFO, "a FIFO (named pipe)"),
                (stat.S_ISCHR, "a character device"), (stat.S_ISBLK, "a block device"),
                (stat.S_ISSOCK, "a socket"))
@@ -138,6 +147,9 @@ def parse_yaml(text, source):
         raise
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None) or getattr(exc, "context_mark", None)
+        deep = flow_depth_line(text, MAX_DEPTH, last_line=mark.line + 1 if mark else None)
+        if deep is not None:
+            raise InputError(source, f"line {deep}", f"YAML nested at most {MAX_DEPTH} levels deep") from None
         where = f"line {mark.line + 1}" if mark else "(file)"
         problem = getattr(exc, "problem", None) or str(exc).splitlines()[0]
         raise InputError(source, where, f"valid YAML ({problem})") from None
@@ -145,6 +157,34 @@ def parse_yaml(text, source):
         raise InputError(source, "(file)", f"valid YAML values ({exc})") from None
     finally:
         loader.dispose()
+
+
+def flow_depth_line(text, limit, last_line=None):
+    """The line (from 1) where ``text``'s flow collections (``[...]``, ``{...}``) first nest more
+    than ``limit`` deep, or ``None``; only lines up to ``last_line`` are looked at if given.
+
+    Measured on the text itself, not by a parser: brackets inside quoted scalars and comments do
+    not count, nor an opening bracket inside a plain scalar (``a: b[c``).  Used to name the cause
+    when the parser has already refused the text.
+    """
+    depth, line = 0, 1
+    for match in _FLOW_MARKS.finditer(text):
+        mark, start = match.group(), match.start()
+        if mark == "\n":
+            line += 1
+            if last_line is not None and line > last_line:
+                return None
+        elif mark in "[{":
+            # outside a flow collection a bracket opens one only where a token starts
+            if depth or start == 0 or text[start - 1].isspace():
+                depth += 1
+                if depth > limit:
+                    return line
+        elif mark in "]}":
+            depth = max(depth - 1, 0)
+        else:                                             # a quoted scalar or a comment
+            line += mark.count("\n")
+    return None
 
 
 def _fail(source, event, expected):
