@@ -39,6 +39,8 @@ _API = {
     "PARAMETER_NAMES": "parameters", "InputError": "errors", "BikemassWarning": "errors",
     "load_parameter_text": "parameter_text", "MeasuredParameters": "parameter_text",
     "ParameterFileWarning": "parameter_text",
+    "load_parameter_set": "parameter_sets", "ParameterSetFile": "parameter_sets",
+    "RiderLeanParameters": "parameter_sets",
 }
 """Public name -> the module (under ``bikemass``) that defines it."""
 

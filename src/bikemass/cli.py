@@ -85,7 +85,7 @@ def main(argv=None):
 def _run(args):
     from .gate import track_inputs
     from .options import check_outputs
-    from .output import collect_warnings
+    from .output import collect_warnings, warning_lines
     status = 0
     with warnings.catch_warnings(record=True) as caught, collect_warnings(caught), track_inputs():
         warnings.simplefilter("always")
@@ -114,8 +114,8 @@ def _run(args):
                 raise
             return _error(f"internal error {type(exc).__name__}: {exc} (please report it; set "
                           "BIKEMASS_DEBUG=1 for the traceback)", 1)
-    for warning in caught:
-        print(f"bikemass: warning: {one_line(warning.message, 600)}", file=sys.stderr)
+    for line in warning_lines(caught):
+        print(f"bikemass: warning: {one_line(line, 600)}", file=sys.stderr)
     return status
 
 

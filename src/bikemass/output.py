@@ -39,6 +39,12 @@ def collect_warnings(caught):
         _WARNINGS.reset(token)
 
 
+def warning_lines(caught):
+    """The distinct messages of recorded warnings ``caught``, in the order first issued (a file read
+    twice in one command warns once)."""
+    return list(dict.fromkeys(str(w.message) for w in caught))
+
+
 def plain(obj):
     """Convert numpy scalars/arrays (recursively) into plain Python for JSON/YAML."""
     if isinstance(obj, Mapping):
@@ -196,7 +202,7 @@ def dumps(obj, fmt):
     data = written(obj)
     caught = _WARNINGS.get()
     if caught and fmt == "json" and isinstance(data, dict):
-        data = {**data, "warnings": [str(w.message) for w in caught]}
+        data = {**data, "warnings": warning_lines(caught)}
     if fmt == "json":
         return json.dumps(data, indent=2) + "\n"
     if fmt == "yaml":

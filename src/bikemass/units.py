@@ -36,6 +36,8 @@ DIMENSIONS = {
     "density": ("kg/m^3", {"kg/m^3": 1.0, "g/cm^3": 1e3, "g/cc": 1e3, "lb/in^3": POUND / INCH**3}),
     "stiffness": ("N m/rad", {"N m/rad": 1.0, "N*m/rad": 1.0, "kN m/rad": 1e3}),
     "acceleration": ("m/s^2", {"m/s^2": 1.0}),
+    "speed": ("m/s", {"m/s": 1.0, "km/h": 1 / 3.6}),
+    "damping": ("N m s/rad", {"N m s/rad": 1.0, "N*m*s/rad": 1.0}),
     "dimensionless": ("", {"": 1.0}),
 }
 """dimension -> (SI unit, {unit: factor to SI}).  ``pressure`` also covers elastic moduli,

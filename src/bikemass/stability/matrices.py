@@ -68,7 +68,7 @@ def canonical_matrices(p):
     IAlx = -mA * uA * zA + IAxx * sl + IAxz * cl
     IAlz = mA * uA * xA + IAxz * sl + IAzz * cl
     mu = p.c / p.w * cl
-    SR, SF = p.IRyy / p.rR, p.IFyy / p.rF
+    SR, SF = _spin_momentum(p.IRyy, p.rR), _spin_momentum(p.IFyy, p.rF)
     ST = SR + SF
     SA = mA * uA + mu * mT * xT
 
@@ -80,3 +80,10 @@ def canonical_matrices(p):
     C1 = np.array([[0.0, mu * ST + SF * cl + ITxz / p.w * cl - mu * mT * zT],
                    [-(mu * ST + SF * cl), IAlz / p.w * cl + mu * (SA + ITzz / p.w * cl)]])
     return CanonicalMatrices(M=M, C1=C1, K0=K0, K2=K2, g=float(p.g))
+
+
+def _spin_momentum(spin_inertia, radius):
+    """A wheel's angular momentum per unit forward speed, ``Iyy / r`` (kg m); 0 for a point wheel
+    (``r = 0``, which carries no spin inertia: the limit of the two-mass-skate bicycle).  Complex
+    values pass through (the sensitivities differentiate by complex steps)."""
+    return spin_inertia / radius if radius != 0 else 0 * spin_inertia

@@ -146,7 +146,7 @@ class Engine:
     # -- results --------------------------------------------------------------
     def parameters(self, state: PageState):
         """The benchmark parameter set of ``state``, typed-over values applied (InputError for a set
-        the model is not defined for: negative mass, lam outside (0, pi/2), ...)."""
+        the model is not defined for: negative mass, lam outside (-pi/2, pi/2), ...)."""
         base = self.base_parameters(state.bicycle_key, state.rider_key, state.combine)
         if not state.overrides:
             return base
