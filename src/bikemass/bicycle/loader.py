@@ -21,7 +21,7 @@ from ..materials import load_materials, read_materials
 from ..parameter_sets import kind_of, read_parameter_set, read_parameter_set_text, whipple_parameters
 from ..parameter_text import looks_like_parameter_text
 from ..parts import Part
-from ..paths import frames_dir, resolve
+from ..paths import frames_dir, named_file, resolve, within_reach
 from ..placement import Placement
 from ..plausibility import check_stiffness
 from ..sections import RoundSection, SquareSection
@@ -115,8 +115,7 @@ def _parameter_set_bicycle(parameter_set, default_name, source, **extra):
 def _measured_bicycle(node, path):
     """A parameter file (``parameters:``, relative to this file) with contacts and published stiffness."""
     node.check_keys(required=("parameters",), optional=MEASURED_KEYS)
-    target = Path(node["parameters"].string())
-    target = target if target.is_absolute() else path.parent / target
+    target = named_file(node["parameters"])
     if not target.is_file():
         node.fail(f"an existing parameter file, got {str(target)!r}", "parameters")
     if _is_parameter_text(target):
@@ -142,10 +141,11 @@ MAX_BASE_CHAIN = 16
 def _base_path(node):
     """A base bicycle: a file next to the referring file (``name`` or ``name.yaml``), else as any BIKE;
     a missing one is blamed on the ``base`` key of the referring file."""
-    name, folder = node.string(), Path(node.source).parent
-    for candidate in (folder / name, folder / f"{name.replace('-', '_')}.yaml"):
-        if os.path.lexists(candidate):     # the input gate says if it is not a regular file
-            return candidate
+    name = node.string()
+    for candidate in (name, f"{name.replace('-', '_')}.yaml"):
+        path = named_file(node, candidate) if within_reach(Path(node.source).parent / candidate) else None
+        if path is not None and os.path.lexists(path):     # the input gate says if it is not a regular file
+            return path
     try:
         return resolve(name, frames_dir(), "bicycle")
     except InputError as exc:
@@ -207,7 +207,7 @@ def _file_materials(node):
         return {}
     m = node["materials"]
     if isinstance(m.value, str):
-        path = Path(node.source).parent / m.value
+        path = named_file(m)
         if not path.is_file():
             m.fail(f"a materials YAML file (as frames/materials.yaml), {path} does not exist")
         return load_materials(path)

@@ -37,12 +37,13 @@ def bicycle_contacts(bike, node):
     """The bicycle ``bike`` (a Bicycle, or a name or file; a relative file is looked up next to
     the pose file first) with its ``contacts``; ``node`` is blamed if the bicycle has none."""
     from ..bicycle import Bicycle, load_bicycle
+    from ..paths import within_reach
     if isinstance(bike, Bicycle):
         bicycle = bike
     else:
         here = Path(node.source).parent / bike
         try:
-            bicycle = load_bicycle(str(here) if here.is_file() else bike)
+            bicycle = load_bicycle(str(here) if within_reach(here) and here.is_file() else bike)
         except InputError as exc:
             if exc.key not in ("(name)", "(file)") or exc.source not in (str(bike), str(here)):
                 raise

@@ -31,6 +31,7 @@ from pathlib import Path
 import numpy as np
 
 from ..inertia import MassProperties, combine
+from ..paths import named_file
 from ..solids import Lumped
 from .anthropometry import Anthropometry, BodySegment
 from .chain import ChainBody
@@ -141,8 +142,7 @@ def yeadon_body(node, label):
     """:class:`~bikemass.rider.body.Body` of ``{yeadon: PATH}`` (PATH relative to ``node``'s file)."""
     from .body import Body
     node.check_keys(required=("yeadon",), optional=("name", "source", "note"))
-    given = Path(node["yeadon"].string())
-    path = given if given.is_absolute() else Path(node.source).parent / given
+    path = named_file(node["yeadon"])
     if not path.is_file():
         node.fail(f"a yeadon measurement file, {path} does not exist", "yeadon")
     try:

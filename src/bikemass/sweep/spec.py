@@ -144,8 +144,10 @@ def _variable(key, node):
 def _near(spec_path, name):
     """A file named relative to the spec file, if it exists there; else the name as given."""
     from pathlib import Path
+
+    from ..paths import within_reach
     here = Path(spec_path).parent / name
-    return str(here.resolve()) if here.is_file() else name
+    return str(here.resolve()) if within_reach(here) and here.is_file() else name
 
 
 def read_spec(path):
