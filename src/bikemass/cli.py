@@ -109,6 +109,8 @@ def _run(args):
             return 0
         except MemoryError:
             return _error("out of memory", 1)
+        except OSError as exc:             # the system's, not a bug: a full disk, a quota, an I/O error
+            return _error(f"{exc.filename or '(system)'}: {exc.strerror or exc} (nothing was half-written)")
         except Exception as exc:           # a bug: one line unless BIKEMASS_DEBUG asks for the traceback
             if os.environ.get("BIKEMASS_DEBUG"):
                 raise

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .frozen import freeze, readonly, short_repr
+from .options import MAX_SPEEDS
 
 DEFAULT_MARGINAL = 2.0
 """Modulus (rad/s) below which an unstable eigenvalue counts as marginally stable (the thesis's)."""
@@ -60,32 +61,45 @@ def _stiffness(S):
     return stiffness_matrix(S)
 
 
-def speeds(start=0.0, stop=30.0, step=0.05):
-    """The speed grid ``start, start + step, ..., stop`` (m/s), shape (n,).
+def speeds(start=0.0, stop=30.0, step=0.05, max_speeds=MAX_SPEEDS):
+    """The speed grid ``start, start + step, ...`` up to ``stop`` (m/s, never beyond), shape (n,).
 
     Raises
     ------
     InputError
-        Unless ``0 <= start < stop``, ``step > 0`` and at most 100000 speeds.
+        Unless ``0 <= start < stop``, ``step > 0`` and at most ``max_speeds`` speeds.
     """
     from .errors import InputError
-    from .stability import speed_grid
+    from .stability.analysis import speed_count, speed_grid
     if not all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in (start, stop, step)):
         raise InputError("speeds", f"{start!r}:{stop!r}:{step!r}", "start, stop and step as numbers (m/s)")
-    if not (0 <= start < stop and step > 0 and (stop - start) / step <= 1e5):
-        raise InputError("speeds", f"{start}:{stop}:{step}", "speeds need 0 <= start < stop, step > 0 and at most 100000 points "
-                         f"(m/s), got {start}:{stop}:{step}")
+    if not (0 <= start < stop < float("inf") and step > 0 and (stop - start) / step < max_speeds
+            and speed_count(start, stop, step) <= max_speeds):
+        raise InputError("speeds", f"{start}:{stop}:{step}", f"speeds need 0 <= start < stop, step > 0 and at most "
+                         f"{max_speeds} points (m/s), got {start}:{stop}:{step}")
     return speed_grid(start, stop, step)
 
 
-def _speeds(values):
+def speed_values(values, max_speeds=MAX_SPEEDS):
+    """``values`` checked as speeds (the default grid for ``None``), their number first: at most
+    ``max_speeds`` (the command line's ``--max-speeds``), before any array is made of them."""
     if values is None:
         return speeds()
+    from .errors import InputError
     from .stability.modes import check_speeds
+    try:
+        count = len(values)
+    except TypeError:
+        count = 1
+    if isinstance(max_speeds, bool) or not isinstance(max_speeds, int) or max_speeds < 1:
+        raise InputError("max_speeds", repr(max_speeds), "a whole number of speeds >= 1")
+    if count > max_speeds:
+        raise InputError("speeds", f"{count} speeds", f"at most {max_speeds} speeds (raise max_speeds=; each "
+                         "speed holds 4 eigenvalues and their eigenvectors)")
     return check_speeds(values)
 
 
-def eigenvalues(params, stiffness=None, speeds=None):
+def eigenvalues(params, stiffness=None, speeds=None, max_speeds=MAX_SPEEDS):
     """Eigenvalues over speed, followed across speed and labelled.
 
     Parameters
@@ -94,6 +108,8 @@ def eigenvalues(params, stiffness=None, speeds=None):
         As for :func:`matrices`.
     speeds : array_like of shape (n,), optional
         Increasing speeds >= 0 (m/s); default 0..30 m/s in 0.05 m/s steps.
+    max_speeds : int
+        Most speeds taken (default 100000, as the command line's ``--max-speeds``).
 
     Returns
     -------
@@ -103,7 +119,7 @@ def eigenvalues(params, stiffness=None, speeds=None):
         is one column.  Arrays are read-only.
     """
     from .stability import follow_modes
-    modes = follow_modes(matrices(params, stiffness), _speeds(speeds))
+    modes = follow_modes(matrices(params, stiffness), speed_values(speeds, max_speeds))
     for a in (modes.speeds, modes.eigenvalues, modes.eigenvectors):
         a.setflags(write=False)
     return modes
@@ -220,7 +236,7 @@ class StabilityResult:
                           ("stiffness", "rigid" if self.stiffness is None else "S"))
 
 
-def stability(params, stiffness=None, speeds=None, marginal=DEFAULT_MARGINAL):
+def stability(params, stiffness=None, speeds=None, marginal=DEFAULT_MARGINAL, max_speeds=MAX_SPEEDS):
     """Eigenvalues, critical speeds and stable speed ranges of a bicycle.
 
     Parameters
@@ -234,6 +250,9 @@ def stability(params, stiffness=None, speeds=None, marginal=DEFAULT_MARGINAL):
         Critical speeds are roots (to 1e-13 m/s) between grid speeds.
     marginal : float
         Modulus (rad/s) below which an unstable eigenvalue counts as marginally stable.
+    max_speeds : int
+        Most speeds taken (default 100000, as the command line's ``--max-speeds``); more is an
+        InputError before any work.
 
     Returns
     -------
@@ -247,4 +266,4 @@ def stability(params, stiffness=None, speeds=None, marginal=DEFAULT_MARGINAL):
         raise InputError("marginal", marginal, "a positive finite modulus in rad/s")
     S = _stiffness(stiffness)
     m = matrices(params, S)
-    return StabilityResult(analyse(m, _speeds(speeds), marginal=marginal), S, m)
+    return StabilityResult(analyse(m, speed_values(speeds, max_speeds), marginal=marginal), S, m)

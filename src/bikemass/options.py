@@ -65,7 +65,7 @@ OUTPUT_OPTIONS = ("output", "plot", "out")
 def check_outputs(args):
     """Refuse bad output paths of ``args`` before the command runs (:func:`bikemass.output.check_output`):
     folders where files are wanted, unwritable places, and the command's own input files."""
-    from .output import check_folder, check_output
+    from .output import STUDY_MARK, check_folder, check_output
 
     folders = getattr(args, "folder_outputs", ())
     inputs = [v for key, value in vars(args).items() if key not in OUTPUT_OPTIONS
@@ -76,7 +76,7 @@ def check_outputs(args):
             continue
         option = "-o" if key == "output" else f"--{key}"
         if key in folders:
-            check_folder(path, option=option)
+            check_folder(path, getattr(args, "folder_mark", None) or STUDY_MARK, option=option)
         elif key == "plot":
             _check_figure_name(path, option)
             check_output(path, None, inputs, "a figure file", option)

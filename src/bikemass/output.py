@@ -232,7 +232,8 @@ def write_atomic(path, data):
 
     An existing file keeps its permission bits; a symbolic link keeps pointing where it did and
     its target is replaced.  A file read as input in this run (:func:`bikemass.gate.was_read`)
-    is refused.
+    is refused.  A write that fails (a full disk, a quota, an I/O error) is an InputError naming
+    the path, the temporary file removed and the old file left as it was.
     """
     from .gate import was_read
 
@@ -253,8 +254,12 @@ def write_atomic(path, data):
                 fh.write(data)
             os.chmod(tmp, _mode_for(target))
             os.replace(tmp, target)
-        except BaseException:
-            os.unlink(tmp)
+        except BaseException as exc:
+            with contextlib.suppress(OSError):
+                os.unlink(tmp)
+            if isinstance(exc, OSError):     # a full disk, a quota, an I/O error: nothing was replaced
+                raise InputError(path, "(output)", f"room to write the file in its folder ({exc.strerror or exc}; "
+                                                   "nothing was written)") from None
             raise
 
 

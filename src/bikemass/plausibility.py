@@ -7,8 +7,9 @@ semi-definite or violates the triangle inequality (a parameter set's bodies only
 the linear model is defined for them), a stiffness matrix that is not
 symmetric or not positive definite.  Warnings (:class:`~bikemass.errors.BikemassWarning`,
 one line each): a steer axis leaning forward (``lam < 0``), negative trail, a trail longer than the wheelbase, a wheel radius beyond any
-wheel, a centre of mass below the ground (z > 0) or far from the bicycle, a rider far from
-the bicycle, masses beyond any bicycle.  The thresholds are stated below.
+wheel, a wheelbase beyond any bicycle's, wheels that overlap, a centre of mass below the
+ground (z > 0) or far from the bicycle, a rider far from the bicycle or of a mass no rider
+has, masses beyond any bicycle.  The thresholds are stated below.
 """
 
 import math
@@ -30,6 +31,11 @@ RIDER_HEIGHT = 3.0
 """Highest plausible rider centre of mass above the ground (m)."""
 MAX_WHEEL_RADIUS = 1.5
 """A wheel radius above this (m) is warned about (a high-wheeler's front wheel is about 0.75 m)."""
+MAX_WHEELBASE = 2.5
+"""A wheelbase above this (m) is warned about (a long-tail or long-john cargo bicycle has up to about
+2.3 m, a tandem about 1.8 m)."""
+RIDER_MASS = (10.0, 300.0)
+"""Rider masses (kg) outside this range are warned about (a small child to the heaviest adults)."""
 
 
 def warn(message):
@@ -155,6 +161,11 @@ def warn_parameters(params, source):
     for wheel, r in (("rR", params.rR), ("rF", params.rF)):
         if r > MAX_WHEEL_RADIUS:
             warn(f"{source}: wheel radius {wheel} = {r:.4g} m is more than {MAX_WHEEL_RADIUS:g} m")
+    if params.w > MAX_WHEELBASE:
+        warn(f"{source}: wheelbase w = {params.w:.4g} m is more than {MAX_WHEELBASE:g} m (a long cargo bicycle's)")
+    if params.w < params.rR + params.rF:
+        warn(f"{source}: the wheels overlap: wheelbase w = {params.w:.4g} m is less than rR + rF = "
+             f"{params.rR + params.rF:.4g} m")
     for body, x, z in (("B", params.xB, params.zB), ("H", params.xH, params.zH)):
         if not (-RIDER_REACH <= x <= params.w + RIDER_REACH and z >= -RIDER_HEIGHT):
             warn(f"{source}: centre of mass [x{body}, z{body}] = [{x:.4g}, {z:.4g}] m is far from the bicycle "
@@ -164,8 +175,11 @@ def warn_parameters(params, source):
         warn(f"{source}: total mass {total:.4g} kg is more than {MAX_MASS:g} kg")
 
 
-def warn_rider(rider_com, geometry, source, rider_name):
-    """Warn if the rider's centre of mass (m, benchmark frame) is far from the bicycle or below the ground."""
+def warn_rider(rider_com, geometry, source, rider_name, mass=None):
+    """Warn if the rider's centre of mass (m, benchmark frame) is far from the bicycle or below the
+    ground, or the rider's ``mass`` (kg) is outside :data:`RIDER_MASS`."""
+    if mass is not None and not RIDER_MASS[0] <= mass <= RIDER_MASS[1]:
+        warn(f"{source}: rider {rider_name} weighs {mass:.4g} kg, outside {RIDER_MASS[0]:g}..{RIDER_MASS[1]:g} kg")
     x, y, z = rider_com
     if z > 0:
         warn(f"{source}: rider {rider_name}'s centre of mass is below the ground (z = {z:.4g} m)")

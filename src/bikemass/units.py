@@ -116,6 +116,15 @@ def _split(value, dimension):
     return float(match.group(1)), match.group(2)
 
 
+def split_quantity(value):
+    """``(number, unit)`` of a number (unit ``""``) or a ``"<number> <unit>"`` string whose unit is
+    one of :data:`DIMENSIONS`' (its dimension: :func:`dimension_of`); :class:`UnitError` otherwise."""
+    number, unit = _split(value, "dimensionless")
+    if unit and dimension_of(unit) is None:
+        raise UnitError(f"a number or '<number> <unit>' with a known unit, got {_short(value)} (an unknown unit)")
+    return number, unit
+
+
 def _short(value, limit=40):
     text = repr(value)
     return text if len(text) <= limit else text[:limit - 3] + "..."

@@ -16,7 +16,6 @@ import numpy as np
 from ..errors import InputError
 from ..inertia import combine as combine_exact
 from ..inertia import combine_without_parallel_axis
-from ..errors import InputError
 from ..parameters import BenchmarkParameters
 from ..plausibility import warn_parameters, warn_rider
 from ..parts import body_properties
@@ -71,7 +70,8 @@ def combined_bodies(bicycle, rider=None, combine="exact", method="mesh", bicycle
     bodies = dict(bicycle_bodies or bicycle.bodies(method))
     merged = merge_rider(bodies, rider_bodies(rider, method) if rider is not None else {}, combine)
     if rider is not None:
-        warn_rider(body_properties(rider.parts, "exact").com, bicycle.geometry, bicycle.source, rider.name)
+        props = body_properties(rider.parts, "exact")
+        warn_rider(props.com, bicycle.geometry, bicycle.source, rider.name, props.mass)
     return merged
 
 

@@ -102,7 +102,7 @@ def parse_speeds(text, max_speeds=None):
     """``"start:stop:step"`` -> speed grid (m/s); InputError if malformed or over ``max_speeds``."""
     from ..errors import InputError, short
     from ..options import MAX_SPEED, MAX_SPEEDS, MIN_SPEED_STEP
-    from ..stability import speed_grid
+    from ..stability.analysis import speed_count, speed_grid
 
     limit = max_speeds or MAX_SPEEDS
     expected = (f"START:STOP:STEP in m/s with 0 <= START < STOP <= {MAX_SPEED:g}, "
@@ -113,7 +113,7 @@ def parse_speeds(text, max_speeds=None):
         raise InputError("--speeds", text, expected) from None
     if not (0 <= start < stop <= MAX_SPEED and MIN_SPEED_STEP <= step <= stop - start):
         raise InputError("--speeds", text, expected)
-    count = int(round((stop - start) / step)) + 1
+    count = speed_count(start, stop, step)
     if count > limit:
         raise InputError("--speeds", text, f"at most {limit} speeds, got {count} "
                                                       "(raise with --max-speeds)")

@@ -14,10 +14,17 @@ DEFAULT_SPEEDS = (0.0, 30.0, 0.05)
 """The thesis's speed grid: start, stop, step (m/s)."""
 
 
+def speed_count(start, stop, step):
+    """How many speeds ``start, start + step, ...`` lie within ``stop`` (m/s; a last step that
+    lands on ``stop`` to within 1e-9 of the count counts, one beyond it does not)."""
+    steps = (stop - start) / step
+    return int(np.floor(steps + 1e-9 * max(1.0, steps))) + 1
+
+
 def speed_grid(start=DEFAULT_SPEEDS[0], stop=DEFAULT_SPEEDS[1], step=DEFAULT_SPEEDS[2]):
-    """``start, start + step, ..., stop`` (m/s), rounded to 1e-12 so that 4.3 prints as 4.3."""
-    n = int(round((stop - start) / step)) + 1
-    return np.round(start + step * np.arange(n), 12)
+    """``start, start + step, ...`` up to ``stop`` (m/s; never beyond it), rounded to 1e-12 so
+    that 4.3 prints as 4.3."""
+    return np.round(start + step * np.arange(speed_count(start, stop, step)), 12)
 
 
 @dataclass(frozen=True)
