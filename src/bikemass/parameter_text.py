@@ -232,7 +232,11 @@ def _checked_extra(pt, name, expected, what, notes):
 
 def measured_parameters(pt, key=""):
     """:class:`MeasuredParameters` of a :class:`ParameterText` (see the module docstring); errors
-    name the keys below ``key`` (a YAML file's ``values``, say)."""
+    name the keys below ``key`` (a YAML file's ``values``, say).  A file of the rider's body alone
+    (BicycleParameters' ``riders/<Name>/Parameters/``: only ``mB xB yB zB IB..``) is refused as such."""
+    if set(pt.nominal) <= set(body_names("B")) | {"yB"}:
+        raise InputError(pt.source, "(file)", "a bicycle's parameters (w, c, lam, rR, ...); this holds a rider's "
+                                              "body B alone (a BicycleParameters rider file), which is no bicycle")
     values = {n: pt.nominal[n] for n in NAMES if n in pt.nominal}
     std = {n: pt.std[n] for n in NAMES if n in pt.nominal}
     notes = []
