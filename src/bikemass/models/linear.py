@@ -1,0 +1,228 @@
+"""The linear-model seam: a bicycle model linearised about the upright, straight run at speed v.
+
+Every model of bikemass (the Whipple bicycle of Meijaard et al. 2007, its quasi-static flexible
+rear frame, and the richer members of the family) is one :class:`LinearModel`: named states with
+units, named inputs, and the state-space matrices as polynomials in the forward speed ``v`` (m/s)::
+
+    x' = A(v) x + B(v) u,     A(v) = sum_k v**k A[k],     B(v) = sum_k v**k B[k]
+
+The first :attr:`LinearModel.n_dynamic` states are the dynamic ones (their block of ``A`` decides
+stability); the others (heading, lateral position) are kinematic: integrals of the dynamic states
+that never feed back into them, kept for outputs, time responses and the rider in the loop.
+
+A model with mechanical coordinates ``q`` (a second-order model)::
+
+    M q'' + C(v) q' + K(v) q = F u,      C(v) = sum_k v**k C[k],  K(v) = sum_k v**k K[k]
+
+keeps ``M, C, K, F`` as :class:`SecondOrder` beside its state-space form (``x = [q, q']`` first).
+Analyses (stability, transfer functions, responses) take a :class:`LinearModel` and nothing else.
+"""
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..frozen import readonly
+
+
+@dataclass(frozen=True)
+class Signal:
+    """A named quantity: a state, an input or an output (``Signal("roll-angle", "rad")``)."""
+
+    name: str
+    unit: str
+    description: str = ""
+
+
+def _coefficients(terms, shape):
+    """``terms`` (a sequence of arrays, coefficient of ``v**k`` at index ``k``) as one read-only array
+    of shape ``(d + 1, *shape)``; ``None`` entries are zero."""
+    out = np.zeros((max(len(terms), 1), *shape))
+    for k, t in enumerate(terms):
+        if t is not None:
+            out[k] = t
+    return readonly(out)
+
+
+def polynomial(coefficients, speed):
+    """``sum_k v**k coefficients[k]`` at ``speed`` (m/s): one speed -> shape ``coefficients.shape[1:]``,
+    an array of speeds (n,) -> ``(n, *coefficients.shape[1:])``."""
+    v = np.asarray(speed, dtype=float)
+    powers = v[..., None] ** np.arange(len(coefficients))
+    return np.tensordot(powers, coefficients, axes=(-1, 0))
+
+
+@dataclass(frozen=True, eq=False)
+class SecondOrder:
+    """``M q'' + C(v) q' + K(v) q = F u`` of a model's mechanical coordinates ``q``.
+
+    ``M`` (n, n); ``C`` and ``K`` (d + 1, n, n), coefficients of ``v**k``; ``F`` (n, m).  Units follow
+    the coordinates (kg m^2, N m s/rad, N m/rad for angles driven by torques).
+    """
+
+    coordinates: tuple
+    M: np.ndarray
+    C: np.ndarray
+    K: np.ndarray
+    F: np.ndarray
+
+    def damping(self, speed):
+        """``C(v)`` at ``speed`` (m/s)."""
+        return polynomial(self.C, speed)
+
+    def stiffness(self, speed):
+        """``K(v)`` at ``speed`` (m/s)."""
+        return polynomial(self.K, speed)
+
+
+@dataclass(frozen=True, eq=False)
+class LinearModel:
+    """One linear bicycle model: states, inputs, and ``A(v)``, ``B(v)`` as polynomials in speed.
+
+    Attributes
+    ----------
+    name : str
+        The model's name (``"whipple"``, ``"whipple+flexible-static"``, ...).
+    states : tuple of Signal
+        Every state, dynamic ones first.
+    n_dynamic : int
+        How many leading states are dynamic (the rest are kinematic integrators).
+    inputs : tuple of Signal
+        The inputs ``u`` (torques in N m).
+    A : numpy.ndarray of shape (d + 1, N, N)
+        ``A[k]`` multiplies ``v**k``; read-only.
+    B : numpy.ndarray of shape (d + 1, N, m)
+        ``B[k]`` multiplies ``v**k``; read-only.
+    mechanics : SecondOrder or None
+        ``M, C(v), K(v), F`` where the model has mechanical coordinates.
+    """
+
+    name: str
+    states: tuple
+    n_dynamic: int
+    inputs: tuple
+    A: np.ndarray
+    B: np.ndarray
+    mechanics: SecondOrder = field(default=None)
+
+    def __post_init__(self):
+        n, m = len(self.states), len(self.inputs)
+        if self.A.shape[1:] != (n, n) or self.B.shape[1:] != (n, m) or not 0 < self.n_dynamic <= n:
+            raise ValueError(f"model {self.name!r}: A {self.A.shape}, B {self.B.shape} do not fit "
+                             f"{n} states ({self.n_dynamic} dynamic) and {m} inputs")
+        if np.any(self.A[:, :self.n_dynamic, self.n_dynamic:]):
+            raise ValueError(f"model {self.name!r}: kinematic states feed back into the dynamic ones")
+
+    @property
+    def state_names(self):
+        """The states' names, in order."""
+        return tuple(s.name for s in self.states)
+
+    @property
+    def input_names(self):
+        """The inputs' names, in order."""
+        return tuple(s.name for s in self.inputs)
+
+    @property
+    def dynamic_states(self):
+        """The dynamic states (those whose block of ``A`` decides stability)."""
+        return self.states[:self.n_dynamic]
+
+    def state_index(self, name):
+        """Position of the state ``name``; ValueError naming the states otherwise."""
+        try:
+            return self.state_names.index(name)
+        except ValueError:
+            raise ValueError(f"model {self.name!r} has no state {name!r} "
+                             f"(states: {', '.join(self.state_names)})") from None
+
+    def input_index(self, name):
+        """Position of the input ``name``; ValueError naming the inputs otherwise."""
+        try:
+            return self.input_names.index(name)
+        except ValueError:
+            raise ValueError(f"model {self.name!r} has no input {name!r} "
+                             f"(inputs: {', '.join(self.input_names)})") from None
+
+    def state_matrix(self, speed):
+        """``A(v)``: shape (N, N) for one speed (m/s), (n, N, N) for an array of n speeds."""
+        return polynomial(self.A, speed)
+
+    def input_matrix(self, speed):
+        """``B(v)``: shape (N, m) for one speed (m/s), (n, N, m) for an array of n speeds."""
+        return polynomial(self.B, speed)
+
+    @property
+    def dynamic_coefficients(self):
+        """The dynamic block of ``A`` as coefficients (d + 1, n, n) of ``v**k``."""
+        n = self.n_dynamic
+        return self.A[:, :n, :n]
+
+    def dynamic_matrix(self, speed):
+        """The dynamic block of ``A(v)``: (n, n) for one speed, (k, n, n) for k speeds."""
+        return polynomial(self.dynamic_coefficients, speed)
+
+    def output_matrix(self, names=None):
+        """``C`` (p, N) selecting the states ``names`` (default: every state) as outputs."""
+        names = self.state_names if names is None else tuple(names)
+        C = np.zeros((len(names), len(self.states)))
+        for row, name in enumerate(names):
+            C[row, self.state_index(name)] = 1.0
+        return C
+
+    def state_space(self, speed, outputs=None):
+        """``(A, B, C, D)`` at one speed (m/s); ``C`` selects ``outputs`` (state names; default all)."""
+        C = self.output_matrix(outputs)
+        return self.state_matrix(speed), self.input_matrix(speed), C, np.zeros((len(C), len(self.inputs)))
+
+    def __repr__(self):
+        return (f"LinearModel({self.name!r}, states=({', '.join(self.state_names)}), "
+                f"inputs=({', '.join(self.input_names)}), degree={len(self.A) - 1})")
+
+
+def second_order_model(name, coordinates, rates, M, C, K, F, inputs, kinematics=()):
+    """A :class:`LinearModel` from ``M q'' + C(v) q' + K(v) q = F u`` and kinematic states.
+
+    Parameters
+    ----------
+    name : str
+        The model's name.
+    coordinates, rates : sequence of Signal
+        The states ``q`` and ``q'`` (same length n).
+    M : array_like (n, n)
+        Mass matrix; must be invertible.
+    C, K : sequence of array_like (n, n) or None
+        Coefficients of ``v**k`` of the damping and stiffness matrices (``None`` = zero).
+    F : array_like (n, m)
+        How the inputs enter the equations of motion.
+    inputs : sequence of Signal
+        The m inputs.
+    kinematics : sequence of (Signal, sequence of array_like)
+        Kinematic states ``z_j' = sum_k v**k r_jk . [q, q', z]``, each given by its Signal and the
+        coefficients ``r_jk`` (rows of length ``2 n + len(kinematics)``, zero on the dynamic block's
+        feedback: kinematic states must not feed back).
+
+    Returns
+    -------
+    LinearModel
+    """
+    M = np.asarray(M, dtype=float)
+    n = len(M)
+    F = np.asarray(F, dtype=float).reshape(n, len(inputs))
+    N = 2 * n + len(kinematics)
+    degree = max(len(C), len(K), 1, *(len(rows) for _, rows in kinematics)) - 1
+    mech = SecondOrder(tuple(coordinates), readonly(M), _coefficients(C, (n, n)), _coefficients(K, (n, n)),
+                       readonly(F))
+    Minv = np.linalg.inv(M)
+    A = np.zeros((degree + 1, N, N))
+    A[0, :n, n:2 * n] = np.eye(n)
+    A[:len(mech.K), n:2 * n, :n] = -Minv @ mech.K
+    A[:len(mech.C), n:2 * n, n:2 * n] = -Minv @ mech.C
+    for j, (_, rows) in enumerate(kinematics):
+        for k, row in enumerate(rows):
+            if row is not None:
+                A[k, 2 * n + j] = row
+    B = np.zeros((1, N, len(inputs)))
+    B[0, n:2 * n] = Minv @ F
+    states = (*coordinates, *rates, *(s for s, _ in kinematics))
+    return LinearModel(name, tuple(states), 2 * n, tuple(inputs), readonly(A), readonly(B), mech)
