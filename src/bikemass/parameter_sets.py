@@ -30,7 +30,7 @@ from types import MappingProxyType
 
 import numpy as np
 
-from .config import Node, load_yaml
+from .config import load_yaml
 from .errors import InputError, short
 from .inertia import MassProperties, combine
 from .parameter_text import (AXISYMMETRIC, LATERAL, SPLIT_BODIES, ParameterFileWarning, ParameterText,
@@ -224,19 +224,19 @@ def read_parameter_set(node):
                   "parameterization: with values:")
     if node.has("parameterization"):
         node.check_keys(required=("parameterization", "values"), optional=SET_KEYS)
-        values, meta = node["values"], node
+        values = node["values"]
         rider_given = node.get("rider")
         rider = False if rider_given.missing else rider_given.boolean()
         label = _text(node.get("parameters")) or _text(node.get("name"))
     else:
-        values, meta = node, node
+        values = node
         extra = FILE_KEYS if kind == BENCHMARK else ("name", "description", "source")
         values.check_keys(optional=_allowed(kind) + extra)
         rider = kind == BENCHMARK and node.get("rider_included", False).boolean()
         label = _text(node.get("name"))
     values.mapping()
     speed = values[SPEED_KEY].number("speed", nonnegative=True) if values.has(SPEED_KEY) else None
-    description = _text(meta.get("description"))
+    description = _text(node.get("description"))
     if kind == BENCHMARK:
         measured = _benchmark(values, exclude=FILE_KEYS if values is node else ())
         parameters, notes, read = measured.parameters, measured.notes, measured.parameters.to_dict()
@@ -355,7 +355,7 @@ def _principal(p, values):
     drawn = [n for n in PRINCIPAL_DRAWING if n in p]
     if drawn:
         notes.append(f"not used (the rider's drawing only): {', '.join(drawn)}")
-    return principal_to_benchmark(p, values), tuple(notes)
+    return principal_to_benchmark(p), tuple(notes)
 
 
 def principal_inertia(mass, kaa, kyy, kbb, alpha):
@@ -371,7 +371,7 @@ def principal_inertia(mass, kaa, kyy, kbb, alpha):
                      [xz, 0.0, Iaa * sa ** 2 + Ibb * ca ** 2]])
 
 
-def principal_to_benchmark(p, node=None):
+def principal_to_benchmark(p):
     """:class:`~bikemass.parameters.BenchmarkParameters` of principal parameters ``p`` (SI
     mapping): the rear frame B is the rear frame D and the rider P combined (parallel-axis
     theorem), the front frame H and the wheels follow from their radii of gyration."""

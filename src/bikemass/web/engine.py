@@ -69,7 +69,6 @@ def _recorded(function, maxsize):
         for message, category in caught:
             warnings.warn(message, category, stacklevel=2)
         return value
-    cached.cache_clear = compute.cache_clear
     return cached
 
 
