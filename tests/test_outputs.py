@@ -66,7 +66,7 @@ def test_a_full_disk_is_one_line_naming_the_file_and_leaves_the_old_one(tmp_path
     the file that was there."""
     import errno
 
-    from bikemass import output
+    from bikemass.core import output
     out = tmp_path / "params.yaml"
     out.write_text("old\n")
     real = output.os.fdopen
