@@ -15,8 +15,8 @@ from ..core.choices import RIGID
 from ..core.errors import InputTypeError
 from ..scenario.catalog import stiffness_matrix
 from ..core.errors import InputError
-from .engine.stability import speed_grid
-from .engine.modes import check_speeds
+from ..core.limits import MAX_SPEEDS
+from .engine.speeds import speed_count, speed_grid, speed_values
 from ..models.linear import LinearModel
 from ..models.whipple import whipple_model
 from .engine.modes import follow_modes
@@ -62,26 +62,38 @@ def _stiffness(S):
     return stiffness_matrix(S)
 
 
-def speeds(start=0.0, stop=30.0, step=0.05):
-    """The speed grid ``start, start + step, ..., stop`` (m/s), shape (n,).
+def speeds(start=0.0, stop=30.0, step=0.05, max_speeds=MAX_SPEEDS):
+    """The speed grid ``start, start + step, ...`` up to ``stop`` (m/s, never beyond), shape (n,).
+
+    Parameters
+    ----------
+    start, stop, step : float
+        First speed, last speed at most, and step (m/s).
+    max_speeds : int
+        Most speeds (default 100000, as the command line's ``--max-speeds``).
+
+    Returns
+    -------
+    numpy.ndarray of shape (n,)
 
     Raises
     ------
     InputError
-        Unless ``0 <= start < stop``, ``step > 0`` and at most 100000 speeds.
+        Unless ``0 <= start < stop``, ``step > 0`` and at most ``max_speeds`` speeds.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> bm.speeds(0, 10, 2.5).tolist()
+    [0.0, 2.5, 5.0, 7.5, 10.0]
     """
     if not all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in (start, stop, step)):
         raise InputError("speeds", f"{start!r}:{stop!r}:{step!r}", "start, stop and step as numbers (m/s)")
-    if not (0 <= start < stop and step > 0 and (stop - start) / step <= 1e5):
-        raise InputError("speeds", f"{start}:{stop}:{step}", "speeds need 0 <= start < stop, step > 0 and at most 100000 points "
-                         f"(m/s), got {start}:{stop}:{step}")
+    if not (0 <= start < stop < float("inf") and step > 0 and (stop - start) / step < max_speeds
+            and speed_count(start, stop, step) <= max_speeds):
+        raise InputError("speeds", f"{start}:{stop}:{step}", f"speeds need 0 <= start < stop, step > 0 and at most "
+                         f"{max_speeds} points (m/s), got {start}:{stop}:{step}")
     return speed_grid(start, stop, step)
-
-
-def _speeds(values):
-    if values is None:
-        return speeds()
-    return check_speeds(values)
 
 
 def linear_model(params, stiffness=None):
@@ -111,7 +123,7 @@ def linear_model(params, stiffness=None):
     return whipple_model(check_parameters(params, "params"), _stiffness(stiffness))
 
 
-def eigenvalues(params, stiffness=None, speeds=None):
+def eigenvalues(params, stiffness=None, speeds=None, max_speeds=MAX_SPEEDS):
     """Eigenvalues over speed, followed across speed and named.
 
     Parameters
@@ -120,6 +132,9 @@ def eigenvalues(params, stiffness=None, speeds=None):
         As for :func:`linear_model`.
     speeds : array_like of shape (n,), optional
         Increasing speeds >= 0 (m/s); default 0..30 m/s in 0.05 m/s steps.
+    max_speeds : int
+        Most speeds taken (default 100000, as the command line's ``--max-speeds``); more is an
+        InputError before any work.
 
     Returns
     -------
@@ -128,10 +143,10 @@ def eigenvalues(params, stiffness=None, speeds=None):
         ``.eigenvalues`` (n, m) complex 1/s, ``.eigenvectors`` (n, N, m); ``modes["capsize"]``
         is one column.  Arrays are read-only.
     """
-    return follow_modes(linear_model(params, stiffness), _speeds(speeds))
+    return follow_modes(linear_model(params, stiffness), speed_values(speeds, max_speeds))
 
 
-def stability(params, stiffness=None, speeds=None, marginal=DEFAULT_MARGINAL):
+def stability(params, stiffness=None, speeds=None, marginal=DEFAULT_MARGINAL, max_speeds=MAX_SPEEDS):
     """Eigenvalues, critical speeds and stable speed ranges of a bicycle.
 
     Parameters
@@ -145,6 +160,9 @@ def stability(params, stiffness=None, speeds=None, marginal=DEFAULT_MARGINAL):
         Critical speeds are exact (found without a grid) on the grid's span.
     marginal : float
         Modulus (rad/s) below which an unstable eigenvalue counts as marginally stable.
+    max_speeds : int
+        Most speeds taken (default 100000, as the command line's ``--max-speeds``); more is an
+        InputError before any work.
 
     Returns
     -------
@@ -162,4 +180,4 @@ def stability(params, stiffness=None, speeds=None, marginal=DEFAULT_MARGINAL):
     if isinstance(marginal, bool) or not isinstance(marginal, (int, float)) or not 0 < marginal < float("inf"):
         raise InputError("marginal", marginal, "a positive finite modulus in rad/s")
     S = _stiffness(stiffness)
-    return analyse(linear_model(params, S), _speeds(speeds), marginal, S)
+    return analyse(linear_model(params, S), speed_values(speeds, max_speeds), marginal, S)
