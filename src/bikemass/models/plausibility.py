@@ -137,7 +137,8 @@ def check_parameters(params, source, prefix=""):
                              f"got {values[f'I{body}yy']:.6g} kg m^2")
     for body in "BH":
         xx, zz, xz = values[f"I{body}xx"], values[f"I{body}zz"], values[f"I{body}xz"]
-        if xx * zz - xz * xz < -RELATIVE_TOLERANCE * max(xx, zz, abs(xz)) ** 2:
+        scale = max(xx, zz, abs(xz))
+        if xx * zz - xz * xz < -RELATIVE_TOLERANCE * (scale * scale):      # not ** 2: no OverflowError
             raise InputError(source, f"{prefix}I{body}xz", f"an inertia tensor with principal moments >= 0 (I{body}xz^2 <= "
                              f"I{body}xx I{body}zz), got I{body}xx {xx:.6g}, I{body}zz {zz:.6g}, I{body}xz {xz:.6g} kg m^2")
     return params
@@ -158,24 +159,28 @@ def refused_parameters(columns, rows):
     Returns
     -------
     numpy.ndarray of bool, shape (B,)
-        True where a value is not finite, a length, mass or moment is not positive, ``lam`` is
-        outside (0, pi/2) or the B or H inertia tensor is not positive semi-definite: the tests
-        of :func:`check_parameters`, in the same float64 arithmetic, so a row is refused here
-        exactly when that function refuses it (which then says why).
+        True where :func:`check_parameters` raises: its tests, in the same order-free float64
+        arithmetic, so a row is refused here exactly when that function refuses it (which then
+        says why).
     """
     refused = np.zeros(rows, dtype=bool)
-    columns = {key: np.asarray(columns[key], dtype=float) for key in NAMES}
+    v = {key: np.asarray(columns[key], dtype=float) for key in NAMES}
     for key in NAMES:
-        value = columns[key]
-        refused |= ~np.isfinite(value)
-        if key not in SIGNED_PARAMETERS:
-            refused |= value <= 0
-    lam = columns["lam"]
-    refused |= ~((lam > 0) & (lam < math.pi / 2))
+        refused |= ~np.isfinite(v[key])
+        if key in POSITIVE:
+            refused |= v[key] <= 0
+        elif key in NONNEGATIVE:
+            refused |= v[key] < 0
+    refused |= ~((-math.pi / 2 < v["lam"]) & (v["lam"] < math.pi / 2))
+    for body in "RF":
+        massless = v[f"m{body}"] == 0
+        refused |= massless & ((v[f"I{body}xx"] > 0) | (v[f"I{body}yy"] > 0))
+        refused |= (v[f"r{body}"] == 0) & (v[f"I{body}yy"] > 0)
     for body in "BH":
-        xx, zz, xz = columns[f"I{body}xx"], columns[f"I{body}zz"], columns[f"I{body}xz"]
+        xx, zz, xz = v[f"I{body}xx"], v[f"I{body}zz"], v[f"I{body}xz"]
+        scale = np.maximum(np.maximum(xx, zz), np.abs(xz))
         with np.errstate(invalid="ignore", over="ignore"):
-            refused |= xx * zz - xz * xz < -RELATIVE_TOLERANCE * np.maximum(xx, zz) ** 2
+            refused |= xx * zz - xz * xz < -RELATIVE_TOLERANCE * (scale * scale)
     return refused
 
 

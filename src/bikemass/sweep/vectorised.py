@@ -103,6 +103,11 @@ def _speeds(columns, S, count, max_speed):
     """The (B,) mask of the rows of ``count`` parameter sets given as ``columns`` (arrays of B or
     floats) with frame stiffness ``S`` that could be computed, and their :data:`SPEEDS` (a dict
     of arrays, one value per computed row)."""
+    with np.errstate(all="ignore"):          # a row that overflows is not finite: the reference takes it
+        return _finite_speeds(columns, S, count, max_speed)
+
+
+def _finite_speeds(columns, S, count, max_speed):
     m = canonical_matrices(SimpleNamespace(**columns))
     shape = (count, 2, 2)
     M, C1, K2 = (np.broadcast_to(x, shape) for x in (m.M, m.C1, m.K2))
