@@ -168,10 +168,11 @@ def test_a_sweep_with_some_rows_refused_warns_and_keeps_them(tmp_path):
 def test_a_resumed_sweep_recomputes_a_damaged_chunk_to_the_same_rows(tmp_path, capsys):
     from bikemass.cli.main import main
     spec = _spec(tmp_path, "bike: benchmark\nvary:\n  c: [0.07, 0.08, 0.09]\nchunk: 1\n")
-    fresh = run_sweep(spec, tmp_path / "out")
-    first = tmp_path / "out" / "chunks" / "000000000-000000001.json"
+    fresh = list(run_sweep(spec, tmp_path / "out"))
+    first = tmp_path / "out" / "chunks" / "000000000-000000001.csv"
     first.write_text(first.read_text()[:15])                            # cut short, as by a full disk
-    (tmp_path / "out" / "chunks" / "000000001-000000002.json").write_text('[{"weave_speed": "x"}]')
+    second = tmp_path / "out" / "chunks" / "000000001-000000002.csv"
+    second.write_text(second.read_text().replace(",", ",x", 2))         # a number that is not one
     assert main(["sweep", str(spec), "--out", str(tmp_path / "out"), "--quiet"]) == 0   # its own folder: resumed
     again = run_sweep(spec, tmp_path / "out")
     assert again == fresh
@@ -180,7 +181,7 @@ def test_a_resumed_sweep_recomputes_a_damaged_chunk_to_the_same_rows(tmp_path, c
 def test_a_folder_with_chunks_but_no_record_is_not_resumed_from_python(tmp_path):
     spec = _spec(tmp_path, "bike: benchmark\nvary:\n  c: [0.08]\n")
     (tmp_path / "out" / "chunks").mkdir(parents=True)
-    (tmp_path / "out" / "chunks" / "000000000-000000001.json").write_text("[]")
+    (tmp_path / "out" / "chunks" / "000000000-000000001.csv").write_text("")
     with pytest.raises(InputError, match="no sweep.json, so its chunks could be another sweep's"):
         run_sweep(spec, tmp_path / "out")
 

@@ -87,11 +87,11 @@ def test_resume_recomputes_only_missing_chunks(tmp_path):
     from bikemass.sweep import read_spec, run_sweep
     spec = read_spec(_spec(tmp_path, GRID))
     out = tmp_path / "o"
-    first = run_sweep(spec, out)
+    first = list(run_sweep(spec, out))
     assert sorted(p.name for p in (out / "chunks").iterdir()) == [
-        "000000000-000000005.json", "000000005-000000010.json", "000000010-000000012.json"]
+        "000000000-000000005.csv", "000000005-000000010.csv", "000000010-000000012.csv"]
     table = (out / "results.csv").read_bytes()
-    (out / "chunks" / "000000005-000000010.json").unlink()
+    (out / "chunks" / "000000005-000000010.csv").unlink()
     (out / "results.csv").unlink()
     done = []
     second = run_sweep(spec, out, progress=done.append)
@@ -108,8 +108,8 @@ def test_resume_with_another_chunk_size_and_engine(tmp_path):
 
     from bikemass.sweep import read_spec, run_sweep
     out = tmp_path / "o"
-    first = run_sweep(read_spec(_spec(tmp_path, GRID)), out)
-    for name in ("000000000-000000005.json", "000000010-000000012.json"):
+    first = list(run_sweep(read_spec(_spec(tmp_path, GRID)), out))
+    for name in ("000000000-000000005.csv", "000000010-000000012.csv"):
         (out / "chunks" / name).unlink()
     done = []
     with LocalCluster(n_workers=2, threads_per_worker=1, processes=False, protocol="tcp", host="127.0.0.1",
@@ -118,7 +118,7 @@ def test_resume_with_another_chunk_size_and_engine(tmp_path):
                            scheduler=cluster.scheduler_address, progress=done.append)
     assert second == first and done[0] == 5 and sum(done) == 12
     names = sorted(p.name for p in (out / "chunks").iterdir())
-    assert "000000005-000000010.json" in names and len(names) > 3
+    assert "000000005-000000010.csv" in names and len(names) > 3
 
 
 def test_a_client_is_used_and_left_open(tmp_path):
@@ -188,10 +188,14 @@ def test_table_cells_read_back(tmp_path):
     """A cell with a comma, quote, newline or carriage return reads back as one cell."""
     import io
 
-    from bikemass.sweep.table import csv_lines
+    from bikemass.sweep.table import NUMBERS, chunk_text, read_chunk
+    from bikemass.sweep.table import Outcomes
     odd = ['a,b', 'say "x"', "two\nlines", "cr\rhere", "née"]
-    lines = csv_lines(["k"], [{"k": v} for v in odd], [{}] * len(odd))
-    assert [row[0] for row in csv.reader(io.StringIO("\n".join(lines) + "\n"))] == odd
+    outcomes = Outcomes({k: np.full(len(odd), np.nan) for k in NUMBERS}, odd)
+    text = chunk_text(["k"], {"k": odd}, outcomes)
+    assert [row[0] for row in csv.reader(io.StringIO(text, newline=""))] == odd
+    back = read_chunk(text, ["k"], (), len(odd))
+    assert back["k"] == odd and back["error"] == odd and back["weave_speed"] == [None] * len(odd)
 
 
 def test_a_number_among_stiffness_choices_is_refused(tmp_path, capsys):
@@ -208,21 +212,23 @@ def test_chunk_sizes():
     """Default: 20 chunks in this process; on Dask equal chunks, one per worker thread for
     parameter-only sweeps and 4 otherwise, never more than 2000 configurations; the spec's
     chunk wins; missing ranges are cut at that size."""
-    from bikemass.sweep.run import _missing_chunks, chunk_size, parameters_only
+    from bikemass.sweep.layout import Kept, missing_ranges, split
+    from bikemass.sweep.run import chunk_size
     from bikemass.sweep.spec import read_spec
+    from bikemass.sweep.vectorised import takes
     assert chunk_size(2050) == 103 and chunk_size(2050, 2, fixed=50) == 50
     assert chunk_size(2000, 0, cheap=True) == 100                    # a cluster with no worker yet
     assert chunk_size(2050, 2) == 257 and chunk_size(2050, 1) == 513 and chunk_size(3, 8) == 1
-    assert chunk_size(2050, 2, cheap=True) == 1025 and chunk_size(2050, 1, cheap=True) == 1025
-    assert chunk_size(4100, 2, cheap=True) == 1025 and chunk_size(10 ** 6, 2, cheap=True) == 2000
+    assert chunk_size(2050, 2, cheap=True) == 1025 and chunk_size(2050, 1, cheap=True) == 2050
+    assert chunk_size(10 ** 6, 2, cheap=True) == 100_000 and chunk_size(10 ** 7, None, cheap=True) == 100_000
     assert chunk_size(10 ** 6, 2) == 2000 and chunk_size(10 ** 6 + 1, 2) == 1993
     examples = Path(__file__).resolve().parents[1] / "examples" / "sweeps"
-    assert parameters_only(read_spec(str(examples / "benchmark_c_lam.yaml")))
-    assert not parameters_only(read_spec(str(examples / "jamis_torso_lean.yaml")))
-    assert not parameters_only(read_spec(str(examples / "jamis_walls.yaml")))
-    done = [False] * 3 + [True] * 2 + [False] * 6
-    assert _missing_chunks(done, 11, 4) == [(0, 3), (5, 9), (9, 11)]
-    assert _missing_chunks([True] * 4, 4, 2) == []
+    assert takes(read_spec(str(examples / "benchmark_c_lam.yaml")).keys)
+    assert not takes(read_spec(str(examples / "jamis_torso_lean.yaml")).keys)
+    assert not takes(read_spec(str(examples / "jamis_walls.yaml")).keys)
+    kept = [Kept(3, 5, 0, None)]
+    assert split(missing_ranges(kept, 11), 4) == [(0, 3), (5, 9), (9, 11)]
+    assert split(missing_ranges([Kept(0, 4, 0, None)], 4), 2) == []
 
 
 def test_latin_hypercube_and_sobol_indices(tmp_path, capsys):
@@ -332,7 +338,7 @@ def test_a_poses_own_bicycle_is_read_once(tmp_path, monkeypatch):
     ("bike: benchmark\nvary: {c: {from: 1, to: 0, num: 3}}\n", "vary.c"),
     ("bike: benchmark\nvary: {c: {from: 0, to: 1}}\n", "vary.c.num"),
     ("bike: benchmark\nvary: {c: [0.1]}\nsample: {method: magic, n: 3}\n", "sample.method"),
-    ("bike: benchmark\nvary: {c: {from: 0, to: 1, num: 100000}, lam: {from: 0, to: 1, num: 1000}}\n", "vary"),
+    ("bike: benchmark\nvary: {c: {from: 0, to: 1, num: 100000}, lam: {from: 0, to: 1, num: 1001}}\n", "vary"),
     ("bike: benchmark\nvary: {c: [0.1]}\nextra: 1\n", "extra"),
     ("bike: jamis\nvary: {sections.nope.wall: [0.001]}\n", "sections.nope.wall"),
     ("bike: benchmark\nvary: {rider.chain.torso_lean: [10]}\n", "rider.chain.torso_lean"),

@@ -9,6 +9,7 @@ import threading
 from pathlib import Path
 from types import SimpleNamespace
 
+import numpy as np
 import pytest
 import scipy.sparse.linalg  # noqa: F401  (scipy's BLAS loaded before the fixture looks)
 from threadpoolctl import threadpool_info, threadpool_limits
@@ -18,6 +19,7 @@ from bikemass.fe import modes as fe_modes
 from bikemass.study import pipeline
 from bikemass.study.parallel import executor
 from bikemass.sweep import evaluate as sweep_evaluate
+from bikemass.sweep.table import NUMBERS
 from bikemass.core.threads import one_blas_thread
 from thesis_frames import jamis_structure
 
@@ -127,8 +129,16 @@ def test_the_study_starts_its_workers_inside_the_limit(monkeypatch):
     assert len(seen) == 2 and all(set(s) == {1} for s in seen)
 
 
-def test_sweep_chunks_are_evaluated_inside_the_limit(monkeypatch):
+def test_sweep_chunks_are_evaluated_inside_the_limit(monkeypatch, tmp_path):
+    from bikemass.sweep.spec import read_spec
+    from bikemass.sweep.table import Outcomes
+    seen = []
+
+    def outcomes(model, spec, columns, count):
+        seen.append(blas_threads())
+        return Outcomes({k: np.full(count, np.nan) for k in NUMBERS}, [None] * count)
     monkeypatch.setattr(sweep_evaluate, "_model", lambda setup: None)
-    monkeypatch.setattr(sweep_evaluate, "evaluate", lambda model, changes, max_speed: blas_threads())
-    rows = sweep_evaluate.evaluate_chunk(None, sweep_evaluate.Chunk(0, [{}, {}]), 10.0)
-    assert len(rows) == 2 and all(set(r) == {1} for r in rows)
+    monkeypatch.setattr(sweep_evaluate, "evaluate_outcomes", outcomes)
+    (tmp_path / "s.yaml").write_text("bike: benchmark\nvary: {c: [0.07, 0.08]}\n")
+    finished = sweep_evaluate.finish_chunk(read_spec(str(tmp_path / "s.yaml")), sweep_evaluate.Chunk(0, 2))
+    assert finished.text.count("\n") == 2 and len(seen) == 1 and set(seen[0]) == {1}

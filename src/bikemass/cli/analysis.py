@@ -1,5 +1,6 @@
 """``bikemass sensitivity``, ``bikemass uncertainty`` and ``bikemass sweep``."""
 
+import sys
 from pathlib import Path
 
 from ..core.errors import InputError
@@ -297,7 +298,9 @@ def run_sweep_command(args):
         from ..sweep.sobol import sobol_indices
         write_atomic(out / "sobol.json", dumps(sobol_indices(rows, spec), "json"))
     if not args.quiet:
-        errors = sum(1 for r in rows if r["error"])
+        for note in rows.notes:
+            print(f"bikemass: note: {note}", file=sys.stderr)
+        errors = rows.refused
         print(f"{len(rows)} configurations -> {out / 'results.csv'}"
               + (f" ({errors} refused by the model: see the error column)" if errors else ""))
     return 0

@@ -216,7 +216,8 @@ def table(headers, rows, floatfmt="{:.3f}"):
 
 
 def write_atomic(path, data):
-    """Write ``data`` (str or bytes) to ``path`` via a temporary file and rename: never half-written.
+    """Write ``data`` (str or bytes, or a function that writes the content to the binary file it
+    is given: a large file streamed) to ``path`` via a temporary file and rename: never half-written.
 
     An existing file keeps its permission bits; a symbolic link keeps pointing where it did and
     its target is replaced.  A file read as input in this run (:func:`bikemass.core.gate.was_read`)
@@ -228,18 +229,22 @@ def write_atomic(path, data):
     target = Path(os.path.realpath(path))
     if was_read(target):
         raise InputError(path, "(output)", "a file other than the command's input (it would be overwritten)")
-    mode = "wb" if isinstance(data, bytes) else "w"
+    streamed = callable(data)
+    mode = "wb" if streamed or isinstance(data, bytes) else "w"
     try:
         target.parent.mkdir(parents=True, exist_ok=True)
         fd, tmp = tempfile.mkstemp(dir=target.parent, prefix=f".{target.name}.", suffix=".tmp")
     except OSError as exc:
         raise InputError(path, "(output)", f"a file in a writable folder ({exc.strerror})") from None
-    with deferred():                     # a stop signal waits the few ms until the file is in place
+    # a stop signal waits until the file is in place (a streamed one: only for the rename; a stop
+    # while it is written removes the temporary file)
+    with contextlib.nullcontext() if streamed else deferred():
         try:
             with os.fdopen(fd, mode) as fh:
-                fh.write(data)
-            os.chmod(tmp, _mode_for(target))
-            os.replace(tmp, target)
+                data(fh) if streamed else fh.write(data)
+            with deferred():
+                os.chmod(tmp, _mode_for(target))
+                os.replace(tmp, target)
         except BaseException as exc:
             with contextlib.suppress(OSError):
                 os.unlink(tmp)

@@ -1,4 +1,11 @@
-"""One chunk of configurations -> result rows.  Runs in the caller's process or on a Dask worker.
+"""One chunk of configurations -> its lines of the results table.  Runs in the caller's process or
+on a Dask worker.
+
+A chunk is an index range of the spec's configurations; the worker makes the configurations
+itself (:meth:`~bikemass.sweep.spec.SweepSpec.columns`), so a task carries the spec and two
+numbers whatever its size.  Configurations that change only benchmark parameters (and the
+stiffness choice) are evaluated as arrays (:mod:`bikemass.sweep.vectorised`); any other, one
+by one (:func:`evaluate`, the reference the array path is tested against).
 
 The :class:`~bikemass.scenario.inputs.Model` (parsed YAML, built bicycles, riders and
 stiffnesses) lives as long as the process and is shared by every chunk of the same sweep.
@@ -6,37 +13,43 @@ BLAS runs on one thread (the worker, not the library, is the unit of parallelism
 :func:`bikemass.core.threads.one_blas_thread`.
 """
 
-import json
 import pickle
+from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.errors import InputError
-from ..scenario.inputs import Model
 from ..analysis.engine.critical import critical_speeds
-from ..models.whipple import whipple_model
+from ..core.errors import InputError
 from ..core.threads import one_blas_thread
-from .table import csv_lines
+from ..models.whipple import whipple_model
+from ..scenario.inputs import Model
+from .table import NUMBERS, OUTPUTS, Outcomes, chunk_text
+from .vectorised import evaluate_columns, takes
 
-OUTPUTS = ("weave_speed", "capsize_speed", "stable_from", "stable_to", "total_mass", "error")
 _MODELS = {}
 
 
+@dataclass(frozen=True)
 class Chunk:
-    """Configurations ``start .. stop - 1`` of a sweep (a list of ``{key: value}``; ``units``:
-    ``{key: unit}`` of the values that reach the model as ``"<number> <unit>"``).
+    """Configurations ``start .. stop - 1`` of a sweep."""
 
-    A plain object rather than a list, so Dask ships it as one pickled value instead of
-    walking every configuration of it while building the task graph."""
-
-    __slots__ = ("start", "configurations", "units")
-
-    def __init__(self, start, configurations, units=None):
-        self.start, self.configurations, self.units = start, configurations, units or {}
+    start: int
+    stop: int
 
     @property
-    def stop(self):
-        return self.start + len(self.configurations)
+    def size(self):
+        return self.stop - self.start
+
+
+@dataclass(frozen=True)
+class Finished:
+    """What a computed chunk leaves: ``text`` (its lines of ``results.csv``), the number of
+    configurations the model ``refused`` and the first refusal ``(index, reason)`` or ``None``."""
+
+    chunk: Chunk
+    text: str
+    refused: int
+    first_refusal: tuple
 
 
 def _model(setup):
@@ -45,6 +58,11 @@ def _model(setup):
         _MODELS.clear()
         _MODELS[setup] = Model(bike, rider, stiffness, combine, origin=source)
     return _MODELS[setup]
+
+
+def setup_of(spec):
+    """The model a spec's configurations change: ``(bike, rider, stiffness, combine, source)``."""
+    return (spec.bike, spec.rider, spec.stiffness, spec.combine, spec.source)
 
 
 def evaluate(model, changes, max_speed):
@@ -56,33 +74,40 @@ def evaluate(model, changes, max_speed):
     except (InputError, ValueError, np.linalg.LinAlgError) as exc:
         return {**{k: None for k in OUTPUTS}, "error": str(exc).replace("\n", " ")}
     values = (found.weave_speed, found.capsize_speed, found.stable_from, found.stable_to, p.mR + p.mB + p.mH + p.mF)
-    # plain floats: a row kept in memory writes the same bytes as one read back from a chunk file
     return {**dict(zip(OUTPUTS, (None if x is None else float(x) for x in values))), "error": None}
 
 
-def evaluate_chunk(setup, chunk, max_speed):
-    """Rows for the configurations of a :class:`Chunk`; ``setup`` = (bike, rider, stiffness,
-    combine, spec source)."""
-    model = _model(setup)
-    units = chunk.units
+def _with_units(changes, units):
+    """A configuration's values as the model reads them: ``"<number> <unit>"`` for a value given with a unit."""
+    return {k: f"{v!r} {units[k]}" if k in units else v for k, v in changes.items()}
+
+
+def evaluate_outcomes(model, spec, columns, count):
+    """:class:`~bikemass.sweep.vectorised.Outcomes` of ``count`` configurations given as ``columns``."""
+    units = spec.units
+    reference = lambda c: evaluate(model, _with_units(c, units), spec.max_speed)     # noqa: E731
+    if takes(spec.keys):                 # parameters are SI, never given with a unit
+        return evaluate_columns(model, columns, count, spec.max_speed, reference)
+    rows = [reference({k: columns[k][i] for k in spec.keys}) for i in range(count)]
+    values = {k: np.array([np.nan if r[k] is None else r[k] for r in rows], dtype=float) for k in NUMBERS}
+    return Outcomes(values, [r["error"] for r in rows])
+
+
+def finish_chunk(spec, chunk):
+    """:class:`Finished` of a :class:`Chunk` of ``spec``: computed and formatted where it runs
+    (formatting on the workers keeps the one process that gathers the chunks from formatting
+    every row itself)."""
+    columns = spec.columns(chunk.start, chunk.stop)
     with one_blas_thread():
-        return [evaluate(model, {k: f"{v!r} {units[k]}" if k in units else v for k, v in c.items()}, max_speed)
-                for c in chunk.configurations]
+        outcomes = evaluate_outcomes(_model(setup_of(spec)), spec, columns, chunk.size)
+    refused = [i for i, e in enumerate(outcomes.errors) if e is not None]
+    first = (chunk.start + refused[0], outcomes.errors[refused[0]]) if refused else None
+    return Finished(chunk, chunk_text(spec.keys, columns, outcomes), len(refused), first)
 
 
-def finish_chunk(setup, chunk, max_speed, keys):
-    """Everything a finished :class:`Chunk` leaves, made where it was computed: its result rows,
-    the text of its chunk file (JSON) and its lines of ``results.csv``
-    (:func:`bikemass.sweep.table.csv_lines`; ``keys`` = the varied keys).  Formatting on the
-    workers keeps the one process that gathers the chunks from formatting every row itself."""
-    rows = evaluate_chunk(setup, chunk, max_speed)
-    return rows, json.dumps(rows), csv_lines(keys, chunk.configurations, rows)
-
-
-def finish_chunk_pickled(setup, chunk, max_speed, keys):
+def finish_chunk_pickled(spec, chunk):
     """:func:`finish_chunk` as one pickle (bytes): what a Dask task returns.  Dask sends a
-    returned list of dicts row by row (a pickle and a frame each, about 45 us per row on the
-    worker's event-loop thread, which takes the GIL from the next chunk's computation: one
-    worker ran about 1.5x slower than a plain process); bytes go as one frame.  Dask pickles
-    every task result anyway, so this trusts the workers no more than before."""
-    return pickle.dumps(finish_chunk(setup, chunk, max_speed, keys), protocol=pickle.HIGHEST_PROTOCOL)
+    returned structure piece by piece on the worker's event-loop thread, which takes the GIL
+    from the next chunk's computation; bytes go as one frame.  Dask pickles every task result
+    anyway, so this trusts the workers no more than before."""
+    return pickle.dumps(finish_chunk(spec, chunk), protocol=pickle.HIGHEST_PROTOCOL)

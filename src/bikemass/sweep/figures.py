@@ -1,35 +1,57 @@
-"""Figures of a sweep: heat maps over two varied keys, lines over one, scatter for samples."""
+"""Figures of a sweep: heat maps over two varied keys, lines over one, scatter for samples.
+
+Every figure is drawn from columns (arrays), so a sweep of a million rows is drawn in a few
+seconds from its :class:`~bikemass.sweep.result.SweepResult` (a plain list of row dicts works
+too).
+"""
 
 import numpy as np
 from matplotlib.figure import Figure
 
+from .layout import numeric_keys
+
 SPEED_COLUMNS = ("weave_speed", "capsize_speed")
 
 
-def _column(rows, key):
-    return np.array([np.nan if r.get(key) is None else float(r[key]) for r in rows])
+def _prefetch(rows, spec):
+    """Read every column a figure draws from in one pass (a :class:`SweepResult` keeps them)."""
+    if hasattr(rows, "columns"):
+        rows.columns([*spec.keys, *SPEED_COLUMNS])
 
 
-def _numeric(rows, key):
-    return all(isinstance(r[key], (int, float)) for r in rows)
+def _column(rows, key, numeric=True):
+    """Column ``key`` of ``rows``: a float array (``nan`` for none) if ``numeric``, else an object array."""
+    if hasattr(rows, "column"):
+        values = rows.column(key)
+    else:
+        values = [r.get(key) for r in rows]
+    if numeric:
+        return np.array([np.nan if v is None else v for v in values], dtype=float) if isinstance(values, list) \
+            else values
+    out = np.empty(len(values), dtype=object)
+    out[:] = list(values)
+    return out
 
 
 def heatmap_figure(rows, spec, size=None):
     """Weave and capsize speed over the grid of the first two varied keys (others at their first value;
     a value listed twice is drawn once, from its first row)."""
     kx, ky = spec.keys[:2]
-    xs, ys = (sorted(set(v.grid())) for v in spec.variables[:2])    # a value listed twice is one column
-    first = {v.key: v.grid()[0] for v in spec.variables[2:]}
-    cells = {}
-    for r in rows:
-        if all(r[k] == v for k, v in first.items()):
-            cells.setdefault((r[kx], r[ky]), r)
+    xs, ys = (np.array(sorted(set(v.grid())), dtype=float) for v in spec.variables[:2])
+    numeric = numeric_keys(spec)
+    pick = np.ones(len(rows), dtype=bool)
+    for v in spec.variables[2:]:
+        pick &= _column(rows, v.key, v.key in numeric) == v.grid()[0]
+    ix = np.searchsorted(xs, _column(rows, kx)[pick])
+    iy = np.searchsorted(ys, _column(rows, ky)[pick])
+    cell = iy * len(xs) + ix
+    _, first = np.unique(cell, return_index=True)                   # a repeated value: its first row
     fig = Figure(figsize=size or (11, 4.5), layout="constrained")
     axes = fig.subplots(1, 2)
     for ax, col in zip(axes, SPEED_COLUMNS):
-        z = np.array([[np.nan if cells[x, y].get(col) is None else float(cells[x, y][col]) for x in xs]
-                      for y in ys])
-        mesh = ax.pcolormesh(xs, ys, z, shading="nearest", cmap="viridis")
+        z = np.full(len(xs) * len(ys), np.nan)
+        z[cell[first]] = _column(rows, col)[pick][first]
+        mesh = _cells(ax, xs, ys, z.reshape(len(ys), len(xs)))
         fig.colorbar(mesh, ax=ax, label=f"{col.replace('_', ' ')} (m/s)")
         ax.set_xlabel(kx)
         ax.set_ylabel(ky)
@@ -37,21 +59,38 @@ def heatmap_figure(rows, spec, size=None):
     return fig
 
 
+def _evenly_spaced(values):
+    return len(values) < 2 or np.allclose(np.diff(values), values[1] - values[0], rtol=1e-9, atol=0)
+
+
+def _cells(ax, xs, ys, z):
+    """``z`` (len(ys), len(xs)) drawn as cells centred on the grid values: an image on an evenly
+    spaced grid (a million cells in a fraction of a second), else a mesh of quadrilaterals."""
+    if len(xs) > 1 and len(ys) > 1 and _evenly_spaced(xs) and _evenly_spaced(ys):
+        dx, dy = (xs[-1] - xs[0]) / (len(xs) - 1), (ys[-1] - ys[0]) / (len(ys) - 1)
+        return ax.imshow(z, origin="lower", aspect="auto", interpolation="nearest", cmap="viridis",
+                         extent=(xs[0] - dx / 2, xs[-1] + dx / 2, ys[0] - dy / 2, ys[-1] + dy / 2))
+    return ax.pcolormesh(xs, ys, z, shading="nearest", cmap="viridis")
+
+
 def lines_figure(rows, spec, size=None, max_lines=8):
     """Critical speeds against the first varied key; one line per value of the second (up to ``max_lines``)."""
     kx = spec.keys[0]
     fig = Figure(figsize=size or (11, 4.5), layout="constrained")
     axes = fig.subplots(1, 2, sharex=True)
-    groups = {None: rows}
+    groups = {None: np.ones(len(rows), dtype=bool)}
     if len(spec.keys) > 1:
         ky = spec.keys[1]
-        values = list(dict.fromkeys(r[ky] for r in rows))
+        second = _column(rows, ky, ky in numeric_keys(spec))
+        values = list(dict.fromkeys(second.tolist()))
         chosen = values[:: max(1, len(values) // max_lines)][:max_lines]
-        groups = {v: [r for r in rows if r[ky] == v] for v in chosen}
+        groups = {v: second == v for v in chosen}
+    x = _column(rows, kx)
     for ax, col in zip(axes, SPEED_COLUMNS):
-        for value, group in groups.items():
+        y = _column(rows, col)
+        for value, member in groups.items():
             label = None if value is None else f"{spec.keys[1]} = {value:.4g}" if isinstance(value, float) else str(value)
-            ax.plot(_column(group, kx), _column(group, col), marker=".", label=label)
+            ax.plot(x[member], y[member], marker=".", label=label)
         ax.set_xlabel(kx)
         ax.set_ylabel(f"{col.replace('_', ' ')} (m/s)")
         ax.grid(alpha=0.3)
@@ -62,7 +101,7 @@ def lines_figure(rows, spec, size=None, max_lines=8):
 
 def scatter_figure(rows, spec, size=None):
     """Each critical speed against each varied key (sampled designs)."""
-    keys = [k for k in spec.keys if _numeric(rows, k)]
+    keys = [k for k in spec.keys if k in numeric_keys(spec)]
     fig = Figure(figsize=size or (3.2 * max(len(keys), 1) + 1, 6), layout="constrained")
     axes = fig.subplots(2, max(len(keys), 1), squeeze=False)
     for j, key in enumerate(keys):
@@ -75,11 +114,12 @@ def scatter_figure(rows, spec, size=None):
 
 def sweep_figures(rows, spec, size=None):
     """``{file stem: Figure}`` suited to the design: grid -> lines (+ heat map for 2+ numeric keys)."""
-    numeric = [k for k in spec.keys if _numeric(rows, k)]
+    numeric = [k for k in spec.keys if k in numeric_keys(spec)]
+    _prefetch(rows, spec)
     if spec.method != "grid" or spec.global_sensitivity:
         return {"scatter": scatter_figure(rows, spec, size)}
     figures = {}
-    if _numeric(rows, spec.keys[0]):
+    if spec.keys[0] in numeric:
         figures["lines"] = lines_figure(rows, spec, size)
     if len(numeric) >= 2 and numeric[:2] == list(spec.keys[:2]):
         figures["heatmap"] = heatmap_figure(rows, spec, size)

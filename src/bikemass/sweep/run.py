@@ -1,50 +1,65 @@
-"""Running a sweep: chunks of configurations, in this process or on a Dask cluster, kept on disk.
+"""Running a sweep: chunks of configurations, in this process or on a Dask cluster, streamed to disk.
 
-``DIR/chunks/START-STOP.json`` holds the result rows of configurations ``START..STOP-1``
-(written atomically as each chunk finishes), so an interrupted sweep resumes where it
-stopped, whatever engine or chunk size the next run uses; ``DIR/sweep.json`` records the
-spec's fingerprint and a resumed run must match it (a folder with files but no record, or a
-damaged one, is refused: its chunks could be any sweep's; a damaged chunk file is computed
-again).  A sweep whose every configuration the model refuses is an error (naming the first
-reason), one with some refused a warning; the rows keep each reason in ``error``.  When every configuration has its row,
-``DIR/results.csv`` (and ``results.parquet`` when pyarrow is installed) holds one row per
-configuration in the spec's order, the same whichever engine computed it.
+Each chunk is an index range of the spec's configurations (:class:`~bikemass.sweep.evaluate.Chunk`):
+the process or worker that computes it makes its configurations, evaluates them (as arrays when
+they change only benchmark parameters) and formats its lines of ``results.csv``; the process
+that gathers the chunks writes each to ``DIR/chunks/START-STOP.csv`` as it arrives and keeps
+only its index range and refusal count, so its memory does not grow with the sweep.  When every
+configuration has its lines, ``DIR/results.csv`` (and ``results.parquet`` with pyarrow) are
+assembled from the chunk files (:mod:`bikemass.sweep.layout`, which also says how a run
+resumes).  ``DIR/sweep.json`` records the spec's fingerprint: a folder with files but no
+record, a damaged one or another spec's is refused.  A sweep whose every configuration the
+model refuses is an error (naming the first reason), one with some refused a warning; the rows
+keep each reason in ``error``.
 
-Chunk size: the spec's ``chunk`` if it gives one.  Otherwise, on Dask, equal chunks, as
-many per worker thread as the configurations' cost calls for: a task costs the cluster a
-few milliseconds of bookkeeping (about 5 ms of CPU on a small 2-core machine), so
-configurations that only change benchmark parameters (well under a millisecond each) go
-out as one chunk per worker thread, and costlier ones (a changed bicycle, rider or
-stiffness: tens to hundreds of milliseconds each) as :data:`TASKS_PER_WORKER` per worker
-thread, which evens out the load.  In this process, :data:`SERIAL_CHUNKS` chunks (the
-progress bar's steps).  Never more than :data:`MAX_CHUNK` configurations a chunk, so a long
-sweep loses little when interrupted.
+Chunk size: the spec's ``chunk`` if it gives one.  Configurations evaluated as arrays (well
+under 10 us each) go in chunks of up to :data:`MAX_ARRAY_CHUNK`; costlier ones (a changed
+bicycle, rider or stiffness: milliseconds to seconds each) in chunks of up to
+:data:`MAX_CHUNK`, so a long sweep loses little when interrupted.  On Dask, equal chunks, one
+round per worker thread for array chunks (a task costs the cluster a few milliseconds of
+bookkeeping), :data:`TASKS_PER_WORKER` rounds for costly ones (evening out the load), at most
+:data:`IN_FLIGHT` tasks per worker thread submitted at a time.  In this process,
+:data:`SERIAL_CHUNKS` chunks (the progress bar's steps).
+
+``--workers N`` with a small sweep: the first chunk is computed here, and if the rest would
+take less than :data:`WORKER_START` seconds in this process the whole sweep stays here (the
+result's ``notes`` say so): starting a local cluster and importing bikemass in its workers
+costs more than such a sweep.
 """
 
-import signal
 import importlib
 import json
 import os
 import pickle
-import re
 import shutil
+import signal
 import threading
+import time
 from contextlib import contextmanager
 from pathlib import Path
 
 from ..core.errors import InputError, short, wrong_type
 from ..core.output import write_atomic
-from ..models.parameters import NAMES
-from ..scenario.inputs import STIFFNESS_KEY, Model, get_path
-from .evaluate import Chunk, finish_chunk, finish_chunk_pickled, OUTPUTS
-from .spec import SweepSpec, read_spec
 from ..models.plausibility import warn
-from .table import csv_lines, write_results
+from ..scenario.inputs import STIFFNESS_KEY, Model, get_path
+from .evaluate import Chunk, _model, finish_chunk, finish_chunk_pickled, setup_of
+from .layout import CHUNKS, Kept, chunk_path, kept_chunks, missing_ranges, split, write_tables
+from .result import SweepResult
+from .spec import SweepSpec, read_spec
+from .vectorised import takes
 
 TASKS_PER_WORKER = 4
 SERIAL_CHUNKS = 20
 MAX_CHUNK = 2000
-_CHUNK_NAME = re.compile(r"(\d+)-(\d+)\.json")
+MAX_ARRAY_CHUNK = 100_000
+"""Most configurations in one chunk evaluated as arrays: about 100 MB of a worker's memory at
+the peak (the stacked matrices and the chunk's text), and 0.2-0.5 s of work."""
+IN_FLIGHT = 4
+"""Tasks per worker thread handed to the scheduler at a time; the next go out as chunks finish."""
+WORKER_START = 3.0
+"""Seconds that starting ``--workers`` costs before the first chunk is computed there (a
+2-worker LocalCluster and bikemass imported in each: 2.5-3 s on the 2-core machine of
+docs/sweep.md).  A sweep whose rest would take less in this process stays here."""
 
 
 def require(module, extra="sweep"):
@@ -77,36 +92,16 @@ def chunk_size(count, slots=None, fixed=None, cheap=False):
     """Configurations per chunk for ``count`` of them: ``fixed`` if given; in this process, or
     on a cluster with no worker yet (``slots`` None or 0), :data:`SERIAL_CHUNKS` chunks; on
     ``slots`` worker threads, chunks of (nearly) equal size in rounds of at most one per
-    thread: one round for ``cheap`` configurations, else :data:`TASKS_PER_WORKER`, more when
-    needed to stay within :data:`MAX_CHUNK`."""
+    thread: one round for ``cheap`` configurations (evaluated as arrays), else
+    :data:`TASKS_PER_WORKER`, more when needed to stay within :data:`MAX_ARRAY_CHUNK` or
+    :data:`MAX_CHUNK`."""
     if fixed:
         return fixed
+    largest = MAX_ARRAY_CHUNK if cheap else MAX_CHUNK
     if not slots:
-        return max(1, min(MAX_CHUNK, -(-count // SERIAL_CHUNKS)))
-    rounds = max(1 if cheap else TASKS_PER_WORKER, -(-count // (slots * MAX_CHUNK)))
+        return max(1, min(largest, -(-count // SERIAL_CHUNKS)))
+    rounds = max(1 if cheap else TASKS_PER_WORKER, -(-count // (slots * largest)))
     return max(1, -(-count // (slots * rounds)))
-
-
-def parameters_only(spec):
-    """True if every varied key is one of the 26 benchmark parameters: each configuration is
-    then a set of parameters to critical speeds, well under a millisecond."""
-    return all(key in NAMES for key in spec.keys)
-
-
-def _missing_chunks(done, count, size):
-    """:class:`Chunk` index ranges (at most ``size`` long) covering the indices not in ``done``."""
-    chunks, start = [], None
-    for i in range(count + 1):
-        if i < count and not done[i]:
-            if start is None:
-                start = i
-            if i + 1 - start == size:
-                chunks.append((start, i + 1))
-                start = None
-        elif start is not None:
-            chunks.append((start, i))
-            start = None
-    return chunks
 
 
 STAMP = "sweep.json"
@@ -152,59 +147,35 @@ def _read_stamp(stamp):
 
 def _prepare(spec, out):
     out = Path(out)
-    (out / "chunks").mkdir(parents=True, exist_ok=True)
+    (out / CHUNKS).mkdir(parents=True, exist_ok=True)
     if not (out / STAMP).is_file():
         write_atomic(out / STAMP, json.dumps(_record(spec), indent=2) + "\n")
     return out
 
 
-def _valid_rows(rows, count):
-    """True if ``rows`` (read from a chunk file) are ``count`` result rows as :func:`evaluate` writes
-    them; a damaged chunk file is computed again."""
-    return isinstance(rows, list) and len(rows) == count and all(
-        isinstance(r, dict) and set(r) == set(OUTPUTS)
-        and all(r[k] is None or (isinstance(r[k], (int, float)) and not isinstance(r[k], bool))
-                for k in OUTPUTS if k != "error")
-        and (r["error"] is None or isinstance(r["error"], str)) for r in rows)
-
-
-def _finished(out, count):
-    """``[rows or None]`` per configuration, from the chunk files of an earlier run of this sweep."""
-    results = [None] * count
-    for path in (out / "chunks").glob("*.json"):
-        match = _CHUNK_NAME.fullmatch(path.name)
-        if not match:
-            continue
-        start, stop = int(match[1]), int(match[2])
-        try:
-            rows = json.loads(path.read_text(encoding="utf-8"))
-        except (OSError, ValueError):
-            continue
-        if 0 <= start < stop <= count and _valid_rows(rows, stop - start):
-            results[start:stop] = rows
-    return results
-
-
-def _outcome(rows, spec, out, created):
+def _outcome(result, spec, out, created):
     """One outcome for rows the model refused: all of them is an error (InputError naming the first
     reason; a folder this run made is removed), some of them a warning."""
-    failed = [r["error"] for r in rows if r["error"]]
+    failed = result.refused
     if not failed:
         return
-    if len(failed) == len(rows):
+    first = result.first_refusal[1]
+    if failed == len(result):
         if created:
             shutil.rmtree(out, ignore_errors=True)
-        raise InputError(spec.source, "vary", f"configurations the model accepts; all {len(rows)} were refused, "
-                                              f"the first: {failed[0]}")
-    warn(f"{spec.source}: {len(failed)} of {len(rows)} configurations were refused by the model (see the error "
-         f"column of {Path(out) / 'results.csv'}), the first: {failed[0]}")
+        raise InputError(spec.source, "vary", f"configurations the model accepts; all {failed} were refused, "
+                                              f"the first: {first}")
+    warn(f"{spec.source}: {failed} of {len(result)} configurations were refused by the model (see the error "
+         f"column of {Path(out) / 'results.csv'}), the first: {first}")
 
 
 def run_sweep(spec, out, workers=None, scheduler=None, progress=None):
     """Evaluate every configuration of ``spec`` (a :class:`~bikemass.sweep.spec.SweepSpec` or a spec
-    file) into folder ``out``; returns the result rows (dicts, one per configuration).
+    file) into folder ``out``; returns the rows as a :class:`~bikemass.sweep.result.SweepResult`
+    (a sequence of dicts, one per configuration, read from disk when asked for).
 
-    ``workers``: a local Dask cluster of that many single-threaded worker processes;
+    ``workers``: a local Dask cluster of that many single-threaded worker processes (unless the
+    sweep is too small to pay for starting it: see the module docstring);
     ``scheduler``: the address of a running Dask scheduler, or a ``distributed.Client``
     (used as it is and left open: a notebook's cluster serves many sweeps); neither: this process.
     ``progress(n)`` is called with the number of configurations already finished, then with
@@ -228,30 +199,71 @@ def run_sweep(spec, out, workers=None, scheduler=None, progress=None):
     check_keys(spec)
     _check_folder(spec, out)
     created = not Path(out).exists() or not any(Path(out).iterdir())
+    gather = _Gathering(spec, progress)
+    if scheduler is None and workers is not None:
+        gather.out = _prepare(spec, out)
+        workers = gather.small_enough_here(workers)
     with _engine(workers, scheduler) as (run, slots):       # a cluster that cannot be reached leaves no folder
-        out = _prepare(spec, out)
-        configurations = spec.configurations()
-        results = _finished(out, len(configurations))
-        done = [r is not None for r in results]
-        if progress:
-            progress(sum(done))
-        setup = (spec.bike, spec.rider, spec.stiffness, spec.combine, spec.source)
-        lines = [None] * len(configurations)
-        size = chunk_size(done.count(False), slots, spec.chunk, cheap=parameters_only(spec))
-        chunks = [Chunk(a, configurations[a:b], spec.units)
-                  for a, b in _missing_chunks(done, len(configurations), size)]
-        for chunk, (rows, text, chunk_lines) in run(setup, chunks, spec.max_speed, spec.keys):
-            write_atomic(out / "chunks" / f"{chunk.start:09d}-{chunk.stop:09d}.json", text)
-            results[chunk.start:chunk.stop] = rows
-            lines[chunk.start:chunk.stop] = chunk_lines
-            if progress:
-                progress(len(rows))
-    for i in (i for i, kept in enumerate(done) if kept):           # rows from an earlier run's chunk files
-        lines[i] = csv_lines(spec.keys, configurations[i:i + 1], results[i:i + 1])[0]
-    rows = [{**config, **result} for config, result in zip(configurations, results)]
-    write_results(rows, spec.keys, out, lines)
-    _outcome(rows, spec, out, created)
-    return rows
+        if gather.out is None:
+            gather.out = _prepare(spec, out)
+            gather.start()
+        size = chunk_size(gather.missing_count(), slots, spec.chunk, cheap=takes(spec.keys))
+        gather.collect(run(spec, [Chunk(a, b) for a, b in split(gather.missing(), size)], slots))
+    write_tables(gather.out, spec, gather.kept)
+    result = SweepResult(gather.out, spec, tuple(gather.kept), tuple(gather.notes))
+    _outcome(result, spec, gather.out, created)
+    return result
+
+
+class _Gathering:
+    """The gathering process's state of a running sweep: the chunks on disk (index ranges and
+    refusal counts only), the progress callback and the notes of the run."""
+
+    def __init__(self, spec, progress):
+        self.spec, self.progress, self.out, self.kept, self.notes = spec, progress, None, [], []
+
+    def start(self):
+        self.kept = kept_chunks(self.out, self.spec)
+        if self.progress:
+            self.progress(sum(k.size for k in self.kept))
+
+    def missing(self):
+        return missing_ranges(self.kept, self.spec.count)
+
+    def missing_count(self):
+        return sum(b - a for a, b in self.missing())
+
+    def add(self, finished):
+        chunk = finished.chunk
+        write_atomic(chunk_path(self.out, chunk.start, chunk.stop), finished.text)
+        self.kept.append(Kept(chunk.start, chunk.stop, finished.refused, finished.first_refusal))
+        self.kept.sort(key=lambda k: k.start)
+        if self.progress:
+            self.progress(chunk.size)
+
+    def collect(self, finished_chunks):
+        for finished in finished_chunks:
+            self.add(finished)
+
+    def small_enough_here(self, workers):
+        """``workers``, or ``None`` (this process) when the rest of the sweep would take less here
+        than :data:`WORKER_START`, judged by the first missing chunk computed here."""
+        self.start()
+        missing = self.missing()
+        if not missing:
+            return None
+        _model(setup_of(self.spec))                   # the model's files read before the clock starts
+        size = chunk_size(self.missing_count(), None, self.spec.chunk, cheap=takes(self.spec.keys))
+        first = Chunk(*split(missing, size)[0])
+        began = time.perf_counter()
+        self.add(finish_chunk(self.spec, first))
+        rest = (time.perf_counter() - began) / first.size * self.missing_count()
+        if rest >= WORKER_START:
+            return workers
+        self.notes.append(f"ran in this process, not on {workers} worker{'s' * (workers > 1)}: the rest of these "
+                          f"{self.spec.count} configurations took about {rest:.2g} s here, less than starting "
+                          f"the workers (about {WORKER_START:g} s)")
+        return None
 
 
 def max_workers():
@@ -286,27 +298,40 @@ docs/analysis.md#bikemass-sweep ("Engines") shows the same settings as environme
 ``dask scheduler`` and ``dask worker``."""
 
 
+def _in_process(spec, chunks, slots):
+    return (finish_chunk(spec, chunk) for chunk in chunks)
+
+
 @contextmanager
 def _engine(workers, scheduler):
-    """``(run, slots)``: ``run(setup, chunks, max_speed, keys)`` yields ``(chunk, finish_chunk(...))``
-    as chunks finish; ``slots`` = worker threads (``None`` in this process)."""
+    """``(run, slots)``: ``run(spec, chunks, slots)`` yields a :class:`~bikemass.sweep.evaluate.Finished`
+    per chunk as chunks finish; ``slots`` = worker threads (``None`` in this process)."""
     if workers is None and scheduler is None:
-        yield (lambda setup, chunks, vmax, keys: ((c, finish_chunk(setup, c, vmax, keys)) for c in chunks)), None
+        yield _in_process, None
         return
     distributed = require("distributed")
     with _client(distributed, workers, scheduler) as client:
-        def run(setup, chunks, vmax, keys):
-            n = len(chunks)
-            futures = client.map(finish_chunk_pickled, [setup] * n, chunks, [vmax] * n, [keys] * n, pure=False)
-            owner = {future.key: chunk for future, chunk in zip(futures, chunks)}
-            finished = 0
+        def run(spec, chunks, slots):
+            pending, submitted, window = list(reversed(chunks)), [], max(1, IN_FLIGHT * (slots or 1))
+
+            def submit(queue):
+                chunk = pending.pop()
+                future = client.submit(finish_chunk_pickled, spec, chunk, pure=False)
+                submitted.append(future)
+                queue.add(future)
+            queue = distributed.as_completed(loop=client.loop)
+            for _ in range(min(window, len(pending))):
+                submit(queue)
             try:
-                for future in distributed.as_completed(futures, loop=client.loop):
-                    yield owner[future.key], pickle.loads(future.result())
-                    finished += 1
+                for future in queue:
+                    finished = pickle.loads(future.result())
+                    submitted.remove(future)
+                    if pending:
+                        submit(queue)
+                    yield finished
             finally:
-                if finished < len(futures):     # interrupted: leave no work behind on a shared cluster
-                    client.cancel(futures)
+                if submitted:                    # interrupted: leave no work behind on a shared cluster
+                    client.cancel(submitted)
         yield run, sum(client.nthreads().values())
 
 
@@ -361,6 +386,12 @@ def _connected(distributed, address):
     return box["client"]
 
 
+WARM = "bikemass.sweep.evaluate"
+"""Imported by every worker of ``--workers N`` as it starts (Dask's ``preload``): the first task
+finds bikemass, numpy and scipy loaded.  For a cluster of your own: ``dask worker ADDRESS
+--preload bikemass.sweep.evaluate``."""
+
+
 def local_cluster(workers):
     """The Dask cluster of ``--workers N``: ``workers`` single-threaded worker processes on
     loopback, with :data:`QUIET_CLUSTER`'s settings.  The workers are started with SIGINT
@@ -371,7 +402,8 @@ def local_cluster(workers):
     distributed = require("distributed")
     with dask.config.set(QUIET_CLUSTER), _workers_ignore_sigint():
         return distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                                        host="127.0.0.1", dashboard_address="127.0.0.1:0", silence_logs=40)
+                                        host="127.0.0.1", dashboard_address="127.0.0.1:0", silence_logs=40,
+                                        preload=[WARM])
 
 
 @contextmanager

@@ -10,7 +10,8 @@ def sobol_indices(rows, spec):
     from SALib.analyze import sobol
     out = {}
     for col in ("weave_speed", "capsize_speed"):
-        y = np.array([np.nan if r[col] is None else r[col] for r in rows], dtype=float)
+        y = rows.column(col) if hasattr(rows, "column") else \
+            np.array([np.nan if r[col] is None else r[col] for r in rows], dtype=float)
         missing = int(np.sum(~np.isfinite(y)))
         if missing:
             out[col] = {"skipped": f"{missing} of {len(y)} configurations have no {col.replace('_', ' ')}"}

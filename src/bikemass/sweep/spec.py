@@ -40,10 +40,14 @@ from ..models.parameters import NAMES, dimension
 SAMPLE_METHODS = ("grid", "lhs", "sobol")
 TOP_KEYS = ("bike", "rider", "stiffness", "combine", "max_speed", "vary", "sample", "global_sensitivity",
             "chunk", "name", "description")
-MAX_CONFIGURATIONS = 10 ** 6
-"""Most configurations in one sweep, checked before any is made: every configuration's row is
-kept in memory and written to one table (measured: 10^5 configurations peak at 306 MB, about
-1.5 kB each; so 10^6 need about 1.6 GB).  Split a bigger design into several sweeps."""
+MAX_CONFIGURATIONS = 10 ** 8
+"""Most configurations in one grid, checked before any is made.  No process holds a row per
+configuration (chunks are made from their index range and streamed to disk, docs/sweep.md), so
+the bound is the disk's: about 100 bytes of ``results.csv`` and as much in chunk files a row
+(10^8 rows: about 20 GB)."""
+MAX_SAMPLES = 10 ** 6
+"""Most configurations of a random or Saltelli sample: its points are drawn at once (n x keys
+numbers in memory, 8 bytes each)."""
 
 
 @dataclass(frozen=True)
@@ -96,8 +100,37 @@ class SweepSpec:
         """``{key: unit}`` of the varied values given with a unit (they reach the model with it)."""
         return {v.key: v.unit for v in self.variables if v.unit}
 
+    @property
+    def count(self):
+        """The number of configurations (:func:`count_of`)."""
+        return count_of(self)
+
+    def columns(self, start, stop):
+        """Configurations ``start .. stop - 1`` as columns ``{key: list of values}`` (the rows of
+        results.csv in that range), made from the index range alone: a grid's index is unravelled
+        (the last key varying fastest, as :meth:`configurations` orders them); a sample's points
+        are drawn once and cut."""
+        if self.method == "grid" and not self.global_sensitivity:
+            sizes = [v.size() for v in self.variables]
+            digits = np.unravel_index(np.arange(start, stop), sizes)
+            return {v.key: _values(v.grid(), d) for v, d in zip(self.variables, digits)}
+        rows = self._sample()[start:stop]
+        return {k: [row[k] for row in rows] for k in self.keys}
+
+    def _sample(self):
+        cached = _SAMPLES.get(self)
+        if cached is None:
+            _SAMPLES.clear()
+            cached = _SAMPLES[self] = self._configurations()
+        return cached
+
     def configurations(self):
         """List of ``{key: value}`` in a fixed order (the rows of results.csv)."""
+        if self.method == "grid" and not self.global_sensitivity:
+            return self._configurations()
+        return list(self._sample())
+
+    def _configurations(self):
         if self.global_sensitivity:
             # lazy: SALib is optional (the sweep extra) and slow to import; only Sobol samples need it
             from SALib.sample import sobol
@@ -124,6 +157,17 @@ class SweepSpec:
                                             "seed", "global_sensitivity")}
         doc["variables"] = [v.__dict__ for v in self.variables]
         return hashlib.sha256(json.dumps(doc, sort_keys=True, default=str).encode()).hexdigest()[:16]
+
+
+_SAMPLES = {}
+"""The drawn points of the last random or Saltelli sample (``columns`` of its chunks cut them)."""
+
+
+def _values(grid, digits):
+    """``grid[d]`` for each index of ``digits``, as plain Python values."""
+    if all(isinstance(g, float) for g in grid):
+        return np.asarray(grid, dtype=float)[digits].tolist()
+    return [grid[d] for d in digits.tolist()]
 
 
 def count_of(spec):
@@ -220,8 +264,8 @@ def read_spec(path):
         s.check_keys(required=("method", "n"), optional=("seed",))
         method = s["method"].string(SAMPLE_METHODS[1:])
         n = s["n"].number("dimensionless", positive=True)
-        if n != int(n) or n > MAX_CONFIGURATIONS:
-            s.fail(f"a whole number of samples up to {MAX_CONFIGURATIONS}", "n")
+        if n != int(n) or n > MAX_SAMPLES:
+            s.fail(f"a whole number of samples up to {MAX_SAMPLES}", "n")
         n = int(n)
         seed = s["seed"].number("dimensionless", nonnegative=True) if s.has("seed") else 0
         if seed != int(seed):
@@ -250,7 +294,8 @@ def read_spec(path):
         combine=node["combine"].string(("exact", "thesis")) if node.has("combine") else "exact",
         max_speed=float(max_speed), variables=variables, method=method, n=n, seed=seed,
         global_sensitivity=gsa, chunk=None if chunk is None else int(chunk))
-    if count_of(spec) > MAX_CONFIGURATIONS:
-        design = "grid" if method == "grid" and not gsa else "sample"
-        vary.fail(f"at most {MAX_CONFIGURATIONS} configurations (this {design} has {count_of(spec)})")
+    grid = method == "grid" and not gsa
+    limit = MAX_CONFIGURATIONS if grid else MAX_SAMPLES
+    if count_of(spec) > limit:
+        vary.fail(f"at most {limit} configurations (this {'grid' if grid else 'sample'} has {count_of(spec)})")
     return spec

@@ -20,7 +20,6 @@ the general engine (eigenvalues and polynomial eigenvalue problems, no closed fo
 """
 
 import numbers
-from dataclasses import dataclass
 from types import SimpleNamespace
 
 import numpy as np
@@ -31,11 +30,10 @@ from ..models.canonical import canonical_matrices
 from ..models.parameters import NAMES
 from ..models.plausibility import refused_parameters
 from ..scenario.inputs import STIFFNESS_KEY
-from .table import OUTPUTS
+from .table import NUMBERS, Outcomes
 
-SPEEDS = ("weave_speed", "capsize_speed", "stable_from", "stable_to")
-NUMBERS = SPEEDS + ("total_mass",)
-"""The numeric outputs, in :data:`~bikemass.sweep.table.OUTPUTS` order (``error`` follows)."""
+SPEEDS = NUMBERS[:4]
+"""The critical speeds among the outputs (``total_mass`` and ``error`` follow)."""
 
 
 def takes(keys):
@@ -44,35 +42,14 @@ def takes(keys):
     return all(key in NAMES or key == STIFFNESS_KEY for key in keys)
 
 
-@dataclass(frozen=True)
-class Outcomes:
-    """Outcomes of B configurations as columns.
-
-    Attributes
-    ----------
-    values : dict
-        ``{output: (B,) float array}`` for :data:`NUMBERS` (speeds in m/s, total mass in kg;
-        ``nan`` where a row has no such speed, or was refused).
-    errors : list
-        B entries: ``None``, or the one-line reason a refused row was refused.
-    """
-
-    values: dict
-    errors: list
-
-    def rows(self):
-        """The outcomes as :func:`bikemass.sweep.evaluate.evaluate` returns them: one dict per row,
-        ``None`` for a missing number."""
-        columns = [[None if x != x else x for x in self.values[k].tolist()] for k in NUMBERS]
-        return [dict(zip(OUTPUTS, (*row, error))) for *row, error in zip(*columns, self.errors)]
-
-
 def _real_column(values, count):
     """``(float64 array, usable mask)`` of one varied parameter's values; an entry that is not a
     real number (a bool, a string, a complex) is ``nan`` and not usable."""
     if isinstance(values, np.ndarray) and values.dtype.kind in "fiu":
         return values.astype(float, copy=False), np.ones(count, dtype=bool)
     values = list(values)
+    if set(map(type, values)) <= {float}:           # the common case, checked at C speed
+        return np.array(values, dtype=float), np.ones(count, dtype=bool)
     usable = np.fromiter((isinstance(v, numbers.Real) and not isinstance(v, bool) for v in values),
                          dtype=bool, count=count)
     if usable.all():
@@ -119,7 +96,23 @@ def _finite_speeds(columns, S, count, max_speed):
     return done, batch_critical_speeds({k: v[done] for k, v in p.items()}, max_speed)
 
 
+BATCH = 8192
+"""Rows evaluated together: the temporaries of a batch (a few hundred kB each) are reused from
+the heap; a chunk of 50,000 rows at once made each of them fresh pages (measured: a third of the
+evaluation's time in the kernel, zero in batches of 8,192)."""
+
+
 def evaluate_columns(model, changes, count, max_speed, reference):
+    """:func:`evaluate_batch` of ``count`` configurations, :data:`BATCH` rows at a time."""
+    parts = [evaluate_batch(model, {k: v[a:a + BATCH] for k, v in changes.items()}, min(BATCH, count - a),
+                            max_speed, reference) for a in range(0, count, BATCH)]
+    if len(parts) == 1:
+        return parts[0]
+    values = {k: np.concatenate([p.values[k] for p in parts]) for k in NUMBERS}
+    return Outcomes(values, [e for p in parts for e in p.errors])
+
+
+def evaluate_batch(model, changes, count, max_speed, reference):
     """:class:`Outcomes` of ``count`` configurations of ``model``, each one row of ``changes``.
 
     Parameters
