@@ -191,7 +191,7 @@ def test_geometry_chain_equals_direct_difference(capsys):
     key = "sections.seat_stay.wall"
     g = geometry_sensitivity(model, [key])[key]
     x, h = g["value"], g["step"]
-    assert x == pytest.approx(0.040)                       # in the file's unit, inches
+    assert x == pytest.approx(0.040 * 0.0254, rel=1e-12)     # SI: the file writes 0.040 in
     (pa, Sa), (pb, Sb) = model.build({key: x + h}), model.build({key: x - h})
     ca, cb = general_speeds(pa, Sa), general_speeds(pb, Sb)
     assert g["weave_speed"] == pytest.approx((ca[0] - cb[0]) / (2 * h), rel=1e-5)
