@@ -22,7 +22,7 @@ from ..analysis.engine.critical import critical_speeds
 from ..core.errors import InputError
 from ..core.threads import one_blas_thread
 from ..models.whipple import whipple_model
-from ..scenario.inputs import Model
+from ..scenario.inputs import Model, file_unit
 from .table import NUMBERS, OUTPUTS, Outcomes, chunk_text
 from .vectorised import evaluate_columns, takes
 
@@ -77,18 +77,28 @@ def evaluate(model, changes, max_speed):
     return {**dict(zip(OUTPUTS, (None if x is None else float(x) for x in values))), "error": None}
 
 
+def _bare_unit(model, key):
+    """The unit of a bare value of ``key`` (:func:`~bikemass.scenario.inputs.file_unit`); None for a
+    key the model does not have (its rows carry the error)."""
+    try:
+        return file_unit(model, key)
+    except InputError:
+        return None
+
+
 def _with_units(changes, units):
-    """A configuration's values as the model reads them: ``"<number> <unit>"`` for a value given with a unit."""
-    return {k: f"{v!r} {units[k]}" if k in units else v for k, v in changes.items()}
+    """A configuration's values as the model reads them: ``"<number> <unit>"`` for a value with a unit."""
+    return {k: f"{float(v)!r} {units[k]}" if k in units and not isinstance(v, str) else v for k, v in changes.items()}
 
 
 def evaluate_outcomes(model, spec, columns, count):
-    """:class:`~bikemass.sweep.vectorised.Outcomes` of ``count`` configurations given as ``columns``."""
-    units = spec.units
-    reference = lambda c: evaluate(model, _with_units(c, units), spec.max_speed)     # noqa: E731
-    if takes(spec.keys):                 # parameters are SI, never given with a unit
-        return evaluate_columns(model, columns, count, spec.max_speed, reference)
-    rows = [reference({k: columns[k][i] for k in spec.keys}) for i in range(count)]
+    """:class:`~bikemass.sweep.table.Outcomes` of ``count`` configurations given as ``columns``."""
+    if takes(spec.keys):                 # parameters and stiffness choices: SI, never with a unit
+        return evaluate_columns(model, columns, count, spec.max_speed, lambda c: evaluate(model, c, spec.max_speed))
+    # a bare value takes the unit the file writes there (docs/analysis.md), a value with a unit keeps it
+    units = {k: u for k in spec.keys if (u := spec.units.get(k) or _bare_unit(model, k))}
+    rows = [evaluate(model, _with_units({k: columns[k][i] for k in spec.keys}, units), spec.max_speed)
+            for i in range(count)]
     values = {k: np.array([np.nan if r[k] is None else r[k] for r in rows], dtype=float) for k in NUMBERS}
     return Outcomes(values, [r["error"] for r in rows])
 
