@@ -332,7 +332,7 @@ def test_a_poses_own_bicycle_is_read_once(tmp_path, monkeypatch):
     monkeypatch.setattr(chain_file, "load_bicycle", lambda *a, **k: loads.append(a) or real(*a, **k))
     (tmp_path / "own.yaml").write_text(PERSON + "bike: twin.yaml\n")
     model = Model("jamis", str(tmp_path / "own.yaml"))
-    for wall in (0.03, 0.04, 0.05):                          # inches, the unit the file writes
+    for wall in (0.0008, 0.001, 0.0012):                     # m (SI, as the Model reads every input)
         model.build({"sections.seat_stay.wall": wall})
     assert len(loads) == 1
 
