@@ -7,8 +7,13 @@ yeadon measurement file, as segments (for placing) and a chain (for seating).
   (``segments:``, optional ``joints:``) or a file of one of the forms below;
 * ``{height: 1.80 m, mass: 75 kg, sex: male, ...}``: :mod:`bikemass.rider.stature`;
 * ``{yeadon: PATH}``: a yeadon measurement file (:mod:`bikemass.rider.yeadon_body`).
+
+A body is built once per distinct ``body:`` (its value, where it was written and, for a file,
+the file's version): a sweep seats the same person on every configuration.
 """
 
+import os
+from collections import OrderedDict
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -29,11 +34,27 @@ class Body:
     label: object
 
 
+CACHE_SIZE = 64
+_BODIES = OrderedDict()
+
+
 def load_body(node: Node) -> Body:
-    """The :class:`Body` named or described by the pose's ``body`` node."""
-    if isinstance(node.value, dict):
-        return _from_spec(node, node.value)
-    path = find_anthropometry(node)
+    """The :class:`Body` named or described by the pose's ``body`` node (see the module docstring
+    for the cache)."""
+    key = (repr(node.value), str(node.source), node.key)
+    if not isinstance(node.value, dict):
+        path = find_anthropometry(node)
+        stat = os.stat(path)
+        key += (str(path), stat.st_mtime_ns, stat.st_size)
+    body = _BODIES.get(key)
+    if body is None:
+        body = _BODIES[key] = _from_spec(node, node.value) if isinstance(node.value, dict) else _from_file(node, path)
+        if len(_BODIES) > CACHE_SIZE:
+            _BODIES.popitem(last=False)
+    return body
+
+
+def _from_file(node, path):
     content = load_yaml(path)
     if isinstance(content.value, dict) and "segments" not in content.value:
         body = _from_spec(content, node.value)
