@@ -41,8 +41,10 @@ from pathlib import Path
 import numpy as np
 
 from bikemass.sweep import read_spec, run_sweep
-from bikemass.sweep.evaluate import Chunk, _model, evaluate, finish_chunk
-from bikemass.sweep.run import QUIET_CLUSTER, chunk_size, local_cluster, parameters_only
+from bikemass.sweep.evaluate import Chunk, _model, finish_chunk, setup_of
+from bikemass.sweep.layout import split
+from bikemass.sweep.run import QUIET_CLUSTER, chunk_size, local_cluster
+from bikemass.sweep.vectorised import takes
 
 ROOT = Path(__file__).resolve().parents[1]
 GRID = ROOT / "examples" / "sweeps" / "benchmark_c_lam.yaml"
@@ -70,19 +72,17 @@ def bp_eig_seconds():
 
 
 def per_configuration(spec, repeat=3):
-    """Best seconds per configuration, evaluated serially in this process (YAML parsed; the
-    bicycle, rider and stiffness rebuilt in each repeat)."""
-    configs = spec.configurations()
-    setup = (spec.bike, spec.rider, spec.stiffness, spec.combine, spec.source)
+    """Best seconds per configuration, the whole spec as one chunk in this process (YAML parsed
+    and the bicycle, rider and stiffness built before the clock starts, in each repeat; arrays
+    for parameter-level sweeps)."""
     best = float("inf")
     for _ in range(repeat):
         from bikemass.sweep import evaluate as module
         module._MODELS.clear()
-        model = _model(setup)
+        _model(setup_of(spec))
         t = time.perf_counter()
-        for c in configs:
-            evaluate(model, c, spec.max_speed)
-        best = min(best, (time.perf_counter() - t) / len(configs))
+        finish_chunk(spec, Chunk(0, spec.count))
+        best = min(best, (time.perf_counter() - t) / spec.count)
     return best
 
 
@@ -112,15 +112,13 @@ class Pooled(Timed):
     def __init__(self, spec, pool, workers):
         super().__init__(spec, ".")
         self.pool = pool
-        configs = spec.configurations()
-        size = chunk_size(len(configs), workers, cheap=parameters_only(spec))
-        self.setup = (spec.bike, spec.rider, spec.stiffness, spec.combine, spec.source)
-        self.chunks = [Chunk(a, configs[a:a + size]) for a in range(0, len(configs), size)]
+        size = chunk_size(spec.count, workers, cheap=takes(spec.keys))
+        self.chunks = [Chunk(a, b) for a, b in split([(0, spec.count)], size)]
 
     def run(self):
-        n, vmax = len(self.chunks), self.spec.max_speed
+        n = len(self.chunks)
         t = time.perf_counter()
-        list(self.pool.map(finish_chunk, [self.setup] * n, self.chunks, [vmax] * n, [self.spec.keys] * n))
+        list(self.pool.map(finish_chunk, [self.spec] * n, self.chunks))
         self.whole.append(time.perf_counter() - t)
         self.engine.append(self.whole[-1])
 
@@ -190,7 +188,7 @@ def scaling(spec, rounds, label):
     machine's speed drifts from second to second (the same work in one process takes
     0.25 s or 0.5 s), so only runs this close together can be compared."""
     from contextlib import ExitStack
-    print(f"{label}, {len(spec.configurations()):,} configurations; {_load()}")
+    print(f"{label}, {spec.count:,} configurations; {_load()}")
     print(f"  {rounds} rounds of runs 1, 2, 2, 1 workers; medians: whole run (spec to results.csv); "
           "engine part; [start-up of both; first runs]")
     tables = set()

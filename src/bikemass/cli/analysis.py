@@ -75,6 +75,9 @@ def register(sub):
     engine.add_argument("--scheduler", metavar="ADDRESS",
                         help="run on an existing Dask distributed cluster (e.g. tcp://10.0.0.5:8786)")
     sw.add_argument("--plot-format", default="png", metavar="EXT", help="figure format (default png)")
+    sw.add_argument("--no-figures", action="store_true",
+                    help="write no figures (matplotlib is then not imported; a sweep of millions of rows "
+                         "reads no columns back)")
     sw.add_argument("--quiet", action="store_true", help="no progress bar or summary")
     add_figure_options(sw)
     # --out: a new or empty folder, or a sweep's own (holding bikemass.sweep.run.STAMP) to resume
@@ -280,7 +283,6 @@ def run_sweep_command(args):
     from ..core.output import dumps, write_atomic
     from ..sweep import read_spec, run_sweep
     from ..sweep.spec import count_of
-    from ..sweep.figures import sweep_figures
 
     spec = read_spec(args.spec)
     require_for_sweep(args)
@@ -291,8 +293,11 @@ def run_sweep_command(args):
             bar.enabled = False
         rows = run_sweep(spec, args.out, args.workers, args.scheduler, progress=lambda n: bar.step(n=n))
     out = Path(args.out)
-    for stem, fig in sweep_figures(rows, spec, options.size).items():
-        write_figure(fig, out / f"{stem}.{args.plot_format}", options)
+    if not args.no_figures:
+        # lazy: matplotlib is slow to import; only figures need it
+        from ..sweep.figures import sweep_figures
+        for stem, fig in sweep_figures(rows, spec, options.size).items():
+            write_figure(fig, out / f"{stem}.{args.plot_format}", options)
     if spec.global_sensitivity:
         # lazy: the library loads numpy; bikemass --help must not
         from ..sweep.sobol import sobol_indices
