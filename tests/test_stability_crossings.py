@@ -23,15 +23,7 @@ from thesis_sets import stiffness as thesis_stiffness
 from thesis_sets import thesis_set
 
 
-ABOVE_REST = 1e-9
-"""The counting starts just above v = 0 (m/s): at rest the characteristic polynomial is even in s,
-so a pair of a bicycle statically stable at rest (the riderless Cargo) sits on the imaginary axis
-there and its count at v = 0 exactly is rounding noise (a last-bit change of a mass property
-turned it into a 'crossing' at 5e-13 m/s).  A stable range from 0 then starts at ABOVE_REST,
-within the 1e-9 m/s the ranges are compared to."""
-
-
-def count_crossings(model, lo=ABOVE_REST, hi=30.0, points=30001):
+def count_crossings(model, lo=0.0, hi=30.0, points=30001):
     """``[(speed, kind)]`` and the strict stable ranges, from the number of unstable roots alone."""
     A = model.dynamic_coefficients
 
