@@ -314,6 +314,6 @@ def run_sweep_command(args):
 def require_for_sweep(args):
     """The packages the chosen engine needs (one clear line if missing)."""
     # lazy: the library loads numpy; bikemass --help must not
-    from ..sweep.run import require
+    from ..sweep.run import require_installed
     if args.workers is not None or args.scheduler is not None:
-        require("distributed")
+        require_installed("distributed")

@@ -28,6 +28,7 @@ costs more than such a sweep.
 """
 
 import importlib
+import importlib.util
 import json
 import os
 import pickle
@@ -67,7 +68,18 @@ def require(module, extra="sweep"):
     try:
         return importlib.import_module(module)
     except ImportError:
-        raise InputError("(environment)", module, f"the {module} package: pip install 'bikemass[{extra}]'") from None
+        raise _missing(module, extra) from None
+
+
+def require_installed(module, extra="sweep"):
+    """Fail with the install command unless ``module`` is installed (found, not imported: a small
+    sweep offered workers runs in this process and never needs it)."""
+    if importlib.util.find_spec(module) is None:
+        raise _missing(module, extra)
+
+
+def _missing(module, extra):
+    return InputError("(environment)", module, f"the {module} package: pip install 'bikemass[{extra}]'")
 
 
 def check_keys(spec):
