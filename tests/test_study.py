@@ -24,8 +24,8 @@ KEYS = {"bike", "rider", "stiffness", "mode", "criterion", "start", "stop", "ran
 
 def test_progress_bar_counts_every_step(study):
     bar = study[3]
-    assert len(bar.labels) == bar.total == 73 + 1 + 1 + 2 * 3 + 1 + 1
-    assert bar.labels[-2:] == ["frame models", "rider in the loop"]
+    assert len(bar.labels) == bar.total == 73 + 1 + 1 + 2 * 3 + 1 + 1 + 1
+    assert bar.labels[-3:] == ["frame models", "rider in the loop", "flexible frame and fork"]
 
 
 def read_csv(path):

@@ -11,6 +11,7 @@ from bikemass.models.whipple import whipple_model
 from bikemass.study import figures
 from bikemass.study.configurations import RIDERS, Configuration, configurations
 from bikemass.study.explain import PrintedInputs, half_unit_of_stiffness, with_rider
+from bikemass.study.flexible import FlexibleResults
 from bikemass.study.runs import CORRECTED, THESIS, Inputs, evaluate
 
 PNG = b"\x89PNG\r\n\x1a\n"
@@ -98,6 +99,8 @@ def test_figure_count_matches_the_jobs(tmp_path, inputs):
     empty = {kind: {"strict": {"overall": []}, "marginal": {"overall": []}} for kind in ("grid", "exact")}
     run = {c: SimpleNamespace(modes=None, ranges=empty, weave_speeds=None) for c in configurations()}
     handling = {bike: {rider: None for rider in RIDERS[1:]} for bike in ("jamis", "cargo")}
-    jobs = figure_jobs(SimpleNamespace(runs={"thesis": run, "corrected": run}, handling=handling), inputs, tmp_path)
-    assert len(jobs) == figures.figure_count() == 2 * 3 + 73 + 5 + 2
+    flexible = FlexibleResults({}, {})
+    jobs = figure_jobs(SimpleNamespace(runs={"thesis": run, "corrected": run, "geometry": run}, handling=handling,
+                                       flexible=flexible), inputs, tmp_path)
+    assert len(jobs) == figures.figure_count() == 2 * 3 + 73 + 5 + 2 + 1
     assert len({figures.job_path(job) for job in jobs}) == len(jobs)          # every figure has its own file

@@ -30,7 +30,8 @@ GRID = np.round(np.arange(0.0, 30.0 + 1e-9, 0.05), 12)
 
 def flexible_model(bike):
     bicycle = bm.load_bicycle(bike)
-    return build("flexible", bm.parameters(bicycle, bm.load_rider("relaxed")), compliances=compliances(bicycle, "steel"))
+    params = bm.parameters(bicycle, bm.load_rider("relaxed"))
+    return build("flexible", params, compliances=compliances(bicycle, "steel"))
 
 
 def slowest_compliance_root(model):
