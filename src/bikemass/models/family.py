@@ -167,5 +167,9 @@ def build(model, bicycle, tyres=None, compliances=None):
     (:func:`bikemass.fe.flexible.compliances`; required); an infinitely stiff one (``None``)
     holds its coordinate at zero; an error for a model without the member.
     """
-    held = compliances.held if parse_model(model).has("flexible") and isinstance(compliances, Compliances) else ()
-    return linear_model(model, values(model, bicycle, tyres, compliances), held)
+    return linear_model(model, values(model, bicycle, tyres, compliances), held_coordinates(model, compliances))
+
+
+def held_coordinates(model, compliances):
+    """The coordinates ``model`` holds at zero: the infinitely stiff ones of its ``compliances``."""
+    return compliances.held if parse_model(model).has("flexible") and isinstance(compliances, Compliances) else ()
