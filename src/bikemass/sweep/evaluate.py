@@ -73,7 +73,7 @@ def evaluate_chunk(setup, chunk, max_speed):
     :class:`~bikemass.scenario.scenario.Scenario`."""
     scenario = _scenario(setup)
     keys = {k for c in chunk.configurations[:1] for k in c}
-    # a bare value takes the unit the file writes there (docs/sweep.md), a value with a unit keeps it
+    # a bare value takes the unit the file writes there (docs/analysis.md), a value with a unit keeps it
     units = {k: u for k in keys if (u := chunk.units.get(k) or _bare_unit(scenario, k))}
     with one_blas_thread():
         return [evaluate(scenario, {k: f"{float(v)!r} {units[k]}" if k in units and not isinstance(v, str) else v
