@@ -109,8 +109,8 @@ class Scenario:
     ----------
     bicycle
         Anything :func:`bikemass.load_bicycle` takes (a name, ``"NAME@SIZE"``, a YAML or parameter
-        file, a mapping, a parameter set, a Bicycle), or a ``MooreRiderLean2012`` parameter set
-        (BicycleParameters' YAML, a file or a mapping).
+        file, a mapping, a parameter set, a Bicycle), or for a model with the ``rider-lean`` member
+        a ``MooreRiderLean2012`` parameter set (BicycleParameters' YAML, a file or a mapping).
     rider
         Anything :func:`bikemass.load_rider` takes; ``None`` (default) for no rider.  Seated on the
         bicycle (:func:`bikemass.seated_rider`); a person (a chain pose without ``bike:``) is
@@ -220,6 +220,10 @@ class Scenario:
         """The benchmark parameter set (:attr:`Built.parameters`) with ``changes``, without building
         the model."""
         bike, rider, params, _ = split_changes(changes or {})
+        if self.inputs.lean_set is not None and not self.model.has("rider-lean"):
+            raise InputError(self.inputs._lean_source, "parameterization", "a Whipple parameter set (benchmark or "
+                             f"principal) for the model {self.model.name}; a MooreRiderLean2012 set is for the "
+                             "rider-lean model (--model rider-lean, bm.Scenario(FILE, model='rider-lean'))")
         p = self.inputs.parameters(bike, rider)
         if params:
             if self.model.has("rider-lean"):
