@@ -183,3 +183,23 @@ def test_built_values_and_matrices_are_inputs_too():
     assert by_name.speeds["weave_speed"]["nominal"] == pytest.approx(flexible.weave_speeds[0], abs=1e-9)
     with pytest.raises(bm.InputError, match="a bicycle was given built, not as YAML|parameter names"):
         Scenario(bm.load_bicycle("benchmark")).build({"geometry.trail": 0.1})
+
+
+@pytest.mark.parametrize("c, lam", [(0.12, 0.45), (0.0025, 0.2)])
+def test_stability_sensitivity_and_a_sweep_row_give_the_same_critical_speeds(c, lam, tmp_path):
+    """One engine behind the three: the same weave and capsize speed to 1e-9 m/s (the last a
+    benchmark variant with a stable window narrower than the thesis's 0.05 m/s grid)."""
+    import csv
+    p = bm.parameters("benchmark").replace(c=c, lam=lam)
+    stability = bm.stability(p)
+    sensitivity = bm.sensitivity(p)
+    spec = tmp_path / "one.yaml"
+    spec.write_text(yaml.safe_dump({"name": "one", "bike": "benchmark", "vary": {"c": [c], "lam": [lam]}}))
+    assert main(["sweep", str(spec), "--out", str(tmp_path / "out"), "--quiet"]) == 0
+    row = next(csv.DictReader((tmp_path / "out" / "results.csv").open()))
+    for name, speeds in (("weave_speed", stability.weave_speeds), ("capsize_speed", stability.capsize_speeds)):
+        ours = getattr(sensitivity, name)
+        if not speeds:
+            assert ours is None and row[name] == ""
+            continue
+        assert ours == pytest.approx(speeds[0], abs=1e-9) and float(row[name]) == pytest.approx(speeds[0], abs=1e-9)
