@@ -38,7 +38,7 @@ from ..scenario.scenario import Scenario
 from .engine.critical import critical_speeds
 from .engine.modes import follow_modes
 from .engine.speeds import speed_grid, speed_values
-from .model import MATRICES, STEP, model_of, values_of
+from .model import STEP, model_of, values_of
 from .engine.crossings import REAL
 from .engine.naming import WOBBLE
 from .sensitivity import SPEEDS, speed_derivatives

@@ -147,7 +147,6 @@ def comparison_table(params, reference, name, reference_name):
 
 def run_draw(args):
     # lazy: plots/ load matplotlib; only the figure needs it
-    from ..scenario import catalog
     from ..plots.side_view import plot_side_view
 
     options = dialect.figure_checked(args)
@@ -164,7 +163,6 @@ def run_draw(args):
 
 def run_export(args):
     # lazy: the library loads numpy; bikemass --help must not
-    from ..scenario import catalog
     from ..bicycle.scene import build_scene, export_scene
     from ..core.output import write_atomic
 
