@@ -154,7 +154,7 @@ def test_subpackages_of_the_same_name_do_not_hide_the_functions():
     import bikemass.analysis.engine
     from bikemass.analysis.engine.modes import follow_modes
     assert callable(bm.stability) and bm.stability.__module__ == "bikemass.analysis.results"
-    assert bm.parameters.__module__ == "bikemass.scenario.catalog" and callable(follow_modes)
+    assert bm.parameters.__module__ == "bikemass.scenario.scenario" and callable(follow_modes)
 
 
 def test_import_bikemass_loads_no_numpy():

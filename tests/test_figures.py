@@ -21,6 +21,7 @@ import matplotlib
 matplotlib.use("svg")                      # the caller's choice, not the default
 from matplotlib.figure import Figure
 from bikemass.scenario import catalog
+from bikemass.scenario.scenario import parameters as scenario_parameters
 from bikemass.plots.side_view import plot_side_view
 from bikemass.fe import frame_modes
 from bikemass.plots.frame_modes import plot_frame_modes
@@ -31,7 +32,7 @@ from bikemass.analysis.engine.stability import analyse
 from bikemass.analysis.engine.speeds import speed_grid
 from bikemass.models.whipple import whipple_model
 
-result = analyse(whipple_model(catalog.parameters("benchmark", "none", "exact")), speed_grid(0, 8, 0.5))
+result = analyse(whipple_model(scenario_parameters("benchmark", "none", "exact")), speed_grid(0, 8, 0.5))
 figures = [plot_eigenvalues(result, "benchmark"), plot_eigenvalues(result.modes),
            plot_critical_speeds({"no rider": {"rigid": result}}),
            plot_side_view(catalog.load_bicycle("benchmark")),
@@ -124,11 +125,11 @@ def test_eig_figure_names_the_weave_and_capsize_speeds(tmp_path, capsys):
 @pytest.fixture(scope="module")
 def benchmark_stability():
     """The benchmark's stability on the thesis's grid (exact mass properties)."""
-    from bikemass.scenario import catalog
+    from bikemass.scenario.scenario import parameters as scenario_parameters
     from bikemass.analysis.engine.stability import analyse
     from bikemass.analysis.engine.speeds import speed_grid
     from bikemass.models.whipple import whipple_model
-    return analyse(whipple_model(catalog.parameters("benchmark", "none", "exact")), speed_grid(0, 30, 0.05))
+    return analyse(whipple_model(scenario_parameters("benchmark", "none", "exact")), speed_grid(0, 30, 0.05))
 
 
 def _lines(ax, label):

@@ -94,10 +94,9 @@ def test_sensitivity_arguments(meijaard, kwargs, match):
 
 
 def test_geometry_sensitivity_arguments():
-    from bikemass.scenario.inputs import Model
     with pytest.raises(bm.InputError, match="step"):
-        bm.geometry_sensitivity(Model("jamis"), ["geometry.trail"], step=0)
-    with pytest.raises(InputTypeError, match="model"):
+        bm.geometry_sensitivity(bm.Scenario("jamis"), ["geometry.trail"], step=0)
+    with pytest.raises(InputTypeError, match="scenario"):
         bm.geometry_sensitivity("jamis", ["geometry.trail"])
 
 

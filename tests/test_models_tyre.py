@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-from bikemass.scenario.catalog import parameters
+from bikemass.scenario.scenario import parameters
 from bikemass.core.errors import InputError
 from bikemass.models.family import build
 from bikemass.models.tyres import DEFAULT_TYRE, DEFAULT_TYRES, Tyre, Tyres, load_tyres, tyres_from_mapping

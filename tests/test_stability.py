@@ -13,7 +13,7 @@ from bikemass.analysis.engine.ranges import intersect
 from bikemass.analysis.engine.stability import analyse
 from bikemass.analysis.engine.speeds import speed_grid
 from bikemass.analysis.engine.tracking import partners, step_costs, track
-from bikemass.scenario.catalog import parameters
+from bikemass.scenario.scenario import parameters
 from bikemass.models.canonical import canonical_matrices
 from bikemass.models.flexible_static import static_stiffness, with_frame_stiffness
 from bikemass.models.linear import Signal, second_order_model

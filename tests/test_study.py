@@ -13,6 +13,7 @@ from html.parser import HTMLParser
 import pytest
 
 from bikemass.scenario import catalog
+from bikemass.scenario.scenario import parameters as scenario_parameters
 from bikemass.cli.main import main
 
 BIKES = {"benchmark", "jamis", "cargo", "cargo-loaded"}
@@ -150,7 +151,7 @@ def test_corrected_run_adds_the_parallel_axis_terms(study):
     _, rows = read_csv(study[0] / "corrections_inertia.csv")
     assert len(rows) == 15
     for bike, rider, thesis_ixx, corrected_ixx, *_ in rows:
-        frame = catalog.parameters(f"{bike}-thesis")
+        frame = scenario_parameters(f"{bike}-thesis")
         person = catalog.load_rider(f"{rider}-thesis").properties("exact")
         mu = frame.mB * person.mass / (frame.mB + person.mass)
         expected = mu * (frame.zB - person.com[2]) ** 2

@@ -10,6 +10,7 @@ import pytest
 from images import is_drawn
 
 from bikemass.scenario import catalog
+from bikemass.scenario.scenario import parameters as scenario_parameters
 from bikemass.cli.main import main
 from bikemass.analysis.engine import crossings
 from bikemass.models.whipple import whipple_model
@@ -70,7 +71,7 @@ def test_rows_equal_independent_stability_runs(tmp_path):
     finds every root stable."""
     spec = _spec(tmp_path, GRID)
     assert main(["sweep", spec, "--out", str(tmp_path / "o"), "--quiet"]) == 0
-    p = catalog.parameters("benchmark")
+    p = scenario_parameters("benchmark")
     for row in _rows(tmp_path / "o"):
         q = p.replace(c=float(row["c"]), lam=float(row["lam"]))
         found = general_crossings(q)
@@ -267,7 +268,7 @@ vary:
         assert len(set(values)) == 6, col
     nominal = next(r for r in rows if float(r["sections.seat_stay.wall"]) == 0.04
                    and float(r["sections.chain_stay.wall"]) == 0.04)
-    p, S = catalog.parameters("jamis", "relaxed"), catalog.stiffness("jamis", "steel")
+    p, S = scenario_parameters("jamis", "relaxed"), catalog.stiffness("jamis", "steel")
     weave = next(s for s, k, _ in general_crossings(p, S) if k == "oscillatory")
     assert float(nominal["weave_speed"]) == pytest.approx(weave, abs=1e-9)
     assert is_drawn(tmp_path / "g" / "heatmap.png")

@@ -128,7 +128,7 @@ def test_the_study_starts_its_workers_inside_the_limit(monkeypatch):
 
 
 def test_sweep_chunks_are_evaluated_inside_the_limit(monkeypatch):
-    monkeypatch.setattr(sweep_evaluate, "_model", lambda setup: None)
-    monkeypatch.setattr(sweep_evaluate, "evaluate", lambda model, changes, max_speed: blas_threads())
+    monkeypatch.setattr(sweep_evaluate, "_scenario", lambda setup: None)
+    monkeypatch.setattr(sweep_evaluate, "evaluate", lambda scenario, changes, max_speed: blas_threads())
     rows = sweep_evaluate.evaluate_chunk(None, sweep_evaluate.Chunk(0, [{}, {}]), 10.0)
     assert len(rows) == 2 and all(set(r) == {1} for r in rows)

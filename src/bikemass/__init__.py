@@ -8,6 +8,7 @@ The Python API (docs/api.md)::
     p = bm.parameters(bike, rider)                  # the 26 Meijaard (2007) parameters
     S = bm.stiffness(bike, "steel")                 # 2x2 rear-frame stiffness, N m/rad
     result = bm.stability(p, stiffness=S)           # result.weave_speeds, .capsize_speeds
+    lean = bm.stability(bm.Scenario(bike, rider, model="rider-lean"))   # any member of the family
     fig = bm.plot_eigenvalues(result)               # a matplotlib Figure
 
 All quantities are SI (m, kg, s, rad, N) in the Meijaard et al. (2007) benchmark frame;
@@ -22,7 +23,8 @@ import types
 __version__ = "0.1.0"
 
 _API = {
-    "load_bicycle": "scenario.loading", "load_rider": "scenario.loading", "parameters": "scenario.catalog",
+    "load_bicycle": "scenario.loading", "load_rider": "scenario.loading", "parameters": "scenario.scenario",
+    "Scenario": "scenario.scenario", "Built": "scenario.scenario",
     "stiffness": "scenario.catalog",
     "stability": "analysis.results", "eigenvalues": "analysis.results", "matrices": "analysis.results",
     "speeds": "analysis.results", "linear_model": "analysis.results",

@@ -9,11 +9,16 @@ and, by the implicit function theorem on ``Re lambda(v, p) = 0``::
 
     d v* / d p = -Re(d lambda / d p) / Re(d lambda / d v)
 
-``dA/dp`` comes from the complex step through the one model builder
+For the Whipple model ``dA/dp`` comes from the complex step through the one model builder
 (:mod:`bikemass.analysis.model`), so every number is exact to rounding: there is no
-finite-difference step anywhere.  The critical speeds are the engine's closed form
-(:mod:`bikemass.analysis.engine.closed_form`), the same numbers ``bm.stability`` reports.  Elasticities are ``(p / v*) d v* / d p``
-(per cent change of the speed per per cent change of the parameter).
+finite-difference step anywhere, and the critical speeds are the engine's closed form
+(:mod:`bikemass.analysis.engine.closed_form`), the same numbers ``bm.stability`` reports.  Any
+other member of the family (a :class:`~bikemass.scenario.scenario.Scenario` with ``model=``) goes
+through the engine: its critical speeds are :func:`~bikemass.analysis.engine.critical.critical_speeds`
+(wobble apart, as ``bm.stability`` names it), and ``dA/dp`` of its generated code is a five-point
+central difference in each parameter (relative step :data:`MEMBER_STEP`; truncation error of order
+``step**4``, rounding of order ``1e-16 / step``: about 1e-10 relative).  Elasticities are
+``(p / v*) d v* / d p`` (per cent change of the speed per per cent change of the parameter).
 """
 
 from dataclasses import dataclass
@@ -23,14 +28,15 @@ import numpy as np
 from ..models.parameters import NAMES
 from .engine import closed_form
 from .engine.crossings import OSCILLATORY, REAL
+from .engine.naming import WOBBLE
 from .model import STIFFNESS_ENTRIES, model_of, state_matrix_derivatives, stiffness_state_derivatives, values_of
+from .engine.critical import critical_speeds
 from .results import _stiffness
 from ..core.errors import InputError, short
 from ..models.parameters import BenchmarkParameters
 from ..models.plausibility import check_parameters
 from ..core.errors import wrong_type
-from ..scenario.inputs import get_path
-from ..scenario.inputs import Model
+from ..scenario.scenario import Built, Scenario
 
 SPEEDS = {"weave_speed": OSCILLATORY, "capsize_speed": REAL}
 """Output name -> crossing kind (first crossing of that kind on (0, vmax])."""
@@ -85,10 +91,34 @@ class Sensitivity:
 
 
 def sensitivity(params, S=None, vmax=30.0, names=NAMES):
-    """:class:`Sensitivity` of ``params`` (:class:`~bikemass.models.parameters.BenchmarkParameters`) with
-    rear-frame stiffness ``S`` (2x2 N m/rad or ``None``); crossings searched on ``(0, vmax]`` m/s.
-    InputError for parameters the model is not defined for, an S that is not symmetric positive
-    definite, a ``vmax`` that is not a positive finite speed or ``names`` not among the 26."""
+    """:class:`Sensitivity` of a parameter set or a scenario; crossings searched on ``(0, vmax]`` m/s.
+
+    Parameters
+    ----------
+    params : BenchmarkParameters, Scenario or Built
+        A benchmark set (the Whipple model, with rear-frame stiffness ``S``), or a
+        :class:`~bikemass.scenario.scenario.Scenario` (built) of any member of the model family.
+    S : array_like (2, 2) or None
+        Rear-frame stiffness (N m/rad) of a benchmark set; ``None`` with a scenario (it has its own).
+    vmax : float
+        Highest speed (m/s) searched.
+    names : sequence of str
+        The benchmark parameters to differentiate by (default all 26).
+
+    Raises
+    ------
+    InputError
+        Parameters the model is not defined for, an S that is not symmetric positive definite, a
+        ``vmax`` that is not a positive finite speed or ``names`` not among the 26.
+    """
+    if isinstance(params, (Scenario, Built)):
+        if S is not None:
+            raise InputError("S", "(matrix)", "none with a scenario (its stiffness choice is built in)")
+        built = params.build() if isinstance(params, Scenario) else params
+        if built.choice.members:
+            _checked(built.parameters, None, vmax, names)
+            return _member_sensitivity(built, vmax, tuple(names))
+        params, S = built.parameters, built.stiffness
     params, S, names = _checked(params, S, vmax, names)
     model = model_of(values_of(params), S)
     found = closed_form.axis_crossings(model, 0.0, vmax)
@@ -108,6 +138,43 @@ def sensitivity(params, S=None, vmax=30.0, names=NAMES):
     return Sensitivity(params=values_of(params), weave_speed=speeds["weave_speed"],
                        capsize_speed=speeds["capsize_speed"], d_weave_speed=derivs["weave_speed"],
                        d_capsize_speed=derivs["capsize_speed"], d_stiffness=d_s)
+
+
+MEMBER_STEP = 1e-3
+"""Relative step of the five-point central difference of a member's ``dA/dp`` (absolute for a zero
+parameter, in its SI unit)."""
+
+
+def member_state_derivatives(built, speed, names=NAMES, step=MEMBER_STEP):
+    """``{name: dA/dp}`` (dynamic block at ``speed``) of a built member's generated model, by a
+    five-point central difference in each benchmark parameter of the set it takes."""
+    base = built.values()
+    n = built.model.n_dynamic
+
+    def at(name, x):
+        return built.with_values({**base, name: x}).dynamic_matrix(speed)[:n, :n]
+    out = {}
+    for name in names:
+        x = base[name]
+        h = step * abs(x) if x else step
+        out[name] = (8 * (at(name, x + h) - at(name, x - h)) - (at(name, x + 2 * h) - at(name, x - 2 * h))) / (12 * h)
+    return out
+
+
+def _member_sensitivity(built, vmax, names):
+    """:class:`Sensitivity` of a built member of the family other than the Whipple bicycle."""
+    found = critical_speeds(built.model, vmax)
+    speeds, derivs = {}, {}
+    for key, kind in SPEEDS.items():
+        crossing = next((c for c in found.crossings if c.kind == kind and (kind == REAL or c.mode != WOBBLE)), None)
+        speeds[key] = None if crossing is None else crossing.speed
+        derivs[key] = ({n: None for n in names} if crossing is None else speed_derivatives(
+            built.model, member_state_derivatives(built, crossing.speed, names), crossing.speed, kind,
+            crossing.frequency))
+    base = built.values()
+    return Sensitivity(params={n: float(base[n]) for n in names}, weave_speed=speeds["weave_speed"],
+                       capsize_speed=speeds["capsize_speed"], d_weave_speed=derivs["weave_speed"],
+                       d_capsize_speed=derivs["capsize_speed"])
 
 
 def _checked(params, S, vmax, names):
@@ -152,45 +219,65 @@ GEOMETRY_STEP = 1e-4
 """Default relative step of the geometry -> parameters central difference."""
 
 
-def input_value(model, key):
-    """Current value of an input key of a :class:`~bikemass.scenario.inputs.Model` (SI, or the
-    unit the YAML file uses for it, e.g. degrees for chain angles)."""
-    return get_path(model, key)
-
-
-def geometry_sensitivity(model, keys, result=None, step=GEOMETRY_STEP):
+def geometry_sensitivity(scenario, keys, result=None, step=GEOMETRY_STEP):
     """Derivatives of the weave and capsize speeds w.r.t. geometry-level inputs ``keys`` (dotted
-    paths, see :mod:`bikemass.scenario.inputs`).
+    paths, see :mod:`bikemass.scenario.inputs`) of a :class:`~bikemass.scenario.scenario.Scenario`.
 
     Chain rule: ``dv/dx = sum_p (dv/dp)(dp/dx) + sum_S (dv/dS)(dS/dx)``.  ``dv/dp`` and ``dv/dS``
-    are exact (:func:`sensitivity`); ``dp/dx`` and ``dS/dx`` (geometry -> mass properties, beam
-    stiffness, rider pose) are central differences with relative step ``step``, and again with
-    twice the step: ``difference_check`` is the largest change between the two (m/s per unit),
-    an estimate of the finite-difference error.
+    are exact (:func:`sensitivity`); for a member other than the Whipple bicycle ``p`` runs over every
+    parameter its generated code takes (the upper body's, the tyres', the compliances' too) and
+    ``dv/dp`` is :func:`member_state_derivatives`'.  ``dp/dx`` and ``dS/dx`` (geometry -> mass
+    properties, beam stiffness, rider pose) are central differences with relative step ``step``, and
+    again with twice the step: ``difference_check`` is the largest change between the two (m/s per
+    unit), an estimate of the finite-difference error.
     Returns ``{key: {value, step, d_weave_speed, d_capsize_speed, difference_check}}``.
     """
-    if not isinstance(model, Model):
-        raise wrong_type("model", model, "a bikemass.scenario.inputs.Model")
+    if not isinstance(scenario, Scenario):
+        raise wrong_type("scenario", scenario, "a bikemass.Scenario")
     if isinstance(keys, str):
         keys = [keys]
     if isinstance(step, bool) or not isinstance(step, (int, float)) or not 0 < step <= 0.1:
         raise InputError("step", short(step), "a relative step between 0 and 0.1")
-    p0, S0 = model.build()
-    result = result or sensitivity(p0, S0)
+    built = scenario.build()
+    member = bool(built.choice.members)
+    result = result or sensitivity(built)
+    if member:
+        result = _all_member_derivatives(built, result)
     out = {}
     for key in keys:
-        x = input_value(model, key)
+        x = scenario.value(key)
         h = step * abs(x) if x else step
         estimates = []
         for hh in (h, 2 * h):
-            (pa, Sa), (pb, Sb) = model.build({key: x + hh}), model.build({key: x - hh})
-            dp = {n: (getattr(pa, n) - getattr(pb, n)) / (2 * hh) for n in result.params}
-            dS = None if S0 is None else (np.asarray(Sa) - np.asarray(Sb)) / (2 * hh)
+            a, b = scenario.build({key: x + hh}), scenario.build({key: x - hh})
+            if member:
+                va, vb = a.values(), b.values()
+                dp = {n: (va[n] - vb[n]) / (2 * hh) for n in result.params}
+            else:
+                dp = {n: (getattr(a.parameters, n) - getattr(b.parameters, n)) / (2 * hh) for n in result.params}
+            dS = None if built.stiffness is None else (np.asarray(a.stiffness) - np.asarray(b.stiffness)) / (2 * hh)
             estimates.append({k: _chain(result, k, dp, dS) for k in SPEEDS})
         out[key] = {"value": x, "step": h, **estimates[0],
                     "difference_check": max((abs(estimates[0][k] - estimates[1][k])
                                              for k in SPEEDS if estimates[0][k] is not None), default=None)}
     return out
+
+
+def _all_member_derivatives(built, result):
+    """``result`` with the speeds' derivatives by every parameter of a member's generated code."""
+    names = tuple(built.values())
+    derivs = {}
+    for key, kind in SPEEDS.items():
+        v = getattr(result, key)
+        if v is None:
+            derivs[key] = {n: None for n in names}
+            continue
+        crossing = min((c for c in critical_speeds(built.model, v + 1.0).crossings if c.kind == kind),
+                       key=lambda c: abs(c.speed - v))          # the crossing the result found, for its frequency
+        derivs[key] = speed_derivatives(built.model, member_state_derivatives(built, v, names), v, kind,
+                                        crossing.frequency)
+    return Sensitivity(params=built.values(), weave_speed=result.weave_speed, capsize_speed=result.capsize_speed,
+                       d_weave_speed=derivs["weave_speed"], d_capsize_speed=derivs["capsize_speed"])
 
 
 def _chain(result, key, dp, dS):

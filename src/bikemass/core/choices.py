@@ -135,10 +135,13 @@ class Format(Choice):
     YAML = "yaml"
     BICYCLEPARAMETERS = "bicycleparameters"
     """The BicycleParameters ``<Name>Benchmark.txt`` file (parameter sets only)."""
+    BICYCLEPARAMETERS_YAML = "bicycleparameters-yaml"
+    """BicycleParameters' ``ParameterSet.to_yaml`` file: ``Meijaard2007``, or ``MooreRiderLean2012`` for
+    the rider-lean model (parameter sets only)."""
 
 
 PARAMETER_FORMATS = (Format.YAML.value, Format.JSON.value, Format.TABLE.value, Format.CSV.value,
-                     Format.BICYCLEPARAMETERS.value)
+                     Format.BICYCLEPARAMETERS.value, Format.BICYCLEPARAMETERS_YAML.value)
 """The formats a benchmark parameter set is written in (YAML first: the default)."""
 
 

@@ -77,4 +77,28 @@ class Result:
 
     def document(self):
         """``to_dict()`` with its ``units`` block: what ``--format json|yaml`` writes."""
-        return {**self.to_dict(), "units": self.units()}
+        return with_declared_units(self.to_dict(), self.units())
+
+
+def document_keys(obj):
+    """Every mapping key of the plain document ``obj``, at any depth."""
+    found = set()
+
+    def walk(value):
+        if isinstance(value, Mapping):
+            for k, v in value.items():
+                found.add(k)
+                walk(v)
+        elif isinstance(value, (list, tuple)):
+            for v in value:
+                walk(v)
+    walk(obj)
+    return found
+
+
+def with_declared_units(data, units):
+    """The plain document ``data`` (a mapping) with a top-level ``units`` block: the declared
+    ``units`` (``{key: unit}``, a result's :meth:`Result.units`) of the keys it holds, none guessed
+    from a key's name."""
+    keys = document_keys(data)
+    return {**data, "units": {k: u for k, u in units.items() if k in keys}}

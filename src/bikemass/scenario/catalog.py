@@ -1,6 +1,6 @@
-"""Names, files, mappings -> models: what ``bm.parameters``, ``bm.seated_rider``, ``bm.stiffness``
-and ``bm.geometry_chart`` do, and what every command calls with its BIKE / POSE / stiffness
-arguments.  Bicycles and riders are anything :mod:`bikemass.scenario.loading` loads.
+"""Names, files, mappings -> seated riders, frame stiffness and charts: what ``bm.seated_rider``,
+``bm.stiffness`` and ``bm.geometry_chart`` do, and what the scenario builder
+(:mod:`bikemass.scenario.scenario`) calls with its rider and stiffness choices.  Bicycles and riders are anything :mod:`bikemass.scenario.loading` loads.
 Bad input raises :class:`~bikemass.core.errors.InputError` (a ValueError) naming the
 source (``<mapping>`` for Python values), the key and what was expected.
 """
@@ -11,10 +11,9 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from ..bicycle import bicycle_parameters
 from ..bicycle.benchmark import refuse_second_rider
 from ..bicycle.derived_chart import derived_chart
-from ..core.choices import RIGID, Beam, Combine, Method, Procedure, Source, check
+from ..core.choices import RIGID, Beam, Combine, Procedure, Source, check
 from ..core.config import load_yaml
 from ..core.errors import BikemassWarning, InputError
 from ..core.paths import closest_name
@@ -26,35 +25,6 @@ from .loading import load_bicycle, load_rider
 
 COMBINE_CHOICES = Combine.values()
 """Rider + rear frame: 'exact' = parallel-axis theorem; 'thesis' = inertias added (Eq. 3.6)."""
-
-
-def parameters(bicycle, rider=None, combine=Combine.EXACT, method=Method.MESH, allow_off_contact=False):
-    """The Meijaard et al. (2007) benchmark parameter set of a bicycle with a rider.
-
-    Parameters
-    ----------
-    bicycle
-        Anything :func:`load_bicycle` takes.
-    rider
-        Anything :func:`load_rider` takes; ``None`` (default) for no rider.  The rider is
-        seated on the bicycle (:func:`seated_rider`): a contact off the bicycle is an error
-        unless ``allow_off_contact``.
-    combine : {"exact", "thesis"}
-        Rider + frame body: parallel-axis theorem (``exact``, default) or the thesis's
-        Eq. 3.6 (central inertias added), see :class:`~bikemass.core.choices.Combine`.
-    method : {"mesh", "exact"}
-        Mass properties from trimesh meshes (default) or closed-form solids.
-
-    Returns
-    -------
-    BenchmarkParameters
-        Immutable; the 26 values as attributes (``p.w`` in m, ``p.lam`` in rad, ``p.IBxx``
-        in kg m^2, ...) and ``p.to_dict()`` as plain floats.  A parameter file without a
-        rider returns its own values exactly.
-    """
-    combine, method = check(Combine, combine), check(Method, method)
-    model = load_bicycle(bicycle)
-    return bicycle_parameters(model, seated_rider(model, rider, allow_off_contact), combine.value, method.value)
 
 
 def seated_rider(bicycle, rider, allow_off_contact=False, as_printed=False):

@@ -1,7 +1,7 @@
 """One chunk of configurations -> result rows.  Runs in the caller's process or on a Dask worker.
 
-The :class:`~bikemass.scenario.inputs.Model` (parsed YAML, built bicycles, riders and
-stiffnesses) lives as long as the process and is shared by every chunk of the same sweep.
+The :class:`~bikemass.scenario.scenario.Scenario` (parsed YAML, built bicycles, riders,
+stiffnesses and models) lives as long as the process and is shared by every chunk of the same sweep.
 BLAS runs on one thread (the worker, not the library, is the unit of parallelism):
 :func:`bikemass.core.threads.one_blas_thread`.
 """
@@ -12,14 +12,12 @@ import pickle
 import numpy as np
 
 from ..core.errors import InputError
-from ..scenario.inputs import Model, file_unit
 from ..analysis.engine.critical import critical_speeds
-from ..models.whipple import whipple_model
 from ..core.threads import one_blas_thread
 from .table import csv_lines
 
 OUTPUTS = ("weave_speed", "capsize_speed", "stable_from", "stable_to", "total_mass", "error")
-_MODELS = {}
+_SCENARIOS = {}
 
 
 class Chunk:
@@ -39,46 +37,47 @@ class Chunk:
         return self.start + len(self.configurations)
 
 
-def _model(setup):
-    if setup not in _MODELS:
-        bike, rider, stiffness, combine, source = setup
-        _MODELS.clear()
-        _MODELS[setup] = Model(bike, rider, stiffness, combine, origin=source)
-    return _MODELS[setup]
+def _scenario(scenario):
+    """The process's own instance of ``scenario`` (a value): one per sweep, its caches kept."""
+    if scenario not in _SCENARIOS:
+        _SCENARIOS.clear()
+        _SCENARIOS[scenario] = scenario
+    return _SCENARIOS[scenario]
 
 
-def _bare_unit(model, key):
+def _bare_unit(scenario, key):
     """The unit of a bare value of ``key`` (:func:`~bikemass.scenario.inputs.file_unit`); None for a
-    key the model does not have (its rows carry the error)."""
+    key the scenario does not have (its rows carry the error)."""
     try:
-        return file_unit(model, key)
+        return scenario.file_unit(key)
     except InputError:
         return None
 
 
-def evaluate(model, changes, max_speed):
+def evaluate(scenario, changes, max_speed):
     """Result row (dict of :data:`OUTPUTS`) of one configuration; a configuration the model
     refuses gets its one-line reason in ``error`` and empty outputs."""
     try:
-        p, S = model.build(changes)
-        found = critical_speeds(whipple_model(p, S), max_speed)
+        built = scenario.build(changes)
+        found = critical_speeds(built.model, max_speed)
     except (InputError, ValueError, np.linalg.LinAlgError) as exc:
         return {**{k: None for k in OUTPUTS}, "error": str(exc).replace("\n", " ")}
+    p = built.parameters
     values = (found.weave_speed, found.capsize_speed, found.stable_from, found.stable_to, p.mR + p.mB + p.mH + p.mF)
     # plain floats: a row kept in memory writes the same bytes as one read back from a chunk file
     return {**dict(zip(OUTPUTS, (None if x is None else float(x) for x in values))), "error": None}
 
 
 def evaluate_chunk(setup, chunk, max_speed):
-    """Rows for the configurations of a :class:`Chunk`; ``setup`` = (bike, rider, stiffness,
-    combine, spec source)."""
-    model = _model(setup)
+    """Rows for the configurations of a :class:`Chunk`; ``setup`` = the sweep's
+    :class:`~bikemass.scenario.scenario.Scenario`."""
+    scenario = _scenario(setup)
     keys = {k for c in chunk.configurations[:1] for k in c}
     # a bare value takes the unit the file writes there (docs/analysis.md), a value with a unit keeps it
-    units = {k: u for k in keys if (u := chunk.units.get(k) or _bare_unit(model, k))}
+    units = {k: u for k in keys if (u := chunk.units.get(k) or _bare_unit(scenario, k))}
     with one_blas_thread():
-        return [evaluate(model, {k: f"{float(v)!r} {units[k]}" if k in units and not isinstance(v, str) else v
-                                 for k, v in c.items()}, max_speed)
+        return [evaluate(scenario, {k: f"{float(v)!r} {units[k]}" if k in units and not isinstance(v, str) else v
+                                    for k, v in c.items()}, max_speed)
                 for c in chunk.configurations]
 
 

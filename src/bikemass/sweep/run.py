@@ -35,7 +35,7 @@ from pathlib import Path
 from ..core.errors import InputError, short, wrong_type
 from ..core.output import write_atomic
 from ..models.parameters import NAMES
-from ..scenario.inputs import STIFFNESS_KEY, Model, get_path
+from ..scenario.inputs import STIFFNESS_KEY
 from .evaluate import Chunk, finish_chunk, finish_chunk_pickled, OUTPUTS
 from .spec import SweepSpec, read_spec
 from ..models.plausibility import warn
@@ -57,18 +57,18 @@ def require(module, extra="sweep"):
 
 def check_keys(spec):
     """Every varied key names an input of the spec's bicycle or rider, and the spec's stiffness
-    (and each stiffness name it varies) is one the bicycle has (InputError otherwise): a
-    misspelt choice fails once here instead of on every row."""
-    model = Model(spec.bike, spec.rider, spec.stiffness, spec.combine, origin=spec.source)
+    (and each stiffness name it varies) is one the bicycle and the model take (InputError
+    otherwise): a misspelt choice fails once here instead of on every row."""
+    scenario = spec.scenario()
     for key in spec.keys:
         if key != STIFFNESS_KEY:
-            get_path(model, key)
+            scenario.value(key)
     choices = [("stiffness", spec.stiffness)] + [(f"vary.{STIFFNESS_KEY}", value) for variable in spec.variables
                                                  if variable.key == STIFFNESS_KEY for value in variable.values
                                                  if isinstance(value, str)]
     for key, choice in choices:
         try:
-            model.frame_stiffness(choice)
+            scenario.check_stiffness(choice)
         except InputError as exc:
             raise InputError(spec.source, key, f"{exc.expected} (got {short(choice)}: {exc.source}: {exc.key})") from None
 
@@ -235,7 +235,7 @@ def run_sweep(spec, out, workers=None, scheduler=None, progress=None):
         done = [r is not None for r in results]
         if progress:
             progress(sum(done))
-        setup = (spec.bike, spec.rider, spec.stiffness, spec.combine, spec.source)
+        setup = spec.scenario()
         lines = [None] * len(configurations)
         size = chunk_size(done.count(False), slots, spec.chunk, cheap=parameters_only(spec))
         chunks = [Chunk(a, configurations[a:b], spec.units)

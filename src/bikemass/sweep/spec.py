@@ -5,6 +5,8 @@ bike: benchmark            # as BIKE on the command line
 rider: none                # optional, as --rider
 stiffness: infinite        # optional, as --stiffness
 combine: exact             # optional
+model: whipple             # optional, as --model (rider-lean, tyre, flexible, members joined by +)
+tyres: tyres.yaml          # optional, as --tyres (a model with the tyre member)
 max_speed: 30              # optional: critical speeds on (0, max_speed] m/s
 vary:                      # key -> list of values, or {from, to, num}
   c: {from: 0.0, to: 0.2, num: 41}
@@ -33,13 +35,16 @@ from pathlib import Path
 import numpy as np
 
 from ..core.config import load_yaml
+from ..core.errors import InputError
 from ..core.paths import within_reach
 from ..core.units import DIMENSIONS, UnitError, dimension_of, split_quantity
 from ..models.parameters import NAMES, dimension
+from ..models.registry import BASE, parse_model
+from ..scenario.scenario import Scenario
 
 SAMPLE_METHODS = ("grid", "lhs", "sobol")
-TOP_KEYS = ("bike", "rider", "stiffness", "combine", "max_speed", "vary", "sample", "global_sensitivity",
-            "chunk", "name", "description")
+TOP_KEYS = ("bike", "rider", "stiffness", "combine", "model", "tyres", "max_speed", "vary", "sample",
+            "global_sensitivity", "chunk", "name", "description")
 MAX_CONFIGURATIONS = 10 ** 6
 """Most configurations in one sweep, checked before any is made: every configuration's row is
 kept in memory and written to one table (measured: 10^5 configurations peak at 306 MB, about
@@ -86,6 +91,13 @@ class SweepSpec:
     seed: int
     global_sensitivity: bool
     chunk: int = None
+    model: str = BASE
+    tyres: str = None
+
+    def scenario(self):
+        """The :class:`~bikemass.scenario.scenario.Scenario` every configuration changes."""
+        return Scenario(self.bike, self.rider, self.stiffness, self.combine, model=self.model, tyres=self.tyres,
+                        origin=self.source)
 
     @property
     def keys(self):
@@ -123,6 +135,8 @@ class SweepSpec:
         doc = {k: getattr(self, k) for k in ("bike", "rider", "stiffness", "combine", "max_speed", "method", "n",
                                             "seed", "global_sensitivity")}
         doc["variables"] = [v.__dict__ for v in self.variables]
+        if self.model != BASE or self.tyres is not None:        # the model joins the hash (older sweeps resume)
+            doc.update(model=self.model, tyres=self.tyres)
         return hashlib.sha256(json.dumps(doc, sort_keys=True, default=str).encode()).hexdigest()[:16]
 
 
@@ -206,6 +220,16 @@ def _near(spec_path, name):
     return str(here.resolve()) if within_reach(here) and here.is_file() else name
 
 
+def _model_name(node):
+    """The spec's ``model:`` as its canonical name (``whipple`` without one)."""
+    if not node.has("model"):
+        return BASE
+    try:
+        return parse_model(node["model"].string()).name
+    except InputError as exc:
+        node["model"].fail(exc.expected)
+
+
 def read_spec(path):
     """:class:`SweepSpec` of a YAML file; InputError naming the key on bad input."""
     node = load_yaml(path)
@@ -249,7 +273,8 @@ def read_spec(path):
         stiffness=node["stiffness"].string() if node.has("stiffness") else "infinite",
         combine=node["combine"].string(("exact", "thesis")) if node.has("combine") else "exact",
         max_speed=float(max_speed), variables=variables, method=method, n=n, seed=seed,
-        global_sensitivity=gsa, chunk=None if chunk is None else int(chunk))
+        global_sensitivity=gsa, chunk=None if chunk is None else int(chunk),
+        model=_model_name(node), tyres=_near(path, node["tyres"].string()) if node.has("tyres") else None)
     if count_of(spec) > MAX_CONFIGURATIONS:
         design = "grid" if method == "grid" and not gsa else "sample"
         vary.fail(f"at most {MAX_CONFIGURATIONS} configurations (this {design} has {count_of(spec)})")

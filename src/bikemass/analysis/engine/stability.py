@@ -12,17 +12,11 @@ from .critical import critical_speeds
 from .crossings import OSCILLATORY, REAL, Crossing, Eigenvalues, circle_speeds
 from .eigen import eigen_sweep
 from .modes import follow_modes
-from .naming import family, participation
+from .naming import WOBBLE, family, is_wobble
 from .tracking import reorder, track
 from .speeds import speed_grid
 from .ranges import MARGINAL_THRESHOLD, grid_ranges, interval_ranges, intersect, is_stable, margin
 
-WOBBLE = "wobble"
-"""The name of a steer-dominated high-frequency oscillation (shimmy): what a flexible frame and
-fork or tyres that slip add to the Whipple bicycle's modes."""
-WOBBLE_MIN_FREQUENCY = 2 * np.pi * 3.0
-"""Lowest frequency (rad/s, 3 Hz) of an oscillation named wobble; the weave of a bicycle stays
-below it up to about 15 m/s, the wobble of the literature lies at 6-12 Hz (docs/models.md)."""
 CRITERIA = ("strict", "marginal")
 
 
@@ -77,26 +71,6 @@ class _Tracked:
 
     def column_of(self, v, root):
         return int(np.argmin(np.abs(self.guess(v) - root)))
-
-
-def coordinate(state):
-    """The coordinate a state belongs to: ``"steer-angle"``, ``"steer-rate"`` -> ``"steer"``."""
-    head, _, tail = state.rpartition("-")
-    return head if tail in ("angle", "rate") else state
-
-
-def is_wobble(model, speed, frequency):
-    """Whether the oscillation of ``frequency`` (rad/s) at ``speed`` is wobble: at least 3 Hz and
-    its largest share (participation factors, summed by coordinate) on the steer coordinate."""
-    if frequency < WOBBLE_MIN_FREQUENCY:
-        return False
-    values, vectors = np.linalg.eig(model.dynamic_matrix(speed))
-    k = int(np.argmin(np.abs(values - 1j * frequency)))
-    share = participation(vectors)[:, k]
-    by = {}
-    for state, x in zip(model.dynamic_states, share):
-        by[coordinate(state.name)] = by.get(coordinate(state.name), 0.0) + x
-    return max(by, key=by.get) == "steer"
 
 
 def _named(model, tracked, speed, kind, frequency, labels):
