@@ -25,6 +25,7 @@ from .engine import closed_form
 from .engine.crossings import OSCILLATORY, REAL
 from .model import STIFFNESS_ENTRIES, model_of, state_matrix_derivatives, stiffness_state_derivatives, values_of
 from .results import _stiffness
+from ..core.display import Display
 from ..core.errors import InputError, short
 from ..models.parameters import BenchmarkParameters
 from ..models.plausibility import check_parameters
@@ -58,8 +59,8 @@ def speed_derivatives(model, dA, speed, kind, frequency):
     return {name: float(-dlam(d).real / dv) for name, d in dA.items()}
 
 
-@dataclass(frozen=True)
-class Sensitivity:
+@dataclass(frozen=True, repr=False)
+class Sensitivity(Display):
     """Critical speeds (m/s, ``None`` if none) and their derivatives ``{name: (m/s) per unit}``."""
 
     params: dict
@@ -68,6 +69,19 @@ class Sensitivity:
     d_weave_speed: dict
     d_capsize_speed: dict
     d_stiffness: dict = None      # {speed key: {S entry: (m/s) per N m/rad}}, rigid frame: None
+
+    def display_rows(self):
+        """The two speeds and their three largest elasticities (Jupyter's table, ``repr``)."""
+        rows = []
+        for which in ("weave_speed", "capsize_speed"):
+            v = getattr(self, which)
+            rows.append((which, "none" if v is None else f"{v:.6g}", "m/s"))
+            if v is not None:
+                e = {k: x for k, x in self.elasticities(which).items() if x is not None}
+                top = sorted(e, key=lambda k: -abs(e[k]))[:3]
+                rows.append((f"largest elasticities of the {which.replace('_', ' ')}",
+                             ", ".join(f"{k} {e[k]:+.3g}" for k in top), "(p/v) dv/dp"))
+        return rows
 
     def elasticities(self, which):
         """``{name: (p / v) dv/dp}`` for ``which`` in ``weave_speed`` | ``capsize_speed``."""
@@ -126,7 +140,7 @@ def _checked(params, S, vmax, names):
 def sensitivity_figure(result, title="", size=None):
     """Horizontal bar chart of the elasticities of both speeds (a matplotlib Figure; ``size`` in inches)."""
     # lazy: matplotlib only for a figure
-    from matplotlib.figure import Figure
+    from ..plots.figure import Figure
 
     fig = Figure(figsize=size or (10, 7.5), layout="constrained")
     axes = fig.subplots(1, 2, sharey=True)

@@ -23,6 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core.display import Display
 from ..core.errors import InputError
 from ..models.parameters import NAMES
 from .engine.critical import critical_speeds
@@ -102,8 +103,8 @@ def matrices_of(model, g):
     return {"M": mech.M, "C1": mech.C[1], "K0": mech.K[0] / g, "K2": mech.K[2]}
 
 
-@dataclass(frozen=True)
-class Propagation:
+@dataclass(frozen=True, repr=False)
+class Propagation(Display):
     """Nominal values and standard deviations; ``linear`` and (if sampled) ``montecarlo`` results."""
 
     matrices: dict          # {M|C1|K0|K2: {"nominal": 2x2, "std": 2x2}} (method's std)
@@ -112,6 +113,17 @@ class Propagation:
     inputs: dict            # {key: {"distribution", "std"}}
     method: str
     samples: object = None  # Monte Carlo draws: {"weave_speed": array, "capsize_speed": array} or None
+
+    def display_rows(self):
+        """The method, the inputs' spreads and each critical speed's nominal value and std (Jupyter's
+        table, ``repr``)."""
+        rows = [("method", self.method, ""),
+                ("inputs", ", ".join(f"{k} +- {v['std']:.3g}" for k, v in self.inputs.items()), "SI")]
+        for key, value in self.speeds.items():
+            shown = "none" if value.get("nominal") is None else \
+                f"{value['nominal']:.6g} +- {value['std']:.3g}" if value.get("std") is not None else f"{value['nominal']:.6g}"
+            rows.append((key, shown, "m/s"))
+        return rows
 
     def to_dict(self):
         eig = {"speeds": list(map(float, self.eigen["speeds"])), "modes": {
@@ -260,7 +272,7 @@ def uncertainty_figure(result, title="", size=None):
     """Real parts against speed with +-2 std bands (linear) and 95 % Monte Carlo bands, and the
     Monte Carlo histograms of the critical speeds (a matplotlib Figure)."""
     # lazy: matplotlib only for a figure
-    from matplotlib.figure import Figure
+    from ..plots.figure import Figure
 
     fig = Figure(figsize=size or (11, 5), layout="constrained")
     axes = fig.subplots(1, 2, width_ratios=(2, 1))

@@ -121,9 +121,9 @@ class EigenPart(Choice):
     IMAG = "imag"
     """Imaginary parts (rad/s)."""
     FREQUENCY = "frequency"
-    """Natural frequency |lambda| (rad/s)."""
+    """Natural frequency ``|lambda|`` (rad/s)."""
     DAMPING = "damping"
-    """Damping ratio -Re/|lambda|."""
+    """Damping ratio ``-Re/|lambda|``."""
 
 
 class Format(Choice):

@@ -9,6 +9,8 @@ from dataclasses import asdict, dataclass, fields, replace
 
 import numpy as np
 
+from ..core.display import Display, html_table
+
 DESCRIPTIONS = {
     "w": "wheelbase [m]", "c": "trail [m]", "lam": "steer-axis tilt [rad]",
     "g": "gravity [m/s^2]", "rR": "rear wheel radius [m]", "mR": "rear wheel mass [kg]",
@@ -24,8 +26,8 @@ DESCRIPTIONS = {
 }
 
 
-@dataclass(frozen=True)
-class BenchmarkParameters:
+@dataclass(frozen=True, repr=False)
+class BenchmarkParameters(Display):
     """One benchmark parameter set; every field SI (see :data:`DESCRIPTIONS`)."""
 
     w: float
@@ -62,6 +64,21 @@ class BenchmarkParameters:
     def replace(self, **changes):
         """A copy with some parameters changed."""
         return replace(self, **changes)
+
+    def display_rows(self):
+        """``[(name, value, SI unit)]`` of the 26 parameters, in the Meijaard order."""
+        units = parameter_units()
+        return [(k, f"{float(v):.6g}", units[k]) for k, v in asdict(self).items()]
+
+    def __repr__(self):
+        values = ", ".join(f"{k}={float(v):.4g}" for k, v in asdict(self).items())
+        return f"BenchmarkParameters({values}; SI)"
+
+    def _repr_html_(self):
+        """The 26 parameters with their units and meanings (Jupyter's rich display)."""
+        return html_table("BenchmarkParameters (Meijaard et al. 2007)",
+                          [(f"{k}: {DESCRIPTIONS[k][:DESCRIPTIONS[k].index(' [')]}", v, u)
+                           for k, v, u in self.display_rows()])
 
     def inertia(self, body):
         """3x3 inertia tensor of ``body`` in 'RBHF' (wheels: Izz = Ixx by symmetry)."""

@@ -1,5 +1,6 @@
-"""Figures without global state: a new :class:`matplotlib.figure.Figure`, the file formats
-matplotlib can write, and saving a figure with its text kept as text in vector files.
+"""Figures without global state: a new :class:`Figure` (a :class:`matplotlib.figure.Figure` that
+shows itself in Jupyter), the file formats matplotlib can write, and saving a figure with its
+text kept as text in vector files.
 
 No pyplot and no ``matplotlib.use``: the caller's backend and open figures are left alone.
 """
@@ -10,7 +11,7 @@ from pathlib import Path
 
 from matplotlib import rc_context
 from matplotlib.backend_bases import FigureCanvasBase
-from matplotlib.figure import Figure
+from matplotlib import figure
 
 from ..core.errors import InputError, short, wrong_type
 from ..core.output import write_atomic
@@ -25,6 +26,24 @@ VECTOR_TEXT = {"svg.fonttype": "none", "pdf.fonttype": 42, "ps.fonttype": 42}
 
 UNWRITABLE = {"pgf"}
 """Formats matplotlib lists but that need outside tools (LaTeX) to write."""
+
+
+DISPLAY_DPI = 100
+"""Resolution (dots per inch) of the PNG a figure shows in Jupyter."""
+
+
+class Figure(figure.Figure):
+    """A :class:`matplotlib.figure.Figure` that displays itself in Jupyter without ``%matplotlib inline``.
+
+    bikemass never registers its figures with pyplot (that would change the caller's state), so
+    IPython knows them only through this class's ``_repr_png_``: the figure drawn by matplotlib's
+    Agg canvas at :data:`DISPLAY_DPI`, on demand. Everything else is matplotlib's Figure: save it,
+    change its axes, or give it to ``pyplot`` as usual.
+    """
+
+    def _repr_png_(self):
+        """The figure as PNG bytes (IPython's rich display)."""
+        return figure_bytes(self, "png", DISPLAY_DPI)
 
 
 MAX_INCHES = 1000.0
@@ -52,7 +71,7 @@ def check_limits(limits, what):
 
 
 def new_figure(size):
-    """An empty :class:`~matplotlib.figure.Figure` of ``size`` = (width, height) in inches
+    """An empty :class:`Figure` of ``size`` = (width, height) in inches
     (each above 0 and at most :data:`MAX_INCHES`), laid out by matplotlib's constrained layout."""
     size = _pair(size, "size", f"a figure size (width, height) in inches, each in (0, {MAX_INCHES:g}]",
                  lambda a, b: 0 < a <= MAX_INCHES and 0 < b <= MAX_INCHES)
@@ -88,7 +107,7 @@ def figure_bytes(fig, fmt="png", dpi=DPI):
 
 def save_figure(fig, path, dpi=DPI):
     """Write ``fig`` to ``path`` (format from the suffix) atomically: never half-written."""
-    if not isinstance(fig, Figure):
+    if not isinstance(fig, figure.Figure):
         raise wrong_type("fig", fig, "a matplotlib Figure")
     if isinstance(dpi, bool) or not isinstance(dpi, (int, float)) or not MIN_DPI <= dpi <= MAX_DPI:
         raise InputError("dpi", dpi, f"a resolution in dots per inch, {MIN_DPI} to {MAX_DPI}")

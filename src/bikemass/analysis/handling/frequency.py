@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg
 
+from ...core.display import Display
 from ...core.errors import InputError, short
 from ...core.frozen import readonly, short_repr
 from .plant import linear_model, signal_unit, siso
@@ -93,7 +94,7 @@ DEFAULT_FREQUENCIES = (0.1, 100.0, 1000)
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class FrequencyResponse:
+class FrequencyResponse(Display):
     """``G(j w)`` from one input to one output at one speed.
 
     Attributes

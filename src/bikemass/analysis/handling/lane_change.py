@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ...core.display import Display
 from ...core.errors import InputError, short
 from ...core.frozen import FrozenMap, readonly, short_repr
 from ...core.threads import one_blas_thread
@@ -57,7 +58,7 @@ def with_path_filter(A, b):
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class LaneChange:
+class LaneChange(Display):
     """The closed loop through a lane change at one speed.
 
     Attributes

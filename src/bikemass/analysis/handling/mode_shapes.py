@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ...core.display import Display
 from ...core.frozen import readonly, short_repr
 from ..engine.modes import follow_modes
 from .plant import check_speed, linear_model
@@ -39,7 +40,7 @@ def full_eigenvector(A, n_dynamic, value, vector):
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class ModeShapes:
+class ModeShapes(Display):
     """The modes of a linear model at one speed, each as the amplitude and phase of its coordinates.
 
     Attributes

@@ -10,6 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ...core.display import Display
 from ...core.errors import BikemassWarning, InputError, short
 from ...core.frozen import readonly, short_repr
 from ...core.threads import one_blas_thread
@@ -71,7 +72,7 @@ def given_gains(gains, speeds):
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class HandlingResult:
+class HandlingResult(Display):
     """The rider and bicycle at every speed.
 
     Attributes

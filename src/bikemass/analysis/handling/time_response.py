@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core.choices import closest
+from ...core.display import Display
 from ...core.errors import InputError, short, wrong_type
 from ...core.frozen import FrozenMap, readonly, short_repr
 from .discrete import march
@@ -80,7 +81,7 @@ def sample_times(duration, step):
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class TimeResponse:
+class TimeResponse(Display):
     """The states of a linear model against time.
 
     Attributes

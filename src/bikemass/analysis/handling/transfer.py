@@ -19,6 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg
 
+from ...core.display import Display
 from ...core.frozen import readonly, short_repr
 from .plant import linear_model, siso, signal_unit
 
@@ -109,7 +110,7 @@ def gain_unit(output_unit, input_unit, relative_degree):
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class TransferFunction:
+class TransferFunction(Display):
     """``G(s) = gain * prod(s - z) / prod(s - p)`` from one input to one output at one speed.
 
     Attributes
