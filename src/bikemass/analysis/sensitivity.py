@@ -16,9 +16,11 @@ finite-difference step anywhere.  The critical speeds are the engine's closed fo
 (per cent change of the speed per per cent change of the parameter).
 """
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from ..models.parameters import NAMES
 from .engine import closed_form
@@ -27,6 +29,7 @@ from .model import STIFFNESS_ENTRIES, model_of, state_matrix_derivatives, stiffn
 from .results import _stiffness
 from ..core.display import Display
 from ..core.errors import InputError, short
+from ..core.keywords import renamed_keywords
 from ..models.parameters import BenchmarkParameters
 from ..models.plausibility import check_parameters
 from ..core.errors import wrong_type
@@ -98,12 +101,65 @@ class Sensitivity(Display):
         return out
 
 
-def sensitivity(params, S=None, vmax=30.0, names=NAMES):
-    """:class:`Sensitivity` of ``params`` (:class:`~bikemass.models.parameters.BenchmarkParameters`) with
-    rear-frame stiffness ``S`` (2x2 N m/rad or ``None``); crossings searched on ``(0, vmax]`` m/s.
-    InputError for parameters the model is not defined for, an S that is not symmetric positive
-    definite, a ``vmax`` that is not a positive finite speed or ``names`` not among the 26."""
-    params, S, names = _checked(params, S, vmax, names)
+@renamed_keywords(S="stiffness")
+def sensitivity(params: BenchmarkParameters, stiffness: "ArrayLike | None" = None, vmax: float = 30.0,
+                names: "Sequence[str]" = NAMES) -> Sensitivity:
+    """Exact derivatives of the weave and capsize speeds with respect to each benchmark parameter.
+
+    The first crossing of each kind on ``(0, vmax]`` and its derivative by the implicit function
+    theorem on the crossing eigenvalue (left and right eigenvectors), with the matrices'
+    derivatives by the complex step: exact to rounding, no finite differences.
+
+    Parameters
+    ----------
+    params : BenchmarkParameters
+        From :func:`bikemass.parameters` (SI).
+    stiffness : array_like of shape (2, 2), optional
+        Rear-frame stiffness S (N m/rad); ``None`` = rigid. With S the derivatives with respect
+        to its entries are given too. (``S=`` is the deprecated old name.)
+    vmax : float
+        Highest speed searched (m/s), positive and finite.
+    names : sequence of str
+        The parameters to differentiate by (default all 26, :data:`~bikemass.PARAMETER_NAMES`).
+
+    Returns
+    -------
+    Sensitivity
+        ``weave_speed``, ``capsize_speed`` (m/s, ``None`` if none); ``d_weave_speed``,
+        ``d_capsize_speed`` ``{name: (m/s) per unit of the parameter}``; ``d_stiffness``
+        ``{speed: {S entry: (m/s) per N m/rad}}`` or ``None``; ``elasticities(which)`` the
+        dimensionless ``(p/v) dv/dp``.
+
+    Raises
+    ------
+    InputError
+        Parameters the model is not defined for, an S that is not symmetric positive definite, a
+        ``vmax`` that is not a positive finite speed, or ``names`` not among the 26.
+
+    See Also
+    --------
+    geometry_sensitivity : Derivatives with respect to the geometry a bicycle file is written in.
+    uncertainty : Spreads of the inputs carried to spreads of the speeds.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> p = bm.parameters("benchmark")
+    >>> s = bm.sensitivity(p, names=("c", "lam", "mB"))
+    >>> print(f"weave {s.weave_speed:.6f} m/s: d/dc {s.d_weave_speed['c']:+.4f} (m/s)/m, "
+    ...       f"d/dlam {s.d_weave_speed['lam']:+.4f} (m/s)/rad")
+    weave 4.292383 m/s: d/dc +11.4800 (m/s)/m, d/dlam +4.1767 (m/s)/rad
+    >>> {k: round(v, 4) for k, v in s.elasticities("capsize_speed").items()}
+    {'c': 0.3836, 'lam': 0.2247, 'mB': 0.3585}
+
+    The same derivative by a central difference of two stability analyses:
+
+    >>> h = 1e-5
+    >>> weave = lambda c: bm.stability(p.replace(c=c)).weave_speeds[0]
+    >>> print(f"{(weave(p.c + h) - weave(p.c - h)) / (2 * h):+.4f} (m/s)/m")
+    +11.4800 (m/s)/m
+    """
+    params, S, names = _checked(params, stiffness, vmax, names)
     model = model_of(values_of(params), S)
     found = closed_form.axis_crossings(model, 0.0, vmax)
     speeds, derivs = {}, {}
@@ -172,16 +228,55 @@ def input_value(model, key):
     return get_path(model, key)
 
 
-def geometry_sensitivity(model, keys, result=None, step=GEOMETRY_STEP):
-    """Derivatives of the weave and capsize speeds w.r.t. geometry-level inputs ``keys`` (dotted
-    paths, see :mod:`bikemass.scenario.inputs`).
+def geometry_sensitivity(model: Model, keys: "str | Sequence[str]", result: Sensitivity | None = None,
+                         step: float = GEOMETRY_STEP) -> dict:
+    """Derivatives of the weave and capsize speeds with respect to geometry-level inputs.
 
     Chain rule: ``dv/dx = sum_p (dv/dp)(dp/dx) + sum_S (dv/dS)(dS/dx)``.  ``dv/dp`` and ``dv/dS``
     are exact (:func:`sensitivity`); ``dp/dx`` and ``dS/dx`` (geometry -> mass properties, beam
     stiffness, rider pose) are central differences with relative step ``step``, and again with
     twice the step: ``difference_check`` is the largest change between the two (m/s per unit),
     an estimate of the finite-difference error.
-    Returns ``{key: {value, step, d_weave_speed, d_capsize_speed, difference_check}}``.
+
+    Parameters
+    ----------
+    model : bikemass.scenario.inputs.Model
+        A bicycle, rider and stiffness by name or file: ``Model("jamis", "relaxed", "steel")``.
+    keys : str or sequence of str
+        Dotted paths into the bicycle or pose YAML (``"geometry.trail"``,
+        ``"sections.seat_stay.wall"``, ``"rider.segments.torso.angle"``) or benchmark names;
+        see :mod:`bikemass.scenario.inputs`.
+    result : Sensitivity, optional
+        The model's :func:`sensitivity` if already computed.
+    step : float
+        Relative step of the central differences, in (0, 0.1].
+
+    Returns
+    -------
+    dict
+        ``{key: {"value", "step", "weave_speed", "capsize_speed", "difference_check"}}``: the
+        input's value and step in the unit its file writes it in; ``weave_speed`` and
+        ``capsize_speed`` the derivatives of those speeds, and ``difference_check``, in m/s per
+        that unit.
+
+    Raises
+    ------
+    InputError
+        An unknown key, a ``step`` out of range, or a model that cannot be built.
+    InputTypeError
+        ``model`` not a :class:`~bikemass.scenario.inputs.Model`.
+
+    See Also
+    --------
+    sensitivity : The exact parameter derivatives it chains.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> from bikemass.scenario.inputs import Model
+    >>> d = bm.geometry_sensitivity(Model("jamis", "relaxed"), ["geometry.trail"])["geometry.trail"]
+    >>> print(f"trail {d['value']:.3f} m: d(weave speed)/d(trail) {d['weave_speed']:+.2f} (m/s)/m")
+    trail 0.060 m: d(weave speed)/d(trail) +15.50 (m/s)/m
     """
     if not isinstance(model, Model):
         raise wrong_type("model", model, "a bikemass.scenario.inputs.Model")
