@@ -157,7 +157,8 @@ class FrequencyResponse(Display):
                           ("frequencies", f"{w[0]:g}..{w[-1]:g} rad/s x {len(w)}"))
 
 
-def frequency_response(system, speed, input, output, frequencies=None, stiffness=None):
+def frequency_response(system: "LinearModel | BenchmarkParameters", speed: float, input: str, output: str,
+                       frequencies: "ArrayLike | None" = None, stiffness: "ArrayLike | None" = None) -> FrequencyResponse:
     """The frequency response ``G(j w) = c (j w I - A)^-1 b`` from ``input`` to ``output``.
 
     Parameters
@@ -177,6 +178,18 @@ def frequency_response(system, speed, input, output, frequencies=None, stiffness
     -------
     FrequencyResponse
         ``frequencies`` (rad/s), ``magnitude`` (dB), ``phase`` (deg), ``values`` (complex).
+
+    Raises
+    ------
+    InputError
+        A speed that is not a finite number >= 0, an unknown input or output (the closest name
+        is suggested), a bad S, or a system of another type, or frequencies that are not
+        positive and increasing.
+
+    See Also
+    --------
+    transfer_function : Zeros, poles and gain of the same input and output.
+    plot_bode : Draw it.
 
     Examples
     --------

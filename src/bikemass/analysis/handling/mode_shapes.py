@@ -117,7 +117,7 @@ class ModeShapes(Display):
                           ("coordinates", ", ".join(self.coordinates)))
 
 
-def mode_shapes(system, speed, stiffness=None):
+def mode_shapes(system: "LinearModel | BenchmarkParameters", speed: float, stiffness: "ArrayLike | None" = None) -> ModeShapes:
     """Every mode of a linear model at ``speed``: eigenvalue and the amplitude and phase of each
     coordinate.
 
@@ -135,6 +135,16 @@ def mode_shapes(system, speed, stiffness=None):
     ModeShapes
         One row per tracked mode (weave 1, weave 2, capsize, caster, ... ; a weave pair gives two
         conjugate rows), one column per coordinate (roll-angle, steer-angle, heading, lateral).
+
+    Raises
+    ------
+    InputError
+        A bad speed or S, or a system of another type.
+
+    See Also
+    --------
+    plot_mode_shapes : Draw them as phasors.
+    stability : The modes over speed.
 
     Examples
     --------

@@ -137,8 +137,9 @@ class TimeResponse(Display):
                           ("states", len(self.names)), ("inputs", applied))
 
 
-def simulate(system, speed, initial=None, inputs=None, duration=DEFAULT_DURATION, step=DEFAULT_STEP,
-             stiffness=None):
+def simulate(system: "LinearModel | BenchmarkParameters", speed: float, initial: "Mapping[str, float] | None" = None,
+             inputs: "Mapping[str, tuple[str, float]] | None" = None, duration: float = DEFAULT_DURATION,
+             step: float = DEFAULT_STEP, stiffness: "ArrayLike | None" = None) -> TimeResponse:
     """The time response from initial conditions and to steps and impulses of the inputs.
 
     Parameters
@@ -162,6 +163,17 @@ def simulate(system, speed, initial=None, inputs=None, duration=DEFAULT_DURATION
     -------
     TimeResponse
         ``time`` (s) and ``values`` (n, N); ``response["roll-rate"]`` is one state's samples.
+
+    Raises
+    ------
+    InputError
+        A bad speed, an unknown state or input, an input other than a step or an impulse, or a
+        duration or step out of range (at most 10^6 samples).
+
+    See Also
+    --------
+    plot_time_response : Draw it.
+    lane_change : A rider steering the bicycle through a manoeuvre.
 
     Examples
     --------
