@@ -39,7 +39,36 @@ def shipped_poses() -> list[str]:
 class Rider:
     """A posed rider: ``pose`` as asked for, display ``name``, and its ``parts`` (tuple of Part);
     ``spec`` = (pose node, as_printed) it was read from, which lets a bicycle re-seat it
-    (:mod:`bikemass.rider.seating`), or None."""
+    (:mod:`bikemass.rider.seating`), or None.
+
+    See Also
+    --------
+    bikemass.load_rider : Makes one from a pose name, a file or a mapping.
+    bikemass.pose_rider : Poses one by joint angles.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> rider = bm.load_rider("aero-tuck")
+    >>> [name for name, body, _ in rider.breakdown()][:3]
+    ['head', 'torso', 'upper_arm_right']
+    >>> print(f"{rider.properties().mass:.2f} kg")
+    82.15 kg
+
+    See Also
+    --------
+    bikemass.load_rider : Makes one from a pose name, a file or a mapping.
+    bikemass.pose_rider : Poses one by joint angles.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> rider = bm.load_rider("aero-tuck")
+    >>> [name for name, body, _ in rider.breakdown()][:3]
+    ['head', 'torso', 'upper_arm_right']
+    >>> print(f"{rider.properties().mass:.2f} kg")
+    82.15 kg
+    """
 
     pose: str
     name: str

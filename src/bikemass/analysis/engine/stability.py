@@ -146,6 +146,38 @@ class StabilityResult(Result):
         ``{label: {criterion: {"exact"|"grid": ((start, stop), ...)}}}`` (m/s) of each mode.
     stiffness : numpy.ndarray of shape (2, 2) or None
         The rear frame's stiffness S (N m/rad) of a quasi-static flexible frame; ``None``: rigid.
+
+    See Also
+    --------
+    bikemass.stability : Makes one.
+    bikemass.plot_eigenvalues : Draws one.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> result = bm.stability(bm.parameters("benchmark"))
+    >>> result.labels
+    ('weave 1', 'weave 2', 'capsize', 'caster')
+    >>> [(c.kind, c.direction, round(c.speed, 4)) for c in result.crossings]
+    [('oscillatory', 'stabilising', 4.2924), ('real', 'destabilising', 6.0243)]
+    >>> result.ranges["strict"]["grid"]                # the first and last stable grid speeds
+    ((4.3, 6.0),)
+
+    See Also
+    --------
+    bikemass.stability : Makes one.
+    bikemass.plot_eigenvalues : Draws one.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> result = bm.stability(bm.parameters("benchmark"))
+    >>> result.labels
+    ('weave 1', 'weave 2', 'capsize', 'caster')
+    >>> [(c.kind, c.direction, round(c.speed, 4)) for c in result.crossings]
+    [('oscillatory', 'stabilising', 4.2924), ('real', 'destabilising', 6.0243)]
+    >>> result.ranges["strict"]["grid"]                # the first and last stable grid speeds
+    ((4.3, 6.0),)
     """
 
     model: object
