@@ -36,20 +36,6 @@ class Bicycle:
     ['front_frame', 'front_wheel', 'rear_frame', 'rear_wheel']
     >>> print(f"rear frame {bike.bodies()['rear_frame'].mass:.3f} kg")
     rear frame 4.557 kg
-
-    See Also
-    --------
-    bikemass.load_bicycle : Makes one from a name, a file or a mapping.
-    bikemass.parameters : Its benchmark parameter set.
-
-    Examples
-    --------
-    >>> import bikemass as bm
-    >>> bike = bm.load_bicycle("jamis")
-    >>> sorted(bike.bodies())
-    ['front_frame', 'front_wheel', 'rear_frame', 'rear_wheel']
-    >>> print(f"rear frame {bike.bodies()['rear_frame'].mass:.3f} kg")
-    rear frame 0.000 kg
     """
 
     name: str

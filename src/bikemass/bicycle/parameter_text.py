@@ -179,21 +179,6 @@ class MeasuredParameters:
     >>> measured = bm.load_parameter_text(path)
     >>> print(measured.parameters.w, measured.std["w"])
     1.02 0.001
-
-    See Also
-    --------
-    bikemass.load_parameter_text : Reads one.
-
-    Examples
-    --------
-    >>> import os, tempfile
-    >>> import bikemass as bm
-    >>> path = os.path.join(tempfile.mkdtemp(), "BenchmarkBenchmark.txt")
-    >>> values = bm.parameters("benchmark").to_dict()
-    >>> _ = open(path, "w").write("".join(f"{k} = {v}+/-0.001\n" for k, v in values.items()))
-    >>> measured = bm.load_parameter_text(path)
-    >>> print(measured.parameters.w, measured.std["w"])
-    1.02 0.001
     """
 
     parameters: object

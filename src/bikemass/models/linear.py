@@ -131,21 +131,6 @@ class LinearModel:
     >>> weave = max(np.linalg.eigvals(A), key=lambda z: z.imag)
     >>> print(f"{weave.real:.6f} +- {weave.imag:.6f}i")   # Meijaard et al. (2007), Table 2
     -0.775342 +- 4.464868i
-
-    See Also
-    --------
-    bikemass.linear_model : The Whipple bicycle of a parameter set.
-    bikemass.stability : Any model of the family is analysed the same way.
-
-    Examples
-    --------
-    >>> import bikemass as bm
-    >>> model = bm.linear_model(bm.parameters("benchmark"))
-    >>> model.n_dynamic, model.state_names()
-    (4, ('roll-angle', 'steer-angle', 'roll-rate', 'steer-rate', 'heading', 'lateral'))
-    >>> A = model.state_matrix([0.0, 5.0])                 # (speeds, N, N)
-    >>> print(A.shape, f"{A[1, 2, 0]:.4f}")                # d(roll-rate)/dt per rad of roll at 5 m/s
-    (2, 6, 6) 0.0000
     """
 
     name: str

@@ -46,25 +46,6 @@ class BenchmarkParameters(Display):
     95.0 85.0
     >>> p.inertia("B").tolist()                    # kg m^2, about the rear frame's centre of mass
     [[9.2, 0.0, 2.4], [0.0, 11.0, 0.0], [2.4, 0.0, 2.8]]
-
-    See Also
-    --------
-    bikemass.parameters : The set of a bicycle with a rider.
-    bikemass.PARAMETER_NAMES : The 26 names in the Meijaard order.
-
-    Examples
-    --------
-    >>> import bikemass as bm
-    >>> p = bm.parameters("benchmark")                # Meijaard et al. (2007), Table 1
-    >>> print(p.w, p.c, p.mB, p.IBxz)
-    1.02 0.08 85.0 2.4
-    >>> heavier = p.replace(mB=95.0)                  # immutable: a changed copy
-    >>> print(heavier.mB, p.mB)
-    95.0 85.0
-    >>> print(p.inertia("B"))
-    [[9.2 0.  2.4]
-     [0.  11.  0. ]
-     [2.4 0.  2.8]]
     """
 
     w: float

@@ -54,20 +54,6 @@ class Rider:
     ['head', 'torso', 'upper_arm_right']
     >>> print(f"{rider.properties().mass:.2f} kg")
     82.15 kg
-
-    See Also
-    --------
-    bikemass.load_rider : Makes one from a pose name, a file or a mapping.
-    bikemass.pose_rider : Poses one by joint angles.
-
-    Examples
-    --------
-    >>> import bikemass as bm
-    >>> rider = bm.load_rider("aero-tuck")
-    >>> [name for name, body, _ in rider.breakdown()][:3]
-    ['head', 'torso', 'upper_arm_right']
-    >>> print(f"{rider.properties().mass:.2f} kg")
-    82.15 kg
     """
 
     pose: str

@@ -162,22 +162,6 @@ class StabilityResult(Result):
     [('oscillatory', 'stabilising', 4.2924), ('real', 'destabilising', 6.0243)]
     >>> result.ranges["strict"]["grid"]                # the first and last stable grid speeds
     ((4.3, 6.0),)
-
-    See Also
-    --------
-    bikemass.stability : Makes one.
-    bikemass.plot_eigenvalues : Draws one.
-
-    Examples
-    --------
-    >>> import bikemass as bm
-    >>> result = bm.stability(bm.parameters("benchmark"))
-    >>> result.labels
-    ('weave 1', 'weave 2', 'capsize', 'caster')
-    >>> [(c.kind, c.direction, round(c.speed, 4)) for c in result.crossings]
-    [('oscillatory', 'stabilising', 4.2924), ('real', 'destabilising', 6.0243)]
-    >>> result.ranges["strict"]["grid"]                # the first and last stable grid speeds
-    ((4.3, 6.0),)
     """
 
     model: object
