@@ -29,7 +29,8 @@ DEFAULT_MARGINAL = 2.0
 """Modulus (rad/s) below which an unstable eigenvalue counts as marginally stable (the thesis's)."""
 
 
-def matrices(params: BenchmarkParameters | CanonicalMatrices, stiffness: ArrayLike | None = None) -> CanonicalMatrices:
+def matrices(params: BenchmarkParameters | CanonicalMatrices,
+             stiffness: "ArrayLike | None" = None) -> CanonicalMatrices:
     """The canonical matrices M, C1, K0, K2 of a parameter set, with a flexible rear frame.
 
     ``M q'' + v C1 q' + (g K0 + v^2 K2) q = f`` with ``q = [roll, steer]`` (rad): Meijaard et al.
@@ -135,7 +136,7 @@ def _speeds(values):
     return check_speeds(values)
 
 
-def linear_model(params: BenchmarkParameters | LinearModel, stiffness: ArrayLike | None = None) -> LinearModel:
+def linear_model(params: BenchmarkParameters | LinearModel, stiffness: "ArrayLike | None" = None) -> LinearModel:
     """The linear model of a parameter set: the Whipple bicycle, rigid or with the quasi-static
     flexible rear frame of stiffness S.
 
@@ -170,8 +171,9 @@ def linear_model(params: BenchmarkParameters | LinearModel, stiffness: ArrayLike
     --------
     >>> import bikemass as bm
     >>> model = bm.linear_model(bm.parameters("benchmark"))
-    >>> print(model.name, [s.name for s in model.states], [s.name for s in model.inputs])
-    whipple ['roll-angle', 'steer-angle', 'roll-rate', 'steer-rate', 'heading', 'lateral'] ['roll-torque', 'steer-torque']
+    >>> print(model.name, model.state_names, model.input_names)
+    whipple ('roll-angle', 'steer-angle', 'roll-rate', 'steer-rate', 'heading', 'lateral')
+    ('roll-torque', 'steer-torque')
     >>> model.state_matrix([5.0]).shape                 # A(v) at one speed: (speeds, 6, 6)
     (1, 6, 6)
     """
@@ -184,8 +186,8 @@ def linear_model(params: BenchmarkParameters | LinearModel, stiffness: ArrayLike
     return whipple_model(check_parameters(params, "params"), _stiffness(stiffness))
 
 
-def eigenvalues(params: BenchmarkParameters | LinearModel, stiffness: ArrayLike | None = None,
-                speeds: ArrayLike | None = None) -> Modes:
+def eigenvalues(params: BenchmarkParameters | LinearModel, stiffness: "ArrayLike | None" = None,
+                speeds: "ArrayLike | None" = None) -> Modes:
     """Eigenvalues over speed, followed across speed and named.
 
     Parameters
@@ -227,8 +229,8 @@ def eigenvalues(params: BenchmarkParameters | LinearModel, stiffness: ArrayLike 
     return follow_modes(linear_model(params, stiffness), _speeds(speeds))
 
 
-def stability(params: BenchmarkParameters | LinearModel, stiffness: ArrayLike | None = None,
-              speeds: ArrayLike | None = None, marginal: float = DEFAULT_MARGINAL) -> StabilityResult:
+def stability(params: BenchmarkParameters | LinearModel, stiffness: "ArrayLike | None" = None,
+              speeds: "ArrayLike | None" = None, marginal: float = DEFAULT_MARGINAL) -> StabilityResult:
     """Eigenvalues, critical speeds and stable speed ranges of a bicycle.
 
     Parameters

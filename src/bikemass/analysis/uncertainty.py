@@ -124,8 +124,8 @@ class Propagation(Display):
         rows = [("method", self.method, ""),
                 ("inputs", ", ".join(f"{k} +- {v['std']:.3g}" for k, v in self.inputs.items()), "SI")]
         for key, value in self.speeds.items():
-            shown = "none" if value.get("nominal") is None else \
-                f"{value['nominal']:.6g} +- {value['std']:.3g}" if value.get("std") is not None else f"{value['nominal']:.6g}"
+            nominal, std = value.get("nominal"), value.get("std")
+            shown = "none" if nominal is None else f"{nominal:.6g}" + ("" if std is None else f" +- {std:.3g}")
             rows.append((key, shown, "m/s"))
         return rows
 

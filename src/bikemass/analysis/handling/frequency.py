@@ -158,7 +158,8 @@ class FrequencyResponse(Display):
 
 
 def frequency_response(system: "LinearModel | BenchmarkParameters", speed: float, input: str, output: str,
-                       frequencies: "ArrayLike | None" = None, stiffness: "ArrayLike | None" = None) -> FrequencyResponse:
+                       frequencies: "ArrayLike | None" = None,
+                       stiffness: "ArrayLike | None" = None) -> FrequencyResponse:
     """The frequency response ``G(j w) = c (j w I - A)^-1 b`` from ``input`` to ``output``.
 
     Parameters

@@ -139,8 +139,8 @@ def follow_lane_change(closed, lateral_row, names, units, kind="double", step=0.
 
 
 @one_blas_thread()
-def lane_change(system: "LinearModel | BenchmarkParameters", speed: float, gains: "Gains | ArrayLike | None" = None, kind: str = "double",
-                step: float = 0.01, stiffness: "ArrayLike | None" = None) -> LaneChange:
+def lane_change(system: "LinearModel | BenchmarkParameters", speed: float, gains: "Gains | ArrayLike | None" = None,
+                kind: str = "double", step: float = 0.01, stiffness: "ArrayLike | None" = None) -> LaneChange:
     """The rider and bicycle through a 2 m lane change (and back, ``kind="double"``).
 
     Parameters

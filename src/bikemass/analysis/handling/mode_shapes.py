@@ -117,7 +117,8 @@ class ModeShapes(Display):
                           ("coordinates", ", ".join(self.coordinates)))
 
 
-def mode_shapes(system: "LinearModel | BenchmarkParameters", speed: float, stiffness: "ArrayLike | None" = None) -> ModeShapes:
+def mode_shapes(system: "LinearModel | BenchmarkParameters", speed: float,
+                stiffness: "ArrayLike | None" = None) -> ModeShapes:
     """Every mode of a linear model at ``speed``: eigenvalue and the amplitude and phase of each
     coordinate.
 

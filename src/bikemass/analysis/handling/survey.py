@@ -150,7 +150,8 @@ class HandlingResult(Display):
 
 @one_blas_thread()
 def handling(system: "LinearModel | BenchmarkParameters", speeds: "ArrayLike | None" = None,
-             gains: "Gains | str | os.PathLike | Mapping | ArrayLike | None" = None, stiffness: "ArrayLike | None" = None) -> HandlingResult:
+             gains: "Gains | str | os.PathLike | Mapping | ArrayLike | None" = None,
+             stiffness: "ArrayLike | None" = None) -> HandlingResult:
     """The rider in the loop at every speed: gains, closed-loop stability and handling qualities.
 
     Parameters
