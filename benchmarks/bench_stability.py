@@ -19,7 +19,8 @@ from bikemass.scenario.catalog import parameters
 from bikemass.models.parameter_export import format_parameters
 from bikemass.analysis.engine.eigen import eigen_sweep
 from bikemass.analysis.engine.modes import follow_modes
-from bikemass.analysis.engine.stability import analyse, speed_grid
+from bikemass.analysis.engine.stability import analyse
+from bikemass.analysis.engine.speeds import speed_grid
 from bikemass.models.whipple import whipple_model
 
 

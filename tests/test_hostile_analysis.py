@@ -30,10 +30,10 @@ def test_grid_count_is_exact_beyond_64_bits(tmp_path):
 
 
 def test_saltelli_sample_counts_n_times_d_plus_2(tmp_path):
-    """n = 4,000,000 base points of 4 keys is 24,000,000 configurations, not 4,000,000."""
+    """n = 400,000 base points of 4 keys is 2,400,000 configurations, not 400,000."""
     keys = "".join(f"  {k}: {{from: 0.01, to: 0.2}}\n" for k in ("c", "w", "rR", "rF"))
-    text = f"bike: benchmark\nvary:\n{keys}global_sensitivity: true\nsample: {{method: sobol, n: 4000000}}\n"
-    with pytest.raises(InputError, match="this sample has 24000000"):
+    text = f"bike: benchmark\nvary:\n{keys}global_sensitivity: true\nsample: {{method: sobol, n: 400000}}\n"
+    with pytest.raises(InputError, match="this sample has 2400000"):
         read_spec(_spec(tmp_path, text))
 
 
@@ -45,8 +45,8 @@ def test_sample_seed_must_be_whole(tmp_path):
 
 def test_changed_parameters_are_checked():
     model = Model("benchmark")
-    for change, key in (({"mB": -85.0}, "mB"), ({"lam": 2.0}, "lam"), ({"lam": 0.0}, "lam"),
-                        ({"rF": 0.0}, "rF"), ({"IBxz": 50.0}, "IBxz")):
+    for change, key in (({"mB": -85.0}, "mB"), ({"lam": 2.0}, "lam"), ({"lam": -1.6}, "lam"),
+                        ({"rF": 0.0}, "IFyy"), ({"mF": 0.0}, "IFxx"), ({"IBxz": 50.0}, "IBxz")):
         with pytest.raises(InputError, match=f": {key}: "):
             model.build(change)
     p, _ = model.build({"mB": 90.0})
@@ -146,3 +146,135 @@ def test_absurd_bodies_from_height_and_mass_are_refused(extra, key):
     body = {"height": "1.80 m", "mass": "75 kg", "sex": "male", **extra}
     with pytest.raises(InputError, match=f": {key}: .*between"):
         bm.load_rider({"body": body, "bike": "jamis", "chain": {"torso_lean": "45 deg", "hands": "tops"}})
+
+
+# ---------------------------------------------------------------- issue 23: one outcome, folders, limits
+def test_a_sweep_whose_every_row_fails_is_an_error_and_leaves_no_folder(tmp_path):
+    spec = _spec(tmp_path, "bike: benchmark\nvary:\n  mB: [-1.0, -2.0]\n")
+    with pytest.raises(InputError, match=r"vary: configurations the model accepts; all 2 were refused, the first: .*mB"):
+        run_sweep(spec, tmp_path / "out")
+    assert not (tmp_path / "out").exists()
+
+
+def test_a_sweep_with_some_rows_refused_warns_and_keeps_them(tmp_path):
+    from bikemass.core.errors import BikemassWarning
+    spec = _spec(tmp_path, "bike: benchmark\nvary:\n  mB: [85.0, -1.0]\n")
+    with pytest.warns(BikemassWarning, match="1 of 2 configurations were refused by the model"):
+        rows = run_sweep(spec, tmp_path / "out")
+    assert rows[0]["error"] is None and rows[0]["weave_speed"] == pytest.approx(BENCHMARK_WEAVE, abs=1e-9)
+    assert "mB: a positive number" in rows[1]["error"]
+
+
+def test_a_resumed_sweep_recomputes_a_damaged_chunk_to_the_same_rows(tmp_path, capsys):
+    from bikemass.cli.main import main
+    spec = _spec(tmp_path, "bike: benchmark\nvary:\n  c: [0.07, 0.08, 0.09]\nchunk: 1\n")
+    fresh = run_sweep(spec, tmp_path / "out")
+    first = tmp_path / "out" / "chunks" / "000000000-000000001.json"
+    first.write_text(first.read_text()[:15])                            # cut short, as by a full disk
+    (tmp_path / "out" / "chunks" / "000000001-000000002.json").write_text('[{"weave_speed": "x"}]')
+    assert main(["sweep", str(spec), "--out", str(tmp_path / "out"), "--quiet"]) == 0   # its own folder: resumed
+    again = run_sweep(spec, tmp_path / "out")
+    assert again == fresh
+
+
+def test_a_folder_with_chunks_but_no_record_is_not_resumed_from_python(tmp_path):
+    spec = _spec(tmp_path, "bike: benchmark\nvary:\n  c: [0.08]\n")
+    (tmp_path / "out" / "chunks").mkdir(parents=True)
+    (tmp_path / "out" / "chunks" / "000000000-000000001.json").write_text("[]")
+    with pytest.raises(InputError, match="no sweep.json, so its chunks could be another sweep's"):
+        run_sweep(spec, tmp_path / "out")
+
+
+def test_varied_values_with_units_reach_the_model_with_them(tmp_path):
+    """lam given in degrees is the same sweep as lam given in radians (SI) to 1e-12."""
+    degrees = run_sweep(_spec(tmp_path, "bike: benchmark\nvary:\n  lam: [\"17 deg\", \"18 deg\"]\n"), tmp_path / "a")
+    radians = run_sweep(_spec(tmp_path, f"bike: benchmark\nvary:\n  lam: [{math.radians(17)!r}, {math.radians(18)!r}]\n"),
+                        tmp_path / "b")
+    for d, r in zip(degrees, radians):
+        assert d["lam"] == pytest.approx(r["lam"], rel=1e-15)
+        assert d["weave_speed"] == pytest.approx(r["weave_speed"], abs=1e-12)
+
+
+def test_a_dotted_value_with_a_unit_is_that_value(tmp_path):
+    """The chain stays' wall swept as "1.5 mm" and "0.07 in" (listed in the first's unit: 1.778 mm)
+    gives the weave speeds of Jamis files whose wall is written so, to 1e-9 m/s."""
+    import yaml
+
+    import bikemass as bm
+    from bikemass.core.paths import frames_dir
+    spec = "bike: jamis\nvary:\n  sections.chain_stay.wall: [\"1.5 mm\", \"0.07 in\"]\n"
+    rows = run_sweep(_spec(tmp_path, spec), tmp_path / "o")
+    assert [r["sections.chain_stay.wall"] for r in rows] == [1.5, pytest.approx(1.778, rel=1e-12)]
+    jamis = yaml.safe_load((frames_dir() / "jamis.yaml").read_text())
+    for row, wall in zip(rows, ("1.5 mm", "0.07 in")):
+        sections = {**jamis["sections"], "chain_stay": {**jamis["sections"]["chain_stay"], "wall": wall}}
+        f = tmp_path / "jamis.yaml"
+        f.write_text(yaml.safe_dump({**jamis, "sections": sections}))
+        p = bm.parameters(str(f))
+        assert row["error"] is None and row["weave_speed"] == pytest.approx(bm.stability(p).weave_speeds[0], abs=1e-9)
+        assert row["total_mass"] == pytest.approx(p.mR + p.mB + p.mH + p.mF, rel=1e-12)
+    assert rows[1]["total_mass"] - rows[0]["total_mass"] > 1e-3       # 0.28 mm more wall: grams of steel
+
+
+def test_a_speed_grid_never_goes_past_its_stop(capsys):
+    import bikemass as bm
+    from bikemass.cli.main import main
+    assert list(bm.speeds(0, 10, 6)) == [0.0, 6.0]
+    assert main(["eig", "benchmark", "--speeds", "0:10:6", "--format", "csv"]) == 0
+    assert [line.split(",")[0] for line in capsys.readouterr().out.splitlines()[1:]] == ["0.0", "6.0"]
+    assert len(bm.speeds(0, 30, 0.05)) == 601 and len(bm.speeds(0, 10, 0.1)) == 101
+
+
+def test_the_api_bounds_speed_grids_before_allocating():
+    import numpy as np
+
+    import bikemass as bm
+    params = bm.parameters("benchmark")
+    with pytest.raises(InputError, match="at most 100000 speeds"):
+        bm.stability(params, speeds=range(10 ** 12))                  # refused before any array is made
+    with pytest.raises(InputError, match="at most 100000 speeds"):
+        bm.eigenvalues(params, speeds=np.linspace(0, 10, 100_001))
+    with pytest.raises(InputError, match="at most 100000 speeds"):
+        uncertainty("benchmark", {"c": 0.001}, speeds=np.linspace(0, 10, 100_001))
+    assert len(bm.stability(params, speeds=np.linspace(0, 10, 100_001), max_speeds=100_001).speeds) == 100_001
+    with pytest.raises(InputError, match="samples x speeds"):
+        uncertainty("benchmark", {"c": 0.001}, method="montecarlo", samples=200_000, speeds=np.linspace(0, 10, 101))
+
+
+def test_a_scheduler_that_never_answers_is_one_line(tmp_path, capsys):
+    """A listener that accepts the connection and never speaks: distributed (2026.8) does not end the
+    wait; the sweep gives up after bikemass.sweep.run.CONNECT_DEADLINE seconds."""
+    pytest.importorskip("distributed")
+    import socket
+    import threading
+
+    from bikemass.cli.main import main
+    listener = socket.socket()
+    listener.bind(("127.0.0.1", 0))
+    listener.listen(8)
+    held = []
+    stop = threading.Event()
+
+    def accept():
+        listener.settimeout(0.5)
+        while not stop.is_set():
+            try:
+                held.append(listener.accept()[0])
+            except OSError:
+                pass
+    thread = threading.Thread(target=accept, daemon=True)
+    thread.start()
+    try:
+        spec = _spec(tmp_path, "bike: benchmark\nvary:\n  c: [0.08]\n")
+        address = f"tcp://127.0.0.1:{listener.getsockname()[1]}"
+        assert main(["sweep", str(spec), "--out", str(tmp_path / "out"), "--scheduler", address]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and "--scheduler" in err and "a running Dask scheduler (" in err   # distributed's
+        assert "internal error" not in err                         # own timeout, or ours after 20 s: one line
+        assert not (tmp_path / "out").exists()
+    finally:
+        stop.set()
+        thread.join()
+        for conn in held:
+            conn.close()
+        listener.close()

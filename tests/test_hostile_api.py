@@ -26,7 +26,7 @@ def test_wrong_types_are_input_errors(value):
 
 
 @pytest.mark.parametrize("change", [{"mB": -85.0}, {"c": math.nan}, {"w": math.inf}, {"w": 0.0},
-                                    {"lam": 0.0}, {"lam": math.pi / 2}, {"g": 0.0}, {"w": "1"}])
+                                    {"lam": -math.pi / 2}, {"lam": math.pi / 2}, {"g": 0.0}, {"w": "1"}])
 def test_impossible_parameters_are_refused_by_every_analysis(meijaard, change):
     bad = meijaard.replace(**change)
     key = next(iter(change))
@@ -190,7 +190,7 @@ def test_web_api_refuses_typed_over_parameters_off_the_model():
     from bikemass.web import create_app
     client = create_app().server.test_client()
     for query, error in (("mB=-85", "URL: mB: a positive number, got -85"),
-                         ("lam=2", "URL: lam: a steer-axis tilt in (0, pi/2) rad, got 2"),
+                         ("lam=2", "URL: lam: a steer-axis tilt in (-pi/2, pi/2) rad (the steer axis not horizontal), got 2"),
                          ("c=1e300", "URL: c: a finite number in SI units (m, kg, kg m^2, rad) of magnitude at most 1e+12")):
         for endpoint in ("/api/params", "/api/stability"):
             reply = client.get(f"{endpoint}?bike=benchmark&rider=none&stiffness=infinite&{query}")

@@ -59,3 +59,35 @@ def test_sparse_frame_modes_are_the_same_every_call():
     first, second = (frame_modes(structure, "free", 6, None, 0.01) for _ in range(2))
     assert np.array_equal(first.frequencies_hz, second.frequencies_hz)
     assert np.array_equal(first.shapes, second.shapes)
+
+
+def test_a_full_disk_is_one_line_naming_the_file_and_leaves_the_old_one(tmp_path, monkeypatch, capsys):
+    """A write that fails half-way (ENOSPC) names the path, removes its temporary file and leaves
+    the file that was there."""
+    import errno
+
+    from bikemass.core import output
+    out = tmp_path / "params.yaml"
+    out.write_text("old\n")
+    real = output.os.fdopen
+
+    class Full:
+        def __init__(self, fd, mode):
+            self.fh = real(fd, mode)
+
+        def __enter__(self):
+            return self
+
+        def __exit__(self, *exc):
+            self.fh.close()
+
+        def write(self, data):
+            raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(output.os, "fdopen", lambda fd, mode="r", *a, **k: Full(fd, mode) if "w" in mode
+                        else real(fd, mode, *a, **k))
+    assert main(["params", "benchmark", "-o", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert err == (f"bikemass: error: {out}: (output): room to write the file in its folder (No space left on "
+                   "device; nothing was written)\n")
+    assert out.read_text() == "old\n" and sorted(p.name for p in tmp_path.iterdir()) == ["params.yaml"]

@@ -10,7 +10,8 @@ from bikemass.analysis.engine.eigen import eigen_sweep
 from bikemass.analysis.engine.modes import follow_modes
 from bikemass.analysis.engine.quartic import quartic_roots
 from bikemass.analysis.engine.ranges import intersect
-from bikemass.analysis.engine.stability import analyse, speed_grid
+from bikemass.analysis.engine.stability import analyse
+from bikemass.analysis.engine.speeds import speed_grid
 from bikemass.analysis.engine.tracking import partners, step_costs, track
 from bikemass.scenario.catalog import parameters
 from bikemass.models.canonical import canonical_matrices

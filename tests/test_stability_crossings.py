@@ -15,7 +15,8 @@ import pytest
 
 from bikemass.scenario import catalog
 from bikemass.analysis.engine.modes import follow_modes
-from bikemass.analysis.engine.stability import analyse, speed_grid
+from bikemass.analysis.engine.stability import analyse
+from bikemass.analysis.engine.speeds import speed_grid
 from bikemass.cli.main import main
 from bikemass.models.whipple import whipple_model
 from thesis_sets import stiffness as thesis_stiffness

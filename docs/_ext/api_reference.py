@@ -24,8 +24,8 @@ folder of the thesis's tables)."""
 SECTIONS = {
     "Bicycles, riders and their parameters": [
         "load_bicycle", "load_rider", "parameters", "stiffness", "seated_rider", "pose_rider", "geometry_chart",
-        "load_parameter_text", "Bicycle", "Rider", "PosedRider", "BenchmarkParameters", "MeasuredParameters",
-        "PARAMETER_NAMES"],
+        "load_parameter_text", "load_parameter_set", "Bicycle", "Rider", "PosedRider", "BenchmarkParameters",
+        "MeasuredParameters", "ParameterSetFile", "RiderLeanParameters", "PARAMETER_NAMES"],
     "Stability": ["stability", "eigenvalues", "matrices", "speeds", "linear_model", "StabilityResult", "LinearModel"],
     "The frame's beam finite elements": ["frame_stiffness", "frame_modes", "frame_structure"],
     "Sensitivity, uncertainty and sweeps": ["sensitivity", "geometry_sensitivity", "uncertainty", "sweep"],

@@ -50,6 +50,8 @@ _API = {
     "PARAMETER_NAMES": "models.parameters", "InputError": "core.errors", "BikemassWarning": "core.errors",
     "load_parameter_text": "bicycle.parameter_text", "MeasuredParameters": "bicycle.parameter_text",
     "ParameterFileWarning": "bicycle.parameter_text",
+    "load_parameter_set": "bicycle.parameter_sets", "ParameterSetFile": "bicycle.parameter_sets",
+    "RiderLeanParameters": "bicycle.parameter_sets",
 }
 """Public name -> the module (under ``bikemass``) that defines it."""
 

@@ -1,4 +1,4 @@
-"""Running the hostile corpus (cases.yaml) in-process through ``bikemass.cli.main.main``.
+"""Running the hostile corpus (cases.yaml) in-process through ``bikemass.cli.main``.
 
 :func:`run_case` prepares a case's folder, runs the command with stdout and stderr
 captured and a time limit, and returns an :class:`Outcome`; :func:`problems` lists
@@ -72,7 +72,7 @@ def substitute(text, values):
 
 
 def run(argv, env=None):
-    """``bikemass.cli.main.main(argv)`` with stdout and stderr captured and a time limit."""
+    """``bikemass.cli.main(argv)`` with stdout and stderr captured and a time limit."""
     from bikemass.cli.main import main
     out, err = io.StringIO(), io.StringIO()
     previous = signal.signal(signal.SIGALRM, _alarm)

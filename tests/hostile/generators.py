@@ -236,3 +236,105 @@ def shifted_pose(folder, spec):
         x, y, z = segment[key]
         segment[key] = [x + spec.get("dx", 0), y, z + spec.get("dz", 0)]
     return _write(folder, dump(document))
+
+
+# ---------------------------------------------------------------- published parameter sets
+def bp_text(folder, spec):
+    """A BicycleParameters text file: ``file`` (a path in the repository, or ``bp:<Name>`` for one
+    the installed BicycleParameters ships, default ``bp:Benchmark``) with ``set`` lines replaced
+    (``{name: "value"}``) and ``drop`` names left out; written as ``<name>`` (default in.txt)."""
+    source = spec.get("file", "bp:Benchmark")
+    if source.startswith("bp:"):
+        import bicycleparameters
+        name = source[3:]
+        source = Path(bicycleparameters.__file__).parent / "app-data" / "bicycles" / name / "Parameters" / f"{name}Benchmark.txt"
+    else:
+        source = REPO / source
+    lines = []
+    for line in Path(source).read_text().splitlines():
+        key = line.split("=", 1)[0].strip()
+        if key in spec.get("drop", ()):
+            continue
+        lines.append(f"{key} = {spec['set'][key]}" if key in spec.get("set", {}) else line)
+    return _write(folder, "\n".join(lines) + "\n", spec.get("name", "in.txt"))
+
+
+# ---------------------------------------------------------------- riders and fit
+KIDS_CHART = {"name": "Kids' 20 in bicycle",
+              "chart": {"units": {"length": "mm", "angle": "deg"}, "stack": 450, "reach": 300,
+                        "head_tube_angle": 69, "seat_tube_angle": 71, "head_tube_length": 90,
+                        "seat_tube_length": 280, "chainstay_length": 370, "bb_drop": 20, "fork_offset": 35,
+                        "wheel": "20", "tire_width": 45},
+              "frame": {"tubeset": "steel-touring"}, "crank_length": "140 mm",
+              "cockpit": {"stem_length": "40 mm", "bar": "flat", "bar_width": "520 mm"}}
+
+
+def kids_bike(folder, spec):
+    """A children's 20 in chart bicycle (``chart`` entries of ``spec`` typed over) as in.yaml, and
+    beside it ``rider.yaml``: a body of ``height`` (default 1.78 m) seated by its chain."""
+    document = {**KIDS_CHART, "chart": {**KIDS_CHART["chart"], **spec.get("chart", {})},
+                **{k: v for k, v in spec.items() if k in ("saddle",)}}
+    height = spec.get("height", "1.78 m")
+    _write(folder, f"body: {{height: {height}, mass: 70 kg, sex: male}}\nchain: {{hands: tops}}\n", "rider.yaml")
+    return _write(folder, dump(document))
+
+
+def yeadon_rider(folder, spec):
+    """A chain pose (hands on the hoods) of BicycleParameters' measured rider Jason (yeadon's
+    format, tests/data/yeadon) with ``totalmass`` replaced."""
+    text = (REPO / "tests" / "data" / "yeadon" / "JasonYeadonMeas.txt").read_text().splitlines()
+    text = [f"totalmass: {spec['totalmass']}" if line.startswith("totalmass") else line for line in text]
+    _write(folder, "\n".join(text) + "\n", "jason.txt")
+    return _write(folder, "body: {yeadon: jason.txt}\nchain: {hands: hoods}\n")
+
+
+def many_sizes(folder, spec):
+    """The BMC Roadmachine's chart as a run of ``size`` sizes (every chart value one per size)."""
+    document = shipped("frames/bmc_roadmachine.yaml")
+    n, first = spec["size"], document["sizes"]
+    document["sizes"] = [f"S{i}" for i in range(n)]
+    for key, value in document["chart"].items():
+        if isinstance(value, list) and len(value) == len(first):
+            document["chart"][key] = [value[i % len(first)] for i in range(n)]
+    for section in ("cockpit",):
+        for key, value in document.get(section, {}).items():
+            if isinstance(value, list) and len(value) == len(first):
+                document[section][key] = [value[i % len(first)] for i in range(n)]
+    if isinstance(document.get("crank_length"), list):
+        document["crank_length"] = [document["crank_length"][i % len(first)] for i in range(n)]
+    return _write(folder, dump(document))
+
+
+# ---------------------------------------------------------------- sweep folders
+def sweep_folder(folder, spec):
+    """A sweep spec (``spec``) as in.yaml and ``out/`` as an earlier run left it, by ``state``:
+    ``partial`` (its record and one chunk), ``no-stamp`` (a chunk, no sweep.json),
+    ``damaged-stamp``, ``list-stamp``, ``other-stamp`` (another spec's record),
+    ``damaged-chunk`` (its record and a chunk cut short)."""
+    import json
+    sys.path.insert(0, str(REPO / "src"))
+    from bikemass.sweep import read_spec
+    path = _write(folder, spec["spec"])
+    out = Path(folder) / "out"
+    (out / "chunks").mkdir(parents=True)
+    record = {"spec": str(path), "fingerprint": read_spec(path).fingerprint(), "keys": []}
+    row = {"weave_speed": 4.29, "capsize_speed": 6.02, "stable_from": 4.29, "stable_to": 6.02,
+           "total_mass": 94.0, "error": None}
+    state = spec["state"]
+    stamps = {"partial": json.dumps(record), "damaged-chunk": json.dumps(record),
+              "damaged-stamp": '{"fingerprint": ', "list-stamp": "[1, 2]",
+              "other-stamp": json.dumps({**record, "fingerprint": "0123456789abcdef", "spec": "other.yaml"})}
+    if state in stamps:
+        (out / "sweep.json").write_text(stamps[state])
+    chunk = json.dumps([row]) if state != "damaged-chunk" else json.dumps([row])[:20]
+    (out / "chunks" / "000000000-000000001.json").write_text(chunk)
+    return path
+
+
+def torso_lean_sweep(folder, spec):
+    """A sweep of a chain pose's torso lean on the Jamis (values ``values`` as written) as in.yaml,
+    the pose (hands on the hoods, its own torso lean ``lean`` as written, default 30 deg) beside it."""
+    _write(folder, f"body: thesis_rider\nbike: jamis\nchain: {{torso_lean: {spec.get('lean', '30 deg')}, "
+                   "hands: hoods}\n", "hoods.yaml")
+    values = ", ".join(str(v) for v in spec["values"])
+    return _write(folder, f"bike: jamis\nrider: hoods.yaml\nvary:\n  rider.chain.torso_lean: [{values}]\n")

@@ -18,8 +18,8 @@ from ..core.choices import RIGID
 from ..core.errors import InputTypeError
 from ..scenario.catalog import stiffness_matrix
 from ..core.errors import InputError
-from .engine.stability import speed_grid
-from .engine.modes import check_speeds
+from ..core.limits import MAX_SPEEDS
+from .engine.speeds import speed_count, speed_grid, speed_values
 from ..models.linear import LinearModel
 from ..models.whipple import whipple_model
 from .engine.modes import Modes, follow_modes
@@ -89,16 +89,18 @@ def _stiffness(S):
     return stiffness_matrix(S)
 
 
-def speeds(start: float = 0.0, stop: float = 30.0, step: float = 0.05) -> np.ndarray:
-    """The speed grid ``start, start + step, ..., stop`` (m/s).
+def speeds(start: float = 0.0, stop: float = 30.0, step: float = 0.05, max_speeds: int = MAX_SPEEDS) -> np.ndarray:
+    """The speed grid ``start, start + step, ...`` up to ``stop`` (m/s, never beyond).
 
     Parameters
     ----------
     start, stop : float
-        First and last speed (m/s), ``0 <= start < stop``; ``stop`` is on the grid when ``step``
-        divides the span, and never passed.
+        First speed and last speed at most (m/s), ``0 <= start < stop``; ``stop`` is on the grid
+        when ``step`` divides the span, and never passed.
     step : float
-        Spacing (m/s), > 0; at most 100000 speeds.
+        Spacing (m/s), > 0.
+    max_speeds : int
+        Most speeds (default 100000, as the command line's ``--max-speeds``).
 
     Returns
     -------
@@ -108,7 +110,7 @@ def speeds(start: float = 0.0, stop: float = 30.0, step: float = 0.05) -> np.nda
     Raises
     ------
     InputError
-        Unless ``0 <= start < stop``, ``step > 0`` and at most 100000 speeds.
+        Unless ``0 <= start < stop``, ``step > 0`` and at most ``max_speeds`` speeds.
 
     See Also
     --------
@@ -124,16 +126,11 @@ def speeds(start: float = 0.0, stop: float = 30.0, step: float = 0.05) -> np.nda
     """
     if not all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in (start, stop, step)):
         raise InputError("speeds", f"{start!r}:{stop!r}:{step!r}", "start, stop and step as numbers (m/s)")
-    if not (0 <= start < stop and step > 0 and (stop - start) / step <= 1e5):
-        raise InputError("speeds", f"{start}:{stop}:{step}", "speeds need 0 <= start < stop, step > 0 and at most 100000 points "
-                         f"(m/s), got {start}:{stop}:{step}")
+    if not (0 <= start < stop < float("inf") and step > 0 and (stop - start) / step < max_speeds
+            and speed_count(start, stop, step) <= max_speeds):
+        raise InputError("speeds", f"{start}:{stop}:{step}", f"speeds need 0 <= start < stop, step > 0 and at most "
+                         f"{max_speeds} points (m/s), got {start}:{stop}:{step}")
     return speed_grid(start, stop, step)
-
-
-def _speeds(values):
-    if values is None:
-        return speeds()
-    return check_speeds(values)
 
 
 def linear_model(params: BenchmarkParameters | LinearModel, stiffness: "ArrayLike | None" = None) -> LinearModel:
@@ -187,7 +184,7 @@ def linear_model(params: BenchmarkParameters | LinearModel, stiffness: "ArrayLik
 
 
 def eigenvalues(params: BenchmarkParameters | LinearModel, stiffness: "ArrayLike | None" = None,
-                speeds: "ArrayLike | None" = None) -> Modes:
+                speeds: "ArrayLike | None" = None, max_speeds: int = MAX_SPEEDS) -> Modes:
     """Eigenvalues over speed, followed across speed and named.
 
     Parameters
@@ -198,6 +195,9 @@ def eigenvalues(params: BenchmarkParameters | LinearModel, stiffness: "ArrayLike
         Rear-frame stiffness S (N m/rad); ``None`` = rigid.
     speeds : array_like of shape (n,), optional
         Increasing speeds >= 0 (m/s); default 0..30 m/s in 0.05 m/s steps.
+    max_speeds : int
+        Most speeds taken (default 100000, as the command line's ``--max-speeds``); more is an
+        InputError before any work.
 
     Returns
     -------
@@ -226,11 +226,12 @@ def eigenvalues(params: BenchmarkParameters | LinearModel, stiffness: "ArrayLike
     >>> print(f"{weave.real:.9f} +- {abs(weave.imag):.8f}i 1/s")
     -0.775341882 +- 4.46486771i 1/s
     """
-    return follow_modes(linear_model(params, stiffness), _speeds(speeds))
+    return follow_modes(linear_model(params, stiffness), speed_values(speeds, max_speeds))
 
 
 def stability(params: BenchmarkParameters | LinearModel, stiffness: "ArrayLike | None" = None,
-              speeds: "ArrayLike | None" = None, marginal: float = DEFAULT_MARGINAL) -> StabilityResult:
+              speeds: "ArrayLike | None" = None, marginal: float = DEFAULT_MARGINAL,
+              max_speeds: int = MAX_SPEEDS) -> StabilityResult:
     """Eigenvalues, critical speeds and stable speed ranges of a bicycle.
 
     Parameters
@@ -246,6 +247,9 @@ def stability(params: BenchmarkParameters | LinearModel, stiffness: "ArrayLike |
     marginal : float
         Modulus (rad/s) below which an unstable eigenvalue counts as marginally stable (the
         thesis's 2 rad/s).
+    max_speeds : int
+        Most speeds taken (default 100000, as the command line's ``--max-speeds``); more is an
+        InputError before any work.
 
     Returns
     -------
@@ -256,7 +260,8 @@ def stability(params: BenchmarkParameters | LinearModel, stiffness: "ArrayLike |
     Raises
     ------
     InputError
-        Bad parameters, S or speeds, or a ``marginal`` that is not a positive finite modulus.
+        Bad parameters, S or speeds (more than ``max_speeds``), or a ``marginal`` that is not a
+        positive finite modulus.
 
     See Also
     --------
@@ -287,4 +292,4 @@ def stability(params: BenchmarkParameters | LinearModel, stiffness: "ArrayLike |
     if isinstance(marginal, bool) or not isinstance(marginal, (int, float)) or not 0 < marginal < float("inf"):
         raise InputError("marginal", marginal, "a positive finite modulus in rad/s")
     S = _stiffness(stiffness)
-    return analyse(linear_model(params, S), _speeds(speeds), marginal, S)
+    return analyse(linear_model(params, S), speed_values(speeds, max_speeds), marginal, S)

@@ -29,15 +29,15 @@ from numpy.typing import ArrayLike
 from ..core.display import Display
 from ..core.errors import InputError
 from ..core.keywords import renamed_keywords
+from ..core.limits import MAX_SPEEDS
 from ..models.parameters import NAMES
+from ..plots.stability import COLOURS, OTHER_COLOUR
+from ..scenario.inputs import Model, get_path
 from .engine.critical import critical_speeds
 from .engine.modes import follow_modes
-from .engine.stability import speed_grid
+from .engine.speeds import speed_grid, speed_values
 from .model import MATRICES, STEP, model_of, values_of
 from .sensitivity import SPEEDS, speed_derivatives
-from ..scenario.inputs import get_path
-from ..scenario.inputs import Model
-from ..plots.stability import COLOURS, OTHER_COLOUR
 
 DISTRIBUTIONS = ("normal", "uniform")
 
@@ -162,11 +162,16 @@ def linear_derivatives(params, S, dirs, speeds):
     return out, modes, crossings
 
 
-def propagate(model, spreads, method="linear", samples=1000, seed=0, speeds=None, step=1e-4):
+def propagate(model, spreads, method="linear", samples=1000, seed=0, speeds=None, step=1e-4,
+              max_speeds=MAX_SPEEDS):
     """:class:`Propagation` of ``spreads`` (``{key: Spread}``) through ``model``
-    (:class:`~bikemass.scenario.inputs.Model`); ``speeds`` (m/s) for the eigenvalue bands."""
+    (:class:`~bikemass.scenario.inputs.Model`); ``speeds`` (m/s) for the eigenvalue bands, at most
+    ``max_speeds`` of them, and at most :data:`MAX_BAND_VALUES` Monte Carlo samples x speeds."""
     _check_options(spreads, method, samples, seed)
-    speeds = speed_grid(0, 10, 0.1) if speeds is None else np.asarray(speeds, dtype=float)
+    speeds = speed_grid(0, 10, 0.1) if speeds is None else speed_values(speeds, max_speeds)
+    if method == "montecarlo" and samples * len(speeds) > MAX_BAND_VALUES:
+        raise InputError("samples", samples, f"at most {MAX_BAND_VALUES} samples x speeds (the Monte Carlo bands "
+                         f"keep 4 real parts each), got {samples} x {len(speeds)}")
     params, S = model.build()
     sigma = {k: s.std for k, s in spreads.items()}
     derivs, modes, crossings = linear_derivatives(params, S, directions(model, spreads, step), speeds)
@@ -193,6 +198,8 @@ def propagate(model, spreads, method="linear", samples=1000, seed=0, speeds=None
 
 MAX_SAMPLES = 10 ** 6
 """Most Monte Carlo draws of one propagation."""
+MAX_BAND_VALUES = 10 ** 7
+"""Most Monte Carlo samples x speeds of one propagation (4 real parts of 8 bytes each: 320 MB)."""
 
 
 def _check_options(spreads, method, samples, seed):
@@ -220,7 +227,7 @@ def _check_options(spreads, method, samples, seed):
 @renamed_keywords(bike="bicycle")
 def uncertainty(bicycle: "str | os.PathLike", spreads: "Mapping[str, float | Spread]", rider: "str | None" = None,
                 stiffness: str = "infinite", combine: str = "exact", method: str = "linear", samples: int = 1000,
-                seed: int = 0, speeds: "ArrayLike | None" = None) -> Propagation:
+                seed: int = 0, speeds: "ArrayLike | None" = None, max_speeds: int = MAX_SPEEDS) -> Propagation:
     """The spread of the canonical matrices, eigenvalues and critical speeds from spreads of the inputs.
 
     ``linear``: first-order propagation, ``std(y) = sqrt(sum_i (dy/dx_i std_i)^2)``, with exact
@@ -252,6 +259,8 @@ def uncertainty(bicycle: "str | os.PathLike", spreads: "Mapping[str, float | Spr
         Seed of the Monte Carlo draws (a whole number >= 0): the same seed, the same result.
     speeds : array_like of shape (n,), optional
         Speeds (m/s) of the eigenvalue bands; default 0..10 m/s in 0.1 m/s.
+    max_speeds : int
+        Most speeds taken (default 100000); more is an InputError before any work.
 
     Returns
     -------
@@ -263,8 +272,8 @@ def uncertainty(bicycle: "str | os.PathLike", spreads: "Mapping[str, float | Spr
     Raises
     ------
     InputError
-        An unknown key, a negative std, an unknown method, a bad ``samples`` or ``seed``, or a
-        bicycle or rider that cannot be loaded.
+        An unknown key, a negative std, an unknown method, a bad ``samples`` or ``seed``, more than
+        ``max_speeds`` speeds, or a bicycle or rider that cannot be loaded.
 
     See Also
     --------
@@ -284,7 +293,8 @@ def uncertainty(bicycle: "str | os.PathLike", spreads: "Mapping[str, float | Spr
     if not isinstance(spreads, dict):
         raise InputError("spreads", "(argument)", f"a mapping of input key -> std or Spread, got {type(spreads).__name__}")
     spreads = {k: v if isinstance(v, Spread) else Spread("normal", v) for k, v in spreads.items()}
-    return propagate(Model(bicycle, rider, stiffness, combine), spreads, method, samples, seed, speeds)
+    return propagate(Model(bicycle, rider, stiffness, combine), spreads, method, samples, seed, speeds,
+                     max_speeds=max_speeds)
 
 
 def _montecarlo(model, spreads, n, seed, speeds, matrices, speed_out, eig_modes, inputs):

@@ -14,8 +14,7 @@ front frame, the others the rear frame.  ``combine``:
 import numpy as np
 
 from ..core.errors import InputError
-from ..mass.inertia import combine as combine_exact
-from ..mass.inertia import combine_without_parallel_axis
+from ..mass.inertia import combine as combine_exact, combine_without_parallel_axis
 from ..mass.parts import body_properties
 from ..models.parameters import BenchmarkParameters
 from ..models.plausibility import warn_parameters, warn_rider
@@ -70,7 +69,8 @@ def combined_bodies(bicycle, rider=None, combine="exact", method="mesh", bicycle
     bodies = dict(bicycle_bodies or bicycle.bodies(method))
     merged = merge_rider(bodies, rider_bodies(rider, method) if rider is not None else {}, combine)
     if rider is not None:
-        warn_rider(body_properties(rider.parts, "exact").com, bicycle.geometry, bicycle.source, rider.name)
+        props = body_properties(rider.parts, "exact")
+        warn_rider(props.com, bicycle.geometry, bicycle.source, rider.name, props.mass)
     return merged
 
 

@@ -107,6 +107,9 @@ def read_chart(node):
     for key, stand_in in STAND_INS.items():
         if not given(key) and not given(stand_in):
             node.fail(f"a required key that is missing (or {stand_in} instead)", key)
+    for key in FRAME_KEYS:
+        if key not in STAND_INS and not given(key):
+            node.fail("a value (null is for a published check a chart leaves out, not for a frame dimension)", key)
     v = {}
     for key in FRAME_KEYS:
         if given(key):

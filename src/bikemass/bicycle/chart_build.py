@@ -15,6 +15,7 @@ import numpy as np
 
 from ..core.config import Node, load_yaml
 from ..core.paths import frames_dir
+from ..models.plausibility import warn
 from .chart import check_redundant, construct, read_chart
 
 CHART_TOP_KEYS = ("name", "source", "description", "note", "chart", "sizes", "frame", "cockpit", "saddle",
@@ -37,6 +38,9 @@ FORK_HALF_WIDTH = 0.05
 """m: fork blades either side of the centre plane at the crown and at the axle."""
 HUB_DIAMETER = 0.05
 """m: hub hoop diameter (and the spokes' inner diameter)."""
+MAX_SADDLE_HEIGHT = 1.1
+"""m: a saddle higher above the crank axis is warned about (LeMond's 0.883 x inseam gives about
+0.95 m for a 2.1 m tall rider's 1.07 m inseam)."""
 MIN_POST = 0.05
 """m: seat post showing above the seat tube at least, where the default saddle height would leave less."""
 HOOP_THICKNESS = 0.02
@@ -244,6 +248,9 @@ def _saddle(chart, points, s):
         s.fail(f"a saddle height above the seat tube's top plus the saddle's stack "
                f"({(chart.seat_tube_length + _length(s['stack'])) * 1000:.0f} mm), got {height * 1000:.0f} mm",
                "height")
+    if height > MAX_SADDLE_HEIGHT:
+        warn(f"{s.source}: {s.key}.height: a saddle {height * 1000:.0f} mm above the crank axis, more than "
+             f"{MAX_SADDLE_HEIGHT * 1000:.0f} mm: no rider's legs reach that far (LeMond: 0.883 x inseam)")
     bb = points["bottom_bracket"]
     return bb + height * along - [_length(s["setback"]), 0.0], bb + post * along
 

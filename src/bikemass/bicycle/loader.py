@@ -16,7 +16,7 @@ import numpy as np
 from ..core.config import Node, load_yaml
 from ..core.errors import InputError, short
 from ..core.gate import plain_input, read_text
-from ..core.paths import frames_dir, resolve
+from ..core.paths import frames_dir, resolve, named_file, within_reach
 from ..mass.inertia import MassProperties
 from ..mass.materials import load_materials, read_materials
 from ..mass.parts import Part
@@ -24,14 +24,14 @@ from ..mass.placement import Placement
 from ..mass.sections import RoundSection, SquareSection
 from ..mass.solids import Lumped, RoundTube, SquareTube
 from ..mass.tubes import Structure, Tube
-from ..models.parameters import from_node, is_parameter_file
-from ..models.plausibility import check_parameter_node, check_stiffness
+from ..models.plausibility import check_stiffness
+from .parameter_sets import kind_of, read_parameter_set, read_parameter_set_text, whipple_parameters
+from .parameter_text import looks_like_parameter_text
 from .chart_build import expand_chart
 from .components import materials_lookup, read_component, read_wheel
 from .contacts import read_contacts
 from .geometry import Geometry, check_keypoints, read_geometry
 from .model import Bicycle
-from .parameter_text import load_parameter_text, looks_like_parameter_text
 from .sizes import select_size, size_names, split_size
 
 TOP_KEYS = ("name", "base", "source", "description", "geometry", "keypoints", "material", "sections", "tubes",
@@ -50,7 +50,7 @@ def load_bicycle(name_or_path, size=None):
     name, at_size = split_size(name_or_path)
     path = resolve(name, frames_dir(), "bicycle")
     if _is_parameter_text(path):
-        return bicycle_from_parameters(load_parameter_text(path).parameters, path.stem, str(path))
+        return _parameter_set_bicycle(read_parameter_set_text(path), path.stem, str(path))
     return _read_document(load_yaml(path), path.stem, str(path), size or at_size)
 
 
@@ -65,12 +65,9 @@ def bicycle_from_mapping(mapping, source, size=None):
 
 
 def _read_document(node, default_name, source, size):
-    if is_parameter_file(node):
-        select_size(node, size)
-        params = from_node(node)
-        check_parameter_node(params, node)
-        return bicycle_from_parameters(params, node.get("name", default_name).string(), source,
-                                       rider_included=node.get("rider_included", False).boolean())
+    if kind_of(node) is not None:
+        select_size(node, size)                        # a parameter set has no sizes: refuse one asked for
+        return _parameter_set_bicycle(read_parameter_set(node), default_name, source)
     if node.has("parameters"):
         return _measured_bicycle(node, Path(source))
     return _read_any(_with_base(node), source, size)
@@ -107,19 +104,33 @@ def _is_parameter_text(path):
         return False                      # load_yaml names the problem
 
 
+def _parameter_set_bicycle(parameter_set, default_name, source, **extra):
+    """A :class:`Bicycle` of four lumped bodies holding a parameter set read from ``source``."""
+    return bicycle_from_parameters(whipple_parameters(parameter_set), parameter_set.label or default_name,
+                                   source, rider_included=parameter_set.rider_included,
+                                   speed=parameter_set.speed, **extra)
+
+
 def _measured_bicycle(node, path):
     """A parameter file (``parameters:``, relative to this file) with contacts and published stiffness."""
     node.check_keys(required=("parameters",), optional=MEASURED_KEYS)
-    target = Path(node["parameters"].string())
-    target = target if target.is_absolute() else path.parent / target
+    target = named_file(node["parameters"])
     if not target.is_file():
         node.fail(f"an existing parameter file, got {str(target)!r}", "parameters")
-    inner = load_bicycle(target)
+    if _is_parameter_text(target):
+        inner = read_parameter_set_text(target)
+    else:
+        document = load_yaml(target)
+        if kind_of(document) is None:
+            node.fail(f"a parameter file (the 26 benchmark names, a BicycleParameters text or parameter-set "
+                      f"file), got {short(str(target))}, which is none", "parameters")
+        inner = read_parameter_set(document)
     stiffness = _read_stiffness(node["stiffness"], load_materials()) if node.has("stiffness") else {}
     contacts = read_contacts(node["contacts"], {}) if node.has("contacts") else None
     name = node["name"].string() if node.has("name") else path.stem
     included = inner.rider_included or node.get("rider_included", False).boolean()
-    return bicycle_from_parameters(inner.published, name, str(path), stiffness, contacts, included)
+    return bicycle_from_parameters(whipple_parameters(inner), name, str(path), stiffness, contacts, included,
+                                   speed=inner.speed)
 
 
 MAX_BASE_CHAIN = 16
@@ -129,10 +140,11 @@ MAX_BASE_CHAIN = 16
 def _base_path(node):
     """A base bicycle: a file next to the referring file (``name`` or ``name.yaml``), else as any BIKE;
     a missing one is blamed on the ``base`` key of the referring file."""
-    name, folder = node.string(), Path(node.source).parent
-    for candidate in (folder / name, folder / f"{name.replace('-', '_')}.yaml"):
-        if os.path.lexists(candidate):     # the input gate says if it is not a regular file
-            return candidate
+    name = node.string()
+    for candidate in (name, f"{name.replace('-', '_')}.yaml"):
+        path = named_file(node, candidate) if within_reach(Path(node.source).parent / candidate) else None
+        if path is not None and os.path.lexists(path):     # the input gate says if it is not a regular file
+            return path
     try:
         return resolve(name, frames_dir(), "bicycle")
     except InputError as exc:
@@ -194,7 +206,7 @@ def _file_materials(node):
         return {}
     m = node["materials"]
     if isinstance(m.value, str):
-        path = Path(node.source).parent / m.value
+        path = named_file(m)
         if not path.is_file():
             m.fail(f"a materials YAML file (as frames/materials.yaml), {path} does not exist")
         return load_materials(path)
@@ -297,10 +309,12 @@ def _read_stiffness(node, materials):
     return table
 
 
-def bicycle_from_parameters(params, name, source, stiffness=None, contacts=None, rider_included=False):
+def bicycle_from_parameters(params, name, source, stiffness=None, contacts=None, rider_included=False,
+                            speed=None):
     """A :class:`Bicycle` of four lumped bodies holding a benchmark parameter set
     (optionally published ``stiffness`` by material and rider ``contacts``;
-    ``rider_included``: its rear body B already holds a rider)."""
+    ``rider_included``: its rear body B already holds a rider; ``speed``: the speed its file
+    gives, m/s)."""
     geometry = Geometry(params.w, params.c, np.pi / 2 - params.lam, params.rR, params.rF, params.g)
     bodies = (
         ("rear_wheel", params.mR, geometry.rear_axle, params.inertia("R")),
@@ -311,4 +325,4 @@ def bicycle_from_parameters(params, name, source, stiffness=None, contacts=None,
     parts = tuple(Part(body, Lumped(MassProperties(mass, np.zeros(3), inertia)), mass, Placement.at(at), body)
                   for body, mass, at, inertia in bodies)
     return Bicycle(name, source, geometry, {}, (), parts, None, stiffness or {}, params, contacts,
-                   rider_included=rider_included)
+                   rider_included=rider_included, speed=speed)

@@ -21,7 +21,9 @@ class Bicycle:
     ``contacts`` the rider contact points (:class:`~bikemass.bicycle.contacts.Contacts`) or ``None``;
     ``chart`` the geometry chart it was built from (:class:`~bikemass.bicycle.chart.Chart`) or ``None``,
     ``size`` the size picked from a size run,
-    ``rider_included`` whether the rear frame already holds a rider (then none may be added).
+    ``rider_included`` whether the rear frame already holds a rider (then none may be added),
+    ``speed`` the speed (m/s) a parameter-set file gives beside the parameters (BicycleParameters'
+    ``v``; not a bicycle parameter, the file's suggestion of a speed to look at) or ``None``.
 
     See Also
     --------
@@ -51,6 +53,7 @@ class Bicycle:
     chart: object = None
     size: str = None
     rider_included: bool = False
+    speed: float = None
 
     def __post_init__(self):
         frozen_fields(self, "keypoints", "tubes", "parts", "stiffness")

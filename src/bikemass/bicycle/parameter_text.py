@@ -32,11 +32,12 @@ from types import MappingProxyType
 
 import numpy as np
 
-from ..core.config import Node
-from ..core.errors import BikemassWarning, InputError, wrong_type
+from ..core.config import Node, MAX_MAGNITUDE
+from ..core.errors import BikemassWarning, InputError, wrong_type, short
 from ..core.gate import read_text
 from ..mass.inertia import MassProperties, combine
 from ..models.parameters import NAMES, from_node
+from ..models.plausibility import check_parameter_file
 
 BODY_KEYS = ("m", "x", "z", "Ixx", "Iyy", "Izz", "Ixz")
 """A rigid body's seven planar mass properties: ``m{P} x{P} z{P} I{P}xx ...`` for body letter ``P``."""
@@ -49,7 +50,10 @@ CHECK_SIGMAS = 3.0
 plus what the printed digits can hide."""
 
 _NAME = re.compile(r"[A-Za-z_]\w*$")
-_VALUE = re.compile(r"^\s*([-+]?[\d.]+(?:[eE][-+]?\d+)?)\s*(?:(?:\+/-|±)\s*([\d.]+(?:[eE][-+]?\d+)?))?\s*$")
+_NUMBER = r"(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d{1,4})?"
+"""A decimal number as Python's float() reads it (no ``1.2.3``, no bare ``.``; exponents of at
+most four digits)."""
+_VALUE = re.compile(rf"^\s*([-+]?{_NUMBER})\s*(?:(?:\+/-|±)\s*({_NUMBER}))?\s*$")
 
 
 class ParameterFileWarning(BikemassWarning):
@@ -101,7 +105,7 @@ class ParameterText:
         return f"ParameterText({self.source!r}, {len(self.nominal)} names)"
 
 
-def _resolution(text):
+def printed_resolution(text):
     """Half a unit in the last printed digit of a number written as ``text``."""
     mantissa, _, exponent = text.lower().partition("e")
     decimals = len(mantissa.split(".")[1]) if "." in mantissa else 0
@@ -117,9 +121,10 @@ def _parse_value(text, source, where):
             raise InputError(source, where, f"a number or number+/-std (comma-separated to average), "
                                             f"got {text.strip()!r}")
         nominal, std = float(m.group(1)), float(m.group(2) or 0.0)
-        if not (np.isfinite(nominal) and np.isfinite(std)):
-            raise InputError(source, where, f"finite numbers, got {text.strip()!r}")
-        values.append((nominal, std, _resolution(m.group(1))))
+        if not (abs(nominal) <= MAX_MAGNITUDE and std <= MAX_MAGNITUDE):
+            raise InputError(source, where, f"finite numbers of magnitude at most {MAX_MAGNITUDE:g}, "
+                                            f"got {short(text.strip())}")
+        values.append((nominal, std, printed_resolution(m.group(1))))
     n = len(values)
     return (sum(v[0] for v in values) / n, float(np.sqrt(sum(v[1] ** 2 for v in values))) / n,
             max(v[2] for v in values))
@@ -263,8 +268,13 @@ def _checked_extra(pt, name, expected, what, notes):
         notes.append(f"{name} checked: equals {what or '0'} as the model assumes")
 
 
-def measured_parameters(pt):
-    """:class:`MeasuredParameters` of a :class:`ParameterText` (see the module docstring)."""
+def measured_parameters(pt, key=""):
+    """:class:`MeasuredParameters` of a :class:`ParameterText` (see the module docstring); errors
+    name the keys below ``key`` (a YAML file's ``values``, say).  A file of the rider's body alone
+    (BicycleParameters' ``riders/<Name>/Parameters/``: only ``mB xB yB zB IB..``) is refused as such."""
+    if set(pt.nominal) <= set(body_names("B")) | {"yB"}:
+        raise InputError(pt.source, "(file)", "a bicycle's parameters (w, c, lam, rR, ...); this holds a rider's "
+                                              "body B alone (a BicycleParameters rider file), which is no bicycle")
     values = {n: pt.nominal[n] for n in NAMES if n in pt.nominal}
     std = {n: pt.std[n] for n in NAMES if n in pt.nominal}
     notes = []
@@ -281,7 +291,8 @@ def measured_parameters(pt):
         message = f"{pt.source}: not used by the Whipple model: {', '.join(unknown)}"
         warnings.warn(message, ParameterFileWarning, stacklevel=3)
         notes.append(f"not used (no place in the Whipple model): {', '.join(unknown)}")
-    params = from_node(Node(values, pt.source, ""))
+    params = from_node(Node(values, pt.source, key))
+    check_parameter_file(params, pt.source, f"{key}." if key else "")
     return MeasuredParameters(params, MappingProxyType({n: std[n] for n in NAMES}), tuple(notes), pt.source)
 
 

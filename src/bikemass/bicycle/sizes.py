@@ -31,11 +31,21 @@ def split_size(name):
     return base, size
 
 
+MAX_SIZES = 100
+"""Most sizes in one size run (manufacturers list up to a dozen; each size is a bicycle)."""
+
+
 def size_names(node):
     """The size names (str) of a size-run mapping, or ``()`` for a single bicycle."""
     if not node.has("sizes"):
         return ()
-    names = [str(e.value) for e in node["sizes"].elements()]
+    elements = node["sizes"].elements()
+    if len(elements) > MAX_SIZES:
+        node.fail(f"at most {MAX_SIZES} sizes, got {len(elements)}", "sizes")
+    for e in elements:
+        if isinstance(e.value, bool) or not isinstance(e.value, (str, int, float)) or str(e.value).strip() == "":
+            e.fail(f"a size name (text or a number), got {e.value!r}")
+    names = [str(e.value) for e in elements]
     if not names or len(set(names)) != len(names):
         node.fail("a non-empty list of distinct size names", "sizes")
     return tuple(names)

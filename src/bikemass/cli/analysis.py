@@ -76,7 +76,8 @@ def register(sub):
     sw.add_argument("--plot-format", default="png", metavar="EXT", help="figure format (default png)")
     sw.add_argument("--quiet", action="store_true", help="no progress bar or summary")
     add_figure_options(sw)
-    sw.set_defaults(run=run_sweep_command)
+    # --out: a new or empty folder, or a sweep's own (holding bikemass.sweep.run.STAMP) to resume
+    sw.set_defaults(run=run_sweep_command, folder_outputs=("out",), folder_mark="sweep.json")
 
 
 def _bike_options(p, data, figure):

@@ -25,7 +25,7 @@ from pathlib import Path
 from ..core.choices import RIGID, Combine, Format, Method
 from ..core.errors import InputError, short
 from .figure_options import add_figure_options, figure_options, write_figure
-from .options import MAX_SPEED, MAX_SPEEDS, MIN_SPEED_STEP
+from ..core.limits import MAX_SPEED, MAX_SPEEDS, MIN_SPEED_STEP
 
 TABULAR = (Format.TABLE.value, Format.CSV.value, Format.JSON.value, Format.YAML.value)
 """The formats of every command's data (``params`` adds ``bicycleparameters``)."""
@@ -103,7 +103,7 @@ def add_speeds(p):
 def parse_speeds(text, max_speeds=None):
     """``"start:stop:step"`` -> speed grid (m/s); InputError if malformed or over ``max_speeds``."""
     # lazy: the library loads numpy; bikemass --help must not
-    from ..analysis.engine.stability import speed_grid
+    from ..analysis.engine.speeds import speed_count, speed_grid
 
     limit = max_speeds or MAX_SPEEDS
     expected = (f"START:STOP:STEP in m/s with 0 <= START < STOP <= {MAX_SPEED:g}, "
@@ -114,7 +114,7 @@ def parse_speeds(text, max_speeds=None):
         raise InputError("--speeds", text, expected) from None
     if not (0 <= start < stop <= MAX_SPEED and MIN_SPEED_STEP <= step <= stop - start):
         raise InputError("--speeds", text, expected)
-    count = int(round((stop - start) / step)) + 1
+    count = speed_count(start, stop, step)
     if count > limit:
         raise InputError("--speeds", text, f"at most {limit} speeds, got {count} "
                                                       "(raise with --max-speeds)")

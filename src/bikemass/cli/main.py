@@ -87,7 +87,7 @@ def main(argv=None):
 def _run(args):
     # lazy: the library loads numpy; bikemass --help must not
     from ..core.gate import track_inputs
-    from ..core.output import collect_warnings
+    from ..core.output import collect_warnings, warning_lines
     status = 0
     with warnings.catch_warnings(record=True) as caught, collect_warnings(caught), track_inputs():
         warnings.simplefilter("always")
@@ -111,13 +111,15 @@ def _run(args):
             return 0
         except MemoryError:
             return _error("out of memory", 1)
+        except OSError as exc:             # the system's, not a bug: a full disk, a quota, an I/O error
+            return _error(f"{exc.filename or '(system)'}: {exc.strerror or exc} (nothing was half-written)")
         except Exception as exc:           # a bug: one line unless BIKEMASS_DEBUG asks for the traceback
             if os.environ.get("BIKEMASS_DEBUG"):
                 raise
             return _error(f"internal error {type(exc).__name__}: {exc} (please report it; set "
                           "BIKEMASS_DEBUG=1 for the traceback)", 1)
-    for warning in caught:
-        print(f"bikemass: warning: {one_line(warning.message, 600)}", file=sys.stderr)
+    for line in warning_lines(caught):
+        print(f"bikemass: warning: {one_line(line, 600)}", file=sys.stderr)
     return status
 
 

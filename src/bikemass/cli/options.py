@@ -11,13 +11,8 @@ import math
 import os
 
 from ..core.errors import InputError, short
+from ..core.limits import MAX_SPEED, MAX_SPEEDS, MIN_SPEED_STEP  # noqa: F401 (the limits --help states)
 
-MAX_SPEEDS = 100_000
-"""Most speeds in one grid (``--max-speeds`` raises it)."""
-MAX_SPEED = 1000.0
-"""Highest speed of a grid (m/s)."""
-MIN_SPEED_STEP = 1e-6
-"""Finest speed step (m/s): finer steps print as duplicate speeds."""
 MAX_MODES = 200
 """Most natural frequencies asked for at once (``--max-modes`` raises it)."""
 
@@ -66,7 +61,7 @@ def check_outputs(args):
     """Refuse bad output paths of ``args`` before the command runs (:func:`bikemass.core.output.check_output`):
     folders where files are wanted, unwritable places, and the command's own input files."""
     # lazy: the library loads numpy; bikemass --help must not
-    from ..core.output import check_folder, check_output
+    from ..core.output import check_folder, check_output, STUDY_MARK
 
     folders = getattr(args, "folder_outputs", ())
     inputs = [v for key, value in vars(args).items() if key not in OUTPUT_OPTIONS
@@ -77,7 +72,7 @@ def check_outputs(args):
             continue
         option = "-o" if key == "output" else f"--{key.replace('_', '-')}"
         if key in folders:
-            check_folder(path, option=option)
+            check_folder(path, getattr(args, "folder_mark", None) or STUDY_MARK, option=option)
         elif key in FIGURE_OPTIONS:
             _check_figure_name(path, option)
             check_output(path, None, inputs, "a figure file", option)

@@ -37,10 +37,13 @@ def run_serve(args):
                          "is missing)") from None
 
     # lazy: the web page loads dash; only bikemass serve needs it
-    from ..web.state import STIFFNESS_CHOICES, PageState
-    defaults = [PageState(stiffness=s) for s in STIFFNESS_CHOICES]
+    from ..web.state import PageState
+
+    def warm():
+        """The default page with each stiffness choice of its bicycle computed before the first visit."""
+        app.engine.warm([PageState(stiffness=s) for s in app.engine.materials(PageState().bike)])
     # not a daemon: a daemon thread stopped inside native code at exit aborts the interpreter
-    threading.Thread(target=app.engine.warm, args=(defaults,)).start()
+    threading.Thread(target=warm).start()
     print(f"bikemass: serving on http://{args.host}:{args.port}/ (Ctrl-C stops)", flush=True)
     try:
         app.run(host=args.host, port=args.port, debug=False)

@@ -110,7 +110,7 @@ def run_eig(args):
     options = dialect.figure_checked(args)
     speeds = dialect.parse_speeds(args.speeds, args.max_speeds)
     inputs = _inputs(args)
-    modes = eigenvalues(*inputs, speeds)
+    modes = eigenvalues(*inputs, speeds, max_speeds=args.max_speeds)
 
     def render(fmt):
         if fmt in ("json", "yaml"):
@@ -121,7 +121,7 @@ def run_eig(args):
         # lazy: plots/ load matplotlib; only the figure needs it
         from ..analysis.results import stability
         from ..plots.stability import plot_eigenvalues
-        result = stability(*inputs, speeds)          # marks v_w, v_c and shades the stable speeds
+        result = stability(*inputs, speeds, max_speeds=args.max_speeds)          # marks v_w, v_c and shades the stable speeds
         dialect.save_plot(args, plot_eigenvalues(result, _title(args), options.size, **options.limits()), options)
     return 0
 
@@ -134,7 +134,7 @@ def run_stability(args):
     if not args.marginal > 0:
         raise InputError("--marginal", args.marginal, "a positive modulus in rad/s")
     speeds = dialect.parse_speeds(args.speeds, args.max_speeds)
-    result = stability(*_inputs(args), speeds, marginal=args.marginal)
+    result = stability(*_inputs(args), speeds, marginal=args.marginal, max_speeds=args.max_speeds)
 
     def render(fmt):
         if fmt in ("json", "yaml"):
@@ -172,7 +172,7 @@ def run_compare(args):
     results, runs = {}, []
     for rider in riders:
         for stiffness in stiffnesses:
-            result = stability(*_inputs(args, rider, stiffness), speeds)
+            result = stability(*_inputs(args, rider, stiffness), speeds, max_speeds=args.max_speeds)
             results.setdefault(_rider_name(rider), {})[_stiffness_name(stiffness)] = result
             runs.append({"rider": rider, "stiffness": stiffness, "weave_speeds": list(result.weave_speeds),
                          "capsize_speeds": list(result.capsize_speeds),

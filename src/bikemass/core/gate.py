@@ -33,6 +33,7 @@ from yaml.nodes import MappingNode, ScalarNode, SequenceNode
 
 from .errors import InputError, short as _short
 from .plain import plain
+from .paths import check_reach
 
 MAX_BYTES = 1_000_000
 """Largest input file read (bytes); the largest shipped file is under 20 kB."""
@@ -85,9 +86,11 @@ def was_read(path):
 def read_bytes(path, limit=MAX_BYTES):
     """The bytes of the regular file ``path`` (at most ``limit``); :class:`InputError` otherwise.
 
-    The file is opened non-blocking and checked with ``fstat`` before anything is read.
+    The file is opened non-blocking and checked with ``fstat`` before anything is read; under
+    :func:`bikemass.paths.confined` a file out of reach is refused before it is opened.
     """
     path = Path(path)
+    check_reach(path, path, "(file)")
     flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0)
     try:
         fd = os.open(path, flags)

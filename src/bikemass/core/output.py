@@ -44,6 +44,12 @@ def collect_warnings(caught):
         _WARNINGS.reset(token)
 
 
+def warning_lines(caught):
+    """The distinct messages of recorded warnings ``caught``, in the order first issued (a file read
+    twice in one command warns once)."""
+    return list(dict.fromkeys(str(w.message) for w in caught))
+
+
 ZERO = 1e-12
 """Magnitude below which bikemass writes a length, mass, inertia, angle, speed, stiffness or
 frequency as 0, in its SI unit (m, kg, kg m^2, rad, m/s, N m/rad, Hz, 1/s; deg too).
@@ -184,7 +190,7 @@ def dumps(obj, fmt):
     data = written(obj)
     caught = _WARNINGS.get()
     if caught and fmt == "json" and isinstance(data, dict):
-        data = {**data, "warnings": [str(w.message) for w in caught]}
+        data = {**data, "warnings": warning_lines(caught)}
     if fmt == "json":
         return json.dumps(data, indent=2) + "\n"
     if fmt == "yaml":
@@ -214,7 +220,8 @@ def write_atomic(path, data):
 
     An existing file keeps its permission bits; a symbolic link keeps pointing where it did and
     its target is replaced.  A file read as input in this run (:func:`bikemass.core.gate.was_read`)
-    is refused.
+    is refused.  A write that fails (a full disk, a quota, an I/O error) is an InputError naming
+    the path, the temporary file removed and the old file left as it was.
     """
     path = Path(path)
     check_output(path)
@@ -233,8 +240,12 @@ def write_atomic(path, data):
                 fh.write(data)
             os.chmod(tmp, _mode_for(target))
             os.replace(tmp, target)
-        except BaseException:
-            os.unlink(tmp)
+        except BaseException as exc:
+            with contextlib.suppress(OSError):
+                os.unlink(tmp)
+            if isinstance(exc, OSError):     # a full disk, a quota, an I/O error: nothing was replaced
+                raise InputError(path, "(output)", f"room to write the file in its folder ({exc.strerror or exc}; "
+                                                   "nothing was written)") from None
             raise
 
 

@@ -11,14 +11,26 @@ data folder is the first of:
 
 No data found is an error (:class:`~bikemass.core.errors.InputError`), never an empty list.
 A name that is an existing file path is used as it is.
+
+Files named inside other files (``base:``, ``materials:``, ``parameters:``, a chain pose's
+``bike:``, an anthropometry, ``yeadon:``) are found by :func:`named_file` (next to the
+naming file) and :func:`resolve` (a shipped name).  Under :func:`confined` (the web page
+reading an upload) every such file, and every file the input gate reads, must lie in the
+shipped data or in the folders given: anything else is refused before it is looked at, so
+an upload cannot reach, nor echo, any other file on the server.
 """
 
+import contextlib
+import contextvars
 import os
 from pathlib import Path
 
 from . import data_folder
 from .choices import closest
-from .errors import InputError
+from .errors import InputError, short
+
+_REACH = contextvars.ContextVar("bikemass_reach", default=None)
+"""While :func:`confined` is active: the resolved folders files may be read from."""
 
 
 def data_root() -> Path:
@@ -61,9 +73,58 @@ def reference_dir() -> Path:
     return shipped_dir("reference")
 
 
+@contextlib.contextmanager
+def confined(*folders):
+    """While active, files may only be read from the shipped data folders (``bodies/``,
+    ``frames/``, ``reference/``) and from ``folders``: :func:`check_reach` (called by the input
+    gate for every file, and by :func:`named_file` and :func:`resolve` before they look for one)
+    refuses anything else.  For input that must not reach the machine's other files (the web
+    page's uploads)."""
+    root = data_folder.found_root()
+    shipped = [root / name for name in data_folder.SHIPPED] if root is not None else []
+    token = _REACH.set(tuple(os.path.realpath(f) for f in (*shipped, *folders)))
+    try:
+        yield
+    finally:
+        _REACH.reset(token)
+
+
+def within_reach(path):
+    """Whether ``path`` may be read: always, unless :func:`confined` is active and it lies outside
+    the folders allowed (links are followed before the check)."""
+    allowed = _REACH.get()
+    if allowed is None:
+        return True
+    try:
+        real = os.path.realpath(path)
+    except (OSError, ValueError):
+        return False
+    return any(real == folder or real.startswith(folder + os.sep) for folder in allowed)
+
+
+def check_reach(path, source, key, given=None):
+    """``path`` if :func:`within_reach`, else InputError naming ``source`` and ``key`` (the file
+    and key that named it) and the name as ``given`` there, never the file's content."""
+    if not within_reach(path):
+        raise InputError(source, key, "a shipped name or a file of the upload itself (an uploaded file cannot "
+                                      f"reach other files), got {short(str(given if given is not None else path))}")
+    return path
+
+
+def named_file(node, name=None):
+    """The path a file names at ``node`` (a :class:`~bikemass.config.Node`): ``name`` (default its
+    string value) as an absolute path, or relative to the naming file's folder; checked by
+    :func:`check_reach` before anyone looks whether it exists."""
+    name = node.string() if name is None else name
+    given = Path(name)
+    path = given if given.is_absolute() else Path(node.source).parent / given
+    return check_reach(path, node.source, node.key, name)
+
+
 def resolve(name, folder: Path, what: str) -> Path:
     """Path for ``name``: an existing file, else ``folder/<name>.yaml`` (``-`` and ``_`` alike);
-    InputError for a name the system refuses as a path (too long, ...)."""
+    InputError for a name the system refuses as a path (too long, ...), or out of reach
+    (:func:`confined`)."""
     try:
         return _resolve(name, folder, what)
     except OSError as exc:
@@ -73,11 +134,13 @@ def resolve(name, folder: Path, what: str) -> Path:
 
 def _resolve(name, folder, what):
     p = Path(name)
-    if p.suffix in (".yaml", ".yml", ".json", ".txt") or p.is_file():
+    if p.suffix in (".yaml", ".yml", ".json", ".txt") or (within_reach(p) and p.is_file()):
+        check_reach(p, name, "(file)")
         if not os.path.lexists(p):
             raise InputError(p, "(file)", f"an existing {what} file")
         return p   # not necessarily a regular file: the input gate says what it is
-    for stem in (name, name.replace("-", "_"), name.replace("_", "-")):
+    shipped_name = p.name == name and name not in (".", "..")      # a name, not a path into another folder
+    for stem in (name, name.replace("-", "_"), name.replace("_", "-")) if shipped_name else ():
         candidate = folder / f"{stem}.yaml"
         if candidate.is_file():
             return candidate

@@ -39,6 +39,8 @@ DIMENSIONS = {
     "stiffness": ("N m/rad", {"N m/rad": 1.0, "N*m/rad": 1.0, "kN m/rad": 1e3}),
     "acceleration": ("m/s^2", {"m/s^2": 1.0}),
     "inverse angle": ("1/rad", {"1/rad": 1.0, "1/deg": 180 / math.pi}),
+    "speed": ("m/s", {"m/s": 1.0, "km/h": 1 / 3.6}),
+    "damping": ("N m s/rad", {"N m s/rad": 1.0, "N*m*s/rad": 1.0}),
     "dimensionless": ("", {"": 1.0}),
 }
 """dimension -> (SI unit, {unit: factor to SI}).  ``pressure`` also covers elastic moduli,
@@ -121,6 +123,15 @@ def _split(value, dimension):
     if match is None:
         raise UnitError(f"{describe(dimension)}, got {_short(value)}")
     return float(match.group(1)), match.group(2)
+
+
+def split_quantity(value):
+    """``(number, unit)`` of a number (unit ``""``) or a ``"<number> <unit>"`` string whose unit is
+    one of :data:`DIMENSIONS`' (its dimension: :func:`dimension_of`); :class:`UnitError` otherwise."""
+    number, unit = _split(value, "dimensionless")
+    if unit and dimension_of(unit) is None:
+        raise UnitError(f"a number or '<number> <unit>' with a known unit, got {_short(value)} (an unknown unit)")
+    return number, unit
 
 
 def _short(value, limit=40):

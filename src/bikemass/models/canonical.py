@@ -74,7 +74,7 @@ def canonical_matrices(p):
     IAlx = -mA * uA * zA + IAxx * sl + IAxz * cl
     IAlz = mA * uA * xA + IAxz * sl + IAzz * cl
     mu = p.c / p.w * cl
-    SR, SF = p.IRyy / p.rR, p.IFyy / p.rF
+    SR, SF = _spin_momentum(p.IRyy, p.rR), _spin_momentum(p.IFyy, p.rF)
     ST = SR + SF
     SA = mA * uA + mu * mT * xT
 
@@ -92,3 +92,14 @@ def _matrix(rows):
     """A 2x2 matrix from entries that may be arrays of one shape (B,): shape (2, 2) or (B, 2, 2)."""
     entries = np.broadcast_arrays(*(np.asarray(x) for row in rows for x in row))
     return np.stack(entries, axis=-1).reshape(*entries[0].shape, 2, 2)
+
+
+def _spin_momentum(spin_inertia, radius):
+    """A wheel's angular momentum per unit forward speed, ``Iyy / r`` (kg m); 0 for a point wheel
+    (``r = 0``, which carries no spin inertia: the limit of the two-mass-skate bicycle).  Radii
+    may be arrays (a batch); complex values pass through (the sensitivities differentiate by
+    complex steps)."""
+    r = np.asarray(radius)
+    if r.ndim == 0:
+        return spin_inertia / radius if radius != 0 else 0 * spin_inertia
+    return np.where(r != 0, spin_inertia / np.where(r != 0, r, 1.0), 0 * spin_inertia)

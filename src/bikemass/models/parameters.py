@@ -125,30 +125,41 @@ def parameter_units():
     return {k: d[d.index("[") + 1:-1] for k, d in DESCRIPTIONS.items()}
 
 
+SIGNED = ("lam", "xB", "zB", "xH", "zH", "IBxz", "IHxz", "c")
+"""Parameters that may be zero or negative (``lam``'s range is checked apart)."""
+POSITIVE = ("w", "g", "mB", "mH")
+"""Parameters that must be positive: the model divides by the wheelbase and by the masses of the
+whole bicycle and of the front assembly."""
+NONNEGATIVE = tuple(k for k in NAMES if k not in SIGNED + POSITIVE)
+"""Wheel radii, wheel masses and moments of inertia: zero is a legitimate limit (the two-mass-skate
+bicycle of Kooijman et al. 2011 has point wheels without mass and point masses without inertia)."""
+SPEED_KEY = "v"
+"""The speed BicycleParameters' parameter-set files hold beside the 26 names (m/s): not a bicycle
+parameter, read as the file's speed."""
+
+
+def sign_rule(name):
+    """``(positive, nonnegative)`` for :meth:`~bikemass.config.Node.number` of parameter ``name``."""
+    return name in POSITIVE, name in NONNEGATIVE
+
+
 def from_node(node):
-    """Build :class:`BenchmarkParameters` from a config :class:`~bikemass.core.config.Node` with the 26 names."""
-    node.check_keys(required=NAMES, optional=("name", "description", "source", "rider_included", "units"))
-    if node.has("units"):
-        _check_units(node["units"])
+    """Build :class:`BenchmarkParameters` from a config :class:`~bikemass.core.config.Node` holding the 26
+    names (and nothing else)."""
+    node.check_keys(required=NAMES)
     values = {}
     for k in NAMES:
-        positive = k not in ("lam", "xB", "zB", "xH", "zH", "IBxz", "IHxz", "c")
+        positive, nonnegative = sign_rule(k)
         # lam is radians when bare: the definition of this format (Meijaard 2007, BicycleParameters).
-        values[k] = node[k].number(dimension(k), positive=positive, bare_unit="rad" if k == "lam" else None)
+        values[k] = node[k].number(dimension(k), positive=positive, nonnegative=nonnegative,
+                                   bare_unit="rad" if k == "lam" else None)
     return BenchmarkParameters(**values)
 
 
-def _check_units(node):
+def check_units(node):
     """A ``units`` block (as bikemass writes) may only state the SI units the values are read in."""
     si = parameter_units()
     for key, unit in node.items():
         if key in si and unit.value != si[key]:
             unit.fail(f"{si[key]} (values are read in SI; give another unit per value, e.g. "
                       f"'{key}: \"<number> <unit>\"')")
-
-
-def is_parameter_file(node):
-    """True if a YAML/JSON mapping is meant as a benchmark parameter set (has any of the 26 names);
-    :func:`from_node` then names whatever is missing."""
-    m = node.value
-    return isinstance(m, dict) and any(k in m for k in NAMES)

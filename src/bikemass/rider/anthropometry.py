@@ -10,7 +10,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..core.config import load_yaml
-from ..core.paths import available, bodies_dir
+from ..core.paths import available, bodies_dir, named_file
 from ..mass.solids import Cylinder, TrapezoidalPrism
 
 SHAPES = {
@@ -64,7 +64,7 @@ def find_anthropometry(body) -> Path:
     """
     name = body.string()
     if name.endswith((".yaml", ".yml")):
-        path = Path(body.source).parent / name
+        path = named_file(body)
         if path.is_file():
             return path
     else:

@@ -23,6 +23,8 @@ from ..core.errors import BikemassWarning, InputError, shown
 from .body import chain_of, load_body
 from .chain import CHAIN_SEGMENTS, JOINTS
 from .pose import angle_deg, read_pose
+from ..bicycle import Bicycle
+from ..core.paths import within_reach
 
 CHAIN_KEYS = ("hands", "crank", "front", *JOINTS)
 
@@ -42,7 +44,7 @@ def bicycle_contacts(bike, node):
     else:
         here = Path(node.source).parent / bike
         try:
-            bicycle = load_bicycle(str(here) if here.is_file() else bike)
+            bicycle = load_bicycle(str(here) if within_reach(here) and here.is_file() else bike)
         except InputError as exc:
             if exc.key not in ("(name)", "(file)") or exc.source not in (str(bike), str(here)):
                 raise

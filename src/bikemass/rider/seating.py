@@ -12,7 +12,10 @@
   naming the contact and the gap, unless ``allow_off_contact=True`` (the thesis's way: its
   riders sit where it printed them, off the bicycles' bars and pedals), which keeps the
   pose as written and reports each gap as a warning line;
-* a rider of lumped bodies only (``relaxed-thesis``) has no contacts: used, with a warning.
+* a rider of lumped bodies only (``relaxed-thesis``) has no contacts: used, with a warning;
+* a seated rider's fit is checked as a fitter would (:mod:`bikemass.rider.fit`): too much seat
+  post showing, a saddle that cannot go low enough, locked or cramped elbows, toe overlap,
+  each a warning.
 
 Contacts are measured on the placed segments (m, in the x-z plane): ``hips`` = the
 sit point (thigh tops' midpoint lowered by the body's seat depth) against the saddle;
@@ -36,6 +39,7 @@ from . import Rider, poses_dir
 from .body import load_body
 from .chain_file import bicycle_contacts, chain_settings, read_chain_pose, solve_chain
 from .pose import read_pose
+from .fit import fit_warnings
 
 CONTACT_TOLERANCE = 1e-3
 """A contact further than this (m) from its target is off the bicycle."""
@@ -195,4 +199,5 @@ def _checked(pose, rider, bicycle, chain, hands, how, solution, allow, tolerance
                          f"a rider within {tolerance * 1000:g} mm of {bicycle.name}'s contacts: {name} is "
                          f"{gap * 1000:.1f} mm from {key} (--allow-off-contact uses the pose as written)")
     lines = tuple(line + " (allowed: off contact)" for line in _gap_lines(pose, bicycle, off))
+    lines += tuple(fit_warnings(bicycle, chain, solution, rider.name, hands))
     return SeatedRider(rider, bicycle, how, measured, solution, lines)

@@ -35,6 +35,7 @@ from ..core.errors import BikemassWarning, shown
 from ..core.gate import load_data
 from ..mass.inertia import MassProperties, combine
 from ..mass.solids import Lumped
+from ..core.paths import named_file
 from .anthropometry import Anthropometry, BodySegment
 from .chain import ChainBody
 
@@ -142,8 +143,7 @@ def yeadon_body(node):
     """(:class:`~bikemass.rider.anthropometry.Anthropometry`, :class:`~bikemass.rider.chain.ChainBody`)
     of ``{yeadon: PATH}`` (PATH relative to ``node``'s file)."""
     node.check_keys(required=("yeadon",), optional=("name", "source", "note"))
-    given = Path(node["yeadon"].string())
-    path = given if given.is_absolute() else Path(node.source).parent / given
+    path = named_file(node["yeadon"])
     if not path.is_file():
         node.fail(f"a yeadon measurement file, {path} does not exist", "yeadon")
     try:

@@ -82,12 +82,13 @@ def _walk(document, path, source, origin, parent=False):
 
 def set_path(document, path, value, source, origin="spec", size_index=None):
     """Set dotted ``path`` in the nested mapping ``document`` (in place) to ``value``; in a size
-    run (a list with one value per size) only the element ``size_index``."""
+    run (a list with one value per size) only the element ``size_index``.  A bare number takes the
+    unit the file writes there (``"0.040 in"``: inches); a ``"<number> <unit>"`` string keeps its own."""
     container, slot = _walk(document, path, source, origin, parent=True)
     if size_index is not None and isinstance(container[slot], list):
         container, slot = container[slot], size_index
     unit = _unit(container[slot])
-    container[slot] = f"{value!r} {unit}" if unit else value
+    container[slot] = f"{value!r} {unit}" if unit and not isinstance(value, str) else value
 
 
 def _unit(value):

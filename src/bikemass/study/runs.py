@@ -20,7 +20,8 @@ from dataclasses import dataclass
 from ..analysis.engine.modes import follow_modes
 from ..analysis.engine.naming import BICYCLE_LABELS as LABELS
 from ..analysis.engine.ranges import MARGINAL_THRESHOLD, grid_ranges, is_stable
-from ..analysis.engine.stability import analyse, speed_grid
+from ..analysis.engine.stability import analyse
+from ..analysis.engine.speeds import speed_grid
 from ..bicycle import bicycle_parameters
 from ..fe import equivalent_stiffness
 from ..mass.materials import load_materials

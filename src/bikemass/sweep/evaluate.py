@@ -23,15 +23,16 @@ _MODELS = {}
 
 
 class Chunk:
-    """Configurations ``start .. stop - 1`` of a sweep (a list of ``{key: value}``).
+    """Configurations ``start .. stop - 1`` of a sweep (a list of ``{key: value}``; ``units``:
+    ``{key: unit}`` of the values that reach the model as ``"<number> <unit>"``).
 
     A plain object rather than a list, so Dask ships it as one pickled value instead of
     walking every configuration of it while building the task graph."""
 
-    __slots__ = ("start", "configurations")
+    __slots__ = ("start", "configurations", "units")
 
-    def __init__(self, start, configurations):
-        self.start, self.configurations = start, configurations
+    def __init__(self, start, configurations, units=None):
+        self.start, self.configurations, self.units = start, configurations, units or {}
 
     @property
     def stop(self):
@@ -63,8 +64,10 @@ def evaluate_chunk(setup, chunk, max_speed):
     """Rows for the configurations of a :class:`Chunk`; ``setup`` = (bike, rider, stiffness,
     combine, spec source)."""
     model = _model(setup)
+    units = chunk.units
     with one_blas_thread():
-        return [evaluate(model, c, max_speed) for c in chunk.configurations]
+        return [evaluate(model, {k: f"{v!r} {units[k]}" if k in units else v for k, v in c.items()}, max_speed)
+                for c in chunk.configurations]
 
 
 def finish_chunk(setup, chunk, max_speed, keys):

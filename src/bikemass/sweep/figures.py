@@ -15,15 +15,20 @@ def _numeric(rows, key):
 
 
 def heatmap_figure(rows, spec, size=None):
-    """Weave and capsize speed over the grid of the first two varied keys (others at their first value)."""
+    """Weave and capsize speed over the grid of the first two varied keys (others at their first value;
+    a value listed twice is drawn once, from its first row)."""
     kx, ky = spec.keys[:2]
-    xs, ys = spec.variables[0].grid(), spec.variables[1].grid()
+    xs, ys = (sorted(set(v.grid())) for v in spec.variables[:2])    # a value listed twice is one column
     first = {v.key: v.grid()[0] for v in spec.variables[2:]}
-    pick = [r for r in rows if all(r[k] == v for k, v in first.items())]
+    cells = {}
+    for r in rows:
+        if all(r[k] == v for k, v in first.items()):
+            cells.setdefault((r[kx], r[ky]), r)
     fig = Figure(figsize=size or (11, 4.5), layout="constrained")
     axes = fig.subplots(1, 2)
     for ax, col in zip(axes, SPEED_COLUMNS):
-        z = _column(pick, col).reshape(len(xs), len(ys)).T
+        z = np.array([[np.nan if cells[x, y].get(col) is None else float(cells[x, y][col]) for x in xs]
+                      for y in ys])
         mesh = ax.pcolormesh(xs, ys, z, shading="nearest", cmap="viridis")
         fig.colorbar(mesh, ax=ax, label=f"{col.replace('_', ' ')} (m/s)")
         ax.set_xlabel(kx)

@@ -3,7 +3,10 @@
 ``DIR/chunks/START-STOP.json`` holds the result rows of configurations ``START..STOP-1``
 (written atomically as each chunk finishes), so an interrupted sweep resumes where it
 stopped, whatever engine or chunk size the next run uses; ``DIR/sweep.json`` records the
-spec's fingerprint and a resumed run must match it.  When every configuration has its row,
+spec's fingerprint and a resumed run must match it (a folder with files but no record, or a
+damaged one, is refused: its chunks could be any sweep's; a damaged chunk file is computed
+again).  A sweep whose every configuration the model refuses is an error (naming the first
+reason), one with some refused a warning; the rows keep each reason in ``error``.  When every configuration has its row,
 ``DIR/results.csv`` (and ``results.parquet`` when pyarrow is installed) holds one row per
 configuration in the spec's order, the same whichever engine computed it.
 
@@ -18,11 +21,14 @@ progress bar's steps).  Never more than :data:`MAX_CHUNK` configurations a chunk
 sweep loses little when interrupted.
 """
 
+import signal
 import importlib
 import json
 import os
 import pickle
 import re
+import shutil
+import threading
 from collections.abc import Callable
 from contextlib import contextmanager
 from pathlib import Path
@@ -31,8 +37,9 @@ from ..core.errors import InputError, short, wrong_type
 from ..core.output import write_atomic
 from ..models.parameters import NAMES
 from ..scenario.inputs import STIFFNESS_KEY, Model, get_path
-from .evaluate import Chunk, finish_chunk, finish_chunk_pickled
+from .evaluate import Chunk, finish_chunk, finish_chunk_pickled, OUTPUTS
 from .spec import SweepSpec, read_spec
+from ..models.plausibility import warn
 from .table import csv_lines, write_results
 
 TASKS_PER_WORKER = 4
@@ -103,19 +110,63 @@ def _missing_chunks(done, count, size):
     return chunks
 
 
+STAMP = "sweep.json"
+"""The record of the sweep a folder holds (its spec's fingerprint): a resumed run must match it."""
+MAX_STAMP_BYTES = 100_000
+
+
+def _record(spec):
+    return {"spec": spec.source, "fingerprint": spec.fingerprint(), "keys": list(spec.keys)}
+
+
+def _check_folder(spec, out):
+    """Before any work: ``out`` is a new or empty folder, or holds this sweep's own record (a
+    missing or damaged record, or another spec's, is refused: its chunks could be anyone's)."""
+    out = Path(out)
+    if out.exists() and not out.is_dir():
+        raise InputError(out, "--out", "a directory (this is a file)")
+    stamp = out / STAMP
+    if stamp.is_file():
+        old = _read_stamp(stamp)
+        if old["fingerprint"] != _record(spec)["fingerprint"]:
+            raise InputError(out, STAMP, f"results of the same spec to resume (this folder holds "
+                             f"{short(old.get('spec'))}, a different sweep): use another --out")
+    elif out.is_dir() and any(out.iterdir()):
+        raise InputError(out, STAMP, f"a new or empty folder, or a sweep's own holding {STAMP} (this one holds "
+                         f"other files and no {STAMP}, so its chunks could be another sweep's): use another --out")
+
+
+def _read_stamp(stamp):
+    """The record in ``stamp`` (a dict with a ``fingerprint``); InputError if it is damaged."""
+    damaged = ("the record bikemass sweep writes (JSON with a fingerprint); this one is damaged: remove the "
+               "folder or use another --out")
+    try:
+        if stamp.stat().st_size > MAX_STAMP_BYTES:
+            raise ValueError
+        record = json.loads(stamp.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        raise InputError(stamp, "(file)", damaged) from None
+    if not isinstance(record, dict) or not isinstance(record.get("fingerprint"), str):
+        raise InputError(stamp, "(file)", damaged)
+    return record
+
+
 def _prepare(spec, out):
     out = Path(out)
     (out / "chunks").mkdir(parents=True, exist_ok=True)
-    stamp = out / "sweep.json"
-    record = {"spec": spec.source, "fingerprint": spec.fingerprint(), "keys": list(spec.keys)}
-    if stamp.is_file():
-        old = json.loads(stamp.read_text())
-        if old.get("fingerprint") != record["fingerprint"]:
-            raise InputError(out, "sweep.json", f"results of the same spec to resume (this folder holds "
-                             f"{old.get('spec')}, a different sweep): use another --out")
-    else:
-        write_atomic(stamp, json.dumps(record, indent=2) + "\n")
+    if not (out / STAMP).is_file():
+        write_atomic(out / STAMP, json.dumps(_record(spec), indent=2) + "\n")
     return out
+
+
+def _valid_rows(rows, count):
+    """True if ``rows`` (read from a chunk file) are ``count`` result rows as :func:`evaluate` writes
+    them; a damaged chunk file is computed again."""
+    return isinstance(rows, list) and len(rows) == count and all(
+        isinstance(r, dict) and set(r) == set(OUTPUTS)
+        and all(r[k] is None or (isinstance(r[k], (int, float)) and not isinstance(r[k], bool))
+                for k in OUTPUTS if k != "error")
+        and (r["error"] is None or isinstance(r["error"], str)) for r in rows)
 
 
 def _finished(out, count):
@@ -127,12 +178,27 @@ def _finished(out, count):
             continue
         start, stop = int(match[1]), int(match[2])
         try:
-            rows = json.loads(path.read_text())
+            rows = json.loads(path.read_text(encoding="utf-8"))
         except (OSError, ValueError):
             continue
-        if 0 <= start < stop <= count and isinstance(rows, list) and len(rows) == stop - start:
+        if 0 <= start < stop <= count and _valid_rows(rows, stop - start):
             results[start:stop] = rows
     return results
+
+
+def _outcome(rows, spec, out, created):
+    """One outcome for rows the model refused: all of them is an error (InputError naming the first
+    reason; a folder this run made is removed), some of them a warning."""
+    failed = [r["error"] for r in rows if r["error"]]
+    if not failed:
+        return
+    if len(failed) == len(rows):
+        if created:
+            shutil.rmtree(out, ignore_errors=True)
+        raise InputError(spec.source, "vary", f"configurations the model accepts; all {len(rows)} were refused, "
+                                              f"the first: {failed[0]}")
+    warn(f"{spec.source}: {len(failed)} of {len(rows)} configurations were refused by the model (see the error "
+         f"column of {Path(out) / 'results.csv'}), the first: {failed[0]}")
 
 
 def run_sweep(spec: "SweepSpec | str | os.PathLike", out: "str | os.PathLike", workers: int | None = None,
@@ -173,9 +239,15 @@ def run_sweep(spec: "SweepSpec | str | os.PathLike", out: "str | os.PathLike", w
     Raises
     ------
     InputError
-        A bad spec (naming its file and key), a folder that holds another sweep or a file, a bad
-        ``workers`` or ``progress``, or a scheduler that cannot be reached; every configuration
-        refused.
+        Bad arguments or spec (naming its file and key); ``out`` a file, or a folder holding other
+        files than a sweep's own, another spec's sweep or a damaged ``sweep.json``; a scheduler that
+        cannot be reached; the model refusing every configuration (the first reason named; a folder
+        this call made is removed).
+
+    Warns
+    -----
+    BikemassWarning
+        The model refused some configurations (each row keeps its reason in ``error``).
 
     See Also
     --------
@@ -198,8 +270,8 @@ def run_sweep(spec: "SweepSpec | str | os.PathLike", out: "str | os.PathLike", w
     if not hasattr(spec, "configurations"):
         spec = read_spec(spec)
     check_keys(spec)
-    if Path(out).exists() and not Path(out).is_dir():
-        raise InputError(out, "--out", "a directory (this is a file)")
+    _check_folder(spec, out)
+    created = not Path(out).exists() or not any(Path(out).iterdir())
     with _engine(workers, scheduler) as (run, slots):       # a cluster that cannot be reached leaves no folder
         out = _prepare(spec, out)
         configurations = spec.configurations()
@@ -210,7 +282,8 @@ def run_sweep(spec: "SweepSpec | str | os.PathLike", out: "str | os.PathLike", w
         setup = (spec.bike, spec.rider, spec.stiffness, spec.combine, spec.source)
         lines = [None] * len(configurations)
         size = chunk_size(done.count(False), slots, spec.chunk, cheap=parameters_only(spec))
-        chunks = [Chunk(a, configurations[a:b]) for a, b in _missing_chunks(done, len(configurations), size)]
+        chunks = [Chunk(a, configurations[a:b], spec.units)
+                  for a, b in _missing_chunks(done, len(configurations), size)]
         for chunk, (rows, text, chunk_lines) in run(setup, chunks, spec.max_speed, spec.keys):
             write_atomic(out / "chunks" / f"{chunk.start:09d}-{chunk.stop:09d}.json", text)
             results[chunk.start:chunk.stop] = rows
@@ -221,6 +294,7 @@ def run_sweep(spec: "SweepSpec | str | os.PathLike", out: "str | os.PathLike", w
         lines[i] = csv_lines(spec.keys, configurations[i:i + 1], results[i:i + 1])[0]
     rows = [{**config, **result} for config, result in zip(configurations, results)]
     write_results(rows, spec.keys, out, lines)
+    _outcome(rows, spec, out, created)
     return rows
 
 
@@ -295,7 +369,7 @@ def _client(distributed, workers, scheduler):
             if not isinstance(scheduler, str):
                 raise ValueError(f"an address string or a distributed.Client, got {type(scheduler).__name__}")
             distributed.comm.resolve_address(scheduler)      # a malformed address: one line, no Client made
-            client = distributed.Client(scheduler, timeout="10s", set_as_default=False)
+            client = _connected(distributed, scheduler)
         except (OSError, TimeoutError, ValueError) as exc:
             raise InputError("--scheduler", scheduler, f"a running Dask scheduler ({exc})") from None
         with client:
@@ -305,12 +379,55 @@ def _client(distributed, workers, scheduler):
         yield client
 
 
+CONNECT_DEADLINE = 20
+"""Seconds a scheduler has to answer (distributed's own 10 s timeout does not bound a listener that
+accepts the connection and never speaks)."""
+
+
+def _connected(distributed, address):
+    """A ``distributed.Client`` of the scheduler at ``address``, made in a thread of its own and
+    given up after :data:`CONNECT_DEADLINE` seconds (TimeoutError); the thread is a daemon, so a
+    connection that never ends does not keep the process alive."""
+    box = {}
+
+    def connect():
+        try:
+            box["client"] = distributed.Client(address, timeout="10s", set_as_default=False)
+        except BaseException as exc:           # handed to the caller's thread
+            box["error"] = exc
+    thread = threading.Thread(target=connect, name="bikemass-connect", daemon=True)
+    thread.start()
+    thread.join(CONNECT_DEADLINE)
+    if thread.is_alive():
+        raise TimeoutError(f"no answer within {CONNECT_DEADLINE} s")
+    if "error" in box:
+        raise box["error"]
+    return box["client"]
+
+
 def local_cluster(workers):
     """The Dask cluster of ``--workers N``: ``workers`` single-threaded worker processes on
-    loopback, with :data:`QUIET_CLUSTER`'s settings."""
+    loopback, with :data:`QUIET_CLUSTER`'s settings.  The workers are started with SIGINT
+    ignored, which they keep: a Ctrl-C in the terminal reaches the whole process group, and
+    the command (this process) stops them itself, so they print nothing of their own."""
     # lazy: dask is optional (the sweep extra) and slow to import; only --workers needs it
     import dask
     distributed = require("distributed")
-    with dask.config.set(QUIET_CLUSTER):
+    with dask.config.set(QUIET_CLUSTER), _workers_ignore_sigint():
         return distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
                                         host="127.0.0.1", dashboard_address="127.0.0.1:0", silence_logs=40)
+
+
+@contextmanager
+def _workers_ignore_sigint():
+    """SIGINT ignored while the block starts worker processes (an ignored signal stays ignored in
+    a process started from this one); the previous handler back afterwards.  In the main thread
+    only (elsewhere signal handlers cannot change); a Ctrl-C during the block is not seen."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)

@@ -15,7 +15,12 @@ chunk: 500                 # optional: configurations per task (default: docs/an
 ```
 
 Keys are those of :mod:`bikemass.scenario.inputs` (the 26 parameters, ``stiffness``,
-dotted paths into the bicycle or pose YAML).
+dotted paths into the bicycle or pose YAML).  Varied values follow the one units rule of every
+YAML format: ``["0.5 mm", "1.0 mm"]``, ``{from: 15 deg, to: 45 deg, num: 4}``.  A parameter's
+values are read in SI (its ``lam`` bare in radians, as its file format has it); a dotted path's
+given with a unit keep it (``results.csv`` lists them in it) and reach the YAML with it, bare
+ones take the unit the file writes there; the bicycle or pose loader checks them as it checks
+the file (a bare angle where the file has no unit either is refused there).
 """
 
 import hashlib
@@ -28,22 +33,30 @@ from pathlib import Path
 import numpy as np
 
 from ..core.config import load_yaml
+from ..core.paths import within_reach
+from ..core.units import DIMENSIONS, UnitError, dimension_of, split_quantity
+from ..models.parameters import NAMES, dimension
 
 SAMPLE_METHODS = ("grid", "lhs", "sobol")
 TOP_KEYS = ("bike", "rider", "stiffness", "combine", "max_speed", "vary", "sample", "global_sensitivity",
             "chunk", "name", "description")
-MAX_CONFIGURATIONS = 10 ** 7
+MAX_CONFIGURATIONS = 10 ** 6
+"""Most configurations in one sweep, checked before any is made: every configuration's row is
+kept in memory and written to one table (measured: 10^5 configurations peak at 306 MB, about
+1.5 kB each; so 10^6 need about 1.6 GB).  Split a bigger design into several sweeps."""
 
 
 @dataclass(frozen=True)
 class Variable:
-    """One varied key: ``values`` (a list) or a range ``low..high`` with ``num`` points."""
+    """One varied key: ``values`` (a list) or a range ``low..high`` with ``num`` points, numbers
+    in ``unit`` (``None``: as given, bare; a benchmark parameter's are SI)."""
 
     key: str
     values: tuple = None
     low: float = None
     high: float = None
     num: int = None
+    unit: str = None
 
     def size(self):
         """Number of grid values (without making them)."""
@@ -77,6 +90,11 @@ class SweepSpec:
     @property
     def keys(self):
         return tuple(v.key for v in self.variables)
+
+    @property
+    def units(self):
+        """``{key: unit}`` of the varied values given with a unit (they reach the model with it)."""
+        return {v.key: v.unit for v in self.variables if v.unit}
 
     def configurations(self):
         """List of ``{key: value}`` in a fixed order (the rows of results.csv)."""
@@ -120,6 +138,8 @@ def count_of(spec):
 
 
 STIFFNESS_CHOICES = "infinite, steel, titanium, aluminum or a file"
+MAX_SPEED = 1000.0
+"""Highest ``max_speed`` (m/s), as the command line's ``--speeds`` allows."""
 
 
 def _variable(key, node):
@@ -130,24 +150,60 @@ def _variable(key, node):
             for v in node.elements():
                 if not isinstance(v.value, str):
                     v.fail(f"a stiffness choice ({STIFFNESS_CHOICES}), got {v.value!r}")
-        values = tuple(v.string() if key == "stiffness" else v.number("dimensionless") for v in node.elements())
-        return Variable(key, values=values)
+            return Variable(key, values=tuple(v.string() for v in node.elements()))
+        if key in NAMES:
+            return Variable(key, values=tuple(_parameter(key, v) for v in node.elements()))
+        numbers, unit = _in_one_unit(node.elements())
+        return Variable(key, values=tuple(numbers), unit=unit)
     if key == "stiffness":
         node.fail(f"a list of stiffness choices ({STIFFNESS_CHOICES})")
     node.check_keys(required=("from", "to"), optional=("num",))
-    low, high = node["from"].number("dimensionless"), node["to"].number("dimensionless")
+    if key in NAMES:
+        (low, high), unit = (_parameter(key, node["from"]), _parameter(key, node["to"])), None
+    else:
+        (low, high), unit = _in_one_unit([node["from"], node["to"]])
     if not (np.isfinite(low) and np.isfinite(high) and low < high):
         node.fail("from < to, both finite")
     num = int(node["num"].number("dimensionless", positive=True)) if node.has("num") else None
     if num is not None and (num != node["num"].number("dimensionless") or num < 2):
         node.fail("a whole number of points, at least 2", "num")
-    return Variable(key, low=low, high=high, num=num)
+    return Variable(key, low=low, high=high, num=num, unit=unit)
+
+
+def _parameter(key, node):
+    """A value of benchmark parameter ``key`` in SI (``lam`` bare in radians, as its file format)."""
+    return node.number(dimension(key), bare_unit="rad" if key == "lam" else None)
+
+
+def _in_one_unit(nodes):
+    """``(numbers, unit)`` of values given as numbers or ``"<number> <unit>"``: all bare (unit
+    ``None``), or all with units of one dimension, converted to the first one's unit."""
+    read = []
+    for node in nodes:
+        try:
+            read.append(split_quantity(node.value))
+        except UnitError as exc:
+            node.fail(str(exc))
+    unit = read[0][1]
+    if not unit:
+        for node, (_, given) in zip(nodes, read):
+            if given:
+                node.fail(f"a bare number like the first value, or units on every value, got {node.value!r}")
+        return [x for x, _ in read], None
+    dimension = dimension_of(unit)
+    table = DIMENSIONS[dimension][1]
+    numbers = []
+    for node, (x, given) in zip(nodes, read):
+        if dimension_of(given) != dimension:
+            node.fail(f"a value of the first value's dimension ({dimension}, e.g. '1 {unit}'), got {node.value!r}")
+        numbers.append(x if given == unit else x * table[given] / table[unit])
+    return numbers, unit
 
 
 def _near(spec_path, name):
     """A file named relative to the spec file, if it exists there; else the name as given."""
     here = Path(spec_path).parent / name
-    return str(here.resolve()) if here.is_file() else name
+    return str(here.resolve()) if within_reach(here) and here.is_file() else name
 
 
 def read_spec(path):
@@ -179,7 +235,9 @@ def read_spec(path):
             vary.fail("{from, to} ranges for a global sensitivity analysis", v.key)
     if gsa and n is None:
         node.fail("sample: {method: sobol, n: N} (N base points of the Saltelli sample)", "global_sensitivity")
-    max_speed = node["max_speed"].number("dimensionless", positive=True) if node.has("max_speed") else 30.0
+    max_speed = node["max_speed"].number("speed", positive=True) if node.has("max_speed") else 30.0
+    if max_speed > MAX_SPEED:
+        node.fail(f"a speed of at most {MAX_SPEED:g} m/s, got {max_speed:g}", "max_speed")
     chunk = None
     if node.has("chunk"):
         chunk = node["chunk"].number("dimensionless", positive=True)

@@ -3,7 +3,8 @@
 ``GET /api/stability?<state>`` returns the document of ``bikemass stability
 --format json``, ``GET /api/params?<state>`` that of ``bikemass params
 --format json`` and ``GET /api/handling?<state>`` that of ``bikemass handling --speeds
-3,4,5,6,7,8,10 --format json`` (the rider in the loop); ``/download/<file>?<state>`` serves the parameter set (YAML,
+3,4,5,6,7,8,10 --format json`` (the rider in the loop), each with the ``warnings`` the command
+line gives (a list, empty when there are none); ``/download/<file>?<state>`` serves the parameter set (YAML,
 JSON, BicycleParameters), the eigenvalues (CSV) and the bicycle and pose YAML.
 A bad query answers 400 with ``{"error": "<one line>"}``.
 """
@@ -20,7 +21,6 @@ from ..core.plain import plain
 from ..models.parameter_export import format_parameters
 from ..models.parameters import parameter_units
 from ..rider import poses_dir
-from .engine import edited_chart
 from .state import PageState
 
 DOWNLOADS = {
@@ -63,10 +63,8 @@ def download(engine, filename, state):
         text = format_parameters(engine.parameters(state), "bicycleparameters", title)
     elif filename == "eigenvalues.csv":
         text = eig_table(engine.evaluate(state).stability.modes, csv=True)
-    elif filename == "bicycle.yaml" and state.chart:
-        text = yaml.safe_dump(edited_chart(engine.source(state.bike), dict(state.chart)), sort_keys=False)
     elif filename == "bicycle.yaml":
-        text = read_text(engine.bicycle(state.bicycle_key).source)
+        text = engine.download_source(state)
     else:
         rider = engine.rider(state.rider_key)
         if isinstance(rider, dict):
@@ -88,22 +86,26 @@ def register_routes(server, engine):
         except InputError as exc:
             return jsonify({"error": str(exc)}), 400
 
+    def with_warnings(document, compute, state):
+        value, lines = engine.answer(compute, state)
+        return jsonify({**document(value), "warnings": lines})
+
     @server.route("/api/stability")
     def api_stability():
-        return answer(lambda s: jsonify(stability_document(engine.evaluate(s))))
+        return answer(lambda s: with_warnings(lambda e: stability_document(e), engine.evaluate, s))
 
     @server.route("/api/params")
     def api_params():
-        return answer(lambda s: jsonify(parameters_document(engine.parameters(s))))
+        return answer(lambda s: with_warnings(parameters_document, engine.parameters, s))
 
     @server.route("/api/handling")
     def api_handling():
-        return answer(lambda s: jsonify(handling_document(engine.handling(s))))
+        return answer(lambda s: with_warnings(handling_document, engine.handling, s))
 
     @server.route("/download/<filename>")
     def api_download(filename):
         def send(state):
-            data, mime = download(engine, filename, state)
+            data, mime = engine.answer(lambda st: download(engine, filename, st), state)[0]
             name = f"{state.bike}-{filename}" if filename != "Benchmark.txt" else f"{state.bike}Benchmark.txt"
             return Response(data, mimetype=mime,
                             headers={"Content-Disposition": f'attachment; filename="{name}"'})

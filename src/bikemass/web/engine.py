@@ -4,32 +4,53 @@ Loading a bicycle or a rider builds meshes and costs tenths of a second; the
 beam model of a frame costs as much again.  They change only when the bicycle,
 rider or material changes, so they are cached; a typed-over benchmark parameter
 then costs one stability analysis (milliseconds).  Uploaded files live in the
-engine's own temporary folder under a name made from their content.
+engine's own temporary folder, each in a folder named by its content's digest.
+
+Every computation runs :func:`bikemass.core.paths.confined` to the shipped data and the
+uploads (an upload cannot reach any other file), one at a time (the warnings module is
+process-wide), and records the :class:`~bikemass.core.errors.BikemassWarning` s it issues:
+a cached result warns again whenever it is used, so every answer carries its warnings
+(:meth:`Engine.answer`).  Errors about an upload name the file as uploaded, never the
+server's folder.
 """
 
-import copy
+import contextlib
+import functools
 import hashlib
+import os
+import re
 import tempfile
+import threading
+import warnings
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
-from ..analysis.results import stability
-from ..bicycle import bicycle_parameters
-from ..bicycle.chart import CHECKED_KEYS
-from ..bicycle.loader import bicycle_sizes
-from ..core.choices import Combine, check
-from ..core.config import load_yaml
-from ..core.errors import InputError
-from ..core.paths import available, frames_dir, resolve
+from ..core.errors import BikemassWarning, InputError, one_line
 from ..models.parameters import BenchmarkParameters
-from ..models.plausibility import check_parameters
-from ..scenario.catalog import load_bicycle, load_rider, seated_rider, stiffness
-from .state import CHART_ANGLES, SOURCE, PageState
+from ..core.paths import confined
+from .state import SOURCE, PageState
+from ..bicycle.loader import bicycle_sizes
+from ..bicycle.loader import _is_parameter_text
+from ..core.config import load_yaml
+from ..core.paths import frames_dir, resolve
+from ..mass.materials import load_materials
+from ..core.gate import read_text
+from ..scenario.catalog import load_bicycle
+from ..scenario.catalog import load_rider
+from ..scenario.catalog import seated_rider
+from ..bicycle import bicycle_parameters
+from ..core.choices import Combine, check
+from ..scenario.catalog import stiffness
+from ..models.plausibility import check_parameter_file, warn_parameters
+from ..analysis.results import stability
+from ..bicycle.chart import CHECKED_KEYS
+from ..bicycle.sizes import select_size, size_names
+from .state import CHART_ANGLES
 from ..analysis.handling.plant import linear_model
 from ..analysis.handling.survey import handling
-from ..core.errors import BikemassWarning
-import warnings
+import copy
+import yaml
 
 UPLOAD_LIMIT = 1_000_000
 """Largest accepted upload (bytes)."""
@@ -37,8 +58,13 @@ UPLOAD_SUFFIXES = (".yaml", ".yml", ".json", ".txt")
 """Uploads: bicycle YAML/JSON (keypoints, chart or parameters) or a BicycleParameters text file."""
 UPLOAD_PREFIX = "upload-"
 """Bicycle names that refer to an uploaded file: ``upload-<digest>``."""
+MAX_UPLOADS = 16
+"""Uploads kept on the server (the oldest is deleted when another arrives)."""
+MAX_UPLOAD_NAME = 100
+"""Longest uploaded file name kept (characters); the file is stored under a name of its own."""
 HANDLING_SPEEDS = (3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 10.0)
 """Speeds (m/s) of the page's rider in the loop (a tuning costs about 0.2 s per speed)."""
+RIGID_CHOICE = "infinite"
 
 
 @dataclass(frozen=True)
@@ -50,27 +76,84 @@ class Evaluation:
     stability: object
 
 
+def _recorded(function, maxsize):
+    """``function`` cached (``maxsize`` results), its BikemassWarnings recorded with each result and
+    issued again on every call, cached or not."""
+    @lru_cache(maxsize=maxsize)
+    def compute(*args):
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", BikemassWarning)
+            value = function(*args)
+        return value, tuple((w.message, w.category) for w in caught if issubclass(w.category, BikemassWarning))
+
+    @functools.wraps(function)
+    def cached(*args):
+        value, caught = compute(*args)
+        for message, category in caught:
+            warnings.warn(message, category, stacklevel=2)
+        return value
+    return cached
+
+
 class Engine:
     """Cached bicycles, riders, parameters and stiffnesses for the page and its JSON API."""
 
     def __init__(self):
         self._folder = tempfile.TemporaryDirectory(prefix="bikemass-web-")
-        self._uploads = {}
-        self.bicycle = lru_cache(maxsize=32)(self._bicycle)
-        self.rider = lru_cache(maxsize=32)(self._rider)
-        self.seated = lru_cache(maxsize=64)(self._seated)
-        self.base_parameters = lru_cache(maxsize=64)(self._base_parameters)
-        self.stiffness = lru_cache(maxsize=64)(self._stiffness)
-        self.handling = lru_cache(maxsize=16)(self._handling)
+        self._uploads, self._labels = {}, {}
+        self._lock = threading.RLock()
+        self.bicycle = self._guarded(_recorded(self._bicycle, 32))
+        self.rider = self._guarded(_recorded(self._rider, 32))
+        self.seated = self._guarded(_recorded(self._seated, 64))
+        self.base_parameters = self._guarded(_recorded(self._base_parameters, 64))
+        self.stiffness = self._guarded(_recorded(self._stiffness, 64))
+        self.handling = self._guarded(_recorded(self._handling, 16))
+
+    # -- the one way in ---------------------------------------------------------
+    def _guarded(self, function):
+        """``function`` run one at a time, confined to the shipped data and the uploads, with its
+        errors naming an upload as uploaded."""
+        @functools.wraps(function)
+        def run(*args, **kwargs):
+            with self._lock, confined(self._folder.name):
+                try:
+                    return function(*args, **kwargs)
+                except InputError as exc:
+                    raise self._as_uploaded(exc) from None
+        return run
+
+    def answer(self, compute, *args):
+        """``(compute(*args), warnings)``: the value and the distinct messages of the
+        BikemassWarnings its computation issued (cached parts warn again), in order."""
+        with self._lock:
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always", BikemassWarning)
+                value = self._guarded(compute)(*args)
+        lines = (self._scrubbed(str(w.message)) for w in caught if issubclass(w.category, BikemassWarning))
+        return value, list(dict.fromkeys(lines))
+
+    def _scrubbed(self, text):
+        """``text`` with every uploaded file's stored path replaced by the name it was uploaded as."""
+        for name, path in self._uploads.items():
+            for shown in {str(path), os.path.realpath(path)}:
+                text = text.replace(shown, self.upload_label(name))
+        folder = re.escape(self._folder.name)
+        return re.sub(rf"{folder}[^\s:]*", "(upload)", text)
+
+    def _as_uploaded(self, exc):
+        if self._folder.name not in str(exc) and os.path.realpath(self._folder.name) not in str(exc):
+            return exc
+        return InputError(self._scrubbed(exc.source), self._scrubbed(exc.key), self._scrubbed(exc.expected))
 
     # -- inputs ---------------------------------------------------------------
     def add_upload(self, filename, content):
-        """Store an uploaded bicycle file; return its name (``upload-<digest>``) once it loads.
+        """Store an uploaded bicycle file; return its name (``upload-<digest>``) once it loads (a
+        size run: its first size).
 
-        Raises InputError (one line) for a file that is too large, of another kind,
-        not a bicycle, or that refers to any file but a shipped bicycle.
+        Raises InputError (one line, naming the file as uploaded) for a file that is too large,
+        of another kind, not a bicycle, or that refers to any file but the shipped data.
         """
-        shown = Path(filename).name or "upload"
+        shown = one_line(Path(str(filename)).name or "upload", MAX_UPLOAD_NAME)
         suffix = Path(shown).suffix.lower()
         if suffix not in UPLOAD_SUFFIXES:
             raise InputError(shown, "(file)", f"a bicycle file ending in {', '.join(UPLOAD_SUFFIXES)}")
@@ -78,21 +161,35 @@ class Engine:
             raise InputError(shown, "(file)", f"at most {UPLOAD_LIMIT // 1000} kB")
         digest = hashlib.sha256(content).hexdigest()[:16]
         name = UPLOAD_PREFIX + digest
-        path = Path(self._folder.name) / digest / shown
-        path.parent.mkdir(exist_ok=True)
-        path.write_bytes(content)
-        _check_references(path)
-        self._uploads[name] = path
-        try:
-            self.bicycle((name, "", ()))
-        except InputError:
-            del self._uploads[name]
-            raise
+        with self._lock:
+            path = Path(self._folder.name) / digest / f"upload{suffix}"
+            path.parent.mkdir(exist_ok=True)
+            path.write_bytes(content)
+            self._uploads[name] = path
+            self._labels[name] = shown
+            try:
+                sizes = self.sizes(name)
+                self.bicycle((name, sizes[0] if sizes else "", ()))
+            except InputError:
+                self._forget(name)
+                raise
+            self._uploads[name] = self._uploads.pop(name)        # the newest last
+            while len(self._uploads) > MAX_UPLOADS:
+                self._forget(next(iter(self._uploads)))
         return name
+
+    def _forget(self, name):
+        """Delete the upload ``name`` and its file."""
+        path = self._uploads.pop(name, None)
+        self._labels.pop(name, None)
+        if path is not None:
+            path.unlink(missing_ok=True)
+            with contextlib.suppress(OSError):
+                path.parent.rmdir()
 
     def upload_label(self, name):
         """The file name an uploaded bicycle came from."""
-        return self._uploads[name].name
+        return self._labels.get(name, "upload")
 
     def source(self, bike):
         """The argument the loaders take for ``bike``: a shipped name or an uploaded file's path."""
@@ -106,20 +203,46 @@ class Engine:
 
     def sizes(self, bike):
         """The size names of ``bike``'s size run, ``()`` if it has none."""
-        return bicycle_sizes(self.source(bike))
+        return self._guarded(bicycle_sizes)(self.source(bike))
 
     def is_chart(self, bike):
         """True if ``bike`` is written as a geometry chart (so the page can edit its chart)."""
-        path = resolve(self.source(bike), frames_dir(), "bicycle")
-        return path.suffix != ".txt" and load_yaml(path).has("chart")
+
+        def chart(source):
+            path = resolve(source, frames_dir(), "bicycle")
+            return not _is_parameter_text(path) and load_yaml(path).has("chart")
+        return self._guarded(chart)(self.source(bike))
+
+    def materials(self, bike, size=""):
+        """The stiffness choices for ``bike``: ``infinite``, the frame's own tube materials, then
+        every shipped material (its command-line name)."""
+        names = {}                                   # material key -> [key, aliases...], as the file lists them
+        for name, material in self._guarded(load_materials)().items():
+            names.setdefault(material.key, []).append(name)
+        shipped = {key: listed[1] if len(listed) > 1 else key for key, listed in names.items()}
+        own = [t.material.key for t in self.bicycle((bike, size, ())).tubes]
+        names = list(dict.fromkeys([shipped.get(k, k) for k in own] + list(shipped.values())))
+        return [RIGID_CHOICE] + names
+
+    def download_source(self, state):
+        """The text of the bicycle file of ``state``: the file itself, or for a size run or a
+        chart typed over, the mapping of that one size with the edits (YAML)."""
+
+        def text():
+            if state.chart or self.sizes(state.bike):
+                return yaml.safe_dump(edited_chart(self.source(state.bike), dict(state.chart), state.size or None),
+                                      sort_keys=False)
+            return read_text(self.bicycle(state.bicycle_key).source)
+        return self._guarded(text)()
 
     def _bicycle(self, key):
         """The bicycle of a :attr:`PageState.bicycle_key`: ``(bike, size, chart edits)``."""
+
         bike, size, chart = key
         size = size or None
         if not chart:
             return load_bicycle(self.source(bike), size=size)
-        return load_bicycle(edited_chart(self.source(bike), dict(chart)), size=size)
+        return load_bicycle(edited_chart(self.source(bike), dict(chart), size))
 
     def _rider(self, key):
         """The rider of a :attr:`PageState.rider_key` as loaded (a body rider: its pose mapping,
@@ -139,24 +262,31 @@ class Engine:
         return bicycle_parameters(self.bicycle(key), self.seated(key, rider), check(Combine, combine).value, "mesh")
 
     def _stiffness(self, key, material):
-        return stiffness(self.bicycle(key), material)
+        bicycle = self.bicycle(key)
+        own = {t.material.key: t.material for t in bicycle.tubes}
+        if material != RIGID_CHOICE and material not in own and material not in load_materials():
+            raise InputError(SOURCE, "stiffness", f"one of {', '.join(self.materials(key[0], key[1]))}")
+        return stiffness(bicycle, own.get(material, material))
 
     def warm(self, states=(PageState(),)):
         """Compute ``states`` (and so import what they need) ahead of the first request."""
         for state in states:
             try:
-                self.evaluate(state)
+                self.answer(self.evaluate, state)
             except InputError:
                 pass
 
     # -- results --------------------------------------------------------------
     def parameters(self, state: PageState):
         """The benchmark parameter set of ``state``, typed-over values applied (InputError for a set
-        the model is not defined for: negative mass, lam outside (0, pi/2), ...)."""
+        the model is not defined for: negative mass, lam outside (-pi/2, pi/2), ...)."""
         base = self.base_parameters(state.bicycle_key, state.rider_key, state.combine)
         if not state.overrides:
             return base
-        return check_parameters(base.replace(**dict(state.overrides)), SOURCE)
+        params = base.replace(**dict(state.overrides))
+        check_parameter_file(params, SOURCE)
+        warn_parameters(params, SOURCE)
+        return params
 
     def model(self, state: PageState):
         """The linear model (:func:`~bikemass.models.whipple.whipple_model`) of ``state``."""
@@ -165,13 +295,13 @@ class Engine:
     def _handling(self, state):
         """``bm.handling`` of ``state`` at :data:`HANDLING_SPEEDS` (cached per state): speeds where
         the procedure finds no gains are ``nan`` (their warnings are dropped: the page shows the gap)."""
-
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", BikemassWarning)
             return handling(self.model(state), HANDLING_SPEEDS)
 
     def evaluate(self, state: PageState, speeds=None):
         """:class:`Evaluation` of ``state`` over ``speeds`` (default grid)."""
+
         params = self.parameters(state)
         S = self.stiffness(state.bicycle_key, state.stiffness)
         return Evaluation(params, S, stability(params, S, speeds))
@@ -186,31 +316,26 @@ def body_pose(key):
             "chain": {"hands": hands}}
 
 
-def edited_chart(source, edits):
-    """The mapping of chart bicycle ``source`` with ``edits`` (``{key: mm or deg}``) typed over
-    its chart; the published redundant values (wheelbase, trail, ...) are dropped, since they
-    describe the unedited frame."""
+def edited_chart(source, edits, size=None):
+    """The mapping of chart bicycle ``source`` (one ``size`` of a size run) with ``edits``
+    (``{key: mm or deg}``) typed over its chart; the published redundant values (wheelbase,
+    trail, ...) are dropped, since they describe the unedited frame."""
+
     path = resolve(source, frames_dir(), "bicycle")
     node = load_yaml(path)
+    if size_names(node):
+        node = select_size(node, size if size is not None else size_names(node)[0])
+    elif size is not None:
+        select_size(node, size)                    # names the size this file does not have
     if not node.has("chart"):
+        if not edits:
+            return copy.deepcopy(node.mapping())
         node.fail("a geometry chart (chart:) to edit; this bicycle is given by keypoints or parameters",
                   "chart")
     mapping = copy.deepcopy(node.mapping())
-    chart = {k: v for k, v in mapping["chart"].items() if k not in CHECKED_KEYS}
+    chart = {k: v for k, v in mapping["chart"].items() if k not in CHECKED_KEYS or not edits}
     for key, value in edits.items():
         chart[key] = f"{value!r} {'deg' if key in CHART_ANGLES else 'mm'}"
     mapping["chart"] = chart
     mapping.setdefault("name", path.stem)
     return mapping
-
-
-def _check_references(path):
-    """An uploaded bicycle may build on a shipped bicycle (``base: jamis``), never on a file."""
-    if path.suffix == ".txt":
-        return
-    node = load_yaml(path)
-    if node.has("base"):
-        base = node["base"].string()
-        if base.replace("_", "-") not in available(frames_dir()):
-            node.fail("the name of a shipped bicycle (an uploaded file cannot refer to other files)",
-                      "base")

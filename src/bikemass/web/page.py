@@ -10,7 +10,6 @@ import base64
 import dash
 import numpy as np
 from dash import ALL, Dash, Input, Output, State, ctx, dcc, html, no_update
-
 from ..bicycle.derived_chart import ANGLES, CHART_ORDER, derived_chart
 from ..core.errors import InputError
 from ..core.paths import available, frames_dir
@@ -20,12 +19,11 @@ from ..plots.side_view import plot_side_view
 from ..plots.stability import plot_eigenvalues
 from ..rider import shipped_poses
 from .api import DOWNLOADS, register_routes
-from .engine import UPLOAD_LIMIT, Engine
-from .state import BODY_RIDER, CHART_ANGLES, CHART_KEYS, HANDS, SEXES, SOURCE, STIFFNESS_CHOICES, PageState
-from .engine import HANDLING_SPEEDS
+from .engine import UPLOAD_LIMIT, Engine, HANDLING_SPEEDS
+from .state import BODY_RIDER, CHART_ANGLES, CHART_KEYS, HANDS, SEXES, SOURCE, PageState
 from ..analysis.handling.frequency import frequency_response
-from ..analysis.handling.figures import plot_bode
-from ..analysis.handling.figures import plot_handling
+from ..analysis.handling.figures import plot_bode, plot_handling
+from .guard import guard_requests
 
 STYLE = """
 body { font-family: system-ui, sans-serif; margin: 0; color: #222; background: #fafafa; }
@@ -43,6 +41,7 @@ header span { margin-left: 14px; opacity: 0.8; font-size: 14px; }
 .figure { background: white; border: 1px solid #ddd; border-radius: 6px; margin-top: 12px; padding: 6px; }
 .figure img { width: 100%; }
 .error { color: #b00020; font-weight: 600; margin: 8px 0; min-height: 1em; }
+.warnings { color: #8a5a00; margin: 4px 0; font-size: 13px; }
 table.params { border-collapse: collapse; font-size: 12px; width: 100%; }
 table.params td { padding: 1px 4px; border-bottom: 1px solid #eee; }
 table.params input { width: 150px; font-size: 12px; padding: 2px 4px; }
@@ -57,6 +56,43 @@ INDEX = """<!DOCTYPE html>
 <body>{%app_entry%}<footer>{%config%}{%scripts%}{%renderer%}</footer></body></html>"""
 
 
+def _text(limit):
+    return lambda value: isinstance(value, str) and len(value) <= limit
+
+
+def _optional(check):
+    return lambda value: value is None or check(value)
+
+
+def _number_or_text(value):
+    return (isinstance(value, (int, float)) and not isinstance(value, bool)) or _text(100)(value)
+
+
+def _options(value):
+    return isinstance(value, list) and len(value) <= 200 and all(
+        _text(200)(o) or (isinstance(o, dict) and _text(300)(o.get("label")) and _text(200)(o.get("value")))
+        for o in value)
+
+
+VALUE_CHECKS = {
+    "bike.value": (_text(200), "a bicycle name"),
+    "bike.options": (_options, "a list of bicycle names"),
+    "size.value": (_optional(_text(100)), "a size name or null"),
+    "rider.value": (_text(200), "a rider name"),
+    "height.value": (_optional(_number_or_text), "a number"),
+    "mass.value": (_optional(_number_or_text), "a number"),
+    "sex.value": (_text(100), "a name"),
+    "hands.value": (_text(100), "a name"),
+    "stiffness.value": (_text(100), "a material name"),
+    "combine.value": (_text(100), "a name"),
+    "chart.value": (_optional(_number_or_text), "a number or nothing"),
+    "param.value": (_optional(_number_or_text), "a number or nothing"),
+    "upload.contents": (_optional(_text(3_000_000)), "the file's content as a data URL, or null"),
+    "upload.filename": (_optional(_text(255)), "a file name of at most 255 characters, or null"),
+}
+"""What each control of the page may send (:func:`~.guard.guard_requests` refuses the rest)."""
+
+
 def create_app(engine=None):
     """The Dash application (its Flask server has the JSON API and downloads)."""
     engine = engine or Engine()
@@ -66,6 +102,7 @@ def create_app(engine=None):
     app.layout = dash.page_container
     _callbacks(app, engine)
     register_routes(app.server, engine)
+    guard_requests(app, VALUE_CHECKS)
     app.server.json.sort_keys = False
     app.engine = engine
     return app
@@ -94,7 +131,7 @@ def _layout(query):
         dcc.Dropdown(id="size", options=[state.size] if state.size else [], value=state.size or None,
                      placeholder="one size only"),
         html.Label("Rear-frame stiffness", htmlFor="stiffness"),
-        dcc.Dropdown(id="stiffness", options=list(STIFFNESS_CHOICES), value=state.stiffness, clearable=False),
+        dcc.Dropdown(id="stiffness", options=[state.stiffness], value=state.stiffness, clearable=False),
         html.Label("Rider", htmlFor="rider"),
         dcc.Dropdown(id="rider", options=riders, value=state.rider, clearable=False),
         html.Div(id="body-controls", style={} if state.rider == BODY_RIDER else {"display": "none"}, children=[
@@ -120,6 +157,7 @@ def _layout(query):
     ])
     results = html.Div(className="results", children=[
         html.Div(id="error", className="error", children=error),
+        html.Ul(id="warnings", className="warnings"),
         dcc.Loading(type="dot", children=html.Div(className="numbers", children=[
             _number("weave speed", "weave-speed"), _number("capsize speed", "capsize-speed"),
             _number("stable speeds", "stable-range"), _number("total mass", "total-mass")])),
@@ -190,7 +228,7 @@ def _parse(keys, texts, prefix=""):
     """``{key: float or None}`` from typed texts (empty = None); InputError names a bad one."""
     out = {}
     for key, text in zip(keys, texts):
-        text = (text or "").strip()
+        text = "" if text is None else str(text).strip()
         try:
             out[key] = float(text) if text else None
         except ValueError:
@@ -239,12 +277,22 @@ def _geometry_table(chart):
 
 
 def _state(bike, size, rider, body, stiffness, combine, chart_texts, param_texts):
-    """The :class:`PageState` of the controls' values; InputError names a bad typed value."""
-    state = PageState(bike=bike, size=size or "", rider=rider, stiffness=stiffness, combine=combine)
+    """The :class:`PageState` of the controls' values, checked as a URL's query is; InputError
+    names a bad typed value."""
+    state = PageState.from_query({"bike": bike, "size": size or "", "rider": rider, "stiffness": stiffness,
+                                  "combine": combine})
     if rider == BODY_RIDER:
         state = state.with_body(*body)
     state = state.with_chart(_parse(CHART_KEYS, chart_texts, "chart."))
     return state.with_overrides(_parse(NAMES, param_texts))
+
+
+def _results(engine, state):
+    """Everything the page shows for ``state`` (computed inside :meth:`Engine.answer`)."""
+    evaluation = engine.evaluate(state)
+    base = engine.base_parameters(state.bicycle_key, state.rider_key, state.combine).to_dict()
+    bicycle = engine.bicycle(state.bicycle_key)
+    return evaluation, base, derived_chart(bicycle), engine.is_chart(state.bike)
 
 
 def _callbacks(app, engine):
@@ -253,28 +301,38 @@ def _callbacks(app, engine):
                   Input("upload", "contents"), State("upload", "filename"), State("bike", "options"),
                   prevent_initial_call=True)
     def upload(contents, filename, options):
+        shown = filename or "upload.yaml"
         try:
-            data = base64.b64decode(contents.split(",", 1)[1])
-            name = engine.add_upload(filename or "upload.yaml", data)
+            if not contents or "," not in contents:
+                raise InputError(shown, "(file)", "a file's content (the upload was empty)")
+            data = base64.b64decode(contents.split(",", 1)[1], validate=True)
+            name = engine.add_upload(shown, data)
         except InputError as exc:
             return no_update, no_update, str(exc)
-        except (ValueError, IndexError):
-            return no_update, no_update, f"{filename}: (file): a readable upload"
+        except ValueError:
+            return no_update, no_update, str(InputError(shown, "(file)", "a readable upload (base64 content)"))
         label = {"label": f"{engine.upload_label(name)} (uploaded)", "value": name}
-        return [o for o in options if o != name] + [label], name, ""
+        kept = [o for o in options if (o.get("value") if isinstance(o, dict) else o) != name]
+        return kept + [label], name, ""
 
     @app.callback(Output("size", "options"), Output("size", "value"), Output("size", "disabled"),
+                  Output("stiffness", "options"),
                   Output({"type": "chart", "key": ALL}, "value"), Output({"type": "param", "key": ALL}, "value"),
-                  Input("bike", "value"), State("size", "value"))
-    def bike_changed(bike, size):
+                  Input("bike", "value"), State("size", "value"), State("stiffness", "value"))
+    def bike_changed(bike, size, stiffness):
         try:
             sizes = list(engine.sizes(bike))
         except InputError:
             sizes = []
+        size = size if size in sizes else (sizes[0] if sizes else None)
+        try:
+            materials = engine.materials(bike, size or "")
+        except InputError:
+            materials = [stiffness]
+        materials += [stiffness] if stiffness not in materials else []
         if ctx.triggered_id is None:      # the page opened: keep what the URL said
-            return sizes, size if size in sizes else (sizes[0] if sizes else None), not sizes, \
-                [no_update] * len(CHART_KEYS), [no_update] * len(NAMES)
-        return sizes, sizes[0] if sizes else None, not sizes, [""] * len(CHART_KEYS), [""] * len(NAMES)
+            return sizes, size, not sizes, materials, [no_update] * len(CHART_KEYS), [no_update] * len(NAMES)
+        return sizes, sizes[0] if sizes else None, not sizes, materials, [""] * len(CHART_KEYS), [""] * len(NAMES)
 
     @app.callback(Output("weave-speed", "children"), Output("capsize-speed", "children"),
                   Output("stable-range", "children"), Output("total-mass", "children"),
@@ -284,24 +342,20 @@ def _callbacks(app, engine):
                   Output({"type": "param", "key": ALL}, "placeholder"),
                   Output({"type": "chart", "key": ALL}, "placeholder"),
                   Output("chart-editor", "style"),
+                  Output("warnings", "children"),
                   Output("error", "children"),
                   Input("bike", "value"), Input("size", "value"), Input("rider", "value"),
                   Input("height", "value"), Input("mass", "value"), Input("sex", "value"), Input("hands", "value"),
                   Input("stiffness", "value"), Input("combine", "value"),
                   Input({"type": "chart", "key": ALL}, "value"), Input({"type": "param", "key": ALL}, "value"))
     def update(bike, size, rider, height, mass, sex, hands, stiffness, combine, chart_texts, param_texts):
-        blank = ("-",) * 4 + ("", "", "", "", [], no_update, [""] * len(NAMES), [""] * len(CHART_KEYS),
-                 no_update)
         try:
             state = _state(bike, size, rider, (height, mass, sex, hands), stiffness, combine, chart_texts,
                            param_texts)
-            evaluation = engine.evaluate(state)
-            base = engine.base_parameters(state.bicycle_key, state.rider_key, state.combine).to_dict()
-            bicycle = engine.bicycle(state.bicycle_key)
-        except InputError as exc:
-            return blank + (str(exc),)
-        chart = derived_chart(bicycle)
-        editable = engine.is_chart(state.bike)
+            (evaluation, base, chart, editable), lines = engine.answer(_results, engine, state)
+        except InputError as exc:         # the last good results stay (docs/web.md)
+            return ((no_update,) * 10 + ([no_update] * len(NAMES), [no_update] * len(CHART_KEYS))
+                    + (no_update,) * 2 + (str(exc),))
         result, p, S = evaluation.stability, evaluation.parameters, evaluation.stiffness
         matrix = "rigid (infinite)" if S is None else "\n".join("  ".join(f"{x:12.1f}" for x in row) for row in S)
         query = state.to_query()
@@ -313,19 +367,21 @@ def _callbacks(app, engine):
                 _range_text(result.ranges["strict"]["exact"]), f"{p.mB + p.mH + p.mR + p.mF:.2f} kg",
                 _svg_uri(_eigenvalue_figure(result, state)), matrix, _bodies_table(p), _geometry_table(chart),
                 links, "?" + query, [f"{base[n]:.6g}" for n in NAMES], shown,
-                {} if editable else {"display": "none"}, message)
+                {} if editable else {"display": "none"}, [html.Li(f"warning: {line}") for line in lines], message)
 
     @app.callback(Output("side-view", "src"), Input("bike", "value"), Input("size", "value"),
                   Input("rider", "value"), Input("height", "value"), Input("mass", "value"),
                   Input("sex", "value"), Input("hands", "value"), Input({"type": "chart", "key": ALL}, "value"))
     def side_view(bike, size, rider, height, mass, sex, hands, chart_texts):
+        def figure(state):
+            bicycle = engine.bicycle(state.bicycle_key)
+            return _svg_uri(_side_view_figure(bicycle, engine.seated(state.bicycle_key, state.rider_key)))
         try:
             state = _state(bike, size, rider, (height, mass, sex, hands), "infinite", "exact", chart_texts,
                            [""] * len(NAMES))
-            bicycle = engine.bicycle(state.bicycle_key)
-            return _svg_uri(_side_view_figure(bicycle, engine.seated(state.bicycle_key, state.rider_key)))
-        except InputError:
-            return ""
+            return engine.answer(figure, state)[0]
+        except InputError:                # the last good side view stays
+            return no_update
 
     configuration = [Input("bike", "value"), Input("size", "value"), Input("rider", "value"),
                      Input("height", "value"), Input("mass", "value"), Input("sex", "value"), Input("hands", "value"),

@@ -8,6 +8,7 @@ the page (``/?bike=jamis&rider=relaxed&stiffness=steel``), the JSON API
 """
 
 import math
+import re
 from dataclasses import dataclass, field, replace
 from urllib.parse import urlencode
 
@@ -15,8 +16,8 @@ from ..core.config import MAX_MAGNITUDE
 from ..core.errors import InputError
 from ..models.parameters import NAMES
 
-STIFFNESS_CHOICES = ("infinite", "steel", "titanium", "aluminum")
-"""Rear-frame stiffness choices offered by the page (a rigid frame or a shipped material)."""
+NAME_PATTERN = re.compile(r"[A-Za-z0-9][A-Za-z0-9_.@-]{0,99}")
+"""What a name in the query may look like (a shipped name, a size, a material): no paths."""
 COMBINE_CHOICES = ("exact", "thesis")
 """Rider + rear frame: parallel-axis theorem, or the thesis's Eq. 3.6."""
 TEXT_KEYS = ("bike", "size", "rider", "stiffness", "combine", "sex", "hands")
@@ -43,6 +44,7 @@ class PageState:
     bike: str = "jamis"
     rider: str = "relaxed"
     stiffness: str = "infinite"
+    """``infinite`` or a material: a shipped one or the frame's own (:meth:`~.engine.Engine.materials`)."""
     combine: str = "exact"
     height: float = 1.80
     """Rider height (m) when ``rider`` is ``body``."""
@@ -73,8 +75,8 @@ class PageState:
         for key, choices in (("sex", SEXES), ("hands", HANDS)):
             if getattr(state, key) not in choices:
                 raise InputError(SOURCE, key, f"one of {', '.join(choices)}")
-        if state.stiffness not in STIFFNESS_CHOICES:
-            raise InputError(SOURCE, "stiffness", f"one of {', '.join(STIFFNESS_CHOICES)}")
+        if not NAME_PATTERN.fullmatch(state.stiffness):
+            raise InputError(SOURCE, "stiffness", "infinite or a material name (letters, digits, '_', '-')")
         if state.combine not in COMBINE_CHOICES:
             raise InputError(SOURCE, "combine", f"one of {', '.join(COMBINE_CHOICES)}")
         overrides = tuple((name, _number(name, query[name])) for name in NAMES

@@ -15,10 +15,9 @@ from .eigen import eigen_sweep
 from .modes import follow_modes
 from .naming import family, participation
 from .tracking import reorder, track
+from .speeds import speed_grid
 from .ranges import MARGINAL_THRESHOLD, grid_ranges, interval_ranges, intersect, is_stable, margin
 
-DEFAULT_SPEEDS = (0.0, 30.0, 0.05)
-"""The thesis's speed grid: start, stop, step (m/s)."""
 WOBBLE = "wobble"
 """The name of a steer-dominated high-frequency oscillation (shimmy): what a flexible frame and
 fork or tyres that slip add to the Whipple bicycle's modes."""
@@ -26,12 +25,6 @@ WOBBLE_MIN_FREQUENCY = 2 * np.pi * 3.0
 """Lowest frequency (rad/s, 3 Hz) of an oscillation named wobble; the weave of a bicycle stays
 below it up to about 15 m/s, the wobble of the literature lies at 6-12 Hz (docs/models.md)."""
 CRITERIA = ("strict", "marginal")
-
-
-def speed_grid(start=DEFAULT_SPEEDS[0], stop=DEFAULT_SPEEDS[1], step=DEFAULT_SPEEDS[2]):
-    """``start, start + step, ..., stop`` (m/s), rounded to 1e-12 so that 4.3 prints as 4.3."""
-    n = int(round((stop - start) / step)) + 1
-    return np.round(start + step * np.arange(n), 12)
 
 
 class _Tracked:

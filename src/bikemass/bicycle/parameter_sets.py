@@ -1,0 +1,461 @@
+"""Parameter sets in YAML: bikemass's benchmark parameter files and BicycleParameters' parameter-set
+files, read into typed values.
+
+BicycleParameters (Moore et al.) writes a parameter set either flat (the values at the top
+level, as its ``tests/parameter_sets/benchmark-*.yml`` ship) or as its ``ParameterSet.to_yaml``
+does: ``parameterization:``, ``values:`` and the metadata ``parameters:`` (a label),
+``rider:`` (whether the rear frame holds a rider) and ``description:``.  Three
+parameterizations are read:
+
+* ``benchmark`` (``Meijaard2007``): the 26 names of Meijaard et al. (2007), as bikemass's own
+  parameter files; the names the BicycleParameters text format also allows beside them
+  (``IRzz``, ``yB``, a handlebar ``G`` and fork ``S``, ...) are checked and used as
+  :mod:`bikemass.bicycle.parameter_text` does, so a set means the same in YAML and in text;
+* ``principal`` (``Moore2019``; Moore and Hubbard 2019): the rear frame ``D`` and a rigid rider
+  ``P`` apart, each rigid body by its mass, mass centre and principal radii of gyration
+  ``k?aa``, ``k?yy``, ``k?bb`` with the angle ``alpha?`` of its ``a`` axis; converted to the
+  benchmark set (:func:`principal_to_benchmark`);
+* ``MooreRiderLean2012`` (Moore 2012): the Whipple model with a rider's upper body ``G``
+  leaning on the rear frame; kept as its named values (:class:`RiderLeanParameters`), for the
+  rider-lean model to consume.
+
+Each may hold the speed ``v`` (m/s), which is not a bicycle parameter: it is accepted and
+kept as :attr:`ParameterSetFile.speed`.  A bare angle (``lam``, ``alpha?``) is radians, as
+these formats define it; any value may carry a unit.  Every problem is one
+:class:`~bikemass.core.errors.InputError` naming the file and the key.
+"""
+
+from dataclasses import dataclass, fields
+from types import MappingProxyType
+
+import warnings
+import os
+import numpy as np
+
+from ..core.config import load_yaml
+from ..core.errors import InputError, short
+from ..mass.inertia import MassProperties, combine
+from .parameter_text import (AXISYMMETRIC, LATERAL, SPLIT_BODIES, ParameterFileWarning, ParameterText,
+                             printed_resolution, body_names, measured_parameters)
+from ..models.parameters import NAMES, SPEED_KEY, BenchmarkParameters, check_units, dimension, sign_rule
+from ..models.plausibility import check_parameter_file
+from ..core.errors import wrong_type
+from .parameter_text import load_parameter_text
+
+BENCHMARK, PRINCIPAL, RIDER_LEAN = "benchmark", "principal", "MooreRiderLean2012"
+"""The parameterizations read (bikemass's names for them)."""
+PARAMETERIZATIONS = {"benchmark": BENCHMARK, "Meijaard2007": BENCHMARK, "principal": PRINCIPAL,
+                     "Moore2019": PRINCIPAL, "MooreRiderLean2012": RIDER_LEAN}
+"""``parameterization:`` as BicycleParameters' files and its ``to_yaml`` write it -> bikemass's name."""
+SET_KEYS = ("parameterization", "values", "parameters", "rider", "description", "name", "source")
+"""Top-level keys of the ``parameterization:`` / ``values:`` form."""
+FILE_KEYS = ("name", "description", "source", "rider_included", "units", "warnings")
+"""Metadata keys of bikemass's own (flat) benchmark parameter files (``warnings``: what bikemass
+warned about when it wrote the file as JSON; read back, the set is checked again)."""
+
+BENCHMARK_EXTRAS = (*AXISYMMETRIC, *LATERAL, *(n for part in SPLIT_BODIES for n in body_names(part)))
+"""Names a benchmark set may hold beside the 26, as in BicycleParameters' text files."""
+
+PRINCIPAL_NAMES = ("w", "c", "lam", "g", "rR", "mR", "kRaa", "kRyy", "rF", "mF", "kFaa", "kFyy",
+                   "mD", "xD", "zD", "kDaa", "kDyy", "kDbb", "alphaD",
+                   "mP", "xP", "zP", "kPaa", "kPyy", "kPbb", "alphaP",
+                   "mH", "xH", "zH", "kHaa", "kHyy", "kHbb", "alphaH")
+"""The principal parameters the benchmark set follows from (Moore and Hubbard 2019)."""
+PRINCIPAL_IMPLIED = {"xR": lambda p: 0.0, "xF": lambda p: p["w"], "zR": lambda p: -p["rR"],
+                     "zF": lambda p: -p["rF"], "kRbb": lambda p: p["kRaa"], "kFbb": lambda p: p["kFaa"],
+                     **{f"y{b}": (lambda p: 0.0) for b in "DPHRF"}}
+"""Principal parameters a file may repeat although the others fix them: wheel centres at the
+axles, axisymmetric wheels, every body in the plane of symmetry.  Checked, not used."""
+PRINCIPAL_DRAWING = ("lP", "wP")
+"""The rider's length and width: for drawing the rider only."""
+PRINCIPAL_ONLY = tuple(n for n in PRINCIPAL_NAMES if n not in NAMES)
+"""Names by which a flat file is known to be principal (``yH`` and the like a benchmark file may
+hold too)."""
+
+CHECK_RELATIVE = 1e-4
+"""An implied principal parameter passes when within this fraction (of the larger magnitude)
+plus half a unit in its last printed digit (the files print 5 significant digits)."""
+
+
+@dataclass(frozen=True)
+class RiderLeanParameters:
+    """The parameters of the Whipple model with a leaning rider (Moore 2012; BicycleParameters'
+    ``MooreRiderLean2012``), SI, as named there.  Bodies: C rear frame with the rider's legs,
+    D rear wheel, E front frame, F front wheel, G the rider's upper body, leaning about an
+    axis of the rear frame.  ``i?11 i?22 i?33 i?31`` are the moments and the product of
+    inertia of body ``?`` (kg m^2), ``m?`` its mass (kg); ``d1``-``d4``, ``l1``-``l6`` the
+    lengths locating the joints and mass centres (m); ``rf``, ``rr`` the wheel radii (m);
+    ``g`` gravity (m/s^2); ``k9`` (N m/rad) and ``c9`` (N m s/rad) the lean joint's stiffness
+    and damping.
+
+    See Also
+    --------
+    bikemass.load_parameter_set : Reads them from a ``MooreRiderLean2012`` set.
+    bikemass.models.moore2012 : The conversions between these values and bikemass's leaning rider.
+
+    Examples
+    --------
+    The Jamis with the Relaxed rider split at the hips, written as Moore's values and read back:
+
+    >>> import json, os, tempfile
+    >>> import bikemass as bm
+    >>> from bikemass.models.moore2012 import to_moore_values
+    >>> from bikemass.rider.lean_split import rider_lean_parameters
+    >>> bike = bm.load_bicycle("jamis")
+    >>> lean = rider_lean_parameters(bike, bm.seated_rider(bike, "relaxed"))
+    >>> path = os.path.join(tempfile.mkdtemp(), "jamis-lean.yml")
+    >>> document = {"parameterization": "MooreRiderLean2012", "values": to_moore_values(lean, speed=5.0)}
+    >>> _ = open(path, "w").write(json.dumps(document))
+    >>> moore = bm.load_parameter_set(path).parameters
+    >>> print(type(moore).__name__, f"upper body {moore.mg:.2f} kg")
+    RiderLeanParameters upper body 56.35 kg
+    """
+
+    c9: float
+    d1: float
+    d2: float
+    d3: float
+    d4: float
+    g: float
+    ic11: float
+    ic22: float
+    ic31: float
+    ic33: float
+    id11: float
+    id22: float
+    ie11: float
+    ie22: float
+    ie31: float
+    ie33: float
+    if11: float
+    if22: float
+    ig11: float
+    ig22: float
+    ig31: float
+    ig33: float
+    k9: float
+    l1: float
+    l2: float
+    l3: float
+    l4: float
+    l5: float
+    l6: float
+    mc: float
+    md: float
+    me: float
+    mf: float
+    mg: float
+    rf: float
+    rr: float
+
+    def to_dict(self):
+        """Plain ``{name: float}``."""
+        return {f.name: float(getattr(self, f.name)) for f in fields(self)}
+
+
+RIDER_LEAN_NAMES = tuple(f.name for f in fields(RiderLeanParameters))
+"""The 36 rider-lean names."""
+
+
+def _rider_lean_rule(name):
+    """``(dimension, positive, nonnegative)`` of a rider-lean parameter."""
+    if name == "g":
+        return "acceleration", True, False
+    if name == "k9":
+        return "stiffness", False, True
+    if name == "c9":
+        return "damping", False, True
+    if name.startswith("i"):
+        return "inertia", False, not name.endswith("31")
+    if name.startswith("m"):
+        return "mass", False, True
+    return "length", False, name in ("rf", "rr")
+
+
+def _principal_rule(name):
+    """``(dimension, positive, nonnegative)`` of a principal parameter."""
+    if name in NAMES:
+        return (dimension(name), *sign_rule(name))
+    if name.startswith("alpha"):
+        return "angle", False, False
+    if name.startswith("m"):
+        return "mass", name in ("mD", "mP", "mH"), name in ("mR", "mF")
+    return "length", False, name.startswith("k") or name in PRINCIPAL_DRAWING
+
+
+@dataclass(frozen=True)
+class ParameterSetFile:
+    """One parameter set read from YAML.
+
+    Attributes
+    ----------
+    parameterization : str
+        ``"benchmark"``, ``"principal"`` or ``"MooreRiderLean2012"``.
+    parameters : BenchmarkParameters or RiderLeanParameters
+        The benchmark set (a principal set converted), or the rider-lean values.
+    speed : float or None
+        The file's ``v`` (m/s): the speed the set was made for; not a bicycle parameter.
+    rider_included : bool
+        Whether the rear frame holds a rider (``rider: true``; a principal set always does).
+    label, description : str
+        The file's ``parameters:`` (or ``name:``) and ``description:``.
+    notes : tuple of str
+        How every value beyond the set's own names was used.
+    values : mapping
+        Every value as read (SI), the principal ones included.
+    source : str
+        The file.
+
+    See Also
+    --------
+    bikemass.load_parameter_set : Reads one.
+
+    Examples
+    --------
+    >>> import json, os, tempfile
+    >>> import bikemass as bm
+    >>> path = os.path.join(tempfile.mkdtemp(), "benchmark.yml")
+    >>> _ = open(path, "w").write(json.dumps(bm.parameters("benchmark").to_dict()))    # the flat form
+    >>> found = bm.load_parameter_set(path)
+    >>> found.parameterization, found.speed, found.parameters.mB
+    ('benchmark', None, 85.0)
+    """
+
+    parameterization: str
+    parameters: object
+    speed: object
+    rider_included: bool
+    label: str
+    description: str
+    notes: tuple
+    values: MappingProxyType
+    source: str
+
+    def __repr__(self):
+        return f"ParameterSetFile({self.parameterization!r}, {self.label!r}, source={self.source!r})"
+
+
+def kind_of(node):
+    """The parameterization a YAML mapping holds (:data:`BENCHMARK`, :data:`PRINCIPAL`,
+    :data:`RIDER_LEAN`), or ``None`` when it is not a parameter set; a ``parameterization:``
+    key names it, else the names present do."""
+    mapping = node.value
+    if not isinstance(mapping, dict):
+        return None
+    if "parameterization" in mapping:
+        given = node["parameterization"]
+        if not isinstance(given.value, str) or given.value not in PARAMETERIZATIONS:
+            given.fail(f"one of {', '.join(PARAMETERIZATIONS)}, got {short(given.value)}")
+        return PARAMETERIZATIONS[given.value]
+    if any(k in mapping for k in PRINCIPAL_ONLY):
+        return PRINCIPAL
+    if any(k in mapping for k in RIDER_LEAN_NAMES if k not in ("g",)):
+        return RIDER_LEAN
+    if any(k in mapping for k in NAMES):
+        return BENCHMARK
+    return None
+
+
+def read_parameter_set(node):
+    """:class:`ParameterSetFile` of a YAML mapping ``node`` (flat, or ``parameterization:`` /
+    ``values:``); InputError naming the key on bad input."""
+    kind = kind_of(node)
+    if kind is None:
+        node.fail("a parameter set: the 26 benchmark names, principal parameters or "
+                  "parameterization: with values:")
+    if node.has("parameterization"):
+        node.check_keys(required=("parameterization", "values"), optional=SET_KEYS)
+        values = node["values"]
+        rider_given = node.get("rider")
+        rider = False if rider_given.missing else rider_given.boolean()
+        label = _text(node.get("parameters")) or _text(node.get("name"))
+    else:
+        values = node
+        extra = FILE_KEYS if kind == BENCHMARK else ("name", "description", "source")
+        values.check_keys(optional=_allowed(kind) + extra)
+        rider = kind == BENCHMARK and node.get("rider_included", False).boolean()
+        label = _text(node.get("name"))
+    values.mapping()
+    speed = values[SPEED_KEY].number("speed", nonnegative=True) if values.has(SPEED_KEY) else None
+    description = _text(node.get("description"))
+    if kind == BENCHMARK:
+        measured = _benchmark(values, exclude=FILE_KEYS if values is node else ())
+        parameters, notes, read = measured.parameters, measured.notes, measured.parameters.to_dict()
+    elif kind == PRINCIPAL:
+        read = _numbers(values, PRINCIPAL_NAMES, (*PRINCIPAL_IMPLIED, *PRINCIPAL_DRAWING), _principal_rule,
+                        exclude=("name", "description", "source") if values is node else ())
+        parameters, notes = _principal(read, values)
+        check_parameter_file(parameters, str(values.source), f"{values.key}." if values.key else "")
+        rider = True                                    # Moore and Hubbard's set always holds the rider
+    else:
+        read = _numbers(values, RIDER_LEAN_NAMES, (), _rider_lean_rule,
+                        exclude=("name", "description", "source") if values is node else ())
+        parameters, notes = RiderLeanParameters(**read), ()
+    return ParameterSetFile(kind, parameters, speed, bool(rider), label, description, tuple(notes),
+                            MappingProxyType(dict(read)), str(node.source))
+
+
+def load_parameter_set(path: "str | os.PathLike") -> ParameterSetFile:
+    """A parameter set from YAML (or JSON): a bikemass benchmark parameter file or a BicycleParameters
+    parameter-set file (module docstring).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The file: flat (the 26 benchmark names at the top level) or BicycleParameters'
+        ``ParameterSet.to_yaml`` form (``parameterization:``, ``values:``), parameterized as
+        ``benchmark``/``Meijaard2007``, ``principal``/``Moore2019`` or ``MooreRiderLean2012``.
+
+    Returns
+    -------
+    ParameterSetFile
+        ``.parameters`` is a :class:`~bikemass.BenchmarkParameters` for the benchmark and
+        principal parameterizations (a principal set converted), a
+        :class:`~bikemass.RiderLeanParameters` for MooreRiderLean2012; ``.speed`` the file's ``v``
+        (m/s) or None.
+
+    Raises
+    ------
+    InputError
+        Not a parameter set, or bad content (naming the file and the key).
+
+    Warns
+    -----
+    ParameterFileWarning
+        Values beside the set's own names that do not add up.
+
+    See Also
+    --------
+    load_bicycle : Takes such a file as a bicycle.
+    load_parameter_text : BicycleParameters' text files (``name = value+/-std``).
+
+    Examples
+    --------
+    >>> import json, os, tempfile
+    >>> import bikemass as bm
+    >>> values = {**bm.parameters("benchmark").to_dict(), "v": 5.0}       # v: a speed, not a parameter
+    >>> path = os.path.join(tempfile.mkdtemp(), "benchmark.yml")
+    >>> _ = open(path, "w").write(json.dumps({"parameterization": "Meijaard2007", "values": values}))
+    >>> found = bm.load_parameter_set(path)
+    >>> print(found.parameterization, found.speed, found.parameters == bm.parameters("benchmark"))
+    benchmark 5.0 True
+    """
+    if not isinstance(path, (str, os.PathLike)):
+        raise wrong_type("path", path, "a parameter-set YAML file path")
+    return read_parameter_set(load_yaml(path))
+
+
+def read_parameter_set_text(path):
+    """:class:`ParameterSetFile` of a BicycleParameters text file (``<Name>Benchmark.txt``): a
+    benchmark set, its notes, no speed."""
+    measured = load_parameter_text(path)
+    return ParameterSetFile(BENCHMARK, measured.parameters, None, False, "", "", measured.notes,
+                            MappingProxyType(measured.parameters.to_dict()), str(path))
+
+
+def _text(node):
+    return "" if node.missing else node.string()
+
+
+def _allowed(kind):
+    if kind == BENCHMARK:
+        return (*NAMES, *BENCHMARK_EXTRAS, SPEED_KEY)
+    if kind == PRINCIPAL:
+        return (*PRINCIPAL_NAMES, *PRINCIPAL_IMPLIED, *PRINCIPAL_DRAWING, SPEED_KEY)
+    return (*RIDER_LEAN_NAMES, SPEED_KEY)
+
+
+def _numbers(values, required, optional, rule, exclude=()):
+    """``{name: SI float}`` of the names in ``values`` (every ``required`` one, any ``optional``)."""
+    values.check_keys(required=required, optional=(*optional, SPEED_KEY, *exclude))
+    out = {}
+    for name in (*required, *optional):
+        if values.has(name):
+            dim, positive, nonnegative = rule(name)
+            out[name] = values[name].number(dim, positive=positive, nonnegative=nonnegative,
+                                            bare_unit="rad" if dim == "angle" else None)
+    return out
+
+
+def _benchmark(values, exclude=()):
+    """The :class:`~bikemass.bicycle.parameter_text.MeasuredParameters` of a benchmark mapping, read as a
+    BicycleParameters text file would be (extra names checked and used the same way)."""
+    values.check_keys(required=NAMES, optional=(*BENCHMARK_EXTRAS, SPEED_KEY, *exclude))
+    if values.has("units"):
+        check_units(values["units"])
+    nominal = {}
+    for name in (*NAMES, *BENCHMARK_EXTRAS):
+        if values.has(name):
+            base = name if name in NAMES else name.replace("G", "H").replace("S", "H")
+            dim = dimension(base) if not base.startswith("y") else "length"
+            positive, nonnegative = sign_rule(base) if base in NAMES else (False, False)
+            nominal[name] = values[name].number(dim, positive=positive, nonnegative=nonnegative,
+                                                bare_unit="rad" if name == "lam" else None)
+    text = ParameterText(str(values.source), MappingProxyType(nominal),
+                         MappingProxyType(dict.fromkeys(nominal, 0.0)),
+                         MappingProxyType({k: printed_resolution(repr(v)) for k, v in nominal.items()}),
+                         MappingProxyType({}))
+    return measured_parameters(text, values.key)
+
+
+def _principal(p, values):
+    """The benchmark set of the principal values ``p`` (SI) and the notes on the implied ones."""
+    notes = []
+    for name, implied in PRINCIPAL_IMPLIED.items():
+        if name in p:
+            expected = implied(p)
+            tolerance = CHECK_RELATIVE * max(abs(p[name]), abs(expected)) + printed_resolution(repr(p[name]))
+            if abs(p[name] - expected) > tolerance:
+                where = f"{values.key}.{name}" if values.key else name
+                message = (f"{values.source}: {where} = {p[name]:.6g} but the other principal parameters "
+                           f"imply {expected:.6g}; not used")
+                warnings.warn(message, ParameterFileWarning, stacklevel=4)
+                notes.append(f"{name} differs from {expected:.6g} implied: not used")
+            else:
+                notes.append(f"{name} checked: as the other parameters imply")
+    drawn = [n for n in PRINCIPAL_DRAWING if n in p]
+    if drawn:
+        notes.append(f"not used (the rider's drawing only): {', '.join(drawn)}")
+    return principal_to_benchmark(p), tuple(notes)
+
+
+def principal_inertia(mass, kaa, kyy, kbb, alpha):
+    """The central inertia tensor (kg m^2, benchmark frame) of a body in the plane of symmetry
+    with principal radii of gyration ``kaa``, ``kyy``, ``kbb`` (m) and its ``a`` axis at
+    ``alpha`` (rad) from x about y: ``Ixx = m (kaa^2 cos^2 a + kbb^2 sin^2 a)``,
+    ``Izz = m (kaa^2 sin^2 a + kbb^2 cos^2 a)``, ``Ixz = m (kbb^2 - kaa^2) sin a cos a``,
+    ``Iyy = m kyy^2``."""
+    ca, sa = np.cos(alpha), np.sin(alpha)
+    Iaa, Ibb = mass * kaa ** 2, mass * kbb ** 2
+    xz = (Ibb - Iaa) * sa * ca
+    return np.array([[Iaa * ca ** 2 + Ibb * sa ** 2, 0.0, xz], [0.0, mass * kyy ** 2, 0.0],
+                     [xz, 0.0, Iaa * sa ** 2 + Ibb * ca ** 2]])
+
+
+def principal_to_benchmark(p):
+    """:class:`~bikemass.models.parameters.BenchmarkParameters` of principal parameters ``p`` (SI
+    mapping): the rear frame B is the rear frame D and the rider P combined (parallel-axis
+    theorem), the front frame H and the wheels follow from their radii of gyration."""
+    body = {b: MassProperties(p[f"m{b}"], [p[f"x{b}"], 0.0, p[f"z{b}"]],
+                              principal_inertia(p[f"m{b}"], p[f"k{b}aa"], p[f"k{b}yy"], p[f"k{b}bb"],
+                                                p[f"alpha{b}"]))
+            for b in "DPH"}
+    B, H = combine([body["D"], body["P"]]), body["H"]
+    return BenchmarkParameters(
+        w=p["w"], c=p["c"], lam=p["lam"], g=p["g"],
+        rR=p["rR"], mR=p["mR"], IRxx=p["mR"] * p["kRaa"] ** 2, IRyy=p["mR"] * p["kRyy"] ** 2,
+        xB=float(B.com[0]), zB=float(B.com[2]), mB=float(B.mass), IBxx=float(B.inertia[0, 0]),
+        IByy=float(B.inertia[1, 1]), IBzz=float(B.inertia[2, 2]), IBxz=float(B.inertia[0, 2]),
+        xH=p["xH"], zH=p["zH"], mH=p["mH"], IHxx=float(H.inertia[0, 0]), IHyy=float(H.inertia[1, 1]),
+        IHzz=float(H.inertia[2, 2]), IHxz=float(H.inertia[0, 2]),
+        rF=p["rF"], mF=p["mF"], IFxx=p["mF"] * p["kFaa"] ** 2, IFyy=p["mF"] * p["kFyy"] ** 2)
+
+
+def whipple_parameters(parameter_set):
+    """The benchmark parameters of a :class:`ParameterSetFile` (checked when read); InputError for
+    a rider-lean set, which the Whipple model cannot take."""
+    if parameter_set.parameterization == RIDER_LEAN:
+        raise InputError(parameter_set.source, "parameterization",
+                         "a Whipple parameter set (benchmark or principal); a MooreRiderLean2012 set is for the "
+                         "rider-lean model (read it with bm.load_parameter_set)")
+    return parameter_set.parameters
