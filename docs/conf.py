@@ -10,6 +10,7 @@ import sys
 from pathlib import Path
 
 import bikemass
+from sphinx_gallery.sorting import FileNameSortKey
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE / "_ext"))
@@ -31,7 +32,8 @@ extensions = [
 
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 root_doc = "index"
-exclude_patterns = ["_build", "screenshots", "examples"]
+# sg_execution_times: sphinx-gallery's timing pages load jQuery and DataTables from CDNs (the site opens offline)
+exclude_patterns = ["_build", "screenshots", "examples", "sg_execution_times.rst", "auto_examples/sg_execution_times.rst"]
 
 # The chapters link to each other by GitHub's heading anchors (stability.md#commands): MyST makes the same ones.
 myst_heading_anchors = 6
@@ -50,12 +52,16 @@ numpydoc_xref_param_type = False
 
 # sphinx-gallery: every example runs (no plot_ prefix needed), figures captured from the Figures the
 # examples return (the scraper in docs/_ext/figure_scraper.py: bikemass never uses pyplot).
+# The sort key is given as its class, which every sphinx-gallery since 0.15 (the docs extra's floor)
+# takes; Sphinx then cannot cache this dict between builds (config.cache, its only consequence: a full
+# re-read, which run_stale_examples asks for anyway), so that one warning is not an error.
+suppress_warnings = ["config.cache"]
 sphinx_gallery_conf = {
     "examples_dirs": "examples",
     "gallery_dirs": "auto_examples",
     "filename_pattern": r".*\.py$",
-    "within_subsection_order": "FileNameSortKey",
-    "image_scrapers": ("figure_scraper.scrape",),
+    "within_subsection_order": FileNameSortKey,
+    "image_scrapers": ("figure_scraper",),
     "reset_modules": (),
     "download_all_examples": False,
     "show_memory": False,
@@ -70,8 +76,6 @@ sphinx_gallery_conf = {
     "image_srcset": [],
     # every build runs every example (an unchanged example can still break when bikemass changes)
     "run_stale_examples": True,
-    # no timing pages: sphinx-gallery's load jQuery and DataTables from CDNs
-    "write_computation_times": False,
 }
 
 html_math_renderer = "plain"    # docs/_ext/plain_math.py: no MathJax from a CDN

@@ -43,3 +43,8 @@ def scrape(block, block_vars, gallery_conf, **kwargs):
         return ""
     titles = ", ".join(fig.get_suptitle() or "" for fig in new).strip(", ")
     return figure_rst(paths, gallery_conf["src_dir"], titles)
+
+
+def _get_sg_image_scraper():
+    """The scraper, for ``image_scrapers = ("figure_scraper",)`` (sphinx-gallery's interface)."""
+    return scrape

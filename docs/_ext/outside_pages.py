@@ -6,6 +6,7 @@ right on GitHub and in a checkout; the site shows them as its pages ``readme`` a
 them, so they are checked like every other link (a missing heading still fails the build).
 """
 
+import os
 from pathlib import Path
 
 from sphinx import addnodes
@@ -22,12 +23,14 @@ class OutsidePages(SphinxPostTransform):
 
     def run(self, **kwargs):
         root = Path(self.env.srcdir).parent
-        targets = {str(root / name): page for name, page in PAGES.items()}
+        targets = {os.path.normpath(root / name): page for name, page in PAGES.items()}
         for node in self.document.findall(addnodes.pending_xref):
             if node.get("reftype") != "myst":
                 continue
             if node.get("refdomain") == "doc":
-                node["reftarget"] = targets.get(node["reftarget"], node["reftarget"])
+                # MyST names the file relative to the source folder (older releases) or absolutely
+                target = os.path.normpath(os.path.join(self.env.srcdir, node["reftarget"]))
+                node["reftarget"] = targets.get(target, node["reftarget"])
             elif node.get("reftarget") == "reference/README.md":
                 # README.md's own link to reference/README.md, read in the page that includes README.md
                 node["refdomain"], node["reftarget"], node["reftargetid"] = "doc", PAGES["reference/README"], None
