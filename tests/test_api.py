@@ -13,6 +13,7 @@ import pytest
 import yaml
 
 import bikemass as bm
+from thesis_frames import tables
 from bikemass.cli.main import main
 from bikemass.core.paths import bodies_dir
 
@@ -133,8 +134,12 @@ def test_choices_are_their_strings():
 def test_frame_modes_and_stiffness_from_python():
     modes = bm.frame_modes("jamis", "fix-rear", count=3)
     assert modes.frequencies_hz.shape == (3,) and np.all(np.diff(modes.frequencies_hz) > 0)
-    np.testing.assert_allclose(bm.frame_stiffness("jamis", "steel"), bm.stiffness("jamis", "steel", "computed"),
-                               rtol=1e-12)
+    # the thesis's procedure on the shipped Jamis reproduces Williams (2015) Table 3-12 within 1 %
+    # (tests/test_fe_jamis.py states why 1 %); the condensed default stiffens roll by 2.3 %
+    printed = np.array(tables()["table_3_12"]["jamis"]["steel"])
+    np.testing.assert_allclose(bm.frame_stiffness("jamis", "steel", procedure="thesis"), printed, rtol=0.01)
+    condensed = bm.frame_stiffness("jamis", "steel")
+    assert condensed[0, 0] > printed[0, 0] and np.allclose(condensed, condensed.T, rtol=1e-12)
     with pytest.raises(bm.InputError, match="structure"):
         bm.frame_structure("benchmark")
 

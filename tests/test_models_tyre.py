@@ -154,3 +154,16 @@ def test_a_tyre_refuses_nonsense():
         Tyre(cornering_coefficient=11.0, camber_coefficient=0.5, relaxation_length=0.0)
     with pytest.raises(InputError, match="tyre: cornering_coefficient: a positive number"):
         Tyre(cornering_coefficient=float("nan"), camber_coefficient=0.5, relaxation_length=0.2)
+
+
+def test_the_engine_names_the_tyre_induced_shimmy_wobble():
+    """The rigid benchmark on the default tyres: a steer-dominated oscillation of 6-9 Hz (the band of
+    Plöchl et al. 2012) loses its damping at high speed; the engine calls that crossing a wobble."""
+    from bikemass.analysis.engine.speeds import speed_grid
+    from bikemass.analysis.engine.stability import analyse
+    result = analyse(build("tyre", BENCHMARK), speed_grid(0, 30, 0.05))
+    wobble = [c for c in result.crossings if c.mode == "wobble"]
+    assert len(wobble) == 1 and wobble[0].kind == "oscillatory" and wobble[0].direction == "destabilising"
+    assert result.wobble_speeds == (wobble[0].speed,) and 20 < wobble[0].speed < 30
+    assert 6 <= wobble[0].frequency / (2 * np.pi) <= 9
+    assert [c.mode for c in result.crossings if c.mode != "wobble"] == ["weave", "capsize"]

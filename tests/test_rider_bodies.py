@@ -181,7 +181,7 @@ def _pose_file(name):
 def test_chain_pose_without_bike_needs_one(capsys, tmp_path):
     path = _chain_pose(tmp_path, "female", 1.65, 58.0)
     code, out, err = run(capsys, "rider", path)
-    assert code == 2 and "bike: a bike: to solve the chain pose on" in err
+    assert code == 2 and "bike: a bicycle to seat this chain pose on" in err and "--bike BIKE" in err
     code, out, err = run(capsys, "params", "cargo", "--rider", path)
     assert code == 0 and err == ""
 

@@ -99,7 +99,8 @@ def test_at_least_880_of_894_entries_match_and_every_miss_is_explained(study):
             assert explanation == ""
             assert (ours == thesis == "") or abs(float(ours) - float(thesis)) <= 0.05 + 1e-9
         else:
-            assert explanation.startswith(("explained", "not explained")), (table, row, column)
+            # explained by the rounding of the printed parameters, or a named erratum: never "not explained"
+            assert explanation.startswith("explained"), (table, row, column, explanation)
             assert f"{row}, {column}: ours" in (study[0] / "report.md").read_text()
 
 

@@ -110,6 +110,7 @@ def test_wheel_holds_every_module_and_every_shipped_file(wheel):
     data = {f"bikemass/shipped/{p.relative_to(ROOT).as_posix()}"
             for folder in DATA for p in (ROOT / folder).rglob("*.yaml")}
     assert len(data) > 20
+    assert "bikemass/py.typed" in names                  # PEP 561 marker: type checkers read the annotations
     assert modules - names == set()
     assert data - names == set()
 

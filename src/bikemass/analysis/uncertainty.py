@@ -30,6 +30,7 @@ from ..core.display import Display
 from ..core.errors import InputError
 from ..core.keywords import renamed_keywords
 from ..core.limits import MAX_SPEEDS
+from ..core.units import DIMENSIONS, UnitError, dimension_of, split_quantity
 from ..models.parameters import NAMES
 from ..plots.stability import COLOURS, OTHER_COLOUR
 from ..scenario.inputs import Model, get_path
@@ -44,7 +45,8 @@ DISTRIBUTIONS = ("normal", "uniform")
 
 @dataclass(frozen=True)
 class Spread:
-    """One input's distribution about its nominal value: ``kind`` normal|uniform, ``std`` (its unit)."""
+    """One input's distribution about its nominal value: ``kind`` normal|uniform, ``std`` (SI: m,
+    kg, rad, ... as the input's value)."""
 
     kind: str
     std: float
@@ -56,9 +58,24 @@ class Spread:
         return rng.normal(0.0, self.std, n)
 
 
+def _spread_value(node):
+    """A std or half width in SI: a bare number is SI (m, kg, rad, ... as the input's value is,
+    :func:`~bikemass.scenario.inputs.get_path`), ``"0.1 mm"`` or ``"3 deg"`` is converted."""
+    if isinstance(node.value, str):
+        try:
+            number, unit = split_quantity(node.value)
+        except UnitError as exc:
+            node.fail(f"a spread: a number in SI or '<number> <unit>' ({exc})")
+        if number < 0:
+            node.fail(f"a spread >= 0, got {node.value!r}")
+        return number * DIMENSIONS[dimension_of(unit)][1][unit] if unit else number
+    return node.number("dimensionless", nonnegative=True)
+
+
 def read_spreads(node):
     """``{key: Spread}`` from a config Node mapping ``key: std`` or ``key: {std: s}`` or
-    ``key: {distribution: normal|uniform, std: s | half_width: h}``."""
+    ``key: {distribution: normal|uniform, std: s | half_width: h}``; each a number in SI or
+    ``"<number> <unit>"`` (``"0.1 mm"``, ``"3 deg"``)."""
     out = {}
     for key, item in node.items():
         if isinstance(item.value, dict):
@@ -66,12 +83,12 @@ def read_spreads(node):
             kind = item["distribution"].string(DISTRIBUTIONS) if item.has("distribution") else "normal"
             if item.has("half_width") == item.has("std"):
                 item.fail("exactly one of std or half_width")
-            std = (item["std"].number("dimensionless", nonnegative=True) if item.has("std")
-                   else item["half_width"].number("dimensionless", nonnegative=True) / np.sqrt(3.0))
+            std = (_spread_value(item["std"]) if item.has("std")
+                   else _spread_value(item["half_width"]) / np.sqrt(3.0))
             if kind == "normal" and item.has("half_width"):
                 item.fail("std for a normal distribution (half_width is for uniform)")
         else:
-            kind, std = "normal", item.number("dimensionless", nonnegative=True)
+            kind, std = "normal", _spread_value(item)
         out[str(key)] = Spread(kind, float(std))
     return out
 

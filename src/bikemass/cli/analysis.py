@@ -11,8 +11,8 @@ SPEED_UNITS = {"weave_speed": "m/s", "capsize_speed": "m/s",
                "d_weave_speed": "m/s per unit of each parameter (SI, angles rad)",
                "d_capsize_speed": "m/s per unit of each parameter (SI, angles rad)",
                "elasticity_weave_speed": "1", "elasticity_capsize_speed": "1",
-               "d_stiffness": "m/s per N m/rad", "inputs": "value: as the YAML file writes it; "
-               "weave_speed, capsize_speed: m/s per that unit"}
+               "d_stiffness": "m/s per N m/rad", "inputs": "value: SI (m, kg, rad, ...); "
+               "weave_speed, capsize_speed: m/s per SI unit of the input"}
 """The units block of ``sensitivity``'s JSON/YAML, one entry per top-level key (the parameter
 names inside the derivative mappings are not quantities of their own units there)."""
 
@@ -46,7 +46,7 @@ def register(sub):
                   "montecarlo, histograms of the critical speeds)")
     unc.add_argument("--std", metavar="FILE",
                      help="YAML with an 'uncertainty:' mapping, input -> std, or {std: s}, or "
-                          "{distribution: uniform, half_width: h} (SI; pose angles in degrees)")
+                          "{distribution: uniform, half_width: h} (each in SI: m, kg, rad; or with a unit: '0.1 mm', '3 deg')")
     unc.add_argument("--method", choices=("linear", "montecarlo"), default="linear",
                      help="linear (default) or montecarlo")
     unc.add_argument("--samples", type=int, default=1000, metavar="N", help="Monte Carlo samples (default 1000)")

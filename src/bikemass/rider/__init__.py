@@ -14,7 +14,7 @@ from ..core.errors import InputError
 from ..core.gate import plain_input
 from ..core.paths import available, bodies_dir, resolve
 from ..mass.parts import METHODS, OVERLAPS, body_properties
-from .chain_file import read_chain_pose
+from .chain_file import check_chain_pose, read_chain_pose
 from .pose import read_pose
 
 THESIS_POSES = ("no-hands", "relaxed", "on-hoods", "aerobars", "aero-tuck")
@@ -41,6 +41,11 @@ class Rider:
     ``spec`` = (pose node, as_printed) it was read from, which lets a bicycle re-seat it
     (:mod:`bikemass.rider.seating`), or None.
 
+    A chain-form pose without ``bike:`` (a person with a posture rule: hands on a grip, a torso
+    lean, the saddle) has no parts until a bicycle seats it: :attr:`needs_bicycle` is True and
+    :meth:`properties` refuses; :func:`bikemass.seated_rider` (and every analysis given the
+    rider with a bicycle) solves it on that bicycle's contacts.
+
     See Also
     --------
     bikemass.load_rider : Makes one from a pose name, a file or a mapping.
@@ -64,21 +69,34 @@ class Rider:
     def __post_init__(self):
         object.__setattr__(self, "parts", tuple(self.parts))
 
+    @property
+    def needs_bicycle(self) -> bool:
+        """True for a chain-form pose without ``bike:``: its parts exist once a bicycle seats it."""
+        return not self.parts and self.spec is not None and "chain" in self.spec[0].value
+
     def __repr__(self):
+        if self.needs_bicycle:
+            return f"Rider(pose={self.pose!r}, name={self.name!r}, chain pose: seated when given a bicycle)"
         mass = sum(p.mass for p in self.parts)
         return f"Rider(pose={self.pose!r}, name={self.name!r}, parts={len(self.parts)}, mass={mass:.6g} kg)"
+
+    def _seated_parts(self):
+        if self.needs_bicycle:
+            raise InputError(str(self.spec[0].source), "bike", "a bicycle to seat this chain pose on (bikemass "
+                             "rider POSE --bike BIKE; bm.seated_rider(bicycle, rider)), or a bike: line in the pose")
+        return self.parts
 
     def properties(self, method="mesh", overlap="sum"):
         """Total :class:`~bikemass.mass.inertia.MassProperties` (trimesh ``mesh`` or ``exact``;
         overlapping parts ``sum``-med as in the thesis or counted once with ``union``)."""
         _check(method, METHODS, "method")
         _check(overlap, OVERLAPS, "overlap")
-        return body_properties(self.parts, method, overlap)
+        return body_properties(self._seated_parts(), method, overlap)
 
     def breakdown(self, method="mesh"):
         """[(part name, frame body, MassProperties)] of every part (in the benchmark frame)."""
         _check(method, METHODS, "method")
-        return [(p.name, p.body, p.mass_properties(method)) for p in self.parts]
+        return [(p.name, p.body, p.mass_properties(method)) for p in self._seated_parts()]
 
     def to_dict(self, method="mesh", overlap="sum"):
         """``{"pose": str, "mass": kg, "com": [x, y, z], "inertia": [[3x3]]}``."""
@@ -112,6 +130,8 @@ def rider_from_mapping(mapping, source, as_printed=False):
 
 def _read_document(node, pose, as_printed):
     if isinstance(node.value, dict) and "chain" in node.value:
+        if not node.has("bike"):
+            return Rider(pose, check_chain_pose(node), (), (node, as_printed))
         name, parts, _, _ = read_chain_pose(node)
         return Rider(pose, name, parts, (node, as_printed))
     name, parts = read_pose(node, as_printed)

@@ -23,7 +23,6 @@ from ..core.errors import BikemassWarning, InputError, shown
 from .body import chain_of, load_body
 from .chain import CHAIN_SEGMENTS, JOINTS
 from .pose import angle_deg, read_pose
-from ..bicycle import Bicycle
 from ..core.paths import within_reach
 
 CHAIN_KEYS = ("hands", "crank", "front", *JOINTS)
@@ -99,10 +98,22 @@ def solve_chain(chain, body, bicycle):
     return solution, front
 
 
+CHAIN_POSE_KEYS = ("body", "chain")
+"""Keys a chain-form pose must have; ``name``, ``source`` and ``bike`` it may have."""
+
+
+def check_chain_pose(node):
+    """The display name of chain-form pose ``node`` once its keys and its body are checked (the
+    chain itself is checked where it is solved, on a bicycle's contacts)."""
+    node.check_keys(required=CHAIN_POSE_KEYS, optional=("name", "source", "bike"))
+    chain_of(load_body(node["body"]), node["body"])
+    return node.get("name", str(node.source)).string()
+
+
 def read_chain_pose(node, bicycle=None):
     """(name, parts, Solution, bicycle) of a chain-form pose file, solved on ``bicycle``
     (default: the file's ``bike:``; one of the two is needed)."""
-    node.check_keys(required=("body", "chain"), optional=("name", "source", "bike"))
+    node.check_keys(required=CHAIN_POSE_KEYS, optional=("name", "source", "bike"))
     body = load_body(node["body"])
     chain_body = chain_of(body, node["body"])
     if bicycle is None:

@@ -12,7 +12,7 @@ import pickle
 import numpy as np
 
 from ..core.errors import InputError
-from ..scenario.inputs import Model
+from ..scenario.inputs import Model, file_unit
 from ..analysis.engine.critical import critical_speeds
 from ..models.whipple import whipple_model
 from ..core.threads import one_blas_thread
@@ -47,6 +47,15 @@ def _model(setup):
     return _MODELS[setup]
 
 
+def _bare_unit(model, key):
+    """The unit of a bare value of ``key`` (:func:`~bikemass.scenario.inputs.file_unit`); None for a
+    key the model does not have (its rows carry the error)."""
+    try:
+        return file_unit(model, key)
+    except InputError:
+        return None
+
+
 def evaluate(model, changes, max_speed):
     """Result row (dict of :data:`OUTPUTS`) of one configuration; a configuration the model
     refuses gets its one-line reason in ``error`` and empty outputs."""
@@ -64,9 +73,12 @@ def evaluate_chunk(setup, chunk, max_speed):
     """Rows for the configurations of a :class:`Chunk`; ``setup`` = (bike, rider, stiffness,
     combine, spec source)."""
     model = _model(setup)
-    units = chunk.units
+    keys = {k for c in chunk.configurations[:1] for k in c}
+    # a bare value takes the unit the file writes there (docs/analysis.md), a value with a unit keeps it
+    units = {k: u for k in keys if (u := chunk.units.get(k) or _bare_unit(model, k))}
     with one_blas_thread():
-        return [evaluate(model, {k: f"{v!r} {units[k]}" if k in units else v for k, v in c.items()}, max_speed)
+        return [evaluate(model, {k: f"{float(v)!r} {units[k]}" if k in units and not isinstance(v, str) else v
+                                 for k, v in c.items()}, max_speed)
                 for c in chunk.configurations]
 
 
