@@ -40,11 +40,21 @@ for name, r in results.items():
 # %%
 # Their critical speeds side by side
 # ----------------------------------
+# Two of them have no stable speed although their weave stabilises: a mode the Whipple bicycle
+# does not have is unstable at every speed. The leaning rider's upper body weighs more over its
+# hip axis (``m g h``) than the hip joint's 128 N m/rad holds, so a lean root grows
+# (docs/models.md); the flexible frame and fork, modelled without structural damping, add the
+# wobble family, which this model finds unstable at every speed (docs/models-flexible.md, "The
+# wobble of the Jamis").
+for name, r in results.items():
+    never = [label for label, ranges in r.mode_ranges.items() if not ranges["strict"]["exact"]]
+    print(f"{name:24s} unstable at every speed: {', '.join(never) or 'none'}")
 fig = bm.plot_critical_speeds({name: {"Jamis + Relaxed": r} for name, r in results.items()},
                               title="One bicycle, four models")
 
 # %%
-# The flexible frame and fork add the wobble family: a steer-dominated oscillation at 6-9 Hz.
+# The flexible frame and fork add the wobble family: a steer-dominated oscillation at 6-9 Hz
+# (7.35 Hz at 8 m/s) beside the fork's own 64 Hz bending.
 flexible = results["flexible frame and fork"]
 flexible
 
