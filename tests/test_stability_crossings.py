@@ -32,6 +32,9 @@ def count_crossings(model, lo=0.0, hi=30.0, points=30001):
         roots = np.linalg.eigvals(np.tensordot(v[:, None] ** np.arange(len(A)), A, axes=1))
         return np.sum(roots.real > 0, axis=1)
     v = np.linspace(lo, hi, points)
+    # At standstill the roots come in +-pairs: an imaginary pair's real part is 0 to rounding, and
+    # its sign there depends on the LAPACK build.  The range (lo, hi] is open at lo: count just above.
+    v[0] = lo + 1e-9
     counts = unstable(v)
     found = []
     for k in np.flatnonzero(counts[1:] != counts[:-1]):

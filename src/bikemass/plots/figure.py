@@ -7,6 +7,7 @@ No pyplot and no ``matplotlib.use``: the caller's backend and open figures are l
 
 import math
 import os
+import threading
 from io import BytesIO
 from pathlib import Path
 
@@ -25,6 +26,10 @@ MIN_DPI, MAX_DPI = 10, 2000
 VECTOR_TEXT = {"svg.fonttype": "none", "pdf.fonttype": 42, "ps.fonttype": 42}
 """rc settings for saving: SVG text stays <text>, PDF/PS embed TrueType (editable, searchable)."""
 
+RENDERING = threading.Lock()
+"""Held while a figure is drawn: ``rc_context`` sets matplotlib's process-wide rcParams for the
+draw and restores them, and matplotlib's mathtext parser is not thread-safe (matplotlib 3.7 fails
+on ``$v$`` drawn in two threads at once), so the web server's callbacks draw one at a time."""
 UNWRITABLE = {"pgf"}
 """Formats matplotlib lists but that need outside tools (LaTeX) to write."""
 
@@ -101,7 +106,7 @@ def figure_bytes(fig, fmt="png", dpi=DPI):
         raise InputError("dpi", dpi, f"a figure of at most {MAX_PIXELS} pixels ({width:g} x {height:g} in at "
                          f"{dpi:g} dpi is {width * height * dpi * dpi:.3g})")
     buffer = BytesIO()
-    with rc_context(VECTOR_TEXT):
+    with RENDERING, rc_context(VECTOR_TEXT):
         fig.savefig(buffer, format=fmt, dpi=dpi)
     return buffer.getvalue()
 

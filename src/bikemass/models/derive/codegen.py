@@ -93,5 +93,5 @@ def module_source(derived: Derived, generator="bikemass.models.derive"):
     lines.append(f"    args = ({', '.join(names)},)")
     lines.append("    if all(type(a) is float for a in args):")
     lines.append("        return _floats((), *args)")
-    lines.append("    return _arrays(np.broadcast(*args).shape, *args)")
+    lines.append("    return _arrays(np.broadcast_shapes(*(np.shape(a) for a in args)), *args)")
     return "\n".join(lines) + "\n"

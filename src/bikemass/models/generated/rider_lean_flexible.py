@@ -410,4 +410,4 @@ def coefficients(w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz,
     args = (w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, mU, xU, zU, IUxx, IUyy, IUzz, IUxz, zhip, klean, clean, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf,)
     if all(type(a) is float for a in args):
         return _floats((), *args)
-    return _arrays(np.broadcast(*args).shape, *args)
+    return _arrays(np.broadcast_shapes(*(np.shape(a) for a in args)), *args)
