@@ -172,7 +172,7 @@ import bikemass as bm
 p = bm.parameters("benchmark")
 fig = bm.plot_eigenvalues(bm.stability(p, speeds=bm.speeds(0, 10, 0.5)), title="benchmark")
 from matplotlib.figure import Figure
-print(type(fig) is Figure, matplotlib.get_backend(), plt.get_fignums(), len(fig.axes) >= 1)
+print(isinstance(fig, Figure), matplotlib.get_backend(), plt.get_fignums(), len(fig.axes) >= 1)
 """
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.split() == ["True", "svg", "[]", "True"]

@@ -37,7 +37,9 @@ figures = [plot_eigenvalues(result, "benchmark"), plot_eigenvalues(result.modes)
            plot_critical_speeds({"no rider": {"rigid": result}}),
            plot_side_view(catalog.load_bicycle("benchmark")),
            plot_frame_modes(frame_modes(frame_structure("jamis"), "fix-rear", 2))]
-assert all(type(f) is Figure for f in figures), [type(f) for f in figures]
+assert all(isinstance(f, Figure) for f in figures), [type(f) for f in figures]
+# Jupyter shows them without %matplotlib inline: IPython's rich display asks for _repr_png_
+assert all(f._repr_png_().startswith(b"\\x89PNG") for f in figures)
 assert matplotlib.get_backend() == "svg", matplotlib.get_backend()
 assert "matplotlib.pyplot" not in sys.modules, "pyplot imported"
 print("ok")

@@ -12,7 +12,9 @@ The Python API (docs/api.md)::
     fig = bm.plot_eigenvalues(result)               # a matplotlib Figure
 
 All quantities are SI (m, kg, s, rad, N) in the Meijaard et al. (2007) benchmark frame;
-see :mod:`bikemass.core.convention`.  The names below are imported on first use, so
+see :mod:`bikemass.core.convention`.  The API reference of every name is the documentation
+site's (README.md, "Documentation"); each docstring's Examples run in the test suite
+(tests/test_docstrings.py).  The names below are imported on first use, so
 ``import bikemass`` itself loads neither numpy nor scipy.
 """
 
@@ -21,6 +23,7 @@ import sys
 import types
 
 __version__ = "0.1.0"
+"""The version of bikemass (PEP 440); ``pyproject.toml`` reads it from here, ``bikemass --version`` prints it."""
 
 _API = {
     "load_bicycle": "scenario.loading", "load_rider": "scenario.loading", "parameters": "scenario.scenario",

@@ -25,11 +25,16 @@ eigenvalues grows without bound, and a critical speed that some samples do not h
 (no crossing) has no linear counterpart.
 """
 
+import os
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
+from numpy.typing import ArrayLike
 
+from ..core.display import Display
 from ..core.errors import InputError
+from ..core.keywords import renamed_keywords
 from ..core.limits import MAX_SPEEDS
 from ..core.units import DIMENSIONS, UnitError, dimension_of, split_quantity
 from ..models.parameters import NAMES
@@ -142,8 +147,8 @@ def matrices_of(model, g):
     return {"M": mech.M, "C1": mech.C[1], "K0": mech.K[0] / g, "K2": mech.K[2]}
 
 
-@dataclass(frozen=True)
-class Propagation:
+@dataclass(frozen=True, repr=False)
+class Propagation(Display):
     """Nominal values and standard deviations; ``linear`` and (if sampled) ``montecarlo`` results."""
 
     matrices: dict          # {M|C1|K0|K2: {"nominal": 2x2, "std": 2x2}} (method's std)
@@ -152,6 +157,17 @@ class Propagation:
     inputs: dict            # {key: {"distribution", "std"}}
     method: str
     samples: object = None  # Monte Carlo draws: {"weave_speed": array, "capsize_speed": array} or None
+
+    def display_rows(self):
+        """The method, the inputs' spreads and each critical speed's nominal value and std (Jupyter's
+        table, ``repr``)."""
+        rows = [("method", self.method, ""),
+                ("inputs", ", ".join(f"{k} +- {v['std']:.3g}" for k, v in self.inputs.items()), "SI")]
+        for key, value in self.speeds.items():
+            nominal, std = value.get("nominal"), value.get("std")
+            shown = "none" if nominal is None else f"{nominal:.6g}" + ("" if std is None else f" +- {std:.3g}")
+            rows.append((key, shown, "m/s"))
+        return rows
 
     def to_dict(self):
         eig = {"speeds": list(map(float, self.eigen["speeds"])), "modes": {
@@ -283,17 +299,83 @@ def _check_options(spreads, method, samples, seed):
             raise InputError("seed", seed, "a random seed: a whole number >= 0")
 
 
-def uncertainty(bike, spreads, rider=None, stiffness="infinite", combine="exact", method="linear",
-                samples=1000, seed=0, speeds=None, max_speeds=MAX_SPEEDS, model="whipple", tyres=None):
-    """:class:`Propagation` for a bicycle (anything ``bm.load_bicycle`` takes, or a
-    :class:`~bikemass.scenario.scenario.Scenario`, whose own rider, stiffness, model and tyres are
-    used), rider, stiffness choice and model; ``spreads`` maps input keys to a standard deviation
-    (normal) or a :class:`Spread`; ``speeds`` (m/s) of the eigenvalue bands, at most ``max_speeds``
-    (InputError before any work otherwise)."""
+@renamed_keywords(bike="bicycle")
+def uncertainty(bicycle: "str | os.PathLike | Scenario", spreads: "Mapping[str, float | Spread]",
+                rider: "str | None" = None, stiffness: str = "infinite", combine: str = "exact",
+                method: str = "linear", samples: int = 1000, seed: int = 0, speeds: "ArrayLike | None" = None,
+                max_speeds: int = MAX_SPEEDS, model: str = "whipple", tyres: "str | Mapping | None" = None) -> Propagation:
+    """The spread of the canonical matrices, eigenvalues and critical speeds from spreads of the inputs.
+
+    ``linear``: first-order propagation, ``std(y) = sqrt(sum_i (dy/dx_i std_i)^2)``, with exact
+    derivatives (complex step; eigenvalues and critical speeds by their implicit functions);
+    ``montecarlo``: ``samples`` seeded draws of all inputs, every output recomputed. They agree
+    while the outputs are close to linear over a few standard deviations (docs/analysis.md).
+
+    Parameters
+    ----------
+    bicycle : str, os.PathLike or Scenario
+        Anything ``bm.load_bicycle`` takes (a BicycleParameters file's ``+/-`` values are available
+        as spreads), or a :class:`~bikemass.scenario.scenario.Scenario`, whose own rider, stiffness,
+        model and tyres are used. (``bike=`` is the deprecated old name.)
+    spreads : Mapping
+        ``{input key: std}`` (a normal distribution) or ``{input key: Spread}``
+        (:class:`~bikemass.analysis.uncertainty.Spread`: ``normal`` or ``uniform``), the std in
+        SI (m, kg, rad, ...) when bare, or a ``"<number> <unit>"`` string (``"0.1 mm"``). Keys: the 26 benchmark names or
+        geometry-level paths (:mod:`bikemass.scenario.inputs`).
+    rider : str, optional
+        A pose name or file; ``None``: no rider.
+    stiffness : str
+        ``"infinite"`` (rigid) or a material name, as for :func:`bikemass.stiffness`.
+    combine : {"exact", "thesis"}
+        How the rider joins the rear frame.
+    method : {"linear", "montecarlo"}
+        First-order propagation, or sampling (``samples`` draws from ``seed``).
+    samples : int
+        Monte Carlo draws (``montecarlo`` only).
+    seed : int
+        Seed of the Monte Carlo draws (a whole number >= 0): the same seed, the same result.
+    speeds : array_like of shape (n,), optional
+        Speeds (m/s) of the eigenvalue bands; default 0..10 m/s in 0.1 m/s.
+    max_speeds : int
+        Most speeds taken (default 100000); more is an InputError before any work.
+    model : str
+        The member of the model family (``"whipple"``, ``"rider-lean"``, ``"tyre"``, ``"flexible"``
+        or members joined by ``+``).
+    tyres : str or Mapping, optional
+        The ``tyre`` member's tyre file or mapping (default: the published defaults).
+
+    Returns
+    -------
+    Propagation
+        ``speeds`` ``{weave_speed|capsize_speed: {"nominal", "std", ...}}`` (m/s), ``matrices``
+        ``{M|C1|K0|K2: {"nominal", "std"}}``, ``eigen`` (the bands over ``speeds``), ``inputs``,
+        ``method``, ``samples`` (the draws, Monte Carlo only).
+
+    Raises
+    ------
+    InputError
+        An unknown key, a negative std, an unknown method, a bad ``samples`` or ``seed``, more than
+        ``max_speeds`` speeds, or a bicycle or rider that cannot be loaded.
+
+    See Also
+    --------
+    sensitivity : The derivatives the linear method uses.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> u = bm.uncertainty("benchmark", {"c": 0.005, "mB": 1.0})
+    >>> w = u.speeds["weave_speed"]
+    >>> print(f"weave {w['nominal']:.4f} +- {w['std']:.4f} m/s")
+    weave 4.2924 +- 0.0594 m/s
+    >>> mc = bm.uncertainty("benchmark", {"c": 0.005, "mB": 1.0}, method="montecarlo", samples=200, seed=1)
+    >>> print(f"Monte Carlo: +- {mc.speeds['weave_speed']['std']:.2f} m/s from {len(mc.samples['weave_speed'])} draws")
+    Monte Carlo: +- 0.06 m/s from 200 draws
+    """
     if not isinstance(spreads, dict):
         raise InputError("spreads", "(argument)", f"a mapping of input key -> std or Spread, got {type(spreads).__name__}")
     spreads = {k: v if isinstance(v, Spread) else Spread("normal", v) for k, v in spreads.items()}
-    scenario = bike if isinstance(bike, Scenario) else Scenario(bike, rider, stiffness, combine, model=model,
+    scenario = bicycle if isinstance(bicycle, Scenario) else Scenario(bicycle, rider, stiffness, combine, model=model,
                                                                  tyres=tyres)
     return propagate(scenario, spreads, method, samples, seed, speeds, max_speeds=max_speeds)
 
@@ -348,7 +430,7 @@ def uncertainty_figure(result, title="", size=None):
     """Real parts against speed with +-2 std bands (linear) and 95 % Monte Carlo bands, and the
     Monte Carlo histograms of the critical speeds (a matplotlib Figure)."""
     # lazy: matplotlib only for a figure
-    from matplotlib.figure import Figure
+    from ..plots.figure import Figure
 
     fig = Figure(figsize=size or (11, 5), layout="constrained")
     axes = fig.subplots(1, 2, width_ratios=(2, 1))

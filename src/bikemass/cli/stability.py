@@ -18,7 +18,7 @@ def register(sub):
                     "1, weave 2, capsize, caster (and the richer models' lean, tyre, wobble, ... modes).")
     _common(eig)
     dialect.add_output(eig, what="the eigenvalues")
-    dialect.add_plot(eig, "the eigenvalues against speed (Fig. 4-4 layout)", SPEED_LIMIT, "real parts, 1/s")
+    dialect.add_plot(eig, "the eigenvalues against speed (Meijaard et al. 2007, Fig. 3 convention)", SPEED_LIMIT, "real parts, 1/s")
     add_size_option(eig, "--bike-size")
     eig.set_defaults(run=every_size(run_eig))
 

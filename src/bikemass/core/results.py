@@ -17,10 +17,8 @@ from collections.abc import Mapping
 
 import numpy as np
 
+from .display import UNIT, Display
 from .frozen import freeze
-
-UNIT = "unit"
-"""The dataclass field metadata key holding a field's unit."""
 
 
 def quantity(unit, doc="", default=MISSING):
@@ -48,8 +46,9 @@ def _plain(value):
 
 
 @dataclass(frozen=True, eq=False)
-class Result:
-    """Base of every result type: frozen fields, read-only arrays, units per field."""
+class Result(Display):
+    """Base of every result type: frozen fields, read-only arrays, units per field; in Jupyter a
+    compact HTML table of the fields (:class:`~bikemass.core.display.Display`)."""
 
     def __post_init__(self):
         for f in fields(self):

@@ -114,6 +114,23 @@ class LinearModel:
     outputs : tuple of Output
         Further named outputs beside the states, each a fixed combination of them (the Whipple
         bicycle's lateral position of the front contact).
+
+    See Also
+    --------
+    bikemass.linear_model : The Whipple bicycle of a parameter set.
+    bikemass.stability : Any model of the family is analysed the same way.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> model = bm.linear_model(bm.parameters("benchmark"))
+    >>> model.n_dynamic, model.state_names
+    (4, ('roll-angle', 'steer-angle', 'roll-rate', 'steer-rate', 'heading', 'lateral'))
+    >>> A = model.dynamic_matrix([5.0])[0]       # the dynamic 4x4 block at 5 m/s
+    >>> import numpy as np
+    >>> weave = max(np.linalg.eigvals(A), key=lambda z: z.imag)
+    >>> print(f"{weave.real:.6f} +- {weave.imag:.6f}i")   # Meijaard et al. (2007), Table 2
+    -0.775342 +- 4.464868i
     """
 
     name: str

@@ -46,6 +46,7 @@ from ..models.plausibility import check_parameters
 from ..models.registry import BASE, ModelChoice, parse_model
 from ..models.tyres import Tyres, as_tyres
 from ..models.whipple import whipple_model
+from .loading import BicycleLike, RiderLike
 from .inputs import Inputs, _lru, file_unit, get_path, split_changes
 
 
@@ -280,24 +281,26 @@ def _hashable(choice):
         return tuple(map(tuple, readonly(choice, float).tolist()))
 
 
-def parameters(bicycle, rider=None, combine=Combine.EXACT, method=Method.MESH, allow_off_contact=False):
+def parameters(bicycle: BicycleLike, rider: RiderLike = None, combine: Combine | str = Combine.EXACT,
+               method: Method | str = Method.MESH, allow_off_contact: bool = False) -> BenchmarkParameters:
     """The Meijaard et al. (2007) benchmark parameter set of a bicycle with a rider.
 
     Parameters
     ----------
-    bicycle
-        Anything :func:`bikemass.load_bicycle` takes.
-    rider
-        Anything :func:`bikemass.load_rider` takes; ``None`` (default) for no rider.  The rider is
-        seated on the bicycle (:func:`bikemass.seated_rider`): a contact off the bicycle is an error
+    bicycle : str, os.PathLike, Mapping, BenchmarkParameters or Bicycle
+        Anything :func:`load_bicycle` takes.
+    rider : str, os.PathLike, Mapping, Rider or None
+        Anything :func:`load_rider` takes; ``None`` (default) for no rider.  The rider is
+        seated on the bicycle (:func:`seated_rider`): a contact off the bicycle is an error
         unless ``allow_off_contact``.
     combine : {"exact", "thesis"}
         Rider + frame body: parallel-axis theorem (``exact``, default) or the thesis's
-        Eq. 3.6 (central inertias added), see :class:`~bikemass.core.choices.Combine`.
+        Eq. 3.6 (central inertias added), see :class:`~bikemass.Combine`.
     method : {"mesh", "exact"}
         Mass properties from trimesh meshes (default) or closed-form solids.
     allow_off_contact : bool
-        Use the pose as written even off the contacts (the thesis's riders).
+        Use a pose as written even where it misses the saddle, grips or pedals by more than
+        1 mm (the gaps are warned about); by default such a pose is re-seated by its posture.
 
     Returns
     -------
@@ -305,5 +308,29 @@ def parameters(bicycle, rider=None, combine=Combine.EXACT, method=Method.MESH, a
         Immutable; the 26 values as attributes (``p.w`` in m, ``p.lam`` in rad, ``p.IBxx``
         in kg m^2, ...) and ``p.to_dict()`` as plain floats.  A parameter file without a
         rider returns its own values exactly.
+
+    Raises
+    ------
+    InputError
+        Bad bicycle or rider (see :func:`load_bicycle`, :func:`load_rider`), a rider that
+        cannot be seated, a bicycle that already holds a rider, or an unknown ``combine`` or
+        ``method``.
+
+    See Also
+    --------
+    stability : Critical speeds and stable ranges of the parameter set.
+    stiffness : The rear frame's stiffness to analyse it with.
+    BenchmarkParameters : The 26 values.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> p = bm.parameters("benchmark")                  # Meijaard et al. (2007), Table 1
+    >>> print(p.w, p.c, round(p.lam, 6), p.mB)
+    1.02 0.08 0.314159 85.0
+    >>> p = bm.parameters("jamis", "relaxed")
+    >>> thesis = bm.parameters("jamis", "relaxed", combine="thesis")
+    >>> print(f"mB {p.mB:.3f} kg, IBxx {p.IBxx:.3f} kg m^2 (the thesis's Eq. 3.6: {thesis.IBxx:.3f})")
+    mB 86.707 kg, IBxx 14.464 kg m^2 (the thesis's Eq. 3.6: 12.281)
     """
     return Scenario(bicycle, rider, combine=combine, method=method, allow_off_contact=allow_off_contact).parameters()

@@ -1,7 +1,7 @@
 """Figures of a sweep: heat maps over two varied keys, lines over one, scatter for samples."""
 
 import numpy as np
-from matplotlib.figure import Figure
+from ..plots.figure import Figure
 
 SPEED_COLUMNS = ("weave_speed", "capsize_speed")
 

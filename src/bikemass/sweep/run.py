@@ -29,6 +29,7 @@ import pickle
 import re
 import shutil
 import threading
+from collections.abc import Callable
 from contextlib import contextmanager
 from pathlib import Path
 
@@ -200,27 +201,70 @@ def _outcome(rows, spec, out, created):
          f"column of {Path(out) / 'results.csv'}), the first: {failed[0]}")
 
 
-def run_sweep(spec, out, workers=None, scheduler=None, progress=None):
-    """Evaluate every configuration of ``spec`` (a :class:`~bikemass.sweep.spec.SweepSpec` or a spec
-    file) into folder ``out``; returns the result rows (dicts, one per configuration).
+def run_sweep(spec: "SweepSpec | str | os.PathLike", out: "str | os.PathLike", workers: int | None = None,
+              scheduler: "str | distributed.Client | None" = None,
+              progress: "Callable[[int], object] | None" = None) -> list[dict]:
+    """Evaluate every configuration of a design sweep into a folder (``bm.sweep``).
 
-    ``workers``: a local Dask cluster of that many single-threaded worker processes;
-    ``scheduler``: the address of a running Dask scheduler, or a ``distributed.Client``
-    (used as it is and left open: a notebook's cluster serves many sweeps); neither: this process.
-    ``progress(n)`` is called with the number of configurations already finished, then with
-    the number finished by each chunk.
+    Each configuration (a grid or a sample of the varied keys) is built and its weave and capsize
+    speeds and stable range found; chunks of configurations run in this process or on Dask, each
+    chunk written as it finishes, so an interrupted sweep resumes where it stopped.
+
+    Parameters
+    ----------
+    spec : SweepSpec, str or os.PathLike
+        A sweep YAML file (``bike``, ``vary``, optional ``rider``, ``stiffness``, ``sample``,
+        ``max_speed``, ... : docs/analysis.md) or a read
+        :class:`~bikemass.sweep.spec.SweepSpec`.
+    out : str or os.PathLike
+        The folder for ``results.csv``, ``results.parquet``, ``sweep.json`` and ``chunks/``
+        (created; an earlier run of the same spec there is resumed).
+    workers : int, optional
+        A local Dask cluster of that many single-threaded worker processes.
+    scheduler : str or distributed.Client, optional
+        The address of a running Dask scheduler, or a ``distributed.Client`` (used as it is and
+        left open: a notebook's cluster serves many sweeps). Neither ``workers`` nor
+        ``scheduler``: this process.
+    progress : callable, optional
+        Called with the number of configurations already finished, then with the number
+        finished by each chunk.
+
+    Returns
+    -------
+    list of dict
+        One row per configuration: the varied values, ``weave_speed``, ``capsize_speed``,
+        ``stable_from``, ``stable_to`` (m/s, ``None`` where there is none), ``total_mass``
+        (kg) and ``error`` (why the model refused it, else ``None``).
 
     Raises
     ------
     InputError
-        Bad arguments or spec; ``out`` a file, or a folder holding other files than a sweep's
-        own, another spec's sweep or a damaged ``sweep.json``; the model refusing every
-        configuration (the first reason named; a folder this call made is removed).
+        Bad arguments or spec (naming its file and key); ``out`` a file, or a folder holding other
+        files than a sweep's own, another spec's sweep or a damaged ``sweep.json``; a scheduler that
+        cannot be reached; the model refusing every configuration (the first reason named; a folder
+        this call made is removed).
 
     Warns
     -----
     BikemassWarning
         The model refused some configurations (each row keeps its reason in ``error``).
+
+    See Also
+    --------
+    sensitivity, uncertainty : Local derivatives and spreads instead of a grid.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> import bikemass as bm
+    >>> folder = tempfile.mkdtemp()
+    >>> spec = os.path.join(folder, "trail.yaml")             # the trail c in m
+    >>> _ = open(spec, "w").write("{bike: benchmark, vary: {c: [0.04, 0.08, 0.12]}}")
+    >>> for row in bm.sweep(spec, os.path.join(folder, "out")):      # c = 0.08 m is the benchmark
+    ...     print(f"c {row['c']:.2f} m: stable {row['stable_from']:.4f}..{row['stable_to']:.4f} m/s")
+    c 0.04 m: stable 3.7529..4.7672 m/s
+    c 0.08 m: stable 4.2924..6.0243 m/s
+    c 0.12 m: stable 4.6965..7.1149 m/s
     """
     _check_arguments(spec, out, workers, progress)
     if not hasattr(spec, "configurations"):

@@ -6,6 +6,7 @@ import numpy as np
 
 from scipy.optimize import linear_sum_assignment
 
+from ...core.display import brief
 from ...core.results import Result, quantity
 from ...core.frozen import freeze, short_repr
 from .critical import critical_speeds
@@ -112,6 +113,22 @@ class StabilityResult(Result):
         ``{label: {criterion: {"exact"|"grid": ((start, stop), ...)}}}`` (m/s) of each mode.
     stiffness : numpy.ndarray of shape (2, 2) or None
         The rear frame's stiffness S (N m/rad) of a quasi-static flexible frame; ``None``: rigid.
+
+    See Also
+    --------
+    bikemass.stability : Makes one.
+    bikemass.plot_eigenvalues : Draws one.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> result = bm.stability(bm.parameters("benchmark"))
+    >>> result.labels
+    ('weave 1', 'weave 2', 'capsize', 'caster')
+    >>> [(c.kind, c.direction, round(c.speed, 4)) for c in result.crossings]
+    [('oscillatory', 'stabilising', 4.2924), ('real', 'destabilising', 6.0243)]
+    >>> result.ranges["strict"]["grid"]                # the first and last stable grid speeds
+    ((4.3, 6.0),)
     """
 
     model: object
@@ -197,6 +214,21 @@ class StabilityResult(Result):
         """The ``units`` block of :meth:`to_dict`."""
         return {"weave_speeds": "m/s", "capsize_speeds": "m/s", "wobble_speeds": "m/s", **Crossing.field_units(),
                 "marginal_threshold": "rad/s", "ranges": "m/s", "modes": "m/s"}
+
+    def display_rows(self):
+        """What Jupyter's table shows: the model, the grid, the critical speeds, the stable ranges."""
+        v = self.speeds
+        speeds = lambda xs: ", ".join(f"{x:.4f}" for x in xs) or "none"            # noqa: E731
+        spans = lambda r: ", ".join(f"{a:.4f}..{b:.4f}" for a, b in r) or "none"   # noqa: E731
+        rows = [("model", self.model.name, ""), ("speeds", f"{v[0]:g}..{v[-1]:g} x {len(v)}", "m/s"),
+                ("modes", ", ".join(self.labels), ""), ("weave speeds", speeds(self.weave_speeds), "m/s"),
+                ("capsize speeds", speeds(self.capsize_speeds), "m/s")]
+        if self.wobble_speeds:
+            rows.append(("wobble speeds", speeds(self.wobble_speeds), "m/s"))
+        return rows + [("stable (strict)", spans(self.stable_speeds), "m/s"),
+                       (f"stable (marginal, |lambda| < {self.marginal:g} rad/s)",
+                        spans(self.ranges["marginal"]["exact"]), "m/s"),
+                       ("frame stiffness S", "rigid" if self.stiffness is None else brief(self.stiffness), "N m/rad")]
 
     def __repr__(self):
         v = self.speeds
