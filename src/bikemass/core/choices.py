@@ -269,7 +269,7 @@ class Format(Choice):
     --------
     >>> import bikemass as bm
     >>> bm.Format.values()
-    ('table', 'csv', 'json', 'yaml', 'bicycleparameters')
+    ('table', 'csv', 'json', 'yaml', 'bicycleparameters', 'bicycleparameters-yaml')
     """
 
     TABLE = "table"

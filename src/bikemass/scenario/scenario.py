@@ -73,6 +73,13 @@ class Built:
         The frame's twist and the fork's bending (``flexible``).
     tyres : Tyres or None
         The tyres (``tyre``).
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> built = bm.Scenario("benchmark").build()
+    >>> print(built.model.name, built.stiffness, f"w = {built.parameters.w} m")
+    whipple None w = 1.02 m
     """
 
     parameters: BenchmarkParameters
@@ -139,6 +146,16 @@ class Scenario:
     InputError
         An unknown model, combine or method; tyres without the tyre member; a stiffness the model
         cannot take.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> r = bm.stability(bm.Scenario("benchmark"))          # Meijaard et al. (2007), exact digits
+    >>> print(f"{r.weave_speeds[0]:.12f} {r.capsize_speeds[0]:.12f}")
+    4.292382536341 6.024262015388
+    >>> lean = bm.Scenario("jamis", "relaxed", model="rider-lean").build()
+    >>> print(lean.model.state_names[:3])
+    ('roll-angle', 'steer-angle', 'lean-angle')
     """
 
     bicycle: object
