@@ -14,7 +14,7 @@ import timeit
 import bikemass as bm
 from bikemass.models.family import build
 from bikemass.fe.flexible import compliances
-from bikemass.models.lean_split import rider_lean_parameters
+from bikemass.rider.lean_split import rider_lean_parameters
 from bikemass.models.whipple import whipple_model
 
 SPEED = 8.0

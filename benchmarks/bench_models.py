@@ -13,7 +13,7 @@ import timeit
 
 import numpy as np
 
-from bikemass.scenario.catalog import parameters
+from bikemass.scenario.scenario import parameters
 from bikemass.models.family import build, state_coefficients, values
 from bikemass.models.moore2012 import from_moore_values
 from bikemass.models.whipple import whipple_model

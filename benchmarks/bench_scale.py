@@ -81,7 +81,7 @@ def timed_command(args, cwd):
 
 
 def benchmark_columns(n):
-    from bikemass.scenario.catalog import parameters
+    from bikemass.scenario.scenario import parameters
     base = parameters("benchmark").to_dict()
     c, lam = np.meshgrid(np.linspace(0.0, 0.2, n), np.linspace(0.1, 0.5, n), indexing="ij")
     p = {k: np.full(c.size, v) for k, v in base.items()}
@@ -124,7 +124,7 @@ def parameter_section(repeat):
     from bikemass.sweep.spec import read_spec
     print(f"parameter level, configurations per second per core (CPU, best of {repeat}); {load()}")
     grid = read_spec(str(ROOT / "examples" / "sweeps" / "benchmark_c_lam.yaml"))
-    model = ev._model(ev.setup_of(grid))
+    model = ev._scenario(grid.scenario())
     configs = grid.configurations()
     reference = best_cpu(lambda: [ev.evaluate(model, c, 30.0) for c in configs], repeat) / len(configs)
     with tempfile.TemporaryDirectory() as tmp:
@@ -132,8 +132,8 @@ def parameter_section(repeat):
         path.write_text(GRID.format(n=317))                                    # 100,489 configurations
         big = read_spec(str(path))
         columns = big.columns(0, big.count)
-        ev._model(ev.setup_of(big))
-        arrays = best_cpu(lambda: ev.evaluate_outcomes(ev._model(ev.setup_of(big)), big, columns, big.count),
+        ev._scenario(big.scenario())
+        arrays = best_cpu(lambda: ev.evaluate_outcomes(ev._scenario(big.scenario()), big, columns, big.count),
                           repeat) / big.count
     floor = floor_seconds(100_489, repeat) / 100_489
     peer = bp_eig_seconds(repeat)

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
-from bikemass.scenario.catalog import parameters
+from bikemass.scenario.scenario import parameters
 from bikemass.models.parameter_export import format_parameters
 from bikemass.analysis.engine.eigen import eigen_sweep
 from bikemass.analysis.engine.modes import follow_modes

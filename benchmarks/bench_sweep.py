@@ -41,7 +41,7 @@ from pathlib import Path
 import numpy as np
 
 from bikemass.sweep import read_spec, run_sweep
-from bikemass.sweep.evaluate import Chunk, _model, finish_chunk, setup_of
+from bikemass.sweep.evaluate import Chunk, _scenario, finish_chunk
 from bikemass.sweep.layout import split
 from bikemass.sweep.run import QUIET_CLUSTER, chunk_size, local_cluster
 from bikemass.sweep.vectorised import takes
@@ -78,8 +78,8 @@ def per_configuration(spec, repeat=3):
     best = float("inf")
     for _ in range(repeat):
         from bikemass.sweep import evaluate as module
-        module._MODELS.clear()
-        _model(setup_of(spec))
+        module._SCENARIOS.clear()
+        _scenario(spec.scenario()).parameters()
         t = time.perf_counter()
         finish_chunk(spec, Chunk(0, spec.count))
         best = min(best, (time.perf_counter() - t) / spec.count)

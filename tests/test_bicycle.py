@@ -8,6 +8,7 @@ import pytest
 import yaml
 
 from bikemass.scenario import catalog
+from bikemass.scenario.scenario import parameters as scenario_parameters
 from bikemass.bicycle import bicycle_parameters, load_bicycle
 from bikemass.core.errors import InputError
 from bikemass.mass.inertia import MassProperties
@@ -33,7 +34,7 @@ MEIJAARD_2007 = {
 
 
 def test_benchmark_is_meijaard_2007_exactly():
-    assert catalog.parameters("benchmark").to_dict() == MEIJAARD_2007
+    assert scenario_parameters("benchmark").to_dict() == MEIJAARD_2007
 
 
 @pytest.mark.parametrize("bike", ["jamis", "cargo"])
@@ -78,7 +79,7 @@ def test_thesis_bicycles_with_thesis_riders_give_the_stability_tables_inputs(bik
     """*-thesis bicycle + <pose>-thesis rider + combine thesis = the thesis's Eq. 3.6 sets
     (tests/thesis_sets.py, built independently from the reference tables)."""
     pose = "none" if rider == "No Rider" else rider.lower().replace(" ", "-") + "-thesis"
-    ours = catalog.parameters(bike, pose, "thesis").to_dict()
+    ours = scenario_parameters(bike, pose, "thesis").to_dict()
     theirs = thesis_set(column, rider).to_dict()
     for key in ours:
         assert ours[key] == pytest.approx(theirs[key], rel=1e-12, abs=1e-12), key
@@ -122,8 +123,8 @@ def test_combine_exact_and_thesis_for_jamis_thesis_with_relaxed_rider():
     The difference is the parallel-axis term of the two bodies about their joint CoM,
     mu * dz^2 with the reduced mass mu = m1 m2 / (m1 + m2) and dz their CoM height difference
     (Table 3-9: 4.615 kg at z = -0.493; Table 3-4: 82.150 kg at z = -1.217)."""
-    thesis = catalog.parameters("jamis-thesis", "relaxed-thesis", "thesis")
-    exact = catalog.parameters("jamis-thesis", "relaxed-thesis", "exact")
+    thesis = scenario_parameters("jamis-thesis", "relaxed-thesis", "thesis")
+    exact = scenario_parameters("jamis-thesis", "relaxed-thesis", "exact")
     assert thesis.IBxx == pytest.approx(0.288 + 12.502, abs=1e-12)
     mu = 4.615 * 82.150 / (4.615 + 82.150)
     assert exact.IBxx == pytest.approx(0.288 + 12.502 + mu * (1.217 - 0.493) ** 2, abs=1e-12)
@@ -205,9 +206,9 @@ def test_loaded_cargo_adds_the_200_lb_box_to_the_rear_frame_only():
 def test_parameter_file_round_trip(tmp_path):
     """bikemass's YAML output is itself a BIKE: read back bit for bit."""
     from bikemass.models.parameter_export import format_parameters
-    params = catalog.parameters("jamis", "relaxed")
+    params = scenario_parameters("jamis", "relaxed")
     path = tmp_path / "jamis_relaxed.yaml"
     path.write_text(format_parameters(params, "yaml"))
-    assert catalog.parameters(str(path)) == params
+    assert scenario_parameters(str(path)) == params
     lumped = bicycle_parameters(load_bicycle(str(path)), _test_rider(), "exact")
     assert lumped.mB == pytest.approx(params.mB + 60.0, abs=1e-12)

@@ -4,7 +4,7 @@ canonical matrices as bikemass (relative 1e-12: the file holds every value at 17
 import numpy as np
 import pytest
 
-from bikemass.scenario import catalog
+from bikemass.scenario.scenario import parameters as scenario_parameters
 from bikemass.models.parameter_export import format_parameters
 from bikemass.models.canonical import canonical_matrices
 
@@ -15,7 +15,7 @@ bp = pytest.importorskip("bicycleparameters")
                                                 ("jamis", "relaxed", "Jamis"),
                                                 ("cargo-loaded-thesis", "aero-tuck-thesis", "Cargoload")])
 def test_bicycleparameters_reads_the_export(tmp_path, bike, rider, name):
-    params = catalog.parameters(bike, rider)
+    params = scenario_parameters(bike, rider)
     folder = tmp_path / "bicycles" / name / "Parameters"
     folder.mkdir(parents=True)
     (folder / f"{name}Benchmark.txt").write_text(format_parameters(params, "bicycleparameters", name))

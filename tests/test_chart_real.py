@@ -54,7 +54,7 @@ def _allez(tmp_path, name, unit, wheel, tire_width):
 
 
 def test_the_same_chart_in_inches_or_millimetres_gives_the_same_bicycle(tmp_path):
-    from bikemass.scenario.catalog import parameters
+    from bikemass.scenario.scenario import parameters
     mm = parameters(_allez(tmp_path, "mm", "mm", "700c", 28)).to_dict()
     inch = parameters(_allez(tmp_path, "in", "in", "622 mm", 28 / 25.4)).to_dict()
     for key, value in mm.items():     # 1e-9: floating-point rounding of mm -> in -> m (and the meshes built on it)

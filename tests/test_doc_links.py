@@ -1,7 +1,8 @@
 """Citations cannot rot: every link to a doc page and every ``PAGE.md#anchor`` resolves.
 
 Checked in README.md, docs/, src/, frames/, bodies/, reference/, tests/, benchmarks/ and
-examples/:
+examples/ (not in what the documentation build writes: docs/_build, docs/auto_examples,
+docs/api-reference):
 
 * every markdown link ``[text](target)`` of a ``.md`` page whose target is a local file
   names a file that exists (relative to the page), and every ``docs/NAME.md`` named
@@ -53,11 +54,15 @@ def anchors(page):
     return found
 
 
+GENERATED = {"__pycache__", "_build", "auto_examples", "api-reference"}
+"""Folders a build writes (git ignores them): the site's copies of the pages are not citations."""
+
+
 def citing_files():
     files = [ROOT / "README.md"]
     for folder in FOLDERS:
         files += [p for p in sorted((ROOT / folder).rglob("*"))
-                  if p.suffix in SUFFIXES and p.is_file() and "__pycache__" not in p.parts]
+                  if p.suffix in SUFFIXES and p.is_file() and not GENERATED & set(p.relative_to(ROOT).parts)]
     return [p for p in files if p != Path(__file__)]     # this file's examples are not citations
 
 

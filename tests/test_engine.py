@@ -19,7 +19,7 @@ from bikemass.analysis.engine.compound import additive_compound, multiplicative_
 from bikemass.analysis.engine.stability import analyse
 from bikemass.models.linear import Signal, second_order_model
 from bikemass.models.whipple import whipple_model
-from bikemass.scenario.catalog import parameters
+from bikemass.scenario.scenario import parameters
 
 BENCHMARK = parameters("benchmark")
 MEIJAARD = {   # Meijaard et al. 2007, Sec. 4 (K0 without g)

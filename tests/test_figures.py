@@ -21,6 +21,7 @@ import matplotlib
 matplotlib.use("svg")                      # the caller's choice, not the default
 from matplotlib.figure import Figure
 from bikemass.scenario import catalog
+from bikemass.scenario.scenario import parameters as scenario_parameters
 from bikemass.plots.side_view import plot_side_view
 from bikemass.fe import frame_modes
 from bikemass.plots.frame_modes import plot_frame_modes
@@ -31,12 +32,14 @@ from bikemass.analysis.engine.stability import analyse
 from bikemass.analysis.engine.speeds import speed_grid
 from bikemass.models.whipple import whipple_model
 
-result = analyse(whipple_model(catalog.parameters("benchmark", "none", "exact")), speed_grid(0, 8, 0.5))
+result = analyse(whipple_model(scenario_parameters("benchmark", "none", "exact")), speed_grid(0, 8, 0.5))
 figures = [plot_eigenvalues(result, "benchmark"), plot_eigenvalues(result.modes),
            plot_critical_speeds({"no rider": {"rigid": result}}),
            plot_side_view(catalog.load_bicycle("benchmark")),
            plot_frame_modes(frame_modes(frame_structure("jamis"), "fix-rear", 2))]
-assert all(type(f) is Figure for f in figures), [type(f) for f in figures]
+assert all(isinstance(f, Figure) for f in figures), [type(f) for f in figures]
+# Jupyter shows them without %matplotlib inline: IPython's rich display asks for _repr_png_
+assert all(f._repr_png_().startswith(b"\\x89PNG") for f in figures)
 assert matplotlib.get_backend() == "svg", matplotlib.get_backend()
 assert "matplotlib.pyplot" not in sys.modules, "pyplot imported"
 print("ok")
@@ -124,11 +127,11 @@ def test_eig_figure_names_the_weave_and_capsize_speeds(tmp_path, capsys):
 @pytest.fixture(scope="module")
 def benchmark_stability():
     """The benchmark's stability on the thesis's grid (exact mass properties)."""
-    from bikemass.scenario import catalog
+    from bikemass.scenario.scenario import parameters as scenario_parameters
     from bikemass.analysis.engine.stability import analyse
     from bikemass.analysis.engine.speeds import speed_grid
     from bikemass.models.whipple import whipple_model
-    return analyse(whipple_model(catalog.parameters("benchmark", "none", "exact")), speed_grid(0, 30, 0.05))
+    return analyse(whipple_model(scenario_parameters("benchmark", "none", "exact")), speed_grid(0, 30, 0.05))
 
 
 def _lines(ax, label):

@@ -7,7 +7,7 @@ import re
 
 import pytest
 
-from bikemass.scenario.inputs import Model
+from bikemass.scenario.scenario import Scenario
 from bikemass.analysis.uncertainty import Spread, propagate, uncertainty
 from bikemass.core.errors import InputError
 from bikemass.sweep.run import run_sweep
@@ -44,12 +44,12 @@ def test_sample_seed_must_be_whole(tmp_path):
 
 
 def test_changed_parameters_are_checked():
-    model = Model("benchmark")
+    scenario = Scenario("benchmark")
     for change, key in (({"mB": -85.0}, "mB"), ({"lam": 2.0}, "lam"), ({"lam": -1.6}, "lam"),
                         ({"rF": 0.0}, "IFyy"), ({"mF": 0.0}, "IFxx"), ({"IBxz": 50.0}, "IBxz")):
         with pytest.raises(InputError, match=f": {key}: "):
-            model.build(change)
-    p, _ = model.build({"mB": 90.0})
+            scenario.build(change)
+    p = scenario.build({"mB": 90.0}).parameters
     assert p.mB == 90.0
 
 
@@ -82,7 +82,7 @@ def test_unreadable_scheduler_address_leaves_no_folder(tmp_path):
 ])
 def test_propagation_options_are_checked(kwargs, match):
     with pytest.raises(InputError, match=match):
-        propagate(Model("benchmark"), {"c": Spread("normal", 0.002)}, **kwargs)
+        propagate(Scenario("benchmark"), {"c": Spread("normal", 0.002)}, **kwargs)
 
 
 @pytest.mark.parametrize("std", [-0.01, math.nan, math.inf, "big", True])

@@ -87,17 +87,17 @@ def test_tiny_frame_elements_are_refused_before_meshing():
 
 @pytest.mark.parametrize("kwargs, match", [({"vmax": 0}, "vmax"), ({"vmax": -1}, "vmax"), ({"vmax": math.nan}, "vmax"),
                                            ({"names": ("qq",)}, "names"), ({"names": "c"}, "names"),
-                                           ({"S": np.eye(3)}, "stiffness"), ({"S": -np.eye(2)}, "stiffness")])
+                                           ({"stiffness": np.eye(3)}, "stiffness"),
+                                           ({"stiffness": -np.eye(2)}, "stiffness")])
 def test_sensitivity_arguments(meijaard, kwargs, match):
     with pytest.raises(bm.InputError, match=match):
         bm.sensitivity(meijaard, **kwargs)
 
 
 def test_geometry_sensitivity_arguments():
-    from bikemass.scenario.inputs import Model
     with pytest.raises(bm.InputError, match="step"):
-        bm.geometry_sensitivity(Model("jamis"), ["geometry.trail"], step=0)
-    with pytest.raises(InputTypeError, match="model"):
+        bm.geometry_sensitivity(bm.Scenario("jamis"), ["geometry.trail"], step=0)
+    with pytest.raises(InputTypeError, match="scenario"):
         bm.geometry_sensitivity("jamis", ["geometry.trail"])
 
 

@@ -253,3 +253,64 @@ def test_the_checks_find_each_fault(broken):
                            ["bikemass.rider.pose:1 -> bikemass.rider.seat",
                             "bikemass.rider.seat:1 -> bikemass.rider.pose"]]
     assert unexplained_lazy_imports(src) == ["bikemass.core.a:2: from . import b"]
+
+
+ASSEMBLY = "state_form"
+"""The one function that assembles a state matrix: ``bikemass.models.linear.state_form`` solves a
+descriptor form ``E x' = A(v) x + B(v) u`` on E's mass rows (``models.family._state_form`` only
+names those rows for the generated code)."""
+INVERSES = {
+    "bikemass.models.linear": "state_form: the mass matrix, on the descriptor's mass rows",
+    "bikemass.models.flexible_static": "the thesis's static stiffness (gK0 + S)^-1: a 2x2 stiffness, no state matrix",
+    "bikemass.analysis.engine.naming": "left eigenvectors (participation factors)",
+    "bikemass.analysis.sensitivity": "left eigenvectors (eigenvalue derivatives)",
+    "bikemass.analysis.uncertainty": "left eigenvectors (eigenvalue derivatives)",
+    "bikemass.analysis.handling.mode_shapes": "the kinematic states of an eigenvector",
+    "bikemass.fe.stiffness": "beam stiffness condensation",
+    "bikemass.fe.fork": "the fork's beam deflection",
+    "bikemass.fe.twist": "the rear frame's beam deflection",
+    "bikemass.scenario.frame": "calls the beam model's modal solver, imported as solve",
+    "bikemass.fe.elements": "a beam element's shape functions",
+}
+"""Every module that inverts or solves with a matrix, and what for: a new one must say here why it
+is not a second assembly of a state matrix."""
+
+
+def _calls(node):
+    """Names of every function called inside ``node`` (``f(...)`` and ``x.f(...)``)."""
+    return {c.func.id if isinstance(c.func, ast.Name) else c.func.attr for c in ast.walk(node)
+            if isinstance(c, ast.Call) and isinstance(c.func, (ast.Name, ast.Attribute))}
+
+
+def state_matrix_builders(src):
+    """``(functions that build a LinearModel without state_form, modules inverting a matrix)``."""
+    bad, inverting = [], set()
+    for name, path in modules(src).items():
+        tree = parsed(path)[1]
+        if {"inv", "solve", "lstsq", "pinv"} & _calls(tree):
+            inverting.add(name)
+        for f in ast.walk(tree):
+            if isinstance(f, (ast.FunctionDef, ast.AsyncFunctionDef)) and "LinearModel" in _calls(f):
+                if not {ASSEMBLY, f"_{ASSEMBLY}"} & _calls(f):
+                    bad.append(f"{name}.{f.name}")
+    return sorted(bad), sorted(inverting)
+
+
+def test_the_state_matrix_is_assembled_in_one_place():
+    """Every :class:`~bikemass.models.linear.LinearModel` gets its ``A(v)``, ``B(v)`` from
+    :func:`~bikemass.models.linear.state_form`: the Whipple bicycle (``second_order_model``: M, C, K
+    as a descriptor form) and every generated member (``models.family.linear_model``) alike; no
+    other module inverts a matrix except for the reasons :data:`INVERSES` gives."""
+    bad, inverting = state_matrix_builders(SRC)
+    assert bad == []
+    assert inverting == sorted(INVERSES)
+
+
+def test_the_state_matrix_check_finds_a_second_assembly(tmp_path):
+    src = _tree(tmp_path, {
+        "__init__.py": "",
+        "models/__init__.py": "",
+        "models/other.py": "import numpy as np\ndef make(M, K):\n    A = -np.linalg.inv(M) @ K\n"
+                           "    return LinearModel('x', (), 2, (), A, None)\n",
+    })
+    assert state_matrix_builders(src) == (["bikemass.models.other.make"], ["bikemass.models.other"])

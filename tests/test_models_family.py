@@ -4,7 +4,7 @@ code, against Meijaard et al. (2007) and models/whipple.py; the registry of mode
 import numpy as np
 import pytest
 
-from bikemass.scenario.catalog import parameters
+from bikemass.scenario.scenario import parameters
 from bikemass.core.errors import InputError
 from bikemass.models.family import build, coefficients, linear_model, state_coefficients, values
 from bikemass.models.flexible import Compliances

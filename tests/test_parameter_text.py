@@ -16,6 +16,7 @@ import pytest
 
 import bicycleparameters as bp
 from bikemass.bicycle import load_bicycle
+from bikemass.scenario.scenario import parameters as scenario_parameters
 from bikemass.cli.main import main
 from bikemass.core.errors import InputError
 from bikemass.bicycle.parameter_text import (ParameterFileWarning, combined_front_frame, load_parameter_text,
@@ -189,7 +190,7 @@ def test_measured_bicycle_companion_poses_a_chain_rider(tmp_path, capsys):
 def test_bikemass_export_reads_back_bit_for_bit(tmp_path):
     from bikemass.scenario import catalog
     from bikemass.models.parameter_export import format_parameters
-    params = catalog.parameters("jamis-thesis", "relaxed-thesis")
+    params = scenario_parameters("jamis-thesis", "relaxed-thesis")
     f = tmp_path / "JamisBenchmark.txt"
     f.write_text(format_parameters(params, "bicycleparameters", "Jamis"))
     back = load_parameter_text(f)

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 import yaml
 
-from bikemass.scenario import catalog
+from bikemass.scenario.scenario import parameters as scenario_parameters
 from bikemass.bicycle import bicycle_parameters, load_bicycle
 from bikemass.cli.main import main
 from bikemass.rider import load_rider
@@ -138,7 +138,7 @@ def test_relaxed_on_cargo_is_reseated_and_stability_uses_it(capsys, bikes):
     written = load_rider("relaxed")          # the Table 3-3 placement, 128 mm short of the Cargo's bar
     np.testing.assert_allclose(data["com"], seated.properties("exact").com, rtol=0, atol=1e-12)
     cargo = bikes["cargo"]
-    used = catalog.parameters("cargo", "relaxed").to_dict()
+    used = scenario_parameters("cargo", "relaxed").to_dict()
     assert used == bicycle_parameters(cargo, seated).to_dict()
     assert used != bicycle_parameters(cargo, written).to_dict()
     code, out, err = run(capsys, "stability", "cargo", "--rider", "relaxed", "--format", "json")

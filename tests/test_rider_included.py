@@ -7,6 +7,7 @@ import pytest
 import yaml
 
 from bikemass.scenario import catalog
+from bikemass.scenario.scenario import parameters as scenario_parameters
 from bikemass.cli.main import main
 from bikemass.core.errors import InputError
 
@@ -30,7 +31,7 @@ def test_benchmark_without_a_rider_is_meijaard_exactly(capsys):
     code, out, _ = run(capsys, "params", "benchmark", "--format", "json")
     data = json.loads(out)
     assert code == 0 and data.pop("rider_included") is True and data.pop("units")["IBxx"] == "kg m^2"
-    assert data == catalog.parameters("benchmark").to_dict()
+    assert data == scenario_parameters("benchmark").to_dict()
 
 
 def test_an_exported_set_with_a_rider_says_so_and_refuses_another(tmp_path, capsys):
@@ -42,7 +43,7 @@ def test_an_exported_set_with_a_rider_says_so_and_refuses_another(tmp_path, caps
     bare = tmp_path / "jamis.yaml"
     assert run(capsys, "params", "jamis", "--method", "exact", "-o", bare)[0] == 0
     assert "rider_included" not in yaml.safe_load(bare.read_text())
-    with_rider = catalog.parameters(str(bare), "relaxed-thesis", method="exact")
+    with_rider = scenario_parameters(str(bare), "relaxed-thesis", method="exact")
     assert with_rider.mB > 80
 
 
@@ -51,7 +52,7 @@ def test_a_bicycle_yaml_may_declare_its_rider(tmp_path):
     bike = tmp_path / "bike.yaml"
     bike.write_text(open(text).read() + "\nrider_included: true\n")
     with pytest.raises(InputError, match="rider_included"):
-        catalog.parameters(str(bike), "relaxed")
+        scenario_parameters(str(bike), "relaxed")
     bike.write_text(open(text).read() + "\nrider_included: maybe\n")
     with pytest.raises(InputError, match="true or false"):
         catalog.load_bicycle(str(bike))

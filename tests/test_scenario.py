@@ -19,7 +19,7 @@ import bikemass as bm
 from bikemass.bicycle.chart import CHECKED_KEYS
 from bikemass.cli.main import main
 from bikemass.core.paths import frames_dir
-from bikemass.scenario.inputs import Model, get_path
+from bikemass.scenario.scenario import Scenario
 
 BIKE, SIZE = "bmc-roadmachine", 56
 PERSON = {"name": "me", "body": {"height": "1.80 m", "mass": "74 kg", "sex": "male"},
@@ -117,16 +117,16 @@ def test_stack_sensitivity_equals_a_central_difference_of_stability_with_the_rid
 def test_a_changed_head_angle_keeps_the_fork_and_drops_the_published_checks(person):
     """1 deg steeper head tube on the BMC (published wheelbase, front centre, trail would all
     refuse it): the frame is rebuilt with the same fork offset and the trail it now has."""
-    model = Model(f"{BIKE}@{SIZE}", person)
-    angle = get_path(model, "chart.head_tube_angle")
+    scenario = Scenario(f"{BIKE}@{SIZE}", person)
+    angle = scenario.value("chart.head_tube_angle")
     assert angle == pytest.approx(math.radians(72.0), rel=1e-12)
-    p, _ = model.build({"chart.head_tube_angle": angle + math.radians(1.0)})
+    p = scenario.build({"chart.head_tube_angle": angle + math.radians(1.0)}).parameters
     published = published_size()["chart"]
     reference = bm.parameters(changed(head_tube_angle=f"{published['head_tube_angle'] + 1.0} deg"), person)
     assert p.c == pytest.approx(reference.c, rel=1e-12) and p.w == pytest.approx(reference.w, rel=1e-12)
     assert p.c < bm.parameters(f"{BIKE}@{SIZE}", person).c          # steeper head, same fork: less trail
     with pytest.raises(bm.InputError, match="wheelbase is derived from the frame"):
-        model.build({"chart.wheelbase": 1.0})
+        scenario.build({"chart.wheelbase": 1.0})
 
 
 def test_a_stand_in_is_written_as_the_frame_value_it_stands_for(person, tmp_path):
@@ -139,8 +139,8 @@ def test_a_stand_in_is_written_as_the_frame_value_it_stands_for(person, tmp_path
     assert built.fork_offset == pytest.approx(fork / 1000, abs=3e-3)   # through the published 63 mm trail
     path = tmp_path / "trail_chart.yaml"
     path.write_text(yaml.safe_dump(mapping))
-    model = Model(str(path), person)
-    p, _ = model.build({"chart.head_tube_angle": get_path(model, "chart.head_tube_angle") + math.radians(1.0)})
+    scenario = Scenario(str(path), person)
+    p = scenario.build({"chart.head_tube_angle": scenario.value("chart.head_tube_angle") + math.radians(1.0)}).parameters
     reference = changed(head_tube_angle=f"{chart['head_tube_angle'] + 1.0} deg", fork_offset=f"{float(built.fork_offset)!r} m")
     assert p.c == pytest.approx(bm.parameters(reference, person).c, rel=1e-12)
 
@@ -151,8 +151,8 @@ def test_a_chain_pose_naming_the_scenarios_own_bicycle_is_reseated_as_a_person(t
     person_here.write_text(yaml.safe_dump(PERSON))
     named.write_text(yaml.safe_dump({**PERSON, "bike": f"{BIKE}@{SIZE}"}))
     change = {"chart.stack": 0.600}
-    a = Model(f"{BIKE}@{SIZE}", str(person_here)).build(change)[0]
-    b = Model(f"{BIKE}@{SIZE}", str(named)).build(change)[0]
+    a = Scenario(f"{BIKE}@{SIZE}", str(person_here)).build(change).parameters
+    b = Scenario(f"{BIKE}@{SIZE}", str(named)).build(change).parameters
     assert b.to_dict() == a.to_dict()
 
 
@@ -161,7 +161,7 @@ def test_inputs_and_spreads_are_si(person):
     its unit (converted) or be bare (SI)."""
     from bikemass.analysis.uncertainty import read_spreads
     from bikemass.core.config import Node
-    assert get_path(Model("jamis"), "sections.seat_stay.wall") == pytest.approx(0.040 * 0.0254, rel=1e-12)
+    assert Scenario("jamis").value("sections.seat_stay.wall") == pytest.approx(0.040 * 0.0254, rel=1e-12)
     spreads = read_spreads(Node({"chart.stack": "2 mm", "rider.chain.torso_lean": {"distribution": "uniform",
                                                                                     "half_width": "3 deg"},
                                  "mB": 0.5}, "std.yaml", "uncertainty"))
@@ -182,7 +182,7 @@ def test_built_values_and_matrices_are_inputs_too():
     flexible = bm.stability(bm.parameters("benchmark"), stiffness=np.array(S))
     assert by_name.speeds["weave_speed"]["nominal"] == pytest.approx(flexible.weave_speeds[0], abs=1e-9)
     with pytest.raises(bm.InputError, match="a bicycle was given built, not as YAML|parameter names"):
-        Model(bm.load_bicycle("benchmark")).build({"geometry.trail": 0.1})
+        Scenario(bm.load_bicycle("benchmark")).build({"geometry.trail": 0.1})
 
 
 @pytest.mark.parametrize("c, lam", [(0.12, 0.45), (0.0025, 0.2)])

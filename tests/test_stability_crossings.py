@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 from bikemass.scenario import catalog
+from bikemass.scenario.scenario import parameters as scenario_parameters
 from bikemass.analysis.engine.modes import follow_modes
 from bikemass.analysis.engine.stability import analyse
 from bikemass.analysis.engine.speeds import speed_grid
@@ -74,7 +75,7 @@ def test_jamis_frames_with_thesis_riders(material):
     S = catalog.stiffness("jamis", material)
     kinds = set()
     for rider in JAMIS_RIDERS:
-        st, found = check_crossings(whipple_model(catalog.parameters("jamis", rider), S))
+        st, found = check_crossings(whipple_model(scenario_parameters("jamis", rider), S))
         kinds |= {k for _, k in found}
     assert "oscillatory" in kinds
 
@@ -82,7 +83,7 @@ def test_jamis_frames_with_thesis_riders(material):
 @pytest.mark.parametrize("bike, rider", [("benchmark", "none"), ("cargo", "none"), ("cargo", "relaxed-thesis"),
                                          ("cargo-loaded", "none"), ("cargo-loaded", "no-hands")])
 def test_benchmark_and_cargo(bike, rider):
-    check_crossings(whipple_model(catalog.parameters(bike, rider)))
+    check_crossings(whipple_model(scenario_parameters(bike, rider)))
 
 
 def test_issue_cases_a_split_weave_pair_destabilises_as_a_real_root(capsys):

@@ -5,12 +5,14 @@ import numpy as np
 import pytest
 
 from bikemass.scenario import catalog
+from bikemass.scenario.scenario import parameters as scenario_parameters
 from bikemass.bicycle import bicycle_parameters
 from bikemass.analysis.engine.stability import analyse
 from bikemass.models.whipple import whipple_model
 from bikemass.study import figures
 from bikemass.study.configurations import RIDERS, Configuration, configurations
 from bikemass.study.explain import PrintedInputs, half_unit_of_stiffness, with_rider
+from bikemass.study.flexible import FlexibleResults
 from bikemass.study.runs import CORRECTED, THESIS, Inputs, evaluate
 
 PNG = b"\x89PNG\r\n\x1a\n"
@@ -44,8 +46,8 @@ def test_grid_only_ranges_equal_the_stability_cores_grid_ranges(inputs, config):
 def test_runs_build_parameters_as_the_catalog_does(inputs):
     c = Configuration("jamis", "relaxed", "steel")
     thesis = inputs.parameters(THESIS, c)
-    assert thesis == catalog.parameters("jamis-thesis", "relaxed-thesis", "thesis", "exact")
-    assert inputs.parameters(CORRECTED, c) == catalog.parameters("jamis-thesis", "relaxed-thesis", "exact", "exact")
+    assert thesis == scenario_parameters("jamis-thesis", "relaxed-thesis", "thesis", "exact")
+    assert inputs.parameters(CORRECTED, c) == scenario_parameters("jamis-thesis", "relaxed-thesis", "exact", "exact")
     assert np.allclose(inputs.stiffness(THESIS, c), catalog.stiffness("jamis-thesis", "steel", "published"))
     assert np.allclose(inputs.stiffness(CORRECTED, c),
                        catalog.stiffness("jamis", "steel", "computed", "condensed"), rtol=1e-12)
@@ -65,7 +67,7 @@ def test_half_units_of_printed_values():
     assert half_unit_of_stiffness(6538.4) == pytest.approx(0.05)
     assert half_unit_of_stiffness(694.29) == pytest.approx(0.005)
     assert half_unit_of_stiffness(1208.0) == pytest.approx(0.05)
-    frame = catalog.parameters("jamis-thesis")
+    frame = scenario_parameters("jamis-thesis")
     rider = catalog.load_rider("relaxed-thesis").properties("exact")
     printed = PrintedInputs(frame, rider, np.array([[6538.4, 1234.9], [1234.9, 3622.1]]))
     half = printed.half_units()
@@ -98,6 +100,8 @@ def test_figure_count_matches_the_jobs(tmp_path, inputs):
     empty = {kind: {"strict": {"overall": []}, "marginal": {"overall": []}} for kind in ("grid", "exact")}
     run = {c: SimpleNamespace(modes=None, ranges=empty, weave_speeds=None) for c in configurations()}
     handling = {bike: {rider: None for rider in RIDERS[1:]} for bike in ("jamis", "cargo")}
-    jobs = figure_jobs(SimpleNamespace(runs={"thesis": run, "corrected": run}, handling=handling), inputs, tmp_path)
-    assert len(jobs) == figures.figure_count() == 2 * 3 + 73 + 5 + 2
+    flexible = FlexibleResults({}, {})
+    jobs = figure_jobs(SimpleNamespace(runs={"thesis": run, "corrected": run, "geometry": run}, handling=handling,
+                                       flexible=flexible), inputs, tmp_path)
+    assert len(jobs) == figures.figure_count() == 2 * 3 + 73 + 5 + 2 + 1
     assert len({figures.job_path(job) for job in jobs}) == len(jobs)          # every figure has its own file

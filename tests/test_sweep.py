@@ -10,6 +10,7 @@ import pytest
 from images import is_drawn
 
 from bikemass.scenario import catalog
+from bikemass.scenario.scenario import parameters as scenario_parameters
 from bikemass.cli.main import main
 from bikemass.analysis.engine import crossings
 from bikemass.models.whipple import whipple_model
@@ -70,7 +71,7 @@ def test_rows_equal_independent_stability_runs(tmp_path):
     finds every root stable."""
     spec = _spec(tmp_path, GRID)
     assert main(["sweep", spec, "--out", str(tmp_path / "o"), "--quiet"]) == 0
-    p = catalog.parameters("benchmark")
+    p = scenario_parameters("benchmark")
     for row in _rows(tmp_path / "o"):
         q = p.replace(c=float(row["c"]), lam=float(row["lam"]))
         found = general_crossings(q)
@@ -273,7 +274,7 @@ vary:
         assert len(set(values)) == 6, col
     nominal = next(r for r in rows if float(r["sections.seat_stay.wall"]) == 0.04
                    and float(r["sections.chain_stay.wall"]) == 0.04)
-    p, S = catalog.parameters("jamis", "relaxed"), catalog.stiffness("jamis", "steel")
+    p, S = scenario_parameters("jamis", "relaxed"), catalog.stiffness("jamis", "steel")
     weave = next(s for s, k, _ in general_crossings(p, S) if k == "oscillatory")
     assert float(nominal["weave_speed"]) == pytest.approx(weave, abs=1e-9)
     assert is_drawn(tmp_path / "g" / "heatmap.png")
@@ -313,7 +314,7 @@ vary:
             values[size] = float(row[f"chart.{key}"])
             edited["chart"][key] = values
         bicycle = catalog.load_bicycle(edited, size="56")
-        p = catalog.parameters(bicycle, str(tmp_path / "person.yaml"))
+        p = scenario_parameters(bicycle, str(tmp_path / "person.yaml"))
         weave = next(s for s, k, _ in general_crossings(p) if k == "oscillatory")
         assert float(row["weave_speed"]) == pytest.approx(weave, abs=1e-9)
         assert float(row["total_mass"]) == pytest.approx(p.mR + p.mB + p.mH + p.mF, rel=1e-12)
@@ -325,15 +326,15 @@ def test_a_poses_own_bicycle_is_read_once(tmp_path, monkeypatch):
     configuration."""
     from bikemass.core.paths import frames_dir
     from bikemass.rider import chain_file
-    from bikemass.scenario.inputs import Model
+    from bikemass.scenario.scenario import Scenario
     (tmp_path / "twin.yaml").write_text((frames_dir() / "jamis.yaml").read_text())
     loads = []
     real = chain_file.load_bicycle
     monkeypatch.setattr(chain_file, "load_bicycle", lambda *a, **k: loads.append(a) or real(*a, **k))
     (tmp_path / "own.yaml").write_text(PERSON + "bike: twin.yaml\n")
-    model = Model("jamis", str(tmp_path / "own.yaml"))
+    scenario = Scenario("jamis", str(tmp_path / "own.yaml"))
     for wall in (0.0008, 0.001, 0.0012):                     # m (SI, as the Model reads every input)
-        model.build({"sections.seat_stay.wall": wall})
+        scenario.build({"sections.seat_stay.wall": wall})
     assert len(loads) == 1
 
 

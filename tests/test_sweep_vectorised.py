@@ -14,6 +14,7 @@
 
 import math
 import warnings
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -24,7 +25,7 @@ from bikemass.core.errors import InputError
 from bikemass.models.parameters import NAMES
 from bikemass.models.plausibility import check_parameters, refused_parameters
 from bikemass.models.whipple import whipple_model
-from bikemass.scenario.catalog import parameters
+from bikemass.scenario.scenario import parameters
 from bikemass.sweep.evaluate import evaluate
 from bikemass.sweep.vectorised import NUMBERS, SPEEDS, evaluate_columns, takes
 
@@ -52,7 +53,9 @@ class Fixed:
     def build(self, changes):
         stiffness = changes.get("stiffness", "fixed")
         params = {k: v for k, v in changes.items() if k in NAMES}
-        return check_parameters(self.base.replace(**params), "spec"), self.frame_stiffness(stiffness)
+        p = check_parameters(self.base.replace(**params), "spec")
+        S = self.frame_stiffness(stiffness)
+        return SimpleNamespace(parameters=p, model=whipple_model(p, S))
 
 
 LOWEST = 1e-12

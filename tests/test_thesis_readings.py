@@ -14,6 +14,7 @@ import pytest
 import yaml
 
 from bikemass.fe import equivalent_stiffness, frame_modes
+from bikemass.scenario.scenario import parameters as scenario_parameters
 from bikemass.mass.sections import RoundSection
 from bikemass.core.units import INCH
 from thesis_frames import REFERENCE, jamis_structure, tables
@@ -118,7 +119,7 @@ def test_prose_numbers_that_no_table_holds():
     from bikemass.analysis.engine.modes import follow_modes
     from bikemass.models.whipple import whipple_model
 
-    modes = follow_modes(whipple_model(catalog.parameters("benchmark")), np.arange(0, 30.001, 0.01))
+    modes = follow_modes(whipple_model(scenario_parameters("benchmark")), np.arange(0, 30.001, 0.01))
     capsize = modes["capsize"].real
     assert capsize[-1] == pytest.approx(0.0763, abs=5e-5)          # "maximum 0.0763": its value at 30 m/s
     assert capsize.max() == pytest.approx(0.161, abs=1e-3)          # the maximum, near 10 m/s

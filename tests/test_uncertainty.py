@@ -10,8 +10,8 @@ import pytest
 from images import is_drawn
 from uncertainties import unumpy
 
-from bikemass.scenario import catalog
-from bikemass.scenario.inputs import Model
+from bikemass.scenario.scenario import parameters as scenario_parameters
+from bikemass.scenario.scenario import Scenario
 from bikemass.analysis.uncertainty import Spread, propagate
 from bikemass.cli.main import main
 
@@ -40,7 +40,7 @@ def test_montecarlo_agrees_with_linear_for_small_spreads():
     """Seeded; with the Browser's small spreads the outputs are near-linear: MC std within about
     3 times its sampling error (~4 % at 300 samples) of the linear std; the MC mean within 3
     standard errors of the nominal value plus 5 % of a std for the second-order bias."""
-    model = Model(str(BROWSER))
+    model = Scenario(str(BROWSER))
     spreads = {k: Spread("normal", v) for k, v in model.file_std.items()}
     mc = propagate(model, spreads, "montecarlo", samples=300, seed=7, speeds=np.linspace(0, 8, 9))
     for name in ("weave_speed", "capsize_speed"):
@@ -55,9 +55,9 @@ def test_montecarlo_agrees_with_linear_for_small_spreads():
 def test_linear_eigenvalue_std_equals_differences():
     """Eigenvalue std at 5 m/s (weave pair and capsize, away from any double root) from the
     eigenvector derivatives equals the root-sum-square of central differences."""
-    p = catalog.parameters("benchmark")
+    p = scenario_parameters("benchmark")
     spreads = {"c": Spread("normal", 0.002), "lam": Spread("normal", 0.004), "mB": Spread("normal", 0.3)}
-    r = propagate(Model("benchmark"), spreads, speeds=np.array([3.0, 5.0, 8.0]))
+    r = propagate(Scenario("benchmark"), spreads, speeds=np.array([3.0, 5.0, 8.0]))
     from bikemass.analysis.engine.modes import follow_modes
     from bikemass.models.whipple import whipple_model
     speeds = np.concatenate([np.linspace(0, 3, 61), [5.0, 8.0]])

@@ -9,7 +9,7 @@ import pytest
 import yaml
 from hypothesis import given, settings, strategies as st
 
-from bikemass.scenario import catalog
+from bikemass.scenario.scenario import parameters as scenario_parameters
 from bikemass.cli.main import main
 from bikemass.core.units import DIMENSIONS, INCH, POUND, UnitError, convert, dimension_of, to_si
 
@@ -114,8 +114,8 @@ def test_shipped_parameters_unchanged_by_the_unit_migration():
     main at 76a37c0, the last commit before the migration): equal to 1e-12 relative."""
     reference = json.loads(FIXTURE.read_text())
     for bike, expected in reference["bicycles"].items():
-        got = catalog.parameters(bike).to_dict()
+        got = scenario_parameters(bike).to_dict()
         assert got == pytest.approx(expected, rel=1e-12, abs=1e-12), bike
     for rider, expected in reference["jamis_with_rider"].items():
-        got = catalog.parameters("jamis", rider).to_dict()
+        got = scenario_parameters("jamis", rider).to_dict()
         assert got == pytest.approx(expected, rel=1e-12, abs=1e-12), rider

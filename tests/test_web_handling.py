@@ -55,7 +55,7 @@ def _callback(app, output):
 
 
 CONFIGURATION = ("jamis", None, "relaxed", "1.8", "75", "male", "hoods", "infinite", "exact",
-                 [""] * 9, [""] * 26)
+                 [""] * 9, [""] * 26, "whipple")
 
 
 def test_the_panel_draws_the_bode_plot_and_the_hqm_of_the_configuration(app):

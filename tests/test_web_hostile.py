@@ -175,7 +175,7 @@ def _body(app, fragment, **values):
 
 
 PAGE = dict(bike="benchmark", size=None, rider="none", height="1.8", mass="75", sex="male", hands="hoods",
-            stiffness="infinite", combine="exact")
+            stiffness="infinite", combine="exact", model="whipple")
 
 
 def _post(client, body, raw=None):

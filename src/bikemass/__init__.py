@@ -8,10 +8,13 @@ The Python API (docs/api.md)::
     p = bm.parameters(bike, rider)                  # the 26 Meijaard (2007) parameters
     S = bm.stiffness(bike, "steel")                 # 2x2 rear-frame stiffness, N m/rad
     result = bm.stability(p, stiffness=S)           # result.weave_speeds, .capsize_speeds
+    lean = bm.stability(bm.Scenario(bike, rider, model="rider-lean"))   # any member of the family
     fig = bm.plot_eigenvalues(result)               # a matplotlib Figure
 
 All quantities are SI (m, kg, s, rad, N) in the Meijaard et al. (2007) benchmark frame;
-see :mod:`bikemass.core.convention`.  The names below are imported on first use, so
+see :mod:`bikemass.core.convention`.  The API reference of every name is the documentation
+site's (README.md, "Documentation"); each docstring's Examples run in the test suite
+(tests/test_docstrings.py).  The names below are imported on first use, so
 ``import bikemass`` itself loads neither numpy nor scipy.
 """
 
@@ -20,9 +23,11 @@ import sys
 import types
 
 __version__ = "0.1.0"
+"""The version of bikemass (PEP 440); ``pyproject.toml`` reads it from here, ``bikemass --version`` prints it."""
 
 _API = {
-    "load_bicycle": "scenario.loading", "load_rider": "scenario.loading", "parameters": "scenario.catalog",
+    "load_bicycle": "scenario.loading", "load_rider": "scenario.loading", "parameters": "scenario.scenario",
+    "Scenario": "scenario.scenario", "Built": "scenario.scenario",
     "stiffness": "scenario.catalog",
     "stability": "analysis.results", "eigenvalues": "analysis.results", "matrices": "analysis.results",
     "speeds": "analysis.results", "linear_model": "analysis.results",

@@ -1,11 +1,17 @@
 """The linear stability of a bicycle as one typed, immutable result (``bm.stability``).
 
-:func:`stability` takes a benchmark parameter set and an optional rear-frame stiffness S (or
-any :class:`~bikemass.models.linear.LinearModel`), builds the model (the Whipple bicycle, rigid
-or with S in series with gravity, Williams 2015 Eq. 3.27-3.30), and hands it to the one engine
+:func:`stability` takes a benchmark parameter set and an optional rear-frame stiffness S, a
+:class:`~bikemass.scenario.scenario.Scenario` (any member of the model family: ``model=``), or any
+:class:`~bikemass.models.linear.LinearModel`, builds the model (by default the Whipple bicycle,
+rigid or with S in series with gravity, Williams 2015 Eq. 3.27-3.30), and hands it to the one engine
 (:mod:`bikemass.analysis.engine`): modes followed and named over a speed grid, exact critical
 speeds and stable ranges.
 """
+from collections.abc import Mapping
+
+import numpy as np
+from numpy.typing import ArrayLike
+
 from ..models.parameters import BenchmarkParameters
 from ..models.canonical import CanonicalMatrices, canonical_matrices
 from ..models.flexible_static import with_frame_stiffness
@@ -17,22 +23,31 @@ from ..scenario.catalog import stiffness_matrix
 from ..core.errors import InputError
 from ..core.limits import MAX_SPEEDS
 from .engine.speeds import speed_count, speed_grid, speed_values
+from ..models.family import build as build_member
+from ..models.lean import RiderLeanParameters
 from ..models.linear import LinearModel
+from ..models.registry import BASE, parse_model
+from ..models.tyres import Tyres, as_tyres
 from ..models.whipple import whipple_model
-from .engine.modes import follow_modes
-from .engine.stability import analyse
+from ..scenario.scenario import Built, Scenario
+from .engine.modes import Modes, follow_modes
+from .engine.stability import StabilityResult, analyse
 
 DEFAULT_MARGINAL = 2.0
 """Modulus (rad/s) below which an unstable eigenvalue counts as marginally stable (the thesis's)."""
 
 
-def matrices(params, stiffness=None):
+def matrices(params: BenchmarkParameters | CanonicalMatrices,
+             stiffness: "ArrayLike | None" = None) -> CanonicalMatrices:
     """The canonical matrices M, C1, K0, K2 of a parameter set, with a flexible rear frame.
+
+    ``M q'' + v C1 q' + (g K0 + v^2 K2) q = f`` with ``q = [roll, steer]`` (rad): Meijaard et al.
+    (2007), Appendix A.
 
     Parameters
     ----------
     params : BenchmarkParameters or CanonicalMatrices
-        From :func:`bikemass.models.parameters` (SI); matrices are taken as they are.
+        From :func:`bikemass.parameters` (SI); matrices are taken as they are.
     stiffness : array_like of shape (2, 2), optional
         Rear-frame stiffness S (N m/rad) from :func:`bikemass.stiffness`; ``None`` = rigid.
 
@@ -41,6 +56,26 @@ def matrices(params, stiffness=None):
     CanonicalMatrices
         ``M`` (kg m^2), ``C1`` (kg m^2), ``K0`` (kg m), ``K2`` (kg m), ``g`` (m/s^2); with S,
         ``g K0`` is the static stiffness ``gK0 - gK0^T (gK0 + S)^-1 gK0``.
+
+    Raises
+    ------
+    InputError
+        Parameters the model is not defined for, or an S that is not symmetric positive definite.
+    InputTypeError
+        ``params`` of another type.
+
+    See Also
+    --------
+    linear_model : The state-space model built from them.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> m = bm.matrices(bm.parameters("benchmark"))   # Meijaard et al. (2007), Sec. 4: M, K2
+    >>> print(f"M:  {m.M[0, 0]:.5f} {m.M[0, 1]:.11f} {m.M[1, 1]:.11f}")
+    M:  80.81722 2.31941332209 0.29784188200
+    >>> print(f"K2: {m.K2[0, 1]:.11f} {m.K2[1, 1]:.11f}")
+    K2: 76.59734589573 2.65431523795
     """
 
     if isinstance(params, CanonicalMatrices):
@@ -62,30 +97,40 @@ def _stiffness(S):
     return stiffness_matrix(S)
 
 
-def speeds(start=0.0, stop=30.0, step=0.05, max_speeds=MAX_SPEEDS):
-    """The speed grid ``start, start + step, ...`` up to ``stop`` (m/s, never beyond), shape (n,).
+def speeds(start: float = 0.0, stop: float = 30.0, step: float = 0.05, max_speeds: int = MAX_SPEEDS) -> np.ndarray:
+    """The speed grid ``start, start + step, ...`` up to ``stop`` (m/s, never beyond).
 
     Parameters
     ----------
-    start, stop, step : float
-        First speed, last speed at most, and step (m/s).
+    start, stop : float
+        First speed and last speed at most (m/s), ``0 <= start < stop``; ``stop`` is on the grid
+        when ``step`` divides the span, and never passed.
+    step : float
+        Spacing (m/s), > 0.
     max_speeds : int
         Most speeds (default 100000, as the command line's ``--max-speeds``).
 
     Returns
     -------
     numpy.ndarray of shape (n,)
+        Increasing speeds (m/s), read-only.
 
     Raises
     ------
     InputError
         Unless ``0 <= start < stop``, ``step > 0`` and at most ``max_speeds`` speeds.
 
+    See Also
+    --------
+    stability, eigenvalues : Take the grid as ``speeds=``.
+
     Examples
     --------
     >>> import bikemass as bm
-    >>> bm.speeds(0, 10, 2.5).tolist()
-    [0.0, 2.5, 5.0, 7.5, 10.0]
+    >>> bm.speeds(0, 2, 0.5).tolist()
+    [0.0, 0.5, 1.0, 1.5, 2.0]
+    >>> len(bm.speeds())                              # the thesis's 0..30 m/s in 0.05 m/s
+    601
     """
     if not all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in (start, stop, step)):
         raise InputError("speeds", f"{start!r}:{stop!r}:{step!r}", "start, stop and step as numbers (m/s)")
@@ -96,45 +141,120 @@ def speeds(start=0.0, stop=30.0, step=0.05, max_speeds=MAX_SPEEDS):
     return speed_grid(start, stop, step)
 
 
-def linear_model(params, stiffness=None):
-    """The linear model of a parameter set: the Whipple bicycle, rigid or with the quasi-static
-    flexible rear frame of stiffness S (a :class:`~bikemass.models.linear.LinearModel` is
-    returned as it is).
+def linear_model(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Built | LinearModel",
+                 stiffness: "ArrayLike | None" = None, model: "str | None" = None,
+                 tyres: "Tyres | str | Mapping | None" = None) -> LinearModel:
+    """The linear model of a parameter set or a scenario (a
+    :class:`~bikemass.models.linear.LinearModel` is returned as it is).
 
     Parameters
     ----------
-    params : BenchmarkParameters or LinearModel
-        From :func:`bikemass.models.parameters` (SI).
+    params : BenchmarkParameters, RiderLeanParameters, Scenario, Built or LinearModel
+        From :func:`bikemass.parameters` (SI), the leaning rider's parameters, a
+        :class:`~bikemass.scenario.scenario.Scenario` (built with its own model unless ``model``,
+        ``tyres`` or ``stiffness`` say otherwise), a scenario built, or a model.
     stiffness : array_like of shape (2, 2), optional
-        Rear-frame stiffness S (N m/rad) from :func:`bikemass.stiffness`; ``None`` = rigid.
+        Rear-frame stiffness S (N m/rad) from :func:`bikemass.stiffness`; ``None`` = rigid.  The
+        Whipple model's quasi-static spring; with a scenario any stiffness choice it takes.
+    model : str, optional
+        ``"whipple"`` (default), ``"rider-lean"``, ``"tyre"``, ``"flexible"`` or members joined by
+        ``+`` (:mod:`bikemass.models.registry`).  ``rider-lean`` needs the rider split at the hips
+        (a Scenario with a rider, or RiderLeanParameters); ``flexible`` the bicycle's beam models
+        (a Scenario).
+    tyres : Tyres, str or Mapping, optional
+        The ``tyre`` member's tyres (a tyre file or a mapping in its form; default
+        :data:`~bikemass.models.tyres.DEFAULT_TYRES`).
 
     Returns
     -------
     LinearModel
-        States roll-angle, steer-angle, roll-rate, steer-rate, heading, lateral; inputs
-        roll-torque, steer-torque; ``A(v)``, ``B(v)`` as polynomials in speed.
+        States roll-angle, steer-angle (rad), roll-rate, steer-rate (rad/s), heading (rad),
+        lateral (m); inputs roll-torque, steer-torque (N m) (a richer member adds its own);
+        ``A(v)``, ``B(v)`` as polynomials in speed.
+
+    Raises
+    ------
+    InputError
+        Parameters the model is not defined for, a bad S, an unknown model, or an argument given
+        with a LinearModel or a built scenario.
+    InputTypeError
+        ``params`` of another type.
+
+    See Also
+    --------
+    stability : Analyses the model over speed.
+    transfer_function, simulate : Its responses at one speed.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> model = bm.linear_model(bm.parameters("benchmark"))
+    >>> print(model.name, model.state_names, model.input_names)
+    whipple ('roll-angle', 'steer-angle', 'roll-rate', 'steer-rate', 'heading', 'lateral')
+    ('roll-torque', 'steer-torque')
+    >>> model.state_matrix([5.0]).shape                 # A(v) at one speed: (speeds, 6, 6)
+    (1, 6, 6)
     """
-    if isinstance(params, LinearModel):
-        if stiffness is not None:
-            raise InputError("stiffness", "(matrix)", "no stiffness with a LinearModel (it is built in)")
-        return params
-    if not isinstance(params, BenchmarkParameters):
-        raise wrong_type("params", params, "params must be BenchmarkParameters (bm.parameters) or a LinearModel")
-    return whipple_model(check_parameters(params, "params"), _stiffness(stiffness))
+    return built_model(params, stiffness, model, tyres)[0]
 
 
-def eigenvalues(params, stiffness=None, speeds=None, max_speeds=MAX_SPEEDS):
+def built_model(params, stiffness=None, model=None, tyres=None):
+    """``(LinearModel, S or None)`` of :func:`linear_model`'s arguments: the model and the quasi-static
+    rear-frame stiffness (N m/rad) it holds."""
+    given = {k: v for k, v in (("stiffness", stiffness), ("model", model), ("tyres", tyres)) if v is not None}
+    if isinstance(params, (LinearModel, Built)):
+        if given:
+            what = "a LinearModel" if isinstance(params, LinearModel) else "a built scenario"
+            raise InputError(next(iter(given)), "(argument)", f"none with {what} (it is built in; give it to "
+                             "the Scenario)")
+        return (params, None) if isinstance(params, LinearModel) else (params.model, params.stiffness)
+    if isinstance(params, Scenario):
+        built = (params.replace(**given) if given else params).build()
+        return built.model, built.stiffness
+    choice = parse_model(BASE if model is None else model)
+    if isinstance(params, RiderLeanParameters) and not choice.has("rider-lean"):
+        params = params.rigid()
+    if not isinstance(params, (BenchmarkParameters, RiderLeanParameters)):
+        raise wrong_type("params", params, "params must be BenchmarkParameters (bm.parameters), a Scenario or a "
+                         "LinearModel")
+    if not choice.members:
+        S = _stiffness(stiffness)
+        return whipple_model(check_parameters(params, "params"), S), S
+    if _stiffness(stiffness) is not None:
+        raise InputError("stiffness", "(matrix)", f"none with the model {choice.name}: a 2x2 S is the whipple "
+                         "model's quasi-static spring (the flexible member takes a material: bm.Scenario(bike, "
+                         "rider, stiffness=material, model=...))")
+    if choice.has("flexible"):
+        raise InputError("model", choice.name, "a Scenario for the flexible member (its compliances come from the "
+                         "bicycle's beam models): bm.stability(bm.Scenario(bike, rider, stiffness='steel', "
+                         f"model={choice.name!r}))")
+    if choice.has("rider-lean") and not isinstance(params, RiderLeanParameters):
+        raise InputError("model", choice.name, "the rider split at the hips for rider-lean: a Scenario with a "
+                         f"rider (bm.Scenario(bike, rider, model={choice.name!r})) or RiderLeanParameters")
+    if isinstance(params, BenchmarkParameters):
+        check_parameters(params, "params")
+    return build_member(choice, params, as_tyres(tyres) if choice.has("tyre") else tyres), None
+
+
+def eigenvalues(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Built | LinearModel",
+                stiffness: "ArrayLike | None" = None, speeds: "ArrayLike | None" = None,
+                max_speeds: int = MAX_SPEEDS, model: "str | None" = None,
+                tyres: "Tyres | str | Mapping | None" = None) -> Modes:
     """Eigenvalues over speed, followed across speed and named.
 
     Parameters
     ----------
-    params, stiffness
+    params : BenchmarkParameters, RiderLeanParameters, Scenario, Built or LinearModel
         As for :func:`linear_model`.
+    stiffness : array_like of shape (2, 2), optional
+        Rear-frame stiffness S (N m/rad); ``None`` = rigid.
     speeds : array_like of shape (n,), optional
         Increasing speeds >= 0 (m/s); default 0..30 m/s in 0.05 m/s steps.
     max_speeds : int
         Most speeds taken (default 100000, as the command line's ``--max-speeds``); more is an
         InputError before any work.
+    model, tyres : str or Tyres, optional
+        The model of the family and the ``tyre`` member's tyres, as for :func:`linear_model`.
 
     Returns
     -------
@@ -142,42 +262,94 @@ def eigenvalues(params, stiffness=None, speeds=None, max_speeds=MAX_SPEEDS):
         ``.speeds`` (n,) m/s, ``.labels`` (weave 1, weave 2, capsize, caster, ...),
         ``.eigenvalues`` (n, m) complex 1/s, ``.eigenvectors`` (n, N, m); ``modes["capsize"]``
         is one column.  Arrays are read-only.
+
+    Raises
+    ------
+    InputError
+        Bad parameters, S or speeds.
+
+    See Also
+    --------
+    stability : The same modes with critical speeds and stable ranges.
+    plot_eigenvalues : Draw them.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> modes = bm.eigenvalues(bm.parameters("benchmark"), speeds=[0.0, 5.0])
+    >>> print(modes.labels)
+    ('weave 1', 'weave 2', 'capsize', 'caster')
+    >>> weave = modes["weave 2"][1]           # 5 m/s; Meijaard et al. (2007), Table 2: -0.775341882 +- 4.46486771i
+    >>> print(f"{weave.real:.9f} +- {abs(weave.imag):.8f}i 1/s")
+    -0.775341882 +- 4.46486771i 1/s
     """
-    return follow_modes(linear_model(params, stiffness), speed_values(speeds, max_speeds))
+    return follow_modes(linear_model(params, stiffness, model, tyres), speed_values(speeds, max_speeds))
 
 
-def stability(params, stiffness=None, speeds=None, marginal=DEFAULT_MARGINAL, max_speeds=MAX_SPEEDS):
+def stability(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Built | LinearModel",
+              stiffness: "ArrayLike | None" = None, speeds: "ArrayLike | None" = None,
+              marginal: float = DEFAULT_MARGINAL, max_speeds: int = MAX_SPEEDS, model: "str | None" = None,
+              tyres: "Tyres | str | Mapping | None" = None) -> StabilityResult:
     """Eigenvalues, critical speeds and stable speed ranges of a bicycle.
 
     Parameters
     ----------
-    params : BenchmarkParameters or LinearModel
-        From :func:`bikemass.models.parameters`, or any model of the family.
+    params : BenchmarkParameters, RiderLeanParameters, Scenario, Built or LinearModel
+        From :func:`bikemass.parameters`, a :class:`~bikemass.scenario.scenario.Scenario`, or any
+        model of the family (see :func:`linear_model`).
     stiffness : array_like of shape (2, 2), optional
         Rear-frame stiffness S (N m/rad), e.g. ``bm.stiffness(bike, "steel")``; ``None`` = rigid.
     speeds : array_like of shape (n,), optional
         Increasing speeds >= 0 (m/s); default 0..30 m/s in 0.05 m/s steps (the thesis's).
         Critical speeds are exact (found without a grid) on the grid's span.
     marginal : float
-        Modulus (rad/s) below which an unstable eigenvalue counts as marginally stable.
+        Modulus (rad/s) below which an unstable eigenvalue counts as marginally stable (the
+        thesis's 2 rad/s).
     max_speeds : int
         Most speeds taken (default 100000, as the command line's ``--max-speeds``); more is an
         InputError before any work.
+    model, tyres
+        The member of the model family and its tyres, as for :func:`linear_model`.
 
     Returns
     -------
     StabilityResult
         ``.speeds`` (n,), ``.eigenvalues`` (n, m) complex, ``.crossings``, ``.weave_speeds``,
-        ``.capsize_speeds``, ``.ranges``, ``.mode_ranges``, ``.modes``.
+        ``.capsize_speeds``, ``.stable_speeds``, ``.ranges``, ``.mode_ranges``, ``.modes``.
+
+    Raises
+    ------
+    InputError
+        Bad parameters, S or speeds (more than ``max_speeds``), or a ``marginal`` that is not a
+        positive finite modulus.
+
+    See Also
+    --------
+    eigenvalues : The modes alone.
+    plot_eigenvalues, plot_critical_speeds : Draw results.
+    sensitivity : Derivatives of the critical speeds.
 
     Examples
     --------
+    The benchmark bicycle's weave and capsize speeds: Meijaard et al. (2007) print 4.29238253634111
+    and 6.02426201538837 m/s; the exact values (50-digit arithmetic) are 4.2923825363411040 and
+    6.0242620153883589 m/s.
+
     >>> import bikemass as bm
     >>> result = bm.stability(bm.parameters("benchmark"))
-    >>> [round(c.speed, 6) for c in result.crossings]
-    [4.292383, 6.024262]
+    >>> print(f"{result.weave_speeds[0]:.9f} {result.capsize_speeds[0]:.9f}")
+    4.292382536 6.024262015
+    >>> [(round(a, 4), round(b, 4)) for a, b in result.stable_speeds]
+    [(4.2924, 6.0243)]
+
+    A steel rear frame in series with gravity:
+
+    >>> bike = bm.load_bicycle("jamis")
+    >>> r = bm.stability(bm.parameters(bike, "relaxed"), stiffness=bm.stiffness(bike, "steel"))
+    >>> print(f"weave {r.weave_speeds[0]:.4f} m/s, capsize {r.capsize_speeds[0]:.4f} m/s")
+    weave 5.7421 m/s, capsize 8.5505 m/s
     """
     if isinstance(marginal, bool) or not isinstance(marginal, (int, float)) or not 0 < marginal < float("inf"):
         raise InputError("marginal", marginal, "a positive finite modulus in rad/s")
-    S = _stiffness(stiffness)
-    return analyse(linear_model(params, S), speed_values(speeds, max_speeds), marginal, S)
+    linear, S = built_model(params, stiffness, model, tyres)
+    return analyse(linear, speed_values(speeds, max_speeds), marginal, S)

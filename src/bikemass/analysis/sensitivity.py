@@ -9,28 +9,38 @@ and, by the implicit function theorem on ``Re lambda(v, p) = 0``::
 
     d v* / d p = -Re(d lambda / d p) / Re(d lambda / d v)
 
-``dA/dp`` comes from the complex step through the one model builder
+For the Whipple model ``dA/dp`` comes from the complex step through the one model builder
 (:mod:`bikemass.analysis.model`), so every number is exact to rounding: there is no
-finite-difference step anywhere.  The critical speeds are the engine's closed form
-(:mod:`bikemass.analysis.engine.closed_form`), the same numbers ``bm.stability`` reports.  Elasticities are ``(p / v*) d v* / d p``
-(per cent change of the speed per per cent change of the parameter).
+finite-difference step anywhere, and the critical speeds are the engine's closed form
+(:mod:`bikemass.analysis.engine.closed_form`), the same numbers ``bm.stability`` reports.  Any
+other member of the family (a :class:`~bikemass.scenario.scenario.Scenario` with ``model=``) goes
+through the engine: its critical speeds are :func:`~bikemass.analysis.engine.critical.critical_speeds`
+(wobble apart, as ``bm.stability`` names it), and ``dA/dp`` of its generated code is a five-point
+central difference in each parameter (relative step :data:`MEMBER_STEP`; truncation error of order
+``step**4``, rounding of order ``1e-16 / step``: about 1e-10 relative).  Elasticities are
+``(p / v*) d v* / d p`` (per cent change of the speed per per cent change of the parameter).
 """
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from ..models.parameters import NAMES
 from .engine import closed_form
 from .engine.crossings import OSCILLATORY, REAL
+from .engine.naming import WOBBLE
 from .model import STIFFNESS_ENTRIES, model_of, state_matrix_derivatives, stiffness_state_derivatives, values_of
+from .engine.critical import critical_speeds
 from .results import _stiffness
+from ..core.display import Display
 from ..core.errors import InputError, short
+from ..core.keywords import renamed_keywords
 from ..models.parameters import BenchmarkParameters
 from ..models.plausibility import check_parameters
 from ..core.errors import wrong_type
-from ..scenario.inputs import get_path
-from ..scenario.inputs import Model
+from ..scenario.scenario import Built, Scenario
 
 SPEEDS = {"weave_speed": OSCILLATORY, "capsize_speed": REAL}
 """Output name -> crossing kind (first crossing of that kind on (0, vmax])."""
@@ -58,8 +68,8 @@ def speed_derivatives(model, dA, speed, kind, frequency):
     return {name: float(-dlam(d).real / dv) for name, d in dA.items()}
 
 
-@dataclass(frozen=True)
-class Sensitivity:
+@dataclass(frozen=True, repr=False)
+class Sensitivity(Display):
     """Critical speeds (m/s, ``None`` if none) and their derivatives ``{name: (m/s) per unit}``."""
 
     params: dict
@@ -68,6 +78,19 @@ class Sensitivity:
     d_weave_speed: dict
     d_capsize_speed: dict
     d_stiffness: dict = None      # {speed key: {S entry: (m/s) per N m/rad}}, rigid frame: None
+
+    def display_rows(self):
+        """The two speeds and their three largest elasticities (Jupyter's table, ``repr``)."""
+        rows = []
+        for which in ("weave_speed", "capsize_speed"):
+            v = getattr(self, which)
+            rows.append((which, "none" if v is None else f"{v:.6g}", "m/s"))
+            if v is not None:
+                e = {k: x for k, x in self.elasticities(which).items() if x is not None}
+                top = sorted(e, key=lambda k: -abs(e[k]))[:3]
+                rows.append((f"largest elasticities of the {which.replace('_', ' ')}",
+                             ", ".join(f"{k} {e[k]:+.3g}" for k in top), "(p/v) dv/dp"))
+        return rows
 
     def elasticities(self, which):
         """``{name: (p / v) dv/dp}`` for ``which`` in ``weave_speed`` | ``capsize_speed``."""
@@ -84,12 +107,75 @@ class Sensitivity:
         return out
 
 
-def sensitivity(params, S=None, vmax=30.0, names=NAMES):
-    """:class:`Sensitivity` of ``params`` (:class:`~bikemass.models.parameters.BenchmarkParameters`) with
-    rear-frame stiffness ``S`` (2x2 N m/rad or ``None``); crossings searched on ``(0, vmax]`` m/s.
-    InputError for parameters the model is not defined for, an S that is not symmetric positive
-    definite, a ``vmax`` that is not a positive finite speed or ``names`` not among the 26."""
-    params, S, names = _checked(params, S, vmax, names)
+@renamed_keywords(S="stiffness")
+def sensitivity(params: "BenchmarkParameters | Scenario | Built", stiffness: "ArrayLike | None" = None,
+                vmax: float = 30.0, names: "Sequence[str]" = NAMES) -> Sensitivity:
+    """Exact derivatives of the weave and capsize speeds with respect to each benchmark parameter.
+
+    The first crossing of each kind on ``(0, vmax]`` and its derivative by the implicit function
+    theorem on the crossing eigenvalue (left and right eigenvectors), with the matrices'
+    derivatives by the complex step: exact to rounding, no finite differences.
+
+    Parameters
+    ----------
+    params : BenchmarkParameters, Scenario or Built
+        A benchmark set (the Whipple model, with rear-frame stiffness ``stiffness``), or a
+        :class:`~bikemass.scenario.scenario.Scenario` (built) of any member of the model family.
+    stiffness : array_like of shape (2, 2), optional
+        Rear-frame stiffness S (N m/rad) of a benchmark set; ``None`` = rigid, and ``None`` with a
+        scenario (it has its own). With S the derivatives with respect to its entries are given
+        too. (``S=`` is the deprecated old name.)
+    vmax : float
+        Highest speed searched (m/s), positive and finite.
+    names : sequence of str
+        The parameters to differentiate by (default all 26, :data:`~bikemass.PARAMETER_NAMES`).
+
+    Returns
+    -------
+    Sensitivity
+        ``weave_speed``, ``capsize_speed`` (m/s, ``None`` if none); ``d_weave_speed``,
+        ``d_capsize_speed`` ``{name: (m/s) per unit of the parameter}``; ``d_stiffness``
+        ``{speed: {S entry: (m/s) per N m/rad}}`` or ``None``; ``elasticities(which)`` the
+        dimensionless ``(p/v) dv/dp``.
+
+    Raises
+    ------
+    InputError
+        Parameters the model is not defined for, an S that is not symmetric positive definite, a
+        ``vmax`` that is not a positive finite speed, or ``names`` not among the 26.
+
+    See Also
+    --------
+    geometry_sensitivity : Derivatives with respect to the geometry a bicycle file is written in.
+    uncertainty : Spreads of the inputs carried to spreads of the speeds.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> p = bm.parameters("benchmark")
+    >>> s = bm.sensitivity(p, names=("c", "lam", "mB"))
+    >>> print(f"weave {s.weave_speed:.6f} m/s: d/dc {s.d_weave_speed['c']:+.4f} (m/s)/m, "
+    ...       f"d/dlam {s.d_weave_speed['lam']:+.4f} (m/s)/rad")
+    weave 4.292383 m/s: d/dc +11.4800 (m/s)/m, d/dlam +4.1767 (m/s)/rad
+    >>> {k: round(v, 4) for k, v in s.elasticities("capsize_speed").items()}
+    {'c': 0.3836, 'lam': 0.2247, 'mB': 0.3585}
+
+    The same derivative by a central difference of two stability analyses:
+
+    >>> h = 1e-5
+    >>> weave = lambda c: bm.stability(p.replace(c=c)).weave_speeds[0]
+    >>> print(f"{(weave(p.c + h) - weave(p.c - h)) / (2 * h):+.4f} (m/s)/m")
+    +11.4800 (m/s)/m
+    """
+    if isinstance(params, (Scenario, Built)):
+        if stiffness is not None:
+            raise InputError("stiffness", "(matrix)", "none with a scenario (its stiffness choice is built in)")
+        built = params.build() if isinstance(params, Scenario) else params
+        if built.choice.members:
+            _checked(built.parameters, None, vmax, names)
+            return _member_sensitivity(built, vmax, tuple(names))
+        params, stiffness = built.parameters, built.stiffness
+    params, S, names = _checked(params, stiffness, vmax, names)
     model = model_of(values_of(params), S)
     found = closed_form.axis_crossings(model, 0.0, vmax)
     speeds, derivs = {}, {}
@@ -110,6 +196,43 @@ def sensitivity(params, S=None, vmax=30.0, names=NAMES):
                        d_capsize_speed=derivs["capsize_speed"], d_stiffness=d_s)
 
 
+MEMBER_STEP = 1e-3
+"""Relative step of the five-point central difference of a member's ``dA/dp`` (absolute for a zero
+parameter, in its SI unit)."""
+
+
+def member_state_derivatives(built, speed, names=NAMES, step=MEMBER_STEP):
+    """``{name: dA/dp}`` (dynamic block at ``speed``) of a built member's generated model, by a
+    five-point central difference in each benchmark parameter of the set it takes."""
+    base = built.values()
+    n = built.model.n_dynamic
+
+    def at(name, x):
+        return built.with_values({**base, name: x}).dynamic_matrix(speed)[:n, :n]
+    out = {}
+    for name in names:
+        x = base[name]
+        h = step * abs(x) if x else step
+        out[name] = (8 * (at(name, x + h) - at(name, x - h)) - (at(name, x + 2 * h) - at(name, x - 2 * h))) / (12 * h)
+    return out
+
+
+def _member_sensitivity(built, vmax, names):
+    """:class:`Sensitivity` of a built member of the family other than the Whipple bicycle."""
+    found = critical_speeds(built.model, vmax)
+    speeds, derivs = {}, {}
+    for key, kind in SPEEDS.items():
+        crossing = next((c for c in found.crossings if c.kind == kind and (kind == REAL or c.mode != WOBBLE)), None)
+        speeds[key] = None if crossing is None else crossing.speed
+        derivs[key] = ({n: None for n in names} if crossing is None else speed_derivatives(
+            built.model, member_state_derivatives(built, crossing.speed, names), crossing.speed, kind,
+            crossing.frequency))
+    base = built.values()
+    return Sensitivity(params={n: float(base[n]) for n in names}, weave_speed=speeds["weave_speed"],
+                       capsize_speed=speeds["capsize_speed"], d_weave_speed=derivs["weave_speed"],
+                       d_capsize_speed=derivs["capsize_speed"])
+
+
 def _checked(params, S, vmax, names):
     """``(params, S, names)`` checked as :func:`sensitivity` needs them (InputError otherwise)."""
     if not isinstance(params, BenchmarkParameters):
@@ -126,7 +249,7 @@ def _checked(params, S, vmax, names):
 def sensitivity_figure(result, title="", size=None):
     """Horizontal bar chart of the elasticities of both speeds (a matplotlib Figure; ``size`` in inches)."""
     # lazy: matplotlib only for a figure
-    from matplotlib.figure import Figure
+    from ..plots.figure import Figure
 
     fig = Figure(figsize=size or (10, 7.5), layout="constrained")
     axes = fig.subplots(1, 2, sharey=True)
@@ -152,45 +275,103 @@ GEOMETRY_STEP = 1e-4
 """Default relative step of the geometry -> parameters central difference."""
 
 
-def input_value(model, key):
-    """Current value of an input key of a :class:`~bikemass.scenario.inputs.Model` (SI, or the
-    unit the YAML file uses for it, e.g. degrees for chain angles)."""
-    return get_path(model, key)
-
-
-def geometry_sensitivity(model, keys, result=None, step=GEOMETRY_STEP):
-    """Derivatives of the weave and capsize speeds w.r.t. geometry-level inputs ``keys`` (dotted
-    paths, see :mod:`bikemass.scenario.inputs`).
+def geometry_sensitivity(scenario: Scenario, keys: "str | Sequence[str]", result: Sensitivity | None = None,
+                         step: float = GEOMETRY_STEP) -> dict:
+    """Derivatives of the weave and capsize speeds with respect to geometry-level inputs.
 
     Chain rule: ``dv/dx = sum_p (dv/dp)(dp/dx) + sum_S (dv/dS)(dS/dx)``.  ``dv/dp`` and ``dv/dS``
-    are exact (:func:`sensitivity`); ``dp/dx`` and ``dS/dx`` (geometry -> mass properties, beam
-    stiffness, rider pose) are central differences with relative step ``step``, and again with
-    twice the step: ``difference_check`` is the largest change between the two (m/s per unit),
-    an estimate of the finite-difference error.
-    Returns ``{key: {value, step, d_weave_speed, d_capsize_speed, difference_check}}``.
+    are exact (:func:`sensitivity`); for a member other than the Whipple bicycle ``p`` runs over every
+    parameter its generated code takes (the upper body's, the tyres', the compliances' too) and
+    ``dv/dp`` is :func:`member_state_derivatives`'.  ``dp/dx`` and ``dS/dx`` (geometry -> mass
+    properties, beam stiffness, rider pose) are central differences with relative step ``step``, and
+    again with twice the step: ``difference_check`` is the largest change between the two (m/s per
+    unit), an estimate of the finite-difference error.
+
+    Parameters
+    ----------
+    scenario : Scenario
+        A bicycle, rider, stiffness and model: ``bm.Scenario("jamis", "relaxed", "steel")``.
+    keys : str or sequence of str
+        Dotted paths into the bicycle or pose YAML (``"geometry.trail"``,
+        ``"sections.seat_stay.wall"``, ``"chart.stack"``, ``"rider.segments.torso.angle"``) or
+        benchmark names; see :mod:`bikemass.scenario.inputs`.
+    result : Sensitivity, optional
+        The scenario's :func:`sensitivity` if already computed.
+    step : float
+        Relative step of the central differences, in (0, 0.1].
+
+    Returns
+    -------
+    dict
+        ``{key: {"value", "step", "weave_speed", "capsize_speed", "difference_check"}}``: the
+        input's value and step in SI (m, kg, rad, ... whatever unit its file writes it in);
+        ``weave_speed`` and ``capsize_speed`` the derivatives of those speeds, and
+        ``difference_check``, in m/s per SI unit.
+
+    Raises
+    ------
+    InputError
+        An unknown key, a ``step`` out of range, or a scenario that cannot be built.
+    InputTypeError
+        ``scenario`` not a :class:`~bikemass.scenario.scenario.Scenario`.
+
+    See Also
+    --------
+    sensitivity : The exact parameter derivatives it chains.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> d = bm.geometry_sensitivity(bm.Scenario("jamis", "relaxed"), ["geometry.trail"])["geometry.trail"]
+    >>> print(f"trail {d['value']:.3f} m: d(weave speed)/d(trail) {d['weave_speed']:+.2f} (m/s)/m")
+    trail 0.060 m: d(weave speed)/d(trail) +15.50 (m/s)/m
     """
-    if not isinstance(model, Model):
-        raise wrong_type("model", model, "a bikemass.scenario.inputs.Model")
+    if not isinstance(scenario, Scenario):
+        raise wrong_type("scenario", scenario, "a bikemass.Scenario")
     if isinstance(keys, str):
         keys = [keys]
     if isinstance(step, bool) or not isinstance(step, (int, float)) or not 0 < step <= 0.1:
         raise InputError("step", short(step), "a relative step between 0 and 0.1")
-    p0, S0 = model.build()
-    result = result or sensitivity(p0, S0)
+    built = scenario.build()
+    member = bool(built.choice.members)
+    result = result or sensitivity(built)
+    if member:
+        result = _all_member_derivatives(built, result)
     out = {}
     for key in keys:
-        x = input_value(model, key)
+        x = scenario.value(key)
         h = step * abs(x) if x else step
         estimates = []
         for hh in (h, 2 * h):
-            (pa, Sa), (pb, Sb) = model.build({key: x + hh}), model.build({key: x - hh})
-            dp = {n: (getattr(pa, n) - getattr(pb, n)) / (2 * hh) for n in result.params}
-            dS = None if S0 is None else (np.asarray(Sa) - np.asarray(Sb)) / (2 * hh)
+            a, b = scenario.build({key: x + hh}), scenario.build({key: x - hh})
+            if member:
+                va, vb = a.values(), b.values()
+                dp = {n: (va[n] - vb[n]) / (2 * hh) for n in result.params}
+            else:
+                dp = {n: (getattr(a.parameters, n) - getattr(b.parameters, n)) / (2 * hh) for n in result.params}
+            dS = None if built.stiffness is None else (np.asarray(a.stiffness) - np.asarray(b.stiffness)) / (2 * hh)
             estimates.append({k: _chain(result, k, dp, dS) for k in SPEEDS})
         out[key] = {"value": x, "step": h, **estimates[0],
                     "difference_check": max((abs(estimates[0][k] - estimates[1][k])
                                              for k in SPEEDS if estimates[0][k] is not None), default=None)}
     return out
+
+
+def _all_member_derivatives(built, result):
+    """``result`` with the speeds' derivatives by every parameter of a member's generated code."""
+    names = tuple(built.values())
+    derivs = {}
+    for key, kind in SPEEDS.items():
+        v = getattr(result, key)
+        if v is None:
+            derivs[key] = {n: None for n in names}
+            continue
+        crossing = min((c for c in critical_speeds(built.model, v + 1.0).crossings if c.kind == kind),
+                       key=lambda c: abs(c.speed - v))          # the crossing the result found, for its frequency
+        derivs[key] = speed_derivatives(built.model, member_state_derivatives(built, v, names), v, kind,
+                                        crossing.frequency)
+    return Sensitivity(params=built.values(), weave_speed=result.weave_speed, capsize_speed=result.capsize_speed,
+                       d_weave_speed=derivs["weave_speed"], d_capsize_speed=derivs["capsize_speed"])
 
 
 def _chain(result, key, dp, dS):

@@ -12,6 +12,12 @@ the 26 benchmark names or a geometry-level key of :mod:`bikemass.scenario.inputs
   direction ``dp/dx`` (and ``dS/dx``) is a central difference through the model.
 * ``montecarlo``: ``samples`` draws of all inputs (seeded), every output recomputed.
 
+That is the Whipple model's way (``M``, ``C1``, ``K0``, ``K2`` are its 2x2 matrices).  Any other
+member of the family (a :class:`~bikemass.scenario.scenario.Scenario` with ``model=``) goes through
+the engine: ``linear`` takes each input's ``dA/dx`` (the dynamic block, at every speed) by a central
+difference through the builder, and ``montecarlo`` builds every draw; there is no 2x2 ``matrices``
+block (the model's own coordinates are more than roll and steer).
+
 They agree while the outputs are close to linear over a few standard deviations.  They
 cannot agree where an eigenvalue is not differentiable: where two real roots merge into
 a complex pair (the weave's birth, ~0.7-1.8 m/s on the benchmark) the linear std of the
@@ -19,20 +25,27 @@ eigenvalues grows without bound, and a critical speed that some samples do not h
 (no crossing) has no linear counterpart.
 """
 
+import os
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
+from numpy.typing import ArrayLike
 
+from ..core.display import Display
 from ..core.errors import InputError
+from ..core.keywords import renamed_keywords
 from ..core.limits import MAX_SPEEDS
 from ..core.units import DIMENSIONS, UnitError, dimension_of, split_quantity
 from ..models.parameters import NAMES
 from ..plots.stability import COLOURS, OTHER_COLOUR
-from ..scenario.inputs import Model, get_path
+from ..scenario.scenario import Scenario
 from .engine.critical import critical_speeds
 from .engine.modes import follow_modes
 from .engine.speeds import speed_grid, speed_values
-from .model import MATRICES, STEP, model_of, values_of
+from .model import STEP, model_of, values_of
+from .engine.crossings import REAL
+from .engine.naming import WOBBLE
 from .sensitivity import SPEEDS, speed_derivatives
 
 DISTRIBUTIONS = ("normal", "uniform")
@@ -88,20 +101,35 @@ def read_spreads(node):
     return out
 
 
-def directions(model, spreads, step=1e-4):
+def directions(scenario, spreads, step=1e-4):
     """``{key: (dp, dS)}``: derivative of the 26 parameters (dict) and of S (2x2 or None) per unit
-    of each input; exact unit vectors for parameter names, central differences for the rest."""
-    p0, S0 = model.build()
+    of each input of the Whipple ``scenario``; exact unit vectors for parameter names, central
+    differences for the rest."""
+    built = scenario.build()
+    S0 = built.stiffness
     out = {}
     for key in spreads:
         if key in NAMES:
             out[key] = ({n: float(n == key) for n in NAMES}, None if S0 is None else np.zeros((2, 2)))
             continue
-        x = get_path(model, key)
+        x = scenario.value(key)
         h = step * abs(x) if x else step
-        (pa, Sa), (pb, Sb) = model.build({key: x + h}), model.build({key: x - h})
-        dp = {n: (getattr(pa, n) - getattr(pb, n)) / (2 * h) for n in NAMES}
-        out[key] = (dp, None if S0 is None else (np.asarray(Sa) - np.asarray(Sb)) / (2 * h))
+        a, b = scenario.build({key: x + h}), scenario.build({key: x - h})
+        dp = {n: (getattr(a.parameters, n) - getattr(b.parameters, n)) / (2 * h) for n in NAMES}
+        out[key] = (dp, None if S0 is None else (np.asarray(a.stiffness) - np.asarray(b.stiffness)) / (2 * h))
+    return out
+
+
+def member_directions(scenario, spreads, speeds, step=1e-4):
+    """``{key: dA}``: the dynamic block's derivative (n_speeds, n, n) per unit of each input of a
+    member other than the Whipple bicycle, by a central difference through the builder (relative
+    step ``step``, absolute for an input at zero)."""
+    out = {}
+    for key in spreads:
+        x = scenario.value(key)
+        h = step * abs(x) if x else step
+        a, b = scenario.build({key: x + h}).model, scenario.build({key: x - h}).model
+        out[key] = (a.dynamic_matrix(speeds) - b.dynamic_matrix(speeds)) / (2 * h)
     return out
 
 
@@ -119,8 +147,8 @@ def matrices_of(model, g):
     return {"M": mech.M, "C1": mech.C[1], "K0": mech.K[0] / g, "K2": mech.K[2]}
 
 
-@dataclass(frozen=True)
-class Propagation:
+@dataclass(frozen=True, repr=False)
+class Propagation(Display):
     """Nominal values and standard deviations; ``linear`` and (if sampled) ``montecarlo`` results."""
 
     matrices: dict          # {M|C1|K0|K2: {"nominal": 2x2, "std": 2x2}} (method's std)
@@ -129,6 +157,17 @@ class Propagation:
     inputs: dict            # {key: {"distribution", "std"}}
     method: str
     samples: object = None  # Monte Carlo draws: {"weave_speed": array, "capsize_speed": array} or None
+
+    def display_rows(self):
+        """The method, the inputs' spreads and each critical speed's nominal value and std (Jupyter's
+        table, ``repr``)."""
+        rows = [("method", self.method, ""),
+                ("inputs", ", ".join(f"{k} +- {v['std']:.3g}" for k, v in self.inputs.items()), "SI")]
+        for key, value in self.speeds.items():
+            nominal, std = value.get("nominal"), value.get("std")
+            shown = "none" if nominal is None else f"{nominal:.6g}" + ("" if std is None else f" +- {std:.3g}")
+            rows.append((key, shown, "m/s"))
+        return rows
 
     def to_dict(self):
         eig = {"speeds": list(map(float, self.eigen["speeds"])), "modes": {
@@ -163,26 +202,61 @@ def linear_derivatives(params, S, dirs, speeds):
     return out, modes, crossings
 
 
-def propagate(model, spreads, method="linear", samples=1000, seed=0, speeds=None, step=1e-4,
+def first_crossings(model, speeds):
+    """``{weave_speed|capsize_speed: Crossing or None}``: the first crossing of each kind (wobble
+    apart) on ``(0, max(speeds, 30)]`` m/s."""
+    found = critical_speeds(model, max(float(np.max(speeds)), 30.0))
+    return {key: next((c for c in found.crossings if c.kind == kind and (kind == REAL or c.mode != WOBBLE)), None)
+            for key, kind in SPEEDS.items()}
+
+
+def member_derivatives(scenario, built, spreads, speeds, step):
+    """As :func:`linear_derivatives`, for a member other than the Whipple bicycle (no matrices)."""
+    model0 = built.model
+    modes = follow_modes(model0, speeds)
+    X = modes.eigenvectors
+    Y = np.linalg.inv(X)
+    crossings = first_crossings(model0, speeds)
+    v = np.asarray(speeds, dtype=float)
+    at = {name: np.array([c.speed]) for name, c in crossings.items() if c is not None}
+    out = {}
+    for key, dA in member_directions(scenario, spreads, np.concatenate([v, *at.values()]), step).items():
+        d = {"matrices": {}, "eig": np.einsum("nij,njk,nki->ni", Y, dA[:len(v)], X)}
+        ends = dict(zip(at, dA[len(v):]))
+        for name, c in crossings.items():
+            d[name] = None if c is None else speed_derivatives(
+                model0, {key: ends[name]}, c.speed, SPEEDS[name], c.frequency)[key]
+        out[key] = d
+    return out, modes, crossings
+
+
+def propagate(scenario, spreads, method="linear", samples=1000, seed=0, speeds=None, step=1e-4,
               max_speeds=MAX_SPEEDS):
-    """:class:`Propagation` of ``spreads`` (``{key: Spread}``) through ``model``
-    (:class:`~bikemass.scenario.inputs.Model`); ``speeds`` (m/s) for the eigenvalue bands, at most
-    ``max_speeds`` of them, and at most :data:`MAX_BAND_VALUES` Monte Carlo samples x speeds."""
+    """:class:`Propagation` of ``spreads`` (``{key: Spread}``) through a
+    :class:`~bikemass.scenario.scenario.Scenario` (any member of the model family); ``speeds`` (m/s)
+    for the eigenvalue bands, at most ``max_speeds`` of them, and at most :data:`MAX_BAND_VALUES`
+    Monte Carlo samples x speeds."""
+    if not isinstance(scenario, Scenario):
+        raise InputError("scenario", "(argument)", f"a bikemass.Scenario, not {type(scenario).__name__}")
     _check_options(spreads, method, samples, seed)
     speeds = speed_grid(0, 10, 0.1) if speeds is None else speed_values(speeds, max_speeds)
     if method == "montecarlo" and samples * len(speeds) > MAX_BAND_VALUES:
         raise InputError("samples", samples, f"at most {MAX_BAND_VALUES} samples x speeds (the Monte Carlo bands "
                          f"keep 4 real parts each), got {samples} x {len(speeds)}")
-    params, S = model.build()
+    built = scenario.build()
     sigma = {k: s.std for k, s in spreads.items()}
-    derivs, modes, crossings = linear_derivatives(params, S, directions(model, spreads, step), speeds)
-    nominal = matrices_of(model_of(values_of(params), S), params.g)
+    if built.choice.members:
+        derivs, modes, crossings = member_derivatives(scenario, built, spreads, speeds, step)
+        nominal = {}
+    else:
+        params, S = built.parameters, built.stiffness
+        derivs, modes, crossings = linear_derivatives(params, S, directions(scenario, spreads, step), speeds)
+        nominal = matrices_of(model_of(values_of(params), S), params.g)
 
     def rss(get):
         return np.sqrt(sum((np.asarray(get(derivs[k]), dtype=float) * sigma[k]) ** 2 for k in spreads))
 
-    matrices = {m: {"nominal": np.real(nominal[m]), "std": rss(lambda d: d["matrices"][m])}
-                for m in MATRICES}
+    matrices = {m: {"nominal": np.real(nominal[m]), "std": rss(lambda d: d["matrices"][m])} for m in nominal}
     speed_out = {}
     for name, c in crossings.items():
         speed_out[name] = {"nominal": None if c is None else c.speed,
@@ -194,7 +268,7 @@ def propagate(model, spreads, method="linear", samples=1000, seed=0, speeds=None
     inputs = {k: {"distribution": s.kind, "std": s.std} for k, s in spreads.items()}
     if method == "linear":
         return Propagation(matrices, speed_out, {"speeds": speeds, "modes": eig_modes}, inputs, method)
-    return _montecarlo(model, spreads, samples, seed, speeds, matrices, speed_out, eig_modes, inputs)
+    return _montecarlo(scenario, spreads, samples, seed, speeds, matrices, speed_out, eig_modes, inputs)
 
 
 MAX_SAMPLES = 10 ** 6
@@ -225,41 +299,111 @@ def _check_options(spreads, method, samples, seed):
             raise InputError("seed", seed, "a random seed: a whole number >= 0")
 
 
-def uncertainty(bike, spreads, rider=None, stiffness="infinite", combine="exact", method="linear",
-                samples=1000, seed=0, speeds=None, max_speeds=MAX_SPEEDS):
-    """:class:`Propagation` for a bicycle (name or file), rider and stiffness choice; ``spreads``
-    maps input keys to a standard deviation (normal) or a :class:`Spread`; ``speeds`` (m/s) of
-    the eigenvalue bands, at most ``max_speeds`` (InputError before any work otherwise)."""
+@renamed_keywords(bike="bicycle")
+def uncertainty(bicycle: "str | os.PathLike | Scenario", spreads: "Mapping[str, float | Spread]",
+                rider: "str | None" = None, stiffness: str = "infinite", combine: str = "exact",
+                method: str = "linear", samples: int = 1000, seed: int = 0, speeds: "ArrayLike | None" = None,
+                max_speeds: int = MAX_SPEEDS, model: str = "whipple", tyres: "str | Mapping | None" = None) -> Propagation:
+    """The spread of the canonical matrices, eigenvalues and critical speeds from spreads of the inputs.
+
+    ``linear``: first-order propagation, ``std(y) = sqrt(sum_i (dy/dx_i std_i)^2)``, with exact
+    derivatives (complex step; eigenvalues and critical speeds by their implicit functions);
+    ``montecarlo``: ``samples`` seeded draws of all inputs, every output recomputed. They agree
+    while the outputs are close to linear over a few standard deviations (docs/analysis.md).
+
+    Parameters
+    ----------
+    bicycle : str, os.PathLike or Scenario
+        Anything ``bm.load_bicycle`` takes (a BicycleParameters file's ``+/-`` values are available
+        as spreads), or a :class:`~bikemass.scenario.scenario.Scenario`, whose own rider, stiffness,
+        model and tyres are used. (``bike=`` is the deprecated old name.)
+    spreads : Mapping
+        ``{input key: std}`` (a normal distribution) or ``{input key: Spread}``
+        (:class:`~bikemass.analysis.uncertainty.Spread`: ``normal`` or ``uniform``), the std in
+        SI (m, kg, rad, ...) when bare, or a ``"<number> <unit>"`` string (``"0.1 mm"``). Keys: the 26 benchmark names or
+        geometry-level paths (:mod:`bikemass.scenario.inputs`).
+    rider : str, optional
+        A pose name or file; ``None``: no rider.
+    stiffness : str
+        ``"infinite"`` (rigid) or a material name, as for :func:`bikemass.stiffness`.
+    combine : {"exact", "thesis"}
+        How the rider joins the rear frame.
+    method : {"linear", "montecarlo"}
+        First-order propagation, or sampling (``samples`` draws from ``seed``).
+    samples : int
+        Monte Carlo draws (``montecarlo`` only).
+    seed : int
+        Seed of the Monte Carlo draws (a whole number >= 0): the same seed, the same result.
+    speeds : array_like of shape (n,), optional
+        Speeds (m/s) of the eigenvalue bands; default 0..10 m/s in 0.1 m/s.
+    max_speeds : int
+        Most speeds taken (default 100000); more is an InputError before any work.
+    model : str
+        The member of the model family (``"whipple"``, ``"rider-lean"``, ``"tyre"``, ``"flexible"``
+        or members joined by ``+``).
+    tyres : str or Mapping, optional
+        The ``tyre`` member's tyre file or mapping (default: the published defaults).
+
+    Returns
+    -------
+    Propagation
+        ``speeds`` ``{weave_speed|capsize_speed: {"nominal", "std", ...}}`` (m/s), ``matrices``
+        ``{M|C1|K0|K2: {"nominal", "std"}}``, ``eigen`` (the bands over ``speeds``), ``inputs``,
+        ``method``, ``samples`` (the draws, Monte Carlo only).
+
+    Raises
+    ------
+    InputError
+        An unknown key, a negative std, an unknown method, a bad ``samples`` or ``seed``, more than
+        ``max_speeds`` speeds, or a bicycle or rider that cannot be loaded.
+
+    See Also
+    --------
+    sensitivity : The derivatives the linear method uses.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> u = bm.uncertainty("benchmark", {"c": 0.005, "mB": 1.0})
+    >>> w = u.speeds["weave_speed"]
+    >>> print(f"weave {w['nominal']:.4f} +- {w['std']:.4f} m/s")
+    weave 4.2924 +- 0.0594 m/s
+    >>> mc = bm.uncertainty("benchmark", {"c": 0.005, "mB": 1.0}, method="montecarlo", samples=200, seed=1)
+    >>> print(f"Monte Carlo: +- {mc.speeds['weave_speed']['std']:.2f} m/s from {len(mc.samples['weave_speed'])} draws")
+    Monte Carlo: +- 0.06 m/s from 200 draws
+    """
     if not isinstance(spreads, dict):
         raise InputError("spreads", "(argument)", f"a mapping of input key -> std or Spread, got {type(spreads).__name__}")
     spreads = {k: v if isinstance(v, Spread) else Spread("normal", v) for k, v in spreads.items()}
-    return propagate(Model(bike, rider, stiffness, combine), spreads, method, samples, seed, speeds,
-                     max_speeds=max_speeds)
+    scenario = bicycle if isinstance(bicycle, Scenario) else Scenario(bicycle, rider, stiffness, combine, model=model,
+                                                                 tyres=tyres)
+    return propagate(scenario, spreads, method, samples, seed, speeds, max_speeds=max_speeds)
 
 
-def _montecarlo(model, spreads, n, seed, speeds, matrices, speed_out, eig_modes, inputs):
+def _montecarlo(scenario, spreads, n, seed, speeds, matrices, speed_out, eig_modes, inputs):
     rng = np.random.default_rng(seed)
     keys = list(spreads)
-    nominal = {k: get_path(model, k) for k in keys}
+    nominal = {k: scenario.value(k) for k in keys}
     draws = {k: nominal[k] + spreads[k].sample(rng, n) for k in keys}
-    mats = {m: [] for m in MATRICES}
+    mats = {m: [] for m in matrices}
     crit = {name: [] for name in SPEEDS}
     reals = []
     for j in range(n):
         try:
-            p, S = model.build({k: float(draws[k][j]) for k in keys})
+            built = scenario.build({k: float(draws[k][j]) for k in keys})
         except InputError as exc:            # a draw the model is not defined for: the spread is too wide
             raise InputError(exc.source, exc.key, f"spreads whose Monte Carlo draws stay valid (draw {j + 1} of "
                              f"{n}: {exc.expected})") from None
-        m_j = model_of(values_of(p), S)
-        for m, x in matrices_of(m_j, p.g).items():
-            mats[m].append(np.real(x))
-        found = critical_speeds(m_j)
+        if matrices:
+            p = built.parameters
+            for m, x in matrices_of(model_of(values_of(p), built.stiffness), p.g).items():
+                mats[m].append(np.real(x))
+        found = critical_speeds(built.model)
         for name in SPEEDS:
             v = getattr(found, name)
             crit[name].append(np.nan if v is None else v)
-        reals.append(follow_modes(m_j, speeds).eigenvalues.real)
-    for m in MATRICES:
+        reals.append(follow_modes(built.model, speeds).eigenvalues.real)
+    for m in matrices:
         a = np.array(mats[m])
         matrices[m] = {**matrices[m], "linear_std": matrices[m]["std"], "std": a.std(axis=0, ddof=1),
                        "mean": a.mean(axis=0)}
@@ -286,7 +430,7 @@ def uncertainty_figure(result, title="", size=None):
     """Real parts against speed with +-2 std bands (linear) and 95 % Monte Carlo bands, and the
     Monte Carlo histograms of the critical speeds (a matplotlib Figure)."""
     # lazy: matplotlib only for a figure
-    from matplotlib.figure import Figure
+    from ..plots.figure import Figure
 
     fig = Figure(figsize=size or (11, 5), layout="constrained")
     axes = fig.subplots(1, 2, width_ratios=(2, 1))

@@ -24,6 +24,20 @@ class Bicycle:
     ``rider_included`` whether the rear frame already holds a rider (then none may be added),
     ``speed`` the speed (m/s) a parameter-set file gives beside the parameters (BicycleParameters'
     ``v``; not a bicycle parameter, the file's suggestion of a speed to look at) or ``None``.
+
+    See Also
+    --------
+    bikemass.load_bicycle : Makes one from a name, a file or a mapping.
+    bikemass.parameters : Its benchmark parameter set.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> bike = bm.load_bicycle("jamis")
+    >>> sorted(bike.bodies())
+    ['front_frame', 'front_wheel', 'rear_frame', 'rear_wheel']
+    >>> print(f"rear frame {bike.bodies()['rear_frame'].mass:.3f} kg")
+    rear frame 4.557 kg
     """
 
     name: str

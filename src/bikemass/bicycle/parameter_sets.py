@@ -86,7 +86,30 @@ class RiderLeanParameters:
     inertia of body ``?`` (kg m^2), ``m?`` its mass (kg); ``d1``-``d4``, ``l1``-``l6`` the
     lengths locating the joints and mass centres (m); ``rf``, ``rr`` the wheel radii (m);
     ``g`` gravity (m/s^2); ``k9`` (N m/rad) and ``c9`` (N m s/rad) the lean joint's stiffness
-    and damping."""
+    and damping.
+
+    See Also
+    --------
+    bikemass.load_parameter_set : Reads them from a ``MooreRiderLean2012`` set.
+    bikemass.models.moore2012 : The conversions between these values and bikemass's leaning rider.
+
+    Examples
+    --------
+    The Jamis with the Relaxed rider split at the hips, written as Moore's values and read back:
+
+    >>> import json, os, tempfile
+    >>> import bikemass as bm
+    >>> from bikemass.models.moore2012 import to_moore_values
+    >>> from bikemass.rider.lean_split import rider_lean_parameters
+    >>> bike = bm.load_bicycle("jamis")
+    >>> lean = rider_lean_parameters(bike, bm.seated_rider(bike, "relaxed"))
+    >>> path = os.path.join(tempfile.mkdtemp(), "jamis-lean.yml")
+    >>> document = {"parameterization": "MooreRiderLean2012", "values": to_moore_values(lean, speed=5.0)}
+    >>> _ = open(path, "w").write(json.dumps(document))
+    >>> moore = bm.load_parameter_set(path).parameters
+    >>> print(type(moore).__name__, f"upper body {moore.mg:.2f} kg")
+    RiderLeanParameters upper body 56.35 kg
+    """
 
     c9: float
     d1: float
@@ -182,6 +205,20 @@ class ParameterSetFile:
         Every value as read (SI), the principal ones included.
     source : str
         The file.
+
+    See Also
+    --------
+    bikemass.load_parameter_set : Reads one.
+
+    Examples
+    --------
+    >>> import json, os, tempfile
+    >>> import bikemass as bm
+    >>> path = os.path.join(tempfile.mkdtemp(), "benchmark.yml")
+    >>> _ = open(path, "w").write(json.dumps(bm.parameters("benchmark").to_dict()))    # the flat form
+    >>> found = bm.load_parameter_set(path)
+    >>> found.parameterization, found.speed, found.parameters.mB
+    ('benchmark', None, 85.0)
     """
 
     parameterization: str
@@ -258,26 +295,50 @@ def read_parameter_set(node):
                             MappingProxyType(dict(read)), str(node.source))
 
 
-def load_parameter_set(path):
-    """:class:`ParameterSetFile` of the YAML (or JSON) file ``path``: a bikemass benchmark
-    parameter file or a BicycleParameters parameter-set file (module docstring).
+def load_parameter_set(path: "str | os.PathLike") -> ParameterSetFile:
+    """A parameter set from YAML (or JSON): a bikemass benchmark parameter file or a BicycleParameters
+    parameter-set file (module docstring).
 
     Parameters
     ----------
     path : str or os.PathLike
-        The file.
+        The file: flat (the 26 benchmark names at the top level) or BicycleParameters'
+        ``ParameterSet.to_yaml`` form (``parameterization:``, ``values:``), parameterized as
+        ``benchmark``/``Meijaard2007``, ``principal``/``Moore2019`` or ``MooreRiderLean2012``.
 
     Returns
     -------
     ParameterSetFile
-        ``.parameters`` is a :class:`~bikemass.models.parameters.BenchmarkParameters` for the benchmark
-        and principal parameterizations, a :class:`RiderLeanParameters` for MooreRiderLean2012;
-        ``.speed`` the file's ``v`` (m/s) or None.
+        ``.parameters`` is a :class:`~bikemass.BenchmarkParameters` for the benchmark and
+        principal parameterizations (a principal set converted), a
+        :class:`~bikemass.RiderLeanParameters` for MooreRiderLean2012; ``.speed`` the file's ``v``
+        (m/s) or None.
 
     Raises
     ------
     InputError
         Not a parameter set, or bad content (naming the file and the key).
+
+    Warns
+    -----
+    ParameterFileWarning
+        Values beside the set's own names that do not add up.
+
+    See Also
+    --------
+    load_bicycle : Takes such a file as a bicycle.
+    load_parameter_text : BicycleParameters' text files (``name = value+/-std``).
+
+    Examples
+    --------
+    >>> import json, os, tempfile
+    >>> import bikemass as bm
+    >>> values = {**bm.parameters("benchmark").to_dict(), "v": 5.0}       # v: a speed, not a parameter
+    >>> path = os.path.join(tempfile.mkdtemp(), "benchmark.yml")
+    >>> _ = open(path, "w").write(json.dumps({"parameterization": "Meijaard2007", "values": values}))
+    >>> found = bm.load_parameter_set(path)
+    >>> print(found.parameterization, found.speed, found.parameters == bm.parameters("benchmark"))
+    benchmark 5.0 True
     """
     if not isinstance(path, (str, os.PathLike)):
         raise wrong_type("path", path, "a parameter-set YAML file path")

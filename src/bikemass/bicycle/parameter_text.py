@@ -57,7 +57,27 @@ _VALUE = re.compile(rf"^\s*([-+]?{_NUMBER})\s*(?:(?:\+/-|±)\s*({_NUMBER}))?\s*$
 
 
 class ParameterFileWarning(BikemassWarning):
-    """A BicycleParameters file is read, but something in it does not add up."""
+    """A BicycleParameters file is read, but something in it does not add up.
+
+    See Also
+    --------
+    bikemass.load_parameter_text : Issues it.
+
+    Examples
+    --------
+    >>> import os, tempfile, warnings
+    >>> import bikemass as bm
+    >>> path = os.path.join(tempfile.mkdtemp(), "TandemBenchmark.txt")
+    >>> lines = [f"{k} = {v}" for k, v in bm.parameters("benchmark").to_dict().items()]
+    >>> _ = open(path, "w").write(chr(10).join(lines + ["mStoker = 70.0"]))
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always", bm.ParameterFileWarning)
+    ...     measured = bm.load_parameter_text(path)
+    >>> print(caught[0].category.__name__, str(caught[0].message).split(": ", 1)[1])
+    ParameterFileWarning not used by the Whipple model: mStoker
+    >>> issubclass(bm.ParameterFileWarning, bm.BikemassWarning)
+    True
+    """
 
 
 def _key(part, k):
@@ -147,7 +167,24 @@ def looks_like_parameter_text(text):
 @dataclass(frozen=True)
 class MeasuredParameters:
     """A measured bicycle: nominal :class:`~bikemass.models.parameters.BenchmarkParameters`,
-    ``std[name]`` for the 26 names (SI), and ``notes``: how every key beyond the 26 was used."""
+    ``std[name]`` for the 26 names (SI), and ``notes``: how every key beyond the 26 was used.
+
+    See Also
+    --------
+    bikemass.load_parameter_text : Reads one.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> import bikemass as bm
+    >>> path = os.path.join(tempfile.mkdtemp(), "BenchmarkBenchmark.txt")
+    >>> values = bm.parameters("benchmark").to_dict()
+    >>> lines = [f"{k} = {v}+/-0.001" for k, v in values.items()]
+    >>> _ = open(path, "w").write(chr(10).join(lines))      # BicycleParameters' name = value+/-std
+    >>> measured = bm.load_parameter_text(path)
+    >>> print(measured.parameters.w, measured.std["w"])
+    1.02 0.001
+    """
 
     parameters: object
     std: MappingProxyType
@@ -259,8 +296,49 @@ def measured_parameters(pt, key=""):
     return MeasuredParameters(params, MappingProxyType({n: std[n] for n in NAMES}), tuple(notes), pt.source)
 
 
-def load_parameter_text(path):
-    """:class:`MeasuredParameters` of the BicycleParameters file at ``path``."""
+def load_parameter_text(path: "str | os.PathLike") -> MeasuredParameters:
+    """A measured bicycle from a BicycleParameters parameter file (``<Name>Benchmark.txt``).
+
+    Lines ``name = value`` or ``name = value+/-std`` (comma-separated values are averaged); the
+    26 benchmark names are read in SI, and every further key a BicycleParameters file may hold is
+    either used (noted in ``notes``) or warned about.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The parameter text file.
+
+    Returns
+    -------
+    MeasuredParameters
+        ``.parameters`` (the nominal :class:`~bikemass.BenchmarkParameters`), ``.std`` (SI; 0
+        where the file gives none), ``.notes``.
+
+    Raises
+    ------
+    InputError
+        A file that cannot be read, a line that is not ``name = value``, a name given twice, or
+        a parameter missing.
+
+    Warns
+    -----
+    ParameterFileWarning
+        Something in the file that does not add up (an unused key, an inconsistent value).
+
+    See Also
+    --------
+    load_bicycle : Also reads these files (``bm.load_bicycle("BenchmarkBenchmark.txt")``).
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> import bikemass as bm
+    >>> path = os.path.join(tempfile.mkdtemp(), "BenchmarkBenchmark.txt")
+    >>> lines = [f"{k} = {v}" for k, v in bm.parameters("benchmark").to_dict().items()]
+    >>> _ = open(path, "w").write(chr(10).join(lines))
+    >>> bm.load_parameter_text(path).parameters == bm.parameters("benchmark")
+    True
+    """
     if not isinstance(path, (str, os.PathLike)):
         raise wrong_type("path", path, "a BicycleParameters file path")
     return measured_parameters(read_parameter_text(path))

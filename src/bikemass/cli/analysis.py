@@ -89,44 +89,39 @@ def _bike_options(p, data, figure):
     dialect.add_rider(p)
     dialect.add_combine(p)
     dialect.add_stiffness(p)
+    dialect.add_model(p)
     p.add_argument("--max-speed", type=float, default=30.0, metavar="M_S",
                    help="look for critical speeds on (0, M_S] m/s (default 30)")
     dialect.add_output(p, what=data)
     dialect.add_plot(p, figure)
 
 
-def _inputs(args):
-    """Checked figure options (or None), parameters and stiffness of BIKE/--rider/--stiffness."""
-    # lazy: the library loads numpy; bikemass --help must not
-    from ..scenario import catalog
-
+def _options(args):
+    """Checked figure options (or None) of ``--plot``, and ``--max-speed`` checked."""
     options = dialect.figure_checked(args)
     if not 0 < args.max_speed < 1e4:
         raise InputError("--max-speed", args.max_speed, "a speed in m/s between 0 and 1e4")
-    return options, catalog.parameters(args.bike, args.rider, args.combine), catalog.stiffness(args.bike, args.stiffness)
+    return options
 
 
 def _title(args):
-    return f"{args.bike}, rider {args.rider}, stiffness {args.stiffness}"
+    model = "" if args.model == "whipple" else f", model {args.model}"
+    return f"{args.bike}, rider {args.rider}, stiffness {args.stiffness}{model}"
 
 
 def run_sensitivity(args):
     # lazy: the library loads numpy; bikemass --help must not
     from ..analysis.sensitivity import geometry_sensitivity, sensitivity, sensitivity_figure
 
-    options, params, S = _inputs(args)
+    options = _options(args)
     keys = [k.strip() for k in (args.inputs or "").split(",") if k.strip()]
     if args.inputs is not None and not keys:
         raise InputError("--inputs", repr(args.inputs), "a comma-separated list of at least one dotted path")
     if keys and not 0 < args.step < 0.1:
         raise InputError("--step", args.step, "a relative step between 0 and 0.1")
-    result = sensitivity(params, S, vmax=args.max_speed)
-    geometry = {}
-    if keys:
-        # lazy: the library loads numpy; bikemass --help must not
-        from ..scenario.inputs import Model
-        model = Model(args.bike, args.rider, args.stiffness, args.combine, origin="--inputs")
-        geometry = geometry_sensitivity(model, keys, result, args.step)
+    scenario = dialect.scenario(args, origin="--inputs")
+    result = sensitivity(scenario, vmax=args.max_speed)
+    geometry = geometry_sensitivity(scenario, keys, result, args.step) if keys else {}
 
     def render(fmt):
         if fmt == "table":
@@ -207,28 +202,27 @@ def read_std_file(path):
 
 def run_uncertainty(args):
     # lazy: the library loads numpy; bikemass --help must not
-    from ..scenario.inputs import Model
     from ..analysis.uncertainty import Spread, propagate, uncertainty_figure
 
-    options = _inputs(args)[0]
+    options = _options(args)
     if not 2 <= args.samples <= 10 ** 6:
         raise InputError("--samples", args.samples, "a number of samples from 2 to 1000000")
     speeds = dialect.parse_speeds(args.speeds)
-    model = Model(args.bike, args.rider, args.stiffness, args.combine, origin=args.std or args.bike)
-    spreads = {k: Spread("normal", s) for k, s in model.file_std.items()}
+    scenario = dialect.scenario(args, origin=args.std or args.bike)
+    spreads = {k: Spread("normal", s) for k, s in scenario.file_std.items()}
     if args.std:
         spreads.update(read_std_file(args.std))
     if not spreads:
         raise InputError(args.bike, "(uncertainties)", "standard deviations: a BicycleParameters file with "
                          "+/- values, or --std FILE")
-    result = propagate(model, spreads, args.method, args.samples, args.seed, speeds)
+    result = propagate(scenario, spreads, args.method, args.samples, args.seed, speeds)
 
     def render(fmt):
         if fmt == "table":
             return uncertainty_table(result, _title(args))
         if fmt == "csv":
             return uncertainty_csv(result)
-        return dialect.document(result.to_dict(), fmt, UNCERTAINTY_UNITS)
+        return dialect.result_document(result.to_dict(), UNCERTAINTY_UNITS, fmt)
     dialect.emit(args, render)
     if args.plot:
         dialect.save_plot(args, uncertainty_figure(result, _title(args), options.size), options)

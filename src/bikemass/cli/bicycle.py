@@ -21,7 +21,9 @@ def _params_description():
     return ("The 26 benchmark parameters (SI, radians) of BIKE with an optional rider. "
             f"BIKE: a shipped bicycle ({shipped}), a bicycle YAML file (docs/bicycles.md) "
             "or a benchmark parameter file (YAML/JSON with the 26 names). The YAML and JSON "
-            "output is itself a parameter file.")
+            "output is itself a parameter file. --format bicycleparameters-yaml writes BicycleParameters' "
+            "parameter-set YAML: Meijaard2007, or with --model rider-lean the MooreRiderLean2012 set "
+            "(the rider split at the hips), which BicycleParameters and bikemass read back.")
 
 
 def register(sub):
@@ -31,6 +33,7 @@ def register(sub):
     _bike_and_rider(params)
     dialect.add_combine(params)
     dialect.add_method(params)
+    dialect.add_model(params)
     params.add_argument("--compare", metavar="BIKE2",
                         help="every parameter beside BIKE2's (e.g. jamis vs jamis-thesis, the published "
                              "values) with the differences (default format: table)")
@@ -83,21 +86,30 @@ def _seated(args):
 
 def run_params(args):
     # lazy: the library loads numpy; bikemass --help must not
-    from ..scenario import catalog
     from ..models.parameter_export import format_parameters
 
     if args.compare:
         args.default_format = "table"                   # a comparison is read, not read back
     fmt = dialect.data_format(args)
-    if args.compare and fmt == "bicycleparameters":
+    if args.compare and fmt.startswith("bicycleparameters"):
         raise InputError("--format", fmt, "table, csv, json or yaml with --compare")
-    params = catalog.parameters(args.bike, args.rider, args.combine, args.method, args.allow_off_contact)
+    scenario = dialect.scenario(args)
+    if fmt == "bicycleparameters-yaml" and args.model not in ("whipple", "rider-lean"):
+        raise InputError("--format", fmt, f"--model whipple (Meijaard2007) or rider-lean (MooreRiderLean2012): "
+                         f"BicycleParameters has no parameter set for --model {args.model}")
+    params = scenario.parameters()
     if args.compare:
-        reference = catalog.parameters(args.compare, args.rider, args.combine, args.method, args.allow_off_contact)
+        reference = scenario.replace(bicycle=args.compare).parameters()
         dialect.emit(args, lambda f: comparison(params, reference, args.bike, args.compare, f))
+    elif fmt == "bicycleparameters-yaml" and args.model == "rider-lean":
+        # lazy: the library loads numpy; bikemass --help must not
+        from ..models.moore2012 import moore_yaml
+        lean = scenario.build().lean
+        dialect.emit(args, lambda f: moore_yaml(lean))
     else:
         title = f"{args.bike} with rider {args.rider} (combine {args.combine})"
-        included = args.rider not in (None, "none") or catalog.load_bicycle(args.bike).rider_included
+        included = (args.rider not in (None, "none") or scenario.inputs.lean_set is not None
+                    or scenario.inputs.bicycle().rider_included)
         dialect.emit(args, lambda f: format_parameters(params, f, title, included))
     return 0
 
@@ -135,7 +147,6 @@ def comparison_table(params, reference, name, reference_name):
 
 def run_draw(args):
     # lazy: plots/ load matplotlib; only the figure needs it
-    from ..scenario import catalog
     from ..plots.side_view import plot_side_view
 
     options = dialect.figure_checked(args)
@@ -152,7 +163,6 @@ def run_draw(args):
 
 def run_export(args):
     # lazy: the library loads numpy; bikemass --help must not
-    from ..scenario import catalog
     from ..bicycle.scene import build_scene, export_scene
     from ..core.output import write_atomic
 

@@ -15,10 +15,13 @@
   (:func:`bikemass.core.output.with_units`).
 
 Arguments shared by several commands (BIKE, ``--rider``, ``--combine``, ``--stiffness``,
-``--speeds``, ``--method``) are defined here once.  Only the standard library and
-:mod:`bikemass.core.choices` are imported, so ``bikemass --help`` stays fast.
+``--model``, ``--tyres``, ``--speeds``, ``--method``) are defined here once, and
+:func:`scenario` makes the one :class:`~bikemass.scenario.scenario.Scenario` of a command's
+arguments.  Only the standard library, :mod:`bikemass.core.choices` and the model family's names
+(:mod:`bikemass.models.registry`) are imported, so ``bikemass --help`` stays fast.
 """
 
+import argparse
 import sys
 from pathlib import Path
 
@@ -26,6 +29,7 @@ from ..core.choices import RIGID, Combine, Format, Method
 from ..core.errors import InputError, short
 from .figure_options import add_figure_options, figure_options, write_figure
 from ..core.limits import MAX_SPEED, MAX_SPEEDS, MIN_SPEED_STEP
+from ..models.registry import BASE, parse_model
 
 TABULAR = (Format.TABLE.value, Format.CSV.value, Format.JSON.value, Format.YAML.value)
 """The formats of every command's data (``params`` adds ``bicycleparameters``)."""
@@ -93,6 +97,53 @@ def add_stiffness(p, many=False):
                    help="rear-frame stiffness: infinite (rigid, default), steel, titanium, aluminum "
                         "(the bicycle's published S if it carries one, else the beam model of its rear "
                         "frame, condensed) or a YAML file with S: [[..], [..]] in N m/rad")
+
+
+MODEL_HELP = (
+    "the linear model: whipple (default: Meijaard et al. 2007; with --stiffness other than infinite, the "
+    "thesis's quasi-static flexible rear frame), rider-lean (the rider's upper body leans at the hips "
+    "against a spring and damper; needs --rider, or a MooreRiderLean2012 parameter file as BIKE), tyre "
+    "(tyres that slip, --tyres FILE), flexible (the rear frame twists and the fork bends, stiffness and "
+    "inertia from the beam models of the tubes in the --stiffness material; infinite: rigid), or members "
+    "joined by + (e.g. rider-lean+tyre); see docs/models.md")
+
+
+def model_choice(text):
+    """``--model``'s value checked (argparse type): the combination's canonical name."""
+    try:
+        return parse_model(text, "--model").name
+    except InputError as exc:
+        raise argparse.ArgumentTypeError(exc.expected) from None
+
+
+def add_model(p):
+    """``--model`` and ``--tyres``."""
+    p.add_argument("--model", type=model_choice, default=BASE, metavar="MODEL", help=MODEL_HELP)
+    p.add_argument("--tyres", metavar="FILE",
+                   help="tyre file for the tyre member: front: and rear: each with cornering_coefficient and "
+                        "camber_coefficient (1/rad or 1/deg) and relaxation_length (m); default: measured "
+                        "bicycle tyres (Dressel 2013; docs/models.md)")
+
+
+def scenario(args, rider=None, stiffness=None, bike=None, origin=None):
+    """The :class:`~bikemass.scenario.scenario.Scenario` of a command's BIKE, ``--rider``,
+    ``--stiffness``, ``--combine``, ``--method``, ``--allow-off-contact``, ``--model`` and ``--tyres``
+    (each where the command has it; ``rider``, ``stiffness`` and ``bike`` replace the options'; errors
+    about changed inputs name ``origin``, default BIKE)."""
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..scenario.scenario import Scenario
+
+    if getattr(args, "tyres", None) and not parse_model(args.model).has("tyre"):
+        raise InputError("--tyres", args.tyres, f"a --model with the tyre member (e.g. --model "
+                         f"{parse_model(args.model + '+tyre' if args.model != BASE else 'tyre').name}); "
+                         f"--model {args.model} has no tyres")
+    options = {k: getattr(args, k) for k in ("combine", "method", "allow_off_contact", "model", "tyres")
+               if getattr(args, k, None) is not None}
+    if not isinstance(options.get("method"), str) or options["method"] not in Method.values():
+        options.pop("method", None)                       # uncertainty's --method is its own
+    bike = args.bike if bike is None else bike
+    return Scenario(bike, rider or getattr(args, "rider", None), stiffness or getattr(args, "stiffness", RIGID),
+                    origin=origin or bike, **options)
 
 
 def add_speeds(p):
@@ -181,8 +232,18 @@ def save_plot(args, fig, options):
     write_figure(fig, args.plot, options)
 
 
+def result_document(data, units, fmt):
+    """A typed result's plain ``data`` (``to_dict()``) as JSON or YAML text with the ``units`` block its
+    fields declare (``units``: ``result.units()``), none guessed from the keys' names."""
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..core.output import dumps
+    from ..core.results import with_declared_units
+    return dumps(with_declared_units(data, units), fmt)
+
+
 def document(data, fmt, extra_units=None):
-    """``data`` as JSON or YAML text with its ``units`` block (the benchmark parameters' included)."""
+    """``data`` as JSON or YAML text with its ``units`` block (the benchmark parameters' included;
+    for a document that is not a typed result: a result declares its own, :func:`result_document`)."""
     # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import dumps, with_units
     from ..models.parameters import parameter_units

@@ -101,11 +101,14 @@ def _bicycle(p):
     allow_off_contact_option(p)
     dialect.add_combine(p)
     dialect.add_stiffness(p)
+    dialect.add_model(p)
     add_size_option(p, "--bike-size")
 
 
 def _input_output(p):
-    p.add_argument("--input", required=True, choices=INPUTS, help="the input (N m)")
+    p.add_argument("--input", required=True, metavar="|".join(INPUTS),
+                   help="the input (N m): steer-torque or roll-torque (--model rider-lean adds lean-torque, "
+                        "the rider's torque at the hips)")
     p.add_argument("--output", dest="response", required=True, metavar="|".join(OUTPUTS[:6]),
                    help="the output: roll-angle, steer-angle (rad), roll-rate, steer-rate (rad/s), heading "
                         "(rad), lateral (rear contact, m) or front-lateral (front contact, m)")
@@ -125,30 +128,34 @@ def _data(p, what):
 
 def bicycle_model(args):
     """The :class:`~bikemass.models.linear.LinearModel` of BIKE with ``--rider``, ``--combine``,
-    ``--allow-off-contact`` and ``--stiffness``: the one place these commands build their model."""
-    # lazy: the library loads numpy; bikemass --help must not
-    from ..analysis.handling.plant import linear_model
-    # lazy: the library loads numpy; bikemass --help must not
-    from ..scenario.catalog import load_bicycle, parameters, stiffness
-
-    bike = load_bicycle(args.bike)
-    params = parameters(bike, args.rider, args.combine, allow_off_contact=args.allow_off_contact)
-    return linear_model(params, stiffness(bike, args.stiffness))
+    ``--allow-off-contact``, ``--stiffness``, ``--model`` and ``--tyres``: the one place these
+    commands build their model (the scenario builder, :func:`bikemass.cli.dialect.scenario`)."""
+    return dialect.scenario(args).build().model
 
 
 def _title(args):
     rider = "no rider" if args.rider == "none" else args.rider
     frame = "rigid frame" if args.stiffness == "infinite" else f"{args.stiffness} frame"
-    return f"{args.bike}, {rider}, {frame}"
+    model = "" if args.model == "whipple" else f", model {args.model}"
+    return f"{args.bike}, {rider}, {frame}{model}"
 
 
 def _output_name(model, name):
+    return _named(name, model.output_names, "--output")
+
+
+def _input_name(model, name):
+    return _named(name, model.input_names, "--input")
+
+
+def _named(name, names, option):
+    """``name`` if the model has it (one of ``names``), else InputError naming ``option`` and the choices."""
     # lazy: the library loads numpy; bikemass --help must not
     from ..core.choices import closest
     # lazy: the library loads numpy; bikemass --help must not
     from ..core.errors import InputError
-    if name not in model.output_names:
-        raise InputError("--output", name, f"one of {', '.join(model.output_names)}{closest(name, model.output_names)}")
+    if name not in names:
+        raise InputError(option, name, f"one of {', '.join(names)}{closest(name, names)}")
     return name
 
 
@@ -157,11 +164,11 @@ def run_tf(args):
     from ..analysis.handling.transfer import transfer_function
 
     model = bicycle_model(args)
-    tf = transfer_function(model, args.speed, args.input, _output_name(model, args.response))
+    tf = transfer_function(model, args.speed, _input_name(model, args.input), _output_name(model, args.response))
 
     def render(fmt):
         if fmt in ("json", "yaml"):
-            return dialect.document(tf.to_dict(), fmt, tf.units())
+            return dialect.result_document(tf.to_dict(), tf.units(), fmt)
         if fmt == "csv":
             rows = [["zero", z.real, z.imag, "1/s"] for z in tf.zeros] + \
                    [["pole", p.real, p.imag, "1/s"] for p in tf.poles] + [["gain", tf.gain, 0.0, tf.gain_unit]]
@@ -224,11 +231,11 @@ def run_bode(args):
     options = dialect.figure_checked(args)
     w = _frequencies(args.frequencies)
     model = bicycle_model(args)
-    fr = frequency_response(model, args.speed, args.input, _output_name(model, args.response), w)
+    fr = frequency_response(model, args.speed, _input_name(model, args.input), _output_name(model, args.response), w)
 
     def render(fmt):
         if fmt in ("json", "yaml"):
-            return dialect.document(fr.to_dict(), fmt, fr.units())
+            return dialect.result_document(fr.to_dict(), fr.units(), fmt)
         rows = list(zip(fr.frequencies.tolist(), fr.magnitude.tolist(), fr.phase.tolist()))
         if fmt == "csv":
             return dialect.csv_text(["frequency (rad/s)", "magnitude (dB)", "phase (deg)"], rows)
@@ -314,7 +321,7 @@ def run_simulate(args):
 
     def render(fmt):
         if fmt in ("json", "yaml"):
-            return dialect.document(r.to_dict(), fmt, r.unit_block())
+            return dialect.result_document(r.to_dict(), r.unit_block(), fmt)
         headers = ["time (s)", *(f"{n} ({u})" for n, u in zip(r.names, r.units))]
         rows = [[t, *x] for t, x in zip(r.time.tolist(), r.values.tolist())]
         if fmt == "csv":
@@ -340,7 +347,7 @@ def run_mode_shapes(args):
 
     def render(fmt):
         if fmt in ("json", "yaml"):
-            return dialect.document(shapes.to_dict(), fmt, shapes.unit_block())
+            return dialect.result_document(shapes.to_dict(), shapes.unit_block(), fmt)
         rows = [[label, name, z.real, z.imag, coordinate, shapes.amplitude[i, k], shapes.phase[i, k]]
                 for i, (label, name, z) in enumerate(zip(shapes.labels, shapes.names, shapes.eigenvalues))
                 for k, coordinate in enumerate(shapes.coordinates)]
@@ -410,7 +417,7 @@ def run_handling(args):
 
     def render(fmt):
         if fmt in ("json", "yaml"):
-            return dialect.document(result.to_dict(), fmt, result.unit_block())
+            return dialect.result_document(result.to_dict(), result.unit_block(), fmt)
         if fmt == "csv":
             return handling_csv(result)
         return handling_text(result, _title(args))

@@ -13,11 +13,12 @@ SPEED_LIMIT = "speed, m/s"
 def register(sub):
     eig = sub.add_parser(
         "eig", help="eigenvalues of the labelled modes (weave, capsize, caster) against speed",
-        description="Eigenvalues of the linearised Whipple bicycle (Meijaard et al. 2007) at every "
-                    "speed, each followed across speed and labelled weave 1, weave 2, capsize, caster.")
+        description="Eigenvalues of the linearised bicycle at every speed (the Whipple bicycle of Meijaard "
+                    "et al. 2007, or the --model you choose), each followed across speed and labelled weave "
+                    "1, weave 2, capsize, caster (and the richer models' lean, tyre, wobble, ... modes).")
     _common(eig)
     dialect.add_output(eig, what="the eigenvalues")
-    dialect.add_plot(eig, "the eigenvalues against speed (Fig. 4-4 layout)", SPEED_LIMIT, "real parts, 1/s")
+    dialect.add_plot(eig, "the eigenvalues against speed (Meijaard et al. 2007, Fig. 3 convention)", SPEED_LIMIT, "real parts, 1/s")
     add_size_option(eig, "--bike-size")
     eig.set_defaults(run=every_size(run_eig))
 
@@ -47,6 +48,7 @@ def register(sub):
                            "(e.g. none,relaxed,aero-tuck)")
     _allow(comp)
     dialect.add_stiffness(comp, many=True)
+    dialect.add_model(comp)
     dialect.add_combine(comp)
     dialect.add_speeds(comp)
     _max_speeds(comp)
@@ -66,6 +68,7 @@ def _common(p):
     _allow(p)
     dialect.add_combine(p)
     dialect.add_stiffness(p)
+    dialect.add_model(p)
     dialect.add_speeds(p)
     _max_speeds(p)
 
@@ -75,14 +78,9 @@ def _max_speeds(p):
                    help=f"raise the limit on the speeds in the grid (default {MAX_SPEEDS})")
 
 
-def _inputs(args, rider=None, stiffness=None):
-    """(parameter set, S or None) of BIKE with ``rider`` and ``stiffness`` (default: the options')."""
-    # lazy: the library loads numpy; bikemass --help must not
-    from ..scenario.catalog import load_bicycle, parameters, stiffness as frame_stiffness
-
-    bike = load_bicycle(args.bike)
-    return (parameters(bike, rider or args.rider, args.combine, allow_off_contact=args.allow_off_contact),
-            frame_stiffness(bike, stiffness or args.stiffness))
+def _built(args, rider=None, stiffness=None):
+    """The scenario of BIKE with ``rider`` and ``stiffness`` (default: the options'), built."""
+    return dialect.scenario(args, rider, stiffness).build()
 
 
 def _rider_name(rider):
@@ -99,7 +97,8 @@ def _combine(combine):
 
 def _title(args):
     thesis = " (rider added as the thesis did)" if args.rider != "none" and args.combine == "thesis" else ""
-    return f"{args.bike}, {_rider_name(args.rider)}, {_stiffness_name(args.stiffness)}{thesis}"
+    model = "" if getattr(args, "model", "whipple") == "whipple" else f", model {args.model}"
+    return f"{args.bike}, {_rider_name(args.rider)}, {_stiffness_name(args.stiffness)}{model}{thesis}"
 
 
 def run_eig(args):
@@ -109,19 +108,19 @@ def run_eig(args):
 
     options = dialect.figure_checked(args)
     speeds = dialect.parse_speeds(args.speeds, args.max_speeds)
-    inputs = _inputs(args)
-    modes = eigenvalues(*inputs, speeds, max_speeds=args.max_speeds)
+    built = _built(args)
+    modes = eigenvalues(built, speeds=speeds, max_speeds=args.max_speeds)
 
     def render(fmt):
         if fmt in ("json", "yaml"):
-            return dialect.document(modes.to_dict(), fmt)
+            return dialect.result_document(modes.to_dict(), modes.units(), fmt)
         return eig_table(modes, csv=fmt == "csv")
     dialect.emit(args, render)
     if args.plot:
         # lazy: plots/ load matplotlib; only the figure needs it
         from ..analysis.results import stability
         from ..plots.stability import plot_eigenvalues
-        result = stability(*inputs, speeds, max_speeds=args.max_speeds)          # marks v_w, v_c and shades the stable speeds
+        result = stability(built, speeds=speeds, max_speeds=args.max_speeds)     # marks v_w, v_c and shades the stable speeds
         dialect.save_plot(args, plot_eigenvalues(result, _title(args), options.size, **options.limits()), options)
     return 0
 
@@ -134,11 +133,11 @@ def run_stability(args):
     if not args.marginal > 0:
         raise InputError("--marginal", args.marginal, "a positive modulus in rad/s")
     speeds = dialect.parse_speeds(args.speeds, args.max_speeds)
-    result = stability(*_inputs(args), speeds, marginal=args.marginal, max_speeds=args.max_speeds)
+    result = stability(_built(args), speeds=speeds, marginal=args.marginal, max_speeds=args.max_speeds)
 
     def render(fmt):
         if fmt in ("json", "yaml"):
-            return dialect.document(result.to_dict(), fmt)
+            return dialect.result_document(result.to_dict(), result.units(), fmt)
         if fmt == "csv":
             return ranges_csv(result)
         return stability_text(result, _title(args))
@@ -172,7 +171,7 @@ def run_compare(args):
     results, runs = {}, []
     for rider in riders:
         for stiffness in stiffnesses:
-            result = stability(*_inputs(args, rider, stiffness), speeds, max_speeds=args.max_speeds)
+            result = stability(_built(args, rider, stiffness), speeds=speeds, max_speeds=args.max_speeds)
             results.setdefault(_rider_name(rider), {})[_stiffness_name(stiffness)] = result
             runs.append({"rider": rider, "stiffness": stiffness, "weave_speeds": list(result.weave_speeds),
                          "capsize_speeds": list(result.capsize_speeds),

@@ -27,7 +27,26 @@ class Choice(str, Enum):
 
 
 class Combine(Choice):
-    """How the rider joins a frame body (Williams 2015, Eq. 3.6)."""
+    """How the rider joins a frame body (Williams 2015, Eq. 3.6).
+
+    A member is its string, so ``"thesis"`` works wherever ``Combine.THESIS`` does.
+
+    See Also
+    --------
+    bikemass.parameters : Takes it as ``combine=``.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> bm.Combine.values()
+    ('exact', 'thesis')
+    >>> bm.Combine.THESIS == "thesis", str(bm.Combine.EXACT)
+    (True, 'exact')
+    >>> exact = bm.parameters("jamis", "relaxed")
+    >>> thesis = bm.parameters("jamis", "relaxed", combine=bm.Combine.THESIS)
+    >>> print(f"IBxx {exact.IBxx:.3f} vs {thesis.IBxx:.3f} kg m^2")
+    IBxx 14.464 vs 12.281 kg m^2
+    """
 
     EXACT = "exact"
     """Parallel-axis theorem (physically right; the default)."""
@@ -36,7 +55,20 @@ class Combine(Choice):
 
 
 class Method(Choice):
-    """How a solid's mass properties are computed."""
+    """How a solid's mass properties are computed.
+
+    See Also
+    --------
+    bikemass.parameters : Takes it as ``method=``.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> mesh = bm.parameters("jamis", method="mesh")
+    >>> exact = bm.parameters("jamis", method=bm.Method.EXACT)
+    >>> print(f"IFyy {mesh.IFyy:.8f} vs {exact.IFyy:.8f} kg m^2")   # the wheel's mesh is faceted
+    IFyy 0.06960117 vs 0.06960113 kg m^2
+    """
 
     MESH = "mesh"
     """From its trimesh mesh (as a CAD program would; the default)."""
@@ -45,7 +77,21 @@ class Method(Choice):
 
 
 class Overlap(Choice):
-    """How overlapping rider segments count."""
+    """How overlapping rider segments count.
+
+    See Also
+    --------
+    bikemass.Rider : ``rider.properties(overlap=...)``.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> rider = bm.load_rider("relaxed")
+    >>> whole = rider.properties(overlap=bm.Overlap.SUM).mass
+    >>> once = rider.properties(overlap="union").mass
+    >>> print(f"{whole:.2f} kg summed, {once:.2f} kg with overlaps counted once")
+    82.15 kg summed, 81.94 kg with overlaps counted once
+    """
 
     SUM = "sum"
     """Each segment whole, overlaps counted twice (a CAD assembly, the thesis)."""
@@ -54,7 +100,21 @@ class Overlap(Choice):
 
 
 class Procedure(Choice):
-    """How the 2x2 frame stiffness S is condensed from the beam model."""
+    """How the 2x2 frame stiffness S is condensed from the beam model.
+
+    See Also
+    --------
+    bikemass.stiffness, bikemass.frame_stiffness : Take it as ``procedure=``.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> for procedure in bm.Procedure:
+    ...     S = bm.frame_stiffness("jamis", "steel", procedure=procedure)
+    ...     print(f"{procedure:9s} K_roll {S[0, 0]:.1f} N m/rad")
+    condensed K_roll 6702.3 N m/rad
+    thesis    K_roll 6552.5 N m/rad
+    """
 
     CONDENSED = "condensed"
     """Consistent Schur complement (the default)."""
@@ -63,7 +123,20 @@ class Procedure(Choice):
 
 
 class Beam(Choice):
-    """Beam theory of the frame's finite elements."""
+    """Beam theory of the frame's finite elements.
+
+    See Also
+    --------
+    bikemass.frame_stiffness, bikemass.frame_modes : Take it as ``beam=``.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> for beam in bm.Beam:
+    ...     print(f"{beam:15s} K_steer {bm.frame_stiffness('jamis', 'steel', beam=beam)[1, 1]:.1f} N m/rad")
+    timoshenko      K_steer 3634.7 N m/rad
+    euler-bernoulli K_steer 3642.7 N m/rad
+    """
 
     TIMOSHENKO = "timoshenko"
     """Shear deformation and rotary inertia (the default)."""
@@ -72,7 +145,19 @@ class Beam(Choice):
 
 
 class Source(Choice):
-    """Where a material's stiffness S comes from."""
+    """Where a material's stiffness S comes from.
+
+    See Also
+    --------
+    bikemass.stiffness : Takes it as ``source=``.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> published = bm.stiffness("jamis-thesis", "steel", source="published")    # Williams (2015), Table 3-12
+    >>> print(f"K_roll {published[0, 0]:.1f} N m/rad")
+    K_roll 6538.4 N m/rad
+    """
 
     AUTO = "auto"
     """The bicycle's published S if it carries one, else the beam model (the default)."""
@@ -83,7 +168,21 @@ class Source(Choice):
 
 
 class Support(Choice):
-    """Boundary condition of the frame's modal analysis."""
+    """Boundary condition of the frame's modal analysis.
+
+    See Also
+    --------
+    bikemass.frame_modes : Takes it as ``support=``.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> bm.Support.values()
+    ('free', 'fix-rear', 'fix-head', 'fix-both')
+    >>> f = bm.frame_modes("jamis", support=bm.Support.FIX_BOTH, count=1).frequencies_hz[0]
+    >>> print(f"{f:.1f} Hz")
+    174.9 Hz
+    """
 
     FREE = "free"
     FIX_REAR = "fix-rear"
@@ -92,7 +191,18 @@ class Support(Choice):
 
 
 class MaterialName(Choice):
-    """The shipped frame materials by their short names (``frames/materials.yaml`` aliases)."""
+    """The shipped frame materials by their short names (``frames/materials.yaml`` aliases).
+
+    See Also
+    --------
+    bikemass.stiffness : Takes a material by name.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> [str(m) for m in bm.MaterialName]
+    ['steel', 'titanium', 'aluminum']
+    """
 
     STEEL = "steel"
     TITANIUM = "titanium"
@@ -104,7 +214,22 @@ RIGID = "infinite"
 
 
 class Grip(Choice):
-    """Where a chain-posed rider's hands go (a ``contacts.grips`` key, or nowhere)."""
+    """Where a chain-posed rider's hands go (a ``contacts.grips`` key, or nowhere).
+
+    See Also
+    --------
+    bikemass.pose_rider : Takes it as ``hands=``.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> bm.pose_rider("jamis", hands=bm.Grip.DROPS).hands
+    'drops'
+    >>> bm.pose_rider("jamis", hands="drop")
+    Traceback (most recent call last):
+    ...
+    bikemass.core.errors.InputError: hands: 'drop': ...(did you mean 'drops'?)
+    """
 
     TOPS = "tops"
     HOODS = "hoods"
@@ -114,20 +239,38 @@ class Grip(Choice):
 
 
 class EigenPart(Choice):
-    """What an eigenvalue comparison plot shows against speed."""
+    """What an eigenvalue comparison plot showed against speed.
+
+    No function of this version takes it: the comparison plot it chose for is gone (eigenvalues
+    are drawn by :func:`bikemass.plot_eigenvalues`, many results by
+    :func:`bikemass.plot_critical_speeds`); it stays importable for code that names it.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> bm.EigenPart.values()
+    ('real', 'imag', 'frequency', 'damping')
+    """
 
     REAL = "real"
     """Real parts (1/s)."""
     IMAG = "imag"
     """Imaginary parts (rad/s)."""
     FREQUENCY = "frequency"
-    """Natural frequency |lambda| (rad/s)."""
+    """Natural frequency ``|lambda|`` (rad/s)."""
     DAMPING = "damping"
-    """Damping ratio -Re/|lambda|."""
+    """Damping ratio ``-Re/|lambda|``."""
 
 
 class Format(Choice):
-    """Text formats of the command line's data output."""
+    """Text formats of the command line's data output.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> bm.Format.values()
+    ('table', 'csv', 'json', 'yaml', 'bicycleparameters', 'bicycleparameters-yaml')
+    """
 
     TABLE = "table"
     CSV = "csv"
@@ -135,10 +278,13 @@ class Format(Choice):
     YAML = "yaml"
     BICYCLEPARAMETERS = "bicycleparameters"
     """The BicycleParameters ``<Name>Benchmark.txt`` file (parameter sets only)."""
+    BICYCLEPARAMETERS_YAML = "bicycleparameters-yaml"
+    """BicycleParameters' ``ParameterSet.to_yaml`` file: ``Meijaard2007``, or ``MooreRiderLean2012`` for
+    the rider-lean model (parameter sets only)."""
 
 
 PARAMETER_FORMATS = (Format.YAML.value, Format.JSON.value, Format.TABLE.value, Format.CSV.value,
-                     Format.BICYCLEPARAMETERS.value)
+                     Format.BICYCLEPARAMETERS.value, Format.BICYCLEPARAMETERS_YAML.value)
 """The formats a benchmark parameter set is written in (YAML first: the default)."""
 
 

@@ -36,7 +36,38 @@ def shown(source):
 
 
 class InputError(ValueError):
-    """Bad input: names the file, the key and what was expected (a ValueError)."""
+    """Bad input: names the file, the key and what was expected (a ValueError).
+
+    Parameters
+    ----------
+    source : str or os.PathLike
+        The file (a shipped file shown relative to the data folder, e.g. ``frames/jamis.yaml``),
+        ``<mapping>`` for a Python value, or the argument's name.
+    key : str
+        The key or option that is wrong (``(argument)`` for a whole argument).
+    expected : str
+        What was expected, in words.
+
+    Attributes
+    ----------
+    source, key, expected : str
+        The three parts, each on one line (control characters escaped, long parts cut).
+
+    See Also
+    --------
+    BikemassWarning : Legal but unusual input.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> try:
+    ...     bm.stability(bm.parameters("benchmark"), stiffness=[[1.0, 2.0], [3.0, 4.0]])
+    ... except bm.InputError as error:
+    ...     print(error.source, "|", error.key, "|", error.expected[:43])
+    stiffness | (matrix) | a symmetric positive definite 2x2 stiffness
+    >>> isinstance(bm.InputError("f.yaml", "w", "a length"), ValueError)
+    True
+    """
 
     def __init__(self, source, key, expected):
         self.source, self.key = one_line(shown(source)), one_line(key)
@@ -68,4 +99,21 @@ def _rebuilt(source, key, expected):
 class BikemassWarning(UserWarning):
     """A result that is computed but worth a second look (e.g. a joint angle outside the
     typical human range); the command line shows each as one ``bikemass: warning:`` line (``--strict`` makes it an
-    error).  :mod:`bikemass.models.plausibility` issues them for legal but unusual input."""
+    error).  :mod:`bikemass.models.plausibility` issues them for legal but unusual input.
+
+    See Also
+    --------
+    InputError : Input that is refused.
+
+    Examples
+    --------
+    Warnings go through :mod:`warnings`, so the usual filters apply:
+
+    >>> import warnings
+    >>> import bikemass as bm
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always", bm.BikemassWarning)
+    ...     posed = bm.pose_rider("jamis", hands="tops", fixed={"torso_lean": 100})
+    >>> print(str(caught[0].message))
+    torso lean 100.0 deg is outside the typical human range -20..90 deg
+    """

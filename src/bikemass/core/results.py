@@ -17,10 +17,8 @@ from collections.abc import Mapping
 
 import numpy as np
 
+from .display import UNIT, Display
 from .frozen import freeze
-
-UNIT = "unit"
-"""The dataclass field metadata key holding a field's unit."""
 
 
 def quantity(unit, doc="", default=MISSING):
@@ -48,8 +46,9 @@ def _plain(value):
 
 
 @dataclass(frozen=True, eq=False)
-class Result:
-    """Base of every result type: frozen fields, read-only arrays, units per field."""
+class Result(Display):
+    """Base of every result type: frozen fields, read-only arrays, units per field; in Jupyter a
+    compact HTML table of the fields (:class:`~bikemass.core.display.Display`)."""
 
     def __post_init__(self):
         for f in fields(self):
@@ -77,4 +76,28 @@ class Result:
 
     def document(self):
         """``to_dict()`` with its ``units`` block: what ``--format json|yaml`` writes."""
-        return {**self.to_dict(), "units": self.units()}
+        return with_declared_units(self.to_dict(), self.units())
+
+
+def document_keys(obj):
+    """Every mapping key of the plain document ``obj``, at any depth."""
+    found = set()
+
+    def walk(value):
+        if isinstance(value, Mapping):
+            for k, v in value.items():
+                found.add(k)
+                walk(v)
+        elif isinstance(value, (list, tuple)):
+            for v in value:
+                walk(v)
+    walk(obj)
+    return found
+
+
+def with_declared_units(data, units):
+    """The plain document ``data`` (a mapping) with a top-level ``units`` block: the declared
+    ``units`` (``{key: unit}``, a result's :meth:`Result.units`) of the keys it holds, none guessed
+    from a key's name."""
+    keys = document_keys(data)
+    return {**data, "units": {k: u for k, u in units.items() if k in keys}}

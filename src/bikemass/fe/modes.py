@@ -14,6 +14,7 @@ import numpy as np
 import scipy.linalg
 import scipy.sparse.linalg as spla
 
+from ..core.display import Display, brief
 from ..core.threads import one_blas_thread
 from .assembly import assemble
 from .boundary import clamped_keypoints, free_dofs, rigid_body_mode_count
@@ -24,14 +25,19 @@ DENSE_LIMIT = 400
 """Free-DOF count up to which the dense solver is used."""
 
 
-@dataclass(frozen=True)
-class Modes:
+@dataclass(frozen=True, repr=False)
+class Modes(Display):
     """Natural frequencies (Hz, ascending) and mass-normalised shapes (n_dof, n) on all DOF."""
 
     frequencies_hz: np.ndarray
     shapes: np.ndarray
     mesh: object
     bc: str
+
+    def display_rows(self):
+        """The frequencies (Hz), the boundary condition and the model's size (Jupyter's table, ``repr``)."""
+        return [("frequencies_hz", ", ".join(f"{f:.4g}" for f in self.frequencies_hz), "Hz"),
+                ("bc", self.bc, ""), ("shapes", brief(self.shapes), "mass-normalised")]
 
     def to_dict(self):
         """``{"frequencies": [Hz, ...]}`` (the unit goes in the document's ``units`` block)."""

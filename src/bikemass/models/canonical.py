@@ -13,9 +13,11 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from ..core.display import Display
 
-@dataclass(frozen=True)
-class CanonicalMatrices:
+
+@dataclass(frozen=True, repr=False)
+class CanonicalMatrices(Display):
     """``M, C1, K0, K2`` (2x2 arrays) and gravity ``g`` (m/s^2) of one bicycle."""
 
     M: np.ndarray

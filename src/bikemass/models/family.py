@@ -16,7 +16,7 @@ from ..core.frozen import readonly
 from .flexible import Compliances
 from .parameters import NAMES, BenchmarkParameters
 from .lean import RiderLeanParameters
-from .linear import LinearModel, SecondOrder
+from .linear import LinearModel, SecondOrder, state_form
 from .registry import module_name, parse_model
 from .signals import signal
 from .tyres import DEFAULT_TYRES, Tyres
@@ -61,14 +61,9 @@ def state_coefficients(model, values):
 
 
 def _state_form(code, E, A, B):
-    """``E^-1 A``, ``E^-1 B`` of the generated ``(E, A, B)`` (solved on E's mass rows only: every other
-    row of E is a row of the identity, so exact zeros stay exact)."""
-    mass = slice(code.COORDINATES, code.N_DYNAMIC)
-    inverse = np.linalg.inv(E[..., None, mass, mass])
-    A, B = A.copy(), B.copy()
-    A[..., mass, :] = inverse @ A[..., mass, :]
-    B[..., mass, :] = inverse @ B[..., mass, :]
-    return A, B
+    """``E^-1 A``, ``E^-1 B`` of the generated ``(E, A, B)`` (:func:`~bikemass.models.linear.state_form`;
+    E's mass rows are those of the coordinates' rates)."""
+    return state_form(E, A, B, slice(code.COORDINATES, code.N_DYNAMIC))
 
 
 class _Layout:
@@ -172,5 +167,9 @@ def build(model, bicycle, tyres=None, compliances=None):
     (:func:`bikemass.fe.flexible.compliances`; required); an infinitely stiff one (``None``)
     holds its coordinate at zero; an error for a model without the member.
     """
-    held = compliances.held if parse_model(model).has("flexible") and isinstance(compliances, Compliances) else ()
-    return linear_model(model, values(model, bicycle, tyres, compliances), held)
+    return linear_model(model, values(model, bicycle, tyres, compliances), held_coordinates(model, compliances))
+
+
+def held_coordinates(model, compliances):
+    """The coordinates ``model`` holds at zero: the infinitely stiff ones of its ``compliances``."""
+    return compliances.held if parse_model(model).has("flexible") and isinstance(compliances, Compliances) else ()

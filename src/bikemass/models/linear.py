@@ -114,6 +114,23 @@ class LinearModel:
     outputs : tuple of Output
         Further named outputs beside the states, each a fixed combination of them (the Whipple
         bicycle's lateral position of the front contact).
+
+    See Also
+    --------
+    bikemass.linear_model : The Whipple bicycle of a parameter set.
+    bikemass.stability : Any model of the family is analysed the same way.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> model = bm.linear_model(bm.parameters("benchmark"))
+    >>> model.n_dynamic, model.state_names
+    (4, ('roll-angle', 'steer-angle', 'roll-rate', 'steer-rate', 'heading', 'lateral'))
+    >>> A = model.dynamic_matrix([5.0])[0]       # the dynamic 4x4 block at 5 m/s
+    >>> import numpy as np
+    >>> weave = max(np.linalg.eigvals(A), key=lambda z: z.imag)
+    >>> print(f"{weave.real:.6f} +- {weave.imag:.6f}i")   # Meijaard et al. (2007), Table 2
+    -0.775342 +- 4.464868i
     """
 
     name: str
@@ -233,6 +250,35 @@ class LinearModel:
                 f"inputs=({', '.join(self.input_names)}), degree={len(self.A) - 1})")
 
 
+def state_form(E, A, B, mass):
+    """The state-space coefficients ``E^-1 A[k]``, ``E^-1 B[k]`` of a descriptor form
+    ``E x' = sum_k v**k A[k] x + sum_k v**k B[k] u``: the one place a state matrix is assembled.
+
+    Parameters
+    ----------
+    E : numpy.ndarray (..., N, N)
+        The descriptor matrix: a row of the identity outside the ``mass`` rows, the mass matrix
+        (invertible) in the ``mass`` rows and columns.
+    A : numpy.ndarray (..., d + 1, N, N)
+        Coefficients of ``v**k``.
+    B : numpy.ndarray (..., d + 1, N, m)
+        Coefficients of ``v**k``.
+    mass : slice
+        The rows (and columns) of ``E`` holding the mass matrix.
+
+    Returns
+    -------
+    (numpy.ndarray, numpy.ndarray)
+        ``A`` and ``B`` of ``x' = A(v) x + B(v) u``, same shapes (new arrays).  Only the mass rows
+        are solved, so the exact zeros and ones of the other rows stay exact.
+    """
+    inverse = np.linalg.inv(E[..., None, mass, mass])
+    A, B = np.array(A), np.array(B)
+    A[..., mass, :] = inverse @ A[..., mass, :]
+    B[..., mass, :] = inverse @ B[..., mass, :]
+    return A, B
+
+
 def second_order_model(name, coordinates, rates, M, C, K, F, inputs, kinematics=(), families=None, outputs=()):
     """A :class:`LinearModel` from ``M q'' + C(v) q' + K(v) q = F u`` and kinematic states.
 
@@ -273,17 +319,19 @@ def second_order_model(name, coordinates, rates, M, C, K, F, inputs, kinematics=
     degree = max(len(C), len(K), 1, *(len(rows) for _, rows in kinematics)) - 1
     mech = SecondOrder(tuple(coordinates), readonly(M), _coefficients(C, (n, n), dtype),
                        _coefficients(K, (n, n), dtype), readonly(F))
-    Minv = np.linalg.inv(M)
+    E = np.eye(N, dtype=dtype)
+    E[n:2 * n, n:2 * n] = M
     A = np.zeros((degree + 1, N, N), dtype=dtype)
     A[0, :n, n:2 * n] = np.eye(n)
-    A[:len(mech.K), n:2 * n, :n] = -Minv @ mech.K
-    A[:len(mech.C), n:2 * n, n:2 * n] = -Minv @ mech.C
+    A[:len(mech.K), n:2 * n, :n] = -mech.K
+    A[:len(mech.C), n:2 * n, n:2 * n] = -mech.C
     for j, (_, rows) in enumerate(kinematics):
         for k, row in enumerate(rows):
             if row is not None:
                 A[k, 2 * n + j] = row
     B = np.zeros((1, N, len(inputs)), dtype=dtype)
-    B[0, n:2 * n] = Minv @ F
+    B[0, n:2 * n] = F
+    A, B = state_form(E, A, B, slice(n, 2 * n))
     states = (*coordinates, *rates, *(s for s, _ in kinematics))
     groups = tuple((f, tuple(sorted((*idx, *(n + i for i in idx))))) for f, idx in (families or {}).items())
     return LinearModel(name, tuple(states), 2 * n, tuple(inputs), readonly(A), readonly(B), mech, groups,

@@ -7,8 +7,14 @@ benchmark parameter file that bikemass reads back (and refuses to add a second r
 BicycleParameters package reads from ``bicycles/<Name>/Parameters/``: one
 ``name = value`` line per parameter, ``#`` comment lines allowed.  Values are
 written with ``repr`` (17 significant digits) so they read back bit for bit (below
-:data:`bikemass.core.output.ZERO` as 0, like every number bikemass writes).
+:data:`bikemass.core.output.ZERO` as 0, like every number bikemass writes).  The
+``bicycleparameters-yaml`` format is what BicycleParameters' ``ParameterSet.to_yaml`` writes
+(``parameterization: Meijaard2007`` with ``values:``; the rider-lean model's
+``MooreRiderLean2012`` set is :func:`bikemass.models.moore2012.moore_yaml`).
 """
+
+import yaml
+
 
 from ..core.choices import PARAMETER_FORMATS as FORMATS
 from ..core.errors import InputError
@@ -25,6 +31,8 @@ def format_parameters(params, fmt, title="", rider_included=False):
                                 parameter_units()), fmt)
     if fmt == "bicycleparameters":
         return bicycleparameters_text(params, title + (" (rider included in B)" if rider_included else ""))
+    if fmt == "bicycleparameters-yaml":
+        return meijaard_yaml(params, rider_included=rider_included)
     units = parameter_units()
     if fmt == "table":
         rows = [[k, DESCRIPTIONS[k].split(" [")[0], values[k], units[k]] for k in NAMES]
@@ -40,3 +48,17 @@ def bicycleparameters_text(params, title=""):
     values, units = params.to_dict(), parameter_units()
     header = [f"# {line}" for line in (title, "written by bikemass; SI units, radians") if line]
     return "\n".join(header + [f"{name} = {as_written(values[name], units[name])!r}" for name in NAMES]) + "\n"
+
+
+MEIJAARD = "Meijaard2007"
+"""The name BicycleParameters gives the benchmark set (``ParameterSet.parameterization``)."""
+
+
+def meijaard_yaml(params, speed=1.0, rider_included=False):
+    """The YAML text BicycleParameters' ``ParameterSet.to_yaml`` writes for the ``Meijaard2007`` set of
+    ``params`` at forward ``speed`` (m/s; the set carries a default speed, ``v``); ``rider: true`` when
+    the rear body B holds a rider."""
+    values = {name: float(getattr(params, name)) for name in NAMES}
+    data = {"description": "", "parameterization": MEIJAARD, "parameters": "",
+            "rider": True if rider_included else None, "values": {**values, "v": float(speed)}}
+    return yaml.safe_dump(data, sort_keys=True)

@@ -9,6 +9,8 @@ from dataclasses import asdict, dataclass, fields, replace
 
 import numpy as np
 
+from ..core.display import Display, html_table
+
 DESCRIPTIONS = {
     "w": "wheelbase [m]", "c": "trail [m]", "lam": "steer-axis tilt [rad]",
     "g": "gravity [m/s^2]", "rR": "rear wheel radius [m]", "mR": "rear wheel mass [kg]",
@@ -24,9 +26,27 @@ DESCRIPTIONS = {
 }
 
 
-@dataclass(frozen=True)
-class BenchmarkParameters:
-    """One benchmark parameter set; every field SI (see :data:`DESCRIPTIONS`)."""
+@dataclass(frozen=True, repr=False)
+class BenchmarkParameters(Display):
+    """One benchmark parameter set; every field SI (see :data:`DESCRIPTIONS`).
+
+    See Also
+    --------
+    bikemass.parameters : The set of a bicycle with a rider.
+    bikemass.PARAMETER_NAMES : The 26 names in the Meijaard order.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> p = bm.parameters("benchmark")                # Meijaard et al. (2007), Table 1
+    >>> print(p.w, p.c, p.mB, p.IBxz)
+    1.02 0.08 85.0 2.4
+    >>> heavier = p.replace(mB=95.0)                  # immutable: a changed copy
+    >>> print(heavier.mB, p.mB)
+    95.0 85.0
+    >>> p.inertia("B").tolist()                    # kg m^2, about the rear frame's centre of mass
+    [[9.2, 0.0, 2.4], [0.0, 11.0, 0.0], [2.4, 0.0, 2.8]]
+    """
 
     w: float
     c: float
@@ -62,6 +82,21 @@ class BenchmarkParameters:
     def replace(self, **changes):
         """A copy with some parameters changed."""
         return replace(self, **changes)
+
+    def display_rows(self):
+        """``[(name, value, SI unit)]`` of the 26 parameters, in the Meijaard order."""
+        units = parameter_units()
+        return [(k, f"{float(v):.6g}", units[k]) for k, v in asdict(self).items()]
+
+    def __repr__(self):
+        values = ", ".join(f"{k}={float(v):.4g}" for k, v in asdict(self).items())
+        return f"BenchmarkParameters({values}; SI)"
+
+    def _repr_html_(self):
+        """The 26 parameters with their units and meanings (Jupyter's rich display)."""
+        return html_table("BenchmarkParameters (Meijaard et al. 2007)",
+                          [(f"{k}: {DESCRIPTIONS[k][:DESCRIPTIONS[k].index(' [')]}", v, u)
+                           for k, v, u in self.display_rows()])
 
     def inertia(self, body):
         """3x3 inertia tensor of ``body`` in 'RBHF' (wheels: Izz = Ixx by symmetry)."""

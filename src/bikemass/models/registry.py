@@ -2,7 +2,7 @@
 
 from dataclasses import dataclass
 
-from ..core.errors import InputError
+from ..core.errors import InputError, short
 
 BASE = "whipple"
 """The Whipple bicycle of Meijaard et al. (2007): every member extends it."""
@@ -26,7 +26,7 @@ class ModelChoice:
         return member in self.members
 
 
-def parse_model(text, source="--model"):
+def parse_model(text, source="model"):
     """The :class:`ModelChoice` of ``text`` (``"whipple"``, ``"tyre+rider-lean"``, ...; order does not
     matter, ``whipple`` may be named alongside); :class:`~bikemass.core.errors.InputError` naming the
     choices for anything else."""
@@ -34,13 +34,13 @@ def parse_model(text, source="--model"):
         return text
     choices = f"{BASE}, {', '.join(MEMBERS)}, or members joined by '+' (e.g. rider-lean+tyre)"
     if not isinstance(text, str) or not text.strip():
-        raise InputError(source, "model", f"a model name: {choices}")
+        raise InputError(source, short(text) or "(empty)", f"a model name: {choices}")
     names = [part.strip() for part in text.split("+")]
     for name in names:
         if name != BASE and name not in MEMBERS:
-            raise InputError(source, "model", f"unknown model {name!r}: one of {choices}")
+            raise InputError(source, short(text), f"unknown model {name!r}: one of {choices}")
         if names.count(name) > 1:
-            raise InputError(source, "model", f"{name!r} given twice in {text!r}")
+            raise InputError(source, short(text), f"{name!r} given twice in {text!r}")
     return ModelChoice(tuple(m for m in MEMBERS if m in names))
 
 

@@ -16,6 +16,8 @@ Vehicle System Dynamics 50(8), "Measuring sideslip and camber characteristics of
 """
 
 import math
+import os
+from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
 
 from ..core.config import Node, load_yaml
@@ -88,3 +90,17 @@ def tyres_from_mapping(mapping, source="tyres"):
     node = Node(plain_input(mapping, source), source, "")
     node.mapping()
     return tyres_from_node(node)
+
+
+def as_tyres(given=None, source="tyres"):
+    """:class:`Tyres` of ``given``: a :class:`Tyres` as it is, a tyre file (a path), a mapping in the
+    file's form, or ``None`` for :data:`DEFAULT_TYRES`; :class:`~bikemass.core.errors.InputError` otherwise."""
+    if given is None:
+        return DEFAULT_TYRES
+    if isinstance(given, Tyres):
+        return given
+    if isinstance(given, Mapping):
+        return tyres_from_mapping(given, source)
+    if isinstance(given, (str, os.PathLike)):
+        return load_tyres(os.fspath(given))
+    raise InputError(source, "(argument)", f"Tyres, a tyre YAML file or a mapping in its form, not {type(given).__name__}")

@@ -7,7 +7,7 @@ import numpy as np
 from matplotlib import colormaps
 
 from ..core.errors import InputError, wrong_type
-from .figure import check_limits, new_figure
+from .figure import Figure, check_limits, new_figure
 from .stability import CriticalSpeeds
 
 WEAVE_MARKER, CAPSIZE_MARKER = "o", "s"
@@ -30,15 +30,56 @@ def _write_values(ax, speeds, y, xlim):
                         ha="left" if k else "right", va="center", fontsize=6.5)
 
 
-def plot_critical_speeds(results, title="", size=None, xlim=None, values=True):
-    """Figure: ``results`` = ``{row: {series: result}}`` (e.g. rider -> stiffness ->
-    :class:`~bikemass.analysis.engine.stability.StabilityResult` or
-    :class:`~bikemass.plots.stability.CriticalSpeeds`), rows top to bottom.
+def plot_critical_speeds(results: "Mapping[str, Mapping[str, StabilityResult | CriticalSpeeds]]", title: str = "",
+                         size: "tuple[float, float] | None" = None, xlim: "tuple[float, float] | None" = None,
+                         values: bool = True) -> Figure:
+    """Figure: the weave and capsize speeds of many configurations and the stable speeds between.
 
-    Each configuration is a line: a bar over its stable speeds, a circle at each weave speed,
-    a square at each capsize speed, the speeds written beside the marks (or the bar's ends
-    where no crossing speeds are given) if ``values``.
-    ``xlim``: speed range (m/s); default from 0 to beyond the largest critical speed.
+    Each configuration is a line: a bar over its stable speeds, a circle at each weave speed, a
+    square at each capsize speed, the speeds written beside the marks (or the bar's ends where no
+    crossing speeds are given) if ``values``. Rows top to bottom, one colour per series.
+
+    Parameters
+    ----------
+    results : Mapping of Mapping
+        ``{row: {series: result}}`` (e.g. rider -> stiffness -> result); each result a
+        :class:`~bikemass.StabilityResult` or :class:`~bikemass.plots.stability.CriticalSpeeds`.
+    title : str
+        Figure title.
+    size : (float, float), optional
+        Figure size (width, height) in inches; default 7 wide, the height from the rows.
+    xlim : (float, float), optional
+        Speed range (m/s); default from 0 to beyond the largest critical speed.
+    values : bool
+        Write each speed beside its mark.
+
+    Returns
+    -------
+    Figure
+        A :class:`matplotlib.figure.Figure` (no pyplot; shows itself in Jupyter).
+
+    Raises
+    ------
+    InputError
+        No result to draw, or bad size or limits.
+    InputTypeError
+        ``results`` not a mapping of mappings.
+
+    See Also
+    --------
+    stability : What each result is.
+    plot_eigenvalues : One result in full.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> bike = bm.load_bicycle("jamis")
+    >>> p = bm.parameters(bike, "relaxed")
+    >>> results = {"relaxed": {frame: bm.stability(p, stiffness=bm.stiffness(bike, frame))
+    ...                        for frame in ("infinite", "steel", "aluminum")}}
+    >>> fig = bm.plot_critical_speeds(results, title="Jamis + Relaxed")
+    >>> [t.get_text() for t in fig.axes[0].get_yticklabels()]
+    ['relaxed']
     """
     if not isinstance(results, Mapping) or not all(isinstance(row, Mapping) for row in results.values()):
         raise wrong_type("results", results, "a mapping {row: {series: result}}")

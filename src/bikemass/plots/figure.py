@@ -1,17 +1,19 @@
-"""Figures without global state: a new :class:`matplotlib.figure.Figure`, the file formats
-matplotlib can write, and saving a figure with its text kept as text in vector files.
+"""Figures without global state: a new :class:`Figure` (a :class:`matplotlib.figure.Figure` that
+shows itself in Jupyter), the file formats matplotlib can write, and saving a figure with its
+text kept as text in vector files.
 
 No pyplot and no ``matplotlib.use``: the caller's backend and open figures are left alone.
 """
 
 import math
+import os
 import threading
 from io import BytesIO
 from pathlib import Path
 
 from matplotlib import rc_context
 from matplotlib.backend_bases import FigureCanvasBase
-from matplotlib.figure import Figure
+from matplotlib import figure
 
 from ..core.errors import InputError, short, wrong_type
 from ..core.output import write_atomic
@@ -30,6 +32,24 @@ draw and restores them, and matplotlib's mathtext parser is not thread-safe (mat
 on ``$v$`` drawn in two threads at once), so the web server's callbacks draw one at a time."""
 UNWRITABLE = {"pgf"}
 """Formats matplotlib lists but that need outside tools (LaTeX) to write."""
+
+
+DISPLAY_DPI = 100
+"""Resolution (dots per inch) of the PNG a figure shows in Jupyter."""
+
+
+class Figure(figure.Figure):
+    """A :class:`matplotlib.figure.Figure` that displays itself in Jupyter without ``%matplotlib inline``.
+
+    bikemass never registers its figures with pyplot (that would change the caller's state), so
+    IPython knows them only through this class's ``_repr_png_``: the figure drawn by matplotlib's
+    Agg canvas at :data:`DISPLAY_DPI`, on demand. Everything else is matplotlib's Figure: save it,
+    change its axes, or give it to ``pyplot`` as usual.
+    """
+
+    def _repr_png_(self):
+        """The figure as PNG bytes (IPython's rich display)."""
+        return figure_bytes(self, "png", DISPLAY_DPI)
 
 
 MAX_INCHES = 1000.0
@@ -57,7 +77,7 @@ def check_limits(limits, what):
 
 
 def new_figure(size):
-    """An empty :class:`~matplotlib.figure.Figure` of ``size`` = (width, height) in inches
+    """An empty :class:`Figure` of ``size`` = (width, height) in inches
     (each above 0 and at most :data:`MAX_INCHES`), laid out by matplotlib's constrained layout."""
     size = _pair(size, "size", f"a figure size (width, height) in inches, each in (0, {MAX_INCHES:g}]",
                  lambda a, b: 0 < a <= MAX_INCHES and 0 < b <= MAX_INCHES)
@@ -91,9 +111,49 @@ def figure_bytes(fig, fmt="png", dpi=DPI):
     return buffer.getvalue()
 
 
-def save_figure(fig, path, dpi=DPI):
-    """Write ``fig`` to ``path`` (format from the suffix) atomically: never half-written."""
-    if not isinstance(fig, Figure):
+def save_figure(fig: figure.Figure, path: "str | os.PathLike", dpi: float = DPI) -> None:
+    """Write a figure to a file, its format from the suffix, atomically: never half-written.
+
+    Vector formats keep their text as text (SVG ``<text>``, TrueType in PDF and PS), set for this
+    saving only (``matplotlib.rc_context``), never in the global ``rcParams``.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+        Any figure (bikemass's or your own).
+    path : str or os.PathLike
+        The file; its suffix picks the format: anything matplotlib writes (``.png``, ``.pdf``,
+        ``.svg``, ...).
+    dpi : float
+        Resolution of raster output (dots per inch), 10 to 2000.
+
+    Returns
+    -------
+    None
+
+    Raises
+    ------
+    InputError
+        A suffix matplotlib cannot write, a ``dpi`` out of range, a raster image of more than
+        200 million pixels, or a file that cannot be written.
+    InputTypeError
+        ``fig`` not a Figure.
+
+    See Also
+    --------
+    plot_eigenvalues, plot_side_view : Figures to save.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> import bikemass as bm
+    >>> fig = bm.plot_eigenvalues(bm.eigenvalues(bm.parameters("benchmark")))
+    >>> path = os.path.join(tempfile.mkdtemp(), "eigenvalues.svg")
+    >>> bm.save_figure(fig, path)
+    >>> open(path).read().count("<text") > 0           # the labels stay text
+    True
+    """
+    if not isinstance(fig, figure.Figure):
         raise wrong_type("fig", fig, "a matplotlib Figure")
     if isinstance(dpi, bool) or not isinstance(dpi, (int, float)) or not MIN_DPI <= dpi <= MAX_DPI:
         raise InputError("dpi", dpi, f"a resolution in dots per inch, {MIN_DPI} to {MAX_DPI}")

@@ -4,7 +4,7 @@ view) with axes, the undeformed frame, the clamped points and the mode's type.""
 import numpy as np
 
 from ..core.errors import wrong_type
-from .figure import new_figure
+from .figure import Figure, new_figure
 
 SIDE, TOP = ((0, 2), (0, 1))
 """Global axes shown in the side view (x, height = -z) and the top view (x, y)."""
@@ -66,14 +66,46 @@ def _view(ax, points, moved, elements, axes, clamped, top, limits):
         ax.invert_yaxis()                             # seen from above: the right-hand side downwards
 
 
-def plot_frame_modes(modes, scale=0.12, size=None):
-    """Figure: one row per mode of :class:`~bikemass.fe.modes.Modes`: side view (x forward,
-    height up) and top view (seen from above, y to the right downwards), axes in metres.
+def plot_frame_modes(modes: "Modes", scale: float = 0.12, size: "tuple[float, float] | None" = None) -> Figure:
+    """Figure: the mode shapes of a frame's beam model, one row per mode, in a side view (x
+    forward, height up) and a top view (seen from above, y to the right downwards), axes in metres.
 
     The undeformed frame is grey, the mode shape blue; a shape's amplitude is arbitrary, so
     each is drawn with its largest nodal translation ``scale`` times the frame's largest
     dimension (stated on the figure).  Clamped nodes are black markers; each row names the
-    frequency and the mode type (:func:`classify`).
+    frequency and the mode type (:func:`~bikemass.plots.frame_modes.classify`).
+
+    Parameters
+    ----------
+    modes : Modes
+        From :func:`bikemass.frame_modes`.
+    scale : float
+        Drawn amplitude as a fraction of the frame's largest dimension.
+    size : (float, float), optional
+        Figure size (width, height) in inches; default 9 wide, 2.6 per mode.
+
+    Returns
+    -------
+    Figure
+        A :class:`matplotlib.figure.Figure` (no pyplot; shows itself in Jupyter).
+
+    Raises
+    ------
+    InputError
+        Bad size.
+    InputTypeError
+        ``modes`` not frame modes.
+
+    See Also
+    --------
+    frame_modes : What it draws.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> fig = bm.plot_frame_modes(bm.frame_modes("jamis", support="fix-rear", count=2))
+    >>> len(fig.axes)                          # a side and a top view per mode
+    4
     """
     if not hasattr(modes, "mesh"):
         raise wrong_type("modes", modes, "frame Modes (bm.frame_modes)")

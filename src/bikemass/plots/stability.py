@@ -8,7 +8,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.errors import wrong_type
-from .figure import check_limits, new_figure
+from .figure import Figure, check_limits, new_figure
 
 SIZE = (7.0, 4.6)
 """Default figure size (inches): a journal's two-column width."""
@@ -47,12 +47,59 @@ class CriticalSpeeds:
                    tuple(map(tuple, stability.ranges["strict"]["exact"])))
 
 
-def plot_eigenvalues(result, title="", size=None, xlim=None, ylim=None):
-    """Figure: eigenvalues (1/s) of ``result`` against speed (m/s).
+def plot_eigenvalues(result: "StabilityResult | Modes", title: str = "", size: "tuple[float, float] | None" = None,
+                     xlim: "tuple[float, float] | None" = None,
+                     ylim: "tuple[float, float] | None" = None) -> Figure:
+    """Figure: eigenvalues (1/s) against speed (m/s) in the field's convention (Meijaard et al.
+    2007, Fig. 3).
 
-    ``result``: a :class:`~bikemass.analysis.engine.stability.StabilityResult` (weave and capsize speeds
-    marked, stable speeds shaded) or bare :class:`~bikemass.analysis.engine.modes.Modes`.
-    ``xlim`` (m/s) and ``ylim`` (1/s) override the automatic zoom.
+    Real parts solid and imaginary parts dashed on one axis, one colour per mode, zoomed to about
+    1.6 times the last critical speed and to the weave and capsize roots; the fast caster root is
+    clipped with a note; the weave and capsize speeds are dotted lines with their values and the
+    stable speeds are shaded (docs/figures.md).
+
+    Parameters
+    ----------
+    result : StabilityResult or Modes
+        From :func:`bikemass.stability` (critical speeds marked, stable speeds shaded) or
+        :func:`bikemass.eigenvalues` (the curves alone).
+    title : str
+        Axes title.
+    size : (float, float), optional
+        Figure size (width, height) in inches; default 7 x 4.6.
+    xlim : (float, float), optional
+        Speed range (m/s), overriding the automatic zoom.
+    ylim : (float, float), optional
+        Eigenvalue range (1/s), overriding the automatic zoom.
+
+    Returns
+    -------
+    Figure
+        A :class:`matplotlib.figure.Figure` (no pyplot; shows itself in Jupyter).
+
+    Raises
+    ------
+    InputError
+        Bad size or limits.
+    InputTypeError
+        ``result`` of another type.
+
+    See Also
+    --------
+    stability : What it draws.
+    plot_critical_speeds : Many results on one figure.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> fig = bm.plot_eigenvalues(bm.stability(bm.parameters("benchmark")), title="benchmark")
+    >>> ax = fig.axes[0]
+    >>> [t.get_text() for t in ax.get_legend().get_texts()][:4]
+    ['weave', 'weave as real roots', 'capsize', 'caster']
+    >>> [t.get_text() for t in ax.texts if t.get_text().startswith("=")]     # v_w and v_c marked
+    ['= 4.29 m/s ', '= 6.02 m/s ']
+    >>> [float(x) for x in ax.get_xlim()]               # 0 to about 1.6 times the capsize speed
+    [0.0, 10.0]
     """
     if not hasattr(result, "modes") and not hasattr(result, "eigenvalues"):
         raise wrong_type("result", result, "a StabilityResult (bm.stability) or Modes (bm.eigenvalues)")

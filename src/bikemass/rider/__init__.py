@@ -44,7 +44,22 @@ class Rider:
     A chain-form pose without ``bike:`` (a person with a posture rule: hands on a grip, a torso
     lean, the saddle) has no parts until a bicycle seats it: :attr:`needs_bicycle` is True and
     :meth:`properties` refuses; :func:`bikemass.seated_rider` (and every analysis given the
-    rider with a bicycle) solves it on that bicycle's contacts."""
+    rider with a bicycle) solves it on that bicycle's contacts.
+
+    See Also
+    --------
+    bikemass.load_rider : Makes one from a pose name, a file or a mapping.
+    bikemass.pose_rider : Poses one by joint angles.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> rider = bm.load_rider("aero-tuck")
+    >>> [name for name, body, _ in rider.breakdown()][:3]
+    ['head', 'torso', 'upper_arm_right']
+    >>> print(f"{rider.properties().mass:.2f} kg")
+    82.15 kg
+    """
 
     pose: str
     name: str

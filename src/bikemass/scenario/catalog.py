@@ -1,6 +1,6 @@
-"""Names, files, mappings -> models: what ``bm.parameters``, ``bm.seated_rider``, ``bm.stiffness``
-and ``bm.geometry_chart`` do, and what every command calls with its BIKE / POSE / stiffness
-arguments.  Bicycles and riders are anything :mod:`bikemass.scenario.loading` loads.
+"""Names, files, mappings -> seated riders, frame stiffness and charts: what ``bm.seated_rider``,
+``bm.stiffness`` and ``bm.geometry_chart`` do, and what the scenario builder
+(:mod:`bikemass.scenario.scenario`) calls with its rider and stiffness choices.  Bicycles and riders are anything :mod:`bikemass.scenario.loading` loads.
 Bad input raises :class:`~bikemass.core.errors.InputError` (a ValueError) naming the
 source (``<mapping>`` for Python values), the key and what was expected.
 """
@@ -10,77 +10,71 @@ import warnings
 from collections.abc import Mapping
 
 import numpy as np
+from numpy.typing import ArrayLike
 
-from ..bicycle import bicycle_parameters
 from ..bicycle.benchmark import refuse_second_rider
 from ..bicycle.derived_chart import derived_chart
-from ..core.choices import RIGID, Beam, Combine, Method, Procedure, Source, check
+from ..core.choices import RIGID, Beam, Combine, Procedure, Source, check
 from ..core.config import load_yaml
 from ..core.errors import BikemassWarning, InputError
 from ..core.paths import closest_name
 from ..mass.materials import Material, load_materials
 from ..models.plausibility import check_stiffness
+from ..rider import Rider
 from ..rider.seating import seat_rider
 from .frame import frame_stiffness
-from .loading import load_bicycle, load_rider
+from .loading import BicycleLike, RiderLike, load_bicycle, load_rider
 
 COMBINE_CHOICES = Combine.values()
 """Rider + rear frame: 'exact' = parallel-axis theorem; 'thesis' = inertias added (Eq. 3.6)."""
 
 
-def parameters(bicycle, rider=None, combine=Combine.EXACT, method=Method.MESH, allow_off_contact=False):
-    """The Meijaard et al. (2007) benchmark parameter set of a bicycle with a rider.
-
-    Parameters
-    ----------
-    bicycle
-        Anything :func:`load_bicycle` takes.
-    rider
-        Anything :func:`load_rider` takes; ``None`` (default) for no rider.  The rider is
-        seated on the bicycle (:func:`seated_rider`): a contact off the bicycle is an error
-        unless ``allow_off_contact``.
-    combine : {"exact", "thesis"}
-        Rider + frame body: parallel-axis theorem (``exact``, default) or the thesis's
-        Eq. 3.6 (central inertias added), see :class:`~bikemass.core.choices.Combine`.
-    method : {"mesh", "exact"}
-        Mass properties from trimesh meshes (default) or closed-form solids.
-
-    Returns
-    -------
-    BenchmarkParameters
-        Immutable; the 26 values as attributes (``p.w`` in m, ``p.lam`` in rad, ``p.IBxx``
-        in kg m^2, ...) and ``p.to_dict()`` as plain floats.  A parameter file without a
-        rider returns its own values exactly.
-    """
-    combine, method = check(Combine, combine), check(Method, method)
-    model = load_bicycle(bicycle)
-    return bicycle_parameters(model, seated_rider(model, rider, allow_off_contact), combine.value, method.value)
-
-
-def seated_rider(bicycle, rider, allow_off_contact=False, as_printed=False):
+def seated_rider(bicycle: BicycleLike, rider: RiderLike, allow_off_contact: bool = False,
+                 as_printed: bool = False) -> Rider | None:
     """The rider seated on the bicycle (:mod:`bikemass.rider.seating`), or ``None`` for no rider.
 
     Parameters
     ----------
-    bicycle
+    bicycle : str, os.PathLike, Mapping, BenchmarkParameters or Bicycle
         Anything :func:`load_bicycle` takes.
-    rider
+    rider : str, os.PathLike, Mapping, Rider or None
         Anything :func:`load_rider` takes.  A chain pose without ``bike:`` is solved on this
         bicycle; a shipped pose is used as written where it meets the contacts within 1 mm,
         else re-seated by its posture.
     allow_off_contact : bool
         Use the pose as written even off the contacts (the thesis's riders).
+    as_printed : bool
+        Read a pose with the thesis's printed values (``printed:`` keys), not the errata.
 
     Returns
     -------
     Rider or None
+        The rider placed on this bicycle (benchmark frame, m).
 
     Raises
     ------
     InputError
         A contact further than 1 mm from the bicycle's (without ``allow_off_contact``), out
-        of reach, a bicycle whose rear body already holds a rider (``rider_included``), or bad input.  Gaps allowed, and contacts that cannot be checked, are
-        :class:`~bikemass.core.errors.BikemassWarning` s.
+        of reach, a bicycle whose rear body already holds a rider (``rider_included``), or bad
+        input.
+
+    Warns
+    -----
+    BikemassWarning
+        Gaps allowed by ``allow_off_contact``, and contacts that cannot be checked (a lumped
+        rider has no contact points).
+
+    See Also
+    --------
+    parameters : Seats the rider this way before combining it with the frame.
+    pose_rider : A rider posed by joint angles.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> rider = bm.seated_rider("cargo", "relaxed")
+    >>> print(rider.name, f"{rider.properties().mass:.2f} kg")
+    Relaxed 82.15 kg
     """
     if rider is None or (isinstance(rider, str) and rider == "none"):
         return None
@@ -92,14 +86,16 @@ def seated_rider(bicycle, rider, allow_off_contact=False, as_printed=False):
     return seated.rider
 
 
-def stiffness(bicycle, which, source=Source.AUTO, procedure=Procedure.CONDENSED, beam=Beam.TIMOSHENKO):
+def stiffness(bicycle: BicycleLike, which: "str | os.PathLike | Material | ArrayLike | None",
+              source: Source | str = Source.AUTO, procedure: Procedure | str = Procedure.CONDENSED,
+              beam: Beam | str = Beam.TIMOSHENKO) -> np.ndarray | None:
     """The 2x2 rear-frame stiffness S (N m/rad) on roll and steer at the head tube.
 
     Parameters
     ----------
-    bicycle
+    bicycle : str, os.PathLike, Mapping, BenchmarkParameters or Bicycle
         Anything :func:`load_bicycle` takes (needed for a material name).
-    which : str, Material, array_like (2, 2) or None
+    which : str, os.PathLike, Material, array_like of shape (2, 2) or None
         ``"infinite"``/``"rigid"``/``None``: a rigid frame (returns ``None``); a material
         (``"steel"``, ``"titanium"``, ``"aluminum"``, any key or alias of
         ``frames/materials.yaml``, or a :class:`~bikemass.mass.materials.Material`): the
@@ -124,6 +120,20 @@ def stiffness(bicycle, which, source=Source.AUTO, procedure=Procedure.CONDENSED,
     InputError
         Unknown material or file, a bicycle with neither a published S nor a rear-frame
         structure, or a matrix that is not symmetric positive definite.
+
+    See Also
+    --------
+    frame_stiffness : S from the beam model alone.
+    stability : Takes S as ``stiffness=``.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> S = bm.stiffness("jamis", "steel")                 # the beam model of its rear frame
+    >>> print(S.shape, f"K_roll {S[0, 0]:.1f}, K_steer {S[1, 1]:.1f}, K_coupling {S[0, 1]:.1f} N m/rad")
+    (2, 2) K_roll 6702.3, K_steer 3634.7, K_coupling 1237.0 N m/rad
+    >>> bm.stiffness("jamis", "infinite") is None
+    True
     """
     source, procedure, beam = check(Source, source), check(Procedure, procedure), check(Beam, beam)
     if which is None or (isinstance(which, str) and which in (RIGID, "rigid")):
@@ -173,8 +183,37 @@ def stiffness_matrix(values):
     return S
 
 
-def geometry_chart(bicycle, size=None):
-    """The derived chart (m, deg; :data:`~bikemass.bicycle.derived_chart.CHART_ORDER`) of anything
-    ``bm.load_bicycle`` takes;
-    ``size`` picks one size of a size run."""
+def geometry_chart(bicycle: BicycleLike, size: str | None = None) -> dict:
+    """The derived geometry chart of a bicycle: what a manufacturer's chart lists.
+
+    Parameters
+    ----------
+    bicycle : str, os.PathLike, Mapping, BenchmarkParameters or Bicycle
+        Anything :func:`load_bicycle` takes.
+    size : str, optional
+        One size of a size run (``sizes:``).
+
+    Returns
+    -------
+    dict
+        ``{name: value}`` in :data:`~bikemass.bicycle.derived_chart.CHART_ORDER`: lengths in m
+        (``wheelbase``, ``trail``, ``stack``, ``reach``, ...), angles in deg
+        (``head_tube_angle``, ``seat_tube_angle``).
+
+    Raises
+    ------
+    InputError
+        Bad bicycle or unknown size.
+
+    See Also
+    --------
+    plot_chart : The same dimensions drawn on the frame.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> chart = bm.geometry_chart("bmc-roadmachine", size="56")    # the maker's chart: 590 / 388 mm
+    >>> print(f"stack {chart['stack']:.3f} m, reach {chart['reach']:.3f} m, trail {chart['trail']:.4f} m")
+    stack 0.590 m, reach 0.388 m, trail 0.0628 m
+    """
     return derived_chart(load_bicycle(bicycle, size=size))

@@ -4,31 +4,46 @@ natural frequencies (``bm.frame_modes``)."""
 
 import numbers
 
+import numpy as np
+
 from ..core.choices import Beam, Procedure, Support, check
 from ..core.errors import InputError
 from ..fe.defaults import DEFAULT_ELEMENT_SIZE, MAX_ELEMENTS
 from ..fe.model import element_count, resolve_material
 from ..mass.materials import Material
-from .loading import load_bicycle
+from ..mass.tubes import Structure
+from .loading import BicycleLike, load_bicycle
 
 
-def frame_structure(bicycle):
+def frame_structure(bicycle: BicycleLike) -> Structure:
     """The structural rear frame of a bicycle: tubes, dropouts and head tube.
 
     Parameters
     ----------
-    bicycle
+    bicycle : str, os.PathLike, Mapping, BenchmarkParameters or Bicycle
         Anything :func:`bikemass.load_bicycle` takes.
 
     Returns
     -------
     Structure
-        ``.tubes``, ``.dropouts``, ``.head_tube`` and ``.keypoints`` (m).
+        ``.tubes`` (centre lines, sections, materials), ``.dropouts``, ``.head_tube`` and
+        ``.keypoints`` (m, benchmark frame).
 
     Raises
     ------
     InputError
         If the bicycle's file names no ``structure:`` (e.g. a parameter file).
+
+    See Also
+    --------
+    frame_stiffness, frame_modes : What the beam model of the structure gives.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> structure = bm.frame_structure("jamis")
+    >>> print(len(structure.tubes), "tubes; clamped at", structure.dropouts, "; S at", structure.head_tube[1])
+    9 tubes; clamped at ('dropout_left', 'dropout_right') ; S at head_bottom
     """
     model = load_bicycle(bicycle)
     if model.structure is None:
@@ -37,12 +52,14 @@ def frame_structure(bicycle):
     return model.structure
 
 
-def frame_stiffness(bicycle, material=None, procedure=Procedure.CONDENSED, beam=Beam.TIMOSHENKO):
+def frame_stiffness(bicycle: BicycleLike, material: "str | Material | None" = None,
+                    procedure: Procedure | str = Procedure.CONDENSED,
+                    beam: Beam | str = Beam.TIMOSHENKO) -> np.ndarray:
     """The 2x2 stiffness S of a bicycle's rear frame from its beam finite elements.
 
     Parameters
     ----------
-    bicycle
+    bicycle : str, os.PathLike, Mapping, BenchmarkParameters or Bicycle
         Anything :func:`bikemass.load_bicycle` takes, with a rear-frame ``structure``.
     material : str or Material, optional
         Every tube in this material (a shipped name or a one-material YAML file);
@@ -56,6 +73,26 @@ def frame_stiffness(bicycle, material=None, procedure=Procedure.CONDENSED, beam=
     -------
     numpy.ndarray of shape (2, 2)
         S in N m/rad on (roll, steer) at the bottom head-tube keypoint, dropouts clamped.
+
+    Raises
+    ------
+    InputError
+        A bicycle without a structure, an unknown material, or a structure its dropouts do not
+        hold.
+
+    See Also
+    --------
+    stiffness : Published S where the bicycle carries one, else this.
+    frame_modes : The same beam model's natural frequencies.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> for material in ("steel", "aluminum"):
+    ...     S = bm.frame_stiffness("jamis", material)
+    ...     print(f"{material:8s} K_roll {S[0, 0]:7.1f} K_steer {S[1, 1]:7.1f} N m/rad")
+    steel    K_roll  6702.3 K_steer  3634.7 N m/rad
+    aluminum K_roll  2224.6 K_steer  1212.7 N m/rad
     """
     # lazy: the beam model's solver loads scipy.sparse (slower to import than numpy); only S needs it
     from ..fe.stiffness import equivalent_stiffness
@@ -79,13 +116,14 @@ def _material(material):
     return resolve_material(str(material))
 
 
-def frame_modes(bicycle, support=Support.FREE, count=10, material=None, element_size=DEFAULT_ELEMENT_SIZE,
-                beam=Beam.TIMOSHENKO, max_elements=MAX_ELEMENTS):
+def frame_modes(bicycle: BicycleLike, support: Support | str = Support.FREE, count: int = 10,
+                material: "str | Material | None" = None, element_size: float = DEFAULT_ELEMENT_SIZE,
+                beam: Beam | str = Beam.TIMOSHENKO, max_elements: int = MAX_ELEMENTS) -> "Modes":
     """The lowest natural frequencies and mode shapes of a bicycle's rear frame.
 
     Parameters
     ----------
-    bicycle
+    bicycle : str, os.PathLike, Mapping, BenchmarkParameters or Bicycle
         Anything :func:`bikemass.load_bicycle` takes, with a rear-frame ``structure``.
     support : {"free", "fix-rear", "fix-head", "fix-both"}
         Boundary condition; free-free skips the six rigid-body modes.
@@ -105,7 +143,26 @@ def frame_modes(bicycle, support=Support.FREE, count=10, material=None, element_
     Returns
     -------
     Modes
-        ``.frequencies_hz`` (count,) ascending, ``.shapes`` (n_dof, count) mass-normalised.
+        ``.frequencies_hz`` (count,) ascending, ``.shapes`` (n_dof, count) mass-normalised,
+        ``.mesh`` the beam mesh, ``.bc`` the support.
+
+    Raises
+    ------
+    InputError
+        A bicycle without a structure, an unknown support or material, a ``count`` or
+        ``element_size`` out of range, or more than ``max_elements`` elements.
+
+    See Also
+    --------
+    plot_frame_modes : Draw the mode shapes.
+    frame_stiffness : The same beam model's static stiffness.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> modes = bm.frame_modes("jamis", support="fix-rear", count=3)
+    >>> print([f"{f:.2f} Hz" for f in modes.frequencies_hz])
+    ['22.44 Hz', '35.81 Hz', '157.40 Hz']
     """
     # lazy: the modal solver loads scipy.linalg and scipy.sparse; only frame modes need it
     from ..fe.modes import frame_modes as solve

@@ -13,37 +13,40 @@ Inputs are named by keys:
 The YAML files are parsed once; a bicycle (its meshes' mass properties, and its stiffness)
 and a rider are built once per distinct set of their own changes and reused by every
 configuration that shares them; each part's mass properties once per distinct part (a
-changed stack re-computes only the parts it moves or resizes).
-
-A changed chart value is built from the chart as published less its redundant values
-(:meth:`Model._changeable_chart`); a chain-form pose without ``bike:`` of its own (or naming this
-scenario's bicycle) is solved on each configuration's bicycle, and a pose naming another
-bicycle reads that bicycle once.
+changed stack re-computes only the parts it moves or resizes), a changed document copied only
+along the changed paths, and a chain pose's own bicycle (another than the scenario's) read once.
 """
 
 import copy
+import os
 from collections import OrderedDict
 from collections.abc import Mapping
 
-from ..bicycle.benchmark import merge_rider, parameters_from_bodies, refuse_second_rider, rider_bodies
-from ..bicycle.loader import _is_parameter_text, _with_base, bicycle_from_mapping, bicycle_from_parameters
+from ..bicycle.benchmark import bicycle_parameters, combined_bodies, parameters_from_bodies, refuse_second_rider
 from ..bicycle.chart import ANGLE_KEYS, CHECKED_KEYS, FRAME_KEYS, STAND_INS
+from ..bicycle.loader import _is_parameter_text, _with_base, bicycle_from_mapping
 from ..bicycle.model import BODIES, Bicycle
+from ..bicycle.parameter_sets import RIDER_LEAN, kind_of, read_parameter_set
 from ..bicycle.parameter_text import load_parameter_text
 from ..bicycle.sizes import split_size
+from ..core.choices import RIGID
 from ..core.config import Node, load_yaml
 from ..core.errors import InputError
 from ..core.gate import MAPPING, plain_input
 from ..core.paths import frames_dir, resolve
 from ..core.units import DIMENSIONS, dimension_of
 from ..mass.inertia import combine
-from ..mass.materials import load_materials
+from ..mass.materials import Material, load_materials
+from ..models.flexible import Compliances
+from ..models.moore2012 import from_moore_values
 from ..models.parameters import NAMES, BenchmarkParameters
-from ..models.plausibility import check_parameters
 from ..rider import Rider, _read_document, poses_dir
 from ..rider.chain_file import bicycle_contacts
+from ..rider.lean_split import rider_lean_parameters
+from ..rider.seating import SeatedRider
 from . import catalog
 from .catalog import seated_rider
+from .loading import load_bicycle, load_rider
 
 RIDER_PREFIX = "rider."
 STIFFNESS_KEY = "stiffness"
@@ -144,10 +147,12 @@ def file_unit(model, key):
 def _located(model, key):
     """``(document, path, value)`` of dotted input ``key`` of ``model`` (one size of a size run)."""
     if key.startswith(RIDER_PREFIX):
-        if model._rider_doc is None:
+        source, doc = model._read_rider()
+        if doc is None:
             raise InputError(model.origin, key, "a rider to change (no rider given)")
         path = key[len(RIDER_PREFIX):]
-        return model._rider_doc, path, _walk(model._rider_doc, path, model._rider_source, model.origin)
+        return doc, path, _walk(doc, path, source, model.origin)
+    model._read()
     value = _walk(model._bike_doc, key, model._bike_source, model.origin)
     if model._size_index is not None and isinstance(value, list):
         value = value[model._size_index]
@@ -203,42 +208,49 @@ def _copied_along(document, paths):
     return out
 
 
-class Model:
-    """``Model(bike, rider, stiffness, combine).build(changes)`` -> :class:`Built`."""
+class Inputs:
+    """The inputs of one :class:`~bikemass.scenario.scenario.Scenario`, read once and rebuilt with changes.
 
-    def __init__(self, bike, rider=None, stiffness="infinite", combine="exact", method="mesh", origin="spec"):
-        self.bike, self.rider, self.stiffness, self.combine, self.method = bike, rider, stiffness, combine, method
-        self.origin = origin
-        self.file_std = {}
-        """``{name: std}`` of a BicycleParameters text file's ``+/-`` values (SI; those above 0)."""
+    Every piece (a bicycle, a posed and a seated rider, the bicycle's bodies, the benchmark set, the
+    leaning rider's split, a stiffness, the flexible model's compliances, the tyres) is cached by the
+    changes it depends on, so a sweep or a web page pays only for what changed.  Without changes
+    every piece is what the loaders give for the scenario as written (``bm.load_bicycle``,
+    ``bm.seated_rider``, ``bm.stiffness``).
+    """
+
+    def __init__(self, bike, rider=None, combine="exact", method="mesh", origin="spec", allow_off_contact=False):
+        self.bike, self.rider, self.combine, self.method = bike, rider, combine, method
+        self.origin, self.allow_off_contact = origin, allow_off_contact
+        self._documents = None
+        self._rider_documents = None
+        self._caches = {}
+        self._materials = None
+
+    def _cache(self, name):
+        return self._caches.setdefault(name, OrderedDict())
+
+    # -- the documents, read on first use --------------------------------------------------
+    def _read(self):
+        """Read the bicycle's document once (for changes and their values): its source and
+        document, or what a parameter file or a built value holds instead."""
+        if self._documents is not None:
+            return
         self._measured = self._fixed = None
         self._size = self._size_index = None
-        if isinstance(bike, Bicycle):                 # built already: only its parameters can change
+        self._file_std = {}
+        bike = self.bike
+        if self.lean_set is not None:
+            self._bike_source, self._bike_doc = self._lean_source, {}
+        elif isinstance(bike, Bicycle):               # built already: only its parameters can change
             self._fixed, self._bike_source, self._bike_doc = bike, bike.source, {}
         elif isinstance(bike, BenchmarkParameters):
-            self._fixed = bicycle_from_parameters(bike, "parameters", "<parameters>")
+            self._fixed = load_bicycle(bike)
             self._bike_source, self._bike_doc = "<parameters>", {}
         elif isinstance(bike, Mapping):
             self._bike_source, self._bike_doc = MAPPING, plain_input(bike, MAPPING)
         else:
-            self._read_bicycle_file(bike)
-        self._rider_doc = self._rider_source = self._fixed_rider = None
-        if isinstance(rider, Rider):
-            if rider.spec is None:
-                self._fixed_rider = rider
-            else:
-                node, _ = rider.spec
-                self._rider_source, self._rider_doc = str(node.source), copy.deepcopy(node.value)
-        elif isinstance(rider, Mapping):
-            self._rider_source, self._rider_doc = MAPPING, plain_input(rider, MAPPING)
-        elif rider not in (None, "none"):
-            rpath = resolve(rider, poses_dir(), "pose")
-            self._rider_source, self._rider_doc = str(rpath), load_yaml(rpath).value
-        self._own_bicycle_pose()
-        self._bicycles, self._bodies, self._riders, self._seated, self._stiffness, self._params, self._parts = (
-            OrderedDict() for _ in range(7))
-        self._materials = None
-        self._pose_bicycles = {}
+            self._read_bicycle_file(os.fspath(bike))
+        self._documents = True
 
     def _read_bicycle_file(self, bike):
         name, self._size = split_size(bike)
@@ -248,25 +260,72 @@ class Model:
             measured = load_parameter_text(path)
             self._measured = measured.parameters
             self._bike_doc = {"name": path.stem, **measured.parameters.to_dict()}
-            self.file_std = {k: float(v) for k, v in measured.std.items() if v > 0}
+            self._file_std = {k: float(v) for k, v in measured.std.items() if v > 0}
             return
         self._bike_doc = _with_base(load_yaml(path)).mapping()
         sizes = [str(x) for x in self._bike_doc.get("sizes", [])] if self._size is not None else []
         self._size_index = sizes.index(str(self._size)) if str(self._size) in sizes else None
 
-    def _own_bicycle_pose(self):
+    @property
+    def lean_set(self):
+        """The :class:`~bikemass.models.lean.RiderLeanParameters` of a bicycle given as a
+        ``MooreRiderLean2012`` parameter set (BicycleParameters' YAML), else ``None``."""
+        if "_lean_set" not in self.__dict__:
+            self._lean_set, self._lean_source = None, None
+            bike = self.bike
+            node = None
+            if isinstance(bike, Mapping):
+                node = Node(plain_input(bike, MAPPING), MAPPING, "")
+            elif isinstance(bike, (str, os.PathLike)):
+                path = resolve(split_size(os.fspath(bike))[0], frames_dir(), "bicycle")
+                node = None if _is_parameter_text(path) else load_yaml(path)
+            if node is not None and kind_of(node) == RIDER_LEAN:
+                read = read_parameter_set(node)
+                self._lean_set = from_moore_values(read.parameters.to_dict(), read.source)
+                self._lean_source = read.source
+        return self._lean_set
+
+    def _read_rider(self):
+        """The rider's source and document (``None`` without a rider or for a Rider built from parts)."""
+        if self._rider_documents is not None:
+            return self._rider_documents
+        rider, source, doc = self.rider, None, None
+        if isinstance(rider, SeatedRider):
+            rider = rider.rider
+        if isinstance(rider, Rider):
+            if rider.spec is not None:
+                node, _ = rider.spec
+                source, doc = str(node.source), copy.deepcopy(node.value)
+        elif isinstance(rider, Mapping):
+            source, doc = MAPPING, plain_input(rider, MAPPING)
+        elif isinstance(rider, (str, os.PathLike)) and rider != "none":
+            rpath = resolve(os.fspath(rider), poses_dir(), "pose")
+            source, doc = str(rpath), load_yaml(rpath).value
+        elif rider not in (None, "none"):
+            load_rider(rider)                      # names what a rider is
+        self._rider_documents = (source, self._own_bicycle_pose(doc))
+        return self._rider_documents
+
+    @property
+    def file_std(self):
+        """``{name: std}`` of a BicycleParameters text file's ``+/-`` values (SI; those above 0)."""
+        self._read()
+        return self._file_std
+
+    def _own_bicycle_pose(self, doc):
         """A chain pose whose ``bike:`` names this scenario's own bicycle is solved on the bicycle
         as changed (a person re-seated by the same posture rule), so its ``bike:`` is dropped."""
-        doc = self._rider_doc
         if not (isinstance(doc, dict) and "chain" in doc and isinstance(doc.get("bike"), str)):
-            return
+            return doc
+        self._read()
         own, _ = split_size(doc["bike"])
         try:
             same = str(resolve(own, frames_dir(), "bicycle")) == self._bike_source
         except InputError:
-            return                                 # the pose's own error, reported where it is read
+            return doc                             # the pose's own error, reported where it is read
         if same and split_size(doc["bike"])[1] in (None, self._size):
-            self._rider_doc = {k: v for k, v in doc.items() if k != "bike"}
+            return {k: v for k, v in doc.items() if k != "bike"}
+        return doc
 
     # -- pieces, each cached by its own changes -------------------------------------------
     def _document(self, doc, changes, source, size_index=None):
@@ -276,15 +335,20 @@ class Model:
         return out
 
     def bicycle(self, changes=()):
-        """The bicycle with dotted-path ``changes`` (``((path, value), ...)``, sorted)."""
+        """The bicycle with dotted-path ``changes`` (``((path, value), ...)``, sorted); without
+        changes, ``bm.load_bicycle`` of the scenario's bicycle."""
+        if self.lean_set is not None:
+            raise InputError(self._lean_source, "parameterization", "a bicycle (benchmark parameters, a bicycle "
+                             "YAML or a chart); a MooreRiderLean2012 set holds only the rider-lean model's "
+                             "parameters")
+
         def build():
+            if not changes:
+                return load_bicycle(self.bike)
+            self._read()
             if self._measured is not None or self._fixed is not None:
-                if changes:
-                    what = "is a parameter file" if self._measured is not None else "was given built, not as YAML"
-                    raise InputError(self.origin, changes[0][0], f"one of the 26 parameter names (the bicycle {what})")
-                if self._fixed is not None:
-                    return self._fixed
-                return bicycle_from_parameters(self._measured, self._bike_doc["name"], self._bike_source)
+                what = "is a parameter file" if self._measured is not None else "was given built, not as YAML"
+                raise InputError(self.origin, changes[0][0], f"one of the 26 parameter names (the bicycle {what})")
             chart_changes = [path for path, _ in changes if path.split(".")[0] == CHART_KEY]
             for path in chart_changes:
                 if path.split(".")[-1] in CHECKED_KEYS:
@@ -294,7 +358,7 @@ class Model:
             base = self._changeable_chart() if chart_changes else self._bike_doc
             doc = self._document(base, changes, self._bike_source, self._size_index)
             return bicycle_from_mapping(doc, self._bike_source, self._size)
-        return _lru(self._bicycles, changes, build)
+        return _lru(self._cache("bicycles"), changes, build)
 
     def _changeable_chart(self):
         """The bicycle document with its chart ready to change: the published redundant values
@@ -319,62 +383,104 @@ class Model:
 
     def posed_rider(self, changes=()):
         """The rider (pose file with ``changes``) as written, or ``None``; a chain pose without
-        ``bike:`` is seated on each changed bicycle (:meth:`rider_bodies`)."""
-        if self._fixed_rider is not None and not changes:
-            return self._fixed_rider
-        if self._rider_doc is None:
+        ``bike:`` is seated on each changed bicycle (:meth:`seated`)."""
+        if isinstance(self.rider, (Rider, SeatedRider)) and not changes:
+            return self.rider.rider if isinstance(self.rider, SeatedRider) else self.rider
+        source, doc = self._read_rider()
+        if doc is None:
             if changes:
                 raise InputError(self.origin, changes[0][0], "a rider to change (no rider given)")
             return None
 
         def build():
-            doc = self._document(self._rider_doc, changes, self._rider_source)
-            if isinstance(doc, dict) and "chain" in doc and isinstance(doc.get("bike"), str):
-                doc["bike"] = self._pose_bicycle(doc["bike"])       # another bicycle than the scenario's: read once
-            return _read_document(Node(doc, self._rider_source, ""), self._rider_source, False)
-        return _lru(self._riders, changes, build)
+            changed = self._document(doc, changes, source)
+            if isinstance(changed, dict) and "chain" in changed and isinstance(changed.get("bike"), str):
+                changed["bike"] = self._pose_bicycle(changed["bike"], source)   # another bicycle: read once
+            return _read_document(Node(changed, source, ""), source, False)
+        return _lru(self._cache("riders"), changes, build)
 
-    def _pose_bicycle(self, name):
-        """The bicycle a chain pose names as its own ``bike:`` (loaded once per name)."""
-        if name not in self._pose_bicycles:
-            self._pose_bicycles[name] = bicycle_contacts(name, Node(name, self._rider_source, "bike"))
-        return self._pose_bicycles[name]
+    def _pose_bicycle(self, name, source):
+        """The bicycle a chain pose names as its own ``bike:`` (other than the scenario's), loaded once
+        per name: the pose is solved there and re-checked on every configuration's bicycle."""
+        bicycles = self._cache("pose bicycles")
+        if name not in bicycles:
+            bicycles[name] = bicycle_contacts(name, Node(name, source, "bike"))
+        return bicycles[name]
 
-    def rider_bodies(self, bike_changes=(), rider_changes=()):
-        """``{body: MassProperties}`` of the rider seated on the changed bicycle (as
-        :func:`bikemass.scenario.catalog.seated_rider` does), or ``None``."""
-        rider = self.posed_rider(rider_changes)
-        if rider is None:
+    def seated(self, bike_changes=(), rider_changes=()):
+        """The rider seated on the changed bicycle (:func:`bikemass.scenario.catalog.seated_rider`),
+        or ``None``; without changes, the scenario's rider as given, seated."""
+        if self.rider in (None, "none") and not rider_changes:
             return None
+        if self.lean_set is not None:
+            raise InputError(self._lean_source, "rider", "no rider added: a MooreRiderLean2012 set holds its "
+                             "rider (use --rider none)")
 
-        def build():
-            return rider_bodies(seated_rider(self.bicycle(bike_changes), rider), self.method)
-        return _lru(self._seated, (bike_changes, rider_changes), build)
-
-    def parameters(self, bike_changes=(), rider_changes=()):
-        """Benchmark parameters of the bicycle and rider with their changes (before parameter changes)."""
         def build():
             bicycle = self.bicycle(bike_changes)
-            refuse_second_rider(bicycle, self.posed_rider(rider_changes))
-            riders = self.rider_bodies(bike_changes, rider_changes)
-            if riders is None and bicycle.published is not None:
-                return bicycle.published
-            bodies = _lru(self._bodies, bike_changes, lambda: self._bicycle_bodies(bicycle))
-            return parameters_from_bodies(bicycle, merge_rider(bodies, riders or {}, self.combine))
-        return _lru(self._params, (bike_changes, rider_changes), build)
+            if not bike_changes and not rider_changes:
+                if isinstance(self.rider, SeatedRider):       # seated already (its contacts measured)
+                    refuse_second_rider(bicycle, self.rider.rider)
+                    return self.rider.rider
+                return seated_rider(bicycle, self.rider, self.allow_off_contact)
+            rider = self.posed_rider(rider_changes)
+            return None if rider is None else seated_rider(bicycle, rider, self.allow_off_contact)
+        return _lru(self._cache("seated"), (bike_changes, rider_changes), build)
+
+    def parameters(self, bike_changes=(), rider_changes=()):
+        """Benchmark parameters of the bicycle and rider with their changes (before parameter
+        changes): what ``bm.parameters`` gives for the changed files."""
+        if self.lean_set is not None:
+            if bike_changes or rider_changes:
+                key = (bike_changes or rider_changes)[0][0]
+                raise InputError(self.origin, key, "one of the 26 parameter names (the bicycle is a "
+                                 "MooreRiderLean2012 parameter set)")
+            return _lru(self._cache("params"), ((), ()), self._lean_set.rigid)
+
+        def build():
+            bicycle = self.bicycle(bike_changes)
+            if bike_changes or rider_changes:
+                refuse_second_rider(bicycle, self.posed_rider(rider_changes))
+            rider = self.seated(bike_changes, rider_changes)
+            if rider is None and bicycle.published is not None:
+                return bicycle_parameters(bicycle, None, self.combine, self.method)
+            bodies = _lru(self._cache("bodies"), bike_changes, lambda: self._bicycle_bodies(bicycle))
+            return parameters_from_bodies(bicycle, combined_bodies(bicycle, rider, self.combine, self.method, bodies))
+        return _lru(self._cache("params"), (bike_changes, rider_changes), build)
+
+    def lean(self, bike_changes=(), rider_changes=()):
+        """The leaning rider's :class:`~bikemass.models.lean.RiderLeanParameters` of the changed
+        bicycle and rider: the seated rider split at the hips (:mod:`bikemass.rider.lean_split`),
+        or the bicycle's own ``MooreRiderLean2012`` set."""
+        if self.lean_set is not None:
+            self.parameters(bike_changes, rider_changes)           # refuses changes of the set's own
+            return self.lean_set
+        if self.combine != "exact":
+            raise InputError(self.origin if self.origin != "spec" else "combine", "combine", "exact with the "
+                             "rider-lean model (its split rider is combined with the parallel-axis theorem)")
+
+        def build():
+            rider = self.seated(bike_changes, rider_changes)
+            if rider is None:
+                raise InputError("rider", "(none)", "a rider for the rider-lean model to split at the hips "
+                                 "(--rider POSE), or a MooreRiderLean2012 parameter set as the bicycle")
+            return rider_lean_parameters(self.bicycle(bike_changes), rider, self.method)
+        return _lru(self._cache("lean"), (bike_changes, rider_changes), build)
 
     def _bicycle_bodies(self, bicycle):
         """``bicycle.bodies(method)`` with each part's mass properties (its mesh) computed once per
         distinct part: a changed tube wall re-meshes only the tubes of that section."""
+        parts = self._cache("parts")
+
         def props(part):
             placement = part.placement
             key = (part.name, part.solid, part.mass, placement.rotation.tobytes(), placement.translation.tobytes(),
                    part.body)
-            cached = self._parts.get(key)
+            cached = parts.get(key)
             if cached is None:
-                cached = self._parts[key] = part.mass_properties(self.method)
-                if len(self._parts) > PART_CACHE_SIZE:
-                    self._parts.popitem(last=False)
+                cached = parts[key] = part.mass_properties(self.method)
+                if len(parts) > PART_CACHE_SIZE:
+                    parts.popitem(last=False)
             return cached
         return {b: combine(props(p) for p in bicycle.body_parts(b)) for b in BODIES}
 
@@ -383,27 +489,64 @@ class Model:
             self._materials = load_materials()
         return self._materials
 
+    def _is_material(self, which):
+        return isinstance(which, Material) or (isinstance(which, str) and which not in (RIGID, "rigid")
+                                               and which in self.materials())
+
     def frame_stiffness(self, which, bike_changes=()):
         """2x2 S (N m/rad) or None, for stiffness choice ``which`` on the changed bicycle (as
         :func:`bikemass.scenario.catalog.stiffness`; a changed bicycle's S is computed, never
         published).  ``which`` may be a name, a file, a Material or a 2x2 matrix (N m/rad)."""
-        try:
-            hash(which)
-            key = which
-        except TypeError:                          # a matrix (a list or an array): cached by its values
-            which = catalog.stiffness_matrix(which)
-            key = tuple(map(tuple, which.tolist()))
+        which, key = _stiffness_key(which)
 
         def build():
-            if not isinstance(which, str) or which in ("infinite", "rigid") or which not in self.materials():
+            if not self._is_material(which):
                 return catalog.stiffness(self.bike, which)
             return catalog.stiffness(self.bicycle(bike_changes), which, "computed" if bike_changes else "auto")
-        return _lru(self._stiffness, (key, bike_changes), build)
+        return _lru(self._cache("stiffness"), (key, bike_changes), build)
 
-    def build(self, changes=None):
-        """:class:`Built` for ``{key: value}`` changes (see the module docstring)."""
-        bike, rider, params, stiffness = split_changes(changes or {})
-        p = self.parameters(bike, rider)
-        if params:
-            p = check_parameters(p.replace(**dict(params)), self.origin)
-        return p, self.frame_stiffness(self.stiffness if stiffness is None else stiffness, bike)
+    def compliances(self, which, bike_changes=()):
+        """The flexible model's :class:`~bikemass.models.flexible.Compliances` for stiffness choice
+        ``which``: a material (every frame and fork tube in it, :func:`bikemass.fe.flexible.compliances`)
+        or ``infinite`` (both held rigid)."""
+        which, key = _stiffness_key(which)
+
+        def build():
+            if which is None or (isinstance(which, str) and which in (RIGID, "rigid")):
+                return Compliances()
+            if not (self._is_material(which) or _material_file(which)):
+                raise InputError(self.origin if self.origin != "spec" else "stiffness", "stiffness",
+                                 f"{RIGID} or a material ({', '.join(sorted(self.materials()))}) with the flexible "
+                                 "model: its beam models make the compliances (a 2x2 S is the quasi-static spring "
+                                 "of --model whipple)")
+            # lazy: the beam models load scipy.linalg (0.4 s); only the flexible model needs them
+            from ..fe.flexible import compliances
+            return compliances(self.bicycle(bike_changes), which)
+        return _lru(self._cache("compliances"), (key, bike_changes), build)
+
+
+def _stiffness_key(which):
+    """``(which, key)``: a stiffness choice and a hashable key of it (a matrix by its values)."""
+    try:
+        hash(which)
+        return which, which
+    except TypeError:                          # a matrix (a list or an array): cached by its values
+        which = catalog.stiffness_matrix(which)
+        return which, tuple(map(tuple, which.tolist()))
+
+
+def _material_file(which):
+    """Whether ``which`` names a one-material YAML file (not a stiffness file, which holds ``S:``)."""
+    if not isinstance(which, (str, os.PathLike)) or not os.fspath(which).endswith((".yaml", ".yml")):
+        return False
+    node = load_yaml(os.fspath(which))
+    return not (isinstance(node.value, dict) and "S" in node.value)
+
+
+def _rider_lean_set(node):
+    """The :class:`~bikemass.models.lean.RiderLeanParameters` of a ``MooreRiderLean2012`` parameter
+    set (a YAML mapping ``node``), else ``None``."""
+    if kind_of(node) != RIDER_LEAN:
+        return None
+    read = read_parameter_set(node)
+    return from_moore_values(read.parameters.to_dict(), read.source)

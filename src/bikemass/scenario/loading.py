@@ -20,8 +20,13 @@ from ..core.gate import MAPPING
 from ..models.parameters import BenchmarkParameters
 from ..rider import Rider, load_rider as load_pose_file, rider_from_mapping
 
+BicycleLike = Bicycle | BenchmarkParameters | Mapping | str | os.PathLike
+"""What every function taking a bicycle accepts (:func:`load_bicycle`)."""
+RiderLike = Rider | Mapping | str | os.PathLike | None
+"""What every function taking a rider accepts (:func:`load_rider`)."""
 
-def load_bicycle(bicycle, name=None, size=None):
+
+def load_bicycle(bicycle: BicycleLike, name: str | None = None, size: str | None = None) -> Bicycle:
     """A bicycle from a name, a file, a mapping or a parameter set.
 
     Parameters
@@ -30,7 +35,7 @@ def load_bicycle(bicycle, name=None, size=None):
         A shipped name (``"jamis"``, ``"benchmark"``; ``bikemass params --help`` lists
         them), a bicycle YAML file or benchmark parameter file (YAML/JSON with the 26
         Meijaard names, SI), a mapping with the content of either, or a parameter set.
-        A :class:`~bikemass.bicycle.Bicycle` is returned as it is.
+        A :class:`~bikemass.Bicycle` is returned as it is.
     name : str, optional
         Display name for a mapping or parameter set (default: its ``name`` key).
     size : str, optional
@@ -39,12 +44,34 @@ def load_bicycle(bicycle, name=None, size=None):
     Returns
     -------
     Bicycle
-        Immutable; ``bicycle.parts`` hold every placed solid in the benchmark frame (m, kg).
+        Immutable; ``bicycle.parts`` hold every placed solid in the benchmark frame (m, kg),
+        ``bicycle.geometry`` the wheelbase, trail, head angle, ... (m, rad).
 
     Raises
     ------
     InputError
-        Unknown name (the closest shipped name is suggested) or bad content.
+        Unknown name (the closest shipped name is suggested) or bad content: the message names
+        the file (``<mapping>`` for a Python value), the key and what was expected.
+    InputTypeError
+        ``bicycle`` of none of the types above (an :class:`InputError` and a ``TypeError``).
+
+    See Also
+    --------
+    load_rider : The rider to seat on it.
+    parameters : The benchmark parameter set of a bicycle with a rider.
+    plot_side_view : Draw it.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> bike = bm.load_bicycle("jamis")
+    >>> print(bike.name, f"wheelbase {bike.geometry.wheelbase:.3f} m, {len(bike.tubes)} tubes")
+    Jamis Satellite (geometry) wheelbase 0.988 m, 21 tubes
+
+    A parameter set is a bicycle too (its wheels and frames are drawn from the 26 values):
+
+    >>> bm.load_bicycle(bm.parameters("benchmark"), name="Meijaard 2007").name
+    'Meijaard 2007'
     """
     if isinstance(bicycle, Bicycle):
         return bicycle
@@ -58,7 +85,7 @@ def load_bicycle(bicycle, name=None, size=None):
                      "or a Bicycle")
 
 
-def load_rider(rider, as_printed=False, name=None):
+def load_rider(rider: RiderLike, as_printed: bool = False, name: str | None = None) -> Rider | None:
     """A rider from a pose name, a pose file or a mapping; ``None`` for no rider.
 
     Parameters
@@ -79,12 +106,33 @@ def load_rider(rider, as_printed=False, name=None):
     Returns
     -------
     Rider or None
-        Immutable; ``rider.properties()`` gives mass (kg), CoM (m), inertia (kg m^2).
+        Immutable; ``rider.properties()`` gives mass (kg), CoM (m, benchmark frame), inertia
+        (kg m^2, about the CoM).
 
     Raises
     ------
     InputError
-        Unknown pose (the closest is suggested) or bad content.
+        Unknown pose (the closest is suggested) or bad content, naming the file, the key and
+        what was expected.
+
+    See Also
+    --------
+    pose_rider : A rider posed by joint angles on a bicycle's contacts.
+    seated_rider : The rider seated on a bicycle's saddle, grips and pedals.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> rider = bm.load_rider("relaxed")
+    >>> props = rider.properties()
+    >>> print(f"{props.mass:.2f} kg, CoM height {-props.com[2]:.3f} m")
+    82.15 kg, CoM height 1.217 m
+    >>> bm.load_rider("none") is None
+    True
+    >>> bm.load_rider("relaxd")
+    Traceback (most recent call last):
+    ...
+    bikemass.core.errors.InputError: relaxd: ...did you mean 'relaxed'?)
     """
     if rider is None or (isinstance(rider, str) and rider == "none"):
         return None

@@ -18,7 +18,7 @@ from ..rider.body import chain_of, load_body
 from ..rider.chain import JOINTS, joint_gaps
 from ..rider.chain_file import bicycle_contacts, default_hands
 from ..rider.pose import read_pose
-from .loading import load_bicycle
+from .loading import BicycleLike, load_bicycle
 
 DEFAULT_BODY = "thesis_rider"
 """The anthropometry (``bodies/``) posed when none is named."""
@@ -26,7 +26,7 @@ DEFAULT_BODY = "thesis_rider"
 
 @dataclass(frozen=True, eq=False, repr=False)
 class PosedRider:
-    """A chain-posed rider and how it was solved.
+    """A chain-posed rider and how it was solved (what :func:`bikemass.pose_rider` returns).
 
     Attributes
     ----------
@@ -38,11 +38,26 @@ class PosedRider:
         Joint angles (``solution.pose.angles``, deg), hip joints (``solution.pose.root``,
         x and z in m), the contacts' residuals (m) and which joints were solved.
     hands : str
-        The grip used (or ``"none"``); ``crank`` the crank angle (deg) or ``None``.
+        The grip used (or ``"none"``).
+    crank : float or None
+        The crank angle (deg), ``None`` for symmetric legs.
     document : Mapping
         The pose in the placement form (what ``bikemass pose -o`` writes; read-only).
     gaps : Mapping
         ``{joint: gap (m)}`` between the joined segment ends (zero to rounding).
+
+    See Also
+    --------
+    pose_rider : Makes one.
+    plot_pose : Draws one.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> posed = bm.pose_rider("jamis", hands="drops", fixed={"torso_lean": 40})
+    >>> print(posed.hands, f"elbow {posed.solution.pose.angles['elbow']:.1f} deg")
+    drops elbow 52.5 deg
+    >>> params = bm.parameters("jamis", posed.rider)        # a rider like any other
     """
 
     rider: object
@@ -71,12 +86,17 @@ def _degrees(value, what):
     return float(value)
 
 
-def pose_rider(bicycle, body=DEFAULT_BODY, hands=None, crank=None, fixed=None, name=None):
+def pose_rider(bicycle: BicycleLike, body: "str | Mapping" = DEFAULT_BODY, hands: Grip | str | None = None,
+               crank: float | None = None, fixed: "Mapping[str, float] | None" = None,
+               name: str | None = None) -> PosedRider:
     """Pose a rider by joint angles on a bicycle's contact points.
+
+    Hips on the saddle, hands on a grip, feet on the pedals; the joint angles not ``fixed`` are
+    solved (scipy least squares, :mod:`bikemass.rider.solve`).
 
     Parameters
     ----------
-    bicycle
+    bicycle : str, os.PathLike, Mapping, BenchmarkParameters or Bicycle
         Anything :func:`bikemass.load_bicycle` takes, with a ``contacts:`` section.
     body : str or Mapping
         Anthropometry with ``joints:`` (a name in ``bodies/`` or a YAML file), or a body
@@ -94,11 +114,32 @@ def pose_rider(bicycle, body=DEFAULT_BODY, hands=None, crank=None, fixed=None, n
     Returns
     -------
     PosedRider
+        ``.rider`` to use anywhere a rider goes, ``.solution`` the joint angles and residuals.
 
     Raises
     ------
     InputError
-        A bicycle without contacts, an unknown grip or joint, or a contact out of reach.
+        A bicycle without contacts, an unknown grip or joint, an angle beyond +-360 deg, or a
+        contact out of reach.
+
+    Warns
+    -----
+    BikemassWarning
+        A joint angle outside the typical human range (the pose is still returned).
+
+    See Also
+    --------
+    plot_pose : Draw the posed rider with its joints and contact targets.
+    load_rider : A rider from a pose file or name.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> for lean in (25, 40):
+    ...     posed = bm.pose_rider("jamis", hands="hoods", fixed={"torso_lean": lean})
+    ...     print(f"torso lean {lean} deg: elbow {posed.solution.pose.angles['elbow']:.1f} deg")
+    torso lean 25 deg: elbow 22.7 deg
+    torso lean 40 deg: elbow 74.6 deg
     """
     # lazy: rider.solve loads scipy.optimize (slower to import than numpy); only this call needs it
     from ..rider.solve import solve_on_bicycle

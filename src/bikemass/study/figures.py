@@ -7,7 +7,10 @@
   (Meijaard et al. 2007, Fig. 3 style; corrected run, v_w and v_c marked);
 * ``pose_<pose>.png``: side view of each of the five poses on the geometry Jamis;
 * ``handling_<bike>.png``: the HQM peak of the Hess, Moore & Hubbard (2012) rider against speed
-  for every rider position of the Jamis and the Cargo, beside their self-stable speeds.
+  for every rider position of the Jamis and the Cargo, beside their self-stable speeds;
+* ``flexible.png``: the frame and fork flexing with their inertia (:mod:`~bikemass.study.flexible`):
+  the wobble's frequency and unstable speeds, the critical speeds beside the thesis's spring's, and
+  the leaning rider's weave speed.
 
 A job is ``(function, *arguments, path, title)``; ``function(*arguments, title)`` returns
 the Figure.
@@ -18,6 +21,8 @@ from .configurations import BICYCLES, THESIS_NAMES, configurations
 from .handling import stable_speeds
 from .handling import BICYCLES as HANDLED
 from ..analysis.handling.figures import plot_handling_by_rider
+from . import flexible
+from .reference import wobble_bands
 
 STIFFNESS_NAMES = {"infinite": "rigid frame", "steel": "steel frame", "titanium": "titanium frame",
                    "aluminum": "aluminium frame"}
@@ -72,10 +77,18 @@ def handling_jobs(handling, outcomes, folder):
             for bike, by_rider in handling.items()]
 
 
+def flexible_jobs(results, geometry, folder):
+    """The job drawing the flexible frame and fork (none without its results)."""
+    if results is None:
+        return []
+    return [(draw_flexible, results, flexible.quasi_static_speeds(results, geometry), folder / "flexible.png",
+             "Frame stiffness with the frame's inertia and the fork's compliance (geometry bicycles and riders)")]
+
+
 def figure_count():
     """How many figures the study draws (:func:`critical_jobs` twice, :func:`eigenvalue_jobs`,
-    :func:`pose_jobs`, :func:`handling_jobs`)."""
-    return 2 * len(BICYCLES) + len(configurations()) + len(THESIS_POSES) + len(HANDLED)
+    :func:`pose_jobs`, :func:`handling_jobs`, :func:`flexible_jobs`)."""
+    return 2 * len(BICYCLES) + len(configurations()) + len(THESIS_POSES) + len(HANDLED) + 1
 
 
 def draw_critical(results, title):
@@ -92,6 +105,12 @@ def draw_eigenvalues(modes, critical, title):
 
 def draw_handling(results, stable, title):
     return plot_handling_by_rider(results, title, stable_speeds=stable)
+
+
+def draw_flexible(results, speeds, title):
+    # lazy: the figure loads matplotlib (slower to import than numpy); study --no-figures runs without it
+    from .flexible_figure import plot_flexible
+    return plot_flexible(results, speeds, wobble_bands(), flexible.SPEED, title)
 
 
 def draw_pose(bicycle, rider, title):

@@ -10,6 +10,7 @@ from . import corrections, figures
 from .body_tables import bicycle_table, rider_table
 from .configurations import BICYCLES, Configuration, configurations
 from .explain import explain
+from .flexible import FlexibleResults, flexible_results, flexible_table, lean_table, quasi_static_speeds
 from .frame_tables import modes_table, stiffness_table
 from .frames import FRAMES, MATERIALS, frame_results
 from .handling import handling_results
@@ -40,6 +41,8 @@ class StudyResults:
     """``{(pose, bike): {contact: (gap m, key)}}``: the geometry riders as the thesis placed them."""
     handling: dict = field(default_factory=dict)
     """``{bike: {rider: HandlingResult}}``: the rider in the loop (:mod:`~bikemass.study.handling`)."""
+    flexible: FlexibleResults = None
+    """The frame and fork flexing with their inertia, and the leaning rider (:mod:`~bikemass.study.flexible`)."""
 
 
 def _preload(inputs):
@@ -71,6 +74,10 @@ def _handling():
     return handling_results(_INPUTS)
 
 
+def _flexible():
+    return flexible_results(_INPUTS)
+
+
 def _by_bike(configs):
     """Configurations grouped into jobs of about equal size (the benchmark joins the first bicycle)."""
     groups = {bike: [c for c in configs if c.bike == bike] for bike in BICYCLES}
@@ -90,6 +97,7 @@ def compute(workers=WORKERS, step=lambda label: None):
     with executor(workers) as pool:
         frames_job = pool.submit(_frames)
         handling_job = pool.submit(_handling)
+        flexible_job = pool.submit(_flexible)
         parts = [(spec, pool.submit(_run_part, spec, part)) for spec in (CORRECTED, GEOMETRY)
                  for part in _by_bike(configs)]
         thesis = run(THESIS, configs, inputs, step)
@@ -109,6 +117,8 @@ def compute(workers=WORKERS, step=lambda label: None):
         step("frame models")
         handling = handling_job.result()
         step("rider in the loop")
+        flexible = flexible_job.result()
+        step("flexible frame and fork")
     published = {(f, m): inputs.bicycle(f"{f}-thesis").published_stiffness(inputs.material(m))
                  for f in FRAMES for m in MATERIALS}
     input_tables += [stiffness_table(frames, published), modes_table(frames, "jamis"), modes_table(frames, "cargo")]
@@ -117,12 +127,12 @@ def compute(workers=WORKERS, step=lambda label: None):
                          corrections.stiffness_table(thesis, runs["corrected"]),
                          corrections.range_table(thesis, runs["corrected"], runs["geometry"])]
     return StudyResults(runs, entries, explanations, input_tables, correction_tables,
-                        corrections.summary(thesis, runs["corrected"]), dict(inputs.contacts), handling)
+                        corrections.summary(thesis, runs["corrected"]), dict(inputs.contacts), handling, flexible)
 
 
 def steps(with_figures=True):
     """How many times :func:`compute` (and :func:`draw`) call ``step``."""
-    n = len(configurations()) + 2 + 2 * len(BICYCLES) + 2
+    n = len(configurations()) + 2 + 2 * len(BICYCLES) + 3
     return n + (figures.figure_count() if with_figures else 0)
 
 
@@ -134,7 +144,8 @@ def write_files(results, out):
                  dumps(records(results.runs["corrected"], "exact"), "json"))
     write_atomic(out / "stability_ranges_geometry.json", dumps(records(results.runs["geometry"], "grid"), "json"))
     tables = [entry_table(t, results.entries, results.explanations) for t in (*CHAPTER4, *CHAPTER5)]
-    for table in tables + results.input_tables + results.correction_tables + handling_tables(results):
+    for table in (tables + results.input_tables + results.correction_tables + handling_tables(results)
+                  + flexible_tables(results)):
         write_atomic(out / f"{table.key}.csv", table.to_csv())
 
 
@@ -143,13 +154,22 @@ def handling_tables(results):
     return [handling_table(results.handling, results.runs["corrected"])] if results.handling else []
 
 
+def flexible_tables(results):
+    """The flexible frame's and the leaning rider's tables (:mod:`~bikemass.study.flexible`), if computed."""
+    if results.flexible is None:
+        return []
+    return [flexible_table(results.flexible, quasi_static_speeds(results.flexible, results.runs["geometry"])),
+            lean_table(results.flexible)]
+
+
 def figure_jobs(results, inputs, folder):
     """Every figure job of the study (see :mod:`~bikemass.study.figures`)."""
     return (figures.critical_jobs(results.runs["corrected"], folder)
             + figures.critical_jobs(results.runs["thesis"], folder, "_thesis", "thesis run, 0.05 m/s grid")
             + figures.eigenvalue_jobs(results.runs["corrected"], folder)
             + figures.pose_jobs(inputs.bicycle("jamis"), {p: inputs.rider(p) for p in THESIS_POSES}, folder)
-            + figures.handling_jobs(results.handling, results.runs["corrected"], folder))
+            + figures.handling_jobs(results.handling, results.runs["corrected"], folder)
+            + figures.flexible_jobs(results.flexible, results.runs.get("geometry"), folder))
 
 
 @one_blas_thread()

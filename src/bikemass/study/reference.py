@@ -38,3 +38,8 @@ def frame_tables():
 def bicycle_tables():
     """Table 3-9 (``bicycles``), 3-4 (``riders``), 3-12 (``stiffness``) in SI."""
     return _load("bicycle_parameters")
+
+
+def wobble_bands():
+    """The published wobble frequency bands: ``[{"name", "low", "high"}]`` (Hz), ``wobble_bands.yaml``."""
+    return _load("wobble_bands")["bands"]

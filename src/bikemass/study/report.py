@@ -4,6 +4,8 @@ from .runs import RUNS
 from .stability_tables import CHAPTER4, CHAPTER5, TOLERANCE, compare, title
 from .handling import handling_findings
 from .handling import handling_table
+from .flexible import flexible_findings, flexible_table, lean_table, quasi_static_speeds
+from .reference import wobble_bands
 
 LEGEND = (f"Each cell: our value (m/s, first or last speed of the stable run on the 0..30 m/s grid, or "
           f"its length; `-` = no stable run), the thesis's in brackets where it differs, then "
@@ -72,7 +74,7 @@ def render(results):
     out += ["* Corrections (parallel-axis theorem, condensed S from the beam model, exact critical speeds; "
             "see the section below):"]
     out += [f"  * {line}" for line in r.correction_summary]
-    out += _handling_summary(r) + [""]
+    out += _handling_summary(r) + _flexible_summary(r) + [""]
     out += ["## The runs\n"]
     out += [f"* **{spec.name}**: {spec.title}." for spec in RUNS]
     out += ["", "The 73 configurations: the benchmark bicycle (Meijaard et al. 2007) and the Jamis, the "
@@ -94,6 +96,7 @@ def render(results):
     out += [f"* {line}" for line in r.correction_summary] + [""]
     out += [_table_section(t) for t in r.correction_tables]
     out += _handling_section(r)
+    out += _flexible_section(r)
     out += ["## Files\n",
             "* `stability_ranges.json` (thesis run, grid ranges) and `stability_ranges_corrected.json` "
             "(corrected run, exact ranges): records `{bike, rider, stiffness, mode, criterion, start, stop, "
@@ -104,7 +107,9 @@ def render(results):
             "and capsize speeds, corrected run) and `critical_<bike>_thesis.png` (stable speeds of the thesis "
             "run), `eig_<bike>_<rider>_<stiffness>.png` (eigenvalues against speed, corrected run), "
             "`pose_<pose>.png` (the poses on the Jamis), `handling_<bike>.png` (the rider in the loop: HQM "
-            "peak against speed of every position, beside the self-stable speeds); `handling.csv`.\n"]
+            "peak against speed of every position, beside the self-stable speeds), `flexible.png` (the frame and "
+            "fork flexing with their inertia: the wobble, the critical speeds beside the thesis's spring's, the "
+            "leaning rider's weave speed); `handling.csv`, `flexible_wobble.csv`, `rider_lean_weave.csv`.\n"]
     return "\n".join(out)
 
 
@@ -126,6 +131,36 @@ def _handling_section(r):
             "Moore & Hubbard (2012) rider, tuned by the published procedure at each speed; the handling quality "
             "metric's peak measures the rate feedback the rider must supply (docs/handling.md).\n",
             _table_section(handling_table(r.handling, r.runs["corrected"]))]
+
+
+def flexible_lines(r):
+    """The findings on frame stiffness with the frame's inertia (:mod:`~bikemass.study.flexible`)."""
+    if r.flexible is None:
+        return []
+    return flexible_findings(r.flexible, quasi_static_speeds(r.flexible, r.runs["geometry"]), wobble_bands())
+
+
+def _flexible_summary(r):
+    """The summary's bullets on the thesis's own question asked again, the frame with its inertia."""
+    lines = flexible_lines(r)
+    if not lines:
+        return []
+    return ["* The thesis's question asked again, with the frame's inertia and the fork's compliance (the `flexible` "
+            "model, docs/models-flexible.md; geometry bicycles and riders):"] + [f"  * {line}" for line in lines]
+
+
+def _flexible_section(r):
+    if r.flexible is None:
+        return []
+    speeds = quasi_static_speeds(r.flexible, r.runs["geometry"])
+    return ["## Frame stiffness with the frame's inertia: wobble, and the leaning rider\n",
+            "The thesis's spring has no inertia and stands between gravity and the bicycle's roll and steer. Here the "
+            "rear frame twists and the fork bends as degrees of freedom of their own, stiffness and inertia from the "
+            "beam models of the same tubes, in every material (the `flexible` model, docs/models-flexible.md); the "
+            "geometry run's bicycles and riders. The wobble is the steer-dominated oscillation this brings. Beside it, "
+            "the leaning rider (the `rider-lean` model): the upper body on a hip spring and damper.\n",
+            *[f"* {line}" for line in flexible_lines(r)], "",
+            _table_section(flexible_table(r.flexible, speeds)), _table_section(lean_table(r.flexible))]
 
 
 def _contact_section(contacts):

@@ -12,6 +12,8 @@ from .runs import RUNS
 from .stability_tables import CHAPTER4, CHAPTER5, TOLERANCE, title
 from .handling import handling_findings
 from .handling import handling_table
+from .flexible import SPEED, flexible_table, lean_table, quasi_static_speeds
+from .report import flexible_lines
 
 STYLE = """
 body { font-family: Georgia, 'Times New Roman', serif; max-width: 60em; margin: 2em auto; padding: 0 1em;
@@ -115,6 +117,18 @@ def _handling_findings(r):
     return out + ["</ul>"]
 
 
+def _flexible_findings(r):
+    """The findings' part on the thesis's question asked again: the frame with its inertia."""
+    lines = flexible_lines(r)
+    if not lines:
+        return []
+    return (["<h3>Does frame stiffness matter? The frame with its inertia, the fork with its compliance</h3>",
+             "<p>The thesis's spring has no inertia. With the rear frame's twist and the fork's bending as degrees "
+             "of freedom, stiffness and inertia from the beam models of the same tubes (docs/models-flexible.md), a "
+             "steer-dominated oscillation appears, the wobble:</p><ul>"]
+            + [f"<li>{_inline(line)}</li>" for line in lines] + ["</ul>"])
+
+
 def _figure_or_note(figures, name, caption):
     png = figures.get(name)
     return figure(png, caption) if png is not None else ""
@@ -147,7 +161,7 @@ def render_html(results, figures):
             f"printed inputs (see <a href='#misses'>Misses</a>).</p>",
             "<h3>What the corrections change, and by how much</h3><ul>"]
     out += [f"<li>{_inline(line)}</li>" for line in r.correction_summary]
-    out += ["</ul>"] + _handling_findings(r)
+    out += ["</ul>"] + _handling_findings(r) + _flexible_findings(r)
     out += ["</div>",
             "<div class='pair'>",
             _figure_or_note(figures, f"critical_{KEY_BIKE}_thesis.png",
@@ -167,6 +181,11 @@ def render_html(results, figures):
                             f"{name}, rigid frame, every rider position ridden by the Hess, Moore & Hubbard (2012) "
                             "rider: the HQM peak against speed (Level 1 below 5), and the self-stable speeds "
                             "beneath."),
+            _figure_or_note(figures, "flexible.png",
+                            f"The frame and fork flexing with their inertia: the wobble's frequency at {SPEED:g} m/s "
+                            "beside the published bands (filled: growing), the speeds where it is unstable beside "
+                            "the weave and capsize speeds of the rigid frame, the thesis's spring and the flexible "
+                            "model, and the leaning rider's weave speed beside the rigid rider's."),
             "<h2>The reproduction: thesis run against the thesis's tables</h2>",
             f"<p>{_inline(LEGEND)} Cells that miss are shaded.</p>"]
     for table in list(CHAPTER4) + list(CHAPTER5):
@@ -200,6 +219,10 @@ def render_html(results, figures):
         out += [_figure_or_note(figures, f"handling_{bike}.png", f"{THESIS_NAMES[bike]}, rigid frame: the HQM "
                                 "peak of every rider position against speed (Level 1 below 5), and its self-stable "
                                 "speeds beneath.") for bike in r.handling if bike != KEY_BIKE]
+    if r.flexible is not None:
+        speeds = quasi_static_speeds(r.flexible, r.runs["geometry"])
+        out += ["<h3>Frame stiffness with the frame's inertia, and the leaning rider</h3>",
+                table_html(flexible_table(r.flexible, speeds)), table_html(lean_table(r.flexible))]
     if not figures:
         out.append("<p>Drawn without figures (<code>--no-figures</code>).</p>")
     out.append("</body></html>")

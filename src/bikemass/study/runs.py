@@ -22,11 +22,11 @@ from ..analysis.engine.naming import BICYCLE_LABELS as LABELS
 from ..analysis.engine.ranges import MARGINAL_THRESHOLD, grid_ranges, is_stable
 from ..analysis.engine.stability import analyse
 from ..analysis.engine.speeds import speed_grid
-from ..bicycle import bicycle_parameters
 from ..fe import equivalent_stiffness
 from ..mass.materials import load_materials
 from ..models.whipple import whipple_model
 from ..scenario import catalog
+from ..scenario.scenario import Scenario
 from .configurations import BENCHMARK, BENCHMARK_RIDER, FE_FRAME
 from ..rider.seating import seat_rider
 
@@ -106,10 +106,11 @@ def _exact_ranges(st):
                    for criterion in CRITERIA} for kind in ("grid", "exact")}
 
 
-def evaluate(configuration, parameters, S, exact):
+def evaluate(configuration, parameters, S, exact, model=None):
     """:class:`Outcome` of a parameter set with rear-frame stiffness ``S`` (N m/rad, ``None``: rigid) on
-    the thesis's grid."""
-    model = whipple_model(parameters, S)
+    the thesis's grid; ``model`` the Whipple model they build (:attr:`Inputs.built`), made here if
+    not given."""
+    model = whipple_model(parameters, S) if model is None else model
     speeds = speed_grid()
     if exact:
         st = analyse(model, speeds, stiffness=S)
@@ -120,10 +121,11 @@ def evaluate(configuration, parameters, S, exact):
 
 
 class Inputs:
-    """Loads bicycles, riders, parameter sets and stiffnesses once and hands them to every run."""
+    """Loads bicycles, riders, parameter sets and stiffnesses once and hands them to every run; each
+    configuration's model is its :class:`~bikemass.scenario.scenario.Scenario`'s."""
 
     def __init__(self):
-        self._bicycles, self._riders, self._parameters, self._stiffness = {}, {}, {}, {}
+        self._bicycles, self._riders, self._scenarios, self._stiffness = {}, {}, {}, {}
         self.contacts = {}
         """``{(rider, bike): {contact: (gap m, bicycle key)}}`` of every rider seated so far."""
         self._materials = None
@@ -136,23 +138,39 @@ class Inputs:
     def rider(self, name, bike=None):
         """The rider ``name`` (None: no rider); with ``bike``, on it as the thesis placed it: its
         contacts are measured (:attr:`contacts`, for the report) and the pose kept as written."""
+        seated = self._seat(name, bike)
+        return seated.rider if bike is not None and seated is not None else seated
+
+    def _seat(self, name, bike):
+        """The rider ``name`` loaded (no ``bike``) or seated on ``bike`` (a SeatedRider), cached."""
         key = (name, bike)
         if name is not None and key not in self._riders:
             if bike is None:
                 self._riders[key] = catalog.load_rider(name)
             else:
                 seated = seat_rider(name, self.bicycle(bike), allow_off_contact=True)
-                self._riders[key], self.contacts[key] = seated.rider, seated.contacts
+                self._riders[key], self.contacts[key] = seated, seated.contacts
         return self._riders.get(key)
+
+    def scenario(self, spec, configuration):
+        """The :class:`~bikemass.scenario.scenario.Scenario` of ``configuration`` as ``spec`` builds it
+        (cached: its parameter set is built once)."""
+        key = (spec.bike_name(configuration.bike), spec.rider_name(configuration.rider), spec.combine)
+        if key not in self._scenarios:
+            bike, rider, combine = key
+            self._scenarios[key] = Scenario(self.bicycle(bike), self._seat(rider, bike), combine=combine,
+                                            method=METHOD)
+        return self._scenarios[key]
 
     def parameters(self, spec, configuration):
         """Benchmark parameter set of ``configuration`` as ``spec`` builds it (cached)."""
-        key = (spec.bike_name(configuration.bike), spec.rider_name(configuration.rider), spec.combine)
-        if key not in self._parameters:
-            bike, rider, combine = key
-            self._parameters[key] = bicycle_parameters(self.bicycle(bike), self.rider(rider, bike), combine,
-                                                       METHOD)
-        return self._parameters[key]
+        return self.scenario(spec, configuration).parameters()
+
+    def built(self, spec, configuration):
+        """The :class:`~bikemass.scenario.scenario.Built` Whipple model of ``configuration``: its
+        parameter set with the stiffness :meth:`stiffness` gives."""
+        S = self.stiffness(spec, configuration)
+        return self.scenario(spec, configuration).build(None if S is None else {"stiffness": S})
 
     def stiffness(self, spec, configuration):
         """2x2 S (N m/rad) of ``configuration`` in ``spec``, ``None`` if rigid."""
@@ -184,7 +202,8 @@ def run(spec, configurations, inputs, step=None):
     """``{configuration: Outcome}`` of one run; ``step(label)`` is called after each configuration."""
     out = {}
     for c in configurations:
-        out[c] = evaluate(c, inputs.parameters(spec, c), inputs.stiffness(spec, c), spec.exact)
+        built = inputs.built(spec, c)
+        out[c] = evaluate(c, built.parameters, built.stiffness, spec.exact, built.model)
         if step is not None:
             step(f"{spec.name}: {c.label}")
     return out

@@ -20,9 +20,9 @@ from ..rider import poses_dir
 from ..rider.solve import fit_to_placements
 from ..rider import Rider
 from ..rider.pose import read_pose
-from ..bicycle import bicycle_parameters
 from ..analysis.engine.stability import analyse
-from ..models.whipple import whipple_model
+from ..rider.seating import SeatedRider
+from ..scenario.scenario import Scenario
 from ..bicycle import load_bicycle
 from ..rider import load_rider
 
@@ -52,7 +52,10 @@ def _rider_of(chain, body_name, source):
 
 
 def _speeds(bike, rider, combine, method):
-    result = analyse(whipple_model(bicycle_parameters(bike, rider, combine, method)))
+    """Weave and capsize speeds (m/s) of ``bike`` carrying ``rider`` placed as written (both riders
+    are compared where they sit, not re-seated)."""
+    placed = SeatedRider(rider, bike, "as written", {}, None, ())
+    result = analyse(Scenario(bike, placed, combine=combine, method=method).build().model)
     return result.weave_speeds, result.capsize_speeds
 
 

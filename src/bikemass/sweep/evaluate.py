@@ -5,10 +5,12 @@ A chunk is an index range of the spec's configurations; the worker makes the con
 itself (:meth:`~bikemass.sweep.spec.SweepSpec.columns`), so a task carries the spec and two
 numbers whatever its size.  Configurations that change only benchmark parameters (and the
 stiffness choice) are evaluated as arrays (:mod:`bikemass.sweep.vectorised`); any other, one
-by one (:func:`evaluate`, the reference the array path is tested against).
+by one (:func:`evaluate`, the reference the array path is tested against); the array path is
+the Whipple model's (rigid or with the quasi-static frame), the other members go one by one.
 
-The :class:`~bikemass.scenario.inputs.Model` (parsed YAML, built bicycles, riders and
-stiffnesses) lives as long as the process and is shared by every chunk of the same sweep.
+The :class:`~bikemass.scenario.scenario.Scenario` (parsed YAML, built bicycles, riders,
+stiffnesses and models) lives as long as the process and is shared by every chunk of the same
+sweep.
 BLAS runs on one thread (the worker, not the library, is the unit of parallelism):
 :func:`bikemass.core.threads.one_blas_thread`.
 """
@@ -21,12 +23,10 @@ import numpy as np
 from ..analysis.engine.critical import critical_speeds
 from ..core.errors import InputError
 from ..core.threads import one_blas_thread
-from ..models.whipple import whipple_model
-from ..scenario.inputs import Model, file_unit
 from .table import NUMBERS, OUTPUTS, Outcomes, chunk_text
 from .vectorised import evaluate_columns, takes
 
-_MODELS = {}
+_SCENARIOS = {}
 
 
 @dataclass(frozen=True)
@@ -52,38 +52,34 @@ class Finished:
     first_refusal: tuple
 
 
-def _model(setup):
-    if setup not in _MODELS:
-        bike, rider, stiffness, combine, source = setup
-        _MODELS.clear()
-        _MODELS[setup] = Model(bike, rider, stiffness, combine, origin=source)
-    return _MODELS[setup]
+def _scenario(scenario):
+    """The process's own instance of ``scenario`` (a value): one per sweep, its caches kept."""
+    if scenario not in _SCENARIOS:
+        _SCENARIOS.clear()
+        _SCENARIOS[scenario] = scenario
+    return _SCENARIOS[scenario]
 
 
-def setup_of(spec):
-    """The model a spec's configurations change: ``(bike, rider, stiffness, combine, source)``."""
-    return (spec.bike, spec.rider, spec.stiffness, spec.combine, spec.source)
+def _bare_unit(scenario, key):
+    """The unit of a bare value of ``key`` (:func:`~bikemass.scenario.inputs.file_unit`); None for a
+    key the scenario does not have (its rows carry the error)."""
+    try:
+        return scenario.file_unit(key)
+    except InputError:
+        return None
 
 
-def evaluate(model, changes, max_speed):
+def evaluate(scenario, changes, max_speed):
     """Result row (dict of :data:`OUTPUTS`) of one configuration; a configuration the model
     refuses gets its one-line reason in ``error`` and empty outputs."""
     try:
-        p, S = model.build(changes)
-        found = critical_speeds(whipple_model(p, S), max_speed)
+        built = scenario.build(changes)
+        found = critical_speeds(built.model, max_speed)
     except (InputError, ValueError, np.linalg.LinAlgError) as exc:
         return {**{k: None for k in OUTPUTS}, "error": str(exc).replace("\n", " ")}
+    p = built.parameters
     values = (found.weave_speed, found.capsize_speed, found.stable_from, found.stable_to, p.mR + p.mB + p.mH + p.mF)
     return {**dict(zip(OUTPUTS, (None if x is None else float(x) for x in values))), "error": None}
-
-
-def _bare_unit(model, key):
-    """The unit of a bare value of ``key`` (:func:`~bikemass.scenario.inputs.file_unit`); None for a
-    key the model does not have (its rows carry the error)."""
-    try:
-        return file_unit(model, key)
-    except InputError:
-        return None
 
 
 def _with_units(changes, units):
@@ -91,13 +87,14 @@ def _with_units(changes, units):
     return {k: f"{float(v)!r} {units[k]}" if k in units and not isinstance(v, str) else v for k, v in changes.items()}
 
 
-def evaluate_outcomes(model, spec, columns, count):
+def evaluate_outcomes(scenario, spec, columns, count):
     """:class:`~bikemass.sweep.table.Outcomes` of ``count`` configurations given as ``columns``."""
-    if takes(spec.keys):                 # parameters and stiffness choices: SI, never with a unit
-        return evaluate_columns(model, columns, count, spec.max_speed, lambda c: evaluate(model, c, spec.max_speed))
+    if takes(spec.keys) and not scenario.model.members:     # parameters and stiffness: SI, no unit
+        return evaluate_columns(scenario, columns, count, spec.max_speed,
+                                lambda c: evaluate(scenario, c, spec.max_speed))
     # a bare value takes the unit the file writes there (docs/analysis.md), a value with a unit keeps it
-    units = {k: u for k in spec.keys if (u := spec.units.get(k) or _bare_unit(model, k))}
-    rows = [evaluate(model, _with_units({k: columns[k][i] for k in spec.keys}, units), spec.max_speed)
+    units = {k: u for k in spec.keys if (u := spec.units.get(k) or _bare_unit(scenario, k))}
+    rows = [evaluate(scenario, _with_units({k: columns[k][i] for k in spec.keys}, units), spec.max_speed)
             for i in range(count)]
     values = {k: np.array([np.nan if r[k] is None else r[k] for r in rows], dtype=float) for k in NUMBERS}
     return Outcomes(values, [r["error"] for r in rows])
@@ -109,7 +106,7 @@ def finish_chunk(spec, chunk):
     every row itself)."""
     columns = spec.columns(chunk.start, chunk.stop)
     with one_blas_thread():
-        outcomes = evaluate_outcomes(_model(setup_of(spec)), spec, columns, chunk.size)
+        outcomes = evaluate_outcomes(_scenario(spec.scenario()), spec, columns, chunk.size)
     refused = [i for i, e in enumerate(outcomes.errors) if e is not None]
     first = (chunk.start + refused[0], outcomes.errors[refused[0]]) if refused else None
     return Finished(chunk, chunk_text(spec.keys, columns, outcomes), len(refused), first)

@@ -6,7 +6,7 @@ too).
 """
 
 import numpy as np
-from matplotlib.figure import Figure
+from ..plots.figure import Figure
 
 from .layout import numeric_keys
 

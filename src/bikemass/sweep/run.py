@@ -36,14 +36,15 @@ import shutil
 import signal
 import threading
 import time
+from collections.abc import Callable
 from contextlib import contextmanager
 from pathlib import Path
 
 from ..core.errors import InputError, short, wrong_type
 from ..core.output import write_atomic
 from ..models.plausibility import warn
-from ..scenario.inputs import STIFFNESS_KEY, Model, get_path
-from .evaluate import Chunk, _model, finish_chunk, finish_chunk_pickled, setup_of
+from ..scenario.inputs import STIFFNESS_KEY
+from .evaluate import Chunk, _scenario, finish_chunk, finish_chunk_pickled
 from .layout import CHUNKS, Kept, chunk_path, kept_chunks, missing_ranges, split, write_tables
 from .result import SweepResult
 from .spec import SweepSpec, read_spec
@@ -84,18 +85,18 @@ def _missing(module, extra):
 
 def check_keys(spec):
     """Every varied key names an input of the spec's bicycle or rider, and the spec's stiffness
-    (and each stiffness name it varies) is one the bicycle has (InputError otherwise): a
-    misspelt choice fails once here instead of on every row."""
-    model = Model(spec.bike, spec.rider, spec.stiffness, spec.combine, origin=spec.source)
+    (and each stiffness name it varies) is one the bicycle and the model take (InputError
+    otherwise): a misspelt choice fails once here instead of on every row."""
+    scenario = spec.scenario()
     for key in spec.keys:
         if key != STIFFNESS_KEY:
-            get_path(model, key)
+            scenario.value(key)
     choices = [("stiffness", spec.stiffness)] + [(f"vary.{STIFFNESS_KEY}", value) for variable in spec.variables
                                                  if variable.key == STIFFNESS_KEY for value in variable.values
                                                  if isinstance(value, str)]
     for key, choice in choices:
         try:
-            model.frame_stiffness(choice)
+            scenario.check_stiffness(choice)
         except InputError as exc:
             raise InputError(spec.source, key, f"{exc.expected} (got {short(choice)}: {exc.source}: {exc.key})") from None
 
@@ -181,29 +182,73 @@ def _outcome(result, spec, out, created):
          f"column of {Path(out) / 'results.csv'}), the first: {first}")
 
 
-def run_sweep(spec, out, workers=None, scheduler=None, progress=None):
-    """Evaluate every configuration of ``spec`` (a :class:`~bikemass.sweep.spec.SweepSpec` or a spec
-    file) into folder ``out``; returns the rows as a :class:`~bikemass.sweep.result.SweepResult`
-    (a sequence of dicts, one per configuration, read from disk when asked for).
+def run_sweep(spec: "SweepSpec | str | os.PathLike", out: "str | os.PathLike", workers: int | None = None,
+              scheduler: "str | distributed.Client | None" = None,
+              progress: "Callable[[int], object] | None" = None) -> SweepResult:
+    """Evaluate every configuration of a design sweep into a folder (``bm.sweep``).
 
-    ``workers``: a local Dask cluster of that many single-threaded worker processes (unless the
-    sweep is too small to pay for starting it: see the module docstring);
-    ``scheduler``: the address of a running Dask scheduler, or a ``distributed.Client``
-    (used as it is and left open: a notebook's cluster serves many sweeps); neither: this process.
-    ``progress(n)`` is called with the number of configurations already finished, then with
-    the number finished by each chunk.
+    Each configuration (a grid or a sample of the varied keys) is built and its weave and capsize
+    speeds and stable range found; chunks of configurations run in this process or on Dask, each
+    chunk written as it finishes, so an interrupted sweep resumes where it stopped, and no process
+    holds a row per configuration (docs/sweep.md).
+
+    Parameters
+    ----------
+    spec : SweepSpec, str or os.PathLike
+        A sweep YAML file (``bike``, ``vary``, optional ``rider``, ``stiffness``, ``sample``,
+        ``max_speed``, ... : docs/analysis.md) or a read
+        :class:`~bikemass.sweep.spec.SweepSpec`.
+    out : str or os.PathLike
+        The folder for ``results.csv``, ``results.parquet``, ``sweep.json`` and ``chunks/``
+        (created; an earlier run of the same spec there is resumed).
+    workers : int, optional
+        A local Dask cluster of that many single-threaded worker processes (a sweep that would
+        take less here than starting them runs in this process: the result's ``notes`` say so).
+    scheduler : str or distributed.Client, optional
+        The address of a running Dask scheduler, or a ``distributed.Client`` (used as it is and
+        left open: a notebook's cluster serves many sweeps). Neither ``workers`` nor
+        ``scheduler``: this process.
+    progress : callable, optional
+        Called with the number of configurations already finished, then with the number
+        finished by each chunk.
+
+    Returns
+    -------
+    SweepResult
+        A sequence of one row (dict) per configuration, read back from the chunk files on demand:
+        the varied values, ``weave_speed``, ``capsize_speed``, ``stable_from``, ``stable_to``
+        (m/s, ``None`` where there is none), ``total_mass`` (kg) and ``error`` (why the model
+        refused it, else ``None``); ``column(name)`` gives a column as an array.
 
     Raises
     ------
     InputError
-        Bad arguments or spec; ``out`` a file, or a folder holding other files than a sweep's
-        own, another spec's sweep or a damaged ``sweep.json``; the model refusing every
-        configuration (the first reason named; a folder this call made is removed).
+        Bad arguments or spec (naming its file and key); ``out`` a file, or a folder holding other
+        files than a sweep's own, another spec's sweep or a damaged ``sweep.json``; a scheduler that
+        cannot be reached; the model refusing every configuration (the first reason named; a folder
+        this call made is removed).
 
     Warns
     -----
     BikemassWarning
         The model refused some configurations (each row keeps its reason in ``error``).
+
+    See Also
+    --------
+    sensitivity, uncertainty : Local derivatives and spreads instead of a grid.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> import bikemass as bm
+    >>> folder = tempfile.mkdtemp()
+    >>> spec = os.path.join(folder, "trail.yaml")             # the trail c in m
+    >>> _ = open(spec, "w").write("{bike: benchmark, vary: {c: [0.04, 0.08, 0.12]}}")
+    >>> for row in bm.sweep(spec, os.path.join(folder, "out")):      # c = 0.08 m is the benchmark
+    ...     print(f"c {row['c']:.2f} m: stable {row['stable_from']:.4f}..{row['stable_to']:.4f} m/s")
+    c 0.04 m: stable 3.7529..4.7672 m/s
+    c 0.08 m: stable 4.2924..6.0243 m/s
+    c 0.12 m: stable 4.6965..7.1149 m/s
     """
     _check_arguments(spec, out, workers, progress)
     if not hasattr(spec, "configurations"):
@@ -264,7 +309,10 @@ class _Gathering:
         missing = self.missing()
         if not missing:
             return None
-        _model(setup_of(self.spec))                   # the model's files read before the clock starts
+        try:                                          # the files read before the clock starts
+            _scenario(self.spec.scenario()).parameters()
+        except (InputError, ValueError):
+            pass                                      # every row says why
         size = chunk_size(self.missing_count(), None, self.spec.chunk, cheap=takes(self.spec.keys))
         first = Chunk(*split(missing, size)[0])
         began = time.perf_counter()

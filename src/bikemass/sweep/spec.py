@@ -5,6 +5,8 @@ bike: benchmark            # as BIKE on the command line
 rider: none                # optional, as --rider
 stiffness: infinite        # optional, as --stiffness
 combine: exact             # optional
+model: whipple             # optional, as --model (rider-lean, tyre, flexible, members joined by +)
+tyres: tyres.yaml          # optional, as --tyres (a model with the tyre member)
 max_speed: 30              # optional: critical speeds on (0, max_speed] m/s
 vary:                      # key -> list of values, or {from, to, num}
   c: {from: 0.0, to: 0.2, num: 41}
@@ -33,13 +35,16 @@ from pathlib import Path
 import numpy as np
 
 from ..core.config import load_yaml
+from ..core.errors import InputError
 from ..core.paths import within_reach
 from ..core.units import DIMENSIONS, UnitError, dimension_of, split_quantity
 from ..models.parameters import NAMES, dimension
+from ..models.registry import BASE, parse_model
+from ..scenario.scenario import Scenario
 
 SAMPLE_METHODS = ("grid", "lhs", "sobol")
-TOP_KEYS = ("bike", "rider", "stiffness", "combine", "max_speed", "vary", "sample", "global_sensitivity",
-            "chunk", "name", "description")
+TOP_KEYS = ("bike", "rider", "stiffness", "combine", "model", "tyres", "max_speed", "vary", "sample",
+            "global_sensitivity", "chunk", "name", "description")
 MAX_CONFIGURATIONS = 10 ** 8
 """Most configurations in one grid, checked before any is made.  No process holds a row per
 configuration (chunks are made from their index range and streamed to disk, docs/sweep.md), so
@@ -90,6 +95,13 @@ class SweepSpec:
     seed: int
     global_sensitivity: bool
     chunk: int = None
+    model: str = BASE
+    tyres: str = None
+
+    def scenario(self):
+        """The :class:`~bikemass.scenario.scenario.Scenario` every configuration changes."""
+        return Scenario(self.bike, self.rider, self.stiffness, self.combine, model=self.model, tyres=self.tyres,
+                        origin=self.source)
 
     @property
     def keys(self):
@@ -156,6 +168,8 @@ class SweepSpec:
         doc = {k: getattr(self, k) for k in ("bike", "rider", "stiffness", "combine", "max_speed", "method", "n",
                                             "seed", "global_sensitivity")}
         doc["variables"] = [v.__dict__ for v in self.variables]
+        if self.model != BASE or self.tyres is not None:        # the model joins the hash (older sweeps resume)
+            doc.update(model=self.model, tyres=self.tyres)
         return hashlib.sha256(json.dumps(doc, sort_keys=True, default=str).encode()).hexdigest()[:16]
 
 
@@ -250,6 +264,16 @@ def _near(spec_path, name):
     return str(here.resolve()) if within_reach(here) and here.is_file() else name
 
 
+def _model_name(node):
+    """The spec's ``model:`` as its canonical name (``whipple`` without one)."""
+    if not node.has("model"):
+        return BASE
+    try:
+        return parse_model(node["model"].string()).name
+    except InputError as exc:
+        node["model"].fail(exc.expected)
+
+
 def read_spec(path):
     """:class:`SweepSpec` of a YAML file; InputError naming the key on bad input."""
     node = load_yaml(path)
@@ -293,7 +317,8 @@ def read_spec(path):
         stiffness=node["stiffness"].string() if node.has("stiffness") else "infinite",
         combine=node["combine"].string(("exact", "thesis")) if node.has("combine") else "exact",
         max_speed=float(max_speed), variables=variables, method=method, n=n, seed=seed,
-        global_sensitivity=gsa, chunk=None if chunk is None else int(chunk))
+        global_sensitivity=gsa, chunk=None if chunk is None else int(chunk),
+        model=_model_name(node), tyres=_near(path, node["tyres"].string()) if node.has("tyres") else None)
     grid = method == "grid" and not gsa
     limit = MAX_CONFIGURATIONS if grid else MAX_SAMPLES
     if count_of(spec) > limit:

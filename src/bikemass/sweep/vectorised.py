@@ -117,8 +117,9 @@ def evaluate_batch(model, changes, count, max_speed, reference):
 
     Parameters
     ----------
-    model : bikemass.scenario.inputs.Model
-        The sweep's bicycle, rider and stiffness (its parameter set and stiffnesses are cached).
+    model : bikemass.scenario.scenario.Scenario
+        The sweep's bicycle, rider and stiffness with the Whipple model (``parameters()``,
+        ``frame_stiffness(choice)`` and ``stiffness``; its parameter set and stiffnesses are cached).
     changes : dict
         ``{key: sequence of count values}``: benchmark parameters (SI) and ``stiffness`` choices
         (:func:`takes` the keys).

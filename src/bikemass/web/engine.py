@@ -39,15 +39,15 @@ from ..core.gate import read_text
 from ..scenario.catalog import load_bicycle
 from ..scenario.catalog import load_rider
 from ..scenario.catalog import seated_rider
-from ..bicycle import bicycle_parameters
 from ..core.choices import Combine, check
-from ..scenario.catalog import stiffness
+from ..models.registry import BASE
+from ..rider.seating import SeatedRider
+from ..scenario.scenario import Scenario
 from ..models.plausibility import check_parameter_file, warn_parameters
 from ..analysis.results import stability
 from ..bicycle.chart import CHECKED_KEYS
 from ..bicycle.sizes import select_size, size_names
 from .state import CHART_ANGLES
-from ..analysis.handling.plant import linear_model
 from ..analysis.handling.survey import handling
 import copy
 import yaml
@@ -69,7 +69,8 @@ RIGID_CHOICE = "infinite"
 
 @dataclass(frozen=True)
 class Evaluation:
-    """One configuration's results: parameter set, stiffness S (None = rigid) and stability."""
+    """One configuration's results: parameter set, stiffness S (None = rigid, or a model other than the
+    Whipple bicycle's quasi-static frame) and stability."""
 
     parameters: BenchmarkParameters
     stiffness: object
@@ -105,8 +106,9 @@ class Engine:
         self.bicycle = self._guarded(_recorded(self._bicycle, 32))
         self.rider = self._guarded(_recorded(self._rider, 32))
         self.seated = self._guarded(_recorded(self._seated, 64))
+        self.scenario = self._guarded(_recorded(self._scenario, 64))
         self.base_parameters = self._guarded(_recorded(self._base_parameters, 64))
-        self.stiffness = self._guarded(_recorded(self._stiffness, 64))
+        self.built = self._guarded(_recorded(self._built, 64))
         self.handling = self._guarded(_recorded(self._handling, 16))
 
     # -- the one way in ---------------------------------------------------------
@@ -257,16 +259,35 @@ class Engine:
         """The rider seated on the bicycle (None for no rider); InputError if it cannot sit."""
         return seated_rider(self.bicycle(bicycle_key), self.rider(rider_key))
 
+    def _scenario(self, key, rider, combine, model):
+        """The :class:`~bikemass.scenario.scenario.Scenario` of the bicycle, the rider as the page
+        seated it (:meth:`seated`, cached) and the model; its parameter set is built here, so that
+        its warnings are recorded with it."""
+        bicycle = self.bicycle(key)
+        seated = self.seated(key, rider)
+        placed = None if seated is None else SeatedRider(seated, bicycle, "seated", {}, None, ())
+        scenario = Scenario(bicycle, placed, combine=check(Combine, combine).value, method="mesh", model=model,
+                            origin=SOURCE)
+        scenario.parameters()
+        return scenario
+
     def _base_parameters(self, key, rider, combine):
         """Parameters of the bicycle with its rider seated once (:meth:`seated`, cached)."""
-        return bicycle_parameters(self.bicycle(key), self.seated(key, rider), check(Combine, combine).value, "mesh")
+        return self.scenario(key, rider, combine, BASE).parameters()
 
-    def _stiffness(self, key, material):
-        bicycle = self.bicycle(key)
-        own = {t.material.key: t.material for t in bicycle.tubes}
+    def stiffness_choice(self, key, material):
+        """The stiffness choice of the page's ``material`` on bicycle ``key``: ``infinite``, a tube
+        material of the frame's own (a Material) or a shipped material's name; InputError otherwise."""
+        own = {t.material.key: t.material for t in self.bicycle(key).tubes}
         if material != RIGID_CHOICE and material not in own and material not in load_materials():
             raise InputError(SOURCE, "stiffness", f"one of {', '.join(self.materials(key[0], key[1]))}")
-        return stiffness(bicycle, own.get(material, material))
+        return own.get(material, material)
+
+    def _built(self, key, rider, combine, model, material, overrides):
+        """The scenario of ``key``, ``rider``, ``combine`` and ``model`` built with the stiffness
+        ``material`` and the typed-over parameters ``overrides``."""
+        choice = self.stiffness_choice(key, material)
+        return self.scenario(key, rider, combine, model).build({**dict(overrides), "stiffness": choice})
 
     def warm(self, states=(PageState(),)):
         """Compute ``states`` (and so import what they need) ahead of the first request."""
@@ -288,9 +309,15 @@ class Engine:
         warn_parameters(params, SOURCE)
         return params
 
+    def state_built(self, state: PageState):
+        """The :class:`~bikemass.scenario.scenario.Built` of ``state`` (cached)."""
+        self.parameters(state)                     # the typed-over values checked as the page shows them
+        return self.built(state.bicycle_key, state.rider_key, state.combine, state.model, state.stiffness,
+                          state.overrides)
+
     def model(self, state: PageState):
-        """The linear model (:func:`~bikemass.models.whipple.whipple_model`) of ``state``."""
-        return linear_model(self.parameters(state), self.stiffness(state.bicycle_key, state.stiffness))
+        """The linear model of ``state`` (the scenario builder's, :meth:`state_built`)."""
+        return self.state_built(state).model
 
     def _handling(self, state):
         """``bm.handling`` of ``state`` at :data:`HANDLING_SPEEDS` (cached per state): speeds where
@@ -302,9 +329,8 @@ class Engine:
     def evaluate(self, state: PageState, speeds=None):
         """:class:`Evaluation` of ``state`` over ``speeds`` (default grid)."""
 
-        params = self.parameters(state)
-        S = self.stiffness(state.bicycle_key, state.stiffness)
-        return Evaluation(params, S, stability(params, S, speeds))
+        built = self.state_built(state)
+        return Evaluation(self.parameters(state), built.stiffness, stability(built, speeds=speeds))
 
 
 def body_pose(key):

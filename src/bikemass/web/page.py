@@ -14,13 +14,14 @@ from ..bicycle.derived_chart import ANGLES, CHART_ORDER, derived_chart
 from ..core.errors import InputError
 from ..core.paths import available, frames_dir
 from ..models.parameters import DESCRIPTIONS, NAMES
+from ..models.registry import BASE
 from ..plots.figure import figure_bytes
 from ..plots.side_view import plot_side_view
 from ..plots.stability import plot_eigenvalues
 from ..rider import shipped_poses
 from .api import DOWNLOADS, register_routes
 from .engine import UPLOAD_LIMIT, Engine, HANDLING_SPEEDS
-from .state import BODY_RIDER, CHART_ANGLES, CHART_KEYS, HANDS, SEXES, SOURCE, PageState
+from .state import BODY_RIDER, CHART_ANGLES, CHART_KEYS, HANDS, MODEL_CHOICES, SEXES, SOURCE, PageState
 from ..analysis.handling.frequency import frequency_response
 from ..analysis.handling.figures import plot_bode, plot_handling
 from .guard import guard_requests
@@ -68,6 +69,12 @@ def _number_or_text(value):
     return (isinstance(value, (int, float)) and not isinstance(value, bool)) or _text(100)(value)
 
 
+MODEL_NOTE = ("whipple: Meijaard et al. (2007); rider-lean: the upper body leans at the hips (needs a rider); "
+              "tyre: tyres that slip; flexible: the frame twists and the fork bends (in the stiffness's material); "
+              "docs/models.md")
+"""The line under the model selector."""
+
+
 def _options(value):
     return isinstance(value, list) and len(value) <= 200 and all(
         _text(200)(o) or (isinstance(o, dict) and _text(300)(o.get("label")) and _text(200)(o.get("value")))
@@ -85,6 +92,7 @@ VALUE_CHECKS = {
     "hands.value": (_text(100), "a name"),
     "stiffness.value": (_text(100), "a material name"),
     "combine.value": (_text(100), "a name"),
+    "model.value": (_text(100), "a model name"),
     "chart.value": (_optional(_number_or_text), "a number or nothing"),
     "param.value": (_optional(_number_or_text), "a number or nothing"),
     "upload.contents": (_optional(_text(3_000_000)), "the file's content as a data URL, or null"),
@@ -132,6 +140,9 @@ def _layout(query):
                      placeholder="one size only"),
         html.Label("Rear-frame stiffness", htmlFor="stiffness"),
         dcc.Dropdown(id="stiffness", options=[state.stiffness], value=state.stiffness, clearable=False),
+        html.Label("Model", htmlFor="model"),
+        dcc.Dropdown(id="model", options=list(MODEL_CHOICES), value=state.model, clearable=False),
+        html.Div(MODEL_NOTE, style={"fontSize": "12px"}),
         html.Label("Rider", htmlFor="rider"),
         dcc.Dropdown(id="rider", options=riders, value=state.rider, clearable=False),
         html.Div(id="body-controls", style={} if state.rider == BODY_RIDER else {"display": "none"}, children=[
@@ -276,11 +287,11 @@ def _geometry_table(chart):
     return _html_table(["quantity", "value"], rows)
 
 
-def _state(bike, size, rider, body, stiffness, combine, chart_texts, param_texts):
+def _state(bike, size, rider, body, stiffness, combine, chart_texts, param_texts, model=BASE):
     """The :class:`PageState` of the controls' values, checked as a URL's query is; InputError
     names a bad typed value."""
     state = PageState.from_query({"bike": bike, "size": size or "", "rider": rider, "stiffness": stiffness,
-                                  "combine": combine})
+                                  "combine": combine, "model": model})
     if rider == BODY_RIDER:
         state = state.with_body(*body)
     state = state.with_chart(_parse(CHART_KEYS, chart_texts, "chart."))
@@ -347,11 +358,12 @@ def _callbacks(app, engine):
                   Input("bike", "value"), Input("size", "value"), Input("rider", "value"),
                   Input("height", "value"), Input("mass", "value"), Input("sex", "value"), Input("hands", "value"),
                   Input("stiffness", "value"), Input("combine", "value"),
-                  Input({"type": "chart", "key": ALL}, "value"), Input({"type": "param", "key": ALL}, "value"))
-    def update(bike, size, rider, height, mass, sex, hands, stiffness, combine, chart_texts, param_texts):
+                  Input({"type": "chart", "key": ALL}, "value"), Input({"type": "param", "key": ALL}, "value"),
+                  Input("model", "value"))
+    def update(bike, size, rider, height, mass, sex, hands, stiffness, combine, chart_texts, param_texts, model):
         try:
             state = _state(bike, size, rider, (height, mass, sex, hands), stiffness, combine, chart_texts,
-                           param_texts)
+                           param_texts, model)
             (evaluation, base, chart, editable), lines = engine.answer(_results, engine, state)
         except InputError as exc:         # the last good results stay (docs/web.md)
             return ((no_update,) * 10 + ([no_update] * len(NAMES), [no_update] * len(CHART_KEYS))
@@ -386,16 +398,17 @@ def _callbacks(app, engine):
     configuration = [Input("bike", "value"), Input("size", "value"), Input("rider", "value"),
                      Input("height", "value"), Input("mass", "value"), Input("sex", "value"), Input("hands", "value"),
                      Input("stiffness", "value"), Input("combine", "value"),
-                     Input({"type": "chart", "key": ALL}, "value"), Input({"type": "param", "key": ALL}, "value")]
+                     Input({"type": "chart", "key": ALL}, "value"), Input({"type": "param", "key": ALL}, "value"),
+                     Input("model", "value")]
 
     @app.callback(Output("bode-figure", "src"), Output("bode-error", "children"),
                   *configuration, Input("bode-speed", "value"), Input("bode-input", "value"),
                   Input("bode-output", "value"))
-    def bode(bike, size, rider, height, mass, sex, hands, stiffness, combine, chart_texts, param_texts,
+    def bode(bike, size, rider, height, mass, sex, hands, stiffness, combine, chart_texts, param_texts, model,
              speed, inp, out):
         try:
             state = _state(bike, size, rider, (height, mass, sex, hands), stiffness, combine, chart_texts,
-                           param_texts)
+                           param_texts, model)
             v = _parse(["bode speed"], [speed])["bode speed"]
             fr = frequency_response(engine.model(state), 5.0 if v is None else v, inp, out)
         except InputError as exc:
@@ -404,10 +417,10 @@ def _callbacks(app, engine):
 
     @app.callback(Output("hqm-figure", "src"), Output("hqm-summary", "children"), *configuration)
     def handling_quality(bike, size, rider, height, mass, sex, hands, stiffness, combine, chart_texts,
-                         param_texts):
+                         param_texts, model):
         try:
             state = _state(bike, size, rider, (height, mass, sex, hands), stiffness, combine, chart_texts,
-                           param_texts)
+                           param_texts, model)
             result = engine.handling(state)
             stable = engine.evaluate(state).stability.ranges["strict"]["exact"]
         except InputError as exc:
@@ -429,7 +442,8 @@ def _placeholder(key, value):
 def _eigenvalue_figure(result, state):
     rider = (f"a {state.sex} rider of {state.height:g} m and {state.mass:g} kg" if state.rider == BODY_RIDER
              else "no rider" if state.rider == "none" else f"rider {state.rider}")
-    return plot_eigenvalues(result, title=f"{state.bike}, {rider}, stiffness {state.stiffness}")
+    model = "" if state.model == BASE else f", model {state.model}"
+    return plot_eigenvalues(result, title=f"{state.bike}, {rider}, stiffness {state.stiffness}{model}")
 
 
 def _bode_figure(fr, state):

@@ -9,18 +9,20 @@ the page (``/?bike=jamis&rider=relaxed&stiffness=steel``), the JSON API
 
 import math
 import re
+from itertools import combinations
 from dataclasses import dataclass, field, replace
 from urllib.parse import urlencode
 
 from ..core.config import MAX_MAGNITUDE
 from ..core.errors import InputError
 from ..models.parameters import NAMES
+from ..models.registry import BASE, MEMBERS, parse_model
 
 NAME_PATTERN = re.compile(r"[A-Za-z0-9][A-Za-z0-9_.@-]{0,99}")
 """What a name in the query may look like (a shipped name, a size, a material): no paths."""
 COMBINE_CHOICES = ("exact", "thesis")
 """Rider + rear frame: parallel-axis theorem, or the thesis's Eq. 3.6."""
-TEXT_KEYS = ("bike", "size", "rider", "stiffness", "combine", "sex", "hands")
+TEXT_KEYS = ("bike", "size", "rider", "stiffness", "combine", "model", "sex", "hands")
 """Query keys holding names."""
 BODY_RIDER = "body"
 """``rider=body``: a rider built from ``height`` (m), ``mass`` (kg), ``sex`` and the grip ``hands``."""
@@ -28,6 +30,8 @@ BODY_NUMBERS = {"height": ("m", 1.0, 2.5), "mass": ("kg", 20.0, 250.0)}
 """Body query numbers: unit and the accepted range."""
 SEXES = ("male", "female")
 HANDS = ("tops", "hoods", "drops", "aero")
+MODEL_CHOICES = (BASE, *("+".join(c) for n in range(1, len(MEMBERS) + 1) for c in combinations(MEMBERS, n)))
+"""Every member combination of the model family, by its canonical name (the Whipple bicycle first)."""
 CHART_PREFIX = "chart."
 CHART_KEYS = ("stack", "reach", "head_tube_angle", "seat_tube_angle", "head_tube_length",
               "seat_tube_length", "chainstay_length", "bb_drop", "fork_offset")
@@ -46,6 +50,8 @@ class PageState:
     stiffness: str = "infinite"
     """``infinite`` or a material: a shipped one or the frame's own (:meth:`~.engine.Engine.materials`)."""
     combine: str = "exact"
+    model: str = BASE
+    """The linear model: ``whipple`` or members of the family joined by ``+`` (:data:`MODEL_CHOICES`)."""
     height: float = 1.80
     """Rider height (m) when ``rider`` is ``body``."""
     mass: float = 75.0
@@ -66,7 +72,7 @@ class PageState:
         for key in query:
             if key not in TEXT_KEYS + NAMES + tuple(BODY_NUMBERS) and \
                     key.removeprefix(CHART_PREFIX) not in CHART_KEYS:
-                raise InputError(SOURCE, key, "one of bike, size, rider, stiffness, combine, height, mass, "
+                raise InputError(SOURCE, key, "one of bike, size, rider, stiffness, combine, model, height, mass, "
                                  "sex, hands, a benchmark parameter name (w, c, lam, ..., IFyy) or "
                                  "chart.<key> (chart.stack, ...)")
         values = {k: str(query[k]).strip() for k in TEXT_KEYS if k in query}
@@ -79,6 +85,10 @@ class PageState:
             raise InputError(SOURCE, "stiffness", "infinite or a material name (letters, digits, '_', '-')")
         if state.combine not in COMBINE_CHOICES:
             raise InputError(SOURCE, "combine", f"one of {', '.join(COMBINE_CHOICES)}")
+        try:
+            state = replace(state, model=parse_model(state.model).name)
+        except InputError:
+            raise InputError(SOURCE, "model", f"one of {', '.join(MODEL_CHOICES)}") from None
         overrides = tuple((name, _number(name, query[name])) for name in NAMES
                           if name in query and str(query[name]).strip() != "")
         chart = tuple((key, _number(CHART_PREFIX + key, query[CHART_PREFIX + key])) for key in CHART_KEYS
@@ -95,6 +105,8 @@ class PageState:
         pairs += [("stiffness", self.stiffness)]
         if self.combine != "exact":
             pairs.append(("combine", self.combine))
+        if self.model != BASE:
+            pairs.append(("model", self.model))
         pairs += [(CHART_PREFIX + key, repr(value)) for key, value in self.chart]
         pairs += [(name, repr(value)) for name, value in self.overrides]
         return urlencode(pairs)

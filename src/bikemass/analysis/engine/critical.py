@@ -14,6 +14,7 @@ import numpy as np
 from ...core.results import Result, quantity
 from . import closed_form
 from .crossings import DESTABILISING, OSCILLATORY, REAL, STABILISING, TOUCHING, Crossing, Eigenvalues, axis_crossings
+from .naming import WOBBLE, crossing_is_wobble
 
 
 @dataclass(frozen=True, eq=False)
@@ -25,14 +26,21 @@ class CriticalSpeeds(Result):
     lo: float = quantity("m/s", default=0.0)
     hi: float = quantity("m/s", default=30.0)
 
-    def first(self, kind):
-        """Speed (m/s) of the first crossing of ``kind``, or ``None``."""
-        return next((c.speed for c in self.crossings if c.kind == kind), None)
+    def first(self, kind, wobble=False):
+        """Speed (m/s) of the first crossing of ``kind`` (oscillatory: of wobble only with ``wobble``,
+        of the others without), or ``None``."""
+        return next((c.speed for c in self.crossings if c.kind == kind
+                     and (kind == REAL or (c.mode == WOBBLE) == wobble)), None)
 
     @property
     def weave_speed(self):
-        """The first oscillatory crossing (m/s), or ``None``."""
+        """The first oscillatory crossing other than wobble (m/s), or ``None``."""
         return self.first(OSCILLATORY)
+
+    @property
+    def wobble_speed(self):
+        """The first crossing of wobble (m/s), or ``None``."""
+        return self.first(OSCILLATORY, wobble=True)
 
     @property
     def capsize_speed(self):
@@ -51,8 +59,13 @@ class CriticalSpeeds(Result):
 
 
 def critical_speeds(model, hi=30.0, lo=0.0):
-    """:class:`CriticalSpeeds` of a :class:`~bikemass.models.linear.LinearModel` on ``(lo, hi]`` (m/s)."""
-    if closed_form.applies(model):
+    """:class:`CriticalSpeeds` of a :class:`~bikemass.models.linear.LinearModel` on ``(lo, hi]`` (m/s).
+
+    Beyond the two-coordinate closed form (the Whipple bicycle, which has no wobble) an oscillatory
+    crossing of wobble is named so (:func:`~bikemass.analysis.engine.naming.crossing_is_wobble`), and
+    :attr:`CriticalSpeeds.weave_speed` skips it, as :attr:`StabilityResult.weave_speeds` does."""
+    closed = closed_form.applies(model)
+    if closed:
         pieces = closed_form.model_pieces(model)
         found = closed_form.axis_crossings(model, lo, hi)
         count = lambda v: closed_form.unstable_count(closed_form.quartic(pieces, v))   # noqa: E731
@@ -67,7 +80,8 @@ def critical_speeds(model, hi=30.0, lo=0.0):
         before, after = counts[k], counts[k + 1]
         direction = (TOUCHING if before is None or after is None or before == after
                      else STABILISING if after < before else DESTABILISING)
-        crossings.append(Crossing(speed, kind, direction, w))
+        wobble = not closed and kind == OSCILLATORY and crossing_is_wobble(model, speed, w)
+        crossings.append(Crossing(speed, kind, direction, w, WOBBLE if wobble else ""))
     stable = []
     for (a, b), n in zip(zip(ends, ends[1:]), counts):
         if n == 0:

@@ -37,7 +37,8 @@ VERIFY_TOL = 1e-6
 XTOL = 1e-13
 """Absolute tolerance (m/s) of a refined critical speed."""
 MERGE_TOL = 1e-9
-"""Candidates closer than this (m/s) are one crossing."""
+"""Candidates closer than this (m/s) are one crossing, and candidates this close to the span's start
+are at its start (outside ``(lo, hi]``)."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -134,14 +135,17 @@ def axis_crossings(model, lo, hi, at=None):
     """
     at = at or Eigenvalues(model)
     P = at.coefficients
+    # at standstill every oscillation of an undamped model (the flexible member) is on the axis: the
+    # roots found there, a round-off away from lo, are at lo and no crossing of (lo, hi]
+    start = lo + MERGE_TOL * (1 + abs(lo))
     found = []
     for kind, coefficients, check in ((REAL, P, _real_crossing),
                                       (OSCILLATORY, additive_coefficients(P), _oscillatory_crossing)):
         for v in real_roots(coefficients, lo, hi):
-            if v <= lo:
+            if v <= start:
                 continue
             hit = check(at, v, lo, hi)
-            if hit is not None and lo < hit[0] <= hi:
+            if hit is not None and start < hit[0] <= hi:
                 found.append((float(hit[0]), kind, hit[1]))
     found.sort()
     out = []

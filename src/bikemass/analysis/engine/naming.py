@@ -29,6 +29,13 @@ BICYCLE_LABELS = ("weave 1", "weave 2", "capsize", "caster")
 WEAVE = ("weave 1", "weave 2")
 _PAIRINGS = (((0, 1), (2, 3)), ((0, 2), (1, 3)), ((0, 3), (1, 2)))
 
+WOBBLE = "wobble"
+"""The name of a steer-dominated high-frequency oscillation (shimmy): what a flexible frame and
+fork or tyres that slip add to the Whipple bicycle's modes."""
+WOBBLE_MIN_FREQUENCY = 2 * np.pi * 3.0
+"""Lowest frequency (rad/s, 3 Hz) of an oscillation named wobble; the weave of a bicycle stays
+below it up to about 15 m/s, the wobble of the literature lies at 6-12 Hz (docs/models.md)."""
+
 
 def participation(vectors):
     """Participation factors (N, m) of the states in each mode: ``|x_ki (X^-1)_ik|``, columns sum to 1."""
@@ -145,3 +152,36 @@ def mode_names(values, labels):
         names[real & upper, c] = f"{family(label)}, real (upper)"
         names[real & ~upper, c] = f"{family(label)}, real (lower)"
     return names.astype(str)
+
+
+def coordinate(state):
+    """The coordinate a state belongs to: ``"steer-angle"``, ``"steer-rate"`` -> ``"steer"``."""
+    head, _, tail = state.rpartition("-")
+    return head if tail in ("angle", "rate") else state
+
+
+def is_wobble(model, speed, frequency):
+    """Whether the oscillation of ``frequency`` (rad/s) at ``speed`` is wobble: at least 3 Hz and
+    its largest share (participation factors, summed by coordinate) on the steer coordinate."""
+    if frequency < WOBBLE_MIN_FREQUENCY:
+        return False
+    values, vectors = np.linalg.eig(model.dynamic_matrix(speed))
+    k = int(np.argmin(np.abs(values - 1j * frequency)))
+    share = participation(vectors)[:, k]
+    by = {}
+    for state, x in zip(model.dynamic_states, share):
+        by[coordinate(state.name)] = by.get(coordinate(state.name), 0.0) + x
+    return max(by, key=by.get) == "steer"
+
+
+def crossing_is_wobble(model, speed, frequency):
+    """Whether the pair crossing ``Re = 0`` at ``speed`` with ``frequency`` (rad/s) is wobble, without
+    tracking the modes: the mode family with the largest share of the root (participation factors
+    summed over each family's states) is ``wobble``, or it is no Whipple-bicycle mode and
+    :func:`is_wobble` holds (as :func:`bikemass.analysis.engine.stability.analyse` names a tracked
+    crossing)."""
+    values, vectors = np.linalg.eig(model.dynamic_matrix(speed))
+    share = participation(vectors)[:, int(np.argmin(np.abs(values - 1j * frequency)))]
+    by = {name: float(np.sum(share[list(states)])) for name, states in model.families}
+    largest = max(by, key=by.get)
+    return largest == WOBBLE or (largest != BICYCLE and is_wobble(model, speed, frequency))

@@ -6,23 +6,18 @@ import numpy as np
 
 from scipy.optimize import linear_sum_assignment
 
+from ...core.display import brief
 from ...core.results import Result, quantity
 from ...core.frozen import freeze, short_repr
 from .critical import critical_speeds
 from .crossings import OSCILLATORY, REAL, Crossing, Eigenvalues, circle_speeds
 from .eigen import eigen_sweep
 from .modes import follow_modes
-from .naming import family, participation
+from .naming import WOBBLE, family, is_wobble
 from .tracking import reorder, track
 from .speeds import speed_grid
 from .ranges import MARGINAL_THRESHOLD, grid_ranges, interval_ranges, intersect, is_stable, margin
 
-WOBBLE = "wobble"
-"""The name of a steer-dominated high-frequency oscillation (shimmy): what a flexible frame and
-fork or tyres that slip add to the Whipple bicycle's modes."""
-WOBBLE_MIN_FREQUENCY = 2 * np.pi * 3.0
-"""Lowest frequency (rad/s, 3 Hz) of an oscillation named wobble; the weave of a bicycle stays
-below it up to about 15 m/s, the wobble of the literature lies at 6-12 Hz (docs/models.md)."""
 CRITERIA = ("strict", "marginal")
 
 
@@ -79,26 +74,6 @@ class _Tracked:
         return int(np.argmin(np.abs(self.guess(v) - root)))
 
 
-def coordinate(state):
-    """The coordinate a state belongs to: ``"steer-angle"``, ``"steer-rate"`` -> ``"steer"``."""
-    head, _, tail = state.rpartition("-")
-    return head if tail in ("angle", "rate") else state
-
-
-def is_wobble(model, speed, frequency):
-    """Whether the oscillation of ``frequency`` (rad/s) at ``speed`` is wobble: at least 3 Hz and
-    its largest share (participation factors, summed by coordinate) on the steer coordinate."""
-    if frequency < WOBBLE_MIN_FREQUENCY:
-        return False
-    values, vectors = np.linalg.eig(model.dynamic_matrix(speed))
-    k = int(np.argmin(np.abs(values - 1j * frequency)))
-    share = participation(vectors)[:, k]
-    by = {}
-    for state, x in zip(model.dynamic_states, share):
-        by[coordinate(state.name)] = by.get(coordinate(state.name), 0.0) + x
-    return max(by, key=by.get) == "steer"
-
-
 def _named(model, tracked, speed, kind, frequency, labels):
     """The tracked mode that crosses at ``speed``: a label, a pair's family (``"weave"``), or
     ``"wobble"`` for a steer-dominated high-frequency pair (:func:`is_wobble`) of another family."""
@@ -138,6 +113,22 @@ class StabilityResult(Result):
         ``{label: {criterion: {"exact"|"grid": ((start, stop), ...)}}}`` (m/s) of each mode.
     stiffness : numpy.ndarray of shape (2, 2) or None
         The rear frame's stiffness S (N m/rad) of a quasi-static flexible frame; ``None``: rigid.
+
+    See Also
+    --------
+    bikemass.stability : Makes one.
+    bikemass.plot_eigenvalues : Draws one.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> result = bm.stability(bm.parameters("benchmark"))
+    >>> result.labels
+    ('weave 1', 'weave 2', 'capsize', 'caster')
+    >>> [(c.kind, c.direction, round(c.speed, 4)) for c in result.crossings]
+    [('oscillatory', 'stabilising', 4.2924), ('real', 'destabilising', 6.0243)]
+    >>> result.ranges["strict"]["grid"]                # the first and last stable grid speeds
+    ((4.3, 6.0),)
     """
 
     model: object
@@ -223,6 +214,21 @@ class StabilityResult(Result):
         """The ``units`` block of :meth:`to_dict`."""
         return {"weave_speeds": "m/s", "capsize_speeds": "m/s", "wobble_speeds": "m/s", **Crossing.field_units(),
                 "marginal_threshold": "rad/s", "ranges": "m/s", "modes": "m/s"}
+
+    def display_rows(self):
+        """What Jupyter's table shows: the model, the grid, the critical speeds, the stable ranges."""
+        v = self.speeds
+        speeds = lambda xs: ", ".join(f"{x:.4f}" for x in xs) or "none"            # noqa: E731
+        spans = lambda r: ", ".join(f"{a:.4f}..{b:.4f}" for a, b in r) or "none"   # noqa: E731
+        rows = [("model", self.model.name, ""), ("speeds", f"{v[0]:g}..{v[-1]:g} x {len(v)}", "m/s"),
+                ("modes", ", ".join(self.labels), ""), ("weave speeds", speeds(self.weave_speeds), "m/s"),
+                ("capsize speeds", speeds(self.capsize_speeds), "m/s")]
+        if self.wobble_speeds:
+            rows.append(("wobble speeds", speeds(self.wobble_speeds), "m/s"))
+        return rows + [("stable (strict)", spans(self.stable_speeds), "m/s"),
+                       (f"stable (marginal, |lambda| < {self.marginal:g} rad/s)",
+                        spans(self.ranges["marginal"]["exact"]), "m/s"),
+                       ("frame stiffness S", "rigid" if self.stiffness is None else brief(self.stiffness), "N m/rad")]
 
     def __repr__(self):
         v = self.speeds

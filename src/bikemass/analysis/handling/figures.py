@@ -11,7 +11,7 @@ from .quality import LEVEL_BOUNDS
 from .survey import HandlingResult
 from .time_response import TimeResponse
 from ...core.errors import wrong_type
-from ...plots.figure import new_figure
+from ...plots.figure import Figure, new_figure
 
 BODE_SIZE = (6.4, 5.2)
 TIME_SIZE = (7.0, 5.6)
@@ -29,11 +29,41 @@ def _many(value, kind, what):
     return items
 
 
-def plot_bode(responses, title="", size=None):
+def plot_bode(responses: "FrequencyResponse | list[FrequencyResponse]", title: str = "",
+              size: "tuple[float, float] | None" = None) -> Figure:
     """Figure: magnitude (dB) and phase (deg) against angular frequency (rad/s, logarithmic).
 
-    ``responses``: a :class:`~bikemass.analysis.handling.frequency.FrequencyResponse` or a list of
-    them (one curve each, labelled by speed).
+    Parameters
+    ----------
+    responses : FrequencyResponse or list of FrequencyResponse
+        From :func:`bikemass.frequency_response`; a list gives one curve each, labelled by speed.
+    title : str
+        Title (default: what is drawn).
+    size : (float, float), optional
+        Figure size (width, height) in inches.
+
+    Returns
+    -------
+    Figure
+        A :class:`matplotlib.figure.Figure` (no pyplot; shows itself in Jupyter).
+
+    Raises
+    ------
+    InputTypeError
+        Anything but frequency responses.
+
+    See Also
+    --------
+    frequency_response : What it draws.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> p = bm.parameters("benchmark")
+    >>> curves = [bm.frequency_response(p, v, "steer-torque", "roll-angle") for v in (3.0, 5.0)]
+    >>> fig = bm.plot_bode(curves)
+    >>> [ax.get_ylabel() for ax in fig.axes]
+    ['magnitude, dB (rad/(N m))', 'phase, deg']
     """
     items = _many(responses, FrequencyResponse, "a FrequencyResponse (bm.frequency_response) or a list of them")
     fig = new_figure(size or BODE_SIZE)
@@ -54,9 +84,41 @@ def plot_bode(responses, title="", size=None):
     return fig
 
 
-def plot_time_response(response, title="", size=None):
-    """Figure: every state of a :class:`~bikemass.analysis.handling.time_response.TimeResponse`
-    against time (s), one panel per unit (angles, rates, lengths)."""
+def plot_time_response(response: TimeResponse, title: str = "", size: "tuple[float, float] | None" = None) -> Figure:
+    """Figure: every state of a time response against time (s), one panel per unit (angles,
+    rates, lengths).
+
+    Parameters
+    ----------
+    response : TimeResponse
+        From :func:`bikemass.simulate`.
+    title : str
+        Title (default: what is drawn).
+    size : (float, float), optional
+        Figure size (width, height) in inches.
+
+    Returns
+    -------
+    Figure
+        A :class:`matplotlib.figure.Figure` (no pyplot; shows itself in Jupyter).
+
+    Raises
+    ------
+    InputTypeError
+        Anything but a time response.
+
+    See Also
+    --------
+    simulate : What it draws.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> r = bm.simulate(bm.parameters("benchmark"), 4.6, initial={"roll-rate": 0.5})   # Meijaard's Fig. 4
+    >>> fig = bm.plot_time_response(r)
+    >>> len(fig.axes)                         # rad, rad/s, m
+    3
+    """
     if not isinstance(response, TimeResponse):
         raise wrong_type("response", response, "a TimeResponse (bm.simulate)")
     units = list(dict.fromkeys(response.units))
@@ -84,11 +146,41 @@ def _shown_modes(shapes):
     return shown
 
 
-def plot_mode_shapes(shapes, title="", size=None):
-    """Figure: one polar panel per mode of a
-    :class:`~bikemass.analysis.handling.mode_shapes.ModeShapes` (a conjugate pair once), each
-    mechanical coordinate (roll, steer, ...) an arrow of its amplitude and phase relative to the
-    mode's largest one (the heading and lateral position are in the table, ``shapes.to_dict()``)."""
+def plot_mode_shapes(shapes: ModeShapes, title: str = "", size: "tuple[float, float] | None" = None) -> Figure:
+    """Figure: one polar panel per mode (a conjugate pair once), each mechanical coordinate (roll,
+    steer, ...) an arrow of its amplitude and phase relative to the mode's largest one (the
+    heading and lateral position are in the table, ``shapes.to_dict()``).
+
+    Parameters
+    ----------
+    shapes : ModeShapes
+        From :func:`bikemass.mode_shapes`.
+    title : str
+        Title (default: what is drawn).
+    size : (float, float), optional
+        Figure size (width, height) in inches.
+
+    Returns
+    -------
+    Figure
+        A :class:`matplotlib.figure.Figure` (no pyplot; shows itself in Jupyter).
+
+    Raises
+    ------
+    InputTypeError
+        Anything but mode shapes.
+
+    See Also
+    --------
+    mode_shapes : What it draws.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> fig = bm.plot_mode_shapes(bm.mode_shapes(bm.parameters("benchmark"), 5.0))
+    >>> len(fig.axes)                         # weave (one pair), capsize, caster
+    3
+    """
     if not isinstance(shapes, ModeShapes):
         raise wrong_type("shapes", shapes, "ModeShapes (bm.mode_shapes)")
     modes = _shown_modes(shapes)
@@ -121,12 +213,45 @@ def _level_bands(ax, top):
                 ha="right", va="center", fontsize="x-small", color="0.35")
 
 
-def plot_handling(result, title="", size=None, stable_speeds=()):
-    """Figure: the HQM against frequency at every speed (left) and its peak against speed (right)
-    over the handling-quality Levels, for a :class:`~bikemass.analysis.handling.survey.HandlingResult`.
+def plot_handling(result: HandlingResult, title: str = "", size: "tuple[float, float] | None" = None,
+                  stable_speeds: "tuple[tuple[float, float], ...]" = ()) -> Figure:
+    """Figure: the handling quality metric (HQM) against frequency at every speed (left) and its
+    peak against speed (right) over the handling-quality Levels 1-3; an unstable closed loop
+    is marked x.
 
-    ``stable_speeds``: ``((start, stop), ...)`` (m/s) where the bicycle without rider is
-    self-stable, shaded on the right.
+    Parameters
+    ----------
+    result : HandlingResult
+        From :func:`bikemass.handling`.
+    title : str
+        Title (default: what is drawn).
+    size : (float, float), optional
+        Figure size (width, height) in inches.
+    stable_speeds : sequence of (float, float)
+        ``((start, stop), ...)`` (m/s) where the bicycle without rider is self-stable, shaded on
+        the right (e.g. ``bm.stability(p).stable_speeds``).
+
+    Returns
+    -------
+    Figure
+        A :class:`matplotlib.figure.Figure` (no pyplot; shows itself in Jupyter).
+
+    Raises
+    ------
+    InputTypeError
+        Anything but a handling result.
+
+    See Also
+    --------
+    handling : What it draws.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> p = bm.parameters("benchmark")
+    >>> fig = bm.plot_handling(bm.handling(p, [3.0, 5.0, 7.0]), stable_speeds=bm.stability(p).stable_speeds)
+    >>> [ax.get_xlabel() for ax in fig.axes]
+    ['frequency, rad/s', 'speed, m/s']
     """
     if not isinstance(result, HandlingResult):
         raise wrong_type("result", result, "a HandlingResult (bm.handling)")
@@ -164,11 +289,43 @@ def plot_handling(result, title="", size=None, stable_speeds=()):
     return fig
 
 
-def plot_lane_change(runs, title="", size=None):
+def plot_lane_change(runs: "LaneChange | list[LaneChange]", title: str = "",
+                     size: "tuple[float, float] | None" = None) -> Figure:
     """Figure: lateral positions (road and front contact), roll and steer angles (deg) and the
     rider's steer torque (N m) against the distance along the road (m; the front contact's, the
-    lane change starting at 35 m), one line per
-    :class:`~bikemass.analysis.handling.lane_change.LaneChange` of ``runs``."""
+    lane change starting at 35 m), one line per run, in three panels.
+
+    Parameters
+    ----------
+    runs : LaneChange or list of LaneChange
+        From :func:`bikemass.lane_change`.
+    title : str
+        Title (default: what is drawn).
+    size : (float, float), optional
+        Figure size (width, height) in inches.
+
+    Returns
+    -------
+    Figure
+        A :class:`matplotlib.figure.Figure` (no pyplot; shows itself in Jupyter).
+
+    Raises
+    ------
+    InputTypeError
+        Anything but lane changes.
+
+    See Also
+    --------
+    lane_change : What it draws.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> p = bm.parameters("benchmark")
+    >>> fig = bm.plot_lane_change([bm.lane_change(p, v) for v in (4.0, 6.0)])
+    >>> [ax.get_ylabel() for ax in fig.axes]
+    ['lateral position, m', 'angle, deg', 'steer torque, N m']
+    """
     items = _many(runs, LaneChange, "a LaneChange (bm.lane_change) or a list of them")
     fig = new_figure(size or LANE_SIZE)
     lateral, angles, torque = fig.subplots(3, 1, sharex=True)

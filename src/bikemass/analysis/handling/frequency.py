@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg
 
+from ...core.display import Display
 from ...core.errors import InputError, short
 from ...core.frozen import readonly, short_repr
 from .plant import linear_model, signal_unit, siso
@@ -93,7 +94,7 @@ DEFAULT_FREQUENCIES = (0.1, 100.0, 1000)
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class FrequencyResponse:
+class FrequencyResponse(Display):
     """``G(j w)`` from one input to one output at one speed.
 
     Attributes
@@ -156,7 +157,9 @@ class FrequencyResponse:
                           ("frequencies", f"{w[0]:g}..{w[-1]:g} rad/s x {len(w)}"))
 
 
-def frequency_response(system, speed, input, output, frequencies=None, stiffness=None):
+def frequency_response(system: "LinearModel | BenchmarkParameters", speed: float, input: str, output: str,
+                       frequencies: "ArrayLike | None" = None,
+                       stiffness: "ArrayLike | None" = None) -> FrequencyResponse:
     """The frequency response ``G(j w) = c (j w I - A)^-1 b`` from ``input`` to ``output``.
 
     Parameters
@@ -176,6 +179,18 @@ def frequency_response(system, speed, input, output, frequencies=None, stiffness
     -------
     FrequencyResponse
         ``frequencies`` (rad/s), ``magnitude`` (dB), ``phase`` (deg), ``values`` (complex).
+
+    Raises
+    ------
+    InputError
+        A speed that is not a finite number >= 0, an unknown input or output (the closest name
+        is suggested), a bad S, or a system of another type, or frequencies that are not
+        positive and increasing.
+
+    See Also
+    --------
+    transfer_function : Zeros, poles and gain of the same input and output.
+    plot_bode : Draw it.
 
     Examples
     --------

@@ -33,7 +33,34 @@ MAX_ROWS = 100_000
 
 @dataclass(frozen=True)
 class Gains:
-    """The gains of the five loops, inner to outer (units: :data:`UNITS`)."""
+    """The gains of the five loops, inner to outer (units: :data:`UNITS`).
+
+    Attributes
+    ----------
+    k_delta : float
+        Steer angle error -> neuromuscular command (N m/rad).
+    k_phi_dot : float
+        Roll-rate error (rad/s) -> steer command (rad): in s.
+    k_phi : float
+        Roll error -> roll-rate command (1/s).
+    k_psi : float
+        Heading error -> roll command (rad/rad).
+    k_y : float
+        Lateral error -> heading command (rad/m).
+
+    See Also
+    --------
+    bikemass.handling : Tunes them at every speed (or takes them).
+    bikemass.lane_change : Takes them.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> g = bm.Gains(46.5457, -0.0522, 12.6611, 0.1849, 0.0959)   # Moore's benchmark at 5 m/s
+    >>> r = bm.handling(bm.parameters("benchmark"), [5.0], gains=g)
+    >>> bool(r.closed_loop_stable[0]), list(g) == [46.5457, -0.0522, 12.6611, 0.1849, 0.0959]
+    (True, True)
+    """
 
     k_delta: float
     k_phi_dot: float

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ...core.display import Display
 from ...core.errors import InputError, short
 from ...core.frozen import FrozenMap, readonly, short_repr
 from ...core.threads import one_blas_thread
@@ -57,7 +58,7 @@ def with_path_filter(A, b):
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class LaneChange:
+class LaneChange(Display):
     """The closed loop through a lane change at one speed.
 
     Attributes
@@ -138,7 +139,8 @@ def follow_lane_change(closed, lateral_row, names, units, kind="double", step=0.
 
 
 @one_blas_thread()
-def lane_change(system, speed, gains=None, kind="double", step=0.01, stiffness=None):
+def lane_change(system: "LinearModel | BenchmarkParameters", speed: float, gains: "Gains | ArrayLike | None" = None,
+                kind: str = "double", step: float = 0.01, stiffness: "ArrayLike | None" = None) -> LaneChange:
     """The rider and bicycle through a 2 m lane change (and back, ``kind="double"``).
 
     Parameters
@@ -161,6 +163,17 @@ def lane_change(system, speed, gains=None, kind="double", step=0.01, stiffness=N
     LaneChange
         ``time``, ``road`` and ``command`` (m), and ``signals`` (roll, steer, lateral position,
         steer torque, ...).
+
+    Raises
+    ------
+    InputError
+        A speed not above 0, gains that are not five finite numbers, an unknown ``kind`` or a bad
+        ``step``.
+
+    See Also
+    --------
+    handling : The rider's gains and handling qualities over speed.
+    plot_lane_change : Draw the run.
 
     Examples
     --------

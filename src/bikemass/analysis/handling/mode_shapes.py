@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ...core.display import Display
 from ...core.frozen import readonly, short_repr
 from ..engine.modes import follow_modes
 from .plant import check_speed, linear_model
@@ -39,7 +40,7 @@ def full_eigenvector(A, n_dynamic, value, vector):
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class ModeShapes:
+class ModeShapes(Display):
     """The modes of a linear model at one speed, each as the amplitude and phase of its coordinates.
 
     Attributes
@@ -116,7 +117,8 @@ class ModeShapes:
                           ("coordinates", ", ".join(self.coordinates)))
 
 
-def mode_shapes(system, speed, stiffness=None):
+def mode_shapes(system: "LinearModel | BenchmarkParameters", speed: float,
+                stiffness: "ArrayLike | None" = None) -> ModeShapes:
     """Every mode of a linear model at ``speed``: eigenvalue and the amplitude and phase of each
     coordinate.
 
@@ -134,6 +136,16 @@ def mode_shapes(system, speed, stiffness=None):
     ModeShapes
         One row per tracked mode (weave 1, weave 2, capsize, caster, ... ; a weave pair gives two
         conjugate rows), one column per coordinate (roll-angle, steer-angle, heading, lateral).
+
+    Raises
+    ------
+    InputError
+        A bad speed or S, or a system of another type.
+
+    See Also
+    --------
+    plot_mode_shapes : Draw them as phasors.
+    stability : The modes over speed.
 
     Examples
     --------

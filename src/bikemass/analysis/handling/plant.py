@@ -2,7 +2,8 @@
 speed, its input column and its output row, with the arguments checked.
 
 A *system* is a :class:`~bikemass.models.linear.LinearModel` (any member of the family: the
-Whipple bicycle, a flexible frame, a leaning rider, ...) or a
+Whipple bicycle, a flexible frame, a leaning rider, ...), a
+:class:`~bikemass.scenario.scenario.Scenario` (built with its own ``model``) or a
 :class:`~bikemass.models.parameters.BenchmarkParameters` set, which is the Whipple bicycle of
 :func:`~bikemass.models.whipple.whipple_model` (with the rear-frame stiffness S, N m/rad, when
 one is given).  Bad arguments raise :class:`~bikemass.core.errors.InputError` naming the argument and
@@ -20,6 +21,7 @@ from ..results import matrices
 from ...models.linear import LinearModel
 from ...models.whipple import whipple_model
 from ...models.parameters import BenchmarkParameters
+from ...scenario.scenario import Built, Scenario
 
 MAX_SPEED = 1000.0
 """Highest forward speed (m/s) an analysis accepts (as the speed grids of ``bikemass stability``)."""
@@ -30,8 +32,9 @@ def linear_model(system, stiffness=None):
 
     Parameters
     ----------
-    system : LinearModel or BenchmarkParameters
-        A model, or the 26 Meijaard et al. (2007) parameters (SI) of a Whipple bicycle.
+    system : LinearModel, Scenario, Built or BenchmarkParameters
+        A model, a scenario (built: any member of the family, ``Scenario(..., model="rider-lean")``),
+        or the 26 Meijaard et al. (2007) parameters (SI) of a Whipple bicycle.
     stiffness : array_like (2, 2) or None
         Rear-frame stiffness S (N m/rad) of a parameter set; ``None`` for a rigid frame.  Not
         allowed with a model (a model carries its own frame).
@@ -49,7 +52,13 @@ def linear_model(system, stiffness=None):
         matrices(system, stiffness)                       # checks the parameters and S (InputError)
         S = None if stiffness is None else np.asarray(stiffness, dtype=float)
         return whipple_model(system, S)
-    raise wrong_type("system", system, "a system is a LinearModel or BenchmarkParameters (bm.parameters)")
+    if isinstance(system, (Scenario, Built)):
+        if stiffness is not None:
+            raise InputError("stiffness", "(argument)", "a scenario carries its own frame: give the stiffness "
+                             "to the Scenario")
+        return (system.build() if isinstance(system, Scenario) else system).model
+    raise wrong_type("system", system, "a system is a LinearModel, a Scenario or BenchmarkParameters "
+                     "(bm.parameters)")
 
 
 def check_speed(speed, what="speed"):

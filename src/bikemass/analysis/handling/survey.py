@@ -10,6 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ...core.display import Display
 from ...core.errors import BikemassWarning, InputError, short
 from ...core.frozen import readonly, short_repr
 from ...core.threads import one_blas_thread
@@ -71,7 +72,7 @@ def given_gains(gains, speeds):
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class HandlingResult:
+class HandlingResult(Display):
     """The rider and bicycle at every speed.
 
     Attributes
@@ -148,7 +149,9 @@ class HandlingResult:
 
 
 @one_blas_thread()
-def handling(system, speeds=None, gains=None, stiffness=None):
+def handling(system: "LinearModel | BenchmarkParameters", speeds: "ArrayLike | None" = None,
+             gains: "Gains | str | os.PathLike | Mapping | ArrayLike | None" = None,
+             stiffness: "ArrayLike | None" = None) -> HandlingResult:
     """The rider in the loop at every speed: gains, closed-loop stability and handling qualities.
 
     Parameters
@@ -172,10 +175,22 @@ def handling(system, speeds=None, gains=None, stiffness=None):
     HandlingResult
         ``gains``, ``closed_loop_stable``, ``hqm_peak`` and the HQM curves at every speed.
 
+    Raises
+    ------
+    InputError
+        Bad speeds, a gains file or mapping without a speed asked for, gains that are not five
+        finite numbers, or a system without a steer-torque input.
+
     Warns
     -----
     BikemassWarning
         At a speed where the procedure finds no gains (results there are ``nan``, not stable).
+
+    See Also
+    --------
+    plot_handling : Draw the HQM curves and peaks.
+    lane_change : The rider through a lane change.
+    Gains : The five gains of the rider model.
 
     Examples
     --------

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core.choices import closest
+from ...core.display import Display
 from ...core.errors import InputError, short, wrong_type
 from ...core.frozen import FrozenMap, readonly, short_repr
 from .discrete import march
@@ -80,7 +81,7 @@ def sample_times(duration, step):
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class TimeResponse:
+class TimeResponse(Display):
     """The states of a linear model against time.
 
     Attributes
@@ -136,8 +137,9 @@ class TimeResponse:
                           ("states", len(self.names)), ("inputs", applied))
 
 
-def simulate(system, speed, initial=None, inputs=None, duration=DEFAULT_DURATION, step=DEFAULT_STEP,
-             stiffness=None):
+def simulate(system: "LinearModel | BenchmarkParameters", speed: float, initial: "Mapping[str, float] | None" = None,
+             inputs: "Mapping[str, tuple[str, float]] | None" = None, duration: float = DEFAULT_DURATION,
+             step: float = DEFAULT_STEP, stiffness: "ArrayLike | None" = None) -> TimeResponse:
     """The time response from initial conditions and to steps and impulses of the inputs.
 
     Parameters
@@ -161,6 +163,17 @@ def simulate(system, speed, initial=None, inputs=None, duration=DEFAULT_DURATION
     -------
     TimeResponse
         ``time`` (s) and ``values`` (n, N); ``response["roll-rate"]`` is one state's samples.
+
+    Raises
+    ------
+    InputError
+        A bad speed, an unknown state or input, an input other than a step or an impulse, or a
+        duration or step out of range (at most 10^6 samples).
+
+    See Also
+    --------
+    plot_time_response : Draw it.
+    lane_change : A rider steering the bicycle through a manoeuvre.
 
     Examples
     --------

@@ -19,6 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg
 
+from ...core.display import Display
 from ...core.frozen import readonly, short_repr
 from .plant import linear_model, siso, signal_unit
 
@@ -109,7 +110,7 @@ def gain_unit(output_unit, input_unit, relative_degree):
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class TransferFunction:
+class TransferFunction(Display):
     """``G(s) = gain * prod(s - z) / prod(s - p)`` from one input to one output at one speed.
 
     Attributes
@@ -174,7 +175,8 @@ def _pairs(values):
     return [[float(z.real), float(z.imag)] for z in values]
 
 
-def transfer_function(system, speed, input, output, stiffness=None):
+def transfer_function(system: "LinearModel | BenchmarkParameters", speed: float, input: str, output: str,
+                      stiffness: "ArrayLike | None" = None) -> TransferFunction:
     """The transfer function from ``input`` to ``output`` at ``speed``, as zeros, poles and gain.
 
     Parameters
@@ -196,6 +198,17 @@ def transfer_function(system, speed, input, output, stiffness=None):
     -------
     TransferFunction
         ``G(s) = gain * prod(s - z) / prod(s - p)``; zeros and poles in 1/s.
+
+    Raises
+    ------
+    InputError
+        A speed that is not a finite number >= 0, an unknown input or output (the closest name
+        is suggested), a bad S, or a system of another type.
+
+    See Also
+    --------
+    frequency_response : The same transfer function on the imaginary axis.
+    plot_bode : Draw frequency responses.
 
     Examples
     --------

@@ -1,0 +1,353 @@
+"""A scenario and its one builder: a bicycle, a rider, a frame stiffness and a model choice -> the
+linear model.
+
+A :class:`Scenario` is a value: what to build.  :meth:`Scenario.build` makes it a :class:`Built`:
+the benchmark parameter set, the rear frame's stiffness S, the
+:class:`~bikemass.models.linear.LinearModel` of the chosen member of the family and what that
+member took (the rider split at the hips, the frame's and fork's compliances, the tyres).  Every
+entry point builds through it: ``bm.parameters``, ``bm.stability`` given a scenario, the commands
+(``params``, ``stability``, ``eig``, ``sensitivity``, ``uncertainty``, ``sweep``, the handling
+commands), the study, the web page.
+
+``build(changes)`` rebuilds with any input changed (a benchmark parameter, a dotted path into the
+bicycle or pose YAML, ``stiffness``: :mod:`bikemass.scenario.inputs`); each piece is cached by the
+changes it depends on, and each built scenario by its changes, so that a sweep or a web page pays
+only for what changed.
+
+The model choice (``model=``, ``--model``; :mod:`bikemass.models.registry`):
+
+* ``whipple`` (default): the Meijaard et al. (2007) bicycle; a stiffness choice other than
+  ``infinite`` adds the thesis's quasi-static flexible rear frame (Williams 2015, Eq. 3.27-3.30);
+* ``rider-lean``: the rider's upper body leans at the hips (:mod:`bikemass.rider.lean_split`);
+  the bicycle may instead be BicycleParameters' ``MooreRiderLean2012`` parameter set;
+* ``tyre``: tyres that slip (``tyres``: a :class:`~bikemass.models.tyres.Tyres`, a tyre file or a
+  mapping; default :data:`~bikemass.models.tyres.DEFAULT_TYRES`);
+* ``flexible``: the rear frame's twist and the fork's bending with their inertia, from the beam
+  models in the stiffness choice's material (``infinite``: both rigid, the rigid model back);
+* members joined by ``+`` (``rider-lean+tyre+flexible``).
+
+A benchmark parameter changed by name (``build({"c": 0.09})``) changes the set the model takes:
+for ``rider-lean`` the bicycle with the rider's legs but without the upper body.
+"""
+
+import os
+from collections.abc import Mapping
+from dataclasses import dataclass, field, fields
+
+from ..core.choices import RIGID, Combine, Method, check
+from ..core.errors import InputError, short
+from ..core.frozen import readonly, short_repr
+from ..models.family import build as build_member, held_coordinates, linear_model, values as member_values
+from ..models.flexible import Compliances
+from ..models.lean import RiderLeanParameters
+from ..models.linear import LinearModel
+from ..models.parameters import NAMES, BenchmarkParameters
+from ..models.plausibility import check_parameters
+from ..models.registry import BASE, ModelChoice, parse_model
+from ..models.tyres import Tyres, as_tyres
+from ..models.whipple import whipple_model
+from .loading import BicycleLike, RiderLike
+from .inputs import Inputs, _lru, file_unit, get_path, split_changes
+
+
+@dataclass(frozen=True, eq=False)
+class Built:
+    """A scenario built: what its linear model was made from, and the model.
+
+    Attributes
+    ----------
+    parameters : BenchmarkParameters
+        The Meijaard et al. (2007) set of the bicycle with its rider held rigid (what
+        ``bikemass params`` prints; SI).
+    stiffness : numpy.ndarray (2, 2) or None
+        The rear frame's quasi-static stiffness S (N m/rad, read-only) of the ``whipple`` model;
+        ``None`` for a rigid frame and for every other member (the ``flexible`` member takes
+        :attr:`compliances` instead).
+    model : LinearModel
+        The chosen model.
+    choice : ModelChoice
+        Which member of the family it is.
+    lean : RiderLeanParameters or None
+        The rider split at the hips (``rider-lean``).
+    compliances : Compliances or None
+        The frame's twist and the fork's bending (``flexible``).
+    tyres : Tyres or None
+        The tyres (``tyre``).
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> built = bm.Scenario("benchmark").build()
+    >>> print(built.model.name, built.stiffness, f"w = {built.parameters.w} m")
+    whipple None w = 1.02 m
+    """
+
+    parameters: BenchmarkParameters
+    stiffness: object
+    model: LinearModel
+    choice: ModelChoice = ModelChoice()
+    lean: RiderLeanParameters = None
+    compliances: Compliances = None
+    tyres: Tyres = None
+
+    def values(self):
+        """``{name: float}`` of the parameters the model was generated from (the 26 benchmark names
+        of the set the model takes, and its members'): what :func:`bikemass.models.family.linear_model`
+        takes."""
+        return member_values(self.choice, self.lean or self.parameters, self.tyres, self.compliances)
+
+    def with_values(self, values):
+        """The model of the same member at other parameter ``values`` (``{name: float}``, as
+        :meth:`values`), the same coordinates held."""
+        return linear_model(self.choice, values, held_coordinates(self.choice, self.compliances))
+
+    def __repr__(self):
+        return short_repr(self, ("model", repr(self.model.name)), ("stiffness", self.stiffness is not None))
+
+
+def _rigid(choice):
+    return choice is None or (isinstance(choice, str) and choice in (RIGID, "rigid"))
+
+
+@dataclass(frozen=True)
+class Scenario:
+    """What to build: a bicycle, a rider, a frame stiffness and a model (see the module docstring).
+
+    Parameters
+    ----------
+    bicycle
+        Anything :func:`bikemass.load_bicycle` takes (a name, ``"NAME@SIZE"``, a YAML or parameter
+        file, a mapping, a parameter set, a Bicycle), or for a model with the ``rider-lean`` member
+        a ``MooreRiderLean2012`` parameter set (BicycleParameters' YAML, a file or a mapping).
+    rider
+        Anything :func:`bikemass.load_rider` takes; ``None`` (default) for no rider.  Seated on the
+        bicycle (:func:`bikemass.seated_rider`); a person (a chain pose without ``bike:``) is
+        re-seated on every changed bicycle.  A :class:`~bikemass.rider.seating.SeatedRider` (what
+        ``seat_rider`` gives, its contacts measured) is taken as seated.
+    stiffness
+        The frame: ``"infinite"`` (rigid, default), a material name or file, a 2x2 matrix or a
+        stiffness file (N m/rad) as for :func:`bikemass.stiffness`; with ``flexible`` a material.
+    combine : {"exact", "thesis"}
+        Rider + rear frame: parallel-axis theorem or the thesis's Eq. 3.6.
+    method : {"mesh", "exact"}
+        Mass properties from meshes or closed-form solids.
+    model : str or ModelChoice
+        ``"whipple"`` (default), ``"rider-lean"``, ``"tyre"``, ``"flexible"`` or members joined by ``+``.
+    tyres
+        For the ``tyre`` member: a :class:`~bikemass.models.tyres.Tyres`, a tyre YAML file or a
+        mapping in its form; ``None``: the defaults.  Refused without the member.
+    allow_off_contact : bool
+        Use a rider pose as written even off the bicycle's contacts (the thesis's riders).
+    origin : str
+        What errors about changes name as their source (a sweep's spec file, ``--inputs``, ...).
+
+    Raises
+    ------
+    InputError
+        An unknown model, combine or method; tyres without the tyre member; a stiffness the model
+        cannot take.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> r = bm.stability(bm.Scenario("benchmark"))          # Meijaard et al. (2007), exact digits
+    >>> print(f"{r.weave_speeds[0]:.12f} {r.capsize_speeds[0]:.12f}")
+    4.292382536341 6.024262015388
+    >>> lean = bm.Scenario("jamis", "relaxed", model="rider-lean").build()
+    >>> print(lean.model.state_names[:3])
+    ('roll-angle', 'steer-angle', 'lean-angle')
+    """
+
+    bicycle: object
+    rider: object = None
+    stiffness: object = RIGID
+    combine: str = Combine.EXACT.value
+    method: str = Method.MESH.value
+    model: ModelChoice = BASE
+    tyres: object = None
+    allow_off_contact: bool = False
+    origin: str = field(default="changes", compare=False)
+
+    def __post_init__(self):
+        object.__setattr__(self, "model", parse_model(self.model))
+        object.__setattr__(self, "combine", check(Combine, self.combine).value)
+        object.__setattr__(self, "method", check(Method, self.method).value)
+        if not isinstance(self.allow_off_contact, bool):
+            raise InputError("allow_off_contact", short(self.allow_off_contact), "True or False")
+        if self.tyres is not None and not self.model.has("tyre"):
+            raise InputError("tyres", short(self.tyres), f"a model with the tyre member (e.g. "
+                             f"{parse_model('+'.join((*self.model.members, 'tyre'))).name}) for tyres; the model "
+                             f"{self.model.name} has none")
+        if self.tyres is not None and not isinstance(self.tyres, (Tyres, str, os.PathLike, Mapping)):
+            as_tyres(self.tyres)                               # names what it takes
+        self._refuse_stiffness(self.stiffness)
+
+    def _refuse_stiffness(self, choice):
+        """A frame stiffness other than rigid needs the Whipple model (its quasi-static spring) or
+        the flexible member (whose beam models take a material)."""
+        if self.model.members and not self.model.has("flexible") and not _rigid(choice):
+            raise InputError("stiffness", short(choice), f"infinite with the model {self.model.name} (a flexible "
+                             f"frame: the flexible member, e.g. {self.model.name}+flexible, whose beam models take "
+                             "a material; or --model whipple for the thesis's quasi-static spring)")
+
+    def check_stiffness(self, choice):
+        """InputError unless this scenario's model takes stiffness choice ``choice`` on its bicycle
+        (the Whipple model's S, or the flexible member's compliances, is made and cached)."""
+        self._refuse_stiffness(choice)
+        if self.model.has("flexible"):
+            self.inputs.compliances(choice)
+        elif not self.model.members:
+            self.inputs.frame_stiffness(choice)
+
+    def __getstate__(self):
+        """The scenario's fields only: its caches stay in the process that made them."""
+        return {f.name: getattr(self, f.name) for f in fields(self)}
+
+    def __setstate__(self, state):
+        for name, value in state.items():
+            object.__setattr__(self, name, value)
+
+    @property
+    def inputs(self):
+        """The :class:`~bikemass.scenario.inputs.Inputs` behind this scenario (read once, cached)."""
+        found = self.__dict__.get("_inputs")
+        if found is None:
+            found = Inputs(self.bicycle, self.rider, self.combine, self.method, self.origin, self.allow_off_contact)
+            object.__setattr__(self, "_inputs", found)
+        return found
+
+    # -- inputs by key ----------------------------------------------------------------------
+    def value(self, key):
+        """The current value of input ``key`` (SI; :func:`~bikemass.scenario.inputs.get_path`); a
+        benchmark name's in the set the model takes (for ``rider-lean``, without the upper body)."""
+        if key in NAMES and self.model.has("rider-lean"):
+            return float(getattr(self.inputs.lean().bicycle, key))
+        return get_path(self.inputs, key)
+
+    def file_unit(self, key):
+        """The unit a bare value of ``key`` is read in (the file's unit there), or None for SI."""
+        return file_unit(self.inputs, key)
+
+    @property
+    def file_std(self):
+        """``{name: std}`` (SI) of a BicycleParameters text file's ``+/-`` values; ``{}`` otherwise."""
+        return self.inputs.file_std
+
+    # -- the builder ------------------------------------------------------------------------
+    def parameters(self, changes=None):
+        """The benchmark parameter set (:attr:`Built.parameters`) with ``changes``, without building
+        the model."""
+        bike, rider, params, _ = split_changes(changes or {})
+        if self.inputs.lean_set is not None and not self.model.has("rider-lean"):
+            raise InputError(self.inputs._lean_source, "parameterization", "a Whipple parameter set (benchmark or "
+                             f"principal) for the model {self.model.name}; a MooreRiderLean2012 set is for the "
+                             "rider-lean model (--model rider-lean, bm.Scenario(FILE, model='rider-lean'))")
+        p = self.inputs.parameters(bike, rider)
+        if params:
+            if self.model.has("rider-lean"):
+                return self._lean(bike, rider, params).rigid()
+            p = check_parameters(p.replace(**dict(params)), self.origin)
+        return p
+
+    def frame_stiffness(self, which=None, changes=None):
+        """S (N m/rad) or ``None`` of stiffness choice ``which`` (default the scenario's) on the bicycle
+        with ``changes``: what :attr:`Built.stiffness` holds for the Whipple model."""
+        bike, _, _, _ = split_changes(changes or {})
+        return self.inputs.frame_stiffness(self.stiffness if which is None else which, bike)
+
+    def _lean(self, bike, rider, params):
+        lean = self.inputs.lean(bike, rider)
+        if params:
+            lean = lean.replace(bicycle=check_parameters(lean.bicycle.replace(**dict(params)), self.origin))
+        return lean
+
+    def _tyres(self):
+        return as_tyres(self.tyres) if self.model.has("tyre") else None
+
+    def build(self, changes=None):
+        """:class:`Built` of the scenario with ``changes`` (``{key: value}``, keys as in
+        :mod:`bikemass.scenario.inputs`; cached by their values)."""
+        key = split_changes(changes or {})
+        key = (key[0], key[1], key[2], _hashable(key[3]))
+        return _lru(self.inputs._cache("built"), key, lambda: self._build(changes or {}))
+
+    def _build(self, changes):
+        bike, rider, params, stiffness = split_changes(changes)
+        choice = self.stiffness if stiffness is None else stiffness
+        self._refuse_stiffness(choice)
+        p = self.parameters(changes)
+        if not self.model.members:
+            S = self.inputs.frame_stiffness(choice, bike)
+            return Built(p, None if S is None else readonly(S), whipple_model(p, S), self.model)
+        lean = self._lean(bike, rider, params) if self.model.has("rider-lean") else None
+        flexible = self.inputs.compliances(choice, bike) if self.model.has("flexible") else None
+        tyres = self._tyres()
+        return Built(p, None, build_member(self.model, lean or p, tyres, flexible), self.model, lean, flexible, tyres)
+
+    def replace(self, **changes):
+        """A copy with some fields changed (a new scenario: its own caches)."""
+        return Scenario(**{**{f.name: getattr(self, f.name) for f in fields(self)}, **changes})
+
+
+def _hashable(choice):
+    """A stiffness choice as a cache key (a matrix by its values)."""
+    try:
+        hash(choice)
+        return choice
+    except TypeError:
+        return tuple(map(tuple, readonly(choice, float).tolist()))
+
+
+def parameters(bicycle: BicycleLike, rider: RiderLike = None, combine: Combine | str = Combine.EXACT,
+               method: Method | str = Method.MESH, allow_off_contact: bool = False) -> BenchmarkParameters:
+    """The Meijaard et al. (2007) benchmark parameter set of a bicycle with a rider.
+
+    Parameters
+    ----------
+    bicycle : str, os.PathLike, Mapping, BenchmarkParameters or Bicycle
+        Anything :func:`load_bicycle` takes.
+    rider : str, os.PathLike, Mapping, Rider or None
+        Anything :func:`load_rider` takes; ``None`` (default) for no rider.  The rider is
+        seated on the bicycle (:func:`seated_rider`): a contact off the bicycle is an error
+        unless ``allow_off_contact``.
+    combine : {"exact", "thesis"}
+        Rider + frame body: parallel-axis theorem (``exact``, default) or the thesis's
+        Eq. 3.6 (central inertias added), see :class:`~bikemass.Combine`.
+    method : {"mesh", "exact"}
+        Mass properties from trimesh meshes (default) or closed-form solids.
+    allow_off_contact : bool
+        Use a pose as written even where it misses the saddle, grips or pedals by more than
+        1 mm (the gaps are warned about); by default such a pose is re-seated by its posture.
+
+    Returns
+    -------
+    BenchmarkParameters
+        Immutable; the 26 values as attributes (``p.w`` in m, ``p.lam`` in rad, ``p.IBxx``
+        in kg m^2, ...) and ``p.to_dict()`` as plain floats.  A parameter file without a
+        rider returns its own values exactly.
+
+    Raises
+    ------
+    InputError
+        Bad bicycle or rider (see :func:`load_bicycle`, :func:`load_rider`), a rider that
+        cannot be seated, a bicycle that already holds a rider, or an unknown ``combine`` or
+        ``method``.
+
+    See Also
+    --------
+    stability : Critical speeds and stable ranges of the parameter set.
+    stiffness : The rear frame's stiffness to analyse it with.
+    BenchmarkParameters : The 26 values.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> p = bm.parameters("benchmark")                  # Meijaard et al. (2007), Table 1
+    >>> print(p.w, p.c, round(p.lam, 6), p.mB)
+    1.02 0.08 0.314159 85.0
+    >>> p = bm.parameters("jamis", "relaxed")
+    >>> thesis = bm.parameters("jamis", "relaxed", combine="thesis")
+    >>> print(f"mB {p.mB:.3f} kg, IBxx {p.IBxx:.3f} kg m^2 (the thesis's Eq. 3.6: {thesis.IBxx:.3f})")
+    mB 86.707 kg, IBxx 14.464 kg m^2 (the thesis's Eq. 3.6: 12.281)
+    """
+    return Scenario(bicycle, rider, combine=combine, method=method, allow_off_contact=allow_off_contact).parameters()

@@ -1,0 +1,216 @@
+"""The study's flexible part (bikemass.study.flexible: the thesis's question asked again with the
+frame's inertia and the fork's compliance), checked against the models computed directly, by
+another route than the study's:
+
+* the parameters from the public API (``bm.parameters``, the rider as the thesis placed it), the
+  compliances by material name (``fe.flexible.compliances``), the model from ``family.build``;
+* the wobble's root followed by hand from standstill (plain numpy, not the engine's tracking), its
+  frequency and growth at 8 m/s and its unstable speeds from the sign of its real part (Brent's
+  method where it changes);
+* every capsize speed where the model's stiffness ``K0 + v^2 K2`` is singular (a real root at zero:
+  no eigenvalues, no tracking), every weave speed where a low-frequency pair's real part changes sign
+  (Brent's method), the rigid rider's also against ``bm.stability``;
+* the limit: a very stiff frame and fork give back the rigid bicycle's weave and capsize speeds, the
+  difference falling as 1/stiffness, and the wobble's frequency grows as sqrt(stiffness).
+"""
+
+import csv
+import re
+import warnings
+
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+
+import bikemass as bm
+from bikemass.core.errors import BikemassWarning
+from bikemass.fe.flexible import compliances
+from bikemass.models.family import build
+from bikemass.models.whipple import whipple_model
+from bikemass.rider.lean_split import rider_lean_parameters
+from bikemass.study import flexible
+from bikemass.study.configurations import THESIS_NAMES
+
+NAMES = {label: name for name, label in THESIS_NAMES.items()}
+GRID = np.round(np.arange(0.0, 30.0 + 1e-9, 0.05), 12)
+K8 = int(np.flatnonzero(GRID == 8.0)[0])
+
+
+def read_csv(path):
+    with open(path, newline="") as fh:
+        rows = list(csv.DictReader(fh))
+    return rows
+
+
+def number(cell):
+    return None if cell == "" else float(cell)
+
+
+@pytest.fixture(scope="module")
+def direct():
+    """``{bike: Bicycle}``, cached parameters and compliances, built through the public API."""
+    bikes = {b: bm.load_bicycle(b) for b in ("jamis", "cargo")}
+    params, flex = {}, {}
+
+    def parameters(bike, rider):
+        if (bike, rider) not in params:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", BikemassWarning)          # the thesis's riders sit off contact
+                params[bike, rider] = bm.parameters(bikes[bike], rider, method="exact", allow_off_contact=True)
+        return params[bike, rider]
+
+    def compliance(bike, material):
+        if (bike, material) not in flex:
+            flex[bike, material] = compliances(bikes[bike], material)
+        return flex[bike, material]
+    return bikes, parameters, compliance
+
+
+def followed_wobble(model):
+    """The steer-dominated root of the compliances' family followed from standstill over GRID: the
+    slowest oscillation at standstill whose largest participation lies in the compliances' states."""
+    values, X = np.linalg.eig(model.dynamic_matrix(0.0))
+    share = np.abs(X * np.linalg.inv(X).T)
+    states = list(dict(model.families)["wobble"])
+    mine = [k for k in range(len(values)) if share[states, k].sum() > 0.5 and values[k].imag > 0]
+    root, roots = values[min(mine, key=lambda k: values[k].imag)], []
+    A = np.einsum("nk,kij->nij", GRID[:, None] ** np.arange(len(model.dynamic_coefficients)),
+                  np.asarray(model.dynamic_coefficients))                 # A(v) = sum_k v^k A_k at every speed
+    for values in np.linalg.eigvals(A):
+        root = values[np.argmin(np.abs(values - root))]
+        roots.append(root)
+    return np.array(roots)
+
+
+def nearest_real_part(model, target):
+    """``Re`` of the root of ``model`` nearest ``target`` (1/s), as a function of speed."""
+    def f(v):
+        values = np.linalg.eigvals(model.dynamic_matrix(v))
+        return values[np.argmin(np.abs(values - target))].real
+    return f
+
+
+def capsize_at(model, guess):
+    """The speed (m/s) near ``guess`` where ``det(K0 + v^2 K2)`` changes sign."""
+    det = lambda v: np.linalg.det(model.mechanics.stiffness(v))       # noqa: E731
+    return brentq(det, guess - 0.01, guess + 0.01, xtol=1e-12)
+
+
+def weave_at(model, guess):
+    """The speed (m/s) near ``guess`` where an oscillation below 3 Hz crosses ``Re = 0``, and its frequency (Hz)."""
+    values = np.linalg.eigvals(model.dynamic_matrix(guess))
+    slow = values[(values.imag > 1e-6) & (values.imag < 2 * np.pi * 3.0)]
+    root = slow[np.argmin(np.abs(slow.real))]
+    speed = brentq(nearest_real_part(model, root), guess - 0.01, guess + 0.01, xtol=1e-12)
+    return speed, root.imag / (2 * np.pi)
+
+
+@pytest.fixture(scope="module")
+def table(study):
+    return read_csv(study[0] / "flexible_wobble.csv")
+
+
+def test_every_bicycle_rider_and_material(table):
+    keys = {(r["bicycle"], r["rider"], r["material"]) for r in table}
+    assert len(table) == len(keys) == 2 * 5 * 3
+
+
+def test_wobble_against_the_model_built_directly(table, direct):
+    _, parameters, compliance = direct
+    for row in table:
+        bike, rider, material = NAMES[row["bicycle"]], NAMES[row["rider"]], NAMES[row["material"]]
+        model = build("flexible", parameters(bike, rider), compliances=compliance(bike, material))
+        roots = followed_wobble(model)
+        at8 = roots[K8]
+        assert float(row["wobble at 8 m/s (Hz)"]) == pytest.approx(at8.imag / (2 * np.pi), rel=1e-9), row
+        assert float(row["wobble growth at 8 m/s (1/s)"]) == pytest.approx(at8.real, rel=1e-9, abs=1e-9), row
+        start = number(row["wobble unstable from (m/s)"])
+        growing = roots[1:].real > 0
+        if start is None:
+            assert not growing.any(), row
+        elif start == 0.0:
+            assert growing.all(), row
+        else:
+            i = int(np.flatnonzero(growing)[0]) + 1
+            assert not growing[:i - 1].any() and growing[i - 1:].all(), row
+            speed = brentq(nearest_real_part(model, roots[i]), GRID[i - 1], GRID[i], xtol=1e-12)
+            assert start == pytest.approx(speed, abs=1e-7), row
+        capsize = number(row["flexible capsize (m/s)"])
+        assert capsize == pytest.approx(capsize_at(model, capsize), abs=1e-7), row
+
+
+def test_rigid_frame_and_the_thesis_spring_against_their_stiffness(table, direct):
+    bikes, parameters, _ = direct
+    for row in table:
+        bike, rider, material = NAMES[row["bicycle"]], NAMES[row["rider"]], NAMES[row["material"]]
+        params = parameters(bike, rider)
+        S = bm.stiffness(bikes[bike], material, source="computed")
+        for name, model in (("rigid", whipple_model(params)), ("spring", whipple_model(params, S))):
+            capsize, weave = number(row[f"{name} capsize (m/s)"]), number(row[f"{name} weave (m/s)"])
+            assert capsize == pytest.approx(capsize_at(model, capsize), abs=1e-7), (name, row)
+            if weave is not None:
+                speed, hz = weave_at(model, weave)
+                assert weave == pytest.approx(speed, abs=1e-7) and hz < 3.0, (name, row)
+        assert number(row["rigid weave (m/s)"]) == pytest.approx(bm.stability(params).weave_speeds[0], abs=1e-9)
+
+
+def test_leaning_rider_against_the_model_built_directly(study, direct):
+    bikes, parameters, _ = direct
+    rows = read_csv(study[0] / "rider_lean_weave.csv")
+    assert len(rows) == 2 * 5
+    for row in rows:
+        bike, rider = NAMES[row["bicycle"]], NAMES[row["rider"]]
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", BikemassWarning)
+            seated = bm.seated_rider(bikes[bike], rider, allow_off_contact=True)
+        leaning = rider_lean_parameters(bikes[bike], seated, "exact")
+        model = build("rider-lean", leaning)
+        weave = float(row["leaning rider weave (m/s)"])
+        speed, hz = weave_at(model, weave)
+        assert weave == pytest.approx(speed, abs=1e-7) and hz < 3.0, row
+        capsize = float(row["leaning rider capsize (m/s)"])
+        assert capsize == pytest.approx(capsize_at(model, capsize), abs=1e-7), row
+        rigid = bm.stability(parameters(bike, rider))
+        assert float(row["rigid rider weave (m/s)"]) == pytest.approx(rigid.weave_speeds[0], abs=1e-9)
+        assert float(row["weave change (m/s)"]) == pytest.approx(weave - rigid.weave_speeds[0], abs=1e-12)
+
+
+def test_a_very_stiff_frame_gives_back_the_rigid_bicycle(direct):
+    """Stiffness times f: the weave and capsize speeds approach the rigid ones as 1/f, the wobble's
+    frequency grows as sqrt(f) (its inertia fixed)."""
+    _, parameters, compliance = direct
+    for bike in ("jamis", "cargo"):
+        params = parameters(bike, "relaxed")
+        rigid = bm.stability(params)
+        stiff = {f: flexible.wobble(build("flexible", params, compliances=compliance(bike, "steel").scaled(f)))
+                 for f in (1e4, 1e6)}
+        for which in ("weave_speeds", "capsize_speeds"):
+            error = {f: abs(getattr(w, which)[0] - getattr(rigid, which)[0]) for f, w in stiff.items()}
+            assert error[1e6] < 1e-4 and error[1e4] / error[1e6] == pytest.approx(100, rel=0.2), (bike, which)
+        assert stiff[1e6].frequency / stiff[1e4].frequency == pytest.approx(10.0, rel=1e-3)
+
+
+def test_findings_answer_from_the_table(study, table):
+    """The report's answer counts what the table holds, and --no-figures drew nothing."""
+    report = (study[0] / "report.md").read_text()
+    unstable = sum(r["wobble unstable from (m/s)"] != "" for r in table)
+    answer = re.search(r"Does frame stiffness matter\?[^\n]*", report).group(0)
+    assert f"in {unstable} of {len(table)} combinations" in answer
+    assert "## Frame stiffness with the frame's inertia" in report and "(CSV: `flexible_wobble.csv`)" in report
+    assert "Does frame stiffness matter?" in (study[0] / "report.html").read_text()
+    assert not (study[0] / "figures").exists()
+
+
+def test_figure_shows_the_table(study, table):
+    """The figure's frequency panels read back (from their artists) the table's frequencies."""
+    from bikemass.study import figures
+    from bikemass.study.pipeline import figure_jobs
+    from bikemass.study.runs import Inputs
+    jobs = figure_jobs(study[2], Inputs(), study[0] / "unused")
+    job, = [j for j in jobs if figures.job_path(j).name == "flexible.png"]
+    function, *args, _, title = job
+    fig = function(*args, title)
+    for bike, ax in zip(("Jamis", "Cargo"), fig.axes[::3]):
+        drawn = sorted(round(y, 9) for line in ax.get_lines() if line.get_linestyle() == "-" for y in line.get_ydata())
+        expected = sorted(round(float(r["wobble at 8 m/s (Hz)"]), 9) for r in table if r["bicycle"] == bike)
+        assert drawn == expected

@@ -1,0 +1,106 @@
+"""The stability engine names the flexible model's wobble (bikemass.analysis.engine), checked against
+the eigenvalues followed by hand from standstill (plain numpy, not the engine's tracking):
+
+* the Jamis with the Relaxed rider and a steel frame and fork: the slowest oscillation of the
+  compliances' family, followed from standstill to 8 m/s, is steer-dominated and lies in the 6-9 Hz
+  of Ploechl et al. (2012), below the 8-12 Hz of Klinger et al. (2014, hands on); the engine's
+  column with that root carries a label of the ``wobble`` family and the pair is named ``wobble``;
+  the root grows at every speed above standstill, so the engine reports no crossing of it in
+  (0, 30] m/s (and none a round-off from standstill, where every undamped oscillation sits on the
+  axis) and an empty stable range;
+* the Cargo with the same rider and frame material: its wobble is stable up to where its followed
+  root's real part changes sign (Brent's method on that root), and there the engine's crossing is
+  named ``wobble``, is destabilising, has the root's frequency and is among ``wobble_speeds``, not
+  ``weave_speeds``.
+"""
+
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+
+import bikemass as bm
+from bikemass.analysis.engine.crossings import DESTABILISING, OSCILLATORY
+from bikemass.analysis.engine.naming import family
+from bikemass.analysis.engine.stability import WOBBLE, analyse
+from bikemass.fe.flexible import compliances
+from bikemass.models.family import build
+
+GRID = np.round(np.arange(0.0, 30.0 + 1e-9, 0.05), 12)
+
+
+def flexible_model(bike):
+    bicycle = bm.load_bicycle(bike)
+    params = bm.parameters(bicycle, bm.load_rider("relaxed"))
+    return build("flexible", params, compliances=compliances(bicycle, "steel"))
+
+
+def slowest_compliance_root(model):
+    """The slowest oscillation at standstill whose largest participation is in the compliances' states."""
+    values, X = np.linalg.eig(model.dynamic_matrix(0.0))
+    share = np.abs(X * np.linalg.inv(X).T)
+    states = list(dict(model.families)["wobble"])
+    mine = [k for k in range(len(values)) if share[states, k].sum() > 0.5 and values[k].imag > 0]
+    return values[min(mine, key=lambda k: values[k].imag)]
+
+
+def followed(model, speeds):
+    """The root continuing :func:`slowest_compliance_root` at each speed (nearest root, small steps),
+    with the coordinates' part of its eigenvector at the last speed."""
+    root, roots = slowest_compliance_root(model), []
+    for v in speeds:
+        values, vectors = np.linalg.eig(model.dynamic_matrix(v))
+        k = int(np.argmin(np.abs(values - root)))
+        root = values[k]
+        roots.append(root)
+    return np.array(roots), vectors[:model.n_dynamic // 2, k]
+
+
+@pytest.fixture(scope="module")
+def jamis():
+    model = flexible_model("jamis")
+    return model, analyse(model, GRID)
+
+
+def test_jamis_wobble_is_named_wobble_in_the_published_band(jamis):
+    model, result = jamis
+    k = int(np.flatnonzero(GRID == 8.0)[0])
+    roots, shape = followed(model, GRID[:k + 1])
+    frequency = roots[-1].imag / (2 * np.pi)
+    assert 6.0 <= frequency <= 9.0 and frequency < 8.0        # Ploechl's band, below Klinger's
+    coordinates = [s.name for s in model.dynamic_states[:model.n_dynamic // 2]]
+    assert coordinates[int(np.argmax(np.abs(shape)))] == "steer-angle"
+    column = int(np.argmin(np.abs(result.eigenvalues[k] - roots[-1])))
+    assert abs(result.eigenvalues[k, column] - roots[-1]) < 1e-8 * abs(roots[-1])
+    assert family(result.labels[column]) == WOBBLE
+    assert result.modes.names()[k, column] == WOBBLE
+
+
+def test_jamis_wobble_grows_from_standstill_without_a_crossing(jamis):
+    model, result = jamis
+    roots, _ = followed(model, GRID)
+    assert np.all(roots[1:].real > 0)
+    column = int(np.argmin(np.abs(result.eigenvalues[-1] - roots[-1])))
+    assert result.mode_ranges[result.labels[column]]["strict"]["exact"] == ()
+    assert result.wobble_speeds == ()
+    assert all(c.speed > 1e-6 for c in result.crossings)     # none a round-off from standstill
+    assert result.stable_speeds == ()
+
+
+def test_cargo_wobble_crossing_is_named_wobble():
+    model = flexible_model("cargo")
+    result = analyse(model, GRID)
+    roots, _ = followed(model, GRID)
+    signs = np.sign(roots.real[1:])
+    assert signs[0] < 0 and np.count_nonzero(np.diff(signs)) == 1    # stable, then unstable once
+    i = int(np.flatnonzero(np.diff(signs))[0]) + 1
+
+    def real_part(v):
+        values = np.linalg.eigvals(model.dynamic_matrix(v))
+        return values[np.argmin(np.abs(values - roots[i]))].real
+    speed = brentq(real_part, GRID[i], GRID[i + 1], xtol=1e-12)
+    crossing, = [c for c in result.crossings if family(c.mode) == WOBBLE]
+    assert crossing.kind == OSCILLATORY and crossing.direction == DESTABILISING
+    assert crossing.speed == pytest.approx(speed, abs=1e-8)
+    values = np.linalg.eigvals(model.dynamic_matrix(speed))
+    assert crossing.frequency == pytest.approx(abs(values[np.argmin(np.abs(values - roots[i]))].imag), rel=1e-6)
+    assert result.wobble_speeds == (crossing.speed,) and crossing.speed not in result.weave_speeds
