@@ -262,6 +262,7 @@ names those rows for the generated code)."""
 INVERSES = {
     "bikemass.models.linear": "state_form: the mass matrix, on the descriptor's mass rows",
     "bikemass.models.flexible_static": "the thesis's static stiffness (gK0 + S)^-1: a 2x2 stiffness, no state matrix",
+    "bikemass.sweep.vectorised": "the same static stiffness for a sweep chunk's stacked 2x2 (gK0 + S): no state matrix",
     "bikemass.analysis.engine.naming": "left eigenvectors (participation factors)",
     "bikemass.analysis.sensitivity": "left eigenvectors (eigenvalue derivatives)",
     "bikemass.analysis.uncertainty": "left eigenvectors (eigenvalue derivatives)",

@@ -80,10 +80,24 @@ def standstill_labels(values, vectors, families):
     rest = [i for i in range(len(values)) if labels[i] is None]
     home = {i: others[int(np.argmax([weight[names.index(f), i] for f in others]))] for i in rest}
     for f in others:
-        mine = sorted((i for i in rest if home[i] == f), key=lambda i: (-values[i].real, -values[i].imag))
+        mine = sorted((i for i in rest if home[i] == f), key=lambda i: _standstill_order(values[i]))
         for k, i in enumerate(mine):
             labels[i] = f if len(mine) == 1 else f"{f} {k + 1}"
     return labels
+
+
+AXIS_TOLERANCE = 1e-9
+"""A root whose real part is within this fraction of its modulus (1/s) of zero is on the imaginary
+axis: an undamped oscillation at standstill, whose real part is rounding noise."""
+
+
+def _standstill_order(value):
+    """Sort key of a family's roots at standstill: the most unstable first, then the fastest, a
+    conjugate pair together (upper first).  A real part within :data:`AXIS_TOLERANCE` of zero counts
+    as zero, so that rounding (a last-bit change of an input) cannot reorder the undamped
+    oscillations of a model (the flexible frame's 64 Hz and 7 Hz pairs) and renumber their labels."""
+    real = 0.0 if abs(value.real) <= AXIS_TOLERANCE * (1 + abs(value)) else value.real
+    return (-real, -abs(value.imag), -value.imag)
 
 
 def split_rank(labels):
