@@ -44,7 +44,7 @@ class Table(HTMLParser):
 
 
 @pytest.fixture(scope="module")
-def benchmark():
+def meijaard():
     return bm.parameters("benchmark")
 
 
@@ -54,15 +54,15 @@ def rows(result):
     return {r[0]: (r[1], r[2]) for r in table.rows[1:]}
 
 
-def test_stability_result_table_holds_the_critical_speeds_with_units(benchmark):
-    shown = rows(bm.stability(benchmark))
+def test_stability_result_table_holds_the_critical_speeds_with_units(meijaard):
+    shown = rows(bm.stability(meijaard))
     assert shown["weave speeds"] == ("4.2924", "m/s") and shown["capsize speeds"] == ("6.0243", "m/s")
     assert shown["stable (strict)"] == ("4.2924..6.0243", "m/s")
     assert shown["frame stiffness S"][0] == "rigid"
 
 
-def test_parameters_table_holds_the_26_values_with_their_units(benchmark):
-    table = Table(benchmark._repr_html_())
+def test_parameters_table_holds_the_26_values_with_their_units(meijaard):
+    table = Table(meijaard._repr_html_())
     body = {r[0].split(":")[0]: (r[1], r[2]) for r in table.rows[1:]}
     assert list(body) == list(bm.PARAMETER_NAMES)
     assert body["mB"] == ("85", "kg") and body["IBxz"] == ("2.4", "kg m^2") and body["lam"][1] == "rad"
@@ -83,8 +83,8 @@ def test_parameters_table_holds_the_26_values_with_their_units(benchmark):
     lambda p: bm.mode_shapes(p, 5.0),
 ], ids=["parameters", "stability", "eigenvalues", "matrices", "sensitivity", "uncertainty", "frame_modes",
         "transfer_function", "frequency_response", "simulate", "mode_shapes"])
-def test_results_have_a_short_repr_and_an_html_table(make, benchmark):
-    result = make(benchmark)
+def test_results_have_a_short_repr_and_an_html_table(make, meijaard):
+    result = make(meijaard)
     text = repr(result)
     assert "\n" not in text and len(text) <= 300, text
     table = Table(result._repr_html_())

@@ -36,7 +36,7 @@ from ..core.display import Display
 from ..core.errors import InputError
 from ..core.keywords import renamed_keywords
 from ..core.limits import MAX_SPEEDS
-from ..core.units import DIMENSIONS, UnitError, dimension_of, split_quantity
+from ..core.units import UnitError, dimension_of, split_quantity, to_si
 from ..models.parameters import NAMES
 from ..plots.stability import COLOURS, OTHER_COLOUR
 from ..scenario.scenario import Scenario
@@ -76,7 +76,7 @@ def _spread_value(node):
             node.fail(f"a spread: a number in SI or '<number> <unit>' ({exc})")
         if number < 0:
             node.fail(f"a spread >= 0, got {node.value!r}")
-        return number * DIMENSIONS[dimension_of(unit)][1][unit] if unit else number
+        return to_si(node.value, dimension_of(unit)) if unit else number
     return node.number("dimensionless", nonnegative=True)
 
 

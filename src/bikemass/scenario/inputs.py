@@ -34,7 +34,7 @@ from ..core.config import Node, load_yaml
 from ..core.errors import InputError
 from ..core.gate import MAPPING, plain_input
 from ..core.paths import frames_dir, resolve
-from ..core.units import DIMENSIONS, dimension_of
+from ..core.units import DIMENSIONS, dimension_of, to_si
 from ..mass.inertia import combine
 from ..mass.materials import Material, load_materials
 from ..models.flexible import Compliances
@@ -170,7 +170,7 @@ def get_path(model, key):
         number = float(value.split()[0] if _unit(value) else value)
     except (TypeError, ValueError, AttributeError):
         raise InputError(model.origin, key, f"a number at that path, got {value!r}") from None
-    return number * DIMENSIONS[dimension_of(unit)][1][unit] if unit else number
+    return to_si(number, dimension_of(unit), bare_unit=unit) if unit else number
 
 
 def split_changes(changes):
