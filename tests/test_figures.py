@@ -183,7 +183,6 @@ def test_compare_figure_shows_each_configurations_speeds(tmp_path, capsys):
 
 
 def test_frame_modes_figure_shows_supports_views_and_mode_types():
-    import numpy as np
     from bikemass.fe import frame_modes
     from bikemass.plots.frame_modes import classify, clamped_nodes, plot_frame_modes
     from bikemass.scenario.frame import frame_structure

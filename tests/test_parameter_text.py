@@ -188,7 +188,6 @@ def test_measured_bicycle_companion_poses_a_chain_rider(tmp_path, capsys):
 
 
 def test_bikemass_export_reads_back_bit_for_bit(tmp_path):
-    from bikemass.scenario import catalog
     from bikemass.models.parameter_export import format_parameters
     params = scenario_parameters("jamis-thesis", "relaxed-thesis")
     f = tmp_path / "JamisBenchmark.txt"

@@ -1,7 +1,6 @@
 """Exact critical-speed derivatives against central finite differences of independently found speeds."""
 
 import json
-import re
 
 import numpy as np
 import pytest

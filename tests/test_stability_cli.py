@@ -10,7 +10,6 @@ from images import is_drawn
 
 from bikemass.cli.main import main
 from bikemass.core.paths import frames_dir
-from thesis_sets import RIDERS, thesis_set
 
 BENCHMARK = str(frames_dir() / "benchmark.yaml")
 

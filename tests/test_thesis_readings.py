@@ -115,7 +115,6 @@ def test_cargo_titanium_kdd_erratum_in_the_stability_tables():
 
 def test_prose_numbers_that_no_table_holds():
     """docs/thesis.md#prose-that-disagrees-with-the-tables."""
-    from bikemass.scenario import catalog
     from bikemass.analysis.engine.modes import follow_modes
     from bikemass.models.whipple import whipple_model
 

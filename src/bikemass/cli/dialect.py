@@ -26,7 +26,7 @@ import sys
 from pathlib import Path
 
 from ..core.choices import RIGID, Combine, Format, Method
-from ..core.errors import InputError, short
+from ..core.errors import InputError
 from .figure_options import add_figure_options, figure_options, write_figure
 from ..core.limits import MAX_SPEED, MAX_SPEEDS, MIN_SPEED_STEP
 from ..models.registry import BASE, parse_model

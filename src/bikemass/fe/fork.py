@@ -23,7 +23,6 @@ from ..mass.tubes import Structure, Tube
 from .assembly import assemble
 from ..models.compliance import Compliance
 from .model import build_mesh, with_material
-from .stiffness import head_tube_axis
 from .twist import foot, line_of_rotation, modal_inertia
 
 FORK_NAMES = ("fork", "steerer")
@@ -191,7 +190,7 @@ def fork_bending(fork, contact, steer_axis, timoshenko=True, element_size=None):
     K, M = (X.toarray() for X in assemble(mesh, timoshenko=timoshenko))
     hub = mesh.keypoint_nodes["hub"]
     T, kept = _rigid_link(mesh, [mesh.keypoint_nodes[k] for k in fork.dropouts], hub)
-    K, Mr = T.T @ K @ T, T.T @ M @ T
+    K = T.T @ K @ T
     column = {dof: j for j, dof in enumerate(kept)}
     held = [column[6 * mesh.keypoint_nodes[k] + i] for k in fork.bearings for i in range(3)]
     bottom = mesh.keypoint_nodes[fork.bearings[1]]

@@ -16,11 +16,9 @@ Any combination with the member takes them the same way (``"tyre+flexible"``, ``
 
 from dataclasses import dataclass, fields, replace
 
-import numpy as np
 
 from ..core.errors import InputError
 from .compliance import Compliance
-from ..mass.materials import Material
 
 COORDINATES = {"frame": "frame-twist", "fork": "fork-bending"}
 """Each compliance's coordinate (the state's name in the linear model)."""

@@ -7,7 +7,6 @@ source (``<mapping>`` for Python values), the key and what was expected.
 
 import os
 import warnings
-from collections.abc import Mapping
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -23,7 +22,7 @@ from ..models.plausibility import check_stiffness
 from ..rider import Rider
 from ..rider.seating import seat_rider
 from .frame import frame_stiffness
-from .loading import BicycleLike, RiderLike, load_bicycle, load_rider
+from .loading import BicycleLike, RiderLike, load_bicycle, load_rider  # noqa: F401 (re-exported)
 
 COMBINE_CHOICES = Combine.values()
 """Rider + rear frame: 'exact' = parallel-axis theorem; 'thesis' = inertias added (Eq. 3.6)."""
