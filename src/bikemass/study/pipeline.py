@@ -13,7 +13,7 @@ from .explain import explain
 from .flexible import FlexibleResults, flexible_results, flexible_table, lean_table, quasi_static_speeds
 from .frame_tables import modes_table, stiffness_table
 from .frames import FRAMES, MATERIALS, frame_results
-from .handling import handling_results
+from .handling import handled, handling_result
 from .parallel import executor
 from .records import records
 from .report import render
@@ -72,8 +72,8 @@ def _frames():
     return frame_results(_INPUTS)
 
 
-def _handling():
-    return handling_results(_INPUTS)
+def _handling(bike, rider):
+    return handling_result(_INPUTS, bike, rider)
 
 
 def _flexible():
@@ -104,7 +104,7 @@ def compute(workers=WORKERS, step=lambda label: None, draw_into=None):
     drawing = _Drawing(draw_into, step)
     with executor(workers) as pool:
         drawing.pool = pool
-        handling_job = pool.submit(_handling)             # the longest job first: it sets the pace
+        handling_jobs = {pair: pool.submit(_handling, *pair) for pair in handled()}   # the longest jobs first
         parts = [(spec, pool.submit(_run_part, spec, part)) for spec in (CORRECTED, GEOMETRY)
                  for part in _by_bike(configs)]
         frames_job = pool.submit(_frames)
@@ -132,7 +132,9 @@ def compute(workers=WORKERS, step=lambda label: None, draw_into=None):
         drawing.add(lambda folder: figures.critical_jobs(runs["corrected"], folder))
         frames = frames_job.result()
         step("frame models")
-        handling = handling_job.result()
+        handling = {}
+        for (bike, rider), job in handling_jobs.items():
+            handling.setdefault(bike, {})[rider] = job.result()
         drawing.add(lambda folder: figures.handling_jobs(handling, runs["corrected"], folder))
         step("rider in the loop")
         flexible = flexible_job.result()
