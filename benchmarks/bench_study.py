@@ -9,6 +9,12 @@ its forked workers).  Targets on this 2-core machine: issue 6's, under 5 s witho
 26's, the study with figures at most 2x the study without (the last line: the ratio of the
 best wall times).  Other work on the machine slows the wall time; CPU time is the steadier
 number.
+
+The floor of the figures: the CPU time of a bare matplotlib figure with what an eigenvalue
+figure holds (its size and dpi, constrained layout, ten curves of 601 points, a legend outside
+the axes, a grid, mathtext labels and a title, matplotlib's own PNG writer; no bikemass code),
+times the number of figures the study draws; beside it, what the study's figures cost (the CPU
+time with figures minus without).
 """
 
 import argparse
@@ -17,6 +23,10 @@ import os
 import subprocess
 import sys
 import tempfile
+import time
+from io import BytesIO
+
+import numpy as np
 
 WRAPPER = r"""
 import json, resource, subprocess, sys, time
@@ -38,6 +48,30 @@ def measure(figures, env=None):
     return json.loads(text)
 
 
+def bare_figure_seconds(repeat=8):
+    """CPU seconds of one bare matplotlib figure like an eigenvalue figure, drawn and saved as PNG."""
+    from matplotlib.figure import Figure
+    speeds = np.linspace(0.0, 10.0, 601)
+
+    def draw():
+        fig = Figure(figsize=(7.0, 4.6), layout="constrained")
+        ax = fig.subplots()
+        for i in range(10):
+            ax.plot(speeds, np.sin(speeds + i) * (i + 1), "-" if i % 2 else "--", label=f"mode {i}")
+        ax.axhline(0, color="k", lw=0.7)
+        ax.set_xlabel("forward speed $v$ (m/s)")
+        ax.set_ylabel("eigenvalue $\\lambda$ (1/s)")
+        ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)
+        ax.grid(alpha=0.25, lw=0.5)
+        ax.set_title("a bicycle, a rider, a frame", fontsize=10)
+        fig.savefig(BytesIO(), format="png", dpi=150)
+    draw()
+    start = time.process_time()
+    for _ in range(repeat):
+        draw()
+    return (time.process_time() - start) / repeat
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=3, help="runs without figures (best is shown)")
@@ -54,6 +88,12 @@ def main():
         verdict = "ok" if best[name]["wall"] < target else "SLOW"
         print(f"{name:34s} {best[name]['wall']:9.2f} {best[name]['cpu']:8.2f} {best[name]['rss_mb']:14.0f} "
               f"{target:9.0f} {verdict}")
+    # lazy: only the count is needed from bikemass, after the study's own runs
+    from bikemass.study.figures import figure_count
+    bare, count = bare_figure_seconds(), figure_count()
+    drawn = best["with figures"]["cpu"] - best["without figures"]["cpu"]
+    print(f"figures: {count}, {drawn:.1f} s CPU ({drawn / count * 1e3:.0f} ms each); the floor, {count} bare "
+          f"matplotlib figures: {bare * count:.1f} s CPU ({bare * 1e3:.0f} ms each): {drawn / (bare * count):.2f}x")
     ratio = best["with figures"]["wall"] / best["without figures"]["wall"]
     print(f"with figures / without: {ratio:.2f}x wall, "
           f"{best['with figures']['cpu'] / best['without figures']['cpu']:.2f}x CPU (target: at most 2x wall) "
