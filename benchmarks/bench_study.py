@@ -4,9 +4,17 @@ Run by hand: ``python benchmarks/bench_study.py [--repeat 3]``.  Each measuremen
 the command in a fresh process (``python -m bikemass.cli.main study --out TMP ...``) under a
 small wrapper process whose ``getrusage(RUSAGE_CHILDREN)`` then holds the study's CPU
 time and the peak resident memory of its largest process (the main process or one of
-its forked workers).  Targets (issue 6, this 2-core machine): under 5 s without
-figures, under 60 s with.  Other work on the machine slows the wall time; CPU time is
-the steadier number.
+its forked workers).  Targets on this 2-core machine: issue 6's, under 5 s without figures
+(set before the study had its handling and flexible-frame parts) and under 60 s with; issue
+26's, the study with figures at most 2x the study without (the last line: the ratio of the
+best wall times).  Other work on the machine slows the wall time; CPU time is the steadier
+number.
+
+The floor of the figures: the CPU time of a bare matplotlib figure with what an eigenvalue
+figure holds (its size and dpi, constrained layout, ten curves of 601 points, a legend outside
+the axes, a grid, mathtext labels and a title, matplotlib's own PNG writer; no bikemass code),
+times the number of figures the study draws; beside it, what the study's figures cost (the CPU
+time with figures minus without).
 """
 
 import argparse
@@ -15,6 +23,10 @@ import os
 import subprocess
 import sys
 import tempfile
+import time
+from io import BytesIO
+
+import numpy as np
 
 WRAPPER = r"""
 import json, resource, subprocess, sys, time
@@ -25,6 +37,7 @@ r = resource.getrusage(resource.RUSAGE_CHILDREN)
 print(json.dumps({"wall": wall, "cpu": r.ru_utime + r.ru_stime, "rss_mb": r.ru_maxrss / 1024}))
 """
 TARGETS = {"without figures": 5.0, "with figures": 60.0}
+RATIO = 2.0
 
 
 def measure(figures, env=None):
@@ -33,6 +46,30 @@ def measure(figures, env=None):
         text = subprocess.run([sys.executable, "-c", WRAPPER, *cmd], check=True, capture_output=True,
                               text=True, env={**os.environ, **(env or {})}).stdout
     return json.loads(text)
+
+
+def bare_figure_seconds(repeat=8):
+    """CPU seconds of one bare matplotlib figure like an eigenvalue figure, drawn and saved as PNG."""
+    from matplotlib.figure import Figure
+    speeds = np.linspace(0.0, 10.0, 601)
+
+    def draw():
+        fig = Figure(figsize=(7.0, 4.6), layout="constrained")
+        ax = fig.subplots()
+        for i in range(10):
+            ax.plot(speeds, np.sin(speeds + i) * (i + 1), "-" if i % 2 else "--", label=f"mode {i}")
+        ax.axhline(0, color="k", lw=0.7)
+        ax.set_xlabel("forward speed $v$ (m/s)")
+        ax.set_ylabel("eigenvalue $\\lambda$ (1/s)")
+        ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)
+        ax.grid(alpha=0.25, lw=0.5)
+        ax.set_title("a bicycle, a rider, a frame", fontsize=10)
+        fig.savefig(BytesIO(), format="png", dpi=150)
+    draw()
+    start = time.process_time()
+    for _ in range(repeat):
+        draw()
+    return (time.process_time() - start) / repeat
 
 
 def main():
@@ -44,12 +81,23 @@ def main():
     cases = [("without figures", False, None, args.repeat),
              ("without figures, 1 BLAS thread", False, {"OPENBLAS_NUM_THREADS": "1"}, args.repeat),
              ("with figures", True, None, 1)]
+    best = {}
     for name, figures, env, repeat in cases:
-        best = min((measure(figures, env) for _ in range(repeat)), key=lambda m: m["wall"])
+        best[name] = min((measure(figures, env) for _ in range(repeat)), key=lambda m: m["wall"])
         target = TARGETS.get(name, TARGETS["without figures"])
-        verdict = "ok" if best["wall"] < target else "SLOW"
-        print(f"{name:34s} {best['wall']:9.2f} {best['cpu']:8.2f} {best['rss_mb']:14.0f} "
+        verdict = "ok" if best[name]["wall"] < target else "SLOW"
+        print(f"{name:34s} {best[name]['wall']:9.2f} {best[name]['cpu']:8.2f} {best[name]['rss_mb']:14.0f} "
               f"{target:9.0f} {verdict}")
+    # lazy: only the count is needed from bikemass, after the study's own runs
+    from bikemass.study.figures import figure_count
+    bare, count = bare_figure_seconds(), figure_count()
+    drawn = best["with figures"]["cpu"] - best["without figures"]["cpu"]
+    print(f"figures: {count}, {drawn:.1f} s CPU ({drawn / count * 1e3:.0f} ms each); the floor, {count} bare "
+          f"matplotlib figures: {bare * count:.1f} s CPU ({bare * 1e3:.0f} ms each): {drawn / (bare * count):.2f}x")
+    ratio = best["with figures"]["wall"] / best["without figures"]["wall"]
+    print(f"with figures / without: {ratio:.2f}x wall, "
+          f"{best['with figures']['cpu'] / best['without figures']['cpu']:.2f}x CPU (target: at most 2x wall) "
+          f"{'ok' if ratio <= RATIO else 'SLOW'}; load average {os.getloadavg()[0]:.2f}")
 
 
 if __name__ == "__main__":
