@@ -14,10 +14,10 @@ from scipy.optimize import linear_sum_assignment
 from .eigen import eigen_sweep
 from .modes import follow_modes
 from .naming import WOBBLE, family, is_weave, is_wobble
-from .speeds import speed_grid
+from .speeds import DEFAULT_SPEEDS, speed_grid
 from .tracking import reorder, track
 
-NAMING_STEP = 0.05
+NAMING_STEP = DEFAULT_SPEEDS[2]
 """Speed step (m/s) of the grid on which modes are followed for naming when no analysis gives one
 (the default grid's step: the names are those ``bm.stability`` gives on its default grid)."""
 
