@@ -15,7 +15,7 @@ finite-difference step anywhere, and the critical speeds are the engine's closed
 (:mod:`bikemass.analysis.engine.closed_form`), the same numbers ``bm.stability`` reports.  Any
 other member of the family (a :class:`~bikemass.scenario.scenario.Scenario` with ``model=``) goes
 through the engine: its critical speeds are :func:`~bikemass.analysis.engine.critical.critical_speeds`
-(wobble apart, as ``bm.stability`` names it), and ``dA/dp`` of its generated code is a five-point
+(the weave's crossing, as ``bm.stability`` names it), and ``dA/dp`` of its generated code is a five-point
 central difference in each parameter (relative step :data:`MEMBER_STEP`; truncation error of order
 ``step**4``, rounding of order ``1e-16 / step``: about 1e-10 relative).  Elasticities are
 ``(p / v*) d v* / d p`` (per cent change of the speed per per cent change of the parameter).
@@ -30,7 +30,6 @@ from numpy.typing import ArrayLike
 from ..models.parameters import NAMES
 from .engine import closed_form
 from .engine.crossings import OSCILLATORY, REAL
-from .engine.naming import WOBBLE
 from .model import STIFFNESS_ENTRIES, model_of, state_matrix_derivatives, stiffness_state_derivatives, values_of
 from .engine.critical import critical_speeds
 from .results import _stiffness
@@ -222,7 +221,7 @@ def _member_sensitivity(built, vmax, names):
     found = critical_speeds(built.model, vmax)
     speeds, derivs = {}, {}
     for key, kind in SPEEDS.items():
-        crossing = next((c for c in found.crossings if c.kind == kind and (kind == REAL or c.mode != WOBBLE)), None)
+        crossing = found.weave_crossing if kind == OSCILLATORY else found.capsize_crossing
         speeds[key] = None if crossing is None else crossing.speed
         derivs[key] = ({n: None for n in names} if crossing is None else speed_derivatives(
             built.model, member_state_derivatives(built, crossing.speed, names), crossing.speed, kind,

@@ -44,8 +44,6 @@ from .engine.critical import critical_speeds
 from .engine.modes import follow_modes
 from .engine.speeds import speed_grid, speed_values
 from .model import STEP, model_of, values_of
-from .engine.crossings import REAL
-from .engine.naming import WOBBLE
 from .sensitivity import SPEEDS, speed_derivatives
 
 DISTRIBUTIONS = ("normal", "uniform")
@@ -187,7 +185,7 @@ def linear_derivatives(params, S, dirs, speeds):
     X = modes.eigenvectors                                 # (n, 4, 4), columns = labelled modes
     Y = np.linalg.inv(X)
     found = critical_speeds(model0, max(float(np.max(speeds)), 30.0))
-    crossings = {key: next((c for c in found.crossings if c.kind == kind), None) for key, kind in SPEEDS.items()}
+    crossings = _first_crossings(found)
     v = np.asarray(speeds, dtype=float)
     out = {}
     for key, (dp, dS) in dirs.items():
@@ -202,12 +200,16 @@ def linear_derivatives(params, S, dirs, speeds):
     return out, modes, crossings
 
 
+def _first_crossings(found):
+    """``{weave_speed|capsize_speed: Crossing or None}`` of :class:`CriticalSpeeds` ``found``: the weave's
+    first crossing and the first real one."""
+    return {"weave_speed": found.weave_crossing, "capsize_speed": found.capsize_crossing}
+
+
 def first_crossings(model, speeds):
-    """``{weave_speed|capsize_speed: Crossing or None}``: the first crossing of each kind (wobble
-    apart) on ``(0, max(speeds, 30)]`` m/s."""
-    found = critical_speeds(model, max(float(np.max(speeds)), 30.0))
-    return {key: next((c for c in found.crossings if c.kind == kind and (kind == REAL or c.mode != WOBBLE)), None)
-            for key, kind in SPEEDS.items()}
+    """``{weave_speed|capsize_speed: Crossing or None}``: the first crossing of the weave and the first
+    real one on ``(0, max(speeds, 30)]`` m/s."""
+    return _first_crossings(critical_speeds(model, max(float(np.max(speeds)), 30.0)))
 
 
 def member_derivatives(scenario, built, spreads, speeds, step):

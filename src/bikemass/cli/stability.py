@@ -1,6 +1,8 @@
 """``bikemass eig``, ``bikemass stability`` and ``bikemass compare``: eigenvalues over speed,
 critical speeds, stable ranges."""
 
+import math
+
 from ..core.errors import InputError, short
 from . import dialect
 from .bicycle import allow_off_contact_option
@@ -208,6 +210,12 @@ def _ranges(rs, fmt):
     return ", ".join(f"{fmt.format(a)}..{fmt.format(b)}" for a, b in rs) or "-"
 
 
+def _start_text(unstable):
+    """``"weave 1 (real)"``, ``"tyre (5.978 Hz)"``: a mode unstable from the lowest speed."""
+    what = "real" if unstable.kind == "real" else f"{unstable.frequency / (2 * math.pi):.3f} Hz"
+    return f"{unstable.mode or unstable.kind} ({what})"
+
+
 KIND_WORDS = {"oscillatory": "an oscillatory pair (weave-like)", "real": "a real root (capsize-like)"}
 
 
@@ -234,8 +242,15 @@ def stability_text(result, title):
     v = result.modes.speeds
     lines = [title, f"speeds {v[0]:g}..{v[-1]:g} m/s ({len(v)} points); marginal: |lambda| < "
              f"{result.marginal:g} rad/s", "",
-             f"weave speeds (an oscillatory pair crosses Re = 0):  {_speeds(result.weave_speeds, 12)}",
-             f"capsize speeds (a real root crosses Re = 0):        {_speeds(result.capsize_speeds, 12)}", ""]
+             f"weave speeds (the weave pair crosses Re = 0):       {_speeds(result.weave_speeds, 12)}",
+             f"capsize speeds (a real root crosses Re = 0):        {_speeds(result.capsize_speeds, 12)}"]
+    if result.other_crossings:
+        lines.append("other oscillations crossing Re = 0:                 "
+                     + ", ".join(f"{c.speed:.12f} ({c.mode})" for c in result.other_crossings))
+    if result.unstable_at_start:
+        lines.append(f"unstable from the lowest speed ({v[0]:g} m/s):".ljust(52)
+                     + ", ".join(_start_text(u) for u in result.unstable_at_start))
+    lines.append("")
     rows = [[f"{s:.12f}", kind, d, modes, name] for s, kind, d, modes, name in _crossing_rows(result)]
     lines += ["crossings of Re = 0",
               table(["speed (m/s)", "the root that crosses", "direction", "tracked mode", "named"], rows).rstrip("\n")

@@ -4,7 +4,17 @@ sensitivities and uncertainty need for many configurations.
 The crossings are the engine's (:mod:`~bikemass.analysis.engine.crossings`, or the closed form
 of a two-coordinate model, :mod:`~bikemass.analysis.engine.closed_form`); between two crossings
 the number of unstable roots is constant, so one count inside each interval (the Routh array of
-the quartic, or the eigenvalues) gives every direction and every stable range.
+the quartic, or the eigenvalues) gives every direction and every stable range.  The count in the
+first interval also gives the modes unstable from the lowest speed, which no crossing reports (an
+undamped oscillation on the axis at standstill that grows from there, or any mode already unstable
+where the span starts).
+
+Every crossing and every mode unstable from the start is named by the tracked mode whose root it is
+(:func:`~bikemass.analysis.engine.tracked.root_name`), the same naming the stability analysis uses:
+the weave speed is the weave's crossing, never another oscillation's.  The two-coordinate Whipple
+bicycle's only oscillations are the weave and a capsize + caster pair, and on every thesis set and
+random variants of them only the weave crosses (tests/test_engine_models.py), so its closed form
+names every oscillatory crossing ``weave`` without following the modes.
 """
 
 from dataclasses import dataclass
@@ -14,38 +24,72 @@ import numpy as np
 from ...core.results import Result, quantity
 from . import closed_form
 from .crossings import DESTABILISING, OSCILLATORY, REAL, STABILISING, TOUCHING, Crossing, Eigenvalues, axis_crossings
-from .naming import WOBBLE, crossing_is_wobble
+from .naming import WEAVE_FAMILY, WOBBLE, family, is_weave
+from .tracked import TrackedModes, root_name
+
+START_OFFSET = 1e-3
+"""Where the modes unstable from the lowest speed ``lo`` are told apart: at ``lo + START_OFFSET
+(1 + lo)`` m/s, or halfway to the first crossing if that is nearer (the same roots are unstable
+anywhere before it)."""
+
+
+@dataclass(frozen=True, eq=False)
+class StartInstability(Result):
+    """A mode unstable from the lowest speed of the span on (no crossing of ``Re = 0`` reports it).
+
+    Attributes
+    ----------
+    speed : float
+        The span's lowest speed (m/s).
+    kind : str
+        ``"oscillatory"`` (a complex pair) or ``"real"``.
+    frequency : float
+        ``|Im|`` of the root just above the lowest speed (rad/s); 0 for a real root.
+    mode : str
+        The tracked mode (a pair by its family, as a crossing is named), ``""`` if not tracked.
+    """
+
+    speed: float = quantity("m/s")
+    kind: str = ""
+    frequency: float = quantity("rad/s", default=0.0)
+    mode: str = ""
 
 
 @dataclass(frozen=True, eq=False)
 class CriticalSpeeds(Result):
-    """Every crossing of ``Re = 0`` in ``(lo, hi]`` (ascending) and the strictly stable ranges."""
+    """Every crossing of ``Re = 0`` in ``(lo, hi]`` (ascending), the strictly stable ranges, and the
+    modes unstable from ``lo``."""
 
     crossings: tuple = ()
     stable: tuple = quantity("m/s", default=())
     lo: float = quantity("m/s", default=0.0)
     hi: float = quantity("m/s", default=30.0)
+    unstable_at_start: tuple = ()
 
-    def first(self, kind, wobble=False):
-        """Speed (m/s) of the first crossing of ``kind`` (oscillatory: of wobble only with ``wobble``,
-        of the others without), or ``None``."""
-        return next((c.speed for c in self.crossings if c.kind == kind
-                     and (kind == REAL or (c.mode == WOBBLE) == wobble)), None)
+    @property
+    def weave_crossing(self):
+        """The first crossing of the weave (:func:`~bikemass.analysis.engine.naming.is_weave`), or ``None``."""
+        return next((c for c in self.crossings if c.kind == OSCILLATORY and is_weave(c.mode)), None)
+
+    @property
+    def capsize_crossing(self):
+        """The first real crossing, or ``None``."""
+        return next((c for c in self.crossings if c.kind == REAL), None)
 
     @property
     def weave_speed(self):
-        """The first oscillatory crossing other than wobble (m/s), or ``None``."""
-        return self.first(OSCILLATORY)
+        """The first crossing of the weave (m/s), or ``None``."""
+        return None if self.weave_crossing is None else self.weave_crossing.speed
 
     @property
     def wobble_speed(self):
         """The first crossing of wobble (m/s), or ``None``."""
-        return self.first(OSCILLATORY, wobble=True)
+        return next((c.speed for c in self.crossings if c.kind == OSCILLATORY and family(c.mode) == WOBBLE), None)
 
     @property
     def capsize_speed(self):
         """The first real crossing (m/s), or ``None``."""
-        return self.first(REAL)
+        return None if self.capsize_crossing is None else self.capsize_crossing.speed
 
     @property
     def stable_from(self):
@@ -58,30 +102,52 @@ class CriticalSpeeds(Result):
         return self.stable[0][1] if self.stable else None
 
 
-def critical_speeds(model, hi=30.0, lo=0.0):
+def _start_roots(at, lo, end, count):
+    """``(speed, roots)``: the ``count`` unstable roots of the first interval ``(lo, end)``, each pair
+    once (its upper member), at a speed just above ``lo``, the most unstable first."""
+    speed = lo + min(0.5 * (end - lo), START_OFFSET * (1 + lo))
+    if not count:
+        return speed, []
+    roots = at(speed)
+    top = roots[np.argsort(-roots.real, kind="stable")[:count]]
+    return speed, sorted((r for r in top if r.imag >= 0), key=lambda r: -r.real)
+
+
+def critical_speeds(model, hi=30.0, lo=0.0, tracked=None):
     """:class:`CriticalSpeeds` of a :class:`~bikemass.models.linear.LinearModel` on ``(lo, hi]`` (m/s).
 
-    Beyond the two-coordinate closed form (the Whipple bicycle, which has no wobble) an oscillatory
-    crossing of wobble is named so (:func:`~bikemass.analysis.engine.naming.crossing_is_wobble`), and
-    :attr:`CriticalSpeeds.weave_speed` skips it, as :attr:`StabilityResult.weave_speeds` does."""
+    ``tracked`` (a :class:`~bikemass.analysis.engine.tracked.TrackedModes` of the model) names the
+    crossings; without it a model beyond the two-coordinate closed form has its modes followed from
+    standstill on the default grid's step up to its last crossing, and the closed form names an
+    oscillatory crossing ``weave`` and leaves a real one unnamed (see the module docstring)."""
     closed = closed_form.applies(model)
+    at = tracked.at if tracked is not None else Eigenvalues(model)
     if closed:
         pieces = closed_form.model_pieces(model)
         found = closed_form.axis_crossings(model, lo, hi)
         count = lambda v: closed_form.unstable_count(closed_form.quartic(pieces, v))   # noqa: E731
     else:
-        at = Eigenvalues(model)
         found = axis_crossings(model, lo, hi, at)
         count = lambda v: int(np.sum(at(v).real > 0))          # noqa: E731
     ends = [lo, *[s for s, _, _ in found], hi]
     counts = [count(0.5 * (a + b)) if b > a else None for a, b in zip(ends, ends[1:])]
+    start, start_roots = _start_roots(at, lo, ends[1], counts[0]) if hi > lo else (lo, [])
+    if tracked is None and not closed and (found or start_roots):
+        tracked = TrackedModes.up_to(model, lo, max([start, *[s for s, _, _ in found]]), at)
+    if tracked is not None:
+        name = lambda v, root: root_name(tracked, v, root)                         # noqa: E731
+    else:
+        name = lambda v, root: WEAVE_FAMILY if root.imag else ""                  # noqa: E731
     crossings = []
     for k, (speed, kind, w) in enumerate(found):
         before, after = counts[k], counts[k + 1]
         direction = (TOUCHING if before is None or after is None or before == after
                      else STABILISING if after < before else DESTABILISING)
-        wobble = not closed and kind == OSCILLATORY and crossing_is_wobble(model, speed, w)
-        crossings.append(Crossing(speed, kind, direction, w, WOBBLE if wobble else ""))
+        crossings.append(Crossing(speed, kind, direction, w, name(speed, 1j * w if kind == OSCILLATORY else 0j)))
+    if tracked is not None:                       # in the order of the modes' labels
+        start_roots = sorted(start_roots, key=lambda r: tracked.column_of(start, r))
+    unstable = tuple(StartInstability(float(lo), OSCILLATORY if r.imag else REAL, float(r.imag), name(start, r))
+                     for r in start_roots)
     stable = []
     for (a, b), n in zip(zip(ends, ends[1:]), counts):
         if n == 0:
@@ -89,4 +155,4 @@ def critical_speeds(model, hi=30.0, lo=0.0):
                 stable[-1][1] = b
             else:
                 stable.append([a, b])
-    return CriticalSpeeds(tuple(crossings), tuple(tuple(r) for r in stable), float(lo), float(hi))
+    return CriticalSpeeds(tuple(crossings), tuple(tuple(r) for r in stable), float(lo), float(hi), unstable)

@@ -8,17 +8,22 @@ is on the imaginary axis at ``v`` exactly when
   ``A(v)^[2]`` is singular (:mod:`~bikemass.analysis.engine.compound`).
 
 Both are polynomial eigenvalue problems in ``v`` (:mod:`~bikemass.analysis.engine.polynomial`),
-solved once for all speeds: nothing between grid points is missed.  Each candidate is verified
-on the eigenvalues at its speed (a real pair ``l, -l`` also sums to zero and is dropped: no
-eigenvalue is on the axis there), then refined by Brent's method on the real part of the
-crossing root.  For the marginal criterion the boundary is also where an eigenvalue with
-``Re >= 0`` has modulus ``r``: ``det(A(v) - r I) = 0`` (a real root) or ``C_2(A(v)) - r^2 I``
-singular (a pair; the multiplicative compound).
+solved once for all speeds: nothing between grid points is missed.  ``A(v)`` is first balanced, one
+diagonal similarity for every speed (the states of a richer model differ in scale by many orders:
+very stiff tyres put entries of ``1e12`` beside ones of 1, and the compound's speeds would be only
+``1e-5`` accurate; balanced, ``1e-8``).  Each candidate is verified on the eigenvalues near its
+speed: the root nearest the axis must change the sign of its real part within a small bracket
+around the candidate (Brent's method then refines the speed) and sit on the axis there, or lie on
+the axis at the candidate itself (a root that touches the axis); a real pair ``l, -l`` also sums to
+zero and is dropped (no eigenvalue is on the axis there).  For the marginal criterion the
+boundary is also where an eigenvalue with ``Re >= 0`` has modulus ``r``: ``det(A(v) - r I) = 0``
+(a real root) or ``C_2(A(v)) - r^2 I`` singular (a pair; the multiplicative compound).
 """
 
 from dataclasses import dataclass
 
 import numpy as np
+from scipy.linalg import matrix_balance
 from scipy.optimize import brentq
 
 from ...core.results import Result, quantity
@@ -33,7 +38,11 @@ DIRECTIONS = (STABILISING, DESTABILISING, TOUCHING)
 """As speed grows, the crossing makes the model more stable, less stable, or neither."""
 
 VERIFY_TOL = 1e-6
-"""A candidate is a crossing when its root's real part is within VERIFY_TOL (1 + |root|) of zero."""
+"""A root is on the axis when its real part is within VERIFY_TOL (1 + |root|) of zero."""
+BRACKETS = (1e-9, 1e-7, 1e-5, 1e-4)
+"""Half-widths (relative to 1 + v) of the brackets searched, smallest first, for the sign change of
+a candidate's root: a candidate speed may be this far from the crossing (the polynomial eigenvalue
+problem's error grows with the spread of the model's eigenvalues)."""
 XTOL = 1e-13
 """Absolute tolerance (m/s) of a refined critical speed."""
 MERGE_TOL = 1e-9
@@ -83,9 +92,21 @@ class Eigenvalues:
         return out
 
 
+def balanced(coefficients):
+    """``D^-1 P[k] D`` for every coefficient of ``A(v) = sum_k v**k P[k]``: one diagonal similarity
+    (LAPACK's balancing of ``sum_k |P[k]|``, powers of 2, no permutation) that leaves every
+    eigenvalue at every speed unchanged and evens out the scales of the states."""
+    P = np.asarray(coefficients, dtype=float)
+    if P.shape[-1] == 0:
+        return P
+    _, (scale, _) = matrix_balance(np.abs(P).sum(axis=0), permute=False, separate=True)
+    return P * scale[None, None, :] / scale[None, :, None]
+
+
 def _refine(f, v, lo, hi):
-    """``v`` moved to the root of ``f`` in a small bracket around it (kept if ``f`` keeps its sign)."""
-    for h in (1e-9, 1e-7, 1e-5):
+    """``v`` moved to the root of ``f`` in the smallest bracket of :data:`BRACKETS` around it where
+    ``f`` changes sign (``v`` itself where none does: a root that touches zero)."""
+    for h in BRACKETS:
         a, b = max(lo, v - h * (1 + v)), min(hi, v + h * (1 + v))
         fa, fb = f(a), f(b)
         if fa == 0:
@@ -98,34 +119,35 @@ def _refine(f, v, lo, hi):
 
 
 def _real_crossing(at, v, lo, hi):
-    """``(speed, 0.0)`` if a real root is at zero at ``v`` (refined), else ``None``."""
+    """``(speed, 0.0)`` if a real root passes through zero at or near ``v`` (refined), else ``None``."""
     roots = at(v)
-    k = np.argmin(np.abs(roots))
-    if abs(roots[k]) > VERIFY_TOL * (1 + np.abs(roots).max()) or abs(roots[k].imag) > VERIFY_TOL:
-        return None
+    scale = np.abs(roots).max()
 
-    def f(x):
+    def root(x):
         r = at(x)
-        return float(r[np.argmin(np.abs(r))].real)
-    return _refine(f, v, lo, hi), 0.0
+        return r[np.argmin(np.abs(r))]
+    if abs(root(v).imag) > VERIFY_TOL:
+        return None
+    speed = _refine(lambda x: float(root(x).real), v, lo, hi)
+    hit = root(speed)
+    return (speed, 0.0) if abs(hit) <= VERIFY_TOL * (1 + scale) else None
 
 
 def _oscillatory_crossing(at, v, lo, hi):
-    """``(speed, w)`` if a complex pair is on the imaginary axis at ``v`` (refined), else ``None``."""
+    """``(speed, w)`` if a complex pair crosses the imaginary axis at or near ``v`` (refined), else
+    ``None``.  The pair is the upper-half-plane root nearest the axis relative to its modulus."""
     roots = at(v)
     upper = roots[roots.imag > VERIFY_TOL * (1 + np.abs(roots))]
     if not len(upper):
         return None
-    k = np.argmin(np.abs(upper.real))
-    if abs(upper[k].real) > VERIFY_TOL * (1 + abs(upper[k])):
-        return None
-    w0 = upper[k].imag
+    w0 = upper[np.argmin(np.abs(upper.real) / (1 + np.abs(upper)))].imag
 
     def root(x):
         r = at(x)
         return r[np.argmin(np.abs(r - 1j * w0))]
     speed = _refine(lambda x: float(root(x).real), v, lo, hi)
-    return speed, float(abs(root(speed).imag))
+    hit = root(speed)
+    return (speed, float(abs(hit.imag))) if abs(hit.real) <= VERIFY_TOL * (1 + abs(hit)) else None
 
 
 def axis_crossings(model, lo, hi, at=None):
@@ -134,7 +156,7 @@ def axis_crossings(model, lo, hi, at=None):
     ``at`` may pass a shared :class:`Eigenvalues` of the model.
     """
     at = at or Eigenvalues(model)
-    P = at.coefficients
+    P = balanced(at.coefficients)
     # at standstill every oscillation of an undamped model (the flexible member) is on the axis: the
     # roots found there, a round-off away from lo, are at lo and no crossing of (lo, hi]
     start = lo + MERGE_TOL * (1 + abs(lo))
@@ -160,7 +182,7 @@ def circle_speeds(model, radius, lo, hi, at=None):
     """Speeds in ``(lo, hi)`` where an eigenvalue may have modulus ``radius`` (1/s): candidates for the
     ends of marginally stable ranges (unverified: an extra speed only splits an interval)."""
     at = at or Eigenvalues(model)
-    P = at.coefficients
+    P = balanced(at.coefficients)
     n = P.shape[-1]
     shifted = P.copy()
     shifted[0] = shifted[0] - radius * np.eye(n)

@@ -27,6 +27,8 @@ BICYCLE = "bicycle"
 """The family of the Whipple bicycle's own modes (roll and steer)."""
 BICYCLE_LABELS = ("weave 1", "weave 2", "capsize", "caster")
 WEAVE = ("weave 1", "weave 2")
+WEAVE_FAMILY = "weave"
+"""The name of the weave pair: the family of ``weave 1`` and ``weave 2``."""
 _PAIRINGS = (((0, 1), (2, 3)), ((0, 2), (1, 3)), ((0, 3), (1, 2)))
 
 WOBBLE = "wobble"
@@ -174,13 +176,13 @@ def coordinate(state):
     return head if tail in ("angle", "rate") else state
 
 
-def is_wobble(model, speed, frequency):
-    """Whether the oscillation of ``frequency`` (rad/s) at ``speed`` is wobble: at least 3 Hz and
-    its largest share (participation factors, summed by coordinate) on the steer coordinate."""
-    if frequency < WOBBLE_MIN_FREQUENCY:
+def is_wobble(model, speed, root):
+    """Whether the oscillation ``root`` (1/s) of ``model`` at ``speed`` (m/s) is wobble: at least 3 Hz
+    and its largest share (participation factors, summed by coordinate) on the steer coordinate."""
+    if abs(root.imag) < WOBBLE_MIN_FREQUENCY:
         return False
     values, vectors = np.linalg.eig(model.dynamic_matrix(speed))
-    k = int(np.argmin(np.abs(values - 1j * frequency)))
+    k = int(np.argmin(np.abs(values - root)))
     share = participation(vectors)[:, k]
     by = {}
     for state, x in zip(model.dynamic_states, share):
@@ -188,14 +190,12 @@ def is_wobble(model, speed, frequency):
     return max(by, key=by.get) == "steer"
 
 
-def crossing_is_wobble(model, speed, frequency):
-    """Whether the pair crossing ``Re = 0`` at ``speed`` with ``frequency`` (rad/s) is wobble, without
-    tracking the modes: the mode family with the largest share of the root (participation factors
-    summed over each family's states) is ``wobble``, or it is no Whipple-bicycle mode and
-    :func:`is_wobble` holds (as :func:`bikemass.analysis.engine.stability.analyse` names a tracked
-    crossing)."""
-    values, vectors = np.linalg.eig(model.dynamic_matrix(speed))
-    share = participation(vectors)[:, int(np.argmin(np.abs(values - 1j * frequency)))]
-    by = {name: float(np.sum(share[list(states)])) for name, states in model.families}
-    largest = max(by, key=by.get)
-    return largest == WOBBLE or (largest != BICYCLE and is_wobble(model, speed, frequency))
+def is_weave(name):
+    """Whether a root's name (:func:`~bikemass.analysis.engine.tracked.root_name`) is the weave's: it
+    continues a Whipple weave root (``"weave"``: the pair of ``weave 1`` and ``weave 2``; or one of
+    them paired with another mode of the bicycle, ``"capsize + weave 1"``: the slow static pair
+    oscillating, which the thesis calls the first weave mode and capsize combined) and no mode of
+    another family (a tyre, a compliance, the leaning rider)."""
+    parts = name.split(" + ")
+    return (any(family(x) == WEAVE_FAMILY for x in parts)
+            and all(x in BICYCLE_LABELS or x == WEAVE_FAMILY for x in parts))

@@ -1,94 +1,21 @@
 """One call from a linear model to its modes, exact critical speeds and stable speed ranges."""
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
-
-from scipy.optimize import linear_sum_assignment
 
 from ...core.display import brief
 from ...core.results import Result, quantity
 from ...core.frozen import freeze, short_repr
 from .critical import critical_speeds
 from .crossings import OSCILLATORY, REAL, Crossing, Eigenvalues, circle_speeds
-from .eigen import eigen_sweep
 from .modes import follow_modes
-from .naming import WOBBLE, family, is_wobble
-from .tracking import reorder, track
+from .naming import WOBBLE, family, is_weave
+from .tracked import TrackedModes
 from .speeds import speed_grid
 from .ranges import MARGINAL_THRESHOLD, grid_ranges, interval_ranges, intersect, is_stable, margin
 
 CRITERIA = ("strict", "marginal")
-
-
-class _Tracked:
-    """The root continuing each tracked mode at any speed inside the grid.
-
-    Where the roots move by less than a quarter of their smallest distance across a grid cell,
-    the root nearest the straight line between the mode's values at the cell's ends continues it.
-    In any other cell (roots that meet, split or trade places inside one grid step) the modes are
-    followed again on a fine sub-grid of :data:`SUBSTEPS` steps (the same tracking as on the grid)
-    and the straight line is drawn between sub-grid points.
-    """
-
-    SUBSTEPS = 32
-
-    def __init__(self, model, modes, at):
-        self.model, self.modes, self.at = model, modes, at
-        self._cells = {}
-
-    def _cell(self, k):
-        cell = self._cells.get(k)
-        if cell is None:
-            s, values = self.modes.speeds, self.modes.eigenvalues
-            ends = values[k:k + 2]
-            apart = np.where(np.eye(ends.shape[1], dtype=bool), np.inf, np.abs(ends[:, :, None] - ends[:, None, :]))
-            if np.max(np.abs(ends[1] - ends[0])) < 0.25 * np.min(apart):
-                cell = self._cells[k] = (s[k:k + 2], ends)
-                return cell
-            sub = np.linspace(s[k], s[k + 1], self.SUBSTEPS + 1)
-            sweep = eigen_sweep(self.model, sub)
-            start = self.modes.eigenvalues[k]
-            first = linear_sum_assignment(np.abs(start[:, None] - sweep.eigenvalues[0][None, :]))[1]
-            order = track(sweep.eigenvalues, sweep.eigenvectors)[:, first]
-            values, _ = reorder(sweep.eigenvalues, sweep.eigenvectors, order)
-            cell = self._cells[k] = (sub, values)
-        return cell
-
-    def guess(self, v):
-        """Each mode's value (m,) at speed ``v`` by interpolation on the fine sub-grid."""
-        s, values = self.modes.speeds, self.modes.eigenvalues
-        if len(s) == 1:
-            return values[0]
-        k = int(np.clip(np.searchsorted(s, v) - 1, 0, len(s) - 2))
-        sub, vals = self._cell(k)
-        j = int(np.clip(np.searchsorted(sub, v) - 1, 0, len(sub) - 2))
-        t = (v - sub[j]) / (sub[j + 1] - sub[j])
-        return vals[j] + t * (vals[j + 1] - vals[j])
-
-    def root(self, v, column):
-        roots = self.at(v)
-        return roots[np.argmin(np.abs(roots - self.guess(v)[column]))]
-
-    def column_of(self, v, root):
-        return int(np.argmin(np.abs(self.guess(v) - root)))
-
-
-def _named(model, tracked, speed, kind, frequency, labels):
-    """The tracked mode that crosses at ``speed``: a label, a pair's family (``"weave"``), or
-    ``"wobble"`` for a steer-dominated high-frequency pair (:func:`is_wobble`) of another family."""
-    root = 1j * frequency if kind == OSCILLATORY else 0.0
-    first = tracked.column_of(speed, root)
-    if kind == REAL:
-        return labels[first]
-    guess = tracked.guess(speed)
-    guess[first] = np.inf
-    second = int(np.argmin(np.abs(guess - np.conj(root))))
-    a, b = labels[first], labels[second]
-    name = family(a) if family(a) == family(b) and a != b else " + ".join(sorted((a, b)))
-    if name not in ("weave", WOBBLE) and is_wobble(model, speed, frequency):
-        return WOBBLE
-    return name
 
 
 @dataclass(frozen=True, eq=False)
@@ -113,6 +40,10 @@ class StabilityResult(Result):
         ``{label: {criterion: {"exact"|"grid": ((start, stop), ...)}}}`` (m/s) of each mode.
     stiffness : numpy.ndarray of shape (2, 2) or None
         The rear frame's stiffness S (N m/rad) of a quasi-static flexible frame; ``None``: rigid.
+    unstable_at_start : tuple of StartInstability
+        Every mode unstable from the grid's first speed on (a pair once), which no crossing reports:
+        the weave's real roots of a bicycle at standstill, an undamped oscillation that grows from
+        standstill, any mode already unstable where a grid starts above 0.
 
     See Also
     --------
@@ -138,6 +69,7 @@ class StabilityResult(Result):
     ranges: object = quantity("m/s", default=None)
     mode_ranges: object = quantity("m/s", default=None)
     stiffness: object = quantity("N m/rad", default=None)
+    unstable_at_start: tuple = ()
 
     @property
     def speeds(self):
@@ -154,26 +86,30 @@ class StabilityResult(Result):
         """Column labels of :attr:`eigenvalues` (weave 1, weave 2, capsize, caster, ...)."""
         return self.modes.labels
 
-    def speeds_of(self, kind, wobble=False):
-        """Sorted speeds (m/s) of the crossings of ``kind``; oscillatory ones of the wobble family
-        only with ``wobble``, the others without."""
-        return tuple(c.speed for c in self.crossings if c.kind == kind
-                     and (kind == REAL or (family(c.mode) == WOBBLE) == wobble))
+    def _oscillatory(self, test):
+        return tuple(c.speed for c in self.crossings if c.kind == OSCILLATORY and test(c.mode))
 
     @property
     def weave_speeds(self):
-        """Speeds (m/s) where an oscillatory pair other than wobble crosses ``Re = 0``, ascending."""
-        return self.speeds_of(OSCILLATORY)
+        """Speeds (m/s) where the weave crosses ``Re = 0`` (the pair continuing the Whipple bicycle's
+        weave roots: :func:`~bikemass.analysis.engine.naming.is_weave`), ascending."""
+        return self._oscillatory(is_weave)
 
     @property
     def capsize_speeds(self):
         """Speeds (m/s) where a real root crosses ``Re = 0`` (capsize; also a branch of a split pair)."""
-        return self.speeds_of(REAL)
+        return tuple(c.speed for c in self.crossings if c.kind == REAL)
 
     @property
     def wobble_speeds(self):
         """Speeds (m/s) where the wobble pair crosses ``Re = 0``, ascending."""
-        return self.speeds_of(OSCILLATORY, wobble=True)
+        return self._oscillatory(lambda mode: family(mode) == WOBBLE)
+
+    @property
+    def other_crossings(self):
+        """The oscillatory crossings that are not the weave's (wobble, a tyre's oscillation, the
+        leaning rider's, ...), each named by its mode."""
+        return tuple(c for c in self.crossings if c.kind == OSCILLATORY and not is_weave(c.mode))
 
     @property
     def caster_speeds(self):
@@ -205,6 +141,7 @@ class StabilityResult(Result):
             "capsize_speeds": list(self.capsize_speeds),
             **({"wobble_speeds": list(self.wobble_speeds)} if self.wobble_speeds else {}),
             "crossings": [c.to_dict() for c in self.crossings],
+            "unstable_at_start": [u.to_dict() for u in self.unstable_at_start],
             "marginal_threshold": self.marginal,
             "ranges": ranges(self.ranges),
             "modes": {label: ranges(r) for label, r in {"weave": self.weave_ranges, **self.mode_ranges}.items()},
@@ -225,6 +162,12 @@ class StabilityResult(Result):
                 ("capsize speeds", speeds(self.capsize_speeds), "m/s")]
         if self.wobble_speeds:
             rows.append(("wobble speeds", speeds(self.wobble_speeds), "m/s"))
+        if self.other_crossings:
+            rows.append(("other oscillations crossing",
+                         ", ".join(f"{c.speed:.4f} ({c.mode})" for c in self.other_crossings), "m/s"))
+        if self.unstable_at_start:
+            rows.append((f"unstable from {v[0]:g} m/s",
+                         ", ".join(u.mode or u.kind for u in self.unstable_at_start), ""))
         return rows + [("stable (strict)", spans(self.stable_speeds), "m/s"),
                        (f"stable (marginal, |lambda| < {self.marginal:g} rad/s)",
                         spans(self.ranges["marginal"]["exact"]), "m/s"),
@@ -246,10 +189,9 @@ def analyse(model, speeds=None, marginal=MARGINAL_THRESHOLD, stiffness=None):
     v = modes.speeds
     lo, hi = float(v[0]), float(v[-1])
     at = Eigenvalues(model)
-    tracked = _Tracked(model, modes, at)
-    critical = critical_speeds(model, hi, lo)
-    crossings = tuple(replace(c, mode=_named(model, tracked, c.speed, c.kind, c.frequency, modes.labels))
-                      for c in critical.crossings)
+    tracked = TrackedModes(model, modes, at)
+    critical = critical_speeds(model, hi, lo, tracked)
+    crossings = critical.crossings
     axis = [c.speed for c in crossings]
     limits = {"strict": None, "marginal": marginal}
     boundaries = {"strict": axis, "marginal": sorted([*axis, *circle_speeds(model, marginal, lo, hi, at)])}
@@ -263,4 +205,5 @@ def analyse(model, speeds=None, marginal=MARGINAL_THRESHOLD, stiffness=None):
                 "exact": interval_ranges(lo, hi, boundaries[criterion],
                                          lambda x: bool(margin(tracked.root(x, c), r) < 0)),
                 "grid": grid_ranges(v, is_stable(modes.eigenvalues[:, c], r))}
-    return StabilityResult(model, modes, float(marginal), crossings, ranges, mode_ranges, stiffness)
+    return StabilityResult(model, modes, float(marginal), crossings, ranges, mode_ranges, stiffness,
+                           critical.unstable_at_start)

@@ -1,0 +1,113 @@
+"""The root continuing each tracked mode at any speed, and the name of a root from the mode it continues.
+
+:class:`TrackedModes` interpolates the modes followed on a speed grid
+(:func:`~bikemass.analysis.engine.modes.follow_modes`) to any speed inside it; :func:`root_name` names
+a root at a speed by the tracked mode it continues (a conjugate pair by the two modes of its
+members), which is how every crossing of ``Re = 0`` and every mode unstable from the lowest speed is
+named: by the stability analysis, and by the critical speeds alone that sweeps, sensitivities and
+uncertainty use (:mod:`~bikemass.analysis.engine.critical`).
+"""
+
+import numpy as np
+from scipy.optimize import linear_sum_assignment
+
+from .eigen import eigen_sweep
+from .modes import follow_modes
+from .naming import WOBBLE, family, is_weave, is_wobble
+from .speeds import DEFAULT_SPEEDS, speed_grid
+from .tracking import reorder, track
+
+NAMING_STEP = DEFAULT_SPEEDS[2]
+"""Speed step (m/s) of the grid on which modes are followed for naming when no analysis gives one
+(the default grid's step: the names are those ``bm.stability`` gives on its default grid)."""
+
+
+class TrackedModes:
+    """The root continuing each tracked mode (:class:`~bikemass.analysis.engine.modes.Modes`) at any
+    speed inside the grid.
+
+    Where the roots move by less than a quarter of their smallest distance across a grid cell,
+    the root nearest the straight line between the mode's values at the cell's ends continues it.
+    In any other cell (roots that meet, split or trade places inside one grid step) the modes are
+    followed again on a fine sub-grid of :data:`SUBSTEPS` steps (the same tracking as on the grid)
+    and the straight line is drawn between sub-grid points.
+    """
+
+    SUBSTEPS = 32
+
+    def __init__(self, model, modes, at):
+        self.model, self.modes, self.at = model, modes, at
+        self._cells = {}
+
+    @classmethod
+    def up_to(cls, model, lo, top, at):
+        """The modes of ``model`` followed from standstill on a grid of :data:`NAMING_STEP` from
+        ``lo`` to at least ``top`` (m/s)."""
+        stop = lo + NAMING_STEP * max(1, int(np.ceil((top - lo) / NAMING_STEP - 1e-9)))
+        return cls(model, follow_modes(model, speed_grid(lo, stop, NAMING_STEP)), at)
+
+    @property
+    def labels(self):
+        """The tracked modes' labels."""
+        return self.modes.labels
+
+    def _cell(self, k):
+        cell = self._cells.get(k)
+        if cell is None:
+            s, values = self.modes.speeds, self.modes.eigenvalues
+            ends = values[k:k + 2]
+            apart = np.where(np.eye(ends.shape[1], dtype=bool), np.inf, np.abs(ends[:, :, None] - ends[:, None, :]))
+            if np.max(np.abs(ends[1] - ends[0])) < 0.25 * np.min(apart):
+                cell = self._cells[k] = (s[k:k + 2], ends)
+                return cell
+            sub = np.linspace(s[k], s[k + 1], self.SUBSTEPS + 1)
+            sweep = eigen_sweep(self.model, sub)
+            start = self.modes.eigenvalues[k]
+            first = linear_sum_assignment(np.abs(start[:, None] - sweep.eigenvalues[0][None, :]))[1]
+            order = track(sweep.eigenvalues, sweep.eigenvectors)[:, first]
+            values, _ = reorder(sweep.eigenvalues, sweep.eigenvectors, order)
+            cell = self._cells[k] = (sub, values)
+        return cell
+
+    def guess(self, v):
+        """Each mode's value (m,) at speed ``v`` by interpolation on the fine sub-grid."""
+        s, values = self.modes.speeds, self.modes.eigenvalues
+        if len(s) == 1:
+            return values[0]
+        k = int(np.clip(np.searchsorted(s, v) - 1, 0, len(s) - 2))
+        sub, vals = self._cell(k)
+        j = int(np.clip(np.searchsorted(sub, v) - 1, 0, len(sub) - 2))
+        t = (v - sub[j]) / (sub[j + 1] - sub[j])
+        return vals[j] + t * (vals[j + 1] - vals[j])
+
+    def root(self, v, column):
+        """The eigenvalue (1/s) at ``v`` continuing the mode of ``column``."""
+        roots = self.at(v)
+        return roots[np.argmin(np.abs(roots - self.guess(v)[column]))]
+
+    def column_of(self, v, root):
+        """The column of the mode whose value at ``v`` is nearest ``root``."""
+        return int(np.argmin(np.abs(self.guess(v) - root)))
+
+
+def root_name(tracked, speed, root):
+    """The name of the eigenvalue ``root`` (1/s) at ``speed`` (m/s), from the tracked modes.
+
+    A real root is named by the mode it continues (``"capsize"``, ``"weave 1"``, ``"lean 1"``, ...); a
+    complex pair by the family of its two members' modes (``"weave"``, ``"tyre"``) or, members of
+    different modes, by both (``"capsize + weave 1"``).  A pair that is not the weave's
+    (:func:`~bikemass.analysis.engine.naming.is_weave`) is named ``"wobble"`` when it is a
+    steer-dominated oscillation of at least 3 Hz (:func:`~bikemass.analysis.engine.naming.is_wobble`).
+    """
+    labels = tracked.labels
+    first = tracked.column_of(speed, root)
+    if root.imag == 0:
+        return labels[first]
+    guess = tracked.guess(speed)
+    guess[first] = np.inf
+    second = int(np.argmin(np.abs(guess - np.conj(root))))
+    a, b = labels[first], labels[second]
+    name = family(a) if family(a) == family(b) and a != b else " + ".join(sorted((a, b)))
+    if not is_weave(name) and family(name) != WOBBLE and is_wobble(tracked.model, speed, root):
+        return WOBBLE
+    return name
