@@ -43,6 +43,17 @@ IMAGE_SUFFIXES = (".png", ".pdf", ".svg", ".svgz", ".eps", ".ps", ".jpg", ".jpeg
 """Figure files: named by ``--plot``, never by ``-o``."""
 
 
+LATE_HELP = "late_help"
+"""The attribute of an argparse action that holds the function giving its help (:func:`late_help`)."""
+
+
+def late_help(action, text):
+    """``action``'s help becomes ``text()`` when a help is printed, not when the parser is built
+    (``text`` may load the library, which building the parser for ``bikemass --help`` must not;
+    :meth:`bikemass.cli.main.Parser.format_help` calls it)."""
+    setattr(action, LATE_HELP, text)
+
+
 def add_output(p, formats=TABULAR, default=Format.TABLE.value, what="the data"):
     """``-o/--output``, ``--format`` and ``--quiet``."""
     p.add_argument("-o", "--output", metavar="FILE",
