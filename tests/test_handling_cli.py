@@ -151,15 +151,15 @@ def test_the_signals_read_from_the_code_are_the_built_models(family_models):
         assert [u for _, u in outputs] == [model.output_signal(n).unit for n in model.output_names], m
 
 
-def _listed(capsys, monkeypatch, command):
-    """``{"--input": names, "--output": names}`` as ``command --help`` lists them (``name (unit)``)."""
+def _listed(capsys, monkeypatch, command, options=("--input", "--output")):
+    """``{option: names}`` as ``command --help`` lists them (``name (unit)``) for each of ``options``."""
     monkeypatch.setenv("COLUMNS", "100000")                  # one line per option: names never wrapped
     with pytest.raises(SystemExit):
         main([command, "--help"])
     lines = capsys.readouterr().out.splitlines()
     return {option: set(re.findall(r"([a-z][a-z-]*) \(", next(line for line in lines
                                                                if line.strip().startswith(f"{option} "))))
-            for option in ("--input", "--output")}
+            for option in options}
 
 
 @pytest.mark.parametrize("command", ["tf", "bode"])
@@ -171,6 +171,11 @@ def test_the_help_lists_every_input_and_output_a_model_accepts(capsys, monkeypat
     assert listed["--output"] == {n for model in family_models.values() for n in model.output_names}
     assert {"front-lateral", "lean-angle", "yaw-rate", "frame-twist"} <= listed["--output"]
     assert "lean-torque" in listed["--input"]
+
+
+def test_simulate_help_lists_every_input_a_model_accepts(capsys, monkeypatch, family_models):
+    listed = _listed(capsys, monkeypatch, "simulate", ("--input",))
+    assert listed["--input"] == {n for model in family_models.values() for n in model.input_names}
 
 
 def test_front_lateral_is_the_front_contact(capsys):

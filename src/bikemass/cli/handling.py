@@ -45,9 +45,9 @@ def register(sub):
     sim.add_argument("--initial", action="append", metavar="STATE=VALUE",
                      help="initial value of a state in its unit (rad, rad/s, m), e.g. roll-rate=0.5; "
                           "several comma-separated or the option repeated; others start at 0")
-    sim.add_argument("--input", action="append", metavar="INPUT=KIND:SIZE",
-                     help="steer-torque or roll-torque as step:SIZE (N m from t = 0) or impulse:SIZE (N m s "
-                          "at t = 0), e.g. steer-torque=step:1")
+    dialect.late_help(sim.add_argument("--input", action="append", metavar="INPUT=KIND:SIZE", help="an input"),
+                      lambda: "an input as step:SIZE (N m from t = 0) or impulse:SIZE (N m s at t = 0), e.g. "
+                              f"steer-torque=step:1; the inputs: {signal_help(0)}")
     sim.add_argument("--duration", type=number(0, 1e6, open_low=True, what="a duration in s"), default=5.0,
                      metavar="T", help="end time, s (default 5)")
     sim.add_argument("--step", type=number(0, 1e6, open_low=True, what="a time step in s"), default=0.01,
