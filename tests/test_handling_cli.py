@@ -156,10 +156,12 @@ def _listed(capsys, monkeypatch, command, options=("--input", "--output")):
     monkeypatch.setenv("COLUMNS", "100000")                  # one line per option: names never wrapped
     with pytest.raises(SystemExit):
         main([command, "--help"])
-    lines = capsys.readouterr().out.splitlines()
-    return {option: set(re.findall(r"([a-z][a-z-]*) \(", next(line for line in lines
-                                                               if line.strip().startswith(f"{option} "))))
-            for option in options}
+    text = capsys.readouterr().out
+    blocks = {}
+    for option in options:                                   # the option's lines up to the next option's
+        block = re.search(rf"^  {option} .*?(?=^  -)", text, flags=re.M | re.S).group(0)
+        blocks[option] = set(re.findall(r"([a-z][a-z-]*) \(", block))
+    return blocks
 
 
 @pytest.mark.parametrize("command", ["tf", "bode"])
