@@ -244,3 +244,31 @@ def test_side_view_draws_wheels_for_a_parameter_file_and_colours_by_body():
     forearms = [p for p in ax.patches if p.get_facecolor() == pytest.approx(to_rgba(COLOURS["front_frame"], 0.3))]
     assert len(forearms) == 2 and all(p.get_edgecolor()[:3] == pytest.approx(to_rgba(COLOURS["front_frame"])[:3])
                                       for p in forearms)                 # in the front frame's colour
+
+
+def _decoded(png):
+    from io import BytesIO
+
+    import numpy as np
+    from PIL import Image
+    image = Image.open(BytesIO(png))
+    return image.mode, np.asarray(image.convert("RGBA"))
+
+
+@pytest.mark.parametrize("size, dpi", [((6.4, 4.2), 150), ((7.0, 4.6), 100), ((5.0, 3.3), 97.3)])
+def test_png_pixels_are_matplotlibs_own_and_opaque_figures_carry_no_alpha(size, dpi):
+    """figure_bytes writes the pixels matplotlib's own PNG writer writes (decoded, every channel
+    equal), as RGB when the figure is opaque; a see-through figure keeps its alpha channel."""
+    from io import BytesIO
+
+    from matplotlib.figure import Figure
+
+    from bikemass.plots.figure import figure_bytes
+    for alpha, mode in ((1.0, "RGB"), (0.0, "RGBA")):
+        fig = Figure(figsize=size)
+        fig.patch.set_alpha(alpha)
+        fig.subplots().plot([0, 1, 2], [1, 0, 2], label="$v_w$")
+        theirs = BytesIO()
+        fig.savefig(theirs, format="png", dpi=dpi)
+        ours_mode, ours = _decoded(figure_bytes(fig, "png", dpi))
+        assert ours_mode == mode and (ours == _decoded(theirs.getvalue())[1]).all()

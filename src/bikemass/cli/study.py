@@ -82,9 +82,9 @@ def run_study(args):
     workers = args.jobs or pipeline.WORKERS
     figures = not args.no_figures
     with Progress(pipeline.steps(figures), "study", enabled=not args.quiet) as bar, new_folder(out) as folder:
-        results = pipeline.compute(workers, bar.step)
+        results = pipeline.compute(workers, bar.step, folder / "figures" if figures else None)
         pipeline.write_files(results, folder)
-        pipeline.write_html(results, folder, pipeline.draw(results, folder, workers, bar.step) if figures else ())
+        pipeline.write_html(results, folder, results.figure_paths)
     if not args.quiet:
         print(summary(results, match_counts(results.entries), out))
     return 0

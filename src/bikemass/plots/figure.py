@@ -11,9 +11,10 @@ import threading
 from io import BytesIO
 from pathlib import Path
 
-from matplotlib import rc_context
+import numpy as np
+from matplotlib import figure, rc_context
 from matplotlib.backend_bases import FigureCanvasBase
-from matplotlib import figure
+from PIL import Image
 
 from ..core.errors import InputError, short, wrong_type
 from ..core.output import write_atomic
@@ -30,6 +31,10 @@ RENDERING = threading.Lock()
 """Held while a figure is drawn: ``rc_context`` sets matplotlib's process-wide rcParams for the
 draw and restores them, and matplotlib's mathtext parser is not thread-safe (matplotlib 3.7 fails
 on ``$v$`` drawn in two threads at once), so the web server's callbacks draw one at a time."""
+PNG_COMPRESSION = 1
+"""zlib level of the PNG files written (Pillow's ``compress_level``): an opaque figure is
+written as RGB at level 1, about as small as matplotlib's RGBA at its level 6 and three times
+faster to encode (16 against 48 ms for a 1050 x 690 eigenvalue figure here)."""
 UNWRITABLE = {"pgf"}
 """Formats matplotlib lists but that need outside tools (LaTeX) to write."""
 
@@ -107,8 +112,30 @@ def figure_bytes(fig, fmt="png", dpi=DPI):
                          f"{dpi:g} dpi is {width * height * dpi * dpi:.3g})")
     buffer = BytesIO()
     with RENDERING, rc_context(VECTOR_TEXT):
-        fig.savefig(buffer, format=fmt, dpi=dpi)
-    return buffer.getvalue()
+        fig.savefig(buffer, format="rgba" if fmt == "png" else fmt, dpi=dpi)
+    return _png(buffer.getvalue(), fig, dpi) if fmt == "png" else buffer.getvalue()
+
+
+def _png(rgba, fig, dpi):
+    """PNG of the raw RGBA pixels matplotlib drew of ``fig`` at ``dpi``: RGB where every pixel
+    is opaque (no alpha channel to store), else RGBA; :data:`PNG_COMPRESSION`."""
+    width, height = _canvas_size(len(rgba) // 4, *(inches * dpi for inches in fig.get_size_inches()))
+    pixels = np.frombuffer(rgba, np.uint8).reshape(height, width, 4)
+    opaque = bool((pixels[:, :, 3] == 255).all())
+    image = Image.fromarray(np.ascontiguousarray(pixels[:, :, :3]) if opaque else pixels, "RGB" if opaque else "RGBA")
+    out = BytesIO()
+    image.save(out, format="png", compress_level=PNG_COMPRESSION, dpi=(dpi, dpi))
+    return out.getvalue()
+
+
+def _canvas_size(pixels, width, height):
+    """The whole numbers of pixels (columns, rows) next to ``width`` x ``height`` whose product is
+    ``pixels``: the size of the canvas matplotlib drew (its rounding of inches x dpi)."""
+    for columns in sorted({math.floor(width), math.ceil(width)}):
+        for rows in sorted({math.floor(height), math.ceil(height)}):
+            if columns * rows == pixels:
+                return columns, rows
+    raise ValueError(f"a {pixels}-pixel canvas is not {width:g} x {height:g}")
 
 
 def save_figure(fig: figure.Figure, path: "str | os.PathLike", dpi: float = DPI) -> None:

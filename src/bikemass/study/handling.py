@@ -27,16 +27,18 @@ SHOWN = (3.0, 4.0, 5.0, 6.0, 8.0, 10.0)
 """Speeds of the report's table (m/s)."""
 
 
-def handling_results(inputs):
-    """``{bike: {rider: HandlingResult}}`` of the five rider positions, rigid frame (corrected run)."""
-    out = {}
-    for bike in BICYCLES:
-        for rider in RIDERS[1:]:
-            params = inputs.parameters(CORRECTED, Configuration(bike, rider, "infinite"))
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore", BikemassWarning)       # speeds without gains are nan
-                out.setdefault(bike, {})[rider] = handling(params, SPEEDS)
-    return out
+def handled():
+    """The (bike, rider) pairs of the handling question: the five rider positions on each bicycle."""
+    return [(bike, rider) for bike in BICYCLES for rider in RIDERS[1:]]
+
+
+def handling_result(inputs, bike, rider):
+    """The :class:`~bikemass.analysis.handling.survey.HandlingResult` of ``rider`` on ``bike``,
+    rigid frame (corrected run), over :data:`SPEEDS`."""
+    params = inputs.parameters(CORRECTED, Configuration(bike, rider, "infinite"))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", BikemassWarning)       # speeds without gains are nan
+        return handling(params, SPEEDS)
 
 
 def stable_speeds(outcomes, bike, rider):

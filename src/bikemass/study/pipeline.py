@@ -13,7 +13,7 @@ from .explain import explain
 from .flexible import FlexibleResults, flexible_results, flexible_table, lean_table, quasi_static_speeds
 from .frame_tables import modes_table, stiffness_table
 from .frames import FRAMES, MATERIALS, frame_results
-from .handling import handling_results
+from .handling import handled, handling_result
 from .parallel import executor
 from .records import records
 from .report import render
@@ -46,6 +46,8 @@ class StudyResults:
     """``{bike: {rider: HandlingResult}}``: the rider in the loop (:mod:`~bikemass.study.handling`)."""
     flexible: FlexibleResults = None
     """The frame and fork flexing with their inertia, and the leaning rider (:mod:`~bikemass.study.flexible`)."""
+    figure_paths: tuple = ()
+    """The PNG files :func:`compute` drew into its ``draw_into`` folder (none without one)."""
 
 
 def _preload(inputs):
@@ -73,8 +75,8 @@ def _frames():
     return frame_results(_INPUTS)
 
 
-def _handling():
-    return handling_results(_INPUTS)
+def _handling(bike, rider):
+    return handling_result(_INPUTS, bike, rider)
 
 
 def _flexible():
@@ -89,21 +91,31 @@ def _by_bike(configs):
 
 
 @one_blas_thread()
-def compute(workers=WORKERS, step=lambda label: None):
+def compute(workers=WORKERS, step=lambda label: None, draw_into=None):
     """:class:`StudyResults`; ``step(label)`` is called after each unit of work (:func:`steps`).
-    BLAS runs on one thread here and in the workers (forked inside the limit, they inherit it)."""
+
+    ``draw_into``: a folder to draw the figures into (PNG) while the study computes: each figure
+    goes to the workers as soon as what it shows is computed, behind the computation still
+    waiting, so no process idles between computing and drawing; the paths written are the
+    results' ``figure_paths`` (:func:`draw` draws the same figures afterwards).  BLAS runs on
+    one thread here and in the workers (forked inside the limit, they inherit it)."""
     global _INPUTS
     inputs = Inputs()
     _preload(inputs)
     _INPUTS = inputs
     configs = configurations()
+    drawing = _Drawing(draw_into, step)
     with executor(workers) as pool:
-        frames_job = pool.submit(_frames)
-        handling_job = pool.submit(_handling)
-        flexible_job = pool.submit(_flexible)
+        drawing.pool = pool
+        handling_jobs = {pair: pool.submit(_handling, *pair) for pair in handled()}   # the longest jobs first
         parts = [(spec, pool.submit(_run_part, spec, part)) for spec in (CORRECTED, GEOMETRY)
                  for part in _by_bike(configs)]
+        frames_job = pool.submit(_frames)
+        flexible_job = pool.submit(_flexible)
+        drawing.add(lambda folder: figures.pose_jobs(
+            inputs.bicycle("jamis"), {p: inputs.rider(p) for p in THESIS_POSES}, folder))
         thesis = run(THESIS, configs, inputs, step)
+        drawing.add(lambda folder: figures.critical_jobs(thesis, folder, "_thesis", "thesis run, 0.05 m/s grid"))
         entries = compare(thesis)
         explanations = {e: explain(e, inputs).text() for e in entries if not e.match}
         step("misses explained")
@@ -114,23 +126,61 @@ def compute(workers=WORKERS, step=lambda label: None):
         step("Tables 3-4, 3-9")
         runs = {"thesis": thesis}
         for spec, job in parts:
-            runs.setdefault(spec.name, {}).update(job.result())
+            outcomes = job.result()
+            runs.setdefault(spec.name, {}).update(outcomes)
+            if spec is CORRECTED:
+                drawing.add(lambda folder, o=outcomes: figures.eigenvalue_jobs(o, folder))
             step(f"{spec.name} run")
+        runs = {name: {c: outcomes[c] for c in configs} for name, outcomes in runs.items()}   # study order
+        drawing.add(lambda folder: figures.critical_jobs(runs["corrected"], folder))
         frames = frames_job.result()
         step("frame models")
-        handling = handling_job.result()
+        handling = {}
+        for (bike, rider), job in handling_jobs.items():
+            handling.setdefault(bike, {})[rider] = job.result()
+        drawing.add(lambda folder: figures.handling_jobs(handling, runs["corrected"], folder))
         step("rider in the loop")
         flexible = flexible_job.result()
+        drawing.add(lambda folder: figures.flexible_jobs(flexible, runs["geometry"], folder))
         step("flexible frame and fork")
+        figure_paths = drawing.finish()
     published = {(f, m): inputs.bicycle(f"{f}-thesis").published_stiffness(inputs.material(m))
                  for f in FRAMES for m in MATERIALS}
     input_tables += [stiffness_table(frames, published), modes_table(frames, "jamis"), modes_table(frames, "cargo")]
-    runs = {name: {c: outcomes[c] for c in configs} for name, outcomes in runs.items()}   # study order
     correction_tables = [corrections.inertia_table(thesis, runs["corrected"]),
                          corrections.stiffness_table(thesis, runs["corrected"]),
                          corrections.range_table(thesis, runs["corrected"], runs["geometry"])]
     return StudyResults(runs, entries, explanations, input_tables, correction_tables,
-                        corrections.summary(thesis, runs["corrected"]), dict(inputs.contacts), handling, flexible)
+                        corrections.summary(thesis, runs["corrected"]), dict(inputs.contacts), handling, flexible,
+                        figure_paths)
+
+
+class _Drawing:
+    """The figures :func:`compute` draws while it computes: jobs go to the pool as their inputs
+    are ready (behind the computation already queued); :meth:`finish` waits for them in the
+    order they were given and returns the paths.  With no folder, nothing is drawn."""
+
+    def __init__(self, folder, step):
+        self.folder, self.step, self.pool, self.pending = folder, step, None, []
+        if folder is not None:
+            _load_plotting()                      # before the pool forks: the workers inherit matplotlib
+
+    def add(self, make_jobs):
+        if self.folder is not None:
+            self.pending += [self.pool.submit(figures.run_job, job) for job in make_jobs(self.folder)]
+
+    def finish(self):
+        paths = []
+        for future in self.pending:
+            paths.append(future.result())
+            self.step(paths[-1].name)
+        return tuple(paths)
+
+
+def _load_plotting():
+    """Import the plotting modules now (matplotlib with them), so that workers forked later have them."""
+    # lazy: plots/ loads matplotlib (slower to import than numpy); study --no-figures runs without it
+    from ..plots import critical_speeds, figure, side_view, stability  # noqa: F401
 
 
 def steps(with_figures=True):
