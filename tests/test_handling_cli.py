@@ -5,6 +5,8 @@ Whipple bicycle, and the docstring examples."""
 import doctest
 import importlib
 import json
+import math
+import re
 import struct
 import subprocess
 import sys
@@ -125,6 +127,80 @@ def test_handling_reads_a_gains_file_and_its_csv_reads_back(capsys, tmp_path):
     code, again, _ = run(capsys, "handling", "benchmark", "--gains", written, "--speeds", "5", "--format", "json")
     d = json.loads(again)
     assert code == 0 and d["gains"]["k_phi"] == [12.6611] and d["gain_source"] == ["given"]
+
+
+FAMILY = ("whipple", "rider-lean", "tyre", "flexible", "rider-lean+tyre", "rider-lean+flexible", "tyre+flexible",
+          "rider-lean+tyre+flexible")
+"""Every model of the family (docs/models.md)."""
+
+
+@pytest.fixture(scope="module")
+def family_models():
+    """``{model: LinearModel}``: every model of the family built for the Jamis with the Relaxed rider
+    (the flexible member in steel), as the commands build them."""
+    return {m: bm.Scenario("jamis", "relaxed", "steel" if "flexible" in m else "infinite", model=m).build().model
+            for m in FAMILY}
+
+
+def test_the_signals_read_from_the_code_are_the_built_models(family_models):
+    from bikemass.scenario.scenario import model_signals
+    for m, model in family_models.items():
+        inputs, outputs = model_signals(m)
+        assert tuple(n for n, _ in inputs) == model.input_names, m
+        assert tuple(n for n, _ in outputs) == model.output_names, m
+        assert [u for _, u in outputs] == [model.output_signal(n).unit for n in model.output_names], m
+
+
+def _listed(capsys, monkeypatch, command, options=("--input", "--output")):
+    """``{option: names}`` as ``command --help`` lists them (``name (unit)``) for each of ``options``."""
+    monkeypatch.setenv("COLUMNS", "100000")                  # one line per option: names never wrapped
+    with pytest.raises(SystemExit):
+        main([command, "--help"])
+    text = capsys.readouterr().out
+    blocks = {}
+    for option in options:                                   # the option's lines up to the next option's
+        block = re.search(rf"^  {option} .*?(?=^  -)", text, flags=re.M | re.S).group(0)
+        blocks[option] = set(re.findall(r"([a-z][a-z-]*) \(", block))
+    return blocks
+
+
+@pytest.mark.parametrize("command", ["tf", "bode"])
+def test_the_help_lists_every_input_and_output_a_model_accepts(capsys, monkeypatch, family_models, command):
+    """Every name some model of the family takes as --input or gives as --output is in the help, and
+    nothing else: front-lateral (the Whipple bicycle's front contact) and the members' own."""
+    listed = _listed(capsys, monkeypatch, command)
+    assert listed["--input"] == {n for model in family_models.values() for n in model.input_names}
+    assert listed["--output"] == {n for model in family_models.values() for n in model.output_names}
+    assert {"front-lateral", "lean-angle", "yaw-rate", "frame-twist"} <= listed["--output"]
+    assert "lean-torque" in listed["--input"]
+
+
+def test_simulate_help_lists_every_input_a_model_accepts(capsys, monkeypatch, family_models):
+    listed = _listed(capsys, monkeypatch, "simulate", ("--input",))
+    assert listed["--input"] == {n for model in family_models.values() for n in model.input_names}
+
+
+def test_front_lateral_is_the_front_contact(capsys):
+    """``--output front-lateral`` (listed by --help) is accepted and is the front contact's lateral
+    position ``y + w psi - c cos(lam) delta`` (Meijaard et al. 2007's geometry, linearised): its G(2j)
+    is that combination of the rear contact's, the heading's and the steer angle's."""
+    code, out, err = run(capsys, "tf", "benchmark", "--speed", 5, "--input", "steer-torque", "--output",
+                         "front-lateral", "--format", "json")
+    assert code == 0, err
+    d = json.loads(out)
+    G = d["gain"] * np.prod([2j - complex(*z) for z in d["zeros"]]) / np.prod([2j - complex(*p) for p in d["poles"]])
+    p = bm.parameters("benchmark")
+    y, psi, delta = (bm.frequency_response(p, 5, "steer-torque", o, [2.0]).values[0]
+                     for o in ("lateral", "heading", "steer-angle"))
+    assert G == pytest.approx(y + p.w * psi - p.c * math.cos(p.lam) * delta, rel=1e-9)
+
+
+def test_building_the_parser_loads_no_library():
+    """The late helps (the signal lists read from the models) wait for a command's --help."""
+    code = ("import sys; from bikemass.cli.main import build_parser; build_parser().format_help(); "
+            "print(sorted(m for m in ('numpy', 'scipy', 'matplotlib') if m in sys.modules))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.strip() == "[]"
 
 
 @pytest.mark.parametrize("argv, needle", [

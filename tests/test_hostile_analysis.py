@@ -226,6 +226,29 @@ def test_a_speed_grid_never_goes_past_its_stop(capsys):
     assert len(bm.speeds(0, 30, 0.05)) == 601 and len(bm.speeds(0, 10, 0.1)) == 101
 
 
+@pytest.mark.parametrize("start, stop, step, count", [
+    (0, 10, 6, 2), (0, 10, 10, 2), (2.5, 1000, 997.5, 2), (0, 0.001, 1e-6, 1001),
+    (0, 10, 20, None), (0, 1001, 1, None), (0, 1, 1e-7, None), (-1, 10, 1, None), (5, 5, 1, None),
+    (0, 1000, 0.001, None)])            # the last: 1_000_001 speeds, over the default limit
+def test_the_api_and_the_command_line_take_the_same_speed_grids(capsys, start, stop, step, count):
+    """``bm.speeds(start, stop, step)`` and ``--speeds START:STOP:STEP`` accept the same grids (the
+    limits of core.limits: 0 <= START < STOP <= 1000 m/s, 1e-6 <= STEP <= STOP - START, at most
+    --max-speeds speeds), and a grid accepted has floor((stop - start) / step) + 1 speeds."""
+    import bikemass as bm
+    from bikemass.cli.main import main
+    text = f"{start}:{stop}:{step}"
+    status = main(["eig", "benchmark", "--speeds", text, "--format", "csv", "--quiet"])
+    err = capsys.readouterr().err
+    if count is None:
+        assert status == 2 and "--speeds" in err, err
+        with pytest.raises(InputError, match="START:STOP:STEP|at most 100000 speeds"):
+            bm.speeds(start, stop, step)
+        return
+    grid = bm.speeds(start, stop, step)
+    assert status == 0 and len(grid) == count == math.floor((stop - start) / step + 1e-9) + 1
+    assert grid[0] == start and grid[-1] <= stop
+
+
 def test_the_api_bounds_speed_grids_before_allocating():
     import numpy as np
 

@@ -88,12 +88,44 @@ def test_a_principal_value_that_contradicts_the_others_is_warned_about_and_not_u
     assert read.parameters.w == 1.121
 
 
-def test_rider_lean_sets_are_read_into_their_named_values():
+def test_rider_lean_sets_keep_their_named_values_as_read():
     from bicycleparameters.parameter_dicts import mooreriderlean2012_browser_jason as expected
     read = bm.load_parameter_set(DATA / "to_yaml-MooreRiderLean2012-browserjason.yml")
     assert read.parameterization == "MooreRiderLean2012" and isinstance(read.parameters, bm.RiderLeanParameters)
-    assert read.parameters.to_dict() == {k: expected[k] for k in RIDER_LEAN_NAMES}
+    assert dict(read.values) == {k: expected[k] for k in RIDER_LEAN_NAMES}
     assert read.speed == expected["v"]
+
+
+def test_a_rider_lean_set_read_feeds_the_model_as_bicycleparameters_own_model():
+    """The file read is the rider-lean model's one parameter class (``bm.RiderLeanParameters``); its
+    model has the non-zero eigenvalues of BicycleParameters' MooreRiderLean2012Model of the same file
+    (Moore's own derivation) at 1..10 m/s, to 1e-9 relative."""
+    from bicycleparameters.models import MooreRiderLean2012Model
+    from bicycleparameters.parameter_sets import MooreRiderLean2012ParameterSet
+    from bikemass.models.family import build
+    path = DATA / "to_yaml-MooreRiderLean2012-browserjason.yml"
+    model = build("rider-lean", bm.load_parameter_set(path).parameters)
+    peer = MooreRiderLean2012Model(MooreRiderLean2012ParameterSet._from_yaml(str(path)))
+    for v in range(1, 11):
+        A, _ = peer.form_state_space_matrices(v=float(v))
+        theirs = np.linalg.eigvals(A)
+        theirs = theirs[np.abs(theirs) > 1e-9 * np.max(np.abs(theirs))]       # 6 of 12 are structurally zero
+        ours = np.linalg.eigvals(model.dynamic_matrix(float(v)))
+        assert len(ours) == len(theirs) == 6
+        for z in theirs:
+            assert np.min(np.abs(ours - z)) <= 1e-9 * abs(z), (v, z, ours)
+
+
+@pytest.mark.parametrize("name, value, message", [
+    ("mg", 0, "values.mg: a positive number"), ("rf", -0.3, "values.rf: a positive number"),
+    ("rf", 2.0, "values: d1, d2, d3, rf, rr of a bicycle whose front wheel reaches the ground")])
+def test_a_rider_lean_set_the_model_cannot_take_is_refused_when_read(tmp_path, name, value, message):
+    document = yaml.safe_load((DATA / "to_yaml-MooreRiderLean2012-browserjason.yml").read_text())
+    document["values"][name] = value
+    f = tmp_path / "set.yml"
+    f.write_text(yaml.safe_dump(document))
+    with pytest.raises(InputError, match=message):
+        bm.load_parameter_set(f)
 
 
 def test_a_rider_lean_set_is_not_taken_for_a_whipple_bicycle():

@@ -184,6 +184,29 @@ def test_help_is_for_newcomers(capsys):
     assert "report.md" in text and "--no-figures" in text and "-o DIR, --output DIR" in text
 
 
+def test_every_number_the_help_states_is_true(study, capsys, monkeypatch, tmp_path):
+    """Each number in ``study --help`` against what the study did: the configurations and poses of
+    its records, the figures it draws (its figure jobs), the thesis's 0.05 m/s grid and the match
+    tolerance of one grid step, the 2 cores of the reference machine (docs/study.md), the exit
+    status 2 of --strict, the thesis's year; nothing else (no estimate such as "~85 figures" or a
+    running time)."""
+    from bikemass.study import pipeline
+    from bikemass.study.runs import Inputs
+    monkeypatch.setenv("COLUMNS", "200")
+    with pytest.raises(SystemExit):
+        main(["study", "--help"])
+    text = capsys.readouterr().out
+    text = re.sub(r"\b\d-\d+\b", "", text)                  # the thesis's table names: Table 3-4, 4-2..4-7
+    text = re.sub(r"^\s+\d\. ", "", text, flags=re.M)         # the steps' list numbers
+    stated = sorted(float(x) for x in re.findall(r"(?<![\w.-])\d+(?:\.\d+)?(?![\w-])", text))
+    records = load(study, "stability_ranges.json")
+    configurations = {(r["bike"], r["rider"], r["stiffness"]) for r in records}
+    poses = {r["rider"] for r in records} - {"none", "included"}
+    figures = pipeline.figure_jobs(study[2], Inputs(), tmp_path / "figures")
+    assert stated == sorted([2015, len(configurations), len(poses), 0.05, 0.05, len(figures), 2, 2])
+    assert (len(configurations), len(poses)) == (73, 5)
+
+
 @pytest.mark.parametrize("argv, key", [(["--jobs", "0"], "--jobs"), (["-o", __file__], "-o")])
 def test_bad_input_one_line_exit_2(capsys, argv, key):
     assert main(["study", *argv]) == 2

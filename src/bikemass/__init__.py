@@ -53,7 +53,7 @@ _API = {
     "load_parameter_text": "bicycle.parameter_text", "MeasuredParameters": "bicycle.parameter_text",
     "ParameterFileWarning": "bicycle.parameter_text",
     "load_parameter_set": "bicycle.parameter_sets", "ParameterSetFile": "bicycle.parameter_sets",
-    "RiderLeanParameters": "bicycle.parameter_sets",
+    "RiderLeanParameters": "models.lean",
 }
 """Public name -> the module (under ``bikemass``) that defines it."""
 

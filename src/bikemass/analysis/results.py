@@ -22,7 +22,7 @@ from ..core.errors import InputTypeError
 from ..scenario.catalog import stiffness_matrix
 from ..core.errors import InputError
 from ..core.limits import MAX_SPEEDS
-from .engine.speeds import speed_count, speed_grid, speed_values
+from .engine.speeds import speed_range, speed_values
 from ..models.family import build as build_member
 from ..models.lean import RiderLeanParameters
 from ..models.linear import LinearModel
@@ -103,10 +103,10 @@ def speeds(start: float = 0.0, stop: float = 30.0, step: float = 0.05, max_speed
     Parameters
     ----------
     start, stop : float
-        First speed and last speed at most (m/s), ``0 <= start < stop``; ``stop`` is on the grid
-        when ``step`` divides the span, and never passed.
+        First speed and last speed at most (m/s), ``0 <= start < stop <= 1000``; ``stop`` is on
+        the grid when ``step`` divides the span, and never passed.
     step : float
-        Spacing (m/s), > 0.
+        Spacing (m/s), at least 1e-6 and at most ``stop - start``.
     max_speeds : int
         Most speeds (default 100000, as the command line's ``--max-speeds``).
 
@@ -118,7 +118,8 @@ def speeds(start: float = 0.0, stop: float = 30.0, step: float = 0.05, max_speed
     Raises
     ------
     InputError
-        Unless ``0 <= start < stop``, ``step > 0`` and at most ``max_speeds`` speeds.
+        Unless ``0 <= start < stop <= 1000`` m/s, ``1e-6 <= step <= stop - start`` m/s and at most
+        ``max_speeds`` speeds (:mod:`bikemass.core.limits`; the command line's ``--speeds`` alike).
 
     See Also
     --------
@@ -132,13 +133,7 @@ def speeds(start: float = 0.0, stop: float = 30.0, step: float = 0.05, max_speed
     >>> len(bm.speeds())                              # the thesis's 0..30 m/s in 0.05 m/s
     601
     """
-    if not all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in (start, stop, step)):
-        raise InputError("speeds", f"{start!r}:{stop!r}:{step!r}", "start, stop and step as numbers (m/s)")
-    if not (0 <= start < stop < float("inf") and step > 0 and (stop - start) / step < max_speeds
-            and speed_count(start, stop, step) <= max_speeds):
-        raise InputError("speeds", f"{start}:{stop}:{step}", f"speeds need 0 <= start < stop, step > 0 and at most "
-                         f"{max_speeds} points (m/s), got {start}:{stop}:{step}")
-    return speed_grid(start, stop, step)
+    return speed_range(start, stop, step, max_speeds)
 
 
 def linear_model(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Built | LinearModel",

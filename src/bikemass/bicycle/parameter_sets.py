@@ -16,8 +16,10 @@ parameterizations are read:
   ``k?aa``, ``k?yy``, ``k?bb`` with the angle ``alpha?`` of its ``a`` axis; converted to the
   benchmark set (:func:`principal_to_benchmark`);
 * ``MooreRiderLean2012`` (Moore 2012): the Whipple model with a rider's upper body ``G``
-  leaning on the rear frame; kept as its named values (:class:`RiderLeanParameters`), for the
-  rider-lean model to consume.
+  leaning on the rear frame; converted exactly to the rider-lean model's
+  :class:`~bikemass.models.lean.RiderLeanParameters`
+  (:func:`~bikemass.models.moore2012.from_moore_values`), its named values kept as read in
+  :attr:`ParameterSetFile.values`.
 
 Each may hold the speed ``v`` (m/s), which is not a bicycle parameter: it is accepted and
 kept as :attr:`ParameterSetFile.speed`.  A bare angle (``lam``, ``alpha?``) is radians, as
@@ -25,7 +27,7 @@ these formats define it; any value may carry a unit.  Every problem is one
 :class:`~bikemass.core.errors.InputError` naming the file and the key.
 """
 
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 from types import MappingProxyType
 
 import warnings
@@ -38,11 +40,12 @@ from ..mass.inertia import MassProperties, combine
 from .parameter_text import (AXISYMMETRIC, LATERAL, SPLIT_BODIES, ParameterFileWarning, ParameterText,
                              printed_resolution, body_names, measured_parameters)
 from ..models.parameters import NAMES, SPEED_KEY, BenchmarkParameters, check_units, dimension, sign_rule
+from ..models.moore2012 import NAMES as MOORE_NAMES, PARAMETERIZATION as MOORE_PARAMETERIZATION, from_moore_values
 from ..models.plausibility import check_parameter_file
 from ..core.errors import wrong_type
 from .parameter_text import load_parameter_text
 
-BENCHMARK, PRINCIPAL, RIDER_LEAN = "benchmark", "principal", "MooreRiderLean2012"
+BENCHMARK, PRINCIPAL, RIDER_LEAN = "benchmark", "principal", MOORE_PARAMETERIZATION
 """The parameterizations read (bikemass's names for them)."""
 PARAMETERIZATIONS = {"benchmark": BENCHMARK, "Meijaard2007": BENCHMARK, "principal": PRINCIPAL,
                      "Moore2019": PRINCIPAL, "MooreRiderLean2012": RIDER_LEAN}
@@ -77,84 +80,8 @@ CHECK_RELATIVE = 1e-4
 plus half a unit in its last printed digit (the files print 5 significant digits)."""
 
 
-@dataclass(frozen=True)
-class RiderLeanParameters:
-    """The parameters of the Whipple model with a leaning rider (Moore 2012; BicycleParameters'
-    ``MooreRiderLean2012``), SI, as named there.  Bodies: C rear frame with the rider's legs,
-    D rear wheel, E front frame, F front wheel, G the rider's upper body, leaning about an
-    axis of the rear frame.  ``i?11 i?22 i?33 i?31`` are the moments and the product of
-    inertia of body ``?`` (kg m^2), ``m?`` its mass (kg); ``d1``-``d4``, ``l1``-``l6`` the
-    lengths locating the joints and mass centres (m); ``rf``, ``rr`` the wheel radii (m);
-    ``g`` gravity (m/s^2); ``k9`` (N m/rad) and ``c9`` (N m s/rad) the lean joint's stiffness
-    and damping.
-
-    See Also
-    --------
-    bikemass.load_parameter_set : Reads them from a ``MooreRiderLean2012`` set.
-    bikemass.models.moore2012 : The conversions between these values and bikemass's leaning rider.
-
-    Examples
-    --------
-    The Jamis with the Relaxed rider split at the hips, written as Moore's values and read back:
-
-    >>> import json, os, tempfile
-    >>> import bikemass as bm
-    >>> from bikemass.models.moore2012 import to_moore_values
-    >>> from bikemass.rider.lean_split import rider_lean_parameters
-    >>> bike = bm.load_bicycle("jamis")
-    >>> lean = rider_lean_parameters(bike, bm.seated_rider(bike, "relaxed"))
-    >>> path = os.path.join(tempfile.mkdtemp(), "jamis-lean.yml")
-    >>> document = {"parameterization": "MooreRiderLean2012", "values": to_moore_values(lean, speed=5.0)}
-    >>> _ = open(path, "w").write(json.dumps(document))
-    >>> moore = bm.load_parameter_set(path).parameters
-    >>> print(type(moore).__name__, f"upper body {moore.mg:.2f} kg")
-    RiderLeanParameters upper body 56.35 kg
-    """
-
-    c9: float
-    d1: float
-    d2: float
-    d3: float
-    d4: float
-    g: float
-    ic11: float
-    ic22: float
-    ic31: float
-    ic33: float
-    id11: float
-    id22: float
-    ie11: float
-    ie22: float
-    ie31: float
-    ie33: float
-    if11: float
-    if22: float
-    ig11: float
-    ig22: float
-    ig31: float
-    ig33: float
-    k9: float
-    l1: float
-    l2: float
-    l3: float
-    l4: float
-    l5: float
-    l6: float
-    mc: float
-    md: float
-    me: float
-    mf: float
-    mg: float
-    rf: float
-    rr: float
-
-    def to_dict(self):
-        """Plain ``{name: float}``."""
-        return {f.name: float(getattr(self, f.name)) for f in fields(self)}
-
-
-RIDER_LEAN_NAMES = tuple(f.name for f in fields(RiderLeanParameters))
-"""The 36 rider-lean names."""
+RIDER_LEAN_NAMES = tuple(n for n in MOORE_NAMES if n != SPEED_KEY)
+"""The 36 rider-lean names (Moore's set without the speed ``v``)."""
 
 
 def _rider_lean_rule(name):
@@ -168,8 +95,8 @@ def _rider_lean_rule(name):
     if name.startswith("i"):
         return "inertia", False, not name.endswith("31")
     if name.startswith("m"):
-        return "mass", False, True
-    return "length", False, name in ("rf", "rr")
+        return "mass", True, False
+    return "length", name in ("rf", "rr"), False
 
 
 def _principal_rule(name):
@@ -192,7 +119,8 @@ class ParameterSetFile:
     parameterization : str
         ``"benchmark"``, ``"principal"`` or ``"MooreRiderLean2012"``.
     parameters : BenchmarkParameters or RiderLeanParameters
-        The benchmark set (a principal set converted), or the rider-lean values.
+        The benchmark set (a principal set converted), or the leaning rider's parameters (a
+        rider-lean set converted).
     speed : float or None
         The file's ``v`` (m/s): the speed the set was made for; not a bicycle parameter.
     rider_included : bool
@@ -290,7 +218,7 @@ def read_parameter_set(node):
     else:
         read = _numbers(values, RIDER_LEAN_NAMES, (), _rider_lean_rule,
                         exclude=("name", "description", "source") if values is node else ())
-        parameters, notes = RiderLeanParameters(**read), ()
+        parameters, notes = from_moore_values(read, str(values.source)), ()
     return ParameterSetFile(kind, parameters, speed, bool(rider), label, description, tuple(notes),
                             MappingProxyType(dict(read)), str(node.source))
 

@@ -28,7 +28,7 @@ from pathlib import Path
 from ..core.choices import RIGID, Combine, Format, Method
 from ..core.errors import InputError
 from .figure_options import add_figure_options, figure_options, write_figure
-from ..core.limits import MAX_SPEED, MAX_SPEEDS, MIN_SPEED_STEP
+from ..core.limits import MAX_SPEEDS
 from ..models.registry import BASE, parse_model
 
 TABULAR = (Format.TABLE.value, Format.CSV.value, Format.JSON.value, Format.YAML.value)
@@ -41,6 +41,17 @@ DEFAULT_SPEEDS = "0:30:0.05"
 
 IMAGE_SUFFIXES = (".png", ".pdf", ".svg", ".svgz", ".eps", ".ps", ".jpg", ".jpeg", ".tif", ".tiff", ".webp")
 """Figure files: named by ``--plot``, never by ``-o``."""
+
+
+LATE_HELP = "late_help"
+"""The attribute of an argparse action that holds the function giving its help (:func:`late_help`)."""
+
+
+def late_help(action, text):
+    """``action``'s help becomes ``text()`` when a help is printed, not when the parser is built
+    (``text`` may load the library, which building the parser for ``bikemass --help`` must not;
+    :meth:`bikemass.cli.main.Parser.format_help` calls it)."""
+    setattr(action, LATE_HELP, text)
 
 
 def add_output(p, formats=TABULAR, default=Format.TABLE.value, what="the data"):
@@ -152,24 +163,16 @@ def add_speeds(p):
 
 
 def parse_speeds(text, max_speeds=None):
-    """``"start:stop:step"`` -> speed grid (m/s); InputError if malformed or over ``max_speeds``."""
+    """``"start:stop:step"`` -> speed grid (m/s); InputError if malformed, out of the limits or over
+    ``max_speeds`` (:func:`bikemass.analysis.engine.speeds.speed_range`)."""
     # lazy: the library loads numpy; bikemass --help must not
-    from ..analysis.engine.speeds import speed_count, speed_grid
+    from ..analysis.engine.speeds import speed_range
 
-    limit = max_speeds or MAX_SPEEDS
-    expected = (f"START:STOP:STEP in m/s with 0 <= START < STOP <= {MAX_SPEED:g}, "
-                f"{MIN_SPEED_STEP:g} <= STEP <= STOP - START")
     try:
         start, stop, step = (float(x) for x in text.split(":"))
     except ValueError:
-        raise InputError("--speeds", text, expected) from None
-    if not (0 <= start < stop <= MAX_SPEED and MIN_SPEED_STEP <= step <= stop - start):
-        raise InputError("--speeds", text, expected)
-    count = speed_count(start, stop, step)
-    if count > limit:
-        raise InputError("--speeds", text, f"at most {limit} speeds, got {count} "
-                                                      "(raise with --max-speeds)")
-    return speed_grid(start, stop, step)
+        start = stop = step = None                          # speed_range names what is expected
+    return speed_range(start, stop, step, max_speeds or MAX_SPEEDS, "--speeds", text, "--max-speeds")
 
 
 def check_output(args):

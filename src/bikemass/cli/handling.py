@@ -1,38 +1,35 @@
 """``bikemass tf``, ``bode``, ``simulate``, ``mode-shapes`` and ``handling``: inputs and outputs of
 the bicycle, and the Hess-Moore-Hubbard rider in the loop (docs/handling.md)."""
 
-from . import dialect
-from .sizes import every_size
 import math
 
-INPUTS = ("steer-torque", "roll-torque")
-OUTPUTS = ("roll-angle", "steer-angle", "roll-rate", "steer-rate", "heading", "lateral", "front-lateral")
+from ..core.choices import Format
+from ..models.registry import BASE, MEMBERS
+from . import dialect
+from .bicycle import allow_off_contact_option
+from .options import number
+from .sizes import add_size_option, every_size
+
 DEFAULT_FREQUENCIES = "0.1:100:1000"
+SPEED = number(0, 1000, what="a forward speed in m/s")
+"""``--speed``: one forward speed (m/s)."""
 
 
 def register(sub):
-    # lazy: the library loads numpy; bikemass --help must not
-    from .options import number
-
-    speed = number(0, 1000, what="a forward speed in m/s")
-    tf = sub.add_parser(
-        "tf", help="transfer function (zeros, poles, gain) from an input to an output at one speed",
+    tf = _command(
+        sub, "tf", help="transfer function (zeros, poles, gain) from an input to an output at one speed",
         description="The transfer function G(s) = gain * prod(s - z) / prod(s - p) of the linear bicycle "
                     "from steer or roll torque to roll, steer, their rates, the heading or the lateral "
                     "position (rear contact; front-lateral: front contact), at one speed.")
-    _bicycle(tf)
-    tf.add_argument("--speed", type=speed, required=True, metavar="V", help="forward speed, m/s")
     _input_output(tf)
     _data(tf, "the zeros, poles and gain")
     tf.set_defaults(run=every_size(run_tf))
 
-    bode = sub.add_parser(
-        "bode", help="frequency response (magnitude in dB, phase in degrees) and the Bode plot",
+    bode = _command(
+        sub, "bode", help="frequency response (magnitude in dB, phase in degrees) and the Bode plot",
         description="The frequency response G(jw) = C (jwI - A)^-1 B from an input to an output at one "
                     "speed: magnitude (dB) and phase (degrees, unwrapped) at N frequencies spaced "
                     "logarithmically from START to STOP rad/s.")
-    _bicycle(bode)
-    bode.add_argument("--speed", type=speed, required=True, metavar="V", help="forward speed, m/s")
     _input_output(bode)
     bode.add_argument("--frequencies", metavar="START:STOP:N", default=DEFAULT_FREQUENCIES,
                       help=f"N angular frequencies from START to STOP rad/s, logarithmic (default {DEFAULT_FREQUENCIES})")
@@ -40,19 +37,17 @@ def register(sub):
     dialect.add_plot(bode, "the Bode plot")
     bode.set_defaults(run=every_size(run_bode))
 
-    sim = sub.add_parser(
-        "simulate", help="time response from initial conditions, steps and impulses (exact, matrix exponential)",
+    sim = _command(
+        sub, "simulate", help="time response from initial conditions, steps and impulses (exact, matrix exponential)",
         description="The states of the linear bicycle (roll, steer, their rates, heading, lateral position "
                     "of the rear contact) at 0, DT, 2 DT, ..., T: from initial conditions and steps or impulses "
                     "of the inputs, exact at the samples (the matrix exponential).")
-    _bicycle(sim)
-    sim.add_argument("--speed", type=speed, required=True, metavar="V", help="forward speed, m/s")
     sim.add_argument("--initial", action="append", metavar="STATE=VALUE",
                      help="initial value of a state in its unit (rad, rad/s, m), e.g. roll-rate=0.5; "
                           "several comma-separated or the option repeated; others start at 0")
-    sim.add_argument("--input", action="append", metavar="INPUT=KIND:SIZE",
-                     help="steer-torque or roll-torque as step:SIZE (N m from t = 0) or impulse:SIZE (N m s "
-                          "at t = 0), e.g. steer-torque=step:1")
+    dialect.late_help(sim.add_argument("--input", action="append", metavar="INPUT=KIND:SIZE", help="an input"),
+                      lambda: "an input as step:SIZE (N m from t = 0) or impulse:SIZE (N m s at t = 0), e.g. "
+                              f"steer-torque=step:1; the inputs: {signal_help(0)}")
     sim.add_argument("--duration", type=number(0, 1e6, open_low=True, what="a duration in s"), default=5.0,
                      metavar="T", help="end time, s (default 5)")
     sim.add_argument("--step", type=number(0, 1e6, open_low=True, what="a time step in s"), default=0.01,
@@ -61,23 +56,21 @@ def register(sub):
     dialect.add_plot(sim, "every state against time")
     sim.set_defaults(run=every_size(run_simulate))
 
-    shapes = sub.add_parser(
-        "mode-shapes", help="each mode's eigenvector as amplitude and phase of roll, steer, heading, lateral",
+    shapes = _command(
+        sub, "mode-shapes", help="each mode's eigenvector as amplitude and phase of roll, steer, heading, lateral",
         description="The modes of the linear bicycle at one speed (weave, capsize, caster), each eigenvector "
                     "scaled so its largest mechanical coordinate is 1 at phase 0: the amplitude and phase of "
                     "roll, steer, heading and lateral position; --plot draws them as phasors.")
-    _bicycle(shapes)
-    shapes.add_argument("--speed", type=speed, required=True, metavar="V", help="forward speed, m/s")
     dialect.add_output(shapes, what="the mode shapes")
     dialect.add_plot(shapes, "the mode shapes as phasors")
     shapes.set_defaults(run=every_size(run_mode_shapes))
 
-    hand = sub.add_parser(
-        "handling", help="the Hess-Moore-Hubbard rider in the loop: gains, closed-loop stability, HQM",
+    hand = _command(
+        sub, "handling", one_speed=False,
+        help="the Hess-Moore-Hubbard rider in the loop: gains, closed-loop stability, HQM",
         description="The rider of Hess, Moore & Hubbard (2012) on the bicycle at each speed: the five "
                     "loop gains by the published procedure (or from --gains), the closed loop's stability "
                     "and the peak of the handling quality metric (Level 1 below 5, Level 3 above 8).")
-    _bicycle(hand)
     hand.add_argument("--speeds", metavar="V1,V2,...",
                       help="forward speeds in m/s, comma-separated (an item START:STOP:STEP is a grid); "
                            "default: the speeds of the --gains file")
@@ -91,11 +84,11 @@ def register(sub):
     hand.set_defaults(run=every_size(run_handling))
 
 
-def _bicycle(p):
-    # lazy: the library loads numpy; bikemass --help must not
-    from .bicycle import allow_off_contact_option
-    # lazy: the library loads numpy; bikemass --help must not
-    from .sizes import add_size_option
+def _command(sub, name, one_speed=True, **texts):
+    """The sub-command ``name`` (``texts``: its ``help`` and ``description``) with the options every
+    handling command shares: BIKE, ``--rider``, ``--allow-off-contact``, ``--combine``,
+    ``--stiffness``, ``--model``, ``--tyres``, ``--bike-size`` and (``one_speed``) ``--speed``."""
+    p = sub.add_parser(name, **texts)
     dialect.add_bike(p)
     dialect.add_rider(p)
     allow_off_contact_option(p)
@@ -103,21 +96,40 @@ def _bicycle(p):
     dialect.add_stiffness(p)
     dialect.add_model(p)
     add_size_option(p, "--bike-size")
+    if one_speed:
+        p.add_argument("--speed", type=SPEED, required=True, metavar="V", help="forward speed, m/s")
+    return p
 
 
 def _input_output(p):
-    p.add_argument("--input", required=True, metavar="|".join(INPUTS),
-                   help="the input (N m): steer-torque or roll-torque (--model rider-lean adds lean-torque, "
-                        "the rider's torque at the hips)")
-    p.add_argument("--output", dest="response", required=True, metavar="|".join(OUTPUTS[:6]),
-                   help="the output: roll-angle, steer-angle (rad), roll-rate, steer-rate (rad/s), heading "
-                        "(rad), lateral (rear contact, m) or front-lateral (front contact, m)")
+    """``--input`` and ``--output`` (the signals), their help listing every name a model of the family
+    takes (:func:`signal_help`)."""
+    dialect.late_help(p.add_argument("--input", required=True, metavar="INPUT", help="the input"),
+                      lambda: "the input: " + signal_help(0))
+    dialect.late_help(p.add_argument("--output", dest="response", required=True, metavar="OUTPUT",
+                                     help="the output"),
+                      lambda: "the output: " + signal_help(1))
+
+
+def signal_help(which):
+    """The inputs (``which`` 0) or the outputs (1) of the family's models, named with their units: the
+    Whipple bicycle's (marked where no member has one), then what each member adds (a combination
+    takes what its members add) (:func:`~bikemass.scenario.scenario.model_signals`)."""
+    # lazy: the model family loads numpy; bikemass --help must not
+    from ..scenario.scenario import model_signals
+
+    base = model_signals(BASE)[which]
+    members = {m: model_signals(m)[which] for m in MEMBERS}
+    only = {s for s in base if not any(s in signals for signals in members.values())}
+    text = ", ".join(f"{name} ({unit}{f'; --model {BASE} only' if (name, unit) in only else ''})"
+                     for name, unit in base)
+    added = [f"{m} adds {', '.join(f'{name} ({unit})' for name, unit in signals if (name, unit) not in base)}"
+             for m, signals in members.items() if set(signals) - set(base)]
+    return text + (f"; with --model, {'; '.join(added)}" if added else "")
 
 
 def _data(p, what):
     """``-o FILE`` (here only the short form: ``--output`` names the output signal), ``--format``, ``--quiet``."""
-    # lazy: the library loads numpy; bikemass --help must not
-    from ..core.choices import Format
     p.add_argument("-o", dest="output", metavar="FILE",
                    help=f"write {what} to FILE instead of stdout (format from --format, else the suffix)")
     p.add_argument("--format", choices=dialect.TABULAR, default=None,
@@ -327,7 +339,6 @@ def run_simulate(args):
         if fmt == "csv":
             return dialect.csv_text(headers, rows)
         # lazy: the library loads numpy; bikemass --help must not
-        # lazy: the library loads numpy; bikemass --help must not
         from ..core.output import table
         return table(headers, rows, floatfmt="{:.6g}")
     dialect.emit(args, render)
@@ -354,7 +365,6 @@ def run_mode_shapes(args):
         headers = ["mode", "name", "real (1/s)", "imaginary (1/s)", "coordinate", "amplitude", "phase (deg)"]
         if fmt == "csv":
             return dialect.csv_text(headers, rows)
-        # lazy: the library loads numpy; bikemass --help must not
         # lazy: the library loads numpy; bikemass --help must not
         from ..core.output import table
         return (f"{_title(args)} at {shapes.speed:g} m/s: amplitudes per unit of each mode's largest "

@@ -9,7 +9,7 @@ import warnings
 from .. import __version__
 from ..core.errors import BikemassWarning, InputError, one_line
 from ..core.stopping import Terminated, stop_on_signals
-from .dialect import check_output
+from .dialect import LATE_HELP, check_output
 from .options import check_outputs
 
 COMMAND_MODULES = (
@@ -47,10 +47,15 @@ class Parser(argparse.ArgumentParser):
         self.exit(2, f"{self.prog}: error: {one_line(message, 600)} (see {self.prog} --help)\n")
 
     def format_help(self):
-        """The help; a description given as a function (one listing shipped files, say) is called
-        only now, so building the parser reads no data and ``--version`` never depends on it."""
+        """The help; a description given as a function (one listing shipped files, say) and an
+        option's late help (:func:`bikemass.cli.dialect.late_help`) are called only now, so building
+        the parser reads no data, loads no library and ``--version`` never depends on them."""
         if callable(self.description):
             self.description = self.description()
+        for action in self._actions:
+            text = getattr(action, LATE_HELP, None)
+            if text is not None:
+                action.help = text()
         return super().format_help()
 
 

@@ -4,28 +4,54 @@ import argparse
 from pathlib import Path
 
 from ..core.progress import Progress
+from .dialect import late_help
 from .options import jobs
 
-DESCRIPTION = """\
+def _description():
+    """``study --help``'s description, its numbers counted from the study itself (read only when the
+    help is printed)."""
+    # lazy: the study loads numpy; bikemass --help must not
+    from ..analysis.engine.speeds import DEFAULT_SPEEDS
+    # lazy: the study loads numpy; bikemass --help must not
+    from ..study.configurations import BICYCLES, RIDERS, STIFFNESSES, configurations
+    # lazy: the study loads numpy; bikemass --help must not
+    from ..study.stability_tables import TOLERANCE
+
+    grid = f"{DEFAULT_SPEEDS[2]:g} m/s grid"
+    return f"""\
 Reproduce Williams (2015) from the shipped data and compare every number with the thesis.
 
 What it does, in order:
   1. riders (Table 3-4) and bicycles (Table 3-9) from their geometry;
   2. rear-frame beam models: stiffness S (Table 3-12) and natural frequencies (Tables 5-4, 5-5);
-  3. the stability study, 73 configurations (benchmark; Jamis, Cargo, loaded Cargo x no rider
-     and five poses x rigid, steel, titanium, aluminium frame), run three ways:
+  3. the stability study, {len(configurations())} configurations (benchmark; {", ".join(BICYCLES)}
+     x no rider and {len(RIDERS) - 1} poses x rigid, {", ".join(STIFFNESSES[1:])} frame), run three ways:
        thesis     as the thesis did it (published inputs, inertias added, published S,
-                  0.05 m/s grid), every entry of Tables 4-2..4-7 and 5-1..5-3 compared
-                  (match: within 0.05 m/s) and every miss explained;
+                  {grid}), every entry of Tables 4-2..4-7 and 5-1..5-3 compared
+                  (match: within {TOLERANCE:g} m/s) and every miss explained;
        corrected  the same inputs with the physics fixed (parallel-axis theorem, condensed S
                   from the beam model, exact critical speeds);
        geometry   everything from geometry.
 It writes into -o/--out DIR: report.html (start there: findings, figures, tables in one file that
 opens offline), report.md (the same text for diffs), stability_ranges.json (thesis run),
 stability_ranges_corrected.json, stability_ranges_geometry.json, one CSV per table and,
-unless --no-figures, PNG figures in figures/.  A summary of the match counts is printed.
-Takes a few seconds without figures, under a minute with them (2 cores).
+unless --no-figures, PNG figures in figures/ (most of the time goes to them).  A summary of the
+match counts is printed.
 """
+
+
+def _figures_help():
+    # lazy: the study loads numpy; bikemass --help must not
+    from ..study.figures import figure_count
+    return f"skip the {figure_count()} PNG figures (the slow part)"
+
+
+def _jobs_help():
+    # lazy: the study loads numpy; bikemass --help must not
+    from ..study.pipeline import REFERENCE_CORES
+    return (f"worker processes (default: up to {REFERENCE_CORES}, the cores of the reference machine; "
+            "capped at this machine's CPU count)")
+
 
 EPILOG = """\
 examples:
@@ -36,16 +62,13 @@ examples:
 
 def register(sub):
     p = sub.add_parser("study", help="reproduce the thesis end to end and write a report (the main job)",
-                       description=DESCRIPTION, epilog=EPILOG,
+                       description=_description, epilog=EPILOG,
                        formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("-o", "--output", "--out", metavar="DIR", default="study",
                    help="output folder (default: study/; created if missing, files replaced)")
     p.add_argument("--quiet", action="store_true", help="no progress bar and no summary on stdout")
-    p.add_argument("--no-figures", action="store_true",
-                   help="skip the ~85 PNG figures (the slow part)")
-    p.add_argument("--jobs", type=jobs, default=None, metavar="N",
-                   help="worker processes (default: up to 2, the cores of the reference machine; "
-                        "capped at this machine's CPU count)")
+    late_help(p.add_argument("--no-figures", action="store_true", help="skip the figures"), _figures_help)
+    late_help(p.add_argument("--jobs", type=jobs, default=None, metavar="N", help="worker processes"), _jobs_help)
     p.set_defaults(run=run_study, folder_outputs=("output",))
 
 

@@ -88,8 +88,47 @@ class LeanJoint:
 
 @dataclass(frozen=True)
 class RiderLeanParameters:
-    """Parameters of the ``rider-lean`` model: ``bicycle`` is the benchmark set whose rear frame B holds
-    the bicycle's rear frame with the rider's legs and pelvis (not the upper body)."""
+    """The parameters of the Whipple bicycle with a leaning rider (the ``rider-lean`` model; Moore 2012).
+
+    One value whether it comes from a bicycle and a seated rider split at the hips
+    (:func:`~bikemass.rider.lean_split.rider_lean_parameters`) or from BicycleParameters'
+    ``MooreRiderLean2012`` parameter set (:func:`bikemass.load_parameter_set`; Moore's 36 named
+    values converted exactly, :func:`~bikemass.models.moore2012.from_moore_values`).  SI, benchmark
+    frame.
+
+    Attributes
+    ----------
+    bicycle : BenchmarkParameters
+        The benchmark set whose rear frame B holds the bicycle's rear frame with the rider's legs and
+        pelvis (not the upper body).
+    upper : UpperBody
+        The leaning upper body: mass (kg), centre of mass (m), inertia (kg m^2), the hip axis's z (m).
+    joint : LeanJoint
+        The hip joint's stiffness (N m/rad) and damping (N m s/rad).
+
+    See Also
+    --------
+    bikemass.load_parameter_set : Reads them from a ``MooreRiderLean2012`` set.
+    bikemass.models.moore2012 : The conversions between them and Moore's named values.
+
+    Examples
+    --------
+    The Jamis with the Relaxed rider split at the hips, written as Moore's values and read back:
+
+    >>> import json, os, tempfile
+    >>> import bikemass as bm
+    >>> from bikemass.models.moore2012 import to_moore_values
+    >>> from bikemass.rider.lean_split import rider_lean_parameters
+    >>> bike = bm.load_bicycle("jamis")
+    >>> lean = rider_lean_parameters(bike, bm.seated_rider(bike, "relaxed"))
+    >>> path = os.path.join(tempfile.mkdtemp(), "jamis-lean.yml")
+    >>> document = {"parameterization": "MooreRiderLean2012", "values": to_moore_values(lean, speed=5.0)}
+    >>> _ = open(path, "w").write(json.dumps(document))
+    >>> read = bm.load_parameter_set(path)
+    >>> print(type(read.parameters).__name__, f"upper body {read.parameters.upper.mass:.2f} kg,",
+    ...       f"mg {read.values['mg']:.2f} kg")
+    RiderLeanParameters upper body 56.35 kg, mg 56.35 kg
+    """
 
     bicycle: BenchmarkParameters
     upper: UpperBody

@@ -38,6 +38,10 @@ STEER_TORQUE = Signal("steer-torque", "N m", "torque between the rear and front 
 
 INPUTS = (ROLL_TORQUE, STEER_TORQUE)
 """The inputs of every bicycle model, in this order."""
+COORDINATES, RATES, KINEMATIC = (ROLL_ANGLE, STEER_ANGLE), (ROLL_RATE, STEER_RATE), (HEADING, LATERAL)
+"""The Whipple bicycle's states in order: the coordinates, their rates, the kinematic states."""
+FURTHER_OUTPUTS = (FRONT_LATERAL,)
+"""Its outputs beyond the states."""
 
 
 def whipple_model(params, stiffness=None):
@@ -66,7 +70,6 @@ def whipple_model(params, stiffness=None):
     lateral = [None, np.array([0, 0, 0, 0, 1.0, 0])]
     front = np.array([0, -params.c * cl, 0, 0, params.w, 1.0])
     name = "whipple" if stiffness is None else "whipple+flexible-static"
-    return second_order_model(name, (ROLL_ANGLE, STEER_ANGLE), (ROLL_RATE, STEER_RATE),
-                              m.M, [None, m.C1], [gK0, None, m.K2], np.eye(2), INPUTS,
-                              kinematics=[(HEADING, heading), (LATERAL, lateral)],
-                              outputs=[(FRONT_LATERAL, front)])
+    return second_order_model(name, COORDINATES, RATES, m.M, [None, m.C1], [gK0, None, m.K2], np.eye(2), INPUTS,
+                              kinematics=list(zip(KINEMATIC, (heading, lateral))),
+                              outputs=list(zip(FURTHER_OUTPUTS, (front,))))

@@ -38,7 +38,6 @@ from ..core.units import DIMENSIONS, dimension_of, to_si
 from ..mass.inertia import combine
 from ..mass.materials import Material, load_materials
 from ..models.flexible import Compliances
-from ..models.moore2012 import from_moore_values
 from ..models.parameters import NAMES, BenchmarkParameters
 from ..rider import Rider, _read_document, poses_dir
 from ..rider.chain_file import bicycle_contacts
@@ -281,8 +280,7 @@ class Inputs:
                 node = None if _is_parameter_text(path) else load_yaml(path)
             if node is not None and kind_of(node) == RIDER_LEAN:
                 read = read_parameter_set(node)
-                self._lean_set = from_moore_values(read.parameters.to_dict(), read.source)
-                self._lean_source = read.source
+                self._lean_set, self._lean_source = read.parameters, read.source
         return self._lean_set
 
     def _read_rider(self):
@@ -542,11 +540,3 @@ def _material_file(which):
     node = load_yaml(os.fspath(which))
     return not (isinstance(node.value, dict) and "S" in node.value)
 
-
-def _rider_lean_set(node):
-    """The :class:`~bikemass.models.lean.RiderLeanParameters` of a ``MooreRiderLean2012`` parameter
-    set (a YAML mapping ``node``), else ``None``."""
-    if kind_of(node) != RIDER_LEAN:
-        return None
-    read = read_parameter_set(node)
-    return from_moore_values(read.parameters.to_dict(), read.source)

@@ -37,7 +37,7 @@ from dataclasses import dataclass, field, fields
 from ..core.choices import RIGID, Combine, Method, check
 from ..core.errors import InputError, short
 from ..core.frozen import readonly, short_repr
-from ..models.family import build as build_member, held_coordinates, linear_model, values as member_values
+from ..models.family import build as build_member, generated, held_coordinates, linear_model, values as member_values
 from ..models.flexible import Compliances
 from ..models.lean import RiderLeanParameters
 from ..models.linear import LinearModel
@@ -45,7 +45,7 @@ from ..models.parameters import NAMES, BenchmarkParameters
 from ..models.plausibility import check_parameters
 from ..models.registry import BASE, ModelChoice, parse_model
 from ..models.tyres import Tyres, as_tyres
-from ..models.whipple import whipple_model
+from ..models import whipple
 from .loading import BicycleLike, RiderLike
 from .inputs import Inputs, _lru, file_unit, get_path, split_changes
 
@@ -278,7 +278,7 @@ class Scenario:
         p = self.parameters(changes)
         if not self.model.members:
             S = self.inputs.frame_stiffness(choice, bike)
-            return Built(p, None if S is None else readonly(S), whipple_model(p, S), self.model)
+            return Built(p, None if S is None else readonly(S), whipple.whipple_model(p, S), self.model)
         lean = self._lean(bike, rider, params) if self.model.has("rider-lean") else None
         flexible = self.inputs.compliances(choice, bike) if self.model.has("flexible") else None
         tyres = self._tyres()
@@ -351,3 +351,17 @@ def parameters(bicycle: BicycleLike, rider: RiderLike = None, combine: Combine |
     mB 86.707 kg, IBxx 14.464 kg m^2 (the thesis's Eq. 3.6: 12.281)
     """
     return Scenario(bicycle, rider, combine=combine, method=method, allow_off_contact=allow_off_contact).parameters()
+
+
+def model_signals(model):
+    """``(inputs, outputs)``: the ``(name, unit)`` of every input and every output (the states, then
+    any further outputs) of the linear model :meth:`Scenario.build` builds for ``model`` (a name or a
+    :class:`~bikemass.models.registry.ModelChoice`), read from the code without parameters: the
+    Whipple bicycle's from :mod:`bikemass.models.whipple` (front-lateral beyond its states), a
+    member combination's from its generated module (every coordinate free)."""
+    choice = parse_model(model)
+    if not choice.members:
+        states = (*whipple.COORDINATES, *whipple.RATES, *whipple.KINEMATIC, *whipple.FURTHER_OUTPUTS)
+        return tuple((s.name, s.unit) for s in whipple.INPUTS), tuple((s.name, s.unit) for s in states)
+    code = generated(choice)
+    return tuple(code.INPUTS), tuple(code.STATES)

@@ -22,7 +22,10 @@ from .runs import CORRECTED, GEOMETRY, THESIS, Inputs, run
 from .stability_tables import CHAPTER4, CHAPTER5, compare, entry_table
 from .handling import handling_table
 
-WORKERS = min(2, os.cpu_count() or 1)
+REFERENCE_CORES = 2
+"""The cores of the machine the study's timings are measured on (docs/study.md)."""
+WORKERS = min(REFERENCE_CORES, os.cpu_count() or 1)
+"""Worker processes by default: the reference machine's cores, at most this machine's."""
 _INPUTS = None
 """The study's :class:`~bikemass.study.runs.Inputs`, set before the pool forks (workers inherit it)."""
 

@@ -36,6 +36,7 @@ import numpy as np
 
 from ..core.config import load_yaml
 from ..core.errors import InputError
+from ..core.limits import MAX_SPEED
 from ..core.paths import within_reach
 from ..core.units import DIMENSIONS, UnitError, dimension_of, split_quantity
 from ..models.parameters import NAMES, dimension
@@ -196,8 +197,6 @@ def count_of(spec):
 
 
 STIFFNESS_CHOICES = "infinite, steel, titanium, aluminum or a file"
-MAX_SPEED = 1000.0
-"""Highest ``max_speed`` (m/s), as the command line's ``--speeds`` allows."""
 
 
 def _variable(key, node):

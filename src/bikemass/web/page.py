@@ -19,6 +19,7 @@ from ..plots.figure import figure_bytes
 from ..plots.side_view import plot_side_view
 from ..plots.stability import plot_eigenvalues
 from ..rider import shipped_poses
+from ..scenario.scenario import model_signals
 from .api import DOWNLOADS, register_routes
 from .engine import UPLOAD_LIMIT, Engine, HANDLING_SPEEDS
 from .state import BODY_RIDER, CHART_ANGLES, CHART_KEYS, HANDS, MODEL_CHOICES, SEXES, SOURCE, PageState
@@ -190,8 +191,8 @@ def _layout(query):
     ])
 
 
-BODE_INPUTS = ("steer-torque", "roll-torque")
-BODE_OUTPUTS = ("roll-angle", "steer-angle", "roll-rate", "steer-rate", "heading", "lateral", "front-lateral")
+BODE_INPUTS, BODE_OUTPUTS = (tuple(name for name, _ in signals) for signals in model_signals(BASE))
+"""The Bode plot's choices: the Whipple bicycle's inputs and outputs."""
 
 
 def _handling_panel():

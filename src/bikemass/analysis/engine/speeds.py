@@ -1,10 +1,12 @@
 """Speed grids: the thesis's default grid, a grid from start, stop and step, and speeds given as
 values, each checked and bounded (:mod:`bikemass.core.limits`) before any array is made."""
 
+import numbers
+
 import numpy as np
 
 from ...core.errors import InputError
-from ...core.limits import MAX_SPEEDS
+from ...core.limits import MAX_SPEED, MAX_SPEEDS, MIN_SPEED_STEP
 from .modes import check_speeds
 
 DEFAULT_SPEEDS = (0.0, 30.0, 0.05)
@@ -39,6 +41,54 @@ def speed_grid(start=DEFAULT_SPEEDS[0], stop=DEFAULT_SPEEDS[1], step=DEFAULT_SPE
     return np.round(start + step * np.arange(speed_count(start, stop, step)), 12)
 
 
+def speed_range(start, stop, step, max_speeds=MAX_SPEEDS, source="speeds", given=None, limit_name="max_speeds="):
+    """The grid :func:`speed_grid` of ``start, stop, step`` (m/s), checked against the limits of
+    :mod:`bikemass.core.limits` before any array is made: the library's ``bm.speeds`` and the
+    command line's ``--speeds START:STOP:STEP`` alike.
+
+    Parameters
+    ----------
+    start, stop, step : float
+        ``0 <= start < stop <= MAX_SPEED`` and ``MIN_SPEED_STEP <= step <= stop - start`` (m/s).
+    max_speeds : int
+        Most speeds on the grid.
+    source, given, limit_name : str
+        What an InputError names: the argument (``speeds``, ``--speeds``), the value as given
+        (default ``start:stop:step``) and how to raise ``max_speeds``.
+
+    Returns
+    -------
+    numpy.ndarray of shape (n,)
+
+    Raises
+    ------
+    InputError
+        Outside the limits above, or more than ``max_speeds`` speeds.
+
+    Examples
+    --------
+    >>> speed_range(0, 2, 0.5).tolist()
+    [0.0, 0.5, 1.0, 1.5, 2.0]
+    """
+    limit = _checked_limit(max_speeds)
+    given = f"{start!r}:{stop!r}:{step!r}" if given is None else given
+    if not all(isinstance(x, numbers.Real) and not isinstance(x, bool) for x in (start, stop, step)) or \
+            not (0 <= start < stop <= MAX_SPEED and MIN_SPEED_STEP <= step <= stop - start):
+        raise InputError(source, given, f"START:STOP:STEP in m/s with 0 <= START < STOP <= {MAX_SPEED:g}, "
+                         f"{MIN_SPEED_STEP:g} <= STEP <= STOP - START")
+    count = speed_count(start, stop, step)
+    if count > limit:
+        raise InputError(source, given, f"at most {limit} speeds, got {count} (raise with {limit_name})")
+    return speed_grid(start, stop, step)
+
+
+def _checked_limit(max_speeds):
+    """``max_speeds`` checked: a whole number of speeds >= 1."""
+    if isinstance(max_speeds, bool) or not isinstance(max_speeds, int) or max_speeds < 1:
+        raise InputError("max_speeds", repr(max_speeds), "a whole number of speeds >= 1")
+    return max_speeds
+
+
 def speed_values(values, max_speeds=MAX_SPEEDS):
     """``values`` checked as speeds (m/s; the default grid for ``None``), their number first.
 
@@ -60,8 +110,7 @@ def speed_values(values, max_speeds=MAX_SPEEDS):
     """
     if values is None:
         return speed_grid()
-    if isinstance(max_speeds, bool) or not isinstance(max_speeds, int) or max_speeds < 1:
-        raise InputError("max_speeds", repr(max_speeds), "a whole number of speeds >= 1")
+    _checked_limit(max_speeds)
     try:
         count = len(values)
     except TypeError:

@@ -17,14 +17,12 @@ import numpy as np
 
 from ...core.choices import closest
 from ...core.errors import InputError, short, wrong_type
+from ...core.limits import MAX_SPEED
 from ..results import matrices
 from ...models.linear import LinearModel
 from ...models.whipple import whipple_model
 from ...models.parameters import BenchmarkParameters
 from ...scenario.scenario import Built, Scenario
-
-MAX_SPEED = 1000.0
-"""Highest forward speed (m/s) an analysis accepts (as the speed grids of ``bikemass stability``)."""
 
 
 def linear_model(system, stiffness=None):
@@ -62,7 +60,7 @@ def linear_model(system, stiffness=None):
 
 
 def check_speed(speed, what="speed"):
-    """``speed`` as a float (m/s); InputError unless a finite number in [0, :data:`MAX_SPEED`]."""
+    """``speed`` as a float (m/s); InputError unless a finite number in [0, :data:`~bikemass.core.limits.MAX_SPEED`]."""
     if isinstance(speed, bool) or not isinstance(speed, numbers.Real) or not math.isfinite(speed) \
             or not 0 <= speed <= MAX_SPEED:
         raise InputError(what, short(speed), f"a forward speed in m/s, a finite number in 0..{MAX_SPEED:g}")

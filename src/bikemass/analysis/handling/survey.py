@@ -13,9 +13,10 @@ import numpy as np
 from ...core.display import Display
 from ...core.errors import BikemassWarning, InputError, short
 from ...core.frozen import readonly, short_repr
+from ...core.limits import MAX_SPEED
 from ...core.threads import one_blas_thread
 from .gains import NAMES, UNITS, as_gains, read_gain_table
-from .plant import MAX_SPEED, linear_model
+from .plant import linear_model
 from .quality import hqm, hqm_peak, level
 from .rider import closed_loop, rider_plant
 from .tuning import GainsNotFound, tune_gains
