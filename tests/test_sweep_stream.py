@@ -111,3 +111,16 @@ def _recording_engine(started):
         started.append(workers)
         yield _in_process, None
     return engine
+
+
+def test_a_sweep_without_figures_never_loads_matplotlib(tmp_path):
+    """Issue 26: matplotlib only when asked (its import is about a second of a small sweep)."""
+    import subprocess
+    import sys
+    spec = tmp_path / "c.yaml"
+    spec.write_text("{bike: benchmark, vary: {c: [0.04, 0.08]}}")
+    code = ("import sys; from bikemass.cli.main import main; "
+            f"status = main(['sweep', {str(spec)!r}, '--out', {str(tmp_path / 'out')!r}, '--quiet', '--no-figures']); "
+            "print(status, 'matplotlib' in sys.modules)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.split()[-2:] == ["0", "False"]

@@ -280,7 +280,7 @@ def run_sweep_command(args):
 
     spec = read_spec(args.spec)
     require_for_sweep(args)
-    options = figure_options(args, f"x.{args.plot_format}")
+    options = figure_options(args, None if args.no_figures else f"x.{args.plot_format}")   # no matplotlib without figures
     total = count_of(spec)
     with Progress(total, "sweep") as bar:
         if args.quiet:

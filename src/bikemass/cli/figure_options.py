@@ -57,10 +57,9 @@ def _limit(args, name):
 def figure_options(args, path):
     """:class:`FigureOptions` from parsed ``args``; InputError (one line) for a bad option or a
     figure file ``path`` whose format matplotlib cannot write.  Call before the work."""
-    # lazy: plots/ load matplotlib; only the figure needs it
-    from ..plots.figure import figure_format
-
     if path is not None:
+        # lazy: plots/ load matplotlib; only a figure needs it (no path: no figure, no matplotlib)
+        from ..plots.figure import figure_format
         try:
             figure_format(path)
         except ValueError as exc:
