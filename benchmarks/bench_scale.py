@@ -51,7 +51,7 @@ LONG = """bike: jamis
 rider: relaxed
 stiffness: steel
 vary:
-  sections.seat_stay.wall: {from: 0.025, to: 0.065, num: 40}
+  sections.seat_stay.wall: {from: 0.025, to: 0.065, num: 60}
   sections.chain_stay.wall: {from: 0.03, to: 0.05, num: 45}
 """
 
@@ -216,7 +216,7 @@ def workers_section(repeat):
 def long_section(repeat):
     print(f"engines, a sweep of more than a minute here (Jamis walls, steel: beam FE per configuration); {load()}")
     with tempfile.TemporaryDirectory() as tmp:
-        engines(LONG, "long.yaml", tmp, "1,800 walls")
+        engines(LONG, "long.yaml", tmp, "2,700 walls")
 
 
 SECTIONS = {"parameter": parameter_section, "grid": grid_section, "geometry": geometry_section,
