@@ -122,7 +122,7 @@ def _png(rgba, fig, dpi):
     width, height = _canvas_size(len(rgba) // 4, *(inches * dpi for inches in fig.get_size_inches()))
     pixels = np.frombuffer(rgba, np.uint8).reshape(height, width, 4)
     opaque = bool((pixels[:, :, 3] == 255).all())
-    image = Image.fromarray(np.ascontiguousarray(pixels[:, :, :3]) if opaque else pixels, "RGB" if opaque else "RGBA")
+    image = Image.fromarray(np.ascontiguousarray(pixels[:, :, :3]) if opaque else pixels)   # RGB or RGBA by shape
     out = BytesIO()
     image.save(out, format="png", compress_level=PNG_COMPRESSION, dpi=(dpi, dpi))
     return out.getvalue()
