@@ -17,7 +17,6 @@ import os
 import shutil
 import stat
 import tempfile
-from collections.abc import Mapping
 from numbers import Integral, Real
 from pathlib import Path
 
@@ -26,7 +25,7 @@ import yaml
 
 from .errors import InputError, short
 from .gate import was_read
-from .plain import plain
+from .plain import document_keys, plain
 from .stopping import deferred
 
 _WARNINGS = contextvars.ContextVar("bikemass_warnings", default=None)
@@ -164,19 +163,7 @@ document holding the 26 benchmark parameters passes their units as ``extra``:
 def units_of(obj, extra=None):
     """``{key: unit}`` for every key of ``obj`` (at any depth) with a unit, in order of appearance."""
     table = {**UNITS, **(extra or {})}
-    found = {}
-
-    def walk(value):
-        if isinstance(value, Mapping):
-            for k, v in value.items():
-                if k in table and k not in found:
-                    found[k] = table[k]
-                walk(v)
-        elif isinstance(value, (list, tuple)):
-            for v in value:
-                walk(v)
-    walk(obj)
-    return found
+    return {k: table[k] for k in document_keys(obj) if k in table}
 
 
 def with_units(obj, extra=None):

@@ -18,3 +18,20 @@ def plain(obj):
     if isinstance(obj, np.generic):
         return obj.item()
     return obj
+
+
+def document_keys(obj):
+    """Every mapping key of the plain document ``obj``, at any depth, in order of appearance
+    (a key before the keys inside its value), each once (a dict's keys)."""
+    found = {}
+
+    def walk(value):
+        if isinstance(value, Mapping):
+            for k, v in value.items():
+                found.setdefault(k)
+                walk(v)
+        elif isinstance(value, (list, tuple)):
+            for v in value:
+                walk(v)
+    walk(obj)
+    return found.keys()

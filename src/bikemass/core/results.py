@@ -19,6 +19,7 @@ import numpy as np
 
 from .display import UNIT, Display
 from .frozen import freeze
+from .plain import document_keys
 
 
 def quantity(unit, doc="", default=MISSING):
@@ -77,22 +78,6 @@ class Result(Display):
     def document(self):
         """``to_dict()`` with its ``units`` block: what ``--format json|yaml`` writes."""
         return with_declared_units(self.to_dict(), self.units())
-
-
-def document_keys(obj):
-    """Every mapping key of the plain document ``obj``, at any depth."""
-    found = set()
-
-    def walk(value):
-        if isinstance(value, Mapping):
-            for k, v in value.items():
-                found.add(k)
-                walk(v)
-        elif isinstance(value, (list, tuple)):
-            for v in value:
-                walk(v)
-    walk(obj)
-    return found
 
 
 def with_declared_units(data, units):
