@@ -269,3 +269,16 @@ def test_handling_table_answers_for_every_rider_position(study):
         assert peaks == sorted(peaks, reverse=True) and peaks[-1] < 5
     report = (study[0] / "report.md").read_text()
     assert "## Handling: a rider in the loop" in report and "Sec. 6.1" in report
+
+
+def test_the_figures_drawn_while_computing_are_the_figure_jobs(study, monkeypatch, tmp_path):
+    """compute(draw_into=) sends each figure as its inputs are ready; the set it draws is
+    figure_jobs's (the same files, each once), and the results list them (nothing drawn here:
+    run_job is replaced by the file it would write)."""
+    from bikemass.study import figures, pipeline
+    from bikemass.study.runs import Inputs
+    monkeypatch.setattr(figures, "run_job", figures.job_path)
+    monkeypatch.setattr(pipeline, "_INPUTS", pipeline._INPUTS)        # compute sets it: restored after
+    drawn = pipeline.compute(draw_into=tmp_path / "figures").figure_paths
+    expected = [figures.job_path(j) for j in pipeline.figure_jobs(study[2], Inputs(), tmp_path / "figures")]
+    assert len(drawn) == len(set(drawn)) == figures.figure_count() and sorted(drawn) == sorted(expected)

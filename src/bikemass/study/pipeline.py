@@ -104,18 +104,18 @@ def compute(workers=WORKERS, step=lambda label: None, draw_into=None):
     _preload(inputs)
     _INPUTS = inputs
     configs = configurations()
-    drawing = _Drawing(draw_into, step)
+    if draw_into is not None:
+        _load_plotting()                          # before the pool forks: the workers inherit matplotlib
     with executor(workers) as pool:
-        drawing.pool = pool
+        drawing = _Drawing(pool, draw_into, step)
         handling_jobs = {pair: pool.submit(_handling, *pair) for pair in handled()}   # the longest jobs first
         parts = [(spec, pool.submit(_run_part, spec, part)) for spec in (CORRECTED, GEOMETRY)
                  for part in _by_bike(configs)]
         frames_job = pool.submit(_frames)
         flexible_job = pool.submit(_flexible)
-        drawing.add(lambda folder: figures.pose_jobs(
-            inputs.bicycle("jamis"), {p: inputs.rider(p) for p in THESIS_POSES}, folder))
+        drawing.add(lambda folder: _pose_jobs(inputs, folder))
         thesis = run(THESIS, configs, inputs, step)
-        drawing.add(lambda folder: figures.critical_jobs(thesis, folder, "_thesis", "thesis run, 0.05 m/s grid"))
+        drawing.add(lambda folder: _thesis_critical_jobs(thesis, folder))
         entries = compare(thesis)
         explanations = {e: explain(e, inputs).text() for e in entries if not e.match}
         step("misses explained")
@@ -156,14 +156,13 @@ def compute(workers=WORKERS, step=lambda label: None, draw_into=None):
 
 
 class _Drawing:
-    """The figures :func:`compute` draws while it computes: jobs go to the pool as their inputs
-    are ready (behind the computation already queued); :meth:`finish` waits for them in the
-    order they were given and returns the paths.  With no folder, nothing is drawn."""
+    """Figures drawn on ``pool`` into ``folder``: :meth:`add` sends jobs as their inputs are
+    ready (behind the work already queued); :meth:`finish` waits for them in the order they were
+    given, calling ``step`` with each file's name, and returns the paths.  With no folder, nothing
+    is drawn.  Load the plotting modules (:func:`_load_plotting`) before the pool forks."""
 
-    def __init__(self, folder, step):
-        self.folder, self.step, self.pool, self.pending = folder, step, None, []
-        if folder is not None:
-            _load_plotting()                      # before the pool forks: the workers inherit matplotlib
+    def __init__(self, pool, folder, step):
+        self.pool, self.folder, self.step, self.pending = pool, folder, step, []
 
     def add(self, make_jobs):
         if self.folder is not None:
@@ -215,12 +214,21 @@ def flexible_tables(results):
             lean_table(results.flexible)]
 
 
+def _pose_jobs(inputs, folder):
+    return figures.pose_jobs(inputs.bicycle("jamis"), {p: inputs.rider(p) for p in THESIS_POSES}, folder)
+
+
+def _thesis_critical_jobs(thesis, folder):
+    return figures.critical_jobs(thesis, folder, "_thesis", "thesis run, 0.05 m/s grid")
+
+
 def figure_jobs(results, inputs, folder):
-    """Every figure job of the study (see :mod:`~bikemass.study.figures`)."""
+    """Every figure job of the study (see :mod:`~bikemass.study.figures`); :func:`compute` sends
+    the same jobs as their inputs are computed."""
     return (figures.critical_jobs(results.runs["corrected"], folder)
-            + figures.critical_jobs(results.runs["thesis"], folder, "_thesis", "thesis run, 0.05 m/s grid")
+            + _thesis_critical_jobs(results.runs["thesis"], folder)
             + figures.eigenvalue_jobs(results.runs["corrected"], folder)
-            + figures.pose_jobs(inputs.bicycle("jamis"), {p: inputs.rider(p) for p in THESIS_POSES}, folder)
+            + _pose_jobs(inputs, folder)
             + figures.handling_jobs(results.handling, results.runs["corrected"], folder)
             + figures.flexible_jobs(results.flexible, results.runs.get("geometry"), folder))
 
@@ -228,13 +236,12 @@ def figure_jobs(results, inputs, folder):
 @one_blas_thread()
 def draw(results, out, workers=WORKERS, step=lambda label: None):
     """Draw the figures into ``out/figures`` (one BLAS thread, as :func:`compute`); returns the paths written."""
-    jobs = figure_jobs(results, _INPUTS or Inputs(), out / "figures")
-    paths = []
+    inputs = _INPUTS or Inputs()
+    _load_plotting()                              # before the pool forks: the workers inherit matplotlib
     with executor(workers) as pool:
-        for future in [pool.submit(figures.run_job, job) for job in jobs]:
-            paths.append(future.result())
-            step(paths[-1].name)
-    return paths
+        drawing = _Drawing(pool, out / "figures", step)
+        drawing.add(lambda folder: figure_jobs(results, inputs, folder))
+        return list(drawing.finish())
 
 
 def write_html(results, out, figure_paths=()):
