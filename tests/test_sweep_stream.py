@@ -124,3 +124,13 @@ def test_a_sweep_without_figures_never_loads_matplotlib(tmp_path):
             "print(status, 'matplotlib' in sys.modules)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.split()[-2:] == ["0", "False"]
+
+
+def test_a_figure_format_given_is_checked_even_without_figures(tmp_path, capsys):
+    """--no-figures skips the default format's check (and matplotlib), never a format the user gave."""
+    from bikemass.cli.main import main
+    spec = tmp_path / "c.yaml"
+    spec.write_text("{bike: benchmark, vary: {c: [0.04, 0.08]}}")
+    assert main(["sweep", str(spec), "--out", str(tmp_path / "out"), "--plot-format", "xyz", "--no-figures"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and ".png" in err and not (tmp_path / "out").exists()     # one line naming the formats

@@ -8,6 +8,8 @@ from ..core.progress import Progress
 from . import dialect
 from .figure_options import add_figure_options, figure_options, write_figure
 
+PLOT_FORMAT = "png"
+"""The sweep's figure format unless ``--plot-format`` gives one."""
 SPEED_UNITS = {"weave_speed": "m/s", "capsize_speed": "m/s",
                "d_weave_speed": "m/s per unit of each parameter (SI, angles rad)",
                "d_capsize_speed": "m/s per unit of each parameter (SI, angles rad)",
@@ -74,7 +76,7 @@ def register(sub):
                         help="run on a local Dask cluster of N single-threaded worker processes")
     engine.add_argument("--scheduler", metavar="ADDRESS",
                         help="run on an existing Dask distributed cluster (e.g. tcp://10.0.0.5:8786)")
-    sw.add_argument("--plot-format", default="png", metavar="EXT", help="figure format (default png)")
+    sw.add_argument("--plot-format", metavar="EXT", help=f"figure format (default {PLOT_FORMAT})")
     sw.add_argument("--no-figures", action="store_true",
                     help="write no figures (matplotlib is then not imported; a sweep of millions of rows "
                          "reads no columns back)")
@@ -280,7 +282,9 @@ def run_sweep_command(args):
 
     spec = read_spec(args.spec)
     require_for_sweep(args)
-    options = figure_options(args, None if args.no_figures else f"x.{args.plot_format}")   # no matplotlib without figures
+    plot_format = args.plot_format or PLOT_FORMAT
+    # a format given is checked even with --no-figures; the default is not (no matplotlib without figures)
+    options = figure_options(args, None if args.no_figures and args.plot_format is None else f"x.{plot_format}")
     total = count_of(spec)
     with Progress(total, "sweep") as bar:
         if args.quiet:
@@ -291,7 +295,7 @@ def run_sweep_command(args):
         # lazy: matplotlib is slow to import; only figures need it
         from ..sweep.figures import sweep_figures
         for stem, fig in sweep_figures(rows, spec, options.size).items():
-            write_figure(fig, out / f"{stem}.{args.plot_format}", options)
+            write_figure(fig, out / f"{stem}.{plot_format}", options)
     if spec.global_sensitivity:
         # lazy: the library loads numpy; bikemass --help must not
         from ..sweep.sobol import sobol_indices
