@@ -1,4 +1,4 @@
-"""Links to the two Markdown pages that live outside ``docs/``: README.md and reference/README.md.
+"""Links to the Markdown pages that live outside ``docs/``: README.md, CHANGELOG.md and reference/README.md.
 
 The chapters link to them as files (``README.md#units-in-yaml`` of the folder above), which is
 right on GitHub and in a checkout; the site shows them as its pages ``readme`` and ``thesis-tables`` (each a MyST
@@ -12,7 +12,7 @@ from pathlib import Path
 from sphinx import addnodes
 from sphinx.transforms.post_transforms import SphinxPostTransform
 
-PAGES = {"README": "readme", "reference/README": "thesis-tables"}
+PAGES = {"README": "readme", "CHANGELOG": "changelog", "reference/README": "thesis-tables"}
 """File outside docs/ (repository-relative, no suffix) -> the site page that includes it."""
 
 

@@ -22,7 +22,7 @@ import importlib
 import sys
 import types
 
-__version__ = "0.1.0"
+__version__ = "0.2.0"
 """The version of bikemass (PEP 440); ``pyproject.toml`` reads it from here, ``bikemass --version`` prints it."""
 
 _API = {
