@@ -4,6 +4,10 @@ import importlib.metadata
 import re
 import subprocess
 import sys
+from pathlib import Path
+
+import pytest
+import yaml
 
 import bikemass
 
@@ -21,11 +25,6 @@ def test_command_line_prints_the_version():
 
 # The release's version in every place a reader or a packager looks (docs/releases.md): the changelog's
 # newest release, CITATION.cff (valid CFF 1.2.0) and the documentation say what ``bikemass --version`` does.
-
-from pathlib import Path
-
-import pytest
-import yaml
 
 ROOT = Path(__file__).resolve().parents[1]
 RELEASE = re.compile(r"^## \[(\d+\.\d+\.\d+)\] - (\d{4}-\d{2}-\d{2})$", re.M)
