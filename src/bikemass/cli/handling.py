@@ -31,10 +31,14 @@ def register(sub):
         sub, "bode", help="frequency response (magnitude in dB, phase in degrees) and the Bode plot",
         description="The frequency response G(jw) = C (jwI - A)^-1 B from an input to an output at one "
                     "speed: magnitude (dB) and phase (degrees, unwrapped) at N frequencies spaced "
-                    "logarithmically from START to STOP rad/s.")
+                    "logarithmically from START to STOP rad/s (Hz with --hz).")
     _input_output(bode)
-    bode.add_argument("--frequencies", metavar="START:STOP:N", default=DEFAULT_FREQUENCIES,
-                      help=f"N angular frequencies from START to STOP rad/s, logarithmic (default {DEFAULT_FREQUENCIES})")
+    bode.add_argument("--frequencies", metavar="START:STOP:N", default=None,
+                      help=f"N frequencies from START to STOP rad/s (Hz with --hz), logarithmic (default "
+                           f"{DEFAULT_FREQUENCIES} rad/s)")
+    bode.add_argument("--hz", action="store_true",
+                      help="frequencies in Hz (f = w / 2 pi) instead of rad/s: --frequencies, the table's and "
+                           "the document's frequencies and the plot's frequency axis")
     _data(bode, "the magnitude and phase at every frequency")
     dialect.add_plot(bode, "the Bode plot")
     bode.set_defaults(run=every_size(run_bode))
@@ -240,17 +244,22 @@ def tf_text(tf, title):
     return "\n".join(lines) + "\n"
 
 
-def _frequencies(text):
+def _frequencies(text, hz=False):
+    """``--frequencies`` as angular frequencies (rad/s); with ``hz`` the text is in Hz."""
     # lazy: the library loads numpy; bikemass --help must not
     from ..analysis.handling.frequency import log_frequencies
     # lazy: the library loads numpy; bikemass --help must not
     from ..core.errors import InputError
-    expected = "START:STOP:N in rad/s with START < STOP and N >= 2 points (logarithmic)"
+    unit, scale = ("Hz", 2 * math.pi) if hz else ("rad/s", 1.0)
+    expected = f"START:STOP:N in {unit} with START < STOP and N >= 2 points (logarithmic)"
+    if text is None:
+        start, stop, count = DEFAULT_FREQUENCIES.split(":")
+        return log_frequencies(float(start), float(stop), int(count))
     try:
         start, stop, count = text.split(":")
-        return log_frequencies(float(start), float(stop), int(count))
+        return log_frequencies(float(start) * scale, float(stop) * scale, int(count))
     except InputError as exc:
-        raise InputError("--frequencies", text, exc.expected) from None
+        raise InputError("--frequencies", text, expected if hz else exc.expected) from None
     except ValueError:
         raise InputError("--frequencies", text, expected) from None
 
@@ -262,23 +271,27 @@ def run_bode(args):
     from ..core.output import table
 
     options = dialect.figure_checked(args)
-    w = _frequencies(args.frequencies)
+    w = _frequencies(args.frequencies, args.hz)
     model = bicycle_model(args)
     fr = frequency_response(model, args.speed, _input_name(model, args.input), _output_name(model, args.response), w)
+    unit = "Hz" if args.hz else "rad/s"
+    shown = fr.frequencies / (2 * math.pi) if args.hz else fr.frequencies
 
     def render(fmt):
         if fmt in ("json", "yaml"):
-            return dialect.result_document(fr.to_dict(), fr.units(), fmt)
-        rows = list(zip(fr.frequencies.tolist(), fr.magnitude.tolist(), fr.phase.tolist()))
+            return dialect.result_document({**fr.to_dict(), "frequencies": shown.tolist()},
+                                           {**fr.units(), "frequencies": unit}, fmt)
+        rows = list(zip(shown.tolist(), fr.magnitude.tolist(), fr.phase.tolist()))
+        headers = [f"frequency ({unit})", "magnitude (dB)", "phase (deg)"]
         if fmt == "csv":
-            return dialect.csv_text(["frequency (rad/s)", "magnitude (dB)", "phase (deg)"], rows)
-        return table(["frequency (rad/s)", "magnitude (dB)", "phase (deg)"], rows, floatfmt="{:.6g}")
+            return dialect.csv_text(headers, rows)
+        return table(headers, rows, floatfmt="{:.6g}")
     dialect.emit(args, render)
     if args.plot:
         # lazy: matplotlib only for a figure
         from ..analysis.handling.figures import plot_bode
         title = f"{_title(args)}: {fr.output} / {fr.input} at {fr.speed:g} m/s"
-        dialect.save_plot(args, plot_bode(fr, title, options.size), options)
+        dialect.save_plot(args, plot_bode(fr, title, options.size, hz=args.hz), options)
     return 0
 
 
