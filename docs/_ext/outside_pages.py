@@ -31,9 +31,11 @@ class OutsidePages(SphinxPostTransform):
                 # MyST names the file relative to the source folder (older releases) or absolutely
                 target = os.path.normpath(os.path.join(self.env.srcdir, node["reftarget"]))
                 node["reftarget"] = targets.get(target, node["reftarget"])
-            elif node.get("reftarget") == "reference/README.md":
-                # README.md's own link to reference/README.md, read in the page that includes README.md
-                node["refdomain"], node["reftarget"], node["reftargetid"] = "doc", PAGES["reference/README"], None
+            elif node.get("reftarget") in ("reference/README.md", "CHANGELOG.md"):
+                # README.md's own links to reference/README.md and CHANGELOG.md, read in the page that
+                # includes README.md
+                page = PAGES[node["reftarget"][:-len(".md")]]
+                node["refdomain"], node["reftarget"], node["reftargetid"] = "doc", page, None
 
 
 def setup(app):
