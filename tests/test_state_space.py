@@ -156,7 +156,8 @@ def test_to_control_frequency_response_equals_bikemass():
     for inp in ("roll-torque", "steer-torque"):
         for out in ("roll-angle", "steer-angle", "lateral", "front-lateral"):
             fr = bm.frequency_response(p, 5.0, inp, out, frequencies=w)
-            g = np.asarray(control.frequency_response(sys[out, inp], w).complex).ravel()
+            siso = sys[sys.output_labels.index(out), sys.input_labels.index(inp)]
+            g = np.asarray(control.frequency_response(siso, w).complex).ravel()
             np.testing.assert_allclose(g, fr.values, rtol=1e-9, atol=0)
 
 
