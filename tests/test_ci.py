@@ -1,4 +1,4 @@
-"""CI runs the README's test command (the newest releases), and .ci/oldest.txt pins the oldest
+"""CI runs the README's test command (the newest releases) and then the build check, and .ci/oldest.txt pins the oldest
 release pyproject.toml allows of every dependency the tests install."""
 
 import re
@@ -21,7 +21,10 @@ def test_ci_runs_exactly_the_readme_test_command():
     command = _readme_test_command()
     assert "--upgrade-strategy eager" in command and command.endswith("python -m pytest")
     lines = [line for line in (REPO / ".ci" / "run").read_text().splitlines() if line and not line.startswith("#")]
-    assert lines[-1] == command
+    assert command in lines
+    after = lines[lines.index(command) + 1:]
+    assert after == ["rm -rf dist && python -m build && twine check --strict dist/*"], \
+        "after the tests, only the build check (docs/releases.md)"
 
 
 def _requirements():

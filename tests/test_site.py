@@ -33,6 +33,7 @@ def site(tmp_path_factory):
     scratch = tmp_path_factory.mktemp("site")
     shutil.copytree(ROOT / "docs", scratch / "docs", ignore=shutil.ignore_patterns(*GENERATED, "__pycache__"))
     shutil.copy(ROOT / "README.md", scratch / "README.md")
+    shutil.copy(ROOT / "CHANGELOG.md", scratch / "CHANGELOG.md")          # docs/changelog.md includes it
     (scratch / "reference").mkdir()
     shutil.copy(ROOT / "reference" / "README.md", scratch / "reference" / "README.md")
     out = scratch / "html"

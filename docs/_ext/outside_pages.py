@@ -1,4 +1,4 @@
-"""Links to the two Markdown pages that live outside ``docs/``: README.md and reference/README.md.
+"""Links to the Markdown pages that live outside ``docs/``: README.md, CHANGELOG.md and reference/README.md.
 
 The chapters link to them as files (``README.md#units-in-yaml`` of the folder above), which is
 right on GitHub and in a checkout; the site shows them as its pages ``readme`` and ``thesis-tables`` (each a MyST
@@ -12,7 +12,7 @@ from pathlib import Path
 from sphinx import addnodes
 from sphinx.transforms.post_transforms import SphinxPostTransform
 
-PAGES = {"README": "readme", "reference/README": "thesis-tables"}
+PAGES = {"README": "readme", "CHANGELOG": "changelog", "reference/README": "thesis-tables"}
 """File outside docs/ (repository-relative, no suffix) -> the site page that includes it."""
 
 
@@ -31,9 +31,11 @@ class OutsidePages(SphinxPostTransform):
                 # MyST names the file relative to the source folder (older releases) or absolutely
                 target = os.path.normpath(os.path.join(self.env.srcdir, node["reftarget"]))
                 node["reftarget"] = targets.get(target, node["reftarget"])
-            elif node.get("reftarget") == "reference/README.md":
-                # README.md's own link to reference/README.md, read in the page that includes README.md
-                node["refdomain"], node["reftarget"], node["reftargetid"] = "doc", PAGES["reference/README"], None
+            elif node.get("reftarget") in ("reference/README.md", "CHANGELOG.md"):
+                # README.md's own links to reference/README.md and CHANGELOG.md, read in the page that
+                # includes README.md
+                page = PAGES[node["reftarget"][:-len(".md")]]
+                node["refdomain"], node["reftarget"], node["reftargetid"] = "doc", page, None
 
 
 def setup(app):

@@ -22,7 +22,7 @@ import importlib
 import sys
 import types
 
-__version__ = "0.1.0"
+__version__ = "0.2.0"
 """The version of bikemass (PEP 440); ``pyproject.toml`` reads it from here, ``bikemass --version`` prints it."""
 
 _API = {
@@ -31,6 +31,7 @@ _API = {
     "stiffness": "scenario.catalog",
     "stability": "analysis.results", "eigenvalues": "analysis.results", "matrices": "analysis.results",
     "speeds": "analysis.results", "linear_model": "analysis.results",
+    "state_space": "analysis.state_space", "StateSpace": "analysis.state_space",
     "StabilityResult": "analysis.engine.stability", "LinearModel": "models.linear",
     "frame_modes": "scenario.frame", "frame_stiffness": "scenario.frame", "frame_structure": "scenario.frame",
     "pose_rider": "scenario.posing", "PosedRider": "scenario.posing", "seated_rider": "scenario.catalog",

@@ -27,7 +27,8 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike
 
-from ..models.parameters import NAMES
+from ..core.tables import Table
+from ..models.parameters import NAMES, parameter_units
 from .engine import closed_form
 from .engine.crossings import OSCILLATORY, REAL
 from .model import STIFFNESS_ENTRIES, model_of, state_matrix_derivatives, stiffness_state_derivatives, values_of
@@ -95,6 +96,32 @@ class Sensitivity(Display):
         """``{name: (p / v) dv/dp}`` for ``which`` in ``weave_speed`` | ``capsize_speed``."""
         v, d = getattr(self, which), getattr(self, "d_" + which)
         return {k: (self.params[k] * x / v if v else None) for k, x in d.items()}
+
+    def tables(self):
+        """``{"parameters": Table}``: one row per parameter differentiated by (its value and unit, the
+        derivatives of the weave and capsize speeds in (m/s) per unit of it, the dimensionless
+        elasticities ``(p/v) dv/dp``), and with a rear-frame stiffness ``{"stiffness": Table}``: one
+        row per critical speed and entry of S ((m/s) per N m/rad). The critical speeds are the
+        frames' ``attrs``."""
+        names = list(dict.fromkeys((*self.d_weave_speed, *self.d_capsize_speed)))
+        known = parameter_units()
+        e_weave, e_capsize = self.elasticities("weave_speed"), self.elasticities("capsize_speed")
+        per = "m/s per unit of the parameter"
+        columns = {"parameter": names, "value": [self.params.get(n) for n in names],
+                   "unit": [known.get(n, "SI") for n in names],
+                   "d_weave_speed": [self.d_weave_speed.get(n) for n in names],
+                   "d_capsize_speed": [self.d_capsize_speed.get(n) for n in names],
+                   "elasticity_weave_speed": [e_weave.get(n) for n in names],
+                   "elasticity_capsize_speed": [e_capsize.get(n) for n in names]}
+        attrs = {"weave_speed": self.weave_speed, "capsize_speed": self.capsize_speed}
+        out = {"parameters": Table(columns, {"d_weave_speed": per, "d_capsize_speed": per,
+                                             "elasticity_weave_speed": "1", "elasticity_capsize_speed": "1"},
+                                   attrs)}
+        if self.d_stiffness is not None:
+            rows = [(speed, entry, d) for speed, entries in self.d_stiffness.items() for entry, d in entries.items()]
+            out["stiffness"] = Table({"speed": [r[0] for r in rows], "entry": [r[1] for r in rows],
+                                      "derivative": [r[2] for r in rows]}, {"derivative": "m/s per N m/rad"}, attrs)
+        return out
 
     def to_dict(self):
         out = {"weave_speed": self.weave_speed, "capsize_speed": self.capsize_speed,

@@ -32,6 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike
 
+from ..core.tables import Table
 from ..core.display import Display
 from ..core.errors import InputError
 from ..core.keywords import renamed_keywords
@@ -166,6 +167,28 @@ class Propagation(Display):
             shown = "none" if nominal is None else f"{nominal:.6g}" + ("" if std is None else f" +- {std:.3g}")
             rows.append((key, shown, "m/s"))
         return rows
+
+    def tables(self):
+        """``{"speeds": Table, "eigenvalues": Table}``: one row per critical speed (its nominal value,
+        standard deviation and, from Monte Carlo, mean, linear std, 2.5 % and 97.5 % quantiles, the
+        fraction of draws without it; m/s), and one row per speed of the eigenvalue bands (each
+        mode's nominal real and imaginary part and their standard deviations, 1/s; Monte Carlo's
+        2.5 % and 97.5 % quantiles of the real part). The method and the inputs' spreads are the
+        frames' ``attrs``."""
+        names = list(self.speeds)
+        keys = list(dict.fromkeys(k for v in self.speeds.values() for k in v))
+        columns = {"output": names, **{k: [self.speeds[n].get(k) for n in names] for k in keys}}
+        units = {k: "1" if k == "fraction_without" else "m/s" for k in keys}
+        attrs = {"method": self.method, "inputs": {k: dict(v) for k, v in self.inputs.items()}}
+        bands, band_units = {"speed": np.asarray(self.eigen["speeds"], dtype=float)}, {"speed": "m/s"}
+        for label, m in self.eigen["modes"].items():
+            for key, values in (("real", m["nominal"].real), ("imaginary", m["nominal"].imag),
+                                ("std real", m["std_re"]), ("std imaginary", m["std_im"]),
+                                ("real q025", m.get("re_q025")), ("real q975", m.get("re_q975"))):
+                if values is not None:
+                    bands[f"{label} {key}"] = np.asarray(values, dtype=float)
+                    band_units[f"{label} {key}"] = "1/s"
+        return {"speeds": Table(columns, units, attrs), "eigenvalues": Table(bands, band_units, attrs)}
 
     def to_dict(self):
         eig = {"speeds": list(map(float, self.eigen["speeds"])), "modes": {

@@ -3,10 +3,23 @@
 Solids become their meshes; a lumped body becomes the uniform solid ellipsoid
 with the same mass and central inertia (where its moments allow one, else a
 2 cm sphere); a point mass a 1 cm sphere.
+
+Viewers of glTF (and most of STL and OBJ) expect y up: :data:`Y_UP` turns the benchmark frame into
+glTF's own convention (a right-handed frame, +y up, the asset's front facing +z: the bicycle's
+forward x becomes +z, its down z becomes -y, its right y becomes -x), a proper rotation, so
+nothing is mirrored.
 """
 
 import numpy as np
 import trimesh
+
+UP = ("z-down", "y")
+"""The frames a model is written in: the benchmark frame as it is, or glTF's y up (:data:`Y_UP`)."""
+Y_UP = np.array([[0.0, -1.0, 0.0, 0.0],
+                 [0.0, 0.0, -1.0, 0.0],
+                 [1.0, 0.0, 0.0, 0.0],
+                 [0.0, 0.0, 0.0, 1.0]])
+"""Homogeneous transform benchmark frame -> glTF's: ``(x, y, z) -> (-y, -z, x)`` (a rotation, det +1)."""
 
 COLOURS = {"rear_frame": [31, 119, 180, 255], "front_frame": [255, 127, 14, 255],
            "rear_wheel": [100, 100, 100, 255], "front_wheel": [100, 100, 100, 255],
@@ -39,14 +52,19 @@ def part_mesh(part):
     return sphere
 
 
-def build_scene(bicycle, rider=None):
-    """trimesh.Scene with one named geometry per part (rider parts prefixed ``rider_``)."""
+def build_scene(bicycle, rider=None, up="z-down"):
+    """trimesh.Scene with one named geometry per part (rider parts prefixed ``rider_``), in the
+    benchmark frame (``up="z-down"``) or turned by :data:`Y_UP` into glTF's y up (``up="y"``)."""
+    if up not in UP:
+        raise ValueError(f"up must be one of {', '.join(UP)}, got {up!r}")
     scene = trimesh.Scene()
     groups = [(bicycle.parts, "")] + ([(rider.parts, "rider_")] if rider is not None else [])
     for parts, prefix in groups:
         for part in parts:
             mesh = part_mesh(part)
             mesh.visual.face_colors = COLOURS["rider" if prefix else part.body]
+            if up == "y":
+                mesh.apply_transform(Y_UP)
             scene.add_geometry(mesh, geom_name=f"{prefix}{part.name}", node_name=f"{prefix}{part.name}")
     return scene
 

@@ -58,6 +58,10 @@ def register(sub):
     _bike_and_rider(export)
     export.add_argument("-o", "--output", metavar="FILE", required=True,
                         help="model file; the format follows the suffix (.glb, .stl, .obj)")
+    export.add_argument("--up", choices=("z-down", "y"), default="z-down",
+                        help="z-down: the benchmark frame as it is (default); y: glTF's frame, as viewers expect "
+                             "(y up, the bicycle's forward along +z, its right along -x; a rotation, nothing "
+                             "mirrored)")
     dialect.add_quiet(export)
     add_size_option(export, "--bike-size")
     export.set_defaults(run=every_size(run_export, many=False))
@@ -170,5 +174,5 @@ def run_export(args):
     if fmt not in MODEL_FORMATS:
         raise InputError(args.output, "(file)", "a model file name ending in .glb, .stl or .obj")
     bicycle, rider = _seated(args)
-    write_atomic(args.output, export_scene(build_scene(bicycle, rider), fmt))
+    write_atomic(args.output, export_scene(build_scene(bicycle, rider, args.up), fmt))
     return 0

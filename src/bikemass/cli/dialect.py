@@ -34,8 +34,10 @@ from ..models.registry import BASE, parse_model
 TABULAR = (Format.TABLE.value, Format.CSV.value, Format.JSON.value, Format.YAML.value)
 """The formats of every command's data (``params`` adds ``bicycleparameters``)."""
 
-SUFFIX_FORMATS = {".csv": "csv", ".json": "json", ".yaml": "yaml", ".yml": "yaml", ".txt": "table"}
-"""An ``-o`` file's suffix -> its format when ``--format`` is not given."""
+SUFFIX_FORMATS = {".csv": "csv", ".json": "json", ".yaml": "yaml", ".yml": "yaml", ".txt": "table",
+                  ".mat": "mat", ".npz": "npz"}
+"""An ``-o`` file's suffix -> its format when ``--format`` is not given (``.mat`` and ``.npz`` where the
+command writes them: ``state-space``)."""
 
 DEFAULT_SPEEDS = "0:30:0.05"
 

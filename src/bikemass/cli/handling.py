@@ -11,6 +11,8 @@ from .options import number
 from .sizes import add_size_option, every_size
 
 DEFAULT_FREQUENCIES = "0.1:100:1000"
+STATE_SPACE_FORMATS = (*dialect.TABULAR, "mat", "npz")
+"""``state-space``'s formats: the dialect's and the two binary ones (MATLAB, numpy), which need ``-o``."""
 SPEED = number(0, 1000, what="a forward speed in m/s")
 """``--speed``: one forward speed (m/s)."""
 
@@ -29,10 +31,14 @@ def register(sub):
         sub, "bode", help="frequency response (magnitude in dB, phase in degrees) and the Bode plot",
         description="The frequency response G(jw) = C (jwI - A)^-1 B from an input to an output at one "
                     "speed: magnitude (dB) and phase (degrees, unwrapped) at N frequencies spaced "
-                    "logarithmically from START to STOP rad/s.")
+                    "logarithmically from START to STOP rad/s (Hz with --hz).")
     _input_output(bode)
-    bode.add_argument("--frequencies", metavar="START:STOP:N", default=DEFAULT_FREQUENCIES,
-                      help=f"N angular frequencies from START to STOP rad/s, logarithmic (default {DEFAULT_FREQUENCIES})")
+    bode.add_argument("--frequencies", metavar="START:STOP:N", default=None,
+                      help=f"N frequencies from START to STOP rad/s (Hz with --hz), logarithmic (default "
+                           f"{DEFAULT_FREQUENCIES} rad/s)")
+    bode.add_argument("--hz", action="store_true",
+                      help="frequencies in Hz (f = w / 2 pi) instead of rad/s: --frequencies, the table's and "
+                           "the document's frequencies and the plot's frequency axis")
     _data(bode, "the magnitude and phase at every frequency")
     dialect.add_plot(bode, "the Bode plot")
     bode.set_defaults(run=every_size(run_bode))
@@ -64,6 +70,25 @@ def register(sub):
     dialect.add_output(shapes, what="the mode shapes")
     dialect.add_plot(shapes, "the mode shapes as phasors")
     shapes.set_defaults(run=every_size(run_mode_shapes))
+
+    space = _command(
+        sub, "state-space", help="the state space A, B, C, D (named, with units) at one speed: .mat, .npz, JSON, CSV",
+        description="The linear model's state space x' = A x + B u, y = C x + D u at one speed, with the names "
+                    "and units of its states, inputs and outputs, and (where the model has mechanical "
+                    "coordinates q) its second-order form M q'' + C(v) q' + K(v) q = F u, C(v) and K(v) as "
+                    "polynomials in speed: for MATLAB (.mat), numpy (.npz), any language (JSON, YAML, CSV: one "
+                    "row per matrix entry). Layout: docs/handling.md, 'State spaces out'.")
+    dialect.late_help(space.add_argument("--outputs", metavar="NAME,...", help="the outputs"),
+                      lambda: "the outputs y, comma-separated (default: every state, then every further "
+                              "output): " + signal_help(1))
+    space.add_argument("-o", dest="output", metavar="FILE",
+                       help="write the state space to FILE (format from --format, else the suffix: .mat, .npz, "
+                            ".json, .yaml, .csv; .mat and .npz need -o)")
+    space.add_argument("--format", choices=STATE_SPACE_FORMATS, default=None,
+                       help=f"{', '.join(STATE_SPACE_FORMATS)} (default table; JSON and YAML carry a units block)")
+    dialect.add_quiet(space)
+    space.set_defaults(default_format=Format.TABLE.value, format_choices=STATE_SPACE_FORMATS,
+                       run=every_size(run_state_space))
 
     hand = _command(
         sub, "handling", one_speed=False,
@@ -219,17 +244,22 @@ def tf_text(tf, title):
     return "\n".join(lines) + "\n"
 
 
-def _frequencies(text):
+def _frequencies(text, hz=False):
+    """``--frequencies`` as angular frequencies (rad/s); with ``hz`` the text is in Hz."""
     # lazy: the library loads numpy; bikemass --help must not
     from ..analysis.handling.frequency import log_frequencies
     # lazy: the library loads numpy; bikemass --help must not
     from ..core.errors import InputError
-    expected = "START:STOP:N in rad/s with START < STOP and N >= 2 points (logarithmic)"
+    unit, scale = ("Hz", 2 * math.pi) if hz else ("rad/s", 1.0)
+    expected = f"START:STOP:N in {unit} with START < STOP and N >= 2 points (logarithmic)"
+    if text is None:
+        start, stop, count = DEFAULT_FREQUENCIES.split(":")
+        return log_frequencies(float(start), float(stop), int(count))
     try:
         start, stop, count = text.split(":")
-        return log_frequencies(float(start), float(stop), int(count))
+        return log_frequencies(float(start) * scale, float(stop) * scale, int(count))
     except InputError as exc:
-        raise InputError("--frequencies", text, exc.expected) from None
+        raise InputError("--frequencies", text, expected if hz else exc.expected) from None
     except ValueError:
         raise InputError("--frequencies", text, expected) from None
 
@@ -241,24 +271,75 @@ def run_bode(args):
     from ..core.output import table
 
     options = dialect.figure_checked(args)
-    w = _frequencies(args.frequencies)
+    w = _frequencies(args.frequencies, args.hz)
     model = bicycle_model(args)
     fr = frequency_response(model, args.speed, _input_name(model, args.input), _output_name(model, args.response), w)
+    unit = "Hz" if args.hz else "rad/s"
+    shown = fr.frequencies / (2 * math.pi) if args.hz else fr.frequencies
 
     def render(fmt):
         if fmt in ("json", "yaml"):
-            return dialect.result_document(fr.to_dict(), fr.units(), fmt)
-        rows = list(zip(fr.frequencies.tolist(), fr.magnitude.tolist(), fr.phase.tolist()))
+            return dialect.result_document({**fr.to_dict(), "frequencies": shown.tolist()},
+                                           {**fr.units(), "frequencies": unit}, fmt)
+        rows = list(zip(shown.tolist(), fr.magnitude.tolist(), fr.phase.tolist()))
+        headers = [f"frequency ({unit})", "magnitude (dB)", "phase (deg)"]
         if fmt == "csv":
-            return dialect.csv_text(["frequency (rad/s)", "magnitude (dB)", "phase (deg)"], rows)
-        return table(["frequency (rad/s)", "magnitude (dB)", "phase (deg)"], rows, floatfmt="{:.6g}")
+            return dialect.csv_text(headers, rows)
+        return table(headers, rows, floatfmt="{:.6g}")
     dialect.emit(args, render)
     if args.plot:
         # lazy: matplotlib only for a figure
         from ..analysis.handling.figures import plot_bode
         title = f"{_title(args)}: {fr.output} / {fr.input} at {fr.speed:g} m/s"
-        dialect.save_plot(args, plot_bode(fr, title, options.size), options)
+        dialect.save_plot(args, plot_bode(fr, title, options.size, hz=args.hz), options)
     return 0
+
+
+def run_state_space(args):
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..analysis.state_space import CSV_HEADERS, state_space
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..core.errors import InputError
+
+    fmt = dialect.data_format(args)
+    if fmt in ("mat", "npz") and not args.output:
+        raise InputError("--format", fmt, f"-o FILE.{fmt} (a binary file is not written to the terminal)")
+    model = bicycle_model(args)
+    outputs = None
+    if args.outputs:
+        outputs = [_named(name.strip(), model.output_names, "--outputs") for name in args.outputs.split(",")]
+    ss = state_space(model, args.speed, outputs)
+    if fmt == "mat":
+        dialect.write_data(args, ss.to_mat())
+    elif fmt == "npz":
+        dialect.write_data(args, ss.to_npz())
+    elif fmt in ("json", "yaml"):
+        dialect.write_data(args, dialect.result_document(ss.to_dict(), ss.units(), fmt))
+    elif fmt == "csv":
+        dialect.write_data(args, dialect.csv_text(list(CSV_HEADERS), ss.csv_rows()))
+    else:
+        dialect.write_data(args, state_space_text(ss, _title(args)))
+    return 0
+
+
+def state_space_text(ss, title):
+    """A, B, C, D as labelled text tables (rows and columns named with their units)."""
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..analysis.state_space import rate_unit
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..core.output import table
+
+    def block(name, matrix, rows, row_units, columns, column_units):
+        headers = [name, *(f"{c} ({u})" for c, u in zip(columns, column_units))]
+        return table(headers, [[f"{r} ({u})", *map(float, line)] for r, u, line in zip(rows, row_units, matrix)],
+                     floatfmt="{:.6g}")
+    d_states = [rate_unit(u) for u in ss.state_units]
+    parts = [f"{title}: x' = A x + B u, y = C x + D u at {ss.speed:g} m/s (model {ss.model})",
+             block("A", ss.A, [f"d/dt {s}" for s in ss.states], d_states, ss.states, ss.state_units),
+             block("B", ss.B, [f"d/dt {s}" for s in ss.states], d_states, ss.inputs, ss.input_units),
+             block("C", ss.C, ss.outputs, ss.output_units, ss.states, ss.state_units),
+             block("D", ss.D, ss.outputs, ss.output_units, ss.inputs, ss.input_units)]
+    return "\n".join(parts)
 
 
 def _pairs(items, option):

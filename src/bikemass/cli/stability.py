@@ -1,6 +1,7 @@
 """``bikemass eig``, ``bikemass stability`` and ``bikemass compare``: eigenvalues over speed,
 critical speeds, stable ranges."""
 
+import argparse
 import math
 
 from ..core.errors import InputError, short
@@ -40,10 +41,10 @@ def register(sub):
     stab.set_defaults(run=every_size(run_stability))
 
     comp = sub.add_parser(
-        "compare", help="several riders and/or stiffnesses compared by their weave and capsize speeds",
-        description="Weave and capsize speeds and the stable speeds of every rider x stiffness: a "
-                    "figure with one line per configuration (riders as rows, stiffnesses as colours) "
-                    "and a table.")
+        "compare", help="several riders, stiffnesses and/or models compared by their weave and capsize speeds",
+        description="Weave and capsize speeds and the stable speeds of every rider x stiffness (x model with "
+                    "--models): a figure with one line per configuration (riders, or riders and models, as "
+                    "rows, stiffnesses as colours) and a table.")
     dialect.add_bike(comp)
     comp.add_argument("--riders", metavar="POSES", default="none",
                       help="comma-separated rider poses or pose files, 'none' for no rider "
@@ -51,6 +52,9 @@ def register(sub):
     _allow(comp)
     dialect.add_stiffness(comp, many=True)
     dialect.add_model(comp)
+    comp.add_argument("--models", metavar="MODELS",
+                      help="comma-separated models compared side by side, each as for --model (e.g. "
+                           "whipple,rider-lean,tyre,rider-lean+tyre); replaces --model; docs/models.md")
     dialect.add_combine(comp)
     dialect.add_speeds(comp)
     _max_speeds(comp)
@@ -170,14 +174,18 @@ def run_compare(args):
     for option, items in (("--riders", riders), ("--stiffnesses", stiffnesses)):
         if not items:
             raise InputError(option, short(getattr(args, option[2:]), 40), "a comma-separated list of at least one name")
+    models = _models(args)
     results, runs = {}, []
     for rider in riders:
-        for stiffness in stiffnesses:
-            result = stability(_built(args, rider, stiffness), speeds=speeds, max_speeds=args.max_speeds)
-            results.setdefault(_rider_name(rider), {})[_stiffness_name(stiffness)] = result
-            runs.append({"rider": rider, "stiffness": stiffness, "weave_speeds": list(result.weave_speeds),
-                         "capsize_speeds": list(result.capsize_speeds),
-                         "stable_speeds": [list(r) for r in result.stable_speeds]})
+        for model in models or (args.model,):
+            each = argparse.Namespace(**{**vars(args), "model": model})
+            row = _rider_name(rider) if not models else f"{_rider_name(rider)}, {model}"
+            for stiffness in stiffnesses:
+                result = stability(_built(each, rider, stiffness), speeds=speeds, max_speeds=args.max_speeds)
+                results.setdefault(row, {})[_stiffness_name(stiffness)] = result
+                runs.append({"rider": rider, **({"model": model} if models else {}), "stiffness": stiffness,
+                             "weave_speeds": list(result.weave_speeds), "capsize_speeds": list(result.capsize_speeds),
+                             "stable_speeds": [list(r) for r in result.stable_speeds]})
     dialect.emit(args, lambda fmt: comparison_text(runs, fmt))
     if args.plot:
         # lazy: plots/ load matplotlib; only the figure needs it
@@ -188,18 +196,36 @@ def run_compare(args):
     return 0
 
 
+def _models(args):
+    """The models of ``--models`` (canonical names, in order, each once), or ``()`` without it."""
+    if args.models is None:
+        return ()
+    names = []
+    for text in args.models.split(","):
+        try:
+            name = dialect.model_choice(text.strip())
+        except argparse.ArgumentTypeError as exc:
+            raise InputError("--models", short(text.strip(), 40), str(exc)) from None
+        if name not in names:
+            names.append(name)
+    if not names:
+        raise InputError("--models", short(args.models, 40), "a comma-separated list of at least one model")
+    return tuple(names)
+
+
 def comparison_text(runs, fmt):
-    """The weave and capsize speeds and strictly stable ranges of every rider x stiffness."""
+    """The weave and capsize speeds and strictly stable ranges of every rider x stiffness (x model)."""
     if fmt in ("json", "yaml"):
         return dialect.document({"runs": runs}, fmt)
-    rows = [[r["rider"], r["stiffness"], _speeds(r["weave_speeds"]), _speeds(r["capsize_speeds"]),
-             _ranges(r["stable_speeds"], "{:.4f}")] for r in runs]
+    model = ["model"] if runs and "model" in runs[0] else []
+    rows = [[r["rider"], *(r[k] for k in model), r["stiffness"], _speeds(r["weave_speeds"]),
+             _speeds(r["capsize_speeds"]), _ranges(r["stable_speeds"], "{:.4f}")] for r in runs]
     if fmt == "csv":
-        return dialect.csv_text(["rider", "stiffness", "weave speeds (m/s)", "capsize speeds (m/s)",
+        return dialect.csv_text(["rider", *model, "stiffness", "weave speeds (m/s)", "capsize speeds (m/s)",
                                  "stable (strict, m/s)"], rows)
     # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import table
-    return table(["rider", "stiffness", "weave speeds", "capsize speeds", "stable (strict)"], rows)
+    return table(["rider", *model, "stiffness", "weave speeds", "capsize speeds", "stable (strict)"], rows)
 
 
 def _speeds(speeds, digits=4):

@@ -15,6 +15,8 @@ from dataclasses import fields, is_dataclass
 
 import numpy as np
 
+from .tables import Tabular
+
 UNIT = "unit"
 """The dataclass field metadata key holding a field's unit (:func:`bikemass.core.results.quantity`)."""
 LONGEST = 60
@@ -71,8 +73,10 @@ def html_table(title, rows):
             f"<tbody>{cells}</tbody></table>")
 
 
-class Display:
-    """Mixin of the result types: ``_repr_html_`` and :meth:`short_repr` from :meth:`display_rows`."""
+class Display(Tabular):
+    """Mixin of the result types: ``_repr_html_`` and :meth:`short_repr` from :meth:`display_rows`;
+    ``to_frame()`` (a pandas DataFrame) from the rows a type with rows lists in ``tables()``
+    (:mod:`bikemass.core.tables`)."""
 
     def display_rows(self):
         """``[(name, short value, unit)]`` shown by ``repr`` and the HTML table: by default every

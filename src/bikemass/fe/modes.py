@@ -15,6 +15,7 @@ import scipy.linalg
 import scipy.sparse.linalg as spla
 
 from ..core.display import Display, brief
+from ..core.tables import Table
 from ..core.threads import one_blas_thread
 from .assembly import assemble
 from .boundary import clamped_keypoints, free_dofs, rigid_body_mode_count
@@ -38,6 +39,12 @@ class Modes(Display):
         """The frequencies (Hz), the boundary condition and the model's size (Jupyter's table, ``repr``)."""
         return [("frequencies_hz", ", ".join(f"{f:.4g}" for f in self.frequencies_hz), "Hz"),
                 ("bc", self.bc, ""), ("shapes", brief(self.shapes), "mass-normalised")]
+
+    def tables(self):
+        """``{"modes": Table}``: one row per mode, ``mode`` (1, 2, ...) and ``frequency`` (Hz). The
+        boundary condition is the frame's ``attrs``."""
+        columns = {"mode": np.arange(1, len(self.frequencies_hz) + 1), "frequency": self.frequencies_hz}
+        return {"modes": Table(columns, {"frequency": "Hz"}, {"bc": self.bc})}
 
     def to_dict(self):
         """``{"frequencies": [Hz, ...]}`` (the unit goes in the document's ``units`` block)."""

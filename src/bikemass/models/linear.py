@@ -245,6 +245,78 @@ class LinearModel:
         C = self.output_matrix(outputs)
         return self.state_matrix(speed), self.input_matrix(speed), C, np.zeros((len(C), len(self.inputs)))
 
+    def to_scipy(self, speed, outputs=None):
+        """The state space at one speed as a :class:`scipy.signal.StateSpace` (continuous time).
+
+        Parameters
+        ----------
+        speed : float
+            Forward speed (m/s).
+        outputs : sequence of str, optional
+            Names of the outputs (states or further outputs, :attr:`output_names`); default every
+            state and every further output.
+
+        Returns
+        -------
+        scipy.signal.StateSpace
+            ``A`` (N, N), ``B`` (N, m), ``C`` (p, N), ``D`` (p, m) in SI; the rows and columns in the
+            order of :attr:`states`, :attr:`inputs` and ``outputs`` (scipy keeps no names).
+
+        Examples
+        --------
+        >>> import bikemass as bm
+        >>> sys = bm.linear_model(bm.parameters("benchmark")).to_scipy(5.0)
+        >>> sys.A.shape, sys.B.shape, sys.C.shape
+        ((6, 6), (6, 2), (7, 6))
+        """
+        # lazy: scipy.signal is needed only for this export, and loads slowly
+        import scipy.signal
+        return scipy.signal.StateSpace(*self.state_space(float(speed), self._outputs(outputs)))
+
+    def to_control(self, speed, outputs=None):
+        """The state space at one speed as a python-control ``StateSpace`` with the signal names.
+
+        Needs python-control (``pip install 'bikemass[control]'``).
+
+        Parameters
+        ----------
+        speed : float
+            Forward speed (m/s).
+        outputs : sequence of str, optional
+            Names of the outputs (states or further outputs, :attr:`output_names`); default every
+            state and every further output.
+
+        Returns
+        -------
+        control.StateSpace
+            Continuous time, named after the model (``sys.name``), its states, inputs and outputs
+            named as here (``roll-angle``, ``steer-torque``, ...); SI units.
+
+        Raises
+        ------
+        ImportError
+            python-control is not installed.
+
+        Examples
+        --------
+        >>> import bikemass as bm
+        >>> sys = bm.linear_model(bm.parameters("benchmark")).to_control(5.0)
+        >>> sys.input_labels, sys.nstates
+        (['roll-torque', 'steer-torque'], 6)
+        """
+        try:
+            # lazy: python-control is an optional extra, needed only for this export
+            import control
+        except ImportError as exc:
+            raise ImportError("LinearModel.to_control needs python-control: pip install 'bikemass[control]'") from exc
+        names = self._outputs(outputs)
+        A, B, C, D = self.state_space(float(speed), names)
+        return control.ss(A, B, C, D, states=list(self.state_names), inputs=list(self.input_names),
+                          outputs=list(names), name=self.name)
+
+    def _outputs(self, outputs):
+        return self.output_names if outputs is None else tuple(outputs)
+
     def __repr__(self):
         return (f"LinearModel({self.name!r}, states=({', '.join(self.state_names)}), "
                 f"inputs=({', '.join(self.input_names)}), degree={len(self.A) - 1})")

@@ -10,6 +10,7 @@ from dataclasses import asdict, dataclass, fields, replace
 import numpy as np
 
 from ..core.display import Display, html_table
+from ..core.tables import Table
 
 DESCRIPTIONS = {
     "w": "wheelbase [m]", "c": "trail [m]", "lam": "steer-axis tilt [rad]",
@@ -78,6 +79,16 @@ class BenchmarkParameters(Display):
     def to_dict(self):
         """Plain ``{name: float}`` in the Meijaard order."""
         return {k: float(v) for k, v in asdict(self).items()}
+
+    def tables(self):
+        """``{"parameters": Table}``: one row per parameter: ``name``, ``value`` (SI), ``unit`` and
+        ``description``, in :data:`NAMES` order."""
+        units = parameter_units()
+        names = list(self.to_dict())
+        return {"parameters": Table({"name": names, "value": [float(getattr(self, n)) for n in names],
+                                     "unit": [units[n] for n in names],
+                                     "description": [DESCRIPTIONS[n][:DESCRIPTIONS[n].rindex("[")].strip()
+                                                     for n in names]})}
 
     def replace(self, **changes):
         """A copy with some parameters changed."""

@@ -6,12 +6,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core.tables import Table, Tabular
 from .layout import chunk_path, numeric_keys
 from .table import NUMBERS, OUTPUTS, arrow_chunk, parquet_writer, read_chunk
 
 
 @dataclass(frozen=True, eq=False)
-class SweepResult(Sequence):
+class SweepResult(Sequence, Tabular):
     """The result rows of a sweep in ``folder`` (one ``{key: value, output: value}`` dict per
     configuration, in the spec's order, as ``results.csv`` has them), with the ``notes`` of the
     run (why it ran where it ran), the number ``refused`` by the model and the first refusal
@@ -70,6 +71,14 @@ class SweepResult(Sequence):
         return len(self) == len(other) and all(a == b for a, b in zip(self, other))
 
     __hash__ = None
+
+    def tables(self):
+        """``{"rows": Table}``: one row per configuration, the varied keys (as the spec names them)
+        then the outputs (``weave_speed``, ``capsize_speed``, ``stable_from``, ``stable_to`` in m/s and
+        ``total_mass`` in kg, ``nan`` where there is none; ``error``), as ``results.csv`` has them."""
+        names = (*self.spec.keys, *OUTPUTS)
+        units = {n: "kg" if n == "total_mass" else "m/s" for n in NUMBERS}
+        return {"rows": Table(self.columns(names), units, {"folder": str(self.folder), "refused": self.refused})}
 
     def column(self, name):
         """Column ``name`` of every row: a float array (``nan`` for an empty cell) for the numbers

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core.results import Result, quantity
+from ...core.tables import Table, complex_columns
 from ...core.frozen import short_repr
 from .eigen import damping_ratio, eigen_sweep, natural_frequency
 from .naming import mode_names, settle_splits, split_rank, standstill_labels
@@ -60,6 +61,16 @@ class Modes(Result):
     def units(self):
         """The ``units`` block of :meth:`to_dict`."""
         return {"speeds": "m/s", "eigenvalues": self.field_units()["eigenvalues"]}
+
+    def tables(self):
+        """``{"eigenvalues": Table}``: one row per speed, the real and imaginary part of each mode's
+        eigenvalue (``"weave 1 real"``, ``"weave 1 imaginary"``, ..., 1/s)."""
+        columns, units = {"speed": self.speeds}, {"speed": "m/s"}
+        for label in self.labels:
+            c, u = complex_columns(label, self[label], "1/s")
+            columns.update(c)
+            units.update(u)
+        return {"eigenvalues": Table(columns, units, {"labels": self.labels})}
 
     def __repr__(self):
         v = self.speeds

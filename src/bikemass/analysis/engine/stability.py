@@ -6,6 +6,7 @@ import numpy as np
 
 from ...core.display import brief
 from ...core.results import Result, quantity
+from ...core.tables import Table
 from ...core.frozen import freeze, short_repr
 from .critical import critical_speeds
 from .crossings import OSCILLATORY, REAL, Crossing, Eigenvalues, circle_speeds
@@ -70,6 +71,26 @@ class StabilityResult(Result):
     mode_ranges: object = quantity("m/s", default=None)
     stiffness: object = quantity("N m/rad", default=None)
     unstable_at_start: tuple = ()
+
+    def tables(self):
+        """``{"eigenvalues": Table, "crossings": Table}``: the modes' eigenvalues at every speed (as
+        :meth:`Modes.tables`) with ``stable`` (every real part below -1e-10 1/s, the grid ranges'
+        criterion) and ``marginally_stable`` (an eigenvalue slower than :attr:`marginal` rad/s also
+        counts); and one row per crossing
+        of ``Re = 0`` (speed, kind, direction, mode, frequency). The critical speeds, the stable
+        speeds and the model's name are the frames' ``attrs``."""
+        eig = self.modes.tables()["eigenvalues"]
+        columns = {**eig.columns, "stable": np.all(is_stable(self.eigenvalues), axis=1),
+                   "marginally_stable": np.all(is_stable(self.eigenvalues, self.marginal), axis=1)}
+        attrs = {"model": self.model.name, "weave_speeds": tuple(self.weave_speeds),
+                 "capsize_speeds": tuple(self.capsize_speeds), "stable_speeds": tuple(self.stable_speeds),
+                 "marginal": self.marginal, **eig.attrs}
+        crossings = Table({"speed": [c.speed for c in self.crossings], "kind": [c.kind for c in self.crossings],
+                           "direction": [c.direction for c in self.crossings],
+                           "mode": [c.mode for c in self.crossings],
+                           "frequency": [c.frequency for c in self.crossings]},
+                          {"speed": "m/s", "frequency": "rad/s"}, {"model": self.model.name})
+        return {"eigenvalues": Table(columns, eig.units, attrs), "crossings": crossings}
 
     @property
     def speeds(self):

@@ -30,8 +30,8 @@ def _many(value, kind, what):
 
 
 def plot_bode(responses: "FrequencyResponse | list[FrequencyResponse]", title: str = "",
-              size: "tuple[float, float] | None" = None) -> Figure:
-    """Figure: magnitude (dB) and phase (deg) against angular frequency (rad/s, logarithmic).
+              size: "tuple[float, float] | None" = None, hz: bool = False) -> Figure:
+    """Figure: magnitude (dB) and phase (deg) against frequency (rad/s or Hz, logarithmic).
 
     Parameters
     ----------
@@ -41,6 +41,8 @@ def plot_bode(responses: "FrequencyResponse | list[FrequencyResponse]", title: s
         Title (default: what is drawn).
     size : (float, float), optional
         Figure size (width, height) in inches.
+    hz : bool
+        The frequency axis in Hz (``f = w / 2 pi``, as many papers draw it) instead of rad/s.
 
     Returns
     -------
@@ -64,18 +66,21 @@ def plot_bode(responses: "FrequencyResponse | list[FrequencyResponse]", title: s
     >>> fig = bm.plot_bode(curves)
     >>> [ax.get_ylabel() for ax in fig.axes]
     ['magnitude, dB (rad/(N m))', 'phase, deg']
+    >>> bm.plot_bode(curves, hz=True).axes[1].get_xlabel()
+    'frequency, Hz'
     """
     items = _many(responses, FrequencyResponse, "a FrequencyResponse (bm.frequency_response) or a list of them")
     fig = new_figure(size or BODE_SIZE)
     mag, phase = fig.subplots(2, 1, sharex=True)
     for r in items:
         label = f"{r.speed:g} m/s"
-        mag.semilogx(r.frequencies, r.magnitude, label=label)
-        phase.semilogx(r.frequencies, r.phase, label=label)
+        x = r.frequencies / (2 * np.pi) if hz else r.frequencies
+        mag.semilogx(x, r.magnitude, label=label)
+        phase.semilogx(x, r.phase, label=label)
     first = items[0]
     mag.set_ylabel(f"magnitude, dB ({first.ratio_unit})")
     phase.set_ylabel("phase, deg")
-    phase.set_xlabel("frequency, rad/s")
+    phase.set_xlabel("frequency, Hz" if hz else "frequency, rad/s")
     for ax in (mag, phase):
         ax.grid(True, which="both", alpha=0.3)
     if len(items) > 1:

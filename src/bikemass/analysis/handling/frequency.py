@@ -14,6 +14,7 @@ import scipy.linalg
 from ...core.display import Display
 from ...core.errors import InputError, short
 from ...core.frozen import readonly, short_repr
+from ...core.tables import Table
 from .plant import linear_model, signal_unit, siso
 
 MAX_FREQUENCIES = 1_000_000
@@ -150,6 +151,17 @@ class FrequencyResponse(Display):
         """The unit of each key of :meth:`to_dict` that holds a quantity."""
         return {"speed": "m/s", "frequencies": "rad/s", "magnitude": f"dB (of {self.ratio_unit})",
                 "phase": "deg"}
+
+    def tables(self):
+        """``{"response": Table}``: one row per frequency: ``frequency`` (rad/s), ``frequency_hz``
+        (Hz), ``magnitude`` (dB), ``phase`` (deg), ``real`` and ``imaginary`` (of ``G(j w)``, in
+        :attr:`ratio_unit`). Input, output and speed are the frame's ``attrs``."""
+        columns = {"frequency": self.frequencies, "frequency_hz": self.frequencies / (2 * np.pi),
+                   "magnitude": self.magnitude, "phase": self.phase, "real": self.values.real,
+                   "imaginary": self.values.imag}
+        units = {"frequency": "rad/s", "frequency_hz": "Hz", "magnitude": f"dB (of {self.ratio_unit})",
+                 "phase": "deg", "real": self.ratio_unit, "imaginary": self.ratio_unit}
+        return {"response": Table(columns, units, {"input": self.input, "output": self.output, "speed": self.speed})}
 
     def __repr__(self):
         w = self.frequencies

@@ -17,6 +17,7 @@ import numpy as np
 from ...core.display import Display
 from ...core.errors import InputError, short
 from ...core.frozen import FrozenMap, readonly, short_repr
+from ...core.tables import Table
 from ...core.threads import one_blas_thread
 from .discrete import march
 from .gains import as_gains
@@ -109,6 +110,13 @@ class LaneChange(Display):
     def unit_block(self):
         """The unit of each key of :meth:`to_dict` that holds a quantity."""
         return {"speed": "m/s", "time": "s", "road": "m", "command": "m", **self.units}
+
+    def tables(self):
+        """``{"signals": Table}``: one row per sample: ``time`` (s), ``road`` and ``command`` (m) and
+        every signal in its unit. Speed and stability are the frame's ``attrs``."""
+        columns = {"time": self.time, "road": self.road, "command": self.command, **dict(self.signals)}
+        units = {k: u for k, u in self.unit_block().items() if k in columns}
+        return {"signals": Table(columns, units, {"speed": self.speed, "stable": bool(self.stable)})}
 
     def __repr__(self):
         return short_repr(self, ("speed", f"{self.speed:g} m/s"), ("time", f"0..{self.time[-1]:g} s x {len(self.time)}"),

@@ -16,6 +16,7 @@ import numpy as np
 
 from ...core.display import Display
 from ...core.frozen import readonly, short_repr
+from ...core.tables import Table
 from ..engine.modes import follow_modes
 from .plant import check_speed, linear_model
 
@@ -94,6 +95,21 @@ class ModeShapes(Display):
         """``{coordinate: (amplitude, phase in deg)}`` of the mode ``label``."""
         i = self.labels.index(label)
         return {c: (float(self.amplitude[i, k]), float(self.phase[i, k])) for k, c in enumerate(self.coordinates)}
+
+    def tables(self):
+        """``{"shapes": Table}``: one row per mode and coordinate (``bikemass mode-shapes``'s table):
+        ``mode``, ``name``, the eigenvalue's ``real`` and ``imaginary`` parts (1/s), ``coordinate``,
+        its ``unit``, ``amplitude`` (per unit of the mode's reference coordinate) and ``phase`` (deg).
+        The speed is the frame's ``attrs``."""
+        k = len(self.coordinates)
+        z = np.repeat(self.eigenvalues, k)
+        columns = {"mode": list(np.repeat(self.labels, k)), "name": list(np.repeat(self.names, k)),
+                   "real": z.real, "imaginary": z.imag, "coordinate": list(self.coordinates) * len(self.labels),
+                   "unit": list(self.units) * len(self.labels), "amplitude": self.amplitude.ravel(),
+                   "phase": self.phase.ravel()}
+        units = {"real": "1/s", "imaginary": "1/s", "amplitude": "coordinate's unit per unit of the reference",
+                 "phase": "deg"}
+        return {"shapes": Table(columns, units, {"speed": self.speed})}
 
     def to_dict(self):
         """Plain data: speed, coordinates, and per mode its label, name, eigenvalue ``[re, im]``,

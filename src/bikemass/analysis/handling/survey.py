@@ -13,6 +13,7 @@ import numpy as np
 from ...core.display import Display
 from ...core.errors import BikemassWarning, InputError, short
 from ...core.frozen import readonly, short_repr
+from ...core.tables import Table
 from ...core.limits import MAX_SPEED
 from ...core.threads import one_blas_thread
 from .gains import NAMES, UNITS, as_gains, read_gain_table
@@ -123,6 +124,23 @@ class HandlingResult(Display):
     def gain(self, name):
         """One gain (``k_delta``, ...) at every speed, (n,); ``nan`` without gains."""
         return readonly([getattr(g, name) if g is not None else np.nan for g in self.gains])
+
+    def tables(self):
+        """``{"speeds": Table, "hqm": Table}``: one row per speed (the five gains in their units,
+        ``nan`` where none were found; ``gain_source``, ``closed_loop_stable``, ``max_real`` 1/s,
+        ``hqm_peak``, ``hqm_peak_frequency`` rad/s, ``level``), and one row per frequency of the HQM
+        (``frequency`` rad/s, then one column per speed, named by the speed in m/s)."""
+        gains = {n: self.gain(n) for n in NAMES}
+        columns = {"speed": self.speeds, **gains, "gain_source": list(self.gain_source),
+                   "closed_loop_stable": self.closed_loop_stable, "max_real": self.max_real,
+                   "hqm_peak": self.hqm_peak, "hqm_peak_frequency": self.hqm_peak_frequency,
+                   "level": list(self.levels)}
+        units = {"speed": "m/s", **UNITS, "max_real": "1/s", "hqm_peak": "1", "hqm_peak_frequency": "rad/s"}
+        attrs = {"lateral_feedback": self.lateral}
+        hqm = {"frequency": self.hqm_frequencies, **{f"{v:g}": row for v, row in zip(self.speeds, self.hqm)}}
+        return {"speeds": Table(columns, units, attrs),
+                "hqm": Table(hqm, {"frequency": "rad/s", **{k: "1" for k in hqm if k != "frequency"}},
+                             {**attrs, "columns": "speeds in m/s"})}
 
     def to_dict(self):
         """Plain data: speeds, gains, gain_source, closed_loop_stable, closed_loop_max_real,

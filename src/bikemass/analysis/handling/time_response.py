@@ -17,6 +17,7 @@ from ...core.choices import closest
 from ...core.display import Display
 from ...core.errors import InputError, short, wrong_type
 from ...core.frozen import FrozenMap, readonly, short_repr
+from ...core.tables import Table
 from .discrete import march
 from .plant import check_speed, input_index, linear_model
 
@@ -129,6 +130,13 @@ class TimeResponse(Display):
     def unit_block(self):
         """The unit of each key of :meth:`to_dict` that holds a quantity."""
         return {"speed": "m/s", "time": "s", **dict(zip(self.names, self.units))}
+
+    def tables(self):
+        """``{"states": Table}``: one row per sample, ``time`` (s) and every state in its unit. The
+        speed and the inputs applied are the frame's ``attrs``."""
+        columns = {"time": self.time, **{name: self[name] for name in self.names}}
+        attrs = {"speed": self.speed, "inputs": {k: tuple(v) for k, v in self.inputs.items()}}
+        return {"states": Table(columns, {"time": "s", **dict(zip(self.names, self.units))}, attrs)}
 
     def __repr__(self):
         t = self.time

@@ -21,6 +21,7 @@ import scipy.linalg
 
 from ...core.display import Display
 from ...core.frozen import readonly, short_repr
+from ...core.tables import Table
 from .plant import linear_model, siso, signal_unit
 
 ORTHOGONAL = 1e-12
@@ -165,6 +166,16 @@ class TransferFunction(Display):
     def units(self):
         """The unit of each key of :meth:`to_dict` that holds a quantity."""
         return {"speed": "m/s", "zeros": ROOTS_UNIT, "poles": ROOTS_UNIT, "gain": self.gain_unit}
+
+    def tables(self):
+        """``{"roots": Table}``: one row per zero and pole: ``part`` (``zero``, ``pole``), ``real`` and
+        ``imaginary`` (1/s). Input, output, speed, gain and its unit are the frame's ``attrs``."""
+        roots = np.concatenate([self.zeros, self.poles])
+        columns = {"part": ["zero"] * len(self.zeros) + ["pole"] * len(self.poles), "real": roots.real,
+                   "imaginary": roots.imag}
+        attrs = {"input": self.input, "output": self.output, "speed": self.speed, "gain": self.gain,
+                 "gain_unit": self.gain_unit}
+        return {"roots": Table(columns, {"real": "1/s", "imaginary": "1/s"}, attrs)}
 
     def __repr__(self):
         return short_repr(self, ("input", self.input), ("output", self.output), ("speed", f"{self.speed:g} m/s"),
