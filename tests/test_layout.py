@@ -32,6 +32,7 @@ RANKS = {
     "analysis": 7,    # stability, sensitivity, uncertainty
     "study": 8,       # the thesis study
     "sweep": 8,       # design sweeps
+    "design": 8,      # design by optimisation
     "web": 9,         # the web page (a shell)
     "cli": 10,        # the command line (a shell; bikemass serve starts the web page)
 }
