@@ -13,12 +13,11 @@ do not, ``converged`` is false and the result says along which variable the kink
 """
 
 import time
-import warnings
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.errors import BikemassWarning, InputError, short
+from ..core.errors import InputError, short
 from ..core.results import Result, quantity
 from ..models.parameters import NAMES, parameter_units
 from .metrics import metric
@@ -155,24 +154,18 @@ def optimise(spec: "OptimiseSpec | str", progress=None) -> OptimiseResult:
     """
     start_time = time.perf_counter()
     spec = check_spec(spec)
-    with warnings.catch_warnings(record=True) as caught:      # the search's: the design's own are warned below
-        warnings.simplefilter("always")
-        result = _search(spec, progress, start_time)
-    seen = {str(w.message) for w in caught if issubclass(w.category, BikemassWarning)}
-    spec.scenario().build(Problem(spec).changes([result.variables[v.key] for v in spec.variables]))
-    if seen:
-        result = replace(result, notes=(*result.notes, f"designs the search visited raised warnings ({len(seen)} "
-                                        "distinct); the design's own are warned as usual"))
+    problem = Problem(spec)
+    result = _search(spec, problem, progress, start_time)
+    problem.warn([result.variables[v.key] for v in spec.variables])
     return result
 
 
-def _search(spec, progress, start_time):
-    """:func:`optimise` of a checked spec, warnings left to the caller."""
+def _search(spec, problem, progress, start_time):
+    """:func:`optimise` of a checked spec on its :class:`~bikemass.design.problem.Problem`."""
     # lazy: scipy's optimizers and quasi-Monte Carlo load in about 0.3 s; only a search needs them
     from scipy.optimize import minimize
     from scipy.stats import qmc
 
-    problem = Problem(spec)
     target_metric = metric(spec.objective)
     constraints = [(metric(c.metric), c) for c in spec.constraints]
     lo = np.array([v.low for v in spec.variables])

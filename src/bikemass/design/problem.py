@@ -9,6 +9,7 @@ for a benchmark parameter varied by name, a central difference of relative step
 rider re-seated on every design).
 """
 
+import warnings
 from functools import cached_property
 
 import numpy as np
@@ -35,7 +36,11 @@ class Design:
     def __init__(self, problem, x):
         self.problem, self.x = problem, x
         self.changes = problem.changes(x)
-        self.built = problem.scenario.build(self.changes)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            self.built = problem.scenario.build(self.changes)
+        self.warnings = tuple(caught)
+        """The warnings building the design raised (kept, not shown: :meth:`Problem.warn` shows a design's)."""
 
     @cached_property
     def critical(self):
@@ -70,6 +75,12 @@ class Problem:
             found = self._designs[key] = Design(self, np.array(key))
             self.builds += 1
         return found
+
+    def warn(self, x):
+        """Warn again what building design ``x`` warned (the search keeps every design's warnings to
+        itself: hundreds of designs would repeat them)."""
+        for w in self.design(x).warnings:
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
 
     # -- values ----------------------------------------------------------------------------
     def value(self, metric, x):
