@@ -268,6 +268,7 @@ INVERSES = {
     "bikemass.analysis.sensitivity": "left eigenvectors (eigenvalue derivatives)",
     "bikemass.analysis.uncertainty": "left eigenvectors (eigenvalue derivatives)",
     "bikemass.analysis.handling.mode_shapes": "the kinematic states of an eigenvector",
+    "bikemass.analysis.handling.tuning": "a loop's transfer function as a modal sum (left eigenvectors)",
     "bikemass.fe.stiffness": "beam stiffness condensation",
     "bikemass.fe.fork": "the fork's beam deflection",
     "bikemass.fe.twist": "the rear frame's beam deflection",

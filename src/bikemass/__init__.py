@@ -48,6 +48,7 @@ _API = {
     "Combine": "core.choices", "Method": "core.choices", "Overlap": "core.choices",
     "Procedure": "core.choices", "Beam": "core.choices", "Source": "core.choices", "Support": "core.choices",
     "MaterialName": "core.choices", "Grip": "core.choices", "EigenPart": "core.choices", "Format": "core.choices",
+    "Tuning": "core.choices",
     "Bicycle": "bicycle", "Rider": "rider", "BenchmarkParameters": "models.parameters",
     "PARAMETER_NAMES": "models.parameters", "InputError": "core.errors", "BikemassWarning": "core.errors",
     "load_parameter_text": "bicycle.parameter_text", "MeasuredParameters": "bicycle.parameter_text",

@@ -42,7 +42,7 @@ def objective_slices(spec, result, points=SLICE_POINTS):
     positions = np.linspace(0.0, 1.0, points)
     values = np.full((len(x0), points), np.nan)
     feasible = np.zeros((len(x0), points), dtype=bool)
-    bounds = [(metric(c.metric), c) for c in spec.constraints]
+    bounds = [(metric(c.metric), c) for c in spec.all_constraints]
     for k, v in enumerate(spec.variables):
         for j, s in enumerate(positions):
             x = x0.copy()

@@ -25,11 +25,14 @@ import numpy as np
 
 from ..analysis.engine.crossings import OSCILLATORY, REAL
 from ..analysis.engine.naming import WOBBLE, family, is_weave
+from ..analysis.handling.quality import hqm_peak
+from ..analysis.handling.rider import closed_loop, rider_plant
+from ..analysis.handling.tuning import GainsNotFound, tune
 from ..core.errors import InputError, short
 from ..models.parameters import NAMES, parameter_units
 from ..rider.fit import FOOT_PER_INSEAM, SHOE, TOE_AHEAD_OF_BALL
 
-SPEED, PARAMETERS, GEOMETRY = "speed", "parameters", "geometry"
+SPEED, PARAMETERS, GEOMETRY, HANDLING = "speed", "parameters", "geometry", "handling"
 """The kinds of metric (see the module docstring)."""
 
 
@@ -75,6 +78,19 @@ UNDEFINED = {"stable-range": 0.0}
 """The value given to a speed metric where it does not exist on the span: 0 for a range's width,
 ``max_speed`` (the span's end) for every other."""
 
+HANDLINGS = {
+    "hqm-peak": ("1", "peak of the handling quality metric at the spec's speed, the rider's gains tuned by its "
+                      "tuning (hmh2012 or bmd2016); a design for which the tuning finds no gains scores 100"),
+    "closed-loop-real": ("1/s", "largest real part of the rider-and-bicycle closed loop's eigenvalues at the spec's "
+                                "speed (the gains tuned as for hqm-peak); 100 where no gains are found"),
+}
+NO_GAINS = 100.0
+"""The ``hqm-peak`` and ``closed-loop-real`` of a design for which the tuning finds no gains."""
+STABILITY_MARGIN = 1e-5
+"""1/s: where ``hqm-peak`` is optimised without a bound on ``closed-loop-real``, the closed loop is held to
+``closed-loop-real <= -STABILITY_MARGIN`` (the HQM's optima lie on the edge of closed-loop stability:
+Moore, Hubbard & Hess 2016's optimal bicycles have a lightly damped pair there)."""
+
 GEOMETRIES = {
     "toe-overlap": ("m", "how far the toe (crank forward) reaches into the front wheel's circle; negative: "
                          "the clearance (needs a rider with an inseam: a person or a chain pose)"),
@@ -87,6 +103,7 @@ def catalogue():
     out = {name: Metric(name, "m/s", SPEED, text) for name, text in SPEEDS.items()}
     out.update({name: Metric(name, unit, PARAMETERS, text) for name, (_, unit, text) in PARAMETER_FUNCTIONS.items()})
     out.update({name: Metric(name, unit, GEOMETRY, text) for name, (unit, text) in GEOMETRIES.items()})
+    out.update({name: Metric(name, unit, HANDLING, text) for name, (unit, text) in HANDLINGS.items()})
     out.update({name: Metric(name, units[name], PARAMETERS, f"benchmark parameter {name}") for name in NAMES})
     return out
 
@@ -157,3 +174,15 @@ def toe_overlap_of(bicycle, inseam):
     g = bicycle.geometry
     gap = float(np.hypot(toe[0] - g.front_axle[0], toe[2] - g.front_axle[2]))
     return g.front_wheel_radius - gap
+
+
+def handling_of(model, speed, tuning):
+    """``(hqm-peak, closed-loop-real)`` of a linear model at ``speed`` (m/s), the rider's gains tuned by
+    ``tuning``: the HQM peak and the closed loop's largest real part (1/s), :data:`NO_GAINS` for both
+    where the tuning finds no gains."""
+    plant = rider_plant(model, speed)
+    try:
+        gains = tune(plant, tuning)
+    except GainsNotFound:
+        return NO_GAINS, NO_GAINS
+    return hqm_peak(plant, gains)[0], closed_loop(plant, gains).max_real

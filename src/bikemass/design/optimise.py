@@ -167,7 +167,7 @@ def _search(spec, problem, progress, start_time):
     from scipy.stats import qmc
 
     target_metric = metric(spec.objective)
-    constraints = [(metric(c.metric), c) for c in spec.constraints]
+    constraints = [(metric(c.metric), c) for c in spec.all_constraints]
     lo = np.array([v.low for v in spec.variables])
     hi = np.array([v.high for v in spec.variables])
     span = hi - lo
@@ -201,7 +201,13 @@ def _search(spec, problem, progress, start_time):
             return 2 * (problem.value(target_metric, x) - spec.target) / scale ** 2 * g
         return (-g if spec.sense == "maximise" else g) / scale
 
-    bound_scales = {id(c): max(abs(b) for b in (c.low, c.high) if b is not None) or 1.0 for _, c in constraints}
+    bound_scales = {}
+    for m, c in constraints:             # each constraint scaled by its bounds' size or its metric's at the centre
+        try:
+            at_centre = abs(problem.value(m, x_of(centre)))
+        except InputError:
+            at_centre = 0.0
+        bound_scales[id(c)] = max(*(abs(b) for b in (c.low, c.high) if b is not None), at_centre) or 1.0
 
     def inequalities(u):
         """Every constraint as ``g >= 0`` (scaled)."""
@@ -247,9 +253,12 @@ def _search(spec, problem, progress, start_time):
             return f(u)
         return call
 
-    # screening: the centre and a scrambled Sobol sample of the box, values only
+    # screening: the design as given, the centre and a scrambled Sobol sample of the box, values only
     m = int(np.ceil(np.log2(max(8, 4 * n))))
-    points = np.vstack([centre, qmc.Sobol(d=n, scramble=True, seed=spec.seed).random_base2(m)])
+    points = [centre, *qmc.Sobol(d=n, scramble=True, seed=spec.seed).random_base2(m)]
+    given = (np.array([problem.scenario.value(v.key) for v in spec.variables]) - lo) / span
+    if np.all((given >= 0) & (given <= 1)):
+        points.insert(0, given)                 # the design as given, where it lies in the box
     screened = []
     for u in points:
         try:
@@ -284,8 +293,9 @@ def _search(spec, problem, progress, start_time):
     kinks = _kinks(raw, u_best, n, spec, scale)
     if kinks:
         notes.append("the objective is not smooth at the design (one-sided slopes differ along "
-                     + ", ".join(kinks) + "): a stable range whose end switches to another mode, or a speed "
-                     "that leaves the span; the design is the best found, not a stationary point")
+                     + ", ".join(kinks) + "): e.g. a stable range whose end switches to another mode, a speed "
+                     "that leaves the span, an HQM peak that moves to another frequency or gains that jump; the "
+                     "design is the best found, not a stationary point")
     if infeasible:
         notes.append(f"no design met every constraint (largest violation {worst:.3g}, relative)")
     for name in sorted(problem.undefined):
@@ -295,12 +305,7 @@ def _search(spec, problem, progress, start_time):
     if active:
         notes.append("at a bound of the box: " + ", ".join(active))
     metrics = {name: problem.value(metric(name), x_best) for name in spec.metrics}
-    jac_kinds = {"exact" if v.key in NAMES and not problem.design(x_best).built.choice.members
-                 else "difference" for v in spec.variables}
-    gradient = ("exact (eigenvalue derivatives and the complex step in the model's parameters)"
-                if jac_kinds == {"exact"} else
-                "exact in the model's parameters, chained with central differences (relative step 1e-4) of "
-                "the parameters with respect to the geometry (rider re-seated)")
+    gradient = _gradient_description(spec, problem.design(x_best).built.choice.members)
     return OptimiseResult(
         variables={v.key: float(x) for v, x in zip(spec.variables, x_best)},
         objective=float(problem.value(target_metric, x_best)), metric=spec.objective, sense=spec.sense,
@@ -309,6 +314,21 @@ def _search(spec, problem, progress, start_time):
         gradient=gradient, variable_units={v.key: _unit_of(v) for v in spec.variables},
         metric_units={name: metric(name).unit for name in spec.metrics},
         seconds=time.perf_counter() - start_time)
+
+
+def _gradient_description(spec, members):
+    """How the gradients of ``spec``'s metrics were computed, in words."""
+    kinds = {metric(name).kind for name in spec.metrics}
+    exact_x = all(v.key in NAMES for v in spec.variables) and not members
+    parts = []
+    if kinds - {"geometry", "handling"}:
+        parts.append("exact in the model's parameters (eigenvalue derivatives and the complex step)"
+                     + ("" if exact_x else ", chained with central differences (relative step 1e-4) of the "
+                        "parameters with respect to the design variables (geometry, the rider re-seated)"))
+    if kinds & {"geometry", "handling"}:
+        parts.append("central differences (relative step 1e-4) of "
+                     + " and ".join(sorted(n for n in spec.metrics if metric(n).kind in ("geometry", "handling"))))
+    return "; ".join(parts)
 
 
 def _unit_of(variable):

@@ -22,8 +22,8 @@ from ..core.errors import InputError
 from ..models.parameters import NAMES
 from ..rider.body import load_body
 from ..scenario.inputs import split_changes
-from .metrics import GEOMETRY, PARAMETERS, SPEED, UNDEFINED, parameter_function, parameter_gradient, \
-    speed_crossings, toe_overlap_of
+from .metrics import GEOMETRY, HANDLING, PARAMETERS, SPEED, UNDEFINED, handling_of, parameter_function, \
+    parameter_gradient, speed_crossings, toe_overlap_of
 
 STIFFNESS_CELLS = {"S_phiphi": ((0, 0),), "S_phidelta": ((0, 1),), "S_deltadelta": ((1, 1),)}
 """The independent entries of the symmetric frame stiffness S and the cell each is read from."""
@@ -46,6 +46,13 @@ class Design:
     def critical(self):
         """:class:`~bikemass.analysis.engine.critical.CriticalSpeeds` of the design's model."""
         return critical_speeds(self.built.model, self.problem.max_speed)
+
+    @cached_property
+    def handling(self):
+        """``{"hqm-peak": .., "closed-loop-real": ..}`` at the spec's speed
+        (:func:`~bikemass.design.metrics.handling_of`)."""
+        spec = self.problem.spec
+        return dict(zip(("hqm-peak", "closed-loop-real"), handling_of(self.built.model, spec.speed, spec.tuning)))
 
 
 class Problem:
@@ -91,6 +98,8 @@ class Problem:
             return float(parameter_function(metric.name)(design.built.parameters))
         if metric.kind == GEOMETRY:
             return self._toe_overlap(design.changes)
+        if metric.kind == HANDLING:
+            return design.handling[metric.name]
         value, _ = speed_crossings(metric.name, design.critical)
         if value is None:
             self.undefined.add(metric.name)
@@ -106,6 +115,8 @@ class Problem:
             return sum(dp[n] * jac[n] for n in jac)
         if metric.kind == GEOMETRY:
             return self._difference(lambda xx: self._toe_overlap(self.changes(xx)), x)
+        if metric.kind == HANDLING:
+            return self._difference(lambda xx: self.design(xx).handling[metric.name], x)
         _, parts = speed_crossings(metric.name, design.critical)
         total = np.zeros(len(x))
         for sign, crossing in parts:

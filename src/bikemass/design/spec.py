@@ -6,6 +6,8 @@ rider: person.yaml              # optional; a person is re-seated on every desig
 stiffness: infinite             # optional, as --stiffness
 model: whipple                  # optional, any --model
 max_speed: 30                   # optional: speeds on (0, max_speed] m/s
+speed: 5.0                      # m/s, for metrics taken at one speed (hqm-peak)
+tuning: hmh2012                 # for hqm-peak: hmh2012 (the 10 dB rule, default) or bmd2016
 variables:                      # any input a sweep can vary, with bounds (units allowed)
   chart.head_tube_angle: {min: 70 deg, max: 75 deg}
   chart.fork_offset: {min: 35 mm, max: 60 mm}
@@ -32,9 +34,11 @@ from ..core.units import DIMENSIONS, UnitError, dimension_of, split_quantity
 from ..models.parameters import NAMES, dimension
 from ..models.registry import BASE, parse_model
 from ..scenario.scenario import Scenario
-from .metrics import catalogue
+from ..core.choices import Tuning
+from .metrics import HANDLING, STABILITY_MARGIN, catalogue
 
-TOP_KEYS = ("bike", "rider", "stiffness", "combine", "model", "tyres", "max_speed", "variables", "maximise",
+TOP_KEYS = ("bike", "rider", "stiffness", "combine", "model", "tyres", "max_speed", "speed", "tuning", "variables",
+            "maximise",
             "minimise", "target", "constraints", "starts", "seed", "name", "description")
 SENSES = ("maximise", "minimise", "target")
 MAX_VARIABLES = 20
@@ -85,6 +89,8 @@ class OptimiseSpec:
     max_speed: float = 30.0
     starts: int = 2
     seed: int = 0
+    speed: float = None
+    tuning: str = Tuning.HMH2012.value
 
     def scenario(self):
         """The :class:`~bikemass.scenario.scenario.Scenario` every design changes."""
@@ -92,9 +98,18 @@ class OptimiseSpec:
                         origin=self.source)
 
     @property
+    def all_constraints(self):
+        """The constraints, and where ``hqm-peak`` is optimised without a bound on ``closed-loop-real``,
+        the closed loop held stable (:data:`~bikemass.design.metrics.STABILITY_MARGIN`)."""
+        named = {c.metric for c in self.constraints}
+        if "hqm-peak" in (self.objective, *named) and "closed-loop-real" not in named:
+            return (*self.constraints, Bounds("closed-loop-real", None, -STABILITY_MARGIN))
+        return self.constraints
+
+    @property
     def metrics(self):
-        """The objective's metric and the constraints', each once, in that order."""
-        return tuple(dict.fromkeys((self.objective, *(c.metric for c in self.constraints))))
+        """The objective's metric and every constraint's, each once, in that order."""
+        return tuple(dict.fromkeys((self.objective, *(c.metric for c in self.all_constraints))))
 
 
 def _near(spec_path, name):
@@ -180,8 +195,12 @@ def read_spec(path):
     max_speed = node["max_speed"].number("speed", positive=True) if node.has("max_speed") else 30.0
     if max_speed > MAX_SPEED:
         node.fail(f"a speed of at most {MAX_SPEED:g} m/s, got {max_speed:g}", "max_speed")
+    speed = node["speed"].number("speed", nonnegative=True) if node.has("speed") else None
+    if speed is not None and speed > MAX_SPEED:
+        node.fail(f"a speed of at most {MAX_SPEED:g} m/s", "speed")
+    tuning = node["tuning"].string(Tuning.values()) if node.has("tuning") else Tuning.HMH2012.value
     spec = OptimiseSpec(
-        source=str(path), bike=_near(path, node["bike"].string()),
+        source=str(path), speed=speed, tuning=tuning, bike=_near(path, node["bike"].string()),
         rider=_near(path, node["rider"].string()) if node.has("rider") else "none",
         stiffness=_near(path, node["stiffness"].string()) if node.has("stiffness") else "infinite",
         combine=node["combine"].string(("exact", "thesis")) if node.has("combine") else "exact",
@@ -209,6 +228,8 @@ def read_spec(path):
                 item.fail("min <= max")
             items.append(Bounds(name, low, high))
         constraints = tuple(items)
+    if speed is None and any(catalogue()[m].kind == HANDLING for m in (objective, *(c.metric for c in constraints))):
+        node.fail("speed: the speed (m/s) at which hqm-peak is taken", "speed")
     starts = _whole(node, "starts", 2, 1, MAX_STARTS)
     seed = _whole(node, "seed", 0, 0, 2 ** 32 - 1)
     return OptimiseSpec(**{**spec.__dict__, "variables": design, "constraints": constraints, "starts": starts,
