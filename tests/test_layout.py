@@ -32,6 +32,7 @@ RANKS = {
     "analysis": 7,    # stability, sensitivity, uncertainty
     "study": 8,       # the thesis study
     "sweep": 8,       # design sweeps
+    "design": 8,      # design by optimisation
     "web": 9,         # the web page (a shell)
     "cli": 10,        # the command line (a shell; bikemass serve starts the web page)
 }
@@ -267,6 +268,7 @@ INVERSES = {
     "bikemass.analysis.sensitivity": "left eigenvectors (eigenvalue derivatives)",
     "bikemass.analysis.uncertainty": "left eigenvectors (eigenvalue derivatives)",
     "bikemass.analysis.handling.mode_shapes": "the kinematic states of an eigenvector",
+    "bikemass.analysis.handling.tuning": "a loop's transfer function as a modal sum (left eigenvectors)",
     "bikemass.fe.stiffness": "beam stiffness condensation",
     "bikemass.fe.fork": "the fork's beam deflection",
     "bikemass.fe.twist": "the rear frame's beam deflection",

@@ -49,12 +49,14 @@ _API = {
     "Combine": "core.choices", "Method": "core.choices", "Overlap": "core.choices",
     "Procedure": "core.choices", "Beam": "core.choices", "Source": "core.choices", "Support": "core.choices",
     "MaterialName": "core.choices", "Grip": "core.choices", "EigenPart": "core.choices", "Format": "core.choices",
+    "Tuning": "core.choices",
     "Bicycle": "bicycle", "Rider": "rider", "BenchmarkParameters": "models.parameters",
     "PARAMETER_NAMES": "models.parameters", "InputError": "core.errors", "BikemassWarning": "core.errors",
     "load_parameter_text": "bicycle.parameter_text", "MeasuredParameters": "bicycle.parameter_text",
     "ParameterFileWarning": "bicycle.parameter_text",
     "load_parameter_set": "bicycle.parameter_sets", "ParameterSetFile": "bicycle.parameter_sets",
     "RiderLeanParameters": "models.lean",
+    "optimise": "design.optimise", "OptimiseResult": "design.optimise", "plot_optimisation": "design.figures",
 }
 """Public name -> the module (under ``bikemass``) that defines it."""
 

@@ -102,6 +102,12 @@ def register(sub):
     hand.add_argument("--gains", metavar="FILE.csv",
                       help="given gains: a CSV with the header speed,kDelta,kPhiDot,kPhi,kPsi,kY "
                            "(the published tables' form) holding every speed asked for")
+    hand.add_argument("--tuning", choices=("hmh2012", "bmd2016"), default="hmh2012",
+                      help="how gains are tuned where none are given: hmh2012 (default; Hess, Moore & Hubbard "
+                           "2012: each inner loop's neuromuscular peak 10 dB above its valley) or bmd2016 (Moore, "
+                           "Hubbard & Hess 2016: a pole pair of each inner loop on the damping lines 0.1289 and "
+                           "0.0855; finds the negative k_delta of their optimal bicycles); both cross the outer "
+                           "loops over at 2, 1 and 0.5 rad/s")
     _data(hand, "the gains, stability and HQM peaks (CSV: a gains file with more columns)")
     dialect.add_plot(hand, "the HQM against frequency and its peak against speed")
     hand.add_argument("--lane-change", metavar="FILE",
@@ -504,7 +510,8 @@ def run_handling(args):
         raise InputError("--speeds", "(missing)", "the speeds in m/s (V1,V2,...), or a --gains file whose speeds are used")
     speeds = None if args.speeds is None else _speeds(args.speeds)
     model = bicycle_model(args)
-    result = _with_option_names(lambda: handling(model, speeds, args.gains), {"speeds": "--speeds"})
+    result = _with_option_names(lambda: handling(model, speeds, args.gains, tuning=args.tuning),
+                                {"speeds": "--speeds"})
 
     def render(fmt):
         if fmt in ("json", "yaml"):

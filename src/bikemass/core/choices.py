@@ -122,6 +122,29 @@ class Procedure(Choice):
     """Williams (2015) Eq. 3.31-3.34 unit rotations."""
 
 
+class Tuning(Choice):
+    """How the rider model's gains are chosen at each speed (docs/handling.md, "The gains").
+
+    See Also
+    --------
+    bikemass.handling : Takes it as ``tuning=``.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> for tuning in bm.Tuning:
+    ...     g = bm.handling(bm.parameters("benchmark"), [5.0], tuning=tuning).gains[0]
+    ...     print(f"{tuning:8s} k_delta {g.k_delta:.3f}, k_phi_dot {g.k_phi_dot:.4f}")
+    hmh2012  k_delta 46.545, k_phi_dot -0.0522
+    bmd2016  k_delta 46.552, k_phi_dot -0.0522
+    """
+
+    HMH2012 = "hmh2012"
+    """Hess, Moore & Hubbard (2012): each inner loop's neuromuscular peak 10 dB above its valley (the default)."""
+    BMD2016 = "bmd2016"
+    """Moore, Hubbard & Hess (2016): one pole pair of each inner loop on the damping lines 0.1289 and 0.0855."""
+
+
 class Beam(Choice):
     """Beam theory of the frame's finite elements.
 

@@ -28,7 +28,7 @@ from ..bicycle.loader import _is_parameter_text, _with_base, bicycle_from_mappin
 from ..bicycle.model import BODIES, Bicycle
 from ..bicycle.parameter_sets import RIDER_LEAN, kind_of, read_parameter_set
 from ..bicycle.parameter_text import load_parameter_text
-from ..bicycle.sizes import split_size
+from ..bicycle.sizes import select_size, split_size
 from ..core.choices import RIGID
 from ..core.config import Node, load_yaml
 from ..core.errors import InputError
@@ -357,6 +357,19 @@ class Inputs:
             doc = self._document(base, changes, self._bike_source, self._size_index)
             return bicycle_from_mapping(doc, self._bike_source, self._size)
         return _lru(self._cache("bicycles"), changes, build)
+
+    def bicycle_document(self, changes=()):
+        """The bicycle's YAML document with dotted-path ``changes`` (``((path, value), ...)``), one size of
+        a size run picked and its chart ready to change (:meth:`_changeable_chart`): the document
+        :meth:`bicycle` builds the changed bicycle from, what a changed design is written as."""
+        self._read()
+        if self._measured is not None or self._fixed is not None or self.lean_set is not None:
+            raise InputError(self.origin, "bike", "a bicycle YAML or chart to write a changed design as (this "
+                             "bicycle is a parameter set)")
+        chart = any(path.split(".")[0] == CHART_KEY for path, _ in changes)
+        doc = self._document(self._changeable_chart() if chart else self._bike_doc, changes, self._bike_source,
+                             self._size_index)
+        return select_size(Node(doc, self._bike_source, ""), self._size).value
 
     def _changeable_chart(self):
         """The bicycle document with its chart ready to change: the published redundant values

@@ -10,6 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ...core.choices import Tuning, check
 from ...core.display import Display
 from ...core.errors import BikemassWarning, InputError, short
 from ...core.frozen import readonly, short_repr
@@ -20,7 +21,7 @@ from .gains import NAMES, UNITS, as_gains, read_gain_table
 from .plant import linear_model
 from .quality import hqm, hqm_peak, level
 from .rider import closed_loop, rider_plant
-from .tuning import GainsNotFound, tune_gains
+from .tuning import GainsNotFound, tune
 
 CURVE_FREQUENCIES = np.linspace(0.01, 40.0, 800)
 """Frequencies (rad/s) of the HQM curves kept for figures (linear, as the published figures)."""
@@ -170,7 +171,7 @@ class HandlingResult(Display):
 @one_blas_thread()
 def handling(system: "LinearModel | BenchmarkParameters", speeds: "ArrayLike | None" = None,
              gains: "Gains | str | os.PathLike | Mapping | ArrayLike | None" = None,
-             stiffness: "ArrayLike | None" = None) -> HandlingResult:
+             stiffness: "ArrayLike | None" = None, tuning: "Tuning | str" = Tuning.HMH2012) -> HandlingResult:
     """The rider in the loop at every speed: gains, closed-loop stability and handling qualities.
 
     Parameters
@@ -188,6 +189,10 @@ def handling(system: "LinearModel | BenchmarkParameters", speeds: "ArrayLike | N
         every speed.
     stiffness : array_like (2, 2), optional
         Rear-frame stiffness S (N m/rad) of a parameter set.
+    tuning : {"hmh2012", "bmd2016"}
+        How gains are tuned where none are given (:class:`~bikemass.core.choices.Tuning`): the 10 dB
+        rule of Hess, Moore & Hubbard (2012, default) or the damping lines of Moore, Hubbard & Hess
+        (2016).
 
     Returns
     -------
@@ -221,6 +226,7 @@ def handling(system: "LinearModel | BenchmarkParameters", speeds: "ArrayLike | N
     >>> print(bool(r.closed_loop_stable[0]), f"HQM peak {r.hqm_peak[0]:.3f} at {r.hqm_peak_frequency[0]:.2f} rad/s")
     True HQM peak 4.686 at 13.48 rad/s
     """
+    tuning = check(Tuning, tuning)
     model = linear_model(system, stiffness)
     v, chosen = given_gains(gains, speeds)
     rows = []
@@ -231,7 +237,7 @@ def handling(system: "LinearModel | BenchmarkParameters", speeds: "ArrayLike | N
         g = given
         if g is None:
             try:
-                g = tune_gains(plant)
+                g = tune(plant, tuning)
             except GainsNotFound as exc:
                 warnings.warn(f"{exc}; that speed is left out", BikemassWarning, stacklevel=2)
         rows.append(_at_speed(plant, g))

@@ -24,8 +24,21 @@ open:
    ``eqKPsi``, ``eqKYq``).  HumanControl interpolates ``|G_o|`` linearly on 1000 frequencies
    instead, which moves the fourth or fifth digit; bikemass evaluates it at ``w_c``.
 
-The procedure and its two other published variants (Moore 2012's worked root-locus example,
-Moore, Hubbard & Hess 2016's pole placement) are compared in docs/handling.md.
+Moore, Hubbard & Hess (2016, BMD, "An optimal handling bicycle") choose the two inner gains
+otherwise (:func:`tune_gains_bmd2016`, ``tuning="bmd2016"``): one pole pair of each closed inner loop
+on a line of constant damping ratio, 0.1289 for the steer loop and 0.0855 for the roll-rate loop
+(the dampings the 10 dB rule gives the benchmark bicycle at 5 m/s), the outer loops crossing over as
+above.  The paper solves twelve polynomial equations (the closed loops' characteristic polynomials
+matched to a quadratic factor of that damping times a quartic) from a starting guess; bikemass finds
+every solution instead: closing one loop with gain ``k`` puts a pole at ``s`` where
+``1 + k G(s) = 0`` (``G`` the loop's open transfer function), so a pole lies on the damping line
+``s = w (-zeta + j sqrt(1 - zeta^2))`` exactly where ``Im G(s) = 0`` there, with ``k = -1 / Re G(s)``:
+a one-dimensional root search in ``w``.  Which of the solutions is taken: :func:`tune_gains_bmd2016`.
+It finds the negative ``k_delta`` and positive ``k_phidot`` of the optimal bicycles, which the 10 dB
+scan (``k_delta > 0``) cannot reach.
+
+The procedure and its other published variant (Moore 2012's worked root-locus example) are
+compared in docs/handling.md.
 """
 
 import numpy as np
@@ -36,6 +49,7 @@ from .frequency import response
 from .gains import Gains
 from .rider import loop_system
 from .transfer import coupled_states
+from ...core.choices import Tuning, check
 
 PEAK_DB = 10.0
 """Height of the neuromuscular peak over the valley below it (dB)."""
@@ -54,6 +68,13 @@ loop, where that loop's closure turns unstable and back, lie a factor of about 3
 NEUROMUSCULAR_TARGET = 10.0
 """Where the closed inner loops' neuromuscular peak should lie (rad/s): Moore 2012, design
 requirement 3 ("a natural frequency around 10 rad/s", typical of laboratory tracking tasks)."""
+
+
+DAMPING_LINES = (0.1289, 0.0855)
+"""The damping ratios of the steer and roll-rate loops' placed pole pairs (Moore, Hubbard & Hess 2016)."""
+LINE_FREQUENCIES = np.geomspace(0.05, 300.0, 3000)
+"""Where along a damping line the poles are sought (rad/s): from below the weave to beyond the
+neuromuscular system's 30 rad/s."""
 
 
 class GainsNotFound(ValueError):
@@ -148,3 +169,64 @@ def tune_gains(plant):
     for loop, frequency in zip((2, 3, 4), CROSSOVERS):
         gains.append(crossover_gain(plant, gains, loop, frequency))
     return Gains(*gains)
+
+
+def damping_line_gains(plant, gains, loop, zeta):
+    """Every ``(w, k)``: a gain ``k`` of loop ``loop`` (0: ``k_delta``, 1: ``k_phidot``; the inner
+    ``gains`` set) that puts a pole pair of the closed loop on the damping line ``zeta``, at frequency
+    ``w`` (rad/s) on :data:`LINE_FREQUENCIES` (see the module docstring)."""
+    A, b, c = loop_system(plant, (*gains, 1.0), loop, (True,) * loop + (False,))
+    direction = -zeta + 1j * np.sqrt(1.0 - zeta ** 2)
+    values, vectors = np.linalg.eig(A)
+    left = np.linalg.solve(vectors, b)
+    right = c @ vectors
+
+    def transfer(w):
+        """``G(s)`` on the line at ``w`` (rad/s; an array): the modal sum, every pole simple."""
+        s = np.multiply.outer(np.atleast_1d(w), direction)
+        return (right * left / (s[:, None] - values)).sum(axis=1)
+
+    im = transfer(LINE_FREQUENCIES).imag
+    found = []
+    for i in np.nonzero(np.sign(im[:-1]) * np.sign(im[1:]) < 0)[0]:
+        w = scipy.optimize.brentq(lambda x: float(transfer(x)[0].imag), LINE_FREQUENCIES[i], LINE_FREQUENCIES[i + 1],
+                                  xtol=1e-13, rtol=1e-14)
+        g = transfer(w)[0]
+        if abs(g.imag) > 1e-9 * abs(g) or g.real == 0:        # a pole of G crossing the line, not a root
+            continue
+        found.append((float(w), float(-1.0 / g.real)))
+    return found
+
+
+@one_blas_thread()
+def tune_gains_bmd2016(plant):
+    """The five gains of a :class:`~bikemass.analysis.handling.rider.RiderPlant` by Moore, Hubbard & Hess
+    (2016): a pole pair of each inner loop on :data:`DAMPING_LINES`, the outer loops crossing over at
+    :data:`CROSSOVERS`; :class:`GainsNotFound` when an inner loop has no solution.
+
+    The damping lines have several solutions (:func:`damping_line_gains`); the paper takes the one its
+    root finder reaches from a starting guess.  bikemass takes, of every pair of inner solutions with
+    the outer loops closed, those that close the whole loop stably (if any), and of those the one
+    whose roll-rate loop moves the very pole pair the steer loop placed (the two pairs' frequencies
+    nearest each other on a log scale): that gives the published gains of the benchmark and of the
+    optimal bicycles for 4, 5, 6 and 8 m/s (tests/test_handling_bmd2016.py)."""
+    choices = []
+    for w0, k0 in damping_line_gains(plant, [], 0, DAMPING_LINES[0]):
+        for w1, k1 in damping_line_gains(plant, [k0], 1, DAMPING_LINES[1]):
+            gains = [k0, k1]
+            for loop, frequency in zip((2, 3, 4), CROSSOVERS):
+                gains.append(crossover_gain(plant, gains, loop, frequency))
+            A, _, _ = loop_system(plant, gains, 4, (True,) * 5)
+            stable = bool(np.linalg.eigvals(A).real.max() < 0)
+            choices.append((not stable, abs(np.log(w1 / w0)), abs(np.log(w0 / NEUROMUSCULAR_TARGET)),
+                            tuple(gains)))
+    if not choices:
+        raise GainsNotFound(f"no k_delta and k_phi_dot put the inner loops' pole pairs on the damping lines "
+                            f"{DAMPING_LINES[0]:g} and {DAMPING_LINES[1]:g} at {plant.speed:g} m/s")
+    return Gains(*min(choices)[3])
+
+
+def tune(plant, tuning=Tuning.HMH2012):
+    """The gains of ``plant`` by ``tuning`` (:class:`~bikemass.core.choices.Tuning`: ``"hmh2012"``, the
+    10 dB rule, or ``"bmd2016"``, the damping lines)."""
+    return {Tuning.HMH2012: tune_gains, Tuning.BMD2016: tune_gains_bmd2016}[check(Tuning, tuning)](plant)

@@ -1,0 +1,126 @@
+"""``bikemass optimise``: the design in a box that maximises, minimises or hits a metric."""
+
+import argparse
+import sys
+
+from ..core.errors import InputError
+from ..core.progress import Progress
+from . import dialect
+from .figure_options import add_figure_options, figure_options, write_figure
+
+DESCRIPTION = """\
+Search the box of SPEC.yaml's design variables (any input a sweep can vary: the 26 parameters,
+dotted paths into the bicycle or pose YAML such as chart.head_tube_angle) for the design that
+maximises or minimises a metric, or hits a target value of it, with other metrics kept within
+bounds. The box is screened, then a gradient search (SLSQP) runs from the best screened designs;
+gradients are exact in the model's parameters (eigenvalue derivatives), chained with central
+differences through the geometry (a person is re-seated on every design). A kink of the objective
+at the end point (a stable range changing its bounding mode) is reported, never a false
+convergence. The spec format: docs/optimise.md.
+
+spec example:
+  bike: bmc-roadmachine@54
+  rider: person.yaml
+  variables:
+    chart.head_tube_angle: {min: 70 deg, max: 75 deg}
+    chart.fork_offset: {min: 35 mm, max: 60 mm}
+  maximise: stable-range          # or  minimise: METRIC  or  target: {weave-speed: 5.0}
+  constraints:
+    trail: {min: 50 mm, max: 70 mm}
+"""
+
+
+def _description():
+    """The description with every metric (read from the metrics' table when the help is printed)."""
+    # lazy: the metrics' module loads numpy; bikemass --help must not
+    from ..design.metrics import NAMES, catalogue
+    lines = [f"  {m.name} ({m.unit}): {m.description}" for m in catalogue().values() if m.name not in NAMES]
+    return (DESCRIPTION + "\nmetrics (SI units; bounds and targets may carry a unit, e.g. 50 mm):\n"
+            + "\n".join(lines) + "\n  and any of the 26 benchmark parameters by name (w, c, lam, rR, mB, ...)\n")
+
+
+def register(sub):
+    p = sub.add_parser("optimise", help="the design (geometry, parameters) that maximises, minimises or hits a "
+                       "metric (weave speed, stable range, trail, ...) under constraints",
+                       description=_description, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("spec", metavar="SPEC.yaml", help="optimisation specification (docs/optimise.md)")
+    p.add_argument("--format", choices=("table", "json", "yaml"), default="table",
+                   help="table (default), json or yaml (with a units block) of the result on stdout")
+    p.add_argument("-o", "--output", metavar="FILE",
+                   help="write the optimal design as a file every command reads: the bicycle YAML with the "
+                        "values applied (dotted paths into the bicycle only), else the benchmark parameter "
+                        "set (.yaml) of the design with its rider included")
+    p.add_argument("--plot", metavar="FILE", help="draw the convergence and the objective around the design "
+                                                  "into FILE (.png, .pdf, .svg, ...)")
+    add_figure_options(p)
+    dialect.add_quiet(p)
+    p.set_defaults(run=run_optimise)
+
+
+def run_optimise(args):
+    # lazy: the library loads numpy and scipy; bikemass --help must not
+    from ..design.optimise import optimise
+    from ..design.spec import read_spec
+
+    options = figure_options(args, args.plot) if args.plot else None
+    if args.output:
+        # lazy: the library loads numpy; bikemass --help must not
+        from ..core.output import check_output
+        check_output(args.output, (".yaml", ".yml"), what="the optimal design", option="-o")
+    spec = read_spec(args.spec)
+    with Progress(100, "optimise") as bar:
+        bar.enabled = bar.enabled and not args.quiet
+        result = optimise(spec, progress=lambda: bar.step() if bar.done < bar.total - 1 else None)
+    if args.output:
+        write_design(spec, result, args.output)
+    if not args.quiet:
+        sys.stdout.write(render(result, args.format))
+    if args.plot:
+        # lazy: matplotlib only for a figure
+        from ..design.figures import objective_slices, plot_optimisation
+        fig = plot_optimisation(result, objective_slices(spec, result), f"{spec.bike}: {result.sense} {result.metric}",
+                                options.size)
+        write_figure(fig, args.plot, options)
+    return 0
+
+
+def render(result, fmt):
+    """The result as text: a table, or JSON/YAML with its units block."""
+    if fmt in ("json", "yaml"):
+        return dialect.result_document(result.to_dict(), result.units(), fmt)
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..core.output import table
+    rows = [[k, v, u] for k, v, u in result.display_rows()]
+    text = table(["", "value", "unit"], rows)
+    lines = [text, f"search: {result.message}; {result.evaluations} designs built in {result.seconds:.1f} s",
+             f"gradients: {result.gradient}"]
+    lines += [f"note: {n}" for n in result.notes]
+    return "\n".join(lines) + "\n"
+
+
+def write_design(spec, result, path):
+    """Write ``result``'s design to ``path``: the bicycle YAML with the design's values where every
+    variable is a dotted path into the bicycle (the rider stays apart: ``--rider``), else the benchmark
+    parameter set of the design, its rider included."""
+    # lazy: the library loads numpy; bikemass --help must not
+    import yaml
+    from ..core.output import write_atomic
+    from ..design.problem import Problem
+    from ..models.parameter_export import format_parameters
+    from ..scenario.inputs import split_changes
+
+    problem = Problem(spec)
+    changes = problem.changes([result.variables[v.key] for v in spec.variables])
+    bike, rider, params, _ = split_changes(changes)
+    if bike and not rider and not params:
+        try:
+            doc = problem.scenario.inputs.bicycle_document(bike)
+        except InputError:
+            doc = None
+        if doc is not None:
+            header = (f"# optimal design of {spec.source} (bikemass optimise): {result.sense} {result.metric} = "
+                      f"{result.objective:.6g} {result.metric_units[result.metric]}\n")
+            write_atomic(path, header + yaml.safe_dump(doc, sort_keys=False, allow_unicode=True))
+            return
+    built = problem.design([result.variables[v.key] for v in spec.variables]).built
+    write_atomic(path, format_parameters(built.parameters, "yaml", rider_included=spec.rider not in (None, "none")))
