@@ -110,7 +110,9 @@ def run_params(args):
         title = f"{args.bike} with rider {args.rider} (combine {args.combine})"
         included = (args.rider not in (None, "none") or scenario.inputs.lean_set is not None
                     or scenario.inputs.bicycle().rider_included)
-        dialect.emit(args, lambda f: format_parameters(params, f, title, included))
+        # a measured bicycle's standard deviations belong to its own parameters: not with a rider added
+        std = scenario.file_std if args.rider in (None, "none") and args.model == "whipple" else None
+        dialect.emit(args, lambda f: format_parameters(params, f, title, included, std))
     return 0
 
 

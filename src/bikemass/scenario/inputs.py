@@ -26,8 +26,7 @@ from ..bicycle.benchmark import bicycle_parameters, combined_bodies, parameters_
 from ..bicycle.chart import ANGLE_KEYS, CHECKED_KEYS, FRAME_KEYS, STAND_INS
 from ..bicycle.loader import _is_parameter_text, _with_base, bicycle_from_mapping
 from ..bicycle.model import BODIES, Bicycle
-from ..bicycle.parameter_sets import RIDER_LEAN, kind_of, read_parameter_set
-from ..bicycle.parameter_text import load_parameter_text
+from ..bicycle.parameter_sets import RIDER_LEAN, kind_of, read_parameter_set, read_parameter_set_text
 from ..bicycle.sizes import split_size
 from ..core.choices import RIGID
 from ..core.config import Node, load_yaml
@@ -236,7 +235,6 @@ class Inputs:
             return
         self._measured = self._fixed = None
         self._size = self._size_index = None
-        self._file_std = {}
         bike = self.bike
         if self.lean_set is not None:
             self._bike_source, self._bike_doc = self._lean_source, {}
@@ -256,10 +254,9 @@ class Inputs:
         path = resolve(name, frames_dir(), "bicycle")
         self._bike_source = str(path)
         if _is_parameter_text(path):
-            measured = load_parameter_text(path)
+            measured = read_parameter_set_text(path)
             self._measured = measured.parameters
             self._bike_doc = {"name": path.stem, **measured.parameters.to_dict()}
-            self._file_std = {k: float(v) for k, v in measured.std.items() if v > 0}
             return
         self._bike_doc = _with_base(load_yaml(path)).mapping()
         sizes = [str(x) for x in self._bike_doc.get("sizes", [])] if self._size is not None else []
@@ -306,9 +303,13 @@ class Inputs:
 
     @property
     def file_std(self):
-        """``{name: std}`` of a BicycleParameters text file's ``+/-`` values (SI; those above 0)."""
-        self._read()
-        return self._file_std
+        """``{name: std}`` (SI; those above 0) of a measured bicycle's parameters: a BicycleParameters
+        text file's ``+/-`` values, a parameter file's ``uncertainty:`` block, or computed from
+        measurements (:attr:`~bikemass.bicycle.model.Bicycle.measured`); ``{}`` for any other bicycle."""
+        if self.lean_set is not None:
+            return {}
+        measured = self.bicycle(()).measured
+        return {} if measured is None else {k: float(v) for k, v in measured.std.items() if v > 0}
 
     def _own_bicycle_pose(self, doc):
         """A chain pose whose ``bike:`` names this scenario's own bicycle is solved on the bicycle
