@@ -404,7 +404,7 @@ def benchmark_from_measured(data: MeasuredData, lam_std: str = "implicit") -> Me
     >>> data = bm.read_measured_data("browser-measured")
     >>> found = bm.benchmark_from_measured(data)
     >>> print(f"trail {found.parameters.c:.5f} +- {found.std['c']:.5f} m, IBxx {found.parameters.IBxx:.4f} kg m^2")
-    trail 0.06856 +- 0.00169 m, IBxx 0.3727 kg m^2
+    trail 0.06858 +- 0.00169 m, IBxx 0.5296 kg m^2
     """
     if not isinstance(data, MeasuredData):
         raise wrong_type("data", data, "a MeasuredData (bm.read_measured_data)")
@@ -448,6 +448,11 @@ def load_measured(path: "str | os.PathLike", lam_std: str = "implicit") -> Measu
     -------
     MeasuredParameters
         The 26 parameters with standard deviations and covariance.
+
+    Raises
+    ------
+    InputError
+        An unreadable file, a bad value, a measurement missing, or measurements that give no bicycle.
 
     See Also
     --------
