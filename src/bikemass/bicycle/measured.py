@@ -430,7 +430,24 @@ def benchmark_from_measured(data: MeasuredData, lam_std: str = "implicit") -> Me
                      + ", ".join(n for n in extra if n[1:2] == "D" or n in ("xcl", "zcl")))
     return MeasuredParameters(params, MappingProxyType({n: float(std[n]) for n in NAMES}), tuple(notes), data.source,
                               extra=MappingProxyType({n: values[n] for n in extra}),
-                              extra_std=MappingProxyType({n: float(std[n]) for n in extra}), covariance=covariance)
+                              extra_std=MappingProxyType({n: float(std[n]) for n in extra}), covariance=covariance,
+                              data=data)
+
+
+def measured_values(data, changes=None):
+    """The nominal :class:`~bikemass.models.parameters.BenchmarkParameters` of ``data`` with its
+    measurements ``changes`` (``{name: value}``, the file's units) changed, checked as a parameter file
+    is; no standard deviations (what a Monte Carlo draw or a difference step needs).  InputError
+    naming a change that is no measurement of ``data``."""
+    nominal = dict(data.nominal)
+    for name, value in (changes or {}).items():
+        if name not in nominal:
+            raise InputError(data.source, name, f"a measurement of this file ({short(', '.join(nominal), 80)})")
+        nominal[name] = float(value)
+    found = _benchmark(nominal, data)
+    params = BenchmarkParameters(**{n: float(np.real(found[n])) for n in NAMES})
+    check_parameter_file(params, data.source)
+    return params
 
 
 def load_measured(path: "str | os.PathLike", lam_std: str = "implicit") -> MeasuredParameters:

@@ -173,7 +173,8 @@ class MeasuredParameters:
     and ``extra_std``: values the Whipple model has no place for (a split front frame's handlebar
     ``G`` and fork ``S``, a flywheel ``D``), and ``covariance``: the 26 x 26 covariance (SI, in
     the order of ``bikemass.PARAMETER_NAMES``; the parameters share measurements), else ``None``
-    (a parameter file gives standard deviations only).
+    (a parameter file gives standard deviations only); ``data``: the
+    :class:`~bikemass.bicycle.measured.MeasuredData` it was computed from, else ``None``.
 
     See Also
     --------
@@ -199,6 +200,7 @@ class MeasuredParameters:
     extra: MappingProxyType = field(default_factory=lambda: MappingProxyType({}))
     extra_std: MappingProxyType = field(default_factory=lambda: MappingProxyType({}))
     covariance: object = None
+    data: object = None
 
     def __repr__(self):
         return f"MeasuredParameters({self.source!r}, {len(self.notes)} notes)"

@@ -24,7 +24,8 @@ from collections.abc import Mapping
 
 from ..bicycle.benchmark import bicycle_parameters, combined_bodies, parameters_from_bodies, refuse_second_rider
 from ..bicycle.chart import ANGLE_KEYS, CHECKED_KEYS, FRAME_KEYS, STAND_INS
-from ..bicycle.loader import _is_parameter_text, _with_base, bicycle_from_mapping
+from ..bicycle.loader import _is_parameter_text, _with_base, bicycle_from_mapping, bicycle_from_parameters
+from ..bicycle.measured import measured_values
 from ..bicycle.model import BODIES, Bicycle
 from ..bicycle.parameter_sets import RIDER_LEAN, kind_of, read_parameter_set, read_parameter_set_text
 from ..bicycle.sizes import split_size
@@ -47,6 +48,9 @@ from .catalog import seated_rider
 from .loading import load_bicycle, load_rider
 
 RIDER_PREFIX = "rider."
+MEASURED_PREFIX = "measured."
+"""Inputs ``measured.<name>``: a raw measurement of a bicycle computed from measurements
+(:mod:`bikemass.bicycle.measured`), in its file's units; the bicycle is recomputed from them."""
 STIFFNESS_KEY = "stiffness"
 CACHE_SIZE = 32
 PART_CACHE_SIZE = 4096
@@ -136,7 +140,7 @@ def _file_unit(document, path, value):
 def file_unit(model, key):
     """The unit bikemass reads input ``key`` of ``model`` in when it is given as a bare number in a
     sweep (the unit the file writes there), or None for SI.  Parameters and stiffness are SI."""
-    if key in NAMES or key == STIFFNESS_KEY:
+    if key in NAMES or key == STIFFNESS_KEY or key.startswith(MEASURED_PREFIX):
         return None
     document, path, value = _located(model, key)
     return _file_unit(document, path, value)
@@ -162,6 +166,8 @@ def get_path(model, key):
     0.001016, a chart's ``590`` under ``units: {length: mm}`` -> 0.59); a bare number as written."""
     if key in NAMES:
         return float(getattr(model.parameters(), key))
+    if key.startswith(MEASURED_PREFIX):
+        return float(model.measurements(key)[key[len(MEASURED_PREFIX):]])
     document, path, value = _located(model, key)
     unit = _file_unit(document, path, value)
     try:
@@ -344,6 +350,9 @@ class Inputs:
         def build():
             if not changes:
                 return load_bicycle(self.bike)
+            remeasured = [c for c in changes if c[0].startswith(MEASURED_PREFIX)]
+            if remeasured:
+                return self._remeasured(changes)
             self._read()
             if self._measured is not None or self._fixed is not None:
                 what = "is a parameter file" if self._measured is not None else "was given built, not as YAML"
@@ -358,6 +367,38 @@ class Inputs:
             doc = self._document(base, changes, self._bike_source, self._size_index)
             return bicycle_from_mapping(doc, self._bike_source, self._size)
         return _lru(self._cache("bicycles"), changes, build)
+
+    def measurements(self, key=MEASURED_PREFIX):
+        """The :class:`~bikemass.bicycle.measured.MeasuredData` ``nominal`` values of a bicycle computed
+        from measurements; InputError naming ``key`` for any other bicycle."""
+        measured = self.bicycle(()).measured
+        if measured is None or measured.data is None:
+            raise InputError(self.origin, key, "a bicycle computed from measurements (BicycleParameters' "
+                             "<Name>Measured.txt or its YAML form) for a measured.<name> input")
+        return measured.data.nominal
+
+    @property
+    def measurement_std(self):
+        """``{"measured.<name>": std}`` of a bicycle computed from measurements (the file's units; those
+        above 0), else ``{}``."""
+        if self.lean_set is not None:
+            return {}
+        measured = self.bicycle(()).measured
+        if measured is None or measured.data is None:
+            return {}
+        return {MEASURED_PREFIX + k: float(v) for k, v in measured.data.std.items() if v > 0}
+
+    def _remeasured(self, changes):
+        """The bicycle computed from its measurements with ``measured.<name>`` ``changes``."""
+        other = [key for key, _ in changes if not key.startswith(MEASURED_PREFIX)]
+        if other:
+            raise InputError(self.origin, other[0], "measured.<name> inputs only, or none, on a bicycle computed "
+                             "from measurements (its measurements are its document)")
+        self.measurements(changes[0][0])
+        base = self.bicycle(())
+        params = measured_values(base.measured.data, {k[len(MEASURED_PREFIX):]: v for k, v in changes})
+        return bicycle_from_parameters(params, base.name, base.source, base.stiffness, base.contacts,
+                                       base.rider_included, base.speed)
 
     def _changeable_chart(self):
         """The bicycle document with its chart ready to change: the published redundant values
