@@ -231,3 +231,27 @@ def test_measured_inputs_are_refused_on_other_bicycles_and_named_when_unknown():
             scenario.build({"measured.TtB1": 2.1, "geometry.wheelbase": 1.0})
         moved = scenario.build({"measured.mB": 10.86}).parameters
     assert moved.mB == 10.86 and moved.IByy != scenario.parameters().IByy     # the pendulum formula holds mB
+
+
+@pytest.mark.parametrize("name, bad, key", [("nF", "0", "nF"), ("TtP1", "-1.2", "TtP1"), ("d", "0.01", "lam"),
+                                            ("l", "0.001", "l"), ("mB", "abc", "mB"), ("aB1", "nan", "aB1")])
+def test_measurements_that_give_no_bicycle_are_refused_naming_the_key(tmp_path, name, bad, key):
+    """Nonsense measurements: one InputError naming the key, no numpy warning, no traceback."""
+    text = "\n".join(f"{name} = {bad}" if ln.split("=")[0].strip() == name else ln
+                     for ln in (DATA / "RigidMeasured.txt").read_text().splitlines())
+    path = tmp_path / "BadMeasured.txt"
+    path.write_text(text)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        with pytest.raises(InputError, match=rf"\b{key}\b"):
+            bm.load_measured(path)
+    assert main(["params", str(path)]) == 2
+
+
+def test_yaml_form_refuses_a_value_that_is_not_a_number(tmp_path):
+    document = yaml.safe_load(Path(bm.load_measured("browser-measured").source).read_text())
+    document["TcB1"] = {"value": 1.7}
+    path = tmp_path / "bad.yaml"
+    path.write_text(yaml.safe_dump(document))
+    with pytest.raises(InputError, match="TcB1"):
+        bm.load_bicycle(path)

@@ -150,6 +150,12 @@ def measured_data(nominal, std, source):
     for name, value in nominal.items():
         if not np.isfinite(value):
             raise InputError(source, name, f"a finite number, got {short(value)}")
+    for name in needed:
+        if name not in ("f", *OFFSET_GEOMETRY, *SPLIT_REFERENCE) and not nominal[name] > 0:
+            raise InputError(source, name, f"a positive number (a length, mass, count or period), got {nominal[name]!r}")
+    if split and not nominal["l"] > (nominal["d5"] + nominal["d6"]) / 2:
+        raise InputError(source, "l", "the outer distance from the front axle to the handlebar reference circle: "
+                         f"more than their radii together ({(nominal['d5'] + nominal['d6']) / 2!r} m)")
     return MeasuredData(str(source), MappingProxyType(dict(nominal)), MappingProxyType(dict(std)),
                         "GS" if split else "H", MappingProxyType(orientations))
 
@@ -326,6 +332,21 @@ def _join_front(out):
     out.update(H)
 
 
+def _checked(compute, values, data):
+    """``compute(values, data)`` (real values), InputError naming the first result that is not a finite
+    number (measurements that give no bicycle: parallel mass-centre lines, offsets longer than the
+    distance they span, ...)."""
+    with np.errstate(all="ignore"):
+        found = compute(_Tracked({k: np.float64(v) for k, v in values.items()}), data)
+    for name, value in found.items():
+        if not np.isfinite(value):
+            name = "lam" if name == "guess" else name
+            raise InputError(data.source, name, "measurements that give a bicycle: they give "
+                             f"{name} = {value} (parallel mass-centre lines, an offset longer than the distance "
+                             "it spans, a zero period, ...)")
+    return found
+
+
 class _Tracked(dict):
     """A dict that remembers which keys were read (:attr:`read`)."""
 
@@ -342,7 +363,8 @@ def unused_names(data):
     """The names of ``data`` (:class:`MeasuredData`) the computation does not read (BicycleParameters'
     rider-placement lengths ``lcs``, ``hbb``, ..., a fourth distance without its angle, ...)."""
     values = _Tracked({k: float(x) for k, x in data.nominal.items()})
-    _benchmark(values, data)
+    with np.errstate(all="ignore"):
+        _benchmark(values, data)
     return tuple(n for n in data.nominal if n not in values.read)
 
 
@@ -350,13 +372,14 @@ def _propagated(data, lam_std):
     """Nominal outputs, their names, the measured inputs with a std, and the Jacobian (outputs x
     inputs, plus BicycleParameters' independent ``lam`` as a last input when asked for)."""
     base = {k: float(x) for k, x in data.nominal.items()}
-    nominal = _benchmark(base, data)
+    nominal = _checked(_benchmark, base, data)
     fixed = nominal["lam"] if lam_std == "bicycleparameters" and "guess" in nominal else None
     names = [n for n in nominal if n != "guess"]
     inputs = [k for k, s in data.std.items() if s > 0]
     jac = np.zeros((len(names) + 1, len(inputs) + 1))
     for j, key in enumerate(inputs):
-        stepped = _benchmark({**base, key: base[key] + 1j * STEP}, data, fixed_lam=fixed)
+        with np.errstate(all="ignore"):
+            stepped = _benchmark({**base, key: base[key] + 1j * STEP}, data, fixed_lam=fixed)
         jac[:, j] = [np.imag(stepped.get(n, 0.0)) / STEP for n in [*names, "guess"]]
     sigma = np.array([data.std[k] for k in inputs] + [0.0])
     if fixed is not None:                         # lam: a new measurement with the guess's std
@@ -444,7 +467,7 @@ def measured_values(data, changes=None):
         if name not in nominal:
             raise InputError(data.source, name, f"a measurement of this file ({short(', '.join(nominal), 80)})")
         nominal[name] = float(value)
-    found = _benchmark(nominal, data)
+    found = _checked(_benchmark, nominal, data)
     params = BenchmarkParameters(**{n: float(np.real(found[n])) for n in NAMES})
     check_parameter_file(params, data.source)
     return params
