@@ -65,7 +65,7 @@ from ..core.frozen import readonly
 from ..core.gate import read_text
 from ..core.paths import frames_dir, resolve
 from ..models.parameters import NAMES, BenchmarkParameters
-from ..models.plausibility import check_parameter_file
+from ..models.plausibility import check_parameter_file, check_parameters
 from .parameter_text import MeasuredParameters, _parse_value, looks_like_parameter_text, parse_parameter_text
 
 LAM_STD = ("implicit", "bicycleparameters")
@@ -460,7 +460,7 @@ def benchmark_from_measured(data: MeasuredData, lam_std: str = "implicit") -> Me
 def measured_values(data, changes=None):
     """The nominal :class:`~bikemass.models.parameters.BenchmarkParameters` of ``data`` with its
     measurements ``changes`` (``{name: value}``, the file's units) changed, checked as a parameter file
-    is; no standard deviations (what a Monte Carlo draw or a difference step needs).  InputError
+    is (errors; no warnings); no standard deviations (what a Monte Carlo draw or a difference step needs).  InputError
     naming a change that is no measurement of ``data``."""
     nominal = dict(data.nominal)
     for name, value in (changes or {}).items():
@@ -469,7 +469,7 @@ def measured_values(data, changes=None):
         nominal[name] = float(value)
     found = _checked(_benchmark, nominal, data)
     params = BenchmarkParameters(**{n: float(np.real(found[n])) for n in NAMES})
-    check_parameter_file(params, data.source)
+    check_parameters(params, data.source)          # errors only: the file's own warnings came when it was read
     return params
 
 
