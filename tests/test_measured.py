@@ -255,3 +255,17 @@ def test_yaml_form_refuses_a_value_that_is_not_a_number(tmp_path):
     path.write_text(yaml.safe_dump(document))
     with pytest.raises(InputError, match="TcB1"):
         bm.load_bicycle(path)
+
+
+def test_uncertainty_defaults_to_the_bicycles_own_spreads():
+    """Contract test: ``bm.uncertainty(BIKE)`` without spreads takes the measurements of a bicycle
+    computed from them, as the command does; a bicycle without standard deviations is refused."""
+    source = str(DATA / "YellowMeasured.txt")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        scenario = bm.Scenario(source)
+        default = bm.uncertainty(source)
+        given = bm.uncertainty(scenario, scenario.measurement_std)
+    assert default.inputs == given.inputs and default.speeds == given.speeds
+    with pytest.raises(InputError, match="spreads"):
+        bm.uncertainty("benchmark")
