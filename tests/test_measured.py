@@ -269,3 +269,22 @@ def test_uncertainty_defaults_to_the_bicycles_own_spreads():
     assert default.inputs == given.inputs and default.speeds == given.speeds
     with pytest.raises(InputError, match="spreads"):
         bm.uncertainty("benchmark")
+
+
+def test_a_yaml_parameter_file_carries_std_as_value_plus_minus_or_a_block(tmp_path):
+    """BicycleParameters' ``value+/-std`` in a YAML parameter file, or an ``uncertainty:`` block, are
+    the file's standard deviations (the text file's the same); both for one name is refused."""
+    text = bm.load_parameter_text(Path(bp.__file__).parent / "app-data" / "bicycles" / "Browser" / "Parameters"
+                                  / "BrowserBenchmark.txt")
+    values = text.parameters.to_dict()
+    plus_minus = {k: f"{v!r}+/-{text.std[k]!r}" if text.std[k] else v for k, v in values.items()}
+    (tmp_path / "pm.yaml").write_text(yaml.safe_dump(plus_minus))
+    (tmp_path / "block.yaml").write_text(yaml.safe_dump({**values, "uncertainty": dict(text.std)}))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        for name in ("pm.yaml", "block.yaml"):
+            bike = bm.load_bicycle(tmp_path / name)
+            assert bike.published == text.parameters and dict(bike.measured.std) == dict(text.std), name
+        (tmp_path / "both.yaml").write_text(yaml.safe_dump({**plus_minus, "uncertainty": {"c": 0.001}}))
+        with pytest.raises(InputError, match="uncertainty.c"):
+            bm.load_bicycle(tmp_path / "both.yaml")

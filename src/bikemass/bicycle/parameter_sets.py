@@ -34,11 +34,11 @@ import warnings
 import os
 import numpy as np
 
-from ..core.config import load_yaml
+from ..core.config import Node, load_yaml
 from ..core.errors import InputError, short
 from ..mass.inertia import MassProperties, combine
 from .parameter_text import (AXISYMMETRIC, LATERAL, SPLIT_BODIES, ParameterFileWarning, ParameterText,
-                             printed_resolution, body_names, measured_parameters)
+                             _parse_value, printed_resolution, body_names, measured_parameters)
 from ..models.parameters import NAMES, SPEED_KEY, BenchmarkParameters, check_units, dimension, sign_rule
 from ..models.moore2012 import NAMES as MOORE_NAMES, PARAMETERIZATION as MOORE_PARAMETERIZATION, from_moore_values
 from ..models.plausibility import check_parameter_file
@@ -335,20 +335,27 @@ def _benchmark(values, exclude=(), uncertainty=None):
     values.check_keys(required=NAMES, optional=(*BENCHMARK_EXTRAS, SPEED_KEY, *exclude))
     if values.has("units"):
         check_units(values["units"])
-    nominal = {}
+    nominal, given = {}, {}
     for name in (*NAMES, *BENCHMARK_EXTRAS):
         if values.has(name):
             base = name if name in NAMES else name.replace("G", "H").replace("S", "H")
             dim = dimension(base) if not base.startswith("y") else "length"
             positive, nonnegative = sign_rule(base) if base in NAMES else (False, False)
-            nominal[name] = values[name].number(dim, positive=positive, nonnegative=nonnegative,
-                                                bare_unit="rad" if name == "lam" else None)
-    std = dict.fromkeys(nominal, 0.0)
+            item = values[name]
+            if isinstance(item.value, str) and ("+/-" in item.value or "±" in item.value):
+                # BicycleParameters' value+/-std, bare SI (radians), as in its text files
+                nominal[name], given[name], _ = _parse_value(item.value, str(values.source), item.key)
+                item = Node(nominal[name], item.source, item.key)
+            nominal[name] = item.number(dim, positive=positive, nonnegative=nonnegative,
+                                        bare_unit="rad" if name == "lam" else None)
+    std = {**dict.fromkeys(nominal, 0.0), **given}
     if uncertainty is not None and not uncertainty.missing:
         uncertainty.mapping()
         uncertainty.check_keys(optional=tuple(nominal))
         for name in nominal:
             if uncertainty.has(name):
+                if name in given:
+                    uncertainty[name].fail(f"the std of {name} once (its value gives one too: {values[name].value!r})")
                 base = name if name in NAMES else name.replace("G", "H").replace("S", "H")
                 dim = dimension(base) if not base.startswith("y") else "length"
                 std[name] = uncertainty[name].number(dim, nonnegative=True,
