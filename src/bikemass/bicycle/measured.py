@@ -59,7 +59,7 @@ from types import MappingProxyType
 
 import numpy as np
 
-from ..core.config import Node, load_yaml
+from ..core.config import load_yaml
 from ..core.errors import InputError, short, wrong_type
 from ..core.frozen import readonly
 from ..core.gate import read_text
@@ -510,4 +510,4 @@ def load_measured(path: "str | os.PathLike", lam_std: str = "implicit") -> Measu
 
 def measured_of_node(node):
     """:class:`MeasuredParameters` of a YAML mapping of measurements (``node``)."""
-    return benchmark_from_measured(measured_data_of_node(Node(node.value, node.source, node.key)))
+    return benchmark_from_measured(measured_data_of_node(node))
