@@ -274,6 +274,7 @@ INVERSES = {
     "bikemass.fe.twist": "the rear frame's beam deflection",
     "bikemass.scenario.frame": "calls the beam model's modal solver, imported as solve",
     "bikemass.fe.elements": "a beam element's shape functions",
+    "bikemass.bicycle.measured": "a frame's Ixx, Ixz, Izz from its torsional-pendulum moments (3x3 least squares)",
 }
 """Every module that inverts or solves with a matrix, and what for: a new one must say here why it
 is not a second assembly of a state matrix."""

@@ -54,6 +54,8 @@ _API = {
     "PARAMETER_NAMES": "models.parameters", "InputError": "core.errors", "BikemassWarning": "core.errors",
     "load_parameter_text": "bicycle.parameter_text", "MeasuredParameters": "bicycle.parameter_text",
     "ParameterFileWarning": "bicycle.parameter_text",
+    "read_measured_data": "bicycle.measured", "MeasuredData": "bicycle.measured",
+    "benchmark_from_measured": "bicycle.measured", "load_measured": "bicycle.measured",
     "load_parameter_set": "bicycle.parameter_sets", "ParameterSetFile": "bicycle.parameter_sets",
     "RiderLeanParameters": "models.lean",
     "optimise": "design.optimise", "OptimiseResult": "design.optimise", "plot_optimisation": "design.figures",

@@ -325,7 +325,7 @@ def _check_options(spreads, method, samples, seed):
 
 
 @renamed_keywords(bike="bicycle")
-def uncertainty(bicycle: "str | os.PathLike | Scenario", spreads: "Mapping[str, float | Spread]",
+def uncertainty(bicycle: "str | os.PathLike | Scenario", spreads: "Mapping[str, float | Spread] | None" = None,
                 rider: "str | None" = None, stiffness: str = "infinite", combine: str = "exact",
                 method: str = "linear", samples: int = 1000, seed: int = 0, speeds: "ArrayLike | None" = None,
                 max_speeds: int = MAX_SPEEDS, model: str = "whipple", tyres: "str | Mapping | None" = None) -> Propagation:
@@ -342,7 +342,10 @@ def uncertainty(bicycle: "str | os.PathLike | Scenario", spreads: "Mapping[str, 
         Anything ``bm.load_bicycle`` takes (a BicycleParameters file's ``+/-`` values are available
         as spreads), or a :class:`~bikemass.scenario.scenario.Scenario`, whose own rider, stiffness,
         model and tyres are used. (``bike=`` is the deprecated old name.)
-    spreads : Mapping
+    spreads : Mapping, optional
+        Default: the bicycle's own standard deviations (a bicycle computed from measurements: its
+        measurements ``measured.<name>``, in its file's units; a parameter file with ``+/-`` values
+        or an ``uncertainty:`` block: its parameters), as ``bikemass uncertainty`` takes them.
         ``{input key: std}`` (a normal distribution) or ``{input key: Spread}``
         (:class:`~bikemass.analysis.uncertainty.Spread`: ``normal`` or ``uniform``), the std in
         SI (m, kg, rad, ...) when bare, or a ``"<number> <unit>"`` string (``"0.1 mm"``). Keys: the 26 benchmark names or
@@ -396,12 +399,26 @@ def uncertainty(bicycle: "str | os.PathLike | Scenario", spreads: "Mapping[str, 
     >>> mc = bm.uncertainty("benchmark", {"c": 0.005, "mB": 1.0}, method="montecarlo", samples=200, seed=1)
     >>> print(f"Monte Carlo: +- {mc.speeds['weave_speed']['std']:.2f} m/s from {len(mc.samples['weave_speed'])} draws")
     Monte Carlo: +- 0.06 m/s from 200 draws
+
+    A measured bicycle brings its own (here the Browser's 40 measurements):
+
+    >>> import warnings
+    >>> with warnings.catch_warnings():
+    ...     warnings.simplefilter("ignore", bm.BikemassWarning)     # its IByy, as measured
+    ...     u = bm.uncertainty("browser-measured")
+    >>> print(len(u.inputs), f"weave +- {u.speeds['weave_speed']['std']:.4f} m/s")
+    40 weave +- 0.0453 m/s
     """
-    if not isinstance(spreads, dict):
+    if spreads is not None and not isinstance(spreads, dict):
         raise InputError("spreads", "(argument)", f"a mapping of input key -> std or Spread, got {type(spreads).__name__}")
-    spreads = {k: v if isinstance(v, Spread) else Spread("normal", v) for k, v in spreads.items()}
     scenario = bicycle if isinstance(bicycle, Scenario) else Scenario(bicycle, rider, stiffness, combine, model=model,
                                                                  tyres=tyres)
+    if spreads is None:
+        spreads = scenario.measurement_std or scenario.file_std
+        if not spreads:
+            raise InputError("spreads", "(argument)", "standard deviations: the bicycle has none of its own (a "
+                             "BicycleParameters file with +/- values, a parameter file with uncertainty:), so give them")
+    spreads = {k: v if isinstance(v, Spread) else Spread("normal", v) for k, v in spreads.items()}
     return propagate(scenario, spreads, method, samples, seed, speeds, max_speeds=max_speeds)
 
 

@@ -1,6 +1,7 @@
 """Reading a bicycle: ``frames/<name>.yaml``, any bicycle YAML file, a benchmark parameter file
-(YAML/JSON with the 26 names, or BicycleParameters' ``name = value+/-std`` text), or a measured
-bicycle: a YAML file naming such a parameter file (``parameters:``) next to ``contacts:`` and
+(YAML/JSON with the 26 names, or BicycleParameters' ``name = value+/-std`` text), BicycleParameters'
+raw measurements (``<Name>Measured.txt`` or its YAML form: :mod:`bikemass.bicycle.measured`), or a
+measured bicycle: a YAML file naming such a file (``parameters:``) next to ``contacts:`` and
 ``stiffness:``, so that riders can be posed on it.
 
 The file format is described in docs/bicycles.md.  Every problem is reported as
@@ -25,7 +26,9 @@ from ..mass.sections import RoundSection, SquareSection
 from ..mass.solids import Lumped, RoundTube, SquareTube
 from ..mass.tubes import Structure, Tube
 from ..models.plausibility import check_stiffness
-from .parameter_sets import kind_of, read_parameter_set, read_parameter_set_text, whipple_parameters
+from .measured import looks_measured, measured_of_node
+from .parameter_sets import (kind_of, measured_parameter_set, read_parameter_set, read_parameter_set_text,
+                             whipple_parameters)
 from .parameter_text import looks_like_parameter_text
 from .chart_build import expand_chart
 from .components import materials_lookup, read_component, read_wheel
@@ -54,6 +57,13 @@ def load_bicycle(name_or_path, size=None):
     return _read_document(load_yaml(path), path.stem, str(path), size or at_size)
 
 
+def read_measured_bicycle(node, default_name, source):
+    """A :class:`Bicycle` of a YAML mapping of BicycleParameters measurements (:mod:`.measured`)."""
+    measured = measured_of_node(node)
+    name = node["name"].string() if node.has("name") else default_name
+    return bicycle_from_parameters(measured.parameters, name, source, measured=measured)
+
+
 def bicycle_from_mapping(mapping, source, size=None):
     """:class:`Bicycle` from a Python mapping holding what a bicycle or parameter file holds;
     errors name ``source``.  A ``base`` is looked up as a shipped name or relative to the
@@ -65,6 +75,9 @@ def bicycle_from_mapping(mapping, source, size=None):
 
 
 def _read_document(node, default_name, source, size):
+    if isinstance(node.value, dict) and looks_measured(node.value):
+        select_size(node, size)                        # measurements have no sizes: refuse one asked for
+        return read_measured_bicycle(node, default_name, source)
     if kind_of(node) is not None:
         select_size(node, size)                        # a parameter set has no sizes: refuse one asked for
         return _parameter_set_bicycle(read_parameter_set(node), default_name, source)
@@ -108,7 +121,7 @@ def _parameter_set_bicycle(parameter_set, default_name, source, **extra):
     """A :class:`Bicycle` of four lumped bodies holding a parameter set read from ``source``."""
     return bicycle_from_parameters(whipple_parameters(parameter_set), parameter_set.label or default_name,
                                    source, rider_included=parameter_set.rider_included,
-                                   speed=parameter_set.speed, **extra)
+                                   speed=parameter_set.speed, measured=parameter_set.measured, **extra)
 
 
 def _measured_bicycle(node, path):
@@ -121,16 +134,19 @@ def _measured_bicycle(node, path):
         inner = read_parameter_set_text(target)
     else:
         document = load_yaml(target)
-        if kind_of(document) is None:
+        if looks_measured(document.value):
+            inner = measured_parameter_set(measured_of_node(document))
+        elif kind_of(document) is None:
             node.fail(f"a parameter file (the 26 benchmark names, a BicycleParameters text or parameter-set "
                       f"file), got {short(str(target))}, which is none", "parameters")
-        inner = read_parameter_set(document)
+        else:
+            inner = read_parameter_set(document)
     stiffness = _read_stiffness(node["stiffness"], load_materials()) if node.has("stiffness") else {}
     contacts = read_contacts(node["contacts"], {}) if node.has("contacts") else None
     name = node["name"].string() if node.has("name") else path.stem
     included = inner.rider_included or node.get("rider_included", False).boolean()
     return bicycle_from_parameters(whipple_parameters(inner), name, str(path), stiffness, contacts, included,
-                                   speed=inner.speed)
+                                   speed=inner.speed, measured=inner.measured)
 
 
 MAX_BASE_CHAIN = 16
@@ -310,11 +326,12 @@ def _read_stiffness(node, materials):
 
 
 def bicycle_from_parameters(params, name, source, stiffness=None, contacts=None, rider_included=False,
-                            speed=None):
+                            speed=None, measured=None):
     """A :class:`Bicycle` of four lumped bodies holding a benchmark parameter set
     (optionally published ``stiffness`` by material and rider ``contacts``;
     ``rider_included``: its rear body B already holds a rider; ``speed``: the speed its file
-    gives, m/s)."""
+    gives, m/s; ``measured``: the set's :class:`~bikemass.bicycle.parameter_text.MeasuredParameters`,
+    its standard deviations)."""
     geometry = Geometry(params.w, params.c, np.pi / 2 - params.lam, params.rR, params.rF, params.g)
     bodies = (
         ("rear_wheel", params.mR, geometry.rear_axle, params.inertia("R")),
@@ -325,4 +342,4 @@ def bicycle_from_parameters(params, name, source, stiffness=None, contacts=None,
     parts = tuple(Part(body, Lumped(MassProperties(mass, np.zeros(3), inertia)), mass, Placement.at(at), body)
                   for body, mass, at, inertia in bodies)
     return Bicycle(name, source, geometry, {}, (), parts, None, stiffness or {}, params, contacts,
-                   rider_included=rider_included, speed=speed)
+                   rider_included=rider_included, speed=speed, measured=measured)

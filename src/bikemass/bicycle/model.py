@@ -23,7 +23,10 @@ class Bicycle:
     ``size`` the size picked from a size run,
     ``rider_included`` whether the rear frame already holds a rider (then none may be added),
     ``speed`` the speed (m/s) a parameter-set file gives beside the parameters (BicycleParameters'
-    ``v``; not a bicycle parameter, the file's suggestion of a speed to look at) or ``None``.
+    ``v``; not a bicycle parameter, the file's suggestion of a speed to look at) or ``None``,
+    ``measured`` the :class:`~bikemass.bicycle.parameter_text.MeasuredParameters` of a measured
+    bicycle (a parameter file with standard deviations, or a measured-data file: ``published``
+    with its ``std``) or ``None``.
 
     See Also
     --------
@@ -54,6 +57,7 @@ class Bicycle:
     size: str = None
     rider_included: bool = False
     speed: float = None
+    measured: object = None
 
     def __post_init__(self):
         frozen_fields(self, "keypoints", "tubes", "parts", "stiffness")

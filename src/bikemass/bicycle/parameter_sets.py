@@ -34,25 +34,26 @@ import warnings
 import os
 import numpy as np
 
-from ..core.config import load_yaml
+from ..core.config import Node, load_yaml
 from ..core.errors import InputError, short
 from ..mass.inertia import MassProperties, combine
 from .parameter_text import (AXISYMMETRIC, LATERAL, SPLIT_BODIES, ParameterFileWarning, ParameterText,
-                             printed_resolution, body_names, measured_parameters)
+                             _parse_value, printed_resolution, body_names, measured_parameters)
 from ..models.parameters import NAMES, SPEED_KEY, BenchmarkParameters, check_units, dimension, sign_rule
 from ..models.moore2012 import NAMES as MOORE_NAMES, PARAMETERIZATION as MOORE_PARAMETERIZATION, from_moore_values
 from ..models.plausibility import check_parameter_file
 from ..core.errors import wrong_type
-from .parameter_text import load_parameter_text
+from .parameter_text import read_parameter_text
+from .measured import benchmark_from_measured, looks_measured, measured_data, measured_data_of_node
 
 BENCHMARK, PRINCIPAL, RIDER_LEAN = "benchmark", "principal", MOORE_PARAMETERIZATION
 """The parameterizations read (bikemass's names for them)."""
 PARAMETERIZATIONS = {"benchmark": BENCHMARK, "Meijaard2007": BENCHMARK, "principal": PRINCIPAL,
                      "Moore2019": PRINCIPAL, "MooreRiderLean2012": RIDER_LEAN}
 """``parameterization:`` as BicycleParameters' files and its ``to_yaml`` write it -> bikemass's name."""
-SET_KEYS = ("parameterization", "values", "parameters", "rider", "description", "name", "source")
+SET_KEYS = ("parameterization", "values", "parameters", "rider", "description", "name", "source", "uncertainty")
 """Top-level keys of the ``parameterization:`` / ``values:`` form."""
-FILE_KEYS = ("name", "description", "source", "rider_included", "units", "warnings")
+FILE_KEYS = ("name", "description", "source", "rider_included", "units", "warnings", "uncertainty")
 """Metadata keys of bikemass's own (flat) benchmark parameter files (``warnings``: what bikemass
 warned about when it wrote the file as JSON; read back, the set is checked again)."""
 
@@ -133,6 +134,9 @@ class ParameterSetFile:
         Every value as read (SI), the principal ones included.
     source : str
         The file.
+    measured : MeasuredParameters or None
+        A benchmark set's standard deviations (a BicycleParameters text file's ``+/-`` values, a
+        YAML file's ``uncertainty:`` block, or computed from measurements), else ``None``.
 
     See Also
     --------
@@ -158,6 +162,7 @@ class ParameterSetFile:
     notes: tuple
     values: MappingProxyType
     source: str
+    measured: object = None
 
     def __repr__(self):
         return f"ParameterSetFile({self.parameterization!r}, {self.label!r}, source={self.source!r})"
@@ -168,7 +173,7 @@ def kind_of(node):
     :data:`RIDER_LEAN`), or ``None`` when it is not a parameter set; a ``parameterization:``
     key names it, else the names present do."""
     mapping = node.value
-    if not isinstance(mapping, dict):
+    if not isinstance(mapping, dict) or looks_measured(mapping):
         return None
     if "parameterization" in mapping:
         given = node["parameterization"]
@@ -186,7 +191,10 @@ def kind_of(node):
 
 def read_parameter_set(node):
     """:class:`ParameterSetFile` of a YAML mapping ``node`` (flat, or ``parameterization:`` /
-    ``values:``); InputError naming the key on bad input."""
+    ``values:``), or of BicycleParameters' measurements (their benchmark set); InputError naming the
+    key on bad input."""
+    if isinstance(node.value, dict) and looks_measured(node.value):
+        return measured_parameter_set(benchmark_from_measured(measured_data_of_node(node)))
     kind = kind_of(node)
     if kind is None:
         node.fail("a parameter set: the 26 benchmark names, principal parameters or "
@@ -206,9 +214,13 @@ def read_parameter_set(node):
     values.mapping()
     speed = values[SPEED_KEY].number("speed", nonnegative=True) if values.has(SPEED_KEY) else None
     description = _text(node.get("description"))
+    measured = None
     if kind == BENCHMARK:
-        measured = _benchmark(values, exclude=FILE_KEYS if values is node else ())
+        measured = _benchmark(values, exclude=FILE_KEYS if values is node else (), uncertainty=node.get("uncertainty"))
         parameters, notes, read = measured.parameters, measured.notes, measured.parameters.to_dict()
+        measured = measured if any(measured.std.values()) else None
+    elif node.has("uncertainty"):
+        node.fail("a benchmark parameter set with uncertainty: (standard deviations of the 26 names)", "uncertainty")
     elif kind == PRINCIPAL:
         read = _numbers(values, PRINCIPAL_NAMES, (*PRINCIPAL_IMPLIED, *PRINCIPAL_DRAWING), _principal_rule,
                         exclude=("name", "description", "source") if values is node else ())
@@ -220,7 +232,7 @@ def read_parameter_set(node):
                         exclude=("name", "description", "source") if values is node else ())
         parameters, notes = from_moore_values(read, str(values.source)), ()
     return ParameterSetFile(kind, parameters, speed, bool(rider), label, description, tuple(notes),
-                            MappingProxyType(dict(read)), str(node.source))
+                            MappingProxyType(dict(read)), str(node.source), measured)
 
 
 def load_parameter_set(path: "str | os.PathLike") -> ParameterSetFile:
@@ -274,11 +286,22 @@ def load_parameter_set(path: "str | os.PathLike") -> ParameterSetFile:
 
 
 def read_parameter_set_text(path):
-    """:class:`ParameterSetFile` of a BicycleParameters text file (``<Name>Benchmark.txt``): a
-    benchmark set, its notes, no speed."""
-    measured = load_parameter_text(path)
+    """:class:`ParameterSetFile` of a BicycleParameters text file: a ``<Name>Benchmark.txt`` (a
+    benchmark set, its notes, no speed) or a ``<Name>Measured.txt`` (its measurements' benchmark set)."""
+    text = read_parameter_text(path)
+    if looks_measured(text.nominal):
+        return measured_parameter_set(benchmark_from_measured(measured_data(text.nominal, text.std, text.source)))
+    measured = measured_parameters(text)
     return ParameterSetFile(BENCHMARK, measured.parameters, None, False, "", "", measured.notes,
-                            MappingProxyType(measured.parameters.to_dict()), str(path))
+                            MappingProxyType(measured.parameters.to_dict()), str(path),
+                            measured if any(measured.std.values()) else None)
+
+
+def measured_parameter_set(measured):
+    """:class:`ParameterSetFile` of a :class:`~bikemass.bicycle.parameter_text.MeasuredParameters`
+    (a benchmark set with standard deviations)."""
+    return ParameterSetFile(BENCHMARK, measured.parameters, None, False, "", "", measured.notes,
+                            MappingProxyType(measured.parameters.to_dict()), measured.source, measured)
 
 
 def _text(node):
@@ -305,22 +328,40 @@ def _numbers(values, required, optional, rule, exclude=()):
     return out
 
 
-def _benchmark(values, exclude=()):
+def _benchmark(values, exclude=(), uncertainty=None):
     """The :class:`~bikemass.bicycle.parameter_text.MeasuredParameters` of a benchmark mapping, read as a
-    BicycleParameters text file would be (extra names checked and used the same way)."""
+    BicycleParameters text file would be (extra names checked and used the same way); ``uncertainty``:
+    the file's ``uncertainty:`` block (``name: std``, SI or with a unit), or a missing Node."""
     values.check_keys(required=NAMES, optional=(*BENCHMARK_EXTRAS, SPEED_KEY, *exclude))
     if values.has("units"):
         check_units(values["units"])
-    nominal = {}
+    nominal, given = {}, {}
     for name in (*NAMES, *BENCHMARK_EXTRAS):
         if values.has(name):
             base = name if name in NAMES else name.replace("G", "H").replace("S", "H")
             dim = dimension(base) if not base.startswith("y") else "length"
             positive, nonnegative = sign_rule(base) if base in NAMES else (False, False)
-            nominal[name] = values[name].number(dim, positive=positive, nonnegative=nonnegative,
-                                                bare_unit="rad" if name == "lam" else None)
+            item = values[name]
+            if isinstance(item.value, str) and ("+/-" in item.value or "±" in item.value):
+                # BicycleParameters' value+/-std, bare SI (radians), as in its text files
+                nominal[name], given[name], _ = _parse_value(item.value, str(values.source), item.key)
+                item = Node(nominal[name], item.source, item.key)
+            nominal[name] = item.number(dim, positive=positive, nonnegative=nonnegative,
+                                        bare_unit="rad" if name == "lam" else None)
+    std = {**dict.fromkeys(nominal, 0.0), **given}
+    if uncertainty is not None and not uncertainty.missing:
+        uncertainty.mapping()
+        uncertainty.check_keys(optional=tuple(nominal))
+        for name in nominal:
+            if uncertainty.has(name):
+                if name in given:
+                    uncertainty[name].fail(f"the std of {name} once (its value gives one too: {values[name].value!r})")
+                base = name if name in NAMES else name.replace("G", "H").replace("S", "H")
+                dim = dimension(base) if not base.startswith("y") else "length"
+                std[name] = uncertainty[name].number(dim, nonnegative=True,
+                                                     bare_unit="rad" if name == "lam" else None)
     text = ParameterText(str(values.source), MappingProxyType(nominal),
-                         MappingProxyType(dict.fromkeys(nominal, 0.0)),
+                         MappingProxyType(std),
                          MappingProxyType({k: printed_resolution(repr(v)) for k, v in nominal.items()}),
                          MappingProxyType({}))
     return measured_parameters(text, values.key)

@@ -26,7 +26,7 @@ is also issued as a :class:`ParameterFileWarning`.  Nominal values build the
 import os
 import re
 import warnings
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from types import MappingProxyType
 
@@ -169,6 +169,13 @@ class MeasuredParameters:
     """A measured bicycle: nominal :class:`~bikemass.models.parameters.BenchmarkParameters`,
     ``std[name]`` for the 26 names (SI), and ``notes``: how every key beyond the 26 was used.
 
+    Computed from raw measurements (:func:`bikemass.load_measured`) it also holds ``extra``
+    and ``extra_std``: values the Whipple model has no place for (a split front frame's handlebar
+    ``G`` and fork ``S``, a flywheel ``D``), and ``covariance``: the 26 x 26 covariance (SI, in
+    the order of ``bikemass.PARAMETER_NAMES``; the parameters share measurements), else ``None``
+    (a parameter file gives standard deviations only); ``data``: the
+    :class:`~bikemass.bicycle.measured.MeasuredData` it was computed from, else ``None``.
+
     See Also
     --------
     bikemass.load_parameter_text : Reads one.
@@ -190,6 +197,10 @@ class MeasuredParameters:
     std: MappingProxyType
     notes: tuple
     source: str
+    extra: MappingProxyType = field(default_factory=lambda: MappingProxyType({}))
+    extra_std: MappingProxyType = field(default_factory=lambda: MappingProxyType({}))
+    covariance: object = None
+    data: object = None
 
     def __repr__(self):
         return f"MeasuredParameters({self.source!r}, {len(self.notes)} notes)"

@@ -211,12 +211,15 @@ def run_uncertainty(args):
         raise InputError("--samples", args.samples, "a number of samples from 2 to 1000000")
     speeds = dialect.parse_speeds(args.speeds)
     scenario = dialect.scenario(args, origin=args.std or args.bike)
-    spreads = {k: Spread("normal", s) for k, s in scenario.file_std.items()}
+    # a bicycle computed from measurements: its measurements are the independent inputs (the 26
+    # parameters share them); a parameter file: its parameters' standard deviations
+    spreads = {k: Spread("normal", s) for k, s in (scenario.measurement_std or scenario.file_std).items()}
     if args.std:
         spreads.update(read_std_file(args.std))
     if not spreads:
         raise InputError(args.bike, "(uncertainties)", "standard deviations: a BicycleParameters file with "
-                         "+/- values, or --std FILE")
+                         "+/- values (<Name>Benchmark.txt or <Name>Measured.txt), a parameter file with an "
+                         "uncertainty: block, or --std FILE")
     result = propagate(scenario, spreads, args.method, args.samples, args.seed, speeds)
 
     def render(fmt):

@@ -1,6 +1,9 @@
 """``bikemass params``, ``bikemass draw`` and ``bikemass export``: a bicycle (+ rider) as
 benchmark parameters, a side-view drawing, or a 3D model."""
 
+import argparse
+import re
+import textwrap
 from pathlib import Path
 
 from ..core.choices import PARAMETER_FORMATS
@@ -12,6 +15,14 @@ from .sizes import add_size_option, every_size
 MODEL_FORMATS = ("glb", "stl", "obj")
 
 
+class WholeNames(argparse.HelpFormatter):
+    """argparse's help layout, but a line never breaks inside a hyphenated name (``salsa-fargo``)."""
+
+    def _fill_text(self, text, width, indent):
+        return textwrap.fill(re.sub(r"\s+", " ", text).strip(), width, initial_indent=indent,
+                             subsequent_indent=indent, break_on_hyphens=False)
+
+
 def _params_description():
     """``params --help``'s description, with the shipped bicycles listed (or why none are)."""
     try:
@@ -20,7 +31,10 @@ def _params_description():
         shipped = f"none found: {exc}"
     return ("The 26 benchmark parameters (SI, radians) of BIKE with an optional rider. "
             f"BIKE: a shipped bicycle ({shipped}), a bicycle YAML file (docs/bicycles.md) "
-            "or a benchmark parameter file (YAML/JSON with the 26 names). The YAML and JSON "
+            "or a benchmark parameter file (YAML/JSON with the 26 names, BicycleParameters' <Name>Benchmark.txt) "
+            "or measured-data file (BicycleParameters' <Name>Measured.txt: the parameters computed from "
+            "the measurements, with standard deviations, which the YAML, JSON, table and csv output keep). "
+            "The YAML and JSON "
             "output is itself a parameter file. --format bicycleparameters-yaml writes BicycleParameters' "
             "parameter-set YAML: Meijaard2007, or with --model rider-lean the MooreRiderLean2012 set "
             "(the rider split at the hips), which BicycleParameters and bikemass read back.")
@@ -29,7 +43,7 @@ def _params_description():
 def register(sub):
     params = sub.add_parser(
         "params", help="benchmark parameters (Meijaard et al. 2007) of a bicycle with a rider",
-        description=_params_description)
+        description=_params_description, formatter_class=WholeNames)
     _bike_and_rider(params)
     dialect.add_combine(params)
     dialect.add_method(params)
@@ -114,7 +128,9 @@ def run_params(args):
         title = f"{args.bike} with rider {args.rider} (combine {args.combine})"
         included = (args.rider not in (None, "none") or scenario.inputs.lean_set is not None
                     or scenario.inputs.bicycle().rider_included)
-        dialect.emit(args, lambda f: format_parameters(params, f, title, included))
+        # a measured bicycle's standard deviations belong to its own parameters: not with a rider added
+        std = scenario.file_std if args.rider in (None, "none") and args.model == "whipple" else None
+        dialect.emit(args, lambda f: format_parameters(params, f, title, included, std))
     return 0
 
 

@@ -22,32 +22,43 @@ from ..core.output import as_written, dumps, table, with_units
 from .parameters import DESCRIPTIONS, NAMES, parameter_units
 
 
-def format_parameters(params, fmt, title="", rider_included=False):
+def format_parameters(params, fmt, title="", rider_included=False, std=None):
     """Text of ``params`` (:class:`~bikemass.models.parameters.BenchmarkParameters`) in ``fmt``;
-    ``rider_included``: the rear body B holds a rider."""
+    ``rider_included``: the rear body B holds a rider; ``std``: a measured set's standard deviations
+    (``{name: SI}``), written as an ``uncertainty:`` block (YAML, JSON: what bikemass reads back), a
+    std column (table, CSV) or ``value+/-std`` (``bicycleparameters``)."""
     values = params.to_dict()
+    std = {k: float(v) for k, v in (std or {}).items() if v > 0}
     if fmt in ("yaml", "json"):
-        return dumps(with_units({**values, **({"rider_included": True} if rider_included else {})},
+        block = {"uncertainty": {k: std[k] for k in NAMES if k in std}} if std else {}
+        return dumps(with_units({**values, **({"rider_included": True} if rider_included else {}), **block},
                                 parameter_units()), fmt)
     if fmt == "bicycleparameters":
-        return bicycleparameters_text(params, title + (" (rider included in B)" if rider_included else ""))
+        return bicycleparameters_text(params, title + (" (rider included in B)" if rider_included else ""), std)
     if fmt == "bicycleparameters-yaml":
         return meijaard_yaml(params, rider_included=rider_included)
     units = parameter_units()
     if fmt == "table":
-        rows = [[k, DESCRIPTIONS[k].split(" [")[0], values[k], units[k]] for k in NAMES]
-        return (f"{title}\n" if title else "") + table(["parameter", "meaning", "value", "unit"], rows, "{:.6g}")
+        rows = [[k, DESCRIPTIONS[k].split(" [")[0], values[k], *([std.get(k, 0.0)] if std else []), units[k]]
+                for k in NAMES]
+        return (f"{title}\n" if title else "") + table(["parameter", "meaning", "value", *(["std"] if std else []),
+                                                         "unit"], rows, "{:.6g}")
     if fmt == "csv":
+        if std:
+            return "parameter,value,std,unit\n" + "".join(
+                f"{k},{as_written(values[k], units[k])!r},{std.get(k, 0.0)!r},{units[k]}\n" for k in NAMES)
         return "parameter,value,unit\n" + "".join(f"{k},{as_written(values[k], units[k])!r},{units[k]}\n"
                                                     for k in NAMES)
     raise InputError("format", fmt, f"format must be one of {', '.join(FORMATS)}, got {fmt!r}")
 
 
-def bicycleparameters_text(params, title=""):
-    """The BicycleParameters ``<Name>Benchmark.txt`` text (no blank lines: its reader rejects them)."""
-    values, units = params.to_dict(), parameter_units()
+def bicycleparameters_text(params, title="", std=None):
+    """The BicycleParameters ``<Name>Benchmark.txt`` text (no blank lines: its reader rejects them);
+    ``std``: ``value+/-std`` where a standard deviation is given (as BicycleParameters writes them)."""
+    values, units, std = params.to_dict(), parameter_units(), std or {}
     header = [f"# {line}" for line in (title, "written by bikemass; SI units, radians") if line]
-    return "\n".join(header + [f"{name} = {as_written(values[name], units[name])!r}" for name in NAMES]) + "\n"
+    return "\n".join(header + [f"{name} = {as_written(values[name], units[name])!r}"
+                                + (f"+/-{std[name]!r}" if std.get(name) else "") for name in NAMES]) + "\n"
 
 
 MEIJAARD = "Meijaard2007"

@@ -24,10 +24,10 @@ from collections.abc import Mapping
 
 from ..bicycle.benchmark import bicycle_parameters, combined_bodies, parameters_from_bodies, refuse_second_rider
 from ..bicycle.chart import ANGLE_KEYS, CHECKED_KEYS, FRAME_KEYS, STAND_INS
-from ..bicycle.loader import _is_parameter_text, _with_base, bicycle_from_mapping
+from ..bicycle.loader import _is_parameter_text, _with_base, bicycle_from_mapping, bicycle_from_parameters
+from ..bicycle.measured import measured_values
 from ..bicycle.model import BODIES, Bicycle
-from ..bicycle.parameter_sets import RIDER_LEAN, kind_of, read_parameter_set
-from ..bicycle.parameter_text import load_parameter_text
+from ..bicycle.parameter_sets import RIDER_LEAN, kind_of, read_parameter_set, read_parameter_set_text
 from ..bicycle.sizes import select_size, split_size
 from ..core.choices import RIGID
 from ..core.config import Node, load_yaml
@@ -48,6 +48,9 @@ from .catalog import seated_rider
 from .loading import load_bicycle, load_rider
 
 RIDER_PREFIX = "rider."
+MEASURED_PREFIX = "measured."
+"""Inputs ``measured.<name>``: a raw measurement of a bicycle computed from measurements
+(:mod:`bikemass.bicycle.measured`), in its file's units; the bicycle is recomputed from them."""
 STIFFNESS_KEY = "stiffness"
 CACHE_SIZE = 32
 PART_CACHE_SIZE = 4096
@@ -137,7 +140,7 @@ def _file_unit(document, path, value):
 def file_unit(model, key):
     """The unit bikemass reads input ``key`` of ``model`` in when it is given as a bare number in a
     sweep (the unit the file writes there), or None for SI.  Parameters and stiffness are SI."""
-    if key in NAMES or key == STIFFNESS_KEY:
+    if key in NAMES or key == STIFFNESS_KEY or key.startswith(MEASURED_PREFIX):
         return None
     document, path, value = _located(model, key)
     return _file_unit(document, path, value)
@@ -163,6 +166,8 @@ def get_path(model, key):
     0.001016, a chart's ``590`` under ``units: {length: mm}`` -> 0.59); a bare number as written."""
     if key in NAMES:
         return float(getattr(model.parameters(), key))
+    if key.startswith(MEASURED_PREFIX):
+        return float(model.measurements(key)[key[len(MEASURED_PREFIX):]])
     document, path, value = _located(model, key)
     unit = _file_unit(document, path, value)
     try:
@@ -236,7 +241,6 @@ class Inputs:
             return
         self._measured = self._fixed = None
         self._size = self._size_index = None
-        self._file_std = {}
         bike = self.bike
         if self.lean_set is not None:
             self._bike_source, self._bike_doc = self._lean_source, {}
@@ -256,10 +260,9 @@ class Inputs:
         path = resolve(name, frames_dir(), "bicycle")
         self._bike_source = str(path)
         if _is_parameter_text(path):
-            measured = load_parameter_text(path)
+            measured = read_parameter_set_text(path)
             self._measured = measured.parameters
             self._bike_doc = {"name": path.stem, **measured.parameters.to_dict()}
-            self._file_std = {k: float(v) for k, v in measured.std.items() if v > 0}
             return
         self._bike_doc = _with_base(load_yaml(path)).mapping()
         sizes = [str(x) for x in self._bike_doc.get("sizes", [])] if self._size is not None else []
@@ -306,9 +309,13 @@ class Inputs:
 
     @property
     def file_std(self):
-        """``{name: std}`` of a BicycleParameters text file's ``+/-`` values (SI; those above 0)."""
-        self._read()
-        return self._file_std
+        """``{name: std}`` (SI; those above 0) of a measured bicycle's parameters: a BicycleParameters
+        text file's ``+/-`` values, a parameter file's ``uncertainty:`` block, or computed from
+        measurements (:attr:`~bikemass.bicycle.model.Bicycle.measured`); ``{}`` for any other bicycle."""
+        if self.lean_set is not None:
+            return {}
+        measured = self.bicycle(()).measured
+        return {} if measured is None else {k: float(v) for k, v in measured.std.items() if v > 0}
 
     def _own_bicycle_pose(self, doc):
         """A chain pose whose ``bike:`` names this scenario's own bicycle is solved on the bicycle
@@ -343,6 +350,9 @@ class Inputs:
         def build():
             if not changes:
                 return load_bicycle(self.bike)
+            remeasured = [c for c in changes if c[0].startswith(MEASURED_PREFIX)]
+            if remeasured:
+                return self._remeasured(changes)
             self._read()
             if self._measured is not None or self._fixed is not None:
                 what = "is a parameter file" if self._measured is not None else "was given built, not as YAML"
@@ -370,6 +380,38 @@ class Inputs:
         doc = self._document(self._changeable_chart() if chart else self._bike_doc, changes, self._bike_source,
                              self._size_index)
         return select_size(Node(doc, self._bike_source, ""), self._size).value
+
+    def measurements(self, key=MEASURED_PREFIX):
+        """The :class:`~bikemass.bicycle.measured.MeasuredData` ``nominal`` values of a bicycle computed
+        from measurements; InputError naming ``key`` for any other bicycle."""
+        measured = self.bicycle(()).measured
+        if measured is None or measured.data is None:
+            raise InputError(self.origin, key, "a bicycle computed from measurements (BicycleParameters' "
+                             "<Name>Measured.txt or its YAML form) for a measured.<name> input")
+        return measured.data.nominal
+
+    @property
+    def measurement_std(self):
+        """``{"measured.<name>": std}`` of a bicycle computed from measurements (the file's units; those
+        above 0), else ``{}``."""
+        if self.lean_set is not None:
+            return {}
+        measured = self.bicycle(()).measured
+        if measured is None or measured.data is None:
+            return {}
+        return {MEASURED_PREFIX + k: float(v) for k, v in measured.data.std.items() if v > 0}
+
+    def _remeasured(self, changes):
+        """The bicycle computed from its measurements with ``measured.<name>`` ``changes``."""
+        other = [key for key, _ in changes if not key.startswith(MEASURED_PREFIX)]
+        if other:
+            raise InputError(self.origin, other[0], "measured.<name> inputs only, or none, on a bicycle computed "
+                             "from measurements (its measurements are its document)")
+        self.measurements(changes[0][0])
+        base = self.bicycle(())
+        params = measured_values(base.measured.data, {k[len(MEASURED_PREFIX):]: v for k, v in changes})
+        return bicycle_from_parameters(params, base.name, base.source, base.stiffness, base.contacts,
+                                       base.rider_included, base.speed)
 
     def _changeable_chart(self):
         """The bicycle document with its chart ready to change: the published redundant values

@@ -230,8 +230,17 @@ class Scenario:
 
     @property
     def file_std(self):
-        """``{name: std}`` (SI) of a BicycleParameters text file's ``+/-`` values; ``{}`` otherwise."""
+        """``{name: std}`` (SI) of a measured bicycle's 26 parameters (a BicycleParameters text file's
+        ``+/-`` values, a parameter file's ``uncertainty:`` block, or computed from measurements);
+        ``{}`` otherwise."""
         return self.inputs.file_std
+
+    @property
+    def measurement_std(self):
+        """``{"measured.<name>": std}`` of a bicycle computed from measurements (BicycleParameters'
+        ``<Name>Measured.txt``; std in the file's units), ``{}`` otherwise: the independent inputs
+        whose spread ``bikemass uncertainty`` propagates (the 26 parameters share them)."""
+        return self.inputs.measurement_std
 
     # -- the builder ------------------------------------------------------------------------
     def parameters(self, changes=None):
