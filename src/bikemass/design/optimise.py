@@ -12,7 +12,9 @@ checked: the one-sided slopes of the objective along each free variable must agr
 do not, ``converged`` is false and the result says along which variable the kink lies.
 """
 
+import os
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -77,6 +79,18 @@ class OptimiseResult(Result):
         How the gradients were computed.
     variable_units, metric_units : mapping
         SI units of the variables and of the metrics.
+    seconds : float
+        Wall time of the search (s).
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> from bikemass.design.spec import DesignVariable, OptimiseSpec
+    >>> spec = OptimiseSpec(source="example", bike="benchmark", variables=(DesignVariable("mH", 2.0, 6.0),),
+    ...                     sense="maximise", objective="stable-range")
+    >>> result = bm.optimise(spec)
+    >>> print(f"mH = {result.variables['mH']:.1f} kg: stable over {result.objective:.3f} m/s", result.notes)
+    mH = 6.0 kg: stable over 1.912 m/s ('at a bound of the box: mH',)
     """
 
     variables: object
@@ -119,7 +133,8 @@ class OptimiseResult(Result):
         return rows
 
 
-def optimise(spec: "OptimiseSpec | str", progress=None) -> OptimiseResult:
+def optimise(spec: "OptimiseSpec | str | os.PathLike",
+             progress: "Callable[[], object] | None" = None) -> OptimiseResult:
     """The design of a spec's box that maximises, minimises or hits its objective under its constraints.
 
     Parameters
@@ -140,6 +155,12 @@ def optimise(spec: "OptimiseSpec | str", progress=None) -> OptimiseResult:
     InputError
         A bad spec, or a box where no design can be built.
 
+    See Also
+    --------
+    plot_optimisation : Draw the search and the objective around the design.
+    sweep : Every design of a grid instead of the best one.
+    sensitivity : The exact derivatives the gradients are made of.
+
     Examples
     --------
     The benchmark bicycle's trail that puts its weave speed at 5 m/s:
@@ -150,7 +171,7 @@ def optimise(spec: "OptimiseSpec | str", progress=None) -> OptimiseResult:
     ...                     sense="target", objective="weave-speed", target=5.0)
     >>> result = bm.optimise(spec)
     >>> print(f"c = {result.variables['c']:.6f} m, weave speed {result.objective:.6f} m/s, {result.converged}")
-    c = 0.141386 m, weave speed 5.000000 m/s, True
+    c = 0.157486 m, weave speed 5.000000 m/s, True
     """
     start_time = time.perf_counter()
     spec = check_spec(spec)
