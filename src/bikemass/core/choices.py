@@ -135,7 +135,7 @@ class Tuning(Choice):
     >>> for tuning in bm.Tuning:
     ...     g = bm.handling(bm.parameters("benchmark"), [5.0], tuning=tuning).gains[0]
     ...     print(f"{tuning:8s} k_delta {g.k_delta:.3f}, k_phi_dot {g.k_phi_dot:.4f}")
-    hmh2012  k_delta 46.545, k_phi_dot -0.0522
+    hmh2012  k_delta 46.546, k_phi_dot -0.0522
     bmd2016  k_delta 46.552, k_phi_dot -0.0522
     """
 

@@ -1,14 +1,17 @@
 """The figure of an optimisation: how the search converged, and the objective around the design."""
 
+import os
 from dataclasses import dataclass
 
 import numpy as np
 
-from ..core.errors import InputError
+from ..core.errors import InputError, wrong_type
 from ..core.results import Result
 from .metrics import metric
-from .optimise import check_spec
+from .optimise import OptimiseResult, check_spec
+from ..plots.figure import Figure
 from .problem import Problem
+from .spec import OptimiseSpec
 
 SLICE_POINTS = 21
 """Designs along each variable's range in :func:`objective_slices`."""
@@ -30,7 +33,8 @@ class Slices(Result):
     feasible: np.ndarray = None
 
 
-def objective_slices(spec, result, points=SLICE_POINTS):
+def objective_slices(spec: "OptimiseSpec | str | os.PathLike", result: OptimiseResult,
+                     points: int = SLICE_POINTS) -> Slices:
     """:class:`Slices` of the objective's metric through ``result``'s design (an
     :class:`~bikemass.design.optimise.OptimiseResult` of ``spec``)."""
     spec = check_spec(spec)
@@ -58,13 +62,49 @@ def objective_slices(spec, result, points=SLICE_POINTS):
     return Slices(tuple(v.key for v in spec.variables), positions, values, design, feasible)
 
 
-def plot_optimisation(result, slices=None, title="", size=None):
-    """A matplotlib Figure: the objective's metric at each design the search asked for (the best
-    feasible so far as a line), and, given ``slices`` (:func:`objective_slices`), the metric along
-    each variable's range through the design."""
-    # lazy: matplotlib only for a figure
-    from ..plots.figure import Figure
+def plot_optimisation(result: OptimiseResult, slices: "Slices | None" = None, title: str = "",
+                      size: "tuple[float, float] | None" = None) -> Figure:
+    """The search of :func:`bikemass.optimise` and the objective around its design, as a Figure.
 
+    Parameters
+    ----------
+    result : OptimiseResult
+        What :func:`bikemass.optimise` returned.
+    slices : Slices, optional
+        :func:`~bikemass.design.figures.objective_slices` of the same spec: a second panel with the
+        objective's metric along each variable's range through the design (dotted where a constraint is
+        violated).
+    title : str
+        The figure's title.
+    size : (float, float), optional
+        Width and height in inches.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The objective's metric at each design the search asked for (the best feasible so far as a line).
+
+    Raises
+    ------
+    InputError
+        ``result`` not an OptimiseResult.
+
+    See Also
+    --------
+    optimise : Makes the result.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> from bikemass.design.spec import DesignVariable, OptimiseSpec
+    >>> spec = OptimiseSpec(source="example", bike="benchmark", variables=(DesignVariable("c", 0.02, 0.2),),
+    ...                     sense="target", objective="weave-speed", target=5.0)
+    >>> fig = bm.plot_optimisation(bm.optimise(spec))
+    >>> fig.axes[0].get_ylabel()
+    'weave-speed (m/s)'
+    """
+    if not isinstance(result, OptimiseResult):
+        raise wrong_type("result", result, "an OptimiseResult (bm.optimise)")
     unit = result.metric_units[result.metric]
     label = f"{result.metric} ({unit})" if unit not in ("", "1") else result.metric
     panels = 2 if slices is not None else 1

@@ -25,7 +25,7 @@ import numpy as np
 
 from ..analysis.engine.crossings import OSCILLATORY, REAL
 from ..analysis.engine.naming import WOBBLE, family, is_weave
-from ..analysis.handling.quality import hqm_peak
+from ..analysis.handling.quality import hqm, hqm_peak
 from ..analysis.handling.rider import closed_loop, rider_plant
 from ..analysis.handling.tuning import GainsNotFound, tune
 from ..core.errors import InputError, short
@@ -176,13 +176,31 @@ def toe_overlap_of(bicycle, inseam):
     return g.front_wheel_radius - gap
 
 
-def handling_of(model, speed, tuning):
-    """``(hqm-peak, closed-loop-real)`` of a linear model at ``speed`` (m/s), the rider's gains tuned by
-    ``tuning``: the HQM peak and the closed loop's largest real part (1/s), :data:`NO_GAINS` for both
-    where the tuning finds no gains."""
+CURVE_FREQUENCIES = np.geomspace(0.05, 40.0, 240)
+"""Where the HQM curve is held below the peak in a minimax search of ``hqm-peak`` (rad/s; the HQM's
+peaks lie between the weave's and the filter's 20 rad/s)."""
+
+
+def rider_in_loop(model, speed, tuning):
+    """``(plant, gains)`` of a linear model at ``speed`` (m/s), the rider's gains tuned by ``tuning``;
+    ``gains`` is ``None`` where the tuning finds none."""
     plant = rider_plant(model, speed)
     try:
-        gains = tune(plant, tuning)
+        return plant, tuple(tune(plant, tuning))
     except GainsNotFound:
+        return plant, None
+
+
+def handling_of(plant, gains):
+    """``(hqm-peak, closed-loop-real)`` of a rider plant and gains (:func:`rider_in_loop`): the HQM peak and
+    the closed loop's largest real part (1/s), :data:`NO_GAINS` for both without gains."""
+    if gains is None:
         return NO_GAINS, NO_GAINS
     return hqm_peak(plant, gains)[0], closed_loop(plant, gains).max_real
+
+
+def hqm_curve_of(plant, gains):
+    """The HQM at :data:`CURVE_FREQUENCIES` (:data:`NO_GAINS` everywhere without gains)."""
+    if gains is None:
+        return np.full(len(CURVE_FREQUENCIES), NO_GAINS)
+    return hqm(plant, gains, CURVE_FREQUENCIES)

@@ -12,7 +12,9 @@ checked: the one-sided slopes of the objective along each free variable must agr
 do not, ``converged`` is false and the result says along which variable the kink lies.
 """
 
+import os
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -20,7 +22,7 @@ import numpy as np
 from ..core.errors import InputError, short
 from ..core.results import Result, quantity
 from ..models.parameters import NAMES, parameter_units
-from .metrics import metric
+from .metrics import CURVE_FREQUENCIES, metric
 from .problem import Problem
 from .spec import OptimiseSpec, read_spec
 
@@ -77,6 +79,18 @@ class OptimiseResult(Result):
         How the gradients were computed.
     variable_units, metric_units : mapping
         SI units of the variables and of the metrics.
+    seconds : float
+        Wall time of the search (s).
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> from bikemass.design.spec import DesignVariable, OptimiseSpec
+    >>> spec = OptimiseSpec(source="example", bike="benchmark", variables=(DesignVariable("mH", 2.0, 6.0),),
+    ...                     sense="maximise", objective="stable-range")
+    >>> result = bm.optimise(spec)
+    >>> print(f"mH = {result.variables['mH']:.1f} kg: stable over {result.objective:.3f} m/s", result.notes)
+    mH = 6.0 kg: stable over 1.912 m/s ('at a bound of the box: mH',)
     """
 
     variables: object
@@ -119,7 +133,8 @@ class OptimiseResult(Result):
         return rows
 
 
-def optimise(spec: "OptimiseSpec | str", progress=None) -> OptimiseResult:
+def optimise(spec: "OptimiseSpec | str | os.PathLike",
+             progress: "Callable[[], object] | None" = None) -> OptimiseResult:
     """The design of a spec's box that maximises, minimises or hits its objective under its constraints.
 
     Parameters
@@ -140,6 +155,12 @@ def optimise(spec: "OptimiseSpec | str", progress=None) -> OptimiseResult:
     InputError
         A bad spec, or a box where no design can be built.
 
+    See Also
+    --------
+    plot_optimisation : Draw the search and the objective around the design.
+    sweep : Every design of a grid instead of the best one.
+    sensitivity : The exact derivatives the gradients are made of.
+
     Examples
     --------
     The benchmark bicycle's trail that puts its weave speed at 5 m/s:
@@ -150,7 +171,7 @@ def optimise(spec: "OptimiseSpec | str", progress=None) -> OptimiseResult:
     ...                     sense="target", objective="weave-speed", target=5.0)
     >>> result = bm.optimise(spec)
     >>> print(f"c = {result.variables['c']:.6f} m, weave speed {result.objective:.6f} m/s, {result.converged}")
-    c = 0.141386 m, weave speed 5.000000 m/s, True
+    c = 0.157486 m, weave speed 5.000000 m/s, True
     """
     start_time = time.perf_counter()
     spec = check_spec(spec)
@@ -275,22 +296,31 @@ def _search(spec, problem, progress, start_time):
     screened.sort()
     runs = []
     cons = ([{"type": "ineq", "fun": tracked(inequalities), "jac": inequality_jacobian}] if constraints else [])
+    minimax = spec.objective == "hqm-peak" and spec.sense == "minimise"
     for *_, u0 in screened[:spec.starts]:
         try:
             res = minimize(tracked(objective), np.array(u0), jac=objective_gradient, method="SLSQP",
                            bounds=[(0.0, 1.0)] * n, constraints=cons,
                            options={"ftol": SLSQP_TOLERANCE[spec.sense], "maxiter": MAX_ITERATIONS})
+            if minimax:                    # polished as a minimax problem from where the direct search ended
+                polished = _minimax(problem, x_of, span, scale, record, cons, np.clip(res.x, 0.0, 1.0), minimize)
+                if violation(polished.x[:n]) <= FEASIBLE and objective(polished.x[:n]) <= objective(res.x):
+                    res = polished
         except InputError as exc:
             runs.append((True, np.inf, np.inf, np.array(u0), False, f"a design the search reached failed: {exc}"))
             continue
-        u = np.clip(res.x, 0.0, 1.0)
+        u = np.clip(res.x[:n], 0.0, 1.0)
         v = violation(u)
         runs.append((v > FEASIBLE, v, float(objective(u)), u, bool(res.success), str(res.message)))
     runs.sort(key=lambda r: (r[0], r[1], r[2]))
     infeasible, worst, _, u_best, success, message = runs[0]
     x_best = x_of(u_best)
     notes = []
-    kinks = _kinks(raw, u_best, n, spec, scale)
+    kinks = [] if minimax else _kinks(raw, u_best, n, spec, scale)
+    if minimax:
+        notes.append("the HQM peak, a maximum over frequency, was polished as a minimax problem (the curve held "
+                     f"below a bound on {len(CURVE_FREQUENCIES)} frequencies, the bound minimised): at its optimum two "
+                     "local peaks are often equal, a kink of the peak by design")
     if kinks:
         notes.append("the objective is not smooth at the design (one-sided slopes differ along "
                      + ", ".join(kinks) + "): e.g. a stable range whose end switches to another mode, a speed "
@@ -314,6 +344,34 @@ def _search(spec, problem, progress, start_time):
         gradient=gradient, variable_units={v.key: _unit_of(v) for v in spec.variables},
         metric_units={name: metric(name).unit for name in spec.metrics},
         seconds=time.perf_counter() - start_time)
+
+
+def _minimax(problem, x_of, span, scale, record, constraints, u0, minimize):
+    """SLSQP on ``min t`` subject to ``HQM(w_j; x) <= t`` at :data:`~bikemass.design.metrics.CURVE_FREQUENCIES`
+    and the spec's ``constraints`` (functions of the design ``u`` alone): the HQM peak, a maximum over
+    frequency, minimised without differentiating a maximum.  The decision vector is ``(u, t)``."""
+    n = len(u0)
+
+    def curve(z):
+        record(z[:n])
+        return problem.hqm_curve(x_of(z[:n])) / scale
+
+    def below(z):
+        return z[n] - curve(z)
+
+    def below_jacobian(z):
+        jac = problem.hqm_curve_jacobian(x_of(z[:n])) * span / scale
+        return np.hstack([-jac, np.ones((len(jac), 1))])
+
+    lifted = [{"type": "ineq", "fun": below, "jac": below_jacobian}]
+    for c in constraints:                           # the spec's constraints, on u alone
+        fun, jac = c["fun"], c["jac"]
+        lifted.append({"type": "ineq", "fun": lambda z, f=fun: f(z[:n]),
+                       "jac": lambda z, j=jac: np.hstack([j(z[:n]), np.zeros((len(j(z[:n])), 1))])})
+    z0 = np.append(u0, float(np.max(curve(np.append(u0, 0.0)))))
+    return minimize(lambda z: z[n], z0, jac=lambda z: np.eye(n + 1)[n], method="SLSQP",
+                    bounds=[(0.0, 1.0)] * n + [(0.0, None)], constraints=lifted,
+                    options={"ftol": SLSQP_TOLERANCE["minimise"], "maxiter": MAX_ITERATIONS})
 
 
 def _gradient_description(spec, members):

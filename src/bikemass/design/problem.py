@@ -22,7 +22,7 @@ from ..core.errors import InputError
 from ..models.parameters import NAMES
 from ..rider.body import load_body
 from ..scenario.inputs import split_changes
-from .metrics import GEOMETRY, HANDLING, PARAMETERS, SPEED, UNDEFINED, handling_of, parameter_function, \
+from .metrics import GEOMETRY, HANDLING, PARAMETERS, SPEED, UNDEFINED, handling_of, hqm_curve_of, rider_in_loop, parameter_function, \
     parameter_gradient, speed_crossings, toe_overlap_of
 
 STIFFNESS_CELLS = {"S_phiphi": ((0, 0),), "S_phidelta": ((0, 1),), "S_deltadelta": ((1, 1),)}
@@ -48,11 +48,21 @@ class Design:
         return critical_speeds(self.built.model, self.problem.max_speed)
 
     @cached_property
+    def rider(self):
+        """``(plant, gains)`` of the rider in the loop at the spec's speed (:func:`~bikemass.design.metrics.rider_in_loop`)."""
+        spec = self.problem.spec
+        return rider_in_loop(self.built.model, spec.speed, spec.tuning)
+
+    @cached_property
     def handling(self):
         """``{"hqm-peak": .., "closed-loop-real": ..}`` at the spec's speed
         (:func:`~bikemass.design.metrics.handling_of`)."""
-        spec = self.problem.spec
-        return dict(zip(("hqm-peak", "closed-loop-real"), handling_of(self.built.model, spec.speed, spec.tuning)))
+        return dict(zip(("hqm-peak", "closed-loop-real"), handling_of(*self.rider)))
+
+    @cached_property
+    def hqm_curve(self):
+        """The HQM on :data:`~bikemass.design.metrics.CURVE_FREQUENCIES` at the spec's speed."""
+        return hqm_curve_of(*self.rider)
 
 
 class Problem:
@@ -173,6 +183,19 @@ class Problem:
         found = self._jacobians[key] = {"parameters": nonzero(params), "values": nonzero(values),
                                         "stiffness": nonzero(stiffness)}
         return found
+
+    def hqm_curve(self, x):
+        """The HQM curve of design ``x`` (:attr:`Design.hqm_curve`)."""
+        return self.design(x).hqm_curve
+
+    def hqm_curve_jacobian(self, x):
+        """``d HQM(w_j) / d x_k`` (240, n): central differences (relative step :data:`GEOMETRY_STEP`)."""
+        columns = []
+        for k in range(len(x)):
+            h = GEOMETRY_STEP * abs(x[k]) if x[k] else GEOMETRY_STEP
+            step = np.where(np.arange(len(x)) == k, h, 0.0)
+            columns.append((self.hqm_curve(x + step) - self.hqm_curve(x - step)) / (2 * h))
+        return np.stack(columns, axis=1)
 
     def _difference(self, f, x):
         """Central differences of ``f`` in each variable (relative step :data:`GEOMETRY_STEP`)."""
