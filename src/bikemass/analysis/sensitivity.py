@@ -36,6 +36,7 @@ from .results import _stiffness
 from ..core.display import Display
 from ..core.errors import InputError, short
 from ..core.keywords import renamed_keywords
+from ..models.lean import RiderLeanParameters
 from ..models.parameters import BenchmarkParameters
 from ..models.plausibility import check_parameters
 from ..core.errors import wrong_type
@@ -107,7 +108,7 @@ class Sensitivity(Display):
 
 
 @renamed_keywords(S="stiffness")
-def sensitivity(params: "BenchmarkParameters | Scenario | Built", stiffness: "ArrayLike | None" = None,
+def sensitivity(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Built", stiffness: "ArrayLike | None" = None,
                 vmax: float = 30.0, names: "Sequence[str]" = NAMES) -> Sensitivity:
     """Exact derivatives of the weave and capsize speeds with respect to each benchmark parameter.
 
@@ -117,9 +118,11 @@ def sensitivity(params: "BenchmarkParameters | Scenario | Built", stiffness: "Ar
 
     Parameters
     ----------
-    params : BenchmarkParameters, Scenario or Built
-        A benchmark set (the Whipple model, with rear-frame stiffness ``stiffness``), or a
-        :class:`~bikemass.scenario.scenario.Scenario` (built) of any member of the model family.
+    params : BenchmarkParameters, RiderLeanParameters, Scenario or Built
+        A benchmark set (the Whipple model, with rear-frame stiffness ``stiffness``), a leaning
+        rider's set (the ``rider-lean`` model; its 26 benchmark names are those of the bicycle
+        without the upper body), or a :class:`~bikemass.scenario.scenario.Scenario` (built) of any
+        member of the model family.
     stiffness : array_like of shape (2, 2), optional
         Rear-frame stiffness S (N m/rad) of a benchmark set; ``None`` = rigid, and ``None`` with a
         scenario (it has its own). With S the derivatives with respect to its entries are given
@@ -166,6 +169,8 @@ def sensitivity(params: "BenchmarkParameters | Scenario | Built", stiffness: "Ar
     >>> print(f"{(weave(p.c + h) - weave(p.c - h)) / (2 * h):+.4f} (m/s)/m")
     +11.4800 (m/s)/m
     """
+    if isinstance(params, RiderLeanParameters):
+        params = Scenario(params)                 # its own member: the leaning rider
     if isinstance(params, (Scenario, Built)):
         if stiffness is not None:
             raise InputError("stiffness", "(matrix)", "none with a scenario (its stiffness choice is built in)")

@@ -37,6 +37,7 @@ from ..core.errors import InputError
 from ..core.keywords import renamed_keywords
 from ..core.limits import MAX_SPEEDS
 from ..core.units import UnitError, dimension_of, split_quantity, to_si
+from ..models.lean import RiderLeanParameters
 from ..models.parameters import NAMES
 from ..plots.stability import COLOURS, OTHER_COLOUR
 from ..scenario.scenario import Scenario
@@ -302,10 +303,10 @@ def _check_options(spreads, method, samples, seed):
 
 
 @renamed_keywords(bike="bicycle")
-def uncertainty(bicycle: "str | os.PathLike | Scenario", spreads: "Mapping[str, float | Spread]",
+def uncertainty(bicycle: "str | os.PathLike | RiderLeanParameters | Scenario", spreads: "Mapping[str, float | Spread]",
                 rider: "str | None" = None, stiffness: str = "infinite", combine: str = "exact",
                 method: str = "linear", samples: int = 1000, seed: int = 0, speeds: "ArrayLike | None" = None,
-                max_speeds: int = MAX_SPEEDS, model: str = "whipple", tyres: "str | Mapping | None" = None) -> Propagation:
+                max_speeds: int = MAX_SPEEDS, model: "str | None" = None, tyres: "str | Mapping | None" = None) -> Propagation:
     """The spread of the canonical matrices, eigenvalues and critical speeds from spreads of the inputs.
 
     ``linear``: first-order propagation, ``std(y) = sqrt(sum_i (dy/dx_i std_i)^2)``, with exact
@@ -340,9 +341,10 @@ def uncertainty(bicycle: "str | os.PathLike | Scenario", spreads: "Mapping[str, 
         Speeds (m/s) of the eigenvalue bands; default 0..10 m/s in 0.1 m/s.
     max_speeds : int
         Most speeds taken (default 100000); more is an InputError before any work.
-    model : str
+    model : str, optional
         The member of the model family (``"whipple"``, ``"rider-lean"``, ``"tyre"``, ``"flexible"``
-        or members joined by ``+``).
+        or members joined by ``+``); default the bicycle's own (``"rider-lean"`` for
+        RiderLeanParameters, else ``"whipple"``).
     tyres : str or Mapping, optional
         The ``tyre`` member's tyre file or mapping (default: the published defaults).
 
