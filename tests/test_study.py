@@ -16,6 +16,8 @@ from bikemass.scenario import catalog
 from bikemass.scenario.scenario import parameters as scenario_parameters
 from bikemass.cli.main import main
 
+pytestmark = pytest.mark.slow     # runs the thesis study end to end (~55 s): pytest -m 'not slow' leaves it out
+
 BIKES = {"benchmark", "jamis", "cargo", "cargo-loaded"}
 RIDERS = {"included", "none", "no-hands", "relaxed", "on-hoods", "aerobars", "aero-tuck"}
 STIFFNESSES = {"infinite", "steel", "titanium", "aluminum"}
