@@ -73,11 +73,11 @@ class Sensitivity(Display):
     """Critical speeds (m/s, ``None`` if none) and their derivatives ``{name: (m/s) per unit}``."""
 
     params: dict
-    weave_speed: float
-    capsize_speed: float
+    weave_speed: float | None
+    capsize_speed: float | None
     d_weave_speed: dict
     d_capsize_speed: dict
-    d_stiffness: dict = None      # {speed key: {S entry: (m/s) per N m/rad}}, rigid frame: None
+    d_stiffness: dict | None = None      # {speed key: {S entry: (m/s) per N m/rad}}, rigid frame: None
 
     def display_rows(self):
         """The two speeds and their three largest elasticities (Jupyter's table, ``repr``)."""

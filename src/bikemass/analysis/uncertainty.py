@@ -259,14 +259,14 @@ def propagate(scenario, spreads, method="linear", samples=1000, seed=0, speeds=N
     def rss(get):
         return np.sqrt(sum((np.asarray(get(derivs[k]), dtype=float) * sigma[k]) ** 2 for k in spreads))
 
-    matrices = {m: {"nominal": np.real(nominal[m]), "std": rss(lambda d: d["matrices"][m])} for m in nominal}
+    matrices = {m: {"nominal": np.real(nominal[m]), "std": rss(lambda d, m=m: d["matrices"][m])} for m in nominal}
     speed_out = {}
     for name, c in crossings.items():
         speed_out[name] = {"nominal": None if c is None else c.speed,
-                           "std": None if c is None else float(rss(lambda d: d[name]))}
+                           "std": None if c is None else float(rss(lambda d, name=name: d[name]))}
     eig_modes = {label: {"nominal": modes.eigenvalues[:, i],
-                         "std_re": rss(lambda d: d["eig"][:, i].real),
-                         "std_im": rss(lambda d: d["eig"][:, i].imag)}
+                         "std_re": rss(lambda d, i=i: d["eig"][:, i].real),
+                         "std_im": rss(lambda d, i=i: d["eig"][:, i].imag)}
                  for i, label in enumerate(modes.labels)}
     inputs = {k: {"distribution": s.kind, "std": s.std} for k, s in spreads.items()}
     if method == "linear":

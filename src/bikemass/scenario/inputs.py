@@ -373,7 +373,7 @@ class Inputs:
             chart = doc.get(CHART_KEY)
             if isinstance(chart, dict):
                 built = self.bicycle(()).chart
-                for key, stand_in in STAND_INS.items():
+                for key in STAND_INS:
                     if chart.get(key) is None and built is not None:
                         chart[key] = f"{float(getattr(built, key))!r} m"
                 for key in CHECKED_KEYS:

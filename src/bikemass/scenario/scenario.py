@@ -35,6 +35,8 @@ import os
 from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
 
+import numpy as np
+
 from ..core.choices import RIGID, Combine, Method, check
 from ..core.errors import InputError, short
 from ..core.frozen import readonly, short_repr
@@ -84,12 +86,12 @@ class Built:
     """
 
     parameters: BenchmarkParameters
-    stiffness: object
+    stiffness: np.ndarray | None
     model: LinearModel
     choice: ModelChoice = ModelChoice()
-    lean: RiderLeanParameters = None
-    compliances: Compliances = None
-    tyres: Tyres = None
+    lean: RiderLeanParameters | None = None
+    compliances: Compliances | None = None
+    tyres: Tyres | None = None
 
     def values(self):
         """``{name: float}`` of the parameters the model was generated from (the 26 benchmark names

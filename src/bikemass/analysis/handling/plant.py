@@ -24,6 +24,9 @@ from ...models.lean import RiderLeanParameters
 from ...models.parameters import BenchmarkParameters
 from ...scenario.scenario import Built, Scenario
 
+System = LinearModel | Scenario | Built | BenchmarkParameters | RiderLeanParameters
+"""What a handling analysis takes as its ``system`` (:func:`linear_model`)."""
+
 
 def linear_model(system, stiffness=None):
     """``system`` as a :class:`~bikemass.models.linear.LinearModel`.
