@@ -153,7 +153,7 @@ def test_pose_warning_goes_through_warnings():
 
 def test_subpackages_of_the_same_name_do_not_hide_the_functions():
     import bikemass.models.parameters
-    import bikemass.analysis.engine
+    import bikemass.analysis.engine  # noqa: F401  (the subpackage imported: does it hide bm.stability?)
     from bikemass.analysis.engine.modes import follow_modes
     assert callable(bm.stability) and bm.stability.__module__ == "bikemass.analysis.results"
     assert bm.parameters.__module__ == "bikemass.scenario.scenario" and callable(follow_modes)
