@@ -20,6 +20,8 @@ def _readme_test_command():
 def test_ci_runs_exactly_the_readme_test_command():
     command = _readme_test_command()
     assert "--upgrade-strategy eager" in command and command.endswith("python -m pytest")
+    steps = [step.strip() for step in command.split("&&")]
+    assert steps.index("ruff check src") < steps.index("mypy") < steps.index("python -m pytest")   # lint, types, tests
     lines = [line for line in (REPO / ".ci" / "run").read_text().splitlines() if line and not line.startswith("#")]
     assert command in lines
     after = lines[lines.index(command) + 1:]

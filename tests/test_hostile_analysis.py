@@ -265,6 +265,7 @@ def test_the_api_bounds_speed_grids_before_allocating():
         uncertainty("benchmark", {"c": 0.001}, method="montecarlo", samples=200_000, speeds=np.linspace(0, 10, 101))
 
 
+@pytest.mark.slow     # waits out a scheduler's connect timeout (~20 s)
 def test_a_scheduler_that_never_answers_is_one_line(tmp_path, capsys):
     """A listener that accepts the connection and never speaks: distributed (2026.8) does not end the
     wait; the sweep gives up after bikemass.sweep.run.CONNECT_DEADLINE seconds."""

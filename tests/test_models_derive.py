@@ -22,6 +22,8 @@ from bikemass.models.derive.members import COMBINATIONS, members  # noqa: E402
 from bikemass.models.family import generated  # noqa: E402
 from bikemass.models.registry import ModelChoice  # noqa: E402
 
+pytestmark = pytest.mark.slow     # derives the model family again with sympy (~80 s): pytest -m 'not slow' leaves it out
+
 
 def _point(rng, parameters):
     """Random values near a real bicycle: every parameter within a factor 0.7..1.3 of a typical size."""

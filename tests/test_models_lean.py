@@ -151,11 +151,20 @@ def test_a_lumped_rider_cannot_lean():
         rider_lean_parameters(bike, lumped)
 
 
-def test_the_hip_joint_default_is_de_lorenzos(jamis_relaxed):
+def test_the_hip_joint_default_is_de_lorenzos_and_gravity_stiffness_is_the_derived_models(jamis_relaxed):
+    """The default joint is de Lorenzo & Hubbard's k = 128 N m/rad, c = 50 N m s/rad (as Moore 2012
+    quotes them).  ``gravity_stiffness`` (m g h) against the model derived by Kane's method
+    (sympy, bikemass.models.derive; the generated code knows nothing of the property): at rest the
+    hip joint's net stiffness is k - m g h and the roll-lean coupling -m g h, to round-off."""
     lean = rider_lean_parameters(*jamis_relaxed)
     assert (lean.joint.stiffness, lean.joint.damping) == (128.0, 50.0)
-    m, g, h = lean.upper.mass, lean.bicycle.g, lean.upper.hip_z - lean.upper.z
-    assert lean.gravity_stiffness == pytest.approx(m * g * h, rel=1e-15)
+    mechanics = build("rider-lean", lean).mechanics
+    names = [s.name for s in mechanics.coordinates]
+    K = mechanics.stiffness(0.0)
+    roll, hip = names.index("roll-angle"), names.index("lean-angle")
+    assert K[hip, hip] == pytest.approx(lean.joint.stiffness - lean.gravity_stiffness, rel=1e-12)
+    assert K[roll, hip] == pytest.approx(-lean.gravity_stiffness, rel=1e-12)
+    assert lean.gravity_stiffness > lean.joint.stiffness      # this rider cannot hold himself on the joint alone
     assert math.isclose(hip_axis_z(jamis_relaxed[1]), lean.upper.hip_z)
 
 

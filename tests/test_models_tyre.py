@@ -96,15 +96,40 @@ def _critical(model):
     return brentq(weave, 3.5, 5.0, xtol=1e-12), brentq(capsize, 5.0, 7.0, xtol=1e-12)
 
 
-def test_default_tyres_move_the_benchmark_weave_and_capsize_speeds_as_docs_models_md_says():
-    """Contract with docs/models.md ("The default tyres and the benchmark"): the numbers it prints."""
+def _docs_table():
+    """``{row label: (weave, capsize)}`` (m/s) of docs/models.md's table "The default tyres and the benchmark"."""
+    text = (__import__("pathlib").Path(__file__).parents[1] / "docs" / "models.md").read_text()
+    section = text[text.index("### The default tyres and the benchmark"):]
+    lines = section.splitlines()
+    start = next(i for i, line in enumerate(lines) if line.startswith("|")) + 2      # past the header and its rule
+    rows = {}
+    for line in lines[start:]:
+        if not line.startswith("|"):
+            break
+        label, weave, capsize = (cell.strip() for cell in line.strip("|").split("|"))
+        rows[label] = (float(weave.split()[0]), float(capsize.split()[0]))
+    return rows
+
+
+def test_contract_docs_models_md_prints_the_tyre_models_speeds():
+    """Contract test of docs/models.md ("The default tyres and the benchmark") against the library: the
+    numbers it prints, to their last digit.  What is independent: the Whipple row against Meijaard et
+    al. (2007)'s exact speeds, and two properties of a steady turn, where a real root crosses zero
+    (below): without camber thrust both wheels slip alike and the capsize speed is Whipple's; the
+    relaxation length, a delay, cannot move it."""
+    docs = _docs_table()
     whipple = _critical(build("whipple", BENCHMARK))
     assert whipple == pytest.approx((4.29238253634110, 6.02426201538836), abs=1e-9)  # Meijaard: exact
-    assert _critical(build("tyre", BENCHMARK)) == pytest.approx((4.3123, 5.9759), abs=5e-5)
+    assert docs["none (Whipple, Meijaard et al. 2007)"] == pytest.approx(whipple, abs=5e-5)
+    default = _critical(build("tyre", BENCHMARK))
+    assert docs["default (11.46 /rad, 0.573 /rad, 0.175 m)"] == pytest.approx(default, abs=5e-5)
     no_camber = replace(DEFAULT_TYRE, camber_coefficient=0.0)
     weave, capsize = _critical(build("tyre", BENCHMARK, Tyres(no_camber, no_camber)))
-    assert weave == pytest.approx(4.4283, abs=5e-5)
+    assert docs["default without camber thrust"] == pytest.approx((weave, capsize), abs=5e-5)
     assert capsize == pytest.approx(whipple[1], abs=1e-8)    # equal slip at both wheels: a Whipple turn
+    for sigma in (1e-6, 0.3):                                  # a steady turn: no delay acts
+        relaxed = replace(DEFAULT_TYRE, relaxation_length=sigma)
+        assert _critical(build("tyre", BENCHMARK, Tyres(relaxed, relaxed)))[1] == pytest.approx(default[1], abs=1e-8)
 
 
 def test_the_default_tyres_are_the_delft_labs_values_from_dressels_measurements():

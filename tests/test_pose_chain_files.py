@@ -12,6 +12,7 @@ from bikemass.cli.main import main
 from bikemass.core.errors import InputError
 from bikemass.rider import load_rider
 from bikemass.study.thesis_fit import compare_with_chain
+from images import blobs, colour_mask, pixels
 
 ROOT = Path(__file__).parents[1]
 THREE_LINES = "body: thesis_rider\nbike: jamis\nchain: {torso_lean: 30 deg, hands: hoods}\n"
@@ -22,7 +23,11 @@ def test_pose_file_from_the_command_loads_like_any_pose(tmp_path, capsys):
     assert main(["pose", "jamis", "--torso-lean", "30", "--hands", "hoods", "-o", str(out),
                  "--plot", str(png)]) == 0
     assert capsys.readouterr().out == ""                          # the data went to -o, the figure to --plot
-    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    # the figure decoded: the rider's chain (dark green) and the contact targets (red crosses): the
+    # saddle, the hoods and the pedal spindle, each one patch, and the legend's
+    rgb = pixels(png)
+    assert colour_mask(rgb, "darkgreen", 0.1).mean() > 0.001
+    assert blobs(colour_mask(rgb, "red", 0.1)) == 3 + 1
     assert main(["pose", "jamis", "--torso-lean", "30", "--hands", "hoods"]) == 0
     assert "largest gap at a joint" in capsys.readouterr().out    # without -o: the report
     document = yaml.safe_load(out.read_text())

@@ -10,6 +10,7 @@ import sys
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 import bikemass
 from bikemass.cli.main import main
@@ -101,6 +102,7 @@ def _printed(tmp_path, coretype=None):
                           env=env, check=True, cwd=tmp_path).stdout
 
 
+@pytest.mark.slow     # two fresh interpreters, each running the analyses (~8 s)
 def test_two_openblas_kernels_print_the_same_text(tmp_path):
     """Prescott kernels (SSE3 only, which every x86-64 CPU runs) against the kernel OpenBLAS picks
     for this CPU (Haswell's AVX2, SkylakeX's AVX-512, ...): different rounding in the BLAS, the same

@@ -32,6 +32,7 @@ def _alive(pid):
         return False
 
 
+@pytest.mark.slow     # starts a study in a subprocess and stops it (~5 s each)
 @pytest.mark.parametrize("signum, status, word", [(signal.SIGTERM, 143, "terminated"),
                                                   (signal.SIGINT, 130, "interrupted")])
 def test_stopping_a_study(tmp_path, signum, status, word):

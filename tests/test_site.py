@@ -21,6 +21,8 @@ import pytest
 
 import bikemass as bm
 
+pytestmark = pytest.mark.slow     # builds the documentation site with Sphinx (~80 s): pytest -m 'not slow' leaves it out
+
 ROOT = Path(__file__).parents[1]
 GENERATED = ("_build", "auto_examples", "api-reference")
 """What a build writes into docs/ (git ignores them): not copied, so the build starts clean."""

@@ -86,20 +86,43 @@ def test_benchmark_and_cargo(bike, rider):
     check_crossings(whipple_model(scenario_parameters(bike, rider)))
 
 
+def _peer_crossings(params):
+    """(weave, real-root) speeds of BicycleParameters' Meijaard2007Model of ``params``: the weave where
+    the peer's oscillatory eigenvalues cross (brentq to 1e-14 m/s near 11.7), the real root where
+    det(g K0 + v^2 K2) = 0 on the peer's canonical matrices (a quadratic in v^2: closed form)."""
+    bp_models = pytest.importorskip("bicycleparameters.models")
+    bp_sets = pytest.importorskip("bicycleparameters.parameter_sets")
+    from scipy.optimize import brentq
+    values = params.to_dict()
+    peer = bp_models.Meijaard2007Model(bp_sets.Meijaard2007ParameterSet({**values, "v": 1.0}, includes_rider=True))
+    _, _, K0, K2 = peer.form_reduced_canonical_matrices()
+    gK0 = values["g"] * np.asarray(K0, dtype=float)
+    K2 = np.asarray(K2, dtype=float)
+    a, c = np.linalg.det(K2), np.linalg.det(gK0)
+    roots = np.roots([a, np.linalg.det(gK0 + K2) - a - c, c])
+    real = [float(np.sqrt(r.real)) for r in roots if abs(r.imag) < 1e-12 and r.real > 0]
+
+    def weave_growth(v):
+        ev = np.linalg.eigvals(peer.form_state_space_matrices(v=v)[0])
+        return max(z.real for z in ev if abs(z.imag) > 1e-6)
+    return brentq(weave_growth, 11.5, 11.9, xtol=1e-14), real
+
+
 def test_issue_cases_a_split_weave_pair_destabilises_as_a_real_root(capsys):
     # the issue's loaded Cargo (No Hands as the thesis placed it): 20.785 m/s was listed as a weave
-    # speed; a real root crosses there
+    # speed; a real root crosses there.  Both speeds against the peer (1e-9 m/s)
+    weave, (real,) = _peer_crossings(scenario_parameters("cargo-loaded", "no-hands", allow_off_contact=True))
     assert main(["stability", "cargo-loaded", "--rider", "no-hands", "--allow-off-contact", "--format", "json"]) == 0
     d = json.loads(capsys.readouterr().out)
-    assert d["weave_speeds"] == [pytest.approx(11.707856716414494, abs=1e-9)]
-    assert d["capsize_speeds"] == [pytest.approx(20.785440946227254, abs=1e-9)]
+    assert d["weave_speeds"] == [pytest.approx(weave, abs=1e-9)]
+    assert d["capsize_speeds"] == [pytest.approx(real, abs=1e-9)]
     split = [c for c in d["crossings"] if c["speed"] > 20]
-    assert split == [{"speed": pytest.approx(20.785440946227254, abs=1e-9), "kind": "real",
+    assert split == [{"speed": pytest.approx(real, abs=1e-9), "kind": "real",
                       "direction": "destabilising", "frequency": 0.0, "mode": "weave 1"}]
     assert main(["stability", "cargo-loaded", "--rider", "no-hands", "--allow-off-contact"]) == 0
     text = capsys.readouterr().out
     shown = next(line for line in text.splitlines() if line.startswith("capsize speeds (a real root crosses"))
-    assert float(shown.split(":")[1]) == pytest.approx(20.785440946227254, abs=1e-9)   # printed to 1e-12
+    assert float(shown.split(":")[1]) == pytest.approx(real, abs=1e-9)   # printed to 1e-12
     assert "weave, real (upper)" in text
 
 

@@ -40,6 +40,7 @@ def _rows(folder):
         return list(csv.DictReader(fh))
 
 
+@pytest.mark.slow     # a sweep on a Dask cluster or many full builds (4-6 s)
 def test_engines_give_identical_tables(tmp_path):
     """In-process, --workers 1, --workers 2 (worker processes) and --scheduler (the address of a
     LocalCluster started here, in-process workers for a quick start): the same bytes in results.csv."""
@@ -64,6 +65,7 @@ def test_engines_give_identical_tables(tmp_path):
                                   [float(r["weave_speed"]) for r in rows])
 
 
+@pytest.mark.slow     # a sweep on a Dask cluster or many full builds (4-6 s)
 def test_rows_equal_independent_stability_runs(tmp_path):
     """Every row's critical speeds equal those the engine's general path finds (polynomial eigenvalue
     problems of the compound matrices; the sweep uses the closed form) on the benchmark with that c
@@ -141,6 +143,7 @@ def test_a_client_is_used_and_left_open(tmp_path):
     assert (tmp_path / "b" / "results.csv").read_bytes() == (tmp_path / "serial" / "results.csv").read_bytes()
 
 
+@pytest.mark.slow     # a sweep on a Dask cluster or many full builds (4-6 s)
 def test_local_cluster_runs_quiet_and_leaves_the_callers_settings():
     """``--workers N``'s cluster: its worker processes run with QUIET_CLUSTER's settings (profiler
     off, chores less often); the caller's Dask settings are what they were."""
@@ -257,6 +260,7 @@ global_sensitivity: true
         assert sobol[out]["c"]["ST"] > 0.9 and sobol[out]["c"]["S1"] > 0.9
 
 
+@pytest.mark.slow     # a sweep on a Dask cluster or many full builds (4-6 s)
 def test_geometry_level_sweep_changes_with_the_walls(tmp_path):
     """Jamis tube walls (seat stays, chain stays), steel frame (beam S), Relaxed rider."""
     spec = _spec(tmp_path, """bike: jamis

@@ -1,8 +1,10 @@
 """The web page's state, JSON API, downloads and uploads (Flask test client, no browser).
 
-The API must answer exactly what the command line prints, so each check runs the
-command in-process and compares the parsed numbers (tolerance 1e-12 m/s: the
-same code path, so only the JSON round trip may differ).
+The API must answer exactly what the command line prints: the ``test_contract_*`` tests run the
+command in-process and compare the parsed numbers (tolerance 1e-12 m/s: the same code path, so
+only the JSON round trip may differ; they hold the shell to the library, not the numbers, which
+the peer and published-table tests hold).  A typed-over parameter is also checked against a peer,
+BicycleParameters' Meijaard2007Model.
 """
 
 import contextlib
@@ -52,7 +54,7 @@ def test_bad_query_values_name_their_key(query, key):
 
 @pytest.mark.parametrize("bike, rider, stiffness", [
     ("jamis", "relaxed", "steel"), ("benchmark", "none", "infinite"), ("cargo-loaded", "no-hands", "aluminum")])
-def test_api_stability_is_the_command_lines_json(client, bike, rider, stiffness):
+def test_contract_api_stability_is_the_command_lines_json(client, bike, rider, stiffness):
     reply = client.get(f"/api/stability?bike={bike}&rider={rider}&stiffness={stiffness}")
     assert reply.status_code == 200
     ours = reply.get_json()
@@ -66,7 +68,7 @@ def test_api_stability_is_the_command_lines_json(client, bike, rider, stiffness)
     assert ours["weave_speeds"] or ours["capsize_speeds"]
 
 
-def test_api_params_is_the_command_lines_json(client):
+def test_contract_api_params_is_the_command_lines_json(client):
     ours = client.get("/api/params?bike=jamis&rider=relaxed").get_json()
     cli = cli_json("params", "jamis", "--rider", "relaxed", "--format", "json")
     assert list(ours) == [*NAMES, "units", "warnings"] and ours["units"] == cli["units"]
@@ -74,7 +76,12 @@ def test_api_params_is_the_command_lines_json(client):
 
 
 def test_a_typed_over_parameter_changes_the_answer_as_a_parameter_file_would(client, tmp_path):
-    """Trail 0.02 m on the benchmark: the API against the command line on the edited parameter file."""
+    """Trail 0.02 m on the benchmark: the API against the command line on the edited parameter file
+    (contract), and its weave speed against BicycleParameters' Meijaard2007Model of the same set
+    (the peer's eigenvalues' crossing found by brentq to 1e-14 m/s; agreement to 1e-8 m/s)."""
+    bp_models = pytest.importorskip("bicycleparameters.models")
+    bp_sets = pytest.importorskip("bicycleparameters.parameter_sets")
+    from scipy.optimize import brentq
     params = cli_json("params", "benchmark", "--format", "json")
     params["c"] = 0.02
     edited = tmp_path / "edited.yaml"
@@ -84,6 +91,14 @@ def test_a_typed_over_parameter_changes_the_answer_as_a_parameter_file_would(cli
     base = client.get("/api/stability?bike=benchmark&rider=none").get_json()
     np.testing.assert_allclose(ours["weave_speeds"], cli["weave_speeds"], atol=1e-12)
     assert ours["weave_speeds"] != base["weave_speeds"]
+    peer = bp_models.Meijaard2007Model(bp_sets.Meijaard2007ParameterSet(
+        {**{k: params[k] for k in NAMES}, "v": 1.0}, includes_rider=True))
+
+    def weave_growth(v):
+        ev = np.linalg.eigvals(peer.form_state_space_matrices(v=v)[0])
+        return max(z.real for z in ev if abs(z.imag) > 1e-6)
+    weave = ours["weave_speeds"][0]
+    assert weave == pytest.approx(brentq(weave_growth, weave - 0.3, weave + 0.3, xtol=1e-14), abs=1e-8)
 
 
 @pytest.mark.parametrize("query", ["bike=nonesuch", "bike=../frames/jamis", "rider=/etc/passwd",
@@ -166,7 +181,7 @@ def test_a_body_rider_from_height_mass_and_sex_is_seated_on_each_bicycle(client)
     assert client.get("/api/params?bike=jamis&rider=body&sex=robot").status_code == 400
 
 
-def test_a_body_rider_matches_the_command_line(client, tmp_path):
+def test_contract_a_body_rider_matches_the_command_line(client, tmp_path):
     query = "bike=jamis&rider=body&height=1.65&mass=58.0&sex=female&hands=tops&stiffness=steel"
     pose = tmp_path / "me.yaml"
     pose.write_bytes(client.get(f"/download/pose.yaml?{query}").data)

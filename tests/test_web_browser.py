@@ -14,6 +14,8 @@ import threading
 
 import pytest
 
+pytestmark = pytest.mark.slow     # drives the web page in a headless browser (~15 s): pytest -m 'not slow' leaves it out
+
 pytest.importorskip("dash")
 
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")

@@ -27,6 +27,8 @@ import pytest
 import bikemass
 from bikemass.cli.main import main
 
+pytestmark = pytest.mark.slow     # builds and installs the wheel in a scratch environment (~45 s): pytest -m 'not slow' leaves it out
+
 ROOT = Path(__file__).resolve().parents[1]
 SOURCES = ("pyproject.toml", "README.md", "src", "bodies", "frames", "reference")
 """What building the wheel reads."""

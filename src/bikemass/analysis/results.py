@@ -26,7 +26,7 @@ from .engine.speeds import speed_range, speed_values
 from ..models.family import build as build_member
 from ..models.lean import RiderLeanParameters
 from ..models.linear import LinearModel
-from ..models.registry import BASE, parse_model
+from ..models.registry import model_of
 from ..models.tyres import Tyres, as_tyres
 from ..models.whipple import whipple_model
 from ..scenario.scenario import Built, Scenario
@@ -152,10 +152,12 @@ def linear_model(params: "BenchmarkParameters | RiderLeanParameters | Scenario |
         Rear-frame stiffness S (N m/rad) from :func:`bikemass.stiffness`; ``None`` = rigid.  The
         Whipple model's quasi-static spring; with a scenario any stiffness choice it takes.
     model : str, optional
-        ``"whipple"`` (default), ``"rider-lean"``, ``"tyre"``, ``"flexible"`` or members joined by
-        ``+`` (:mod:`bikemass.models.registry`).  ``rider-lean`` needs the rider split at the hips
-        (a Scenario with a rider, or RiderLeanParameters); ``flexible`` the bicycle's beam models
-        (a Scenario).
+        ``"whipple"``, ``"rider-lean"``, ``"tyre"``, ``"flexible"`` or members joined by ``+``
+        (:mod:`bikemass.models.registry`).  Default: the parameter set's own member (``rider-lean``
+        for RiderLeanParameters, ``whipple`` for BenchmarkParameters); ``"whipple"`` with
+        RiderLeanParameters holds the upper body rigid.  ``rider-lean`` needs the rider split at
+        the hips (a Scenario with a rider, or RiderLeanParameters); ``flexible`` the bicycle's beam
+        models (a Scenario).
     tyres : Tyres, str or Mapping, optional
         The ``tyre`` member's tyres (a tyre file or a mapping in its form; default
         :data:`~bikemass.models.tyres.DEFAULT_TYRES`).
@@ -206,7 +208,7 @@ def built_model(params, stiffness=None, model=None, tyres=None):
     if isinstance(params, Scenario):
         built = (params.replace(**given) if given else params).build()
         return built.model, built.stiffness
-    choice = parse_model(BASE if model is None else model)
+    choice = model_of(params, model)          # the parameter set's own member unless a model is named
     if isinstance(params, RiderLeanParameters) and not choice.has("rider-lean"):
         params = params.rigid()
     if not isinstance(params, (BenchmarkParameters, RiderLeanParameters)):
@@ -216,9 +218,10 @@ def built_model(params, stiffness=None, model=None, tyres=None):
         S = _stiffness(stiffness)
         return whipple_model(check_parameters(params, "params"), S), S
     if _stiffness(stiffness) is not None:
-        raise InputError("stiffness", "(matrix)", f"none with the model {choice.name}: a 2x2 S is the whipple "
-                         "model's quasi-static spring (the flexible member takes a material: bm.Scenario(bike, "
-                         "rider, stiffness=material, model=...))")
+        rigid = " (or model='whipple': the rider held rigid)" if model is None else ""
+        raise InputError("stiffness", "(matrix)", f"none with the model {choice.name}{rigid}: a 2x2 S is the "
+                         "whipple model's quasi-static spring (the flexible member takes a material: "
+                         "bm.Scenario(bike, rider, stiffness=material, model=...))")
     if choice.has("flexible"):
         raise InputError("model", choice.name, "a Scenario for the flexible member (its compliances come from the "
                          "bicycle's beam models): bm.stability(bm.Scenario(bike, rider, stiffness='steel', "

@@ -37,6 +37,7 @@ from .results import _stiffness
 from ..core.display import Display
 from ..core.errors import InputError, short
 from ..core.keywords import renamed_keywords
+from ..models.lean import RiderLeanParameters
 from ..models.parameters import BenchmarkParameters
 from ..models.plausibility import check_parameters
 from ..core.errors import wrong_type
@@ -73,11 +74,11 @@ class Sensitivity(Display):
     """Critical speeds (m/s, ``None`` if none) and their derivatives ``{name: (m/s) per unit}``."""
 
     params: dict
-    weave_speed: float
-    capsize_speed: float
+    weave_speed: float | None
+    capsize_speed: float | None
     d_weave_speed: dict
     d_capsize_speed: dict
-    d_stiffness: dict = None      # {speed key: {S entry: (m/s) per N m/rad}}, rigid frame: None
+    d_stiffness: dict | None = None      # {speed key: {S entry: (m/s) per N m/rad}}, rigid frame: None
 
     def display_rows(self):
         """The two speeds and their three largest elasticities (Jupyter's table, ``repr``)."""
@@ -134,7 +135,7 @@ class Sensitivity(Display):
 
 
 @renamed_keywords(S="stiffness")
-def sensitivity(params: "BenchmarkParameters | Scenario | Built", stiffness: "ArrayLike | None" = None,
+def sensitivity(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Built", stiffness: "ArrayLike | None" = None,
                 vmax: float = 30.0, names: "Sequence[str]" = NAMES) -> Sensitivity:
     """Exact derivatives of the weave and capsize speeds with respect to each benchmark parameter.
 
@@ -144,9 +145,11 @@ def sensitivity(params: "BenchmarkParameters | Scenario | Built", stiffness: "Ar
 
     Parameters
     ----------
-    params : BenchmarkParameters, Scenario or Built
-        A benchmark set (the Whipple model, with rear-frame stiffness ``stiffness``), or a
-        :class:`~bikemass.scenario.scenario.Scenario` (built) of any member of the model family.
+    params : BenchmarkParameters, RiderLeanParameters, Scenario or Built
+        A benchmark set (the Whipple model, with rear-frame stiffness ``stiffness``), a leaning
+        rider's set (the ``rider-lean`` model; its 26 benchmark names are those of the bicycle
+        without the upper body), or a :class:`~bikemass.scenario.scenario.Scenario` (built) of any
+        member of the model family.
     stiffness : array_like of shape (2, 2), optional
         Rear-frame stiffness S (N m/rad) of a benchmark set; ``None`` = rigid, and ``None`` with a
         scenario (it has its own). With S the derivatives with respect to its entries are given
@@ -193,6 +196,8 @@ def sensitivity(params: "BenchmarkParameters | Scenario | Built", stiffness: "Ar
     >>> print(f"{(weave(p.c + h) - weave(p.c - h)) / (2 * h):+.4f} (m/s)/m")
     +11.4800 (m/s)/m
     """
+    if isinstance(params, RiderLeanParameters):
+        params = Scenario(params)                 # its own member: the leaning rider
     if isinstance(params, (Scenario, Built)):
         if stiffness is not None:
             raise InputError("stiffness", "(matrix)", "none with a scenario (its stiffness choice is built in)")

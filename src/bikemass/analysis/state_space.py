@@ -94,10 +94,10 @@ class StateSpace(Display):
     C: np.ndarray
     D: np.ndarray
     coordinates: tuple = ()
-    mechanics_M: np.ndarray = None
-    mechanics_C: np.ndarray = None
-    mechanics_K: np.ndarray = None
-    mechanics_F: np.ndarray = None
+    mechanics_M: np.ndarray | None = None
+    mechanics_C: np.ndarray | None = None
+    mechanics_K: np.ndarray | None = None
+    mechanics_F: np.ndarray | None = None
 
     def __post_init__(self):
         for name in ("A", "B", "C", "D", "mechanics_M", "mechanics_C", "mechanics_K", "mechanics_F"):

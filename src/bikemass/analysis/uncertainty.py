@@ -38,6 +38,7 @@ from ..core.errors import InputError
 from ..core.keywords import renamed_keywords
 from ..core.limits import MAX_SPEEDS
 from ..core.units import UnitError, dimension_of, split_quantity, to_si
+from ..models.lean import RiderLeanParameters
 from ..models.parameters import NAMES
 from ..plots.stability import COLOURS, OTHER_COLOUR
 from ..scenario.scenario import Scenario
@@ -281,14 +282,14 @@ def propagate(scenario, spreads, method="linear", samples=1000, seed=0, speeds=N
     def rss(get):
         return np.sqrt(sum((np.asarray(get(derivs[k]), dtype=float) * sigma[k]) ** 2 for k in spreads))
 
-    matrices = {m: {"nominal": np.real(nominal[m]), "std": rss(lambda d: d["matrices"][m])} for m in nominal}
+    matrices = {m: {"nominal": np.real(nominal[m]), "std": rss(lambda d, m=m: d["matrices"][m])} for m in nominal}
     speed_out = {}
     for name, c in crossings.items():
         speed_out[name] = {"nominal": None if c is None else c.speed,
-                           "std": None if c is None else float(rss(lambda d: d[name]))}
+                           "std": None if c is None else float(rss(lambda d, name=name: d[name]))}
     eig_modes = {label: {"nominal": modes.eigenvalues[:, i],
-                         "std_re": rss(lambda d: d["eig"][:, i].real),
-                         "std_im": rss(lambda d: d["eig"][:, i].imag)}
+                         "std_re": rss(lambda d, i=i: d["eig"][:, i].real),
+                         "std_im": rss(lambda d, i=i: d["eig"][:, i].imag)}
                  for i, label in enumerate(modes.labels)}
     inputs = {k: {"distribution": s.kind, "std": s.std} for k, s in spreads.items()}
     if method == "linear":
@@ -325,10 +326,11 @@ def _check_options(spreads, method, samples, seed):
 
 
 @renamed_keywords(bike="bicycle")
-def uncertainty(bicycle: "str | os.PathLike | Scenario", spreads: "Mapping[str, float | Spread] | None" = None,
+def uncertainty(bicycle: "str | os.PathLike | RiderLeanParameters | Scenario",
+                spreads: "Mapping[str, float | Spread] | None" = None,
                 rider: "str | None" = None, stiffness: str = "infinite", combine: str = "exact",
                 method: str = "linear", samples: int = 1000, seed: int = 0, speeds: "ArrayLike | None" = None,
-                max_speeds: int = MAX_SPEEDS, model: str = "whipple", tyres: "str | Mapping | None" = None) -> Propagation:
+                max_speeds: int = MAX_SPEEDS, model: "str | None" = None, tyres: "str | Mapping | None" = None) -> Propagation:
     """The spread of the canonical matrices, eigenvalues and critical speeds from spreads of the inputs.
 
     ``linear``: first-order propagation, ``std(y) = sqrt(sum_i (dy/dx_i std_i)^2)``, with exact
@@ -366,9 +368,10 @@ def uncertainty(bicycle: "str | os.PathLike | Scenario", spreads: "Mapping[str, 
         Speeds (m/s) of the eigenvalue bands; default 0..10 m/s in 0.1 m/s.
     max_speeds : int
         Most speeds taken (default 100000); more is an InputError before any work.
-    model : str
+    model : str, optional
         The member of the model family (``"whipple"``, ``"rider-lean"``, ``"tyre"``, ``"flexible"``
-        or members joined by ``+``).
+        or members joined by ``+``); default the bicycle's own (``"rider-lean"`` for
+        RiderLeanParameters, else ``"whipple"``).
     tyres : str or Mapping, optional
         The ``tyre`` member's tyre file or mapping (default: the published defaults).
 

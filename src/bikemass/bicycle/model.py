@@ -7,6 +7,7 @@ import numpy as np
 from ..core.errors import InputError, shown
 from ..core.frozen import frozen_fields, short_repr
 from ..mass.parts import body_properties
+from ..mass.tubes import Structure
 from .components import BODIES
 
 
@@ -49,14 +50,14 @@ class Bicycle:
     keypoints: dict
     tubes: tuple
     parts: tuple
-    structure: object = None
-    stiffness: dict = None
+    structure: Structure | None = None
+    stiffness: dict | None = None
     published: object = None
     contacts: object = None
     chart: object = None
-    size: str = None
+    size: str | None = None
     rider_included: bool = False
-    speed: float = None
+    speed: float | None = None
     measured: object = None
 
     def __post_init__(self):

@@ -131,7 +131,7 @@ def run_fit(args):
     for pose in args.poses or THESIS_POSES:
         r = compare_with_chain(pose, args.bike, args.combine)
         for line in r["warnings"]:
-            warnings.warn(f"{pose} chain fit: {line}", BikemassWarning)
+            warnings.warn(f"{pose} chain fit: {line}", BikemassWarning, stacklevel=2)
         fits[pose] = r
     dialect.emit(args, lambda fmt: _fit_text(args, fits, fmt))
     return 0

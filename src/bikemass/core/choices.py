@@ -10,6 +10,7 @@ lists from these.
 
 import difflib
 from enum import Enum
+from typing import TypeVar
 
 from .errors import InputError, short
 
@@ -317,7 +318,11 @@ def closest(value, choices):
     return f" (did you mean {match[0]!r}?)" if match else ""
 
 
-def check(kind, value, what=None):
+C = TypeVar("C", bound="Choice")
+"""A :class:`Choice` subclass (what :func:`check` returns a member of)."""
+
+
+def check(kind: type[C], value: object, what: str | None = None) -> C:
     """``value`` as a member of the :class:`Choice` subclass ``kind``.
 
     Raises

@@ -75,7 +75,7 @@ def describe(dimension):
         return (f"{noun} with its unit ('<number> deg' or '<number> rad'; "
                 "a bare number could be either)")
     if dimension == "inverse angle":
-        return (f"a coefficient per angle with its unit ('<number> 1/rad' or '<number> 1/deg'; "
+        return ("a coefficient per angle with its unit ('<number> 1/rad' or '<number> 1/deg'; "
                 "a bare number could be either)")
     return f"{noun} (a number in {si}, or '<number> <unit>' with unit {others})"
 

@@ -29,25 +29,25 @@ class Slices(Result):
     variables: tuple
     positions: np.ndarray
     values: np.ndarray
-    design: tuple = ()
-    feasible: np.ndarray = None
+    design: tuple
+    feasible: np.ndarray
 
 
 def objective_slices(spec: "OptimiseSpec | str | os.PathLike", result: OptimiseResult,
                      points: int = SLICE_POINTS) -> Slices:
     """:class:`Slices` of the objective's metric through ``result``'s design (an
     :class:`~bikemass.design.optimise.OptimiseResult` of ``spec``)."""
-    spec = check_spec(spec)
+    checked = check_spec(spec)
     if not isinstance(points, int) or isinstance(points, bool) or not 3 <= points <= 1000:
         raise InputError("points", repr(points), "a whole number of designs from 3 to 1000")
-    problem = Problem(spec)
-    target = metric(spec.objective)
-    x0 = np.array([result.variables[v.key] for v in spec.variables])
+    problem = Problem(checked)
+    target = metric(checked.objective)
+    x0 = np.array([result.variables[v.key] for v in checked.variables])
     positions = np.linspace(0.0, 1.0, points)
     values = np.full((len(x0), points), np.nan)
     feasible = np.zeros((len(x0), points), dtype=bool)
-    bounds = [(metric(c.metric), c) for c in spec.all_constraints]
-    for k, v in enumerate(spec.variables):
+    bounds = [(metric(c.metric), c) for c in checked.all_constraints]
+    for k, v in enumerate(checked.variables):
         for j, s in enumerate(positions):
             x = x0.copy()
             x[k] = v.low + s * (v.high - v.low)
@@ -58,8 +58,8 @@ def objective_slices(spec: "OptimiseSpec | str | os.PathLike", result: OptimiseR
                                      for m, c in bounds)
             except InputError:
                 pass
-    design = tuple(float((x - v.low) / (v.high - v.low)) for x, v in zip(x0, spec.variables))
-    return Slices(tuple(v.key for v in spec.variables), positions, values, design, feasible)
+    design = tuple(float((x - v.low) / (v.high - v.low)) for x, v in zip(x0, checked.variables))
+    return Slices(tuple(v.key for v in checked.variables), positions, values, design, feasible)
 
 
 def plot_optimisation(result: OptimiseResult, slices: "Slices | None" = None, title: str = "",

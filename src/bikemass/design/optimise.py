@@ -14,7 +14,7 @@ do not, ``converged`` is false and the result says along which variable the kink
 
 import os
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -93,20 +93,20 @@ class OptimiseResult(Result):
     mH = 6.0 kg: stable over 1.912 m/s ('at a bound of the box: mH',)
     """
 
-    variables: object
+    variables: Mapping[str, float]
     objective: float
     metric: str
     sense: str
-    target: float
-    metrics: object
+    target: float | None
+    metrics: Mapping[str, float]
     converged: bool
     evaluations: int
     history: tuple
     message: str
     notes: tuple
     gradient: str
-    variable_units: object
-    metric_units: object
+    variable_units: Mapping[str, str]
+    metric_units: Mapping[str, str]
     seconds: float = quantity("s", default=0.0)
 
     def to_dict(self):
@@ -174,10 +174,10 @@ def optimise(spec: "OptimiseSpec | str | os.PathLike",
     c = 0.157486 m, weave speed 5.000000 m/s, True
     """
     start_time = time.perf_counter()
-    spec = check_spec(spec)
-    problem = Problem(spec)
-    result = _search(spec, problem, progress, start_time)
-    problem.warn([result.variables[v.key] for v in spec.variables])
+    checked = check_spec(spec)
+    problem = Problem(checked)
+    result = _search(checked, problem, progress, start_time)
+    problem.warn([result.variables[v.key] for v in checked.variables])
     return result
 
 
@@ -424,7 +424,7 @@ def _kinks(metric_at, u, n, spec, scale):
     return out
 
 
-def check_spec(spec):
+def check_spec(spec: "OptimiseSpec | str | os.PathLike") -> OptimiseSpec:
     """``spec`` as an :class:`OptimiseSpec`: read from a path, or InputError for anything else."""
     if isinstance(spec, OptimiseSpec):
         return spec

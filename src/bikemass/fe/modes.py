@@ -20,7 +20,7 @@ from ..core.threads import one_blas_thread
 from .assembly import assemble
 from .boundary import clamped_keypoints, free_dofs, rigid_body_mode_count
 from .defaults import DEFAULT_ELEMENT_SIZE
-from .model import build_mesh
+from .model import FrameMesh, build_mesh
 
 DENSE_LIMIT = 400
 """Free-DOF count up to which the dense solver is used."""
@@ -32,7 +32,7 @@ class Modes(Display):
 
     frequencies_hz: np.ndarray
     shapes: np.ndarray
-    mesh: object
+    mesh: FrameMesh
     bc: str
 
     def display_rows(self):

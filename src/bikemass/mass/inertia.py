@@ -65,7 +65,7 @@ class MassProperties:
         R = np.asarray(axes, dtype=float)
         return R.T @ self.inertia @ R
 
-    def transformed(self, rotation, translation=np.zeros(3)):
+    def transformed(self, rotation, translation=(0.0, 0.0, 0.0)):
         """The body moved rigidly: rotated by ``rotation`` (3x3) then translated (m)."""
         R = np.asarray(rotation, dtype=float)
         return MassProperties(self.mass, R @ self.com + translation, R @ self.inertia @ R.T)

@@ -16,6 +16,7 @@ values with which his leaning rider is stable between about 5 and 7 m/s on the B
 
 import math
 from dataclasses import dataclass, field, fields
+from typing import ClassVar
 
 import numpy as np
 
@@ -133,6 +134,10 @@ class RiderLeanParameters:
     bicycle: BenchmarkParameters
     upper: UpperBody
     joint: LeanJoint = LeanJoint()
+
+    MODEL: ClassVar[str] = "rider-lean"
+    """The member of the model family these parameters are of: what an analysis builds from them when
+    it is not told a model (:func:`bikemass.models.registry.model_of`)."""
 
     def values(self):
         """``{name: float}`` of the generated code's parameters (the 26 benchmark ones and the member's)."""

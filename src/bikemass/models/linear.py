@@ -139,7 +139,7 @@ class LinearModel:
     inputs: tuple
     A: np.ndarray
     B: np.ndarray
-    mechanics: SecondOrder = field(default=None)
+    mechanics: SecondOrder | None = field(default=None)
     families: tuple = ()
     outputs: tuple = ()
 

@@ -44,6 +44,15 @@ def parse_model(text, source="model"):
     return ModelChoice(tuple(m for m in MEMBERS if m in names))
 
 
+def model_of(params, model=None, source="model"):
+    """The :class:`ModelChoice` to build from the parameter set ``params``: ``model`` when given, else
+    the one its type declares (a class attribute ``MODEL``: ``"rider-lean"`` for
+    :class:`~bikemass.models.lean.RiderLeanParameters`), else the Whipple bicycle."""
+    if model is not None:
+        return parse_model(model, source)
+    return parse_model(getattr(type(params), "MODEL", BASE), source)
+
+
 def module_name(members):
     """The generated module of a combination: ``whipple``, ``rider_lean``, ``tyre``, ``rider_lean_tyre``."""
     return "_".join(m.replace("-", "_") for m in members) or BASE

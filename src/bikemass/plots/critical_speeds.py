@@ -8,7 +8,7 @@ from matplotlib import colormaps
 
 from ..core.errors import InputError, wrong_type
 from .figure import Figure, check_limits, new_figure
-from .stability import CriticalSpeeds
+from .stability import CriticalSpeeds, StabilityResult
 
 WEAVE_MARKER, CAPSIZE_MARKER = "o", "s"
 

@@ -4,6 +4,7 @@ view) with axes, the undeformed frame, the clamped points and the mode's type.""
 import numpy as np
 
 from ..core.errors import wrong_type
+from ..fe.modes import Modes
 from .figure import Figure, new_figure
 
 SIDE, TOP = ((0, 2), (0, 1))

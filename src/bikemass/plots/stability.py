@@ -3,7 +3,9 @@ parts (solid) and imaginary parts (dashed) of every mode on one axis, zoomed to 
 modes cross zero, the fast caster root clipped with a note, the weave and capsize speeds
 marked with their values and the stable speeds shaded."""
 
+from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import Protocol
 
 import numpy as np
 
@@ -29,6 +31,36 @@ def legend_name(name):
 STABLE_COLOUR = "tab:green"
 CLIPPED = "caster"
 """The mode whose fast, strongly damped root runs off the zoomed axis."""
+
+
+class Modes(Protocol):
+    """What :func:`plot_eigenvalues` draws of :class:`bikemass.analysis.engine.modes.Modes`
+    (``bm.eigenvalues``): a protocol, as this layer sits below the analyses it draws."""
+
+    @property
+    def speeds(self) -> np.ndarray: ...        # (n,) m/s
+
+    @property
+    def eigenvalues(self) -> np.ndarray: ...   # (n, m) complex, 1/s
+
+    def names(self) -> tuple: ...
+
+
+class StabilityResult(Protocol):
+    """What the figures read of :class:`bikemass.analysis.engine.stability.StabilityResult`
+    (``bm.stability``): a protocol, as this layer sits below the analyses it draws."""
+
+    @property
+    def modes(self) -> Modes: ...
+
+    @property
+    def weave_speeds(self) -> tuple: ...       # m/s
+
+    @property
+    def capsize_speeds(self) -> tuple: ...     # m/s
+
+    @property
+    def ranges(self) -> Mapping: ...
 
 
 @dataclass(frozen=True)

@@ -64,7 +64,7 @@ class Rider:
     pose: str
     name: str
     parts: tuple
-    spec: object = field(default=None, repr=False)
+    spec: tuple | None = field(default=None, repr=False)
 
     def __post_init__(self):
         object.__setattr__(self, "parts", tuple(self.parts))

@@ -140,7 +140,9 @@ def stiffness(bicycle: BicycleLike, which: "str | os.PathLike | Material | Array
     if not isinstance(which, (str, os.PathLike, Material)):
         return stiffness_matrix(which)
     materials = load_materials()
-    material = which if isinstance(which, Material) else materials.get(os.fspath(which))
+    if isinstance(which, Material):
+        return _material_stiffness(load_bicycle(bicycle), which, source, procedure, beam)
+    material = materials.get(os.fspath(which))
     if material is not None:
         return _material_stiffness(load_bicycle(bicycle), material, source, procedure, beam)
     path = os.fspath(which)

@@ -3,6 +3,7 @@
 natural frequencies (``bm.frame_modes``)."""
 
 import numbers
+from typing import Protocol
 
 import numpy as np
 
@@ -13,6 +14,17 @@ from ..fe.model import element_count, resolve_material
 from ..mass.materials import Material
 from ..mass.tubes import Structure
 from .loading import BicycleLike, load_bicycle
+
+
+class Modes(Protocol):
+    """What :func:`frame_modes` returns, :class:`bikemass.fe.modes.Modes`: a protocol here, so that
+    annotating it does not load the modal solver (scipy.sparse.linalg) with this module."""
+
+    @property
+    def frequencies_hz(self) -> np.ndarray: ...    # (n,) Hz, ascending
+
+    @property
+    def shapes(self) -> np.ndarray: ...            # (n_dof, n), mass-normalised
 
 
 def frame_structure(bicycle: BicycleLike) -> Structure:

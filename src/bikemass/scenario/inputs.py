@@ -38,6 +38,7 @@ from ..core.units import DIMENSIONS, dimension_of, to_si
 from ..mass.inertia import combine
 from ..mass.materials import Material, load_materials
 from ..models.flexible import Compliances
+from ..models.lean import RiderLeanParameters
 from ..models.parameters import NAMES, BenchmarkParameters
 from ..rider import Rider, _read_document, poses_dir
 from ..rider.chain_file import bicycle_contacts
@@ -271,12 +272,14 @@ class Inputs:
     @property
     def lean_set(self):
         """The :class:`~bikemass.models.lean.RiderLeanParameters` of a bicycle given as a
-        ``MooreRiderLean2012`` parameter set (BicycleParameters' YAML), else ``None``."""
+        ``MooreRiderLean2012`` parameter set (BicycleParameters' YAML) or as the value itself, else ``None``."""
         if "_lean_set" not in self.__dict__:
             self._lean_set, self._lean_source = None, None
             bike = self.bike
             node = None
-            if isinstance(bike, Mapping):
+            if isinstance(bike, RiderLeanParameters):
+                self._lean_set, self._lean_source = bike, "<rider-lean parameters>"
+            elif isinstance(bike, Mapping):
                 node = Node(plain_input(bike, MAPPING), MAPPING, "")
             elif isinstance(bike, (str, os.PathLike)):
                 path = resolve(split_size(os.fspath(bike))[0], frames_dir(), "bicycle")
@@ -425,7 +428,7 @@ class Inputs:
             chart = doc.get(CHART_KEY)
             if isinstance(chart, dict):
                 built = self.bicycle(()).chart
-                for key, stand_in in STAND_INS.items():
+                for key in STAND_INS:
                     if chart.get(key) is None and built is not None:
                         chart[key] = f"{float(getattr(built, key))!r} m"
                 for key in CHECKED_KEYS:

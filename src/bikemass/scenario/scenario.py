@@ -19,7 +19,8 @@ The model choice (``model=``, ``--model``; :mod:`bikemass.models.registry`):
 * ``whipple`` (default): the Meijaard et al. (2007) bicycle; a stiffness choice other than
   ``infinite`` adds the thesis's quasi-static flexible rear frame (Williams 2015, Eq. 3.27-3.30);
 * ``rider-lean``: the rider's upper body leans at the hips (:mod:`bikemass.rider.lean_split`);
-  the bicycle may instead be BicycleParameters' ``MooreRiderLean2012`` parameter set;
+  the bicycle may instead be BicycleParameters' ``MooreRiderLean2012`` parameter set, or a
+  :class:`~bikemass.models.lean.RiderLeanParameters` (whose default model this is);
 * ``tyre``: tyres that slip (``tyres``: a :class:`~bikemass.models.tyres.Tyres`, a tyre file or a
   mapping; default :data:`~bikemass.models.tyres.DEFAULT_TYRES`);
 * ``flexible``: the rear frame's twist and the fork's bending with their inertia, from the beam
@@ -34,6 +35,8 @@ import os
 from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
 
+import numpy as np
+
 from ..core.choices import RIGID, Combine, Method, check
 from ..core.errors import InputError, short
 from ..core.frozen import readonly, short_repr
@@ -43,7 +46,7 @@ from ..models.lean import RiderLeanParameters
 from ..models.linear import LinearModel
 from ..models.parameters import NAMES, BenchmarkParameters
 from ..models.plausibility import check_parameters
-from ..models.registry import BASE, ModelChoice, parse_model
+from ..models.registry import ModelChoice, model_of, parse_model
 from ..models.tyres import Tyres, as_tyres
 from ..models import whipple
 from .loading import BicycleLike, RiderLike
@@ -83,12 +86,12 @@ class Built:
     """
 
     parameters: BenchmarkParameters
-    stiffness: object
+    stiffness: np.ndarray | None
     model: LinearModel
     choice: ModelChoice = ModelChoice()
-    lean: RiderLeanParameters = None
-    compliances: Compliances = None
-    tyres: Tyres = None
+    lean: RiderLeanParameters | None = None
+    compliances: Compliances | None = None
+    tyres: Tyres | None = None
 
     def values(self):
         """``{name: float}`` of the parameters the model was generated from (the 26 benchmark names
@@ -131,8 +134,10 @@ class Scenario:
         Rider + rear frame: parallel-axis theorem or the thesis's Eq. 3.6.
     method : {"mesh", "exact"}
         Mass properties from meshes or closed-form solids.
-    model : str or ModelChoice
-        ``"whipple"`` (default), ``"rider-lean"``, ``"tyre"``, ``"flexible"`` or members joined by ``+``.
+    model : str or ModelChoice, optional
+        ``"whipple"``, ``"rider-lean"``, ``"tyre"``, ``"flexible"`` or members joined by ``+``.
+        Default: ``"whipple"``, or ``"rider-lean"`` for a bicycle given as
+        :class:`~bikemass.models.lean.RiderLeanParameters` (the parameter set's own member).
     tyres
         For the ``tyre`` member: a :class:`~bikemass.models.tyres.Tyres`, a tyre YAML file or a
         mapping in its form; ``None``: the defaults.  Refused without the member.
@@ -163,13 +168,13 @@ class Scenario:
     stiffness: object = RIGID
     combine: str = Combine.EXACT.value
     method: str = Method.MESH.value
-    model: ModelChoice = BASE
+    model: "ModelChoice | str | None" = None
     tyres: object = None
     allow_off_contact: bool = False
     origin: str = field(default="changes", compare=False)
 
     def __post_init__(self):
-        object.__setattr__(self, "model", parse_model(self.model))
+        object.__setattr__(self, "model", model_of(self.bicycle, self.model))   # None: the bicycle's own member
         object.__setattr__(self, "combine", check(Combine, self.combine).value)
         object.__setattr__(self, "method", check(Method, self.method).value)
         if not isinstance(self.allow_off_contact, bool):

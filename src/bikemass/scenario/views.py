@@ -2,12 +2,25 @@
 ``bm.plot_pose``, ``bm.plot_chart``): the names are resolved here, and :mod:`bikemass.plots` draws
 the loaded objects."""
 
+from typing import Protocol
+
 from ..plots.chart import plot_chart as draw_chart
 from ..plots.pose import plot_pose as draw_pose
 from ..plots.side_view import plot_side_view as draw_side_view
 from ..plots.figure import Figure
 from .catalog import load_bicycle, load_rider
 from .loading import BicycleLike, RiderLike
+
+
+class Solution(Protocol):
+    """What :func:`plot_pose` draws of :class:`bikemass.rider.solve.Solution` (a solved chain pose): a
+    protocol here, so that annotating it does not load the pose solver (scipy.optimize) with this module."""
+
+    @property
+    def pose(self) -> object: ...       # the solved ChainPose
+
+    @property
+    def targets(self) -> tuple: ...     # the contacts it was solved for
 
 
 def plot_side_view(bicycle: BicycleLike, rider: RiderLike = None, title: str | None = None,

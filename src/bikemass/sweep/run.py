@@ -37,6 +37,7 @@ import signal
 import threading
 import time
 from collections.abc import Callable
+from typing import Any, cast
 from contextlib import contextmanager
 from pathlib import Path
 
@@ -49,6 +50,9 @@ from .layout import CHUNKS, Kept, chunk_path, kept_chunks, missing_ranges, split
 from .result import SweepResult
 from .spec import SweepSpec, read_spec
 from .vectorised import takes
+
+DaskClient = Any
+"""A ``distributed.Client`` (Dask's, an optional dependency: not imported to annotate)."""
 
 TASKS_PER_WORKER = 4
 SERIAL_CHUNKS = 20
@@ -183,7 +187,7 @@ def _outcome(result, spec, out, created):
 
 
 def run_sweep(spec: "SweepSpec | str | os.PathLike", out: "str | os.PathLike", workers: int | None = None,
-              scheduler: "str | distributed.Client | None" = None,
+              scheduler: "str | DaskClient | None" = None,
               progress: "Callable[[int], object] | None" = None) -> SweepResult:
     """Evaluate every configuration of a design sweep into a folder (``bm.sweep``).
 
@@ -253,6 +257,7 @@ def run_sweep(spec: "SweepSpec | str | os.PathLike", out: "str | os.PathLike", w
     _check_arguments(spec, out, workers, progress)
     if not hasattr(spec, "configurations"):
         spec = read_spec(spec)
+    spec = cast(SweepSpec, spec)                   # a SweepSpec from here on (for the type checker)
     check_keys(spec)
     _check_folder(spec, out)
     created = not Path(out).exists() or not any(Path(out).iterdir())

@@ -29,6 +29,7 @@ import hashlib
 import itertools
 import json
 import math
+import os
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -273,7 +274,7 @@ def _model_name(node):
         node["model"].fail(exc.expected)
 
 
-def read_spec(path):
+def read_spec(path: "str | os.PathLike") -> "SweepSpec":
     """:class:`SweepSpec` of a YAML file; InputError naming the key on bad input."""
     node = load_yaml(path)
     node.check_keys(required=("bike", "vary"), optional=TOP_KEYS)

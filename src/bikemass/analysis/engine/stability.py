@@ -219,12 +219,12 @@ def analyse(model, speeds=None, marginal=MARGINAL_THRESHOLD, stiffness=None):
     ranges, mode_ranges = {}, {label: {} for label in modes.labels}
     for criterion, r in limits.items():
         exact = (critical.stable if r is None else
-                 interval_ranges(lo, hi, boundaries[criterion], lambda x: bool(np.all(margin(at(x), r) < 0))))
+                 interval_ranges(lo, hi, boundaries[criterion], lambda x, r=r: bool(np.all(margin(at(x), r) < 0))))
         ranges[criterion] = {"exact": exact, "grid": grid_ranges(v, is_stable(modes.eigenvalues, r).all(axis=1))}
         for c, label in enumerate(modes.labels):
             mode_ranges[label][criterion] = {
                 "exact": interval_ranges(lo, hi, boundaries[criterion],
-                                         lambda x: bool(margin(tracked.root(x, c), r) < 0)),
+                                         lambda x, c=c, r=r: bool(margin(tracked.root(x, c), r) < 0)),
                 "grid": grid_ranges(v, is_stable(modes.eigenvalues[:, c], r))}
     return StabilityResult(model, modes, float(marginal), crossings, ranges, mode_ranges, stiffness,
                            critical.unstable_at_start)

@@ -9,13 +9,14 @@ frequency at once by back substitution: a backward-stable solve whose cost per f
 from dataclasses import dataclass
 
 import numpy as np
+from numpy.typing import ArrayLike
 import scipy.linalg
 
 from ...core.display import Display
 from ...core.errors import InputError, short
 from ...core.frozen import readonly, short_repr
 from ...core.tables import Table
-from .plant import linear_model, signal_unit, siso
+from .plant import System, linear_model, signal_unit, siso
 
 MAX_FREQUENCIES = 1_000_000
 """Most frequencies of one response."""
@@ -169,15 +170,16 @@ class FrequencyResponse(Display):
                           ("frequencies", f"{w[0]:g}..{w[-1]:g} rad/s x {len(w)}"))
 
 
-def frequency_response(system: "LinearModel | BenchmarkParameters", speed: float, input: str, output: str,
+def frequency_response(system: System, speed: float, input: str, output: str,
                        frequencies: "ArrayLike | None" = None,
                        stiffness: "ArrayLike | None" = None) -> FrequencyResponse:
     """The frequency response ``G(j w) = c (j w I - A)^-1 b`` from ``input`` to ``output``.
 
     Parameters
     ----------
-    system : LinearModel or BenchmarkParameters
-        A linear model, or a benchmark parameter set (the Whipple bicycle).
+    system : LinearModel, Scenario, Built, BenchmarkParameters or RiderLeanParameters
+        A linear model, a scenario, or a parameter set (the Whipple bicycle, or the leaning rider's
+        model of RiderLeanParameters).
     speed : float
         Forward speed (m/s).
     input, output : str

@@ -13,6 +13,7 @@ front contact is ``y(v (t - tau_p))`` (the preview delays the road, never the ri
 from dataclasses import dataclass
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from ...core.display import Display
 from ...core.errors import InputError, short
@@ -20,8 +21,8 @@ from ...core.frozen import FrozenMap, readonly, short_repr
 from ...core.tables import Table
 from ...core.threads import one_blas_thread
 from .discrete import march
-from .gains import as_gains
-from .plant import linear_model
+from .gains import Gains, as_gains
+from .plant import System, linear_model
 from .rider import closed_loop, rider_plant
 from .tuning import GainsNotFound, tune_gains
 
@@ -147,14 +148,15 @@ def follow_lane_change(closed, lateral_row, names, units, kind="double", step=0.
 
 
 @one_blas_thread()
-def lane_change(system: "LinearModel | BenchmarkParameters", speed: float, gains: "Gains | ArrayLike | None" = None,
+def lane_change(system: System, speed: float, gains: "Gains | ArrayLike | None" = None,
                 kind: str = "double", step: float = 0.01, stiffness: "ArrayLike | None" = None) -> LaneChange:
     """The rider and bicycle through a 2 m lane change (and back, ``kind="double"``).
 
     Parameters
     ----------
-    system : LinearModel or BenchmarkParameters
-        A linear model, or a benchmark parameter set (the Whipple bicycle).
+    system : LinearModel, Scenario, Built, BenchmarkParameters or RiderLeanParameters
+        A linear model, a scenario, or a parameter set (the Whipple bicycle, or the leaning rider's
+        model of RiderLeanParameters).
     speed : float
         Forward speed (m/s), above 0.
     gains : Gains or five numbers, optional

@@ -13,12 +13,13 @@ that coordinate, the phases (degrees) lead it when positive.
 from dataclasses import dataclass
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from ...core.display import Display
 from ...core.frozen import readonly, short_repr
 from ...core.tables import Table
 from ..engine.modes import follow_modes
-from .plant import check_speed, linear_model
+from .plant import System, check_speed, linear_model
 
 
 def coordinates(model):
@@ -133,15 +134,16 @@ class ModeShapes(Display):
                           ("coordinates", ", ".join(self.coordinates)))
 
 
-def mode_shapes(system: "LinearModel | BenchmarkParameters", speed: float,
+def mode_shapes(system: System, speed: float,
                 stiffness: "ArrayLike | None" = None) -> ModeShapes:
     """Every mode of a linear model at ``speed``: eigenvalue and the amplitude and phase of each
     coordinate.
 
     Parameters
     ----------
-    system : LinearModel or BenchmarkParameters
-        A linear model, or a benchmark parameter set (the Whipple bicycle).
+    system : LinearModel, Scenario, Built, BenchmarkParameters or RiderLeanParameters
+        A linear model, a scenario, or a parameter set (the Whipple bicycle, or the leaning rider's
+        model of RiderLeanParameters).
     speed : float
         Forward speed (m/s).
     stiffness : array_like (2, 2), optional

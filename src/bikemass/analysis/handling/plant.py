@@ -6,23 +6,26 @@ Whipple bicycle, a flexible frame, a leaning rider, ...), a
 :class:`~bikemass.scenario.scenario.Scenario` (built with its own ``model``) or a
 :class:`~bikemass.models.parameters.BenchmarkParameters` set, which is the Whipple bicycle of
 :func:`~bikemass.models.whipple.whipple_model` (with the rear-frame stiffness S, N m/rad, when
-one is given).  Bad arguments raise :class:`~bikemass.core.errors.InputError` naming the argument and
+one is given), or a :class:`~bikemass.models.lean.RiderLeanParameters` set, which is the leaning
+rider's model (both through :func:`bikemass.analysis.results.built_model`, as ``bm.stability``).  Bad arguments raise :class:`~bikemass.core.errors.InputError` naming the argument and
 the choices.
 """
 
 import math
 import numbers
 
-import numpy as np
 
 from ...core.choices import closest
 from ...core.errors import InputError, short, wrong_type
 from ...core.limits import MAX_SPEED
-from ..results import matrices
+from ..results import built_model
 from ...models.linear import LinearModel
-from ...models.whipple import whipple_model
+from ...models.lean import RiderLeanParameters
 from ...models.parameters import BenchmarkParameters
 from ...scenario.scenario import Built, Scenario
+
+System = LinearModel | Scenario | Built | BenchmarkParameters | RiderLeanParameters
+"""What a handling analysis takes as its ``system`` (:func:`linear_model`)."""
 
 
 def linear_model(system, stiffness=None):
@@ -30,9 +33,9 @@ def linear_model(system, stiffness=None):
 
     Parameters
     ----------
-    system : LinearModel, Scenario, Built or BenchmarkParameters
+    system : LinearModel, Scenario, Built, BenchmarkParameters or RiderLeanParameters
         A model, a scenario (built: any member of the family, ``Scenario(..., model="rider-lean")``),
-        or the 26 Meijaard et al. (2007) parameters (SI) of a Whipple bicycle.
+        the 26 Meijaard et al. (2007) parameters (SI) of a Whipple bicycle, or a leaning rider's.
     stiffness : array_like (2, 2) or None
         Rear-frame stiffness S (N m/rad) of a parameter set; ``None`` for a rigid frame.  Not
         allowed with a model (a model carries its own frame).
@@ -46,17 +49,15 @@ def linear_model(system, stiffness=None):
             raise InputError("stiffness", "(argument)", "a LinearModel carries its own frame: give the "
                              "stiffness to the model's builder (whipple_model(params, stiffness))")
         return system
-    if isinstance(system, BenchmarkParameters):
-        matrices(system, stiffness)                       # checks the parameters and S (InputError)
-        S = None if stiffness is None else np.asarray(stiffness, dtype=float)
-        return whipple_model(system, S)
+    if isinstance(system, (BenchmarkParameters, RiderLeanParameters)):
+        return built_model(system, stiffness)[0]          # the one coercion of a parameter set (its own member)
     if isinstance(system, (Scenario, Built)):
         if stiffness is not None:
             raise InputError("stiffness", "(argument)", "a scenario carries its own frame: give the stiffness "
                              "to the Scenario")
         return (system.build() if isinstance(system, Scenario) else system).model
-    raise wrong_type("system", system, "a system is a LinearModel, a Scenario or BenchmarkParameters "
-                     "(bm.parameters)")
+    raise wrong_type("system", system, "a system is a LinearModel, a Scenario, BenchmarkParameters "
+                     "(bm.parameters) or RiderLeanParameters")
 
 
 def check_speed(speed, what="speed"):

@@ -9,6 +9,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from ...core.choices import Tuning, check
 from ...core.display import Display
@@ -17,8 +18,8 @@ from ...core.frozen import readonly, short_repr
 from ...core.tables import Table
 from ...core.limits import MAX_SPEED
 from ...core.threads import one_blas_thread
-from .gains import NAMES, UNITS, as_gains, read_gain_table
-from .plant import linear_model
+from .gains import NAMES, UNITS, Gains, as_gains, read_gain_table
+from .plant import System, linear_model
 from .quality import hqm, hqm_peak, level
 from .rider import closed_loop, rider_plant
 from .tuning import GainsNotFound, tune
@@ -110,7 +111,7 @@ class HandlingResult(Display):
     hqm_peak_frequency: np.ndarray
     hqm_frequencies: np.ndarray
     hqm: np.ndarray
-    lateral: str
+    lateral: str | None
 
     def __post_init__(self):
         for name in ("speeds", "closed_loop_stable", "max_real", "hqm_peak", "hqm_peak_frequency",
@@ -169,16 +170,17 @@ class HandlingResult(Display):
 
 
 @one_blas_thread()
-def handling(system: "LinearModel | BenchmarkParameters", speeds: "ArrayLike | None" = None,
+def handling(system: System, speeds: "ArrayLike | None" = None,
              gains: "Gains | str | os.PathLike | Mapping | ArrayLike | None" = None,
              stiffness: "ArrayLike | None" = None, tuning: "Tuning | str" = Tuning.HMH2012) -> HandlingResult:
     """The rider in the loop at every speed: gains, closed-loop stability and handling qualities.
 
     Parameters
     ----------
-    system : LinearModel or BenchmarkParameters
+    system : LinearModel, Scenario, Built, BenchmarkParameters or RiderLeanParameters
         A linear model with a steer-torque input and the signals the rider feeds back (every
-        bicycle model of bikemass), or a benchmark parameter set (the Whipple bicycle).
+        bicycle model of bikemass), a scenario, or a parameter set (the Whipple bicycle, or the
+        leaning rider's model of RiderLeanParameters).
     speeds : array_like (n,), optional
         Increasing forward speeds (m/s); default the speeds of a gains file or mapping.
     gains : None, str, os.PathLike, mapping or five numbers

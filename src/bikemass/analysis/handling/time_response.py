@@ -12,6 +12,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from ...core.choices import closest
 from ...core.display import Display
@@ -19,7 +20,7 @@ from ...core.errors import InputError, short, wrong_type
 from ...core.frozen import FrozenMap, readonly, short_repr
 from ...core.tables import Table
 from .discrete import march
-from .plant import check_speed, input_index, linear_model
+from .plant import System, check_speed, input_index, linear_model
 
 KINDS = ("step", "impulse")
 """How an input is applied."""
@@ -145,15 +146,16 @@ class TimeResponse(Display):
                           ("states", len(self.names)), ("inputs", applied))
 
 
-def simulate(system: "LinearModel | BenchmarkParameters", speed: float, initial: "Mapping[str, float] | None" = None,
+def simulate(system: System, speed: float, initial: "Mapping[str, float] | None" = None,
              inputs: "Mapping[str, tuple[str, float]] | None" = None, duration: float = DEFAULT_DURATION,
              step: float = DEFAULT_STEP, stiffness: "ArrayLike | None" = None) -> TimeResponse:
     """The time response from initial conditions and to steps and impulses of the inputs.
 
     Parameters
     ----------
-    system : LinearModel or BenchmarkParameters
-        A linear model, or a benchmark parameter set (the Whipple bicycle).
+    system : LinearModel, Scenario, Built, BenchmarkParameters or RiderLeanParameters
+        A linear model, a scenario, or a parameter set (the Whipple bicycle, or the leaning rider's
+        model of RiderLeanParameters).
     speed : float
         Forward speed (m/s).
     initial : mapping, optional

@@ -17,12 +17,13 @@
 from dataclasses import dataclass
 
 import numpy as np
+from numpy.typing import ArrayLike
 import scipy.linalg
 
 from ...core.display import Display
 from ...core.frozen import readonly, short_repr
 from ...core.tables import Table
-from .plant import linear_model, siso, signal_unit
+from .plant import System, linear_model, signal_unit, siso
 
 ORTHOGONAL = 1e-12
 """``|c x| <= ORTHOGONAL |c| |x|`` counts as zero when finding the relative degree (the Markov
@@ -186,14 +187,15 @@ def _pairs(values):
     return [[float(z.real), float(z.imag)] for z in values]
 
 
-def transfer_function(system: "LinearModel | BenchmarkParameters", speed: float, input: str, output: str,
+def transfer_function(system: System, speed: float, input: str, output: str,
                       stiffness: "ArrayLike | None" = None) -> TransferFunction:
     """The transfer function from ``input`` to ``output`` at ``speed``, as zeros, poles and gain.
 
     Parameters
     ----------
-    system : LinearModel or BenchmarkParameters
-        A linear model, or a benchmark parameter set (the Whipple bicycle).
+    system : LinearModel, Scenario, Built, BenchmarkParameters or RiderLeanParameters
+        A linear model, a scenario, or a parameter set (the Whipple bicycle, or the leaning rider's
+        model of RiderLeanParameters).
     speed : float
         Forward speed (m/s).
     input : str

@@ -178,7 +178,9 @@ def linearise(system):
     point = {plain[k]: v for k, v in system.point.items()}
     point.update({z: sm.S.Zero for z in (*ud, *r)})
     jet = Jet(point, (*q, *u, *ud, *r))
-    grad = lambda exprs, zs: sm.Matrix([jet.gradient(e, zs) for e in exprs])
+
+    def grad(exprs, zs):
+        return sm.Matrix([jet.gradient(e, zs) for e in exprs])
 
     for c in fv:
         if sm.simplify(jet.value(c)) != 0:
