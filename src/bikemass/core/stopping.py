@@ -6,6 +6,10 @@ cleans up (worker pools terminated, temporary files and folders removed).  Some
 libraries swallow any exception raised while they import or call out (``except
 BaseException``); so that a stop request is not lost there, the signal is sent again
 every :data:`RETRY` seconds until the exception reaches the command line.
+
+The handler runs in the main thread between any two bytecodes, so also while the main thread
+is inside the handler itself (a second signal close behind the first) or inside :meth:`cancel`:
+it never waits for a lock (a non-reentrant lock taken twice by one thread never comes free).
 """
 
 import contextlib
@@ -27,11 +31,16 @@ class _Handler:
         self.lock = threading.Lock()
 
     def __call__(self, signum, frame):
-        with self.lock:
-            if self.timer is None:
-                self.timer = threading.Timer(RETRY, self._repeat, (signum,))
-                self.timer.daemon = True
-                self.timer.start()
+        # never blocks: if the lock is held, this thread holds it (a signal arrived inside this
+        # handler or cancel) or the timer thread does (it is about to send the signal again)
+        if self.lock.acquire(blocking=False):
+            try:
+                if self.timer is None:
+                    self.timer = threading.Timer(RETRY, self._repeat, (signum,))
+                    self.timer.daemon = True
+                    self.timer.start()
+            finally:
+                self.lock.release()
         raise KeyboardInterrupt() if signum == signal.SIGINT else Terminated()
 
     def _repeat(self, signum):
@@ -44,7 +53,8 @@ class _Handler:
             timer, self.timer = self.timer, None
         if timer is not None:
             timer.cancel()
-            timer.join()
+            with contextlib.suppress(RuntimeError):    # a start cut short by a second signal
+                timer.join()
 
 
 @contextlib.contextmanager

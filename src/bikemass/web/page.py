@@ -9,6 +9,8 @@ import base64
 
 import dash
 import numpy as np
+from dash.exceptions import DependencyException
+from flask import jsonify
 from dash import ALL, Dash, Input, Output, State, ctx, dcc, html, no_update
 from ..bicycle.derived_chart import ANGLES, CHART_ORDER, derived_chart
 from ..core.errors import InputError
@@ -25,7 +27,7 @@ from .engine import UPLOAD_LIMIT, Engine, HANDLING_SPEEDS
 from .state import BODY_RIDER, CHART_ANGLES, CHART_KEYS, HANDS, MODEL_CHOICES, SEXES, SOURCE, PageState
 from ..analysis.handling.frequency import frequency_response
 from ..analysis.handling.figures import plot_bode, plot_handling
-from .guard import guard_requests
+from .guard import guard_hosts, guard_requests, secure_headers
 
 STYLE = """
 body { font-family: system-ui, sans-serif; margin: 0; color: #222; background: #fafafa; }
@@ -102,8 +104,9 @@ VALUE_CHECKS = {
 """What each control of the page may send (:func:`~.guard.guard_requests` refuses the rest)."""
 
 
-def create_app(engine=None):
-    """The Dash application (its Flask server has the JSON API and downloads)."""
+def create_app(engine=None, hosts=()):
+    """The Dash application (its Flask server has the JSON API and downloads); it answers requests
+    whose ``Host`` is an IP address, ``localhost`` or one of ``hosts`` (:func:`~.guard.guard_hosts`)."""
     engine = engine or Engine()
     app = Dash(__name__, title="bikemass", update_title=None, serve_locally=True, use_pages=True,
                pages_folder="", index_string=INDEX, suppress_callback_exceptions=True)
@@ -112,9 +115,17 @@ def create_app(engine=None):
     _callbacks(app, engine)
     register_routes(app.server, engine)
     guard_requests(app, VALUE_CHECKS)
+    guard_hosts(app.server, hosts)
+    secure_headers(app.server)
+    app.server.register_error_handler(DependencyException, _no_such_script)
     app.server.json.sort_keys = False
     app.engine = engine
     return app
+
+
+def _no_such_script(error):
+    """A script path Dash does not serve (``/_dash-component-suites/...%252f..``): 404, one line."""
+    return jsonify({"error": "not found: a script of this page"}), 404
 
 
 def _shipped():
