@@ -229,12 +229,15 @@ def test_a_50_mb_body_is_refused_before_it_is_read(client):
 
 
 def test_a_bad_typed_value_keeps_the_last_good_results(app, client):
-    """docs/web.md: an error in a typed value is shown in one line; the results stay (no output but
-    the error is sent, so the page keeps what it shows)."""
+    """docs/web.md: an error in a typed value is shown in one line naming the field; the results
+    stay (no output but the error and the results' class is sent, so the page keeps what it shows),
+    marked stale."""
     reply = _post(client, _body(app, "weave-speed", **PAGE, param_c="abc")).get_json()["response"]
-    assert list(reply) == ["error"] and "c: a number" in reply["error"]["children"]
+    assert sorted(reply) == ["error", "results"] and reply["results"]["className"] == "results stale"
+    assert reply["error"]["children"] == "Benchmark parameter c: a number"
     reply = _post(client, _body(app, "weave-speed", **PAGE, param_mB="-5")).get_json()["response"]
-    assert list(reply) == ["error"] and "mB: a positive number" in reply["error"]["children"]
+    assert sorted(reply) == ["error", "results"] and reply["results"]["className"] == "results stale"
+    assert reply["error"]["children"] == "Benchmark parameter mB: a positive number, got -5"
     side = _post(client, _body(app, "side-view", **{**PAGE, "bike": "nonesuch"}))
     assert side.status_code == 204 or "side-view" not in side.get_json().get("response", {})
 

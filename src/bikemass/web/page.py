@@ -46,6 +46,9 @@ header span { margin-left: 14px; opacity: 0.8; font-size: 14px; }
 .figure img { width: 100%; }
 .error { color: #b00020; font-weight: 600; margin: 8px 0; min-height: 1em; }
 .warnings { color: #8a5a00; margin: 4px 0; font-size: 13px; }
+.stale-note { display: none; color: #b00020; font-size: 13px; margin: 4px 0; }
+.stale .stale-note { display: block; }
+.stale .numbers, .stale .figure, img.stale { opacity: 0.45; }
 table.params { border-collapse: collapse; font-size: 12px; width: 100%; }
 table.params td { padding: 1px 4px; border-bottom: 1px solid #eee; }
 table.params input { width: 150px; font-size: 12px; padding: 2px 4px; }
@@ -100,6 +103,7 @@ VALUE_CHECKS = {
     "param.value": (_optional(_number_or_text), "a number or nothing"),
     "upload.contents": (_optional(_text(3_000_000)), "the file's content as a data URL, or null"),
     "upload.filename": (_optional(_text(255)), "a file name of at most 255 characters, or null"),
+    "address-error.data": (_optional(_text(2000)), "the address's error, or null"),
 }
 """What each control of the page may send (:func:`~.guard.guard_requests` refuses the rest)."""
 
@@ -178,8 +182,10 @@ def _layout(query):
         _editor("Benchmark parameters: type a value to override, empty = computed", "param", NAMES,
                 overrides, lambda k: DESCRIPTIONS[k].split("[")[-1].rstrip("]"), lambda k: k),
     ])
-    results = html.Div(className="results", children=[
+    results = html.Div(id="results", className="results stale" if error else "results", children=[
+        dcc.Store(id="address-error", data=error or None),
         html.Div(id="error", className="error", children=error),
+        html.Div(STALE_NOTE, id="stale-note", className="stale-note"),
         html.Ul(id="warnings", className="warnings"),
         dcc.Loading(type="dot", children=html.Div(className="numbers", children=[
             _number("weave speed", "weave-speed"), _number("capsize speed", "capsize-speed"),
@@ -318,6 +324,27 @@ def _results(engine, state):
     return evaluation, base, derived_chart(bicycle), engine.is_chart(state.bike)
 
 
+STALE_NOTE = "The results below are those of the last good configuration, not of the values above."
+"""Shown (with the results dimmed) while an error stands."""
+FIELDS = {"bike": "Bicycle", "size": "Size", "rider": "Rider", "stiffness": "Rear-frame stiffness",
+          "combine": "Rider + rear frame", "model": "Model", "height": "Rider height (m)", "mass": "Rider mass (kg)",
+          "sex": "Rider sex", "hands": "Hands on the", "bode speed": "Bode plot speed (m/s)"}
+"""The page's name of each field a query key comes from."""
+
+
+def _field_error(exc, field=None):
+    """The one line the page shows for ``exc``: named by the field the user typed in (``field``, or
+    the one its key comes from when it names the page's query or the edited chart), not by the
+    internal sources ``URL`` and ``<mapping>``; an error about a file (an upload) stays as it is."""
+    key = str(exc.key)
+    if field is None:
+        if str(exc.source) not in (SOURCE, "<mapping>"):
+            return str(exc)
+        field = (f"Geometry chart, {key.removeprefix('chart.').replace('_', ' ')}" if key.startswith("chart.")
+                 else f"Benchmark parameter {key}" if key in NAMES else FIELDS.get(key, key))
+    return f"{field}: {exc.expected}"
+
+
 def _callbacks(app, engine):
     @app.callback(Output("bike", "options"), Output("bike", "value"),
                   Output("error", "children", allow_duplicate=True),
@@ -366,44 +393,47 @@ def _callbacks(app, engine):
                   Output({"type": "chart", "key": ALL}, "placeholder"),
                   Output("chart-editor", "style"),
                   Output("warnings", "children"),
-                  Output("error", "children"),
+                  Output("error", "children"), Output("results", "className"), Output("address-error", "data"),
                   Input("bike", "value"), Input("size", "value"), Input("rider", "value"),
                   Input("height", "value"), Input("mass", "value"), Input("sex", "value"), Input("hands", "value"),
                   Input("stiffness", "value"), Input("combine", "value"),
                   Input({"type": "chart", "key": ALL}, "value"), Input({"type": "param", "key": ALL}, "value"),
-                  Input("model", "value"))
-    def update(bike, size, rider, height, mass, sex, hands, stiffness, combine, chart_texts, param_texts, model):
+                  Input("model", "value"), State("address-error", "data"))
+    def update(bike, size, rider, height, mass, sex, hands, stiffness, combine, chart_texts, param_texts, model,
+               address_error):
+        unchanged = (no_update,) * 10 + ([no_update] * len(NAMES), [no_update] * len(CHART_KEYS)) + (no_update,) * 2
         try:
             state = _state(bike, size, rider, (height, mass, sex, hands), stiffness, combine, chart_texts,
                            param_texts, model)
+            if address_error and state == PageState():
+                # a bad link: the controls show the default page, which the link did not ask for; its
+                # error and its address stay until the user changes a control
+                return unchanged + (no_update,) * 3
             (evaluation, base, chart, editable), lines = engine.answer(_results, engine, state)
-        except InputError as exc:         # the last good results stay (docs/web.md)
-            return ((no_update,) * 10 + ([no_update] * len(NAMES), [no_update] * len(CHART_KEYS))
-                    + (no_update,) * 2 + (str(exc),))
+        except InputError as exc:         # the last good results stay (docs/web.md), marked stale
+            return unchanged + (_field_error(exc), "results stale", no_update)
         result, p, S = evaluation.stability, evaluation.parameters, evaluation.stiffness
         matrix = "rigid (infinite)" if S is None else "\n".join("  ".join(f"{x:12.1f}" for x in row) for row in S)
         query = state.to_query()
         links = [html.A(DOWNLOADS[name][1], href=f"/download/{name}?{query}", download="")
                  for name in DOWNLOADS if name != "pose.yaml" or state.rider != "none"]
         shown = [_placeholder(k, chart.get(k)) if editable else "" for k in CHART_KEYS]
-        message = no_update if ctx.triggered_id is None else ""
+        message = no_update if ctx.triggered_id is None and not address_error else ""
         return (_speed_text(result.weave_speeds, "weave"), _speed_text(result.capsize_speeds, "capsize"),
                 _range_text(result.ranges["strict"]["exact"]), f"{p.mB + p.mH + p.mR + p.mF:.2f} kg",
                 _svg_uri(_eigenvalue_figure(result, state)), matrix, _bodies_table(p), _geometry_table(chart),
                 links, "?" + query, [f"{base[n]:.6g}" for n in NAMES], shown,
-                {} if editable else {"display": "none"}, [html.Li(f"warning: {line}") for line in lines], message)
+                {} if editable else {"display": "none"}, [html.Li(f"warning: {line}") for line in lines], message,
+                "results", None)
 
     @app.callback(Output("side-view", "src"), Input("bike", "value"), Input("size", "value"),
                   Input("rider", "value"), Input("height", "value"), Input("mass", "value"),
                   Input("sex", "value"), Input("hands", "value"), Input({"type": "chart", "key": ALL}, "value"))
     def side_view(bike, size, rider, height, mass, sex, hands, chart_texts):
-        def figure(state):
-            bicycle = engine.bicycle(state.bicycle_key)
-            return _svg_uri(_side_view_figure(bicycle, engine.seated(state.bicycle_key, state.rider_key)))
         try:
             state = _state(bike, size, rider, (height, mass, sex, hands), "infinite", "exact", chart_texts,
                            [""] * len(NAMES))
-            return engine.answer(figure, state)[0]
+            return engine.answer(_side_view_uri, engine, state)[0]
         except InputError:                # the last good side view stays
             return no_update
 
@@ -413,35 +443,56 @@ def _callbacks(app, engine):
                      Input({"type": "chart", "key": ALL}, "value"), Input({"type": "param", "key": ALL}, "value"),
                      Input("model", "value")]
 
-    @app.callback(Output("bode-figure", "src"), Output("bode-error", "children"),
+    @app.callback(Output("bode-figure", "src"), Output("bode-error", "children"), Output("bode-figure", "className"),
                   *configuration, Input("bode-speed", "value"), Input("bode-input", "value"),
                   Input("bode-output", "value"))
     def bode(bike, size, rider, height, mass, sex, hands, stiffness, combine, chart_texts, param_texts, model,
              speed, inp, out):
+        """The Bode figure; on an error the last good figure stays, dimmed, and the error names the field."""
         try:
             state = _state(bike, size, rider, (height, mass, sex, hands), stiffness, combine, chart_texts,
                            param_texts, model)
             v = _parse(["bode speed"], [speed])["bode speed"]
-            fr = frequency_response(engine.model(state), 5.0 if v is None else v, inp, out)
+            uri = engine.answer(_bode_uri, engine, state, 5.0 if v is None else v, inp, out)[0]
         except InputError as exc:
-            return "", str(exc)
-        return _svg_uri(_bode_figure(fr, state)), ""
+            field = FIELDS["bode speed"] if str(exc.source) == "speed" or exc.key == "bode speed" else None
+            return no_update, _field_error(exc, field), "stale"
+        return uri, "", ""
 
-    @app.callback(Output("hqm-figure", "src"), Output("hqm-summary", "children"), *configuration)
+    @app.callback(Output("hqm-figure", "src"), Output("hqm-summary", "children"), Output("hqm-figure", "className"),
+                  *configuration)
     def handling_quality(bike, size, rider, height, mass, sex, hands, stiffness, combine, chart_texts,
                          param_texts, model):
+        """The HQM figure; on an error the last good figure stays, dimmed, with the error below it."""
         try:
             state = _state(bike, size, rider, (height, mass, sex, hands), stiffness, combine, chart_texts,
                            param_texts, model)
-            result = engine.handling(state)
-            stable = engine.evaluate(state).stability.ranges["strict"]["exact"]
+            uri, summary = engine.answer(_handling_uri, engine, state)[0]
         except InputError as exc:
-            return "", str(exc)
-        return _svg_uri(_handling_figure(result, stable, state)), _handling_summary(result)
+            return no_update, _field_error(exc), "stale"
+        return uri, summary, ""
 
     @app.callback(Output("body-controls", "style"), Input("rider", "value"))
     def body_controls(rider):
         return {} if rider == BODY_RIDER else {"display": "none"}
+
+
+def _side_view_uri(engine, state):
+    """The side view of ``state``'s bicycle and seated rider (an SVG data URL)."""
+    bicycle = engine.bicycle(state.bicycle_key)
+    return _svg_uri(_side_view_figure(bicycle, engine.seated(state.bicycle_key, state.rider_key)))
+
+
+def _bode_uri(engine, state, speed, inp, out):
+    """The Bode figure of ``state`` at ``speed`` (m/s) from ``inp`` to ``out`` (an SVG data URL)."""
+    return _svg_uri(_bode_figure(frequency_response(engine.model(state), speed, inp, out), state))
+
+
+def _handling_uri(engine, state):
+    """The HQM figure of ``state`` (an SVG data URL) and the summary line."""
+    result = engine.handling(state)
+    stable = engine.evaluate(state).stability.ranges["strict"]["exact"]
+    return _svg_uri(_handling_figure(result, stable, state)), _handling_summary(result)
 
 
 def _placeholder(key, value):
