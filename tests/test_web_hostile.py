@@ -242,6 +242,23 @@ def test_a_bad_typed_value_keeps_the_last_good_results(app, client):
     assert side.status_code == 204 or "side-view" not in side.get_json().get("response", {})
 
 
+def test_a_typed_chart_value_is_named_by_its_field_not_an_internal_source(app, client):
+    """Issue 35: ``<mapping>: chart.head_tube_angle`` named the edited chart, not where the value was
+    typed: the API names the query key, the page the field."""
+    reply = client.get("/api/stability?bike=bmc-roadmachine&size=56&rider=none&chart.head_tube_angle=150")
+    assert reply.status_code == 400
+    assert reply.get_json()["error"].startswith("URL: chart.head_tube_angle: an angle from the horizontal")
+    body = _body(app, "weave-speed", **{**PAGE, "bike": "bmc-roadmachine", "size": "56"})
+    for group in body["inputs"]:
+        for item in group if isinstance(group, list) else []:
+            if item["id"] == {"key": "head_tube_angle", "type": "chart"}:
+                item["value"] = "150"
+    reply = _post(client, body).get_json()["response"]
+    message = reply["error"]["children"]
+    assert message.startswith("Geometry chart, head tube angle: an angle from the horizontal")
+    assert "<mapping>" not in message and "URL" not in message
+
+
 def test_an_upload_through_the_page_names_the_file_as_uploaded(app, client):
     content = "data:application/x-yaml;base64," + base64.b64encode(b"w: [1, 2\n").decode()
     body = _body(app, "bike.options", **{"upload.contents": content, "upload.filename": "broken.yaml",

@@ -112,10 +112,25 @@ def test_a_cached_answer_does_not_wait_for_uncached_handling_requests():
     assert done == [200] * 8
 
 
-def test_a_cached_answer_is_served_while_the_engine_is_busy(app, client):
-    """The lock held by another thread (a computation in progress): a cached answer still comes."""
-    query = "/api/params?bike=jamis&rider=relaxed&stiffness=steel"
-    first = client.get(query).get_json()
+def _page_request(app, fragment):
+    """A request of the page's callback whose outputs include ``fragment``, for the benchmark."""
+    from test_web_hostile import PAGE, _body
+    body = json.dumps(_body(app, fragment, **PAGE, **{"bode-speed": "5", "bode-input": "steer-torque",
+                                                     "bode-output": "roll-angle"}))
+    return lambda c: c.post("/_dash-update-component", data=body, content_type="application/json")
+
+
+@pytest.mark.parametrize("what", ["api", "weave-speed", "side-view", "size.options", "bode-figure", "hqm-figure"])
+def test_a_cached_answer_is_served_while_the_engine_is_busy(app, client, what):
+    """The lock held by another thread (a computation in progress): a cached answer still comes,
+    from the JSON API and from each of the page's callbacks."""
+    if what == "api":
+        def ask(c):
+            return c.get("/api/params?bike=jamis&rider=relaxed&stiffness=steel")
+    else:
+        ask = _page_request(app, what)
+    first = ask(client).get_json()
+    assert first
     held, release = threading.Event(), threading.Event()
 
     def busy():
@@ -127,7 +142,7 @@ def test_a_cached_answer_is_served_while_the_engine_is_busy(app, client):
     try:
         assert held.wait(60)
         again = {}
-        reader = threading.Thread(target=lambda: again.update(client.get(query).get_json()))
+        reader = threading.Thread(target=lambda: again.update(ask(client).get_json()))
         reader.start()
         reader.join(30)
         answered = not reader.is_alive()

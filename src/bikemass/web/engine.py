@@ -53,7 +53,7 @@ from ..models.plausibility import check_parameter_file, warn_parameters
 from ..analysis.results import stability
 from ..bicycle.chart import CHECKED_KEYS
 from ..bicycle.sizes import select_size, size_names
-from .state import CHART_ANGLES
+from .state import CHART_ANGLES, CHART_PREFIX
 from ..analysis.handling.survey import handling
 import copy
 import yaml
@@ -332,7 +332,13 @@ class Engine:
         with self._reaching(bike):
             if not chart:
                 return load_bicycle(self.source(bike), size=size)
-            return load_bicycle(edited_chart(self.source(bike), dict(chart), size))
+            try:
+                return load_bicycle(edited_chart(self.source(bike), dict(chart), size))
+            except InputError as exc:
+                if str(exc.source) == "<mapping>" and str(exc.key).startswith(CHART_PREFIX):
+                    # a chart value typed over: named as the query names it (URL: chart.stack)
+                    raise InputError(SOURCE, exc.key, exc.expected) from None
+                raise
 
     def _rider(self, key):
         """The rider of a :attr:`PageState.rider_key` as loaded (a body rider: its pose mapping,

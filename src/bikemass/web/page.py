@@ -317,11 +317,13 @@ def _state(bike, size, rider, body, stiffness, combine, chart_texts, param_texts
 
 
 def _results(engine, state):
-    """Everything the page shows for ``state`` (computed inside :meth:`Engine.answer`)."""
+    """Everything the page shows for ``state``, the eigenvalue figure drawn (an SVG data URL), computed
+    inside :meth:`Engine.answer` and kept there."""
     evaluation = engine.evaluate(state)
     base = engine.base_parameters(state.bicycle_key, state.rider_key, state.combine).to_dict()
     bicycle = engine.bicycle(state.bicycle_key)
-    return evaluation, base, derived_chart(bicycle), engine.is_chart(state.bike)
+    figure = _svg_uri(_eigenvalue_figure(evaluation.stability, state))
+    return evaluation, base, derived_chart(bicycle), engine.is_chart(state.bike), figure
 
 
 STALE_NOTE = "The results below are those of the last good configuration, not of the values above."
@@ -371,12 +373,12 @@ def _callbacks(app, engine):
                   Input("bike", "value"), State("size", "value"), State("stiffness", "value"))
     def bike_changed(bike, size, stiffness):
         try:
-            sizes = list(engine.sizes(bike))
+            sizes = list(engine.answer(_sizes, engine, PageState(bike=bike))[0])
         except InputError:
             sizes = []
         size = size if size in sizes else (sizes[0] if sizes else None)
         try:
-            materials = engine.materials(bike, size or "")
+            materials = list(engine.answer(_materials, engine, PageState(bike=bike, size=size or ""))[0])
         except InputError:
             materials = [stiffness]
         materials += [stiffness] if stiffness not in materials else []
@@ -409,7 +411,7 @@ def _callbacks(app, engine):
                 # a bad link: the controls show the default page, which the link did not ask for; its
                 # error and its address stay until the user changes a control
                 return unchanged + (no_update,) * 3
-            (evaluation, base, chart, editable), lines = engine.answer(_results, engine, state)
+            (evaluation, base, chart, editable, figure), lines = engine.answer(_results, engine, state)
         except InputError as exc:         # the last good results stay (docs/web.md), marked stale
             return unchanged + (_field_error(exc), "results stale", no_update)
         result, p, S = evaluation.stability, evaluation.parameters, evaluation.stiffness
@@ -421,7 +423,7 @@ def _callbacks(app, engine):
         message = no_update if ctx.triggered_id is None and not address_error else ""
         return (_speed_text(result.weave_speeds, "weave"), _speed_text(result.capsize_speeds, "capsize"),
                 _range_text(result.ranges["strict"]["exact"]), f"{p.mB + p.mH + p.mR + p.mF:.2f} kg",
-                _svg_uri(_eigenvalue_figure(result, state)), matrix, _bodies_table(p), _geometry_table(chart),
+                figure, matrix, _bodies_table(p), _geometry_table(chart),
                 links, "?" + query, [f"{base[n]:.6g}" for n in NAMES], shown,
                 {} if editable else {"display": "none"}, [html.Li(f"warning: {line}") for line in lines], message,
                 "results", None)
@@ -475,6 +477,16 @@ def _callbacks(app, engine):
     @app.callback(Output("body-controls", "style"), Input("rider", "value"))
     def body_controls(rider):
         return {} if rider == BODY_RIDER else {"display": "none"}
+
+
+def _sizes(engine, state):
+    """The size names of ``state``'s bicycle (cached by :meth:`~.engine.Engine.answer`)."""
+    return tuple(engine.sizes(state.bike))
+
+
+def _materials(engine, state):
+    """The stiffness choices of ``state``'s bicycle and size (cached by :meth:`~.engine.Engine.answer`)."""
+    return tuple(engine.materials(state.bike, state.size))
 
 
 def _side_view_uri(engine, state):
