@@ -318,7 +318,8 @@ def _serve(*argv):
 
 
 @pytest.mark.parametrize("argv, key", [(["--host", "256.1.1.1"], "--host"), (["--host", "1.2.3.4.5"], "--host"),
-                                       (["--host", "nonesuch.invalid"], "--host"), (["--port", "70000"], "--port")])
+                                       (["--host", "nonesuch.invalid"], "--host"), (["--port", "70000"], "--port"),
+                                       (["--host", "192.0.2.1"], "--host")])      # TEST-NET-1: not this machine's
 def test_a_bad_address_is_one_line_exit_2(argv, key):
     proc = _serve(*argv)
     out, err = proc.communicate(timeout=120)
