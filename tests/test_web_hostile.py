@@ -270,3 +270,13 @@ def test_an_upload_through_the_page_names_the_file_as_uploaded(app, client):
 def test_states_name_no_paths():
     with pytest.raises(InputError, match="stiffness"):
         PageState.from_query({"stiffness": "/etc/passwd"})
+
+
+def test_figures_name_an_upload_by_its_file_not_its_secret_name(app):
+    from bikemass.web.page import _bike_shown, _eigenvalue_figure
+    name = app.engine.add_upload("my bike.yaml", (frames_dir() / "benchmark.yaml").read_bytes())
+    state = PageState(bike=name, rider="none")
+    assert _bike_shown(app.engine, state) == "my bike.yaml"
+    figure = _eigenvalue_figure(app.engine.evaluate(state).stability, state, _bike_shown(app.engine, state))
+    titles = [figure._suptitle.get_text() if figure._suptitle else ""] + [a.get_title() for a in figure.axes]
+    assert any(t.startswith("my bike.yaml, no rider") for t in titles) and not any("upload-" in t for t in titles)

@@ -23,7 +23,7 @@ from ..plots.stability import plot_eigenvalues
 from ..rider import shipped_poses
 from ..scenario.scenario import model_signals
 from .api import DOWNLOADS, register_routes
-from .engine import UPLOAD_LIMIT, Engine, HANDLING_SPEEDS
+from .engine import UPLOAD_LIMIT, UPLOAD_PREFIX, Engine, HANDLING_SPEEDS
 from .state import BODY_RIDER, CHART_ANGLES, CHART_KEYS, HANDS, MODEL_CHOICES, SEXES, SOURCE, PageState
 from ..analysis.handling.frequency import frequency_response
 from ..analysis.handling.figures import plot_bode, plot_handling
@@ -322,7 +322,7 @@ def _results(engine, state):
     evaluation = engine.evaluate(state)
     base = engine.base_parameters(state.bicycle_key, state.rider_key, state.combine).to_dict()
     bicycle = engine.bicycle(state.bicycle_key)
-    figure = _svg_uri(_eigenvalue_figure(evaluation.stability, state))
+    figure = _svg_uri(_eigenvalue_figure(evaluation.stability, state, _bike_shown(engine, state)))
     return evaluation, base, derived_chart(bicycle), engine.is_chart(state.bike), figure
 
 
@@ -497,14 +497,15 @@ def _side_view_uri(engine, state):
 
 def _bode_uri(engine, state, speed, inp, out):
     """The Bode figure of ``state`` at ``speed`` (m/s) from ``inp`` to ``out`` (an SVG data URL)."""
-    return _svg_uri(_bode_figure(frequency_response(engine.model(state), speed, inp, out), state))
+    response = frequency_response(engine.model(state), speed, inp, out)
+    return _svg_uri(_bode_figure(response, _bike_shown(engine, state)))
 
 
 def _handling_uri(engine, state):
     """The HQM figure of ``state`` (an SVG data URL) and the summary line."""
     result = engine.handling(state)
     stable = engine.evaluate(state).stability.ranges["strict"]["exact"]
-    return _svg_uri(_handling_figure(result, stable, state)), _handling_summary(result)
+    return _svg_uri(_handling_figure(result, stable, state, _bike_shown(engine, state))), _handling_summary(result)
 
 
 def _placeholder(key, value):
@@ -514,19 +515,25 @@ def _placeholder(key, value):
     return f"{value:.2f}" if key in CHART_ANGLES else f"{1000 * value:.1f}"
 
 
-def _eigenvalue_figure(result, state):
+def _bike_shown(engine, state):
+    """The bicycle as a figure title names it: a shipped name, or an upload by the file name it was
+    uploaded as (its ``upload-<secret>`` name is a key, not a title)."""
+    return engine.upload_label(state.bike) if state.bike.startswith(UPLOAD_PREFIX) else state.bike
+
+
+def _eigenvalue_figure(result, state, bike):
     rider = (f"a {state.sex} rider of {state.height:g} m and {state.mass:g} kg" if state.rider == BODY_RIDER
              else "no rider" if state.rider == "none" else f"rider {state.rider}")
     model = "" if state.model == BASE else f", model {state.model}"
-    return plot_eigenvalues(result, title=f"{state.bike}, {rider}, stiffness {state.stiffness}{model}")
+    return plot_eigenvalues(result, title=f"{bike}, {rider}, stiffness {state.stiffness}{model}")
 
 
-def _bode_figure(fr, state):
-    return plot_bode(fr, f"{state.bike}: {fr.output} / {fr.input} at {fr.speed:g} m/s", size=(6.4, 4.6))
+def _bode_figure(fr, bike):
+    return plot_bode(fr, f"{bike}: {fr.output} / {fr.input} at {fr.speed:g} m/s", size=(6.4, 4.6))
 
 
-def _handling_figure(result, stable, state):
-    return plot_handling(result, f"{state.bike}, rider {state.rider}: handling quality metric", size=(8.0, 3.4),
+def _handling_figure(result, stable, state, bike):
+    return plot_handling(result, f"{bike}, rider {state.rider}: handling quality metric", size=(8.0, 3.4),
                          stable_speeds=stable)
 
 
