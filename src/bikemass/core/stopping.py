@@ -8,8 +8,10 @@ BaseException``); so that a stop request is not lost there, the signal is sent a
 every :data:`RETRY` seconds until the exception reaches the command line.
 
 The handler runs in the main thread between any two bytecodes, so also while the main thread
-is inside the handler itself (a second signal close behind the first) or inside :meth:`cancel`:
-it never waits for a lock (a non-reentrant lock taken twice by one thread never comes free).
+is inside the handler itself (a second signal close behind the first): it never waits for a lock
+(a non-reentrant lock taken twice by one thread never comes free), and a signal that arrives
+while a stop is already on its way out (less than :data:`RETRY` seconds after it) raises nothing
+more, so the first one's clean-up and its one line are not cut short.
 """
 
 import contextlib
@@ -32,15 +34,20 @@ class _Handler:
 
     def __call__(self, signum, frame):
         # never blocks: if the lock is held, this thread holds it (a signal arrived inside this
-        # handler or cancel) or the timer thread does (it is about to send the signal again)
-        if self.lock.acquire(blocking=False):
-            try:
-                if self.timer is None:
-                    self.timer = threading.Timer(RETRY, self._repeat, (signum,))
-                    self.timer.daemon = True
-                    self.timer.start()
-            finally:
-                self.lock.release()
+        # handler, which is raising a stop already) or the timer thread does (it is about to send
+        # the signal again); either way a stop is on its way, so this signal adds nothing
+        if not self.lock.acquire(blocking=False):
+            return
+        try:
+            if self.timer is not None:
+                # a stop raised less than RETRY s ago is still on its way out (raising again would
+                # interrupt its clean-up); if something swallowed it, the timer sends it again
+                return
+            self.timer = threading.Timer(RETRY, self._repeat, (signum,))
+            self.timer.daemon = True
+            self.timer.start()
+        finally:
+            self.lock.release()
         raise KeyboardInterrupt() if signum == signal.SIGINT else Terminated()
 
     def _repeat(self, signum):
