@@ -35,19 +35,15 @@ def _missing():
 
 @pytest.fixture(scope="module")
 def server():
-    from werkzeug.serving import WSGIRequestHandler, make_server
-
     from bikemass.web import create_app
+    from bikemass.web.serving import make_server
 
-    class Quiet(WSGIRequestHandler):
-        def log_request(self, *args):
-            pass
-    httpd = make_server("127.0.0.1", 0, create_app().server, threaded=True, request_handler=Quiet)
+    httpd = make_server(create_app(), "127.0.0.1", 0, quiet=True)
     httpd.daemon_threads = False      # server_close() then waits for requests still being answered,
     httpd.block_on_close = True       # so no thread is inside numpy/trimesh when the interpreter exits
     thread = threading.Thread(target=httpd.serve_forever)
     thread.start()
-    yield f"http://127.0.0.1:{httpd.server_port}"
+    yield f"http://127.0.0.1:{httpd.port}"
     httpd.shutdown()
     httpd.server_close()
     thread.join()
@@ -68,6 +64,7 @@ def browser():
     for flag in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
                  "--window-size=1400,1000"):
         options.add_argument(flag)
+    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
     driver = webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
     yield driver
     driver.quit()
@@ -137,3 +134,76 @@ def test_a_bad_url_shows_the_one_line_error(server, browser):
     WebDriverWait(browser, 60).until(lambda d: d.find_element(By.ID, "error").text.strip())
     message = browser.find_element(By.ID, "error").text
     assert "stiffness" in message and "steel" in message
+
+
+def _settled(browser, timeout=120):
+    """Wait until no Dash callback is loading (every figure and number the address asked for is in)."""
+    from selenium.webdriver.support.ui import WebDriverWait
+    WebDriverWait(browser, timeout, poll_frequency=0.2).until(
+        lambda d: d.execute_script("return document.querySelectorAll('[data-dash-is-loading=\"true\"]').length === 0"
+                                   " && !!document.getElementById('side-view')"
+                                   " && !!document.getElementById('side-view').getAttribute('src')"),
+        message=f"the page did not settle within {timeout} s")
+
+
+def _policy_violations(browser):
+    """Console lines about the content security policy (the page must work under it)."""
+    try:
+        return [e["message"] for e in browser.get_log("browser") if "Content Security Policy" in e["message"]]
+    except Exception:                     # a driver without the log: nothing to check there
+        return []
+
+
+def test_a_link_with_a_model_joined_by_plus_opens_that_model(server, browser):
+    """docs/web.md writes ``model=rider-lean+tyre``; in an address '+' arrives as a space.  The page
+    must show that model's speeds (the command line's, to 1e-3 m/s as printed), keep the model in
+    its address and show no error."""
+    from selenium.webdriver.common.by import By
+
+    browser.get(f"{server}/?bike=jamis&rider=relaxed&stiffness=infinite&model=rider-lean+tyre")
+    shown = _number_in(browser, "weave-speed")
+    _settled(browser)
+    cli = _cli_weave("jamis", "--rider", "relaxed", "--model", "rider-lean+tyre")
+    whipple = _cli_weave("jamis", "--rider", "relaxed")
+    assert shown == pytest.approx(cli, abs=1e-3) and abs(cli - whipple) > 0.05
+    assert browser.find_element(By.ID, "error").text.strip() == ""
+    assert "model=rider-lean%2Btyre" in browser.current_url or "model=rider-lean+tyre" in browser.current_url
+    assert float(browser.find_element(By.ID, "weave-speed").text.split()[0]) == pytest.approx(cli, abs=1e-3)
+    assert not _policy_violations(browser)
+
+
+def test_a_bad_link_keeps_its_error_and_its_address(server, browser):
+    """A link the page cannot open: its error stays once every callback has run, the address is not
+    rewritten to another configuration, and the results are marked as not being the link's."""
+    from selenium.webdriver.common.by import By
+
+    link = f"{server}/?bike=jamis&rider=relaxed&stiffness=infinite&model=rider-lean+bogus"
+    browser.get(link)
+    _settled(browser)
+    message = browser.find_element(By.ID, "error").text
+    assert "model" in message and "bogus" not in browser.find_element(By.ID, "weave-speed").text
+    assert "bogus" in browser.current_url
+    assert "stale" in browser.find_element(By.ID, "results").get_attribute("class")
+    assert browser.find_element(By.ID, "stale-note").is_displayed()
+
+
+def test_results_kept_after_an_error_are_marked_stale(server, browser):
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.common.keys import Keys
+    from selenium.webdriver.support.ui import WebDriverWait
+
+    browser.get(f"{server}/?bike=benchmark&rider=none&stiffness=infinite")
+    shown = _number_in(browser, "weave-speed")
+    assert not browser.find_element(By.ID, "stale-note").is_displayed()
+    mass = browser.find_element(By.XPATH, """//input[@id='{"key":"mB","type":"param"}']""")
+    mass.click()
+    mass.send_keys("-5", Keys.ENTER)
+    WebDriverWait(browser, 60).until(lambda d: d.find_element(By.ID, "error").text.strip())
+    assert browser.find_element(By.ID, "error").text.startswith("Benchmark parameter mB: ")
+    assert "stale" in browser.find_element(By.ID, "results").get_attribute("class")
+    assert browser.find_element(By.ID, "stale-note").is_displayed()
+    assert float(browser.find_element(By.ID, "weave-speed").text.split()[0]) == shown      # kept, marked
+    mass.send_keys(Keys.BACKSPACE, Keys.BACKSPACE, "80", Keys.ENTER)      # the published 85 kg: no change
+    _number_in(browser, "weave-speed", differs_from=shown)
+    WebDriverWait(browser, 60).until(lambda d: "stale" not in d.find_element(By.ID, "results").get_attribute("class"))
+    assert not browser.find_element(By.ID, "stale-note").is_displayed()

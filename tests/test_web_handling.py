@@ -14,6 +14,7 @@ from bikemass.cli.main import main  # noqa: E402
 from bikemass.web import create_app  # noqa: E402
 from bikemass.web.engine import HANDLING_SPEEDS  # noqa: E402
 from bikemass.web.page import _layout  # noqa: E402
+from dash import no_update  # noqa: E402
 
 
 @pytest.fixture(scope="module")
@@ -63,10 +64,12 @@ def test_the_panel_draws_the_bode_plot_and_the_hqm_of_the_configuration(app):
     for ident in ("bode-figure", "bode-speed", "bode-input", "bode-output", "hqm-figure", "hqm-summary"):
         assert ident in layout
     bode = _callback(app, "bode-figure.src")
-    src, error = bode(*CONFIGURATION, "5", "steer-torque", "roll-angle")
-    assert src.startswith("data:image/svg+xml;base64,") and error == ""
-    src, error = bode(*CONFIGURATION, "fast", "steer-torque", "roll-angle")
-    assert src == "" and "bode speed" in error
+    src, error, stale = bode(*CONFIGURATION, "5", "steer-torque", "roll-angle")
+    assert src.startswith("data:image/svg+xml;base64,") and error == "" and stale == ""
+    # a bad speed: the last good figure stays (no_update), dimmed, and the error names the field
+    for speed, expected in (("fast", "a number"), ("-5", "a forward speed in m/s, a finite number in 0..1000")):
+        src, error, stale = bode(*CONFIGURATION, speed, "steer-torque", "roll-angle")
+        assert src is no_update and error == f"Bode plot speed (m/s): {expected}" and stale == "stale"
     hqm = _callback(app, "hqm-figure.src")
-    src, summary = hqm(*CONFIGURATION)
+    src, summary, stale = hqm(*CONFIGURATION)
     assert src.startswith("data:image/svg+xml;base64,") and "5 m/s: HQM peak" in summary

@@ -229,14 +229,34 @@ def test_a_50_mb_body_is_refused_before_it_is_read(client):
 
 
 def test_a_bad_typed_value_keeps_the_last_good_results(app, client):
-    """docs/web.md: an error in a typed value is shown in one line; the results stay (no output but
-    the error is sent, so the page keeps what it shows)."""
+    """docs/web.md: an error in a typed value is shown in one line naming the field; the results
+    stay (no output but the error and the results' class is sent, so the page keeps what it shows),
+    marked stale."""
     reply = _post(client, _body(app, "weave-speed", **PAGE, param_c="abc")).get_json()["response"]
-    assert list(reply) == ["error"] and "c: a number" in reply["error"]["children"]
+    assert sorted(reply) == ["error", "results"] and reply["results"]["className"] == "results stale"
+    assert reply["error"]["children"] == "Benchmark parameter c: a number"
     reply = _post(client, _body(app, "weave-speed", **PAGE, param_mB="-5")).get_json()["response"]
-    assert list(reply) == ["error"] and "mB: a positive number" in reply["error"]["children"]
+    assert sorted(reply) == ["error", "results"] and reply["results"]["className"] == "results stale"
+    assert reply["error"]["children"] == "Benchmark parameter mB: a positive number, got -5"
     side = _post(client, _body(app, "side-view", **{**PAGE, "bike": "nonesuch"}))
     assert side.status_code == 204 or "side-view" not in side.get_json().get("response", {})
+
+
+def test_a_typed_chart_value_is_named_by_its_field_not_an_internal_source(app, client):
+    """Issue 35: ``<mapping>: chart.head_tube_angle`` named the edited chart, not where the value was
+    typed: the API names the query key, the page the field."""
+    reply = client.get("/api/stability?bike=bmc-roadmachine&size=56&rider=none&chart.head_tube_angle=150")
+    assert reply.status_code == 400
+    assert reply.get_json()["error"].startswith("URL: chart.head_tube_angle: an angle from the horizontal")
+    body = _body(app, "weave-speed", **{**PAGE, "bike": "bmc-roadmachine", "size": "56"})
+    for group in body["inputs"]:
+        for item in group if isinstance(group, list) else []:
+            if item["id"] == {"key": "head_tube_angle", "type": "chart"}:
+                item["value"] = "150"
+    reply = _post(client, body).get_json()["response"]
+    message = reply["error"]["children"]
+    assert message.startswith("Geometry chart, head tube angle: an angle from the horizontal")
+    assert "<mapping>" not in message and "URL" not in message
 
 
 def test_an_upload_through_the_page_names_the_file_as_uploaded(app, client):
@@ -250,3 +270,13 @@ def test_an_upload_through_the_page_names_the_file_as_uploaded(app, client):
 def test_states_name_no_paths():
     with pytest.raises(InputError, match="stiffness"):
         PageState.from_query({"stiffness": "/etc/passwd"})
+
+
+def test_figures_name_an_upload_by_its_file_not_its_secret_name(app):
+    from bikemass.web.page import _bike_shown, _eigenvalue_figure
+    name = app.engine.add_upload("my bike.yaml", (frames_dir() / "benchmark.yaml").read_bytes())
+    state = PageState(bike=name, rider="none")
+    assert _bike_shown(app.engine, state) == "my bike.yaml"
+    figure = _eigenvalue_figure(app.engine.evaluate(state).stability, state, _bike_shown(app.engine, state))
+    titles = [figure._suptitle.get_text() if figure._suptitle else ""] + [a.get_title() for a in figure.axes]
+    assert any(t.startswith("my bike.yaml, no rider") for t in titles) and not any("upload-" in t for t in titles)

@@ -6,6 +6,12 @@ cleans up (worker pools terminated, temporary files and folders removed).  Some
 libraries swallow any exception raised while they import or call out (``except
 BaseException``); so that a stop request is not lost there, the signal is sent again
 every :data:`RETRY` seconds until the exception reaches the command line.
+
+The handler runs in the main thread between any two bytecodes, so also while the main thread
+is inside the handler itself (a second signal close behind the first): it never waits for a lock
+(a non-reentrant lock taken twice by one thread never comes free), and a signal that arrives
+while a stop is already on its way out (less than :data:`RETRY` seconds after it) raises nothing
+more, so the first one's clean-up and its one line are not cut short.
 """
 
 import contextlib
@@ -27,11 +33,21 @@ class _Handler:
         self.lock = threading.Lock()
 
     def __call__(self, signum, frame):
-        with self.lock:
-            if self.timer is None:
-                self.timer = threading.Timer(RETRY, self._repeat, (signum,))
-                self.timer.daemon = True
-                self.timer.start()
+        # never blocks: if the lock is held, this thread holds it (a signal arrived inside this
+        # handler, which is raising a stop already) or the timer thread does (it is about to send
+        # the signal again); either way a stop is on its way, so this signal adds nothing
+        if not self.lock.acquire(blocking=False):
+            return
+        try:
+            if self.timer is not None:
+                # a stop raised less than RETRY s ago is still on its way out (raising again would
+                # interrupt its clean-up); if something swallowed it, the timer sends it again
+                return
+            self.timer = threading.Timer(RETRY, self._repeat, (signum,))
+            self.timer.daemon = True
+            self.timer.start()
+        finally:
+            self.lock.release()
         raise KeyboardInterrupt() if signum == signal.SIGINT else Terminated()
 
     def _repeat(self, signum):
@@ -44,7 +60,8 @@ class _Handler:
             timer, self.timer = self.timer, None
         if timer is not None:
             timer.cancel()
-            timer.join()
+            with contextlib.suppress(RuntimeError):    # a start cut short by a second signal
+                timer.join()
 
 
 @contextlib.contextmanager

@@ -6,11 +6,12 @@
 3,4,5,6,7,8,10 --format json`` (the rider in the loop), each with the ``warnings`` the command
 line gives (a list, empty when there are none); ``/download/<file>?<state>`` serves the parameter set (YAML,
 JSON, BicycleParameters), the eigenvalues (CSV) and the bicycle and pose YAML.
-A bad query answers 400 with ``{"error": "<one line>"}``.
+A bad query answers 400 with ``{"error": "<one line>"}``.  A JSON answer is kept as its text
+(:meth:`~.engine.Engine.answer`), so asking again costs a lookup, not the engine's lock.
 """
 
 import yaml
-from flask import Response, jsonify, request
+from flask import Response, current_app, jsonify, request
 
 from ..analysis.eigen_table import eig_table
 from ..core.errors import InputError
@@ -86,26 +87,30 @@ def register_routes(server, engine):
         except InputError as exc:
             return jsonify({"error": str(exc)}), 400
 
-    def with_warnings(document, compute, state):
-        value, lines = engine.answer(compute, state)
-        return jsonify({**document(value), "warnings": lines})
+    def with_warnings(route, document, compute, state):
+        dumps = current_app.json.dumps
+        text = engine.answer(compute, state, key=(route, state),
+                             render=lambda value, lines: dumps({**document(value), "warnings": lines}))
+        return Response(text, mimetype="application/json")
 
     @server.route("/api/stability")
     def api_stability():
-        return answer(lambda s: with_warnings(lambda e: stability_document(e), engine.evaluate, s))
+        return answer(lambda s: with_warnings("stability", stability_document, engine.evaluate, s))
 
     @server.route("/api/params")
     def api_params():
-        return answer(lambda s: with_warnings(parameters_document, engine.parameters, s))
+        return answer(lambda s: with_warnings("params", parameters_document, engine.parameters, s))
 
     @server.route("/api/handling")
     def api_handling():
-        return answer(lambda s: with_warnings(handling_document, engine.handling, s))
+        return answer(lambda s: with_warnings("handling", handling_document, engine.handling, s))
 
     @server.route("/download/<filename>")
     def api_download(filename):
         def send(state):
-            data, mime = engine.answer(lambda st: download(engine, filename, st), state)[0]
+            if filename not in DOWNLOADS:
+                raise InputError("URL", "download", f"one of {', '.join(DOWNLOADS)}")
+            data, mime = engine.answer(download, engine, filename, state, key=("download", filename, state))[0]
             name = f"{state.bike}-{filename}" if filename != "Benchmark.txt" else f"{state.bike}Benchmark.txt"
             return Response(data, mimetype=mime,
                             headers={"Content-Disposition": f'attachment; filename="{name}"'})

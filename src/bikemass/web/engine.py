@@ -4,24 +4,29 @@ Loading a bicycle or a rider builds meshes and costs tenths of a second; the
 beam model of a frame costs as much again.  They change only when the bicycle,
 rider or material changes, so they are cached; a typed-over benchmark parameter
 then costs one stability analysis (milliseconds).  Uploaded files live in the
-engine's own temporary folder, each in a folder named by its content's digest.
+engine's own temporary folder, each in a folder of its own, named by a random secret: an
+upload's name (``upload-<secret>``) is known only to whoever uploaded it (and whoever they
+give its link), and cannot be guessed from its content.
 
-Every computation runs :func:`bikemass.core.paths.confined` to the shipped data and the
-uploads (an upload cannot reach any other file), one at a time (the warnings module is
-process-wide), and records the :class:`~bikemass.core.errors.BikemassWarning` s it issues:
-a cached result warns again whenever it is used, so every answer carries its warnings
-(:meth:`Engine.answer`).  Errors about an upload name the file as uploaded, never the
-server's folder.
+Every computation runs :func:`bikemass.core.paths.confined` to the shipped data (and, while an
+upload is read, to that upload's own folder: an upload can reach no other file, another upload
+included), one at a time (the warnings module is process-wide), and records the
+:class:`~bikemass.core.errors.BikemassWarning` s it issues: a cached result warns again whenever
+it is used, so every answer carries its warnings (:meth:`Engine.answer`).  A finished answer is
+kept with its warnings and served again without the lock, so a cached answer never waits for
+another client's computation.  Errors about an upload name the file as uploaded, never the
+server's folder; errors about a shipped file name it from the data folder, never the install path.
 """
 
 import contextlib
 import functools
-import hashlib
 import os
 import re
+import secrets
 import tempfile
 import threading
 import warnings
+from collections import OrderedDict
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -29,6 +34,7 @@ from pathlib import Path
 from ..core.errors import BikemassWarning, InputError, one_line
 from ..models.parameters import BenchmarkParameters
 from ..core.paths import confined
+from ..core import data_folder
 from .state import SOURCE, PageState
 from ..bicycle.loader import bicycle_sizes
 from ..bicycle.loader import _is_parameter_text
@@ -47,7 +53,7 @@ from ..models.plausibility import check_parameter_file, warn_parameters
 from ..analysis.results import stability
 from ..bicycle.chart import CHECKED_KEYS
 from ..bicycle.sizes import select_size, size_names
-from .state import CHART_ANGLES
+from .state import CHART_ANGLES, CHART_PREFIX
 from ..analysis.handling.survey import handling
 import copy
 import yaml
@@ -62,6 +68,8 @@ MAX_UPLOADS = 16
 """Uploads kept on the server (the oldest is deleted when another arrives)."""
 MAX_UPLOAD_NAME = 100
 """Longest uploaded file name kept (characters); the file is stored under a name of its own."""
+MAX_ANSWERS = 256
+"""Finished answers kept for lock-free reuse (:meth:`Engine.answer`)."""
 HANDLING_SPEEDS = (3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 10.0)
 """Speeds (m/s) of the page's rider in the loop (a tuning costs about 0.2 s per speed)."""
 RIGID_CHOICE = "infinite"
@@ -96,6 +104,45 @@ def _recorded(function, maxsize):
     return cached
 
 
+class Answers:
+    """A bounded map of finished answers (least recently used dropped first), read and written
+    under a lock of its own that is held only for the lookup, never for a computation."""
+
+    def __init__(self, size=MAX_ANSWERS):
+        self._items, self._size, self._lock = OrderedDict(), size, threading.Lock()
+
+    def get(self, key):
+        """The answer kept for ``key``, or None."""
+        with self._lock:
+            value = self._items.get(key)
+            if value is not None:
+                self._items.move_to_end(key)
+            return value
+
+    def put(self, key, value):
+        """Keep ``value`` (not None) for ``key``."""
+        with self._lock:
+            self._items[key] = value
+            self._items.move_to_end(key)
+            while len(self._items) > self._size:
+                self._items.popitem(last=False)
+
+    def drop(self, test):
+        """Forget every answer whose key passes ``test``."""
+        with self._lock:
+            for key in [k for k in self._items if test(k)]:
+                del self._items[key]
+
+
+def _mentions(key, bike):
+    """Whether the answer key ``key`` (tuples of states, names, ...) involves the bicycle ``bike``."""
+    if isinstance(key, PageState):
+        return key.bike == bike
+    if isinstance(key, tuple):
+        return any(_mentions(k, bike) for k in key)
+    return key == bike
+
+
 class Engine:
     """Cached bicycles, riders, parameters and stiffnesses for the page and its JSON API."""
 
@@ -103,6 +150,7 @@ class Engine:
         self._folder = tempfile.TemporaryDirectory(prefix="bikemass-web-")
         self._uploads, self._labels = {}, {}
         self._lock = threading.RLock()
+        self._answers = Answers()
         self.bicycle = self._guarded(_recorded(self._bicycle, 32))
         self.rider = self._guarded(_recorded(self._rider, 32))
         self.seated = self._guarded(_recorded(self._seated, 64))
@@ -113,39 +161,71 @@ class Engine:
 
     # -- the one way in ---------------------------------------------------------
     def _guarded(self, function):
-        """``function`` run one at a time, confined to the shipped data and the uploads, with its
-        errors naming an upload as uploaded."""
+        """``function`` run one at a time, confined to the shipped data (an upload's own folder is
+        added only while that upload is read, :meth:`_reaching`), with its errors naming an upload
+        as uploaded and a shipped file from the data folder."""
         @functools.wraps(function)
         def run(*args, **kwargs):
-            with self._lock, confined(self._folder.name):
+            with self._lock, confined():
                 try:
                     return function(*args, **kwargs)
                 except InputError as exc:
                     raise self._as_uploaded(exc) from None
         return run
 
-    def answer(self, compute, *args):
+    def _reaching(self, bike):
+        """Confinement to the shipped data and the upload ``bike``'s own folder (a shipped bicycle:
+        the shipped data only); InputError for an upload this server does not have."""
+        if not bike.startswith(UPLOAD_PREFIX):
+            return contextlib.nullcontext()
+        return confined(Path(self.source(bike)).parent)
+
+    def answer(self, compute, *args, key=None, render=None):
         """``(compute(*args), warnings)``: the value and the distinct messages of the
-        BikemassWarnings its computation issued (cached parts warn again), in order."""
+        BikemassWarnings its computation issued (cached parts warn again), in order; with
+        ``render``, ``render(value, warnings)`` instead.
+
+        The answer is kept under ``key`` (default ``(compute, args)``, hashable) and served again
+        without waiting for the engine's lock, so a cached answer never waits for another
+        client's computation; an upload the server no longer has is refused even then.
+        """
+        for arg in args:
+            if isinstance(arg, PageState):
+                self.source(arg.bike)                       # a forgotten upload answers no more
+        key = (compute, args, render) if key is None else key
+        found = self._answers.get(key)
+        if found is not None:
+            return found
         with self._lock:
+            found = self._answers.get(key)                  # computed while this one waited
+            if found is not None:
+                return found
             with warnings.catch_warnings(record=True) as caught:
                 warnings.simplefilter("always", BikemassWarning)
                 value = self._guarded(compute)(*args)
-        lines = (self._scrubbed(str(w.message)) for w in caught if issubclass(w.category, BikemassWarning))
-        return value, list(dict.fromkeys(lines))
+            lines = (self._scrubbed(str(w.message)) for w in caught if issubclass(w.category, BikemassWarning))
+            lines = list(dict.fromkeys(lines))
+            found = (value, lines) if render is None else render(value, lines)
+            self._answers.put(key, found)
+        return found
 
     def _scrubbed(self, text):
-        """``text`` with every uploaded file's stored path replaced by the name it was uploaded as."""
-        for name, path in self._uploads.items():
+        """``text`` with every uploaded file's stored path replaced by the name it was uploaded as,
+        and the shipped data's folder dropped (``frames/jamis.yaml``, never the install path)."""
+        for name, path in list(self._uploads.items()):
             for shown in {str(path), os.path.realpath(path)}:
                 text = text.replace(shown, self.upload_label(name))
         folder = re.escape(self._folder.name)
-        return re.sub(rf"{folder}[^\s:]*", "(upload)", text)
+        text = re.sub(rf"{folder}[^\s:]*", "(upload)", text)
+        root = data_folder.found_root()
+        for top in {str(root), os.path.realpath(root)} if root is not None else ():
+            text = text.replace(top.rstrip(os.sep) + os.sep, "")
+        return text
 
     def _as_uploaded(self, exc):
-        if self._folder.name not in str(exc) and os.path.realpath(self._folder.name) not in str(exc):
-            return exc
-        return InputError(self._scrubbed(exc.source), self._scrubbed(exc.key), self._scrubbed(exc.expected))
+        scrubbed = InputError(self._scrubbed(str(exc.source)), self._scrubbed(str(exc.key)),
+                              self._scrubbed(str(exc.expected)))
+        return exc if str(scrubbed) == str(exc) else scrubbed
 
     # -- inputs ---------------------------------------------------------------
     def add_upload(self, filename, content):
@@ -161,11 +241,11 @@ class Engine:
             raise InputError(shown, "(file)", f"a bicycle file ending in {', '.join(UPLOAD_SUFFIXES)}")
         if len(content) > UPLOAD_LIMIT:
             raise InputError(shown, "(file)", f"at most {UPLOAD_LIMIT // 1000} kB")
-        digest = hashlib.sha256(content).hexdigest()[:16]
-        name = UPLOAD_PREFIX + digest
+        secret = secrets.token_hex(16)        # the name is the key: unguessable, not the content's digest
+        name = UPLOAD_PREFIX + secret
         with self._lock:
-            path = Path(self._folder.name) / digest / f"upload{suffix}"
-            path.parent.mkdir(exist_ok=True)
+            path = Path(self._folder.name) / secret / f"upload{suffix}"
+            path.parent.mkdir()
             path.write_bytes(content)
             self._uploads[name] = path
             self._labels[name] = shown
@@ -175,15 +255,15 @@ class Engine:
             except InputError:
                 self._forget(name)
                 raise
-            self._uploads[name] = self._uploads.pop(name)        # the newest last
             while len(self._uploads) > MAX_UPLOADS:
                 self._forget(next(iter(self._uploads)))
         return name
 
     def _forget(self, name):
-        """Delete the upload ``name`` and its file."""
+        """Delete the upload ``name``, its file and the answers about it."""
         path = self._uploads.pop(name, None)
         self._labels.pop(name, None)
+        self._answers.drop(lambda key: _mentions(key, name))
         if path is not None:
             path.unlink(missing_ok=True)
             with contextlib.suppress(OSError):
@@ -205,15 +285,19 @@ class Engine:
 
     def sizes(self, bike):
         """The size names of ``bike``'s size run, ``()`` if it has none."""
-        return self._guarded(bicycle_sizes)(self.source(bike))
+        def sizes():
+            with self._reaching(bike):
+                return bicycle_sizes(self.source(bike))
+        return self._guarded(sizes)()
 
     def is_chart(self, bike):
         """True if ``bike`` is written as a geometry chart (so the page can edit its chart)."""
 
-        def chart(source):
-            path = resolve(source, frames_dir(), "bicycle")
-            return not _is_parameter_text(path) and load_yaml(path).has("chart")
-        return self._guarded(chart)(self.source(bike))
+        def chart():
+            with self._reaching(bike):
+                path = resolve(self.source(bike), frames_dir(), "bicycle")
+                return not _is_parameter_text(path) and load_yaml(path).has("chart")
+        return self._guarded(chart)()
 
     def materials(self, bike, size=""):
         """The stiffness choices for ``bike``: ``infinite``, the frame's own tube materials, then
@@ -232,9 +316,12 @@ class Engine:
 
         def text():
             if state.chart or self.sizes(state.bike):
-                return yaml.safe_dump(edited_chart(self.source(state.bike), dict(state.chart), state.size or None),
-                                      sort_keys=False)
-            return read_text(self.bicycle(state.bicycle_key).source)
+                with self._reaching(state.bike):
+                    mapping = edited_chart(self.source(state.bike), dict(state.chart), state.size or None)
+                return yaml.safe_dump(mapping, sort_keys=False)
+            source = self.bicycle(state.bicycle_key).source
+            with self._reaching(state.bike):
+                return read_text(source)
         return self._guarded(text)()
 
     def _bicycle(self, key):
@@ -242,9 +329,16 @@ class Engine:
 
         bike, size, chart = key
         size = size or None
-        if not chart:
-            return load_bicycle(self.source(bike), size=size)
-        return load_bicycle(edited_chart(self.source(bike), dict(chart), size))
+        with self._reaching(bike):
+            if not chart:
+                return load_bicycle(self.source(bike), size=size)
+            try:
+                return load_bicycle(edited_chart(self.source(bike), dict(chart), size))
+            except InputError as exc:
+                if str(exc.source) == "<mapping>" and str(exc.key).startswith(CHART_PREFIX):
+                    # a chart value typed over: named as the query names it (URL: chart.stack)
+                    raise InputError(SOURCE, exc.key, exc.expected) from None
+                raise
 
     def _rider(self, key):
         """The rider of a :attr:`PageState.rider_key` as loaded (a body rider: its pose mapping,
@@ -320,11 +414,9 @@ class Engine:
         return self.state_built(state).model
 
     def _handling(self, state):
-        """``bm.handling`` of ``state`` at :data:`HANDLING_SPEEDS` (cached per state): speeds where
-        the procedure finds no gains are ``nan`` (their warnings are dropped: the page shows the gap)."""
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", BikemassWarning)
-            return handling(self.model(state), HANDLING_SPEEDS)
+        """``bm.handling`` of ``state`` at :data:`HANDLING_SPEEDS` (cached per state), with the
+        warnings the command line gives (speeds where the procedure finds no gains are ``nan``)."""
+        return handling(self.model(state), HANDLING_SPEEDS)
 
     def evaluate(self, state: PageState, speeds=None):
         """:class:`Evaluation` of ``state`` over ``speeds`` (default grid)."""

@@ -9,9 +9,18 @@ refuses what is not JSON, is nested deeper than :data:`MAX_DEPTH` or holds ``NaN
 ``Infinity``, and checks the body against the callback it names: the outputs, inputs and
 state it declares, each value of the type its component gives (``400`` with
 ``{"error": "<one line>"}``).
+
+:func:`guard_hosts` refuses a request whose ``Host`` header names a server this one is not
+(``421``): a page on another site whose name an attacker points at ``127.0.0.1`` (DNS
+rebinding) reaches nothing.  :func:`secure_headers` adds the usual security headers to every
+answer (no MIME sniffing, no framing, a content security policy the page works with).
 """
 
+import base64
+import hashlib
+import ipaddress
 import json
+import re
 
 from flask import jsonify, request
 
@@ -153,3 +162,80 @@ def _check_value(name, value, value_checks):
 
 def _scalar(value):
     return value is None or isinstance(value, (str, int, float, bool))
+
+
+LOCAL_NAMES = ("localhost",)
+"""Host names every server answers to (besides IP addresses, which no rebinding can forge)."""
+
+
+def host_name(host):
+    """The name or address of a ``Host`` header (``name:port``, ``[v6]:port``), lower case,
+    without the port and a trailing dot."""
+    host = host.strip().lower()
+    if host.startswith("["):
+        return host[1:].split("]", 1)[0]
+    return host.rsplit(":", 1)[0].rstrip(".") if host.count(":") == 1 else host.rstrip(".")
+
+
+def allowed_host(host, names=()):
+    """Whether a request with ``Host: host`` is for this server: an IP address, ``localhost``, or
+    one of ``names`` (the names the server was started under)."""
+    name = host_name(host)
+    try:
+        ipaddress.ip_address(name)
+        return True
+    except ValueError:
+        return name in LOCAL_NAMES or name in {host_name(n) for n in names}
+
+
+def guard_hosts(server, names=()):
+    """Answer 421 ``{"error": ...}`` to a request whose ``Host`` is not :func:`allowed_host`.
+
+    Parameters
+    ----------
+    server : flask.Flask
+        The application's server (the check runs before any other).
+    names : sequence of str
+        Host names the server answers to besides IP addresses and ``localhost``.
+    """
+    names = tuple(names)
+
+    def check_host():
+        if not allowed_host(request.host, names):
+            shown = one_line(request.host, 100)
+            return jsonify({"error": f"Host: {shown}: an address of this server ({', '.join(LOCAL_NAMES + names)} "
+                                     "or an IP address)"}), 421
+        return None
+    server.before_request_funcs.setdefault(None, []).insert(0, check_host)
+
+
+SCRIPT = re.compile(r"<script(?![^>]*\bsrc=)[^>]*>(.*?)</script>", re.S)
+"""An inline script of a page (its text, for the policy's hash)."""
+POLICY = ("default-src 'self'; script-src 'self'{hashes}; style-src 'self' 'unsafe-inline'; img-src 'self' data:; "
+          "connect-src 'self'; font-src 'self'; object-src 'none'; base-uri 'self'; form-action 'self'; "
+          "frame-ancestors 'none'")
+"""The content security policy: the page's own scripts (inline ones by hash), styles inline (Dash's
+components set them), images as data URLs (the figures), no framing."""
+SERVER = "bikemass"
+"""What the ``Server`` header says (no framework nor Python version)."""
+
+
+def script_hashes(html):
+    """The CSP hash sources (``'sha256-...'``) of the inline scripts of ``html``."""
+    return ["'sha256-" + base64.b64encode(hashlib.sha256(text.encode()).digest()).decode() + "'"
+            for text in SCRIPT.findall(html)]
+
+
+def secure_headers(server):
+    """Add ``X-Content-Type-Options: nosniff``, ``X-Frame-Options: DENY``, ``Referrer-Policy``
+    and a ``Content-Security-Policy`` (:data:`POLICY`) to every answer of ``server``."""
+    @server.after_request
+    def headers(response):
+        hashes = ""
+        if response.mimetype == "text/html" and not response.direct_passthrough:
+            hashes = "".join(" " + h for h in script_hashes(response.get_data(as_text=True)))
+        response.headers["X-Content-Type-Options"] = "nosniff"
+        response.headers["X-Frame-Options"] = "DENY"
+        response.headers["Referrer-Policy"] = "same-origin"
+        response.headers["Content-Security-Policy"] = POLICY.format(hashes=hashes)
+        return response

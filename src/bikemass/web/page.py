@@ -9,6 +9,8 @@ import base64
 
 import dash
 import numpy as np
+from dash.exceptions import DependencyException
+from flask import jsonify
 from dash import ALL, Dash, Input, Output, State, ctx, dcc, html, no_update
 from ..bicycle.derived_chart import ANGLES, CHART_ORDER, derived_chart
 from ..core.errors import InputError
@@ -21,11 +23,11 @@ from ..plots.stability import plot_eigenvalues
 from ..rider import shipped_poses
 from ..scenario.scenario import model_signals
 from .api import DOWNLOADS, register_routes
-from .engine import UPLOAD_LIMIT, Engine, HANDLING_SPEEDS
+from .engine import UPLOAD_LIMIT, UPLOAD_PREFIX, Engine, HANDLING_SPEEDS
 from .state import BODY_RIDER, CHART_ANGLES, CHART_KEYS, HANDS, MODEL_CHOICES, SEXES, SOURCE, PageState
 from ..analysis.handling.frequency import frequency_response
 from ..analysis.handling.figures import plot_bode, plot_handling
-from .guard import guard_requests
+from .guard import guard_hosts, guard_requests, secure_headers
 
 STYLE = """
 body { font-family: system-ui, sans-serif; margin: 0; color: #222; background: #fafafa; }
@@ -44,6 +46,9 @@ header span { margin-left: 14px; opacity: 0.8; font-size: 14px; }
 .figure img { width: 100%; }
 .error { color: #b00020; font-weight: 600; margin: 8px 0; min-height: 1em; }
 .warnings { color: #8a5a00; margin: 4px 0; font-size: 13px; }
+.stale-note { display: none; color: #b00020; font-size: 13px; margin: 4px 0; }
+.stale .stale-note { display: block; }
+.stale .numbers, .stale .figure, img.stale { opacity: 0.45; }
 table.params { border-collapse: collapse; font-size: 12px; width: 100%; }
 table.params td { padding: 1px 4px; border-bottom: 1px solid #eee; }
 table.params input { width: 150px; font-size: 12px; padding: 2px 4px; }
@@ -98,12 +103,14 @@ VALUE_CHECKS = {
     "param.value": (_optional(_number_or_text), "a number or nothing"),
     "upload.contents": (_optional(_text(3_000_000)), "the file's content as a data URL, or null"),
     "upload.filename": (_optional(_text(255)), "a file name of at most 255 characters, or null"),
+    "address-error.data": (_optional(_text(2000)), "the address's error, or null"),
 }
 """What each control of the page may send (:func:`~.guard.guard_requests` refuses the rest)."""
 
 
-def create_app(engine=None):
-    """The Dash application (its Flask server has the JSON API and downloads)."""
+def create_app(engine=None, hosts=()):
+    """The Dash application (its Flask server has the JSON API and downloads); it answers requests
+    whose ``Host`` is an IP address, ``localhost`` or one of ``hosts`` (:func:`~.guard.guard_hosts`)."""
     engine = engine or Engine()
     app = Dash(__name__, title="bikemass", update_title=None, serve_locally=True, use_pages=True,
                pages_folder="", index_string=INDEX, suppress_callback_exceptions=True)
@@ -112,9 +119,17 @@ def create_app(engine=None):
     _callbacks(app, engine)
     register_routes(app.server, engine)
     guard_requests(app, VALUE_CHECKS)
+    guard_hosts(app.server, hosts)
+    secure_headers(app.server)
+    app.server.register_error_handler(DependencyException, _no_such_script)
     app.server.json.sort_keys = False
     app.engine = engine
     return app
+
+
+def _no_such_script(error):
+    """A script path Dash does not serve (``/_dash-component-suites/...%252f..``): 404, one line."""
+    return jsonify({"error": "not found: a script of this page"}), 404
 
 
 def _shipped():
@@ -167,8 +182,10 @@ def _layout(query):
         _editor("Benchmark parameters: type a value to override, empty = computed", "param", NAMES,
                 overrides, lambda k: DESCRIPTIONS[k].split("[")[-1].rstrip("]"), lambda k: k),
     ])
-    results = html.Div(className="results", children=[
+    results = html.Div(id="results", className="results stale" if error else "results", children=[
+        dcc.Store(id="address-error", data=error or None),
         html.Div(id="error", className="error", children=error),
+        html.Div(STALE_NOTE, id="stale-note", className="stale-note"),
         html.Ul(id="warnings", className="warnings"),
         dcc.Loading(type="dot", children=html.Div(className="numbers", children=[
             _number("weave speed", "weave-speed"), _number("capsize speed", "capsize-speed"),
@@ -300,11 +317,34 @@ def _state(bike, size, rider, body, stiffness, combine, chart_texts, param_texts
 
 
 def _results(engine, state):
-    """Everything the page shows for ``state`` (computed inside :meth:`Engine.answer`)."""
+    """Everything the page shows for ``state``, the eigenvalue figure drawn (an SVG data URL), computed
+    inside :meth:`Engine.answer` and kept there."""
     evaluation = engine.evaluate(state)
     base = engine.base_parameters(state.bicycle_key, state.rider_key, state.combine).to_dict()
     bicycle = engine.bicycle(state.bicycle_key)
-    return evaluation, base, derived_chart(bicycle), engine.is_chart(state.bike)
+    figure = _svg_uri(_eigenvalue_figure(evaluation.stability, state, _bike_shown(engine, state)))
+    return evaluation, base, derived_chart(bicycle), engine.is_chart(state.bike), figure
+
+
+STALE_NOTE = "The results below are those of the last good configuration, not of the values above."
+"""Shown (with the results dimmed) while an error stands."""
+FIELDS = {"bike": "Bicycle", "size": "Size", "rider": "Rider", "stiffness": "Rear-frame stiffness",
+          "combine": "Rider + rear frame", "model": "Model", "height": "Rider height (m)", "mass": "Rider mass (kg)",
+          "sex": "Rider sex", "hands": "Hands on the", "bode speed": "Bode plot speed (m/s)"}
+"""The page's name of each field a query key comes from."""
+
+
+def _field_error(exc, field=None):
+    """The one line the page shows for ``exc``: named by the field the user typed in (``field``, or
+    the one its key comes from when it names the page's query or the edited chart), not by the
+    internal sources ``URL`` and ``<mapping>``; an error about a file (an upload) stays as it is."""
+    key = str(exc.key)
+    if field is None:
+        if str(exc.source) not in (SOURCE, "<mapping>"):
+            return str(exc)
+        field = (f"Geometry chart, {key.removeprefix('chart.').replace('_', ' ')}" if key.startswith("chart.")
+                 else f"Benchmark parameter {key}" if key in NAMES else FIELDS.get(key, key))
+    return f"{field}: {exc.expected}"
 
 
 def _callbacks(app, engine):
@@ -333,12 +373,12 @@ def _callbacks(app, engine):
                   Input("bike", "value"), State("size", "value"), State("stiffness", "value"))
     def bike_changed(bike, size, stiffness):
         try:
-            sizes = list(engine.sizes(bike))
+            sizes = list(engine.answer(_sizes, engine, PageState(bike=bike))[0])
         except InputError:
             sizes = []
         size = size if size in sizes else (sizes[0] if sizes else None)
         try:
-            materials = engine.materials(bike, size or "")
+            materials = list(engine.answer(_materials, engine, PageState(bike=bike, size=size or ""))[0])
         except InputError:
             materials = [stiffness]
         materials += [stiffness] if stiffness not in materials else []
@@ -355,44 +395,47 @@ def _callbacks(app, engine):
                   Output({"type": "chart", "key": ALL}, "placeholder"),
                   Output("chart-editor", "style"),
                   Output("warnings", "children"),
-                  Output("error", "children"),
+                  Output("error", "children"), Output("results", "className"), Output("address-error", "data"),
                   Input("bike", "value"), Input("size", "value"), Input("rider", "value"),
                   Input("height", "value"), Input("mass", "value"), Input("sex", "value"), Input("hands", "value"),
                   Input("stiffness", "value"), Input("combine", "value"),
                   Input({"type": "chart", "key": ALL}, "value"), Input({"type": "param", "key": ALL}, "value"),
-                  Input("model", "value"))
-    def update(bike, size, rider, height, mass, sex, hands, stiffness, combine, chart_texts, param_texts, model):
+                  Input("model", "value"), State("address-error", "data"))
+    def update(bike, size, rider, height, mass, sex, hands, stiffness, combine, chart_texts, param_texts, model,
+               address_error):
+        unchanged = (no_update,) * 10 + ([no_update] * len(NAMES), [no_update] * len(CHART_KEYS)) + (no_update,) * 2
         try:
             state = _state(bike, size, rider, (height, mass, sex, hands), stiffness, combine, chart_texts,
                            param_texts, model)
-            (evaluation, base, chart, editable), lines = engine.answer(_results, engine, state)
-        except InputError as exc:         # the last good results stay (docs/web.md)
-            return ((no_update,) * 10 + ([no_update] * len(NAMES), [no_update] * len(CHART_KEYS))
-                    + (no_update,) * 2 + (str(exc),))
+            if address_error and state == PageState():
+                # a bad link: the controls show the default page, which the link did not ask for; its
+                # error and its address stay until the user changes a control
+                return unchanged + (no_update,) * 3
+            (evaluation, base, chart, editable, figure), lines = engine.answer(_results, engine, state)
+        except InputError as exc:         # the last good results stay (docs/web.md), marked stale
+            return unchanged + (_field_error(exc), "results stale", no_update)
         result, p, S = evaluation.stability, evaluation.parameters, evaluation.stiffness
         matrix = "rigid (infinite)" if S is None else "\n".join("  ".join(f"{x:12.1f}" for x in row) for row in S)
         query = state.to_query()
         links = [html.A(DOWNLOADS[name][1], href=f"/download/{name}?{query}", download="")
                  for name in DOWNLOADS if name != "pose.yaml" or state.rider != "none"]
         shown = [_placeholder(k, chart.get(k)) if editable else "" for k in CHART_KEYS]
-        message = no_update if ctx.triggered_id is None else ""
+        message = no_update if ctx.triggered_id is None and not address_error else ""
         return (_speed_text(result.weave_speeds, "weave"), _speed_text(result.capsize_speeds, "capsize"),
                 _range_text(result.ranges["strict"]["exact"]), f"{p.mB + p.mH + p.mR + p.mF:.2f} kg",
-                _svg_uri(_eigenvalue_figure(result, state)), matrix, _bodies_table(p), _geometry_table(chart),
+                figure, matrix, _bodies_table(p), _geometry_table(chart),
                 links, "?" + query, [f"{base[n]:.6g}" for n in NAMES], shown,
-                {} if editable else {"display": "none"}, [html.Li(f"warning: {line}") for line in lines], message)
+                {} if editable else {"display": "none"}, [html.Li(f"warning: {line}") for line in lines], message,
+                "results", None)
 
     @app.callback(Output("side-view", "src"), Input("bike", "value"), Input("size", "value"),
                   Input("rider", "value"), Input("height", "value"), Input("mass", "value"),
                   Input("sex", "value"), Input("hands", "value"), Input({"type": "chart", "key": ALL}, "value"))
     def side_view(bike, size, rider, height, mass, sex, hands, chart_texts):
-        def figure(state):
-            bicycle = engine.bicycle(state.bicycle_key)
-            return _svg_uri(_side_view_figure(bicycle, engine.seated(state.bicycle_key, state.rider_key)))
         try:
             state = _state(bike, size, rider, (height, mass, sex, hands), "infinite", "exact", chart_texts,
                            [""] * len(NAMES))
-            return engine.answer(figure, state)[0]
+            return engine.answer(_side_view_uri, engine, state)[0]
         except InputError:                # the last good side view stays
             return no_update
 
@@ -402,35 +445,67 @@ def _callbacks(app, engine):
                      Input({"type": "chart", "key": ALL}, "value"), Input({"type": "param", "key": ALL}, "value"),
                      Input("model", "value")]
 
-    @app.callback(Output("bode-figure", "src"), Output("bode-error", "children"),
+    @app.callback(Output("bode-figure", "src"), Output("bode-error", "children"), Output("bode-figure", "className"),
                   *configuration, Input("bode-speed", "value"), Input("bode-input", "value"),
                   Input("bode-output", "value"))
     def bode(bike, size, rider, height, mass, sex, hands, stiffness, combine, chart_texts, param_texts, model,
              speed, inp, out):
+        """The Bode figure; on an error the last good figure stays, dimmed, and the error names the field."""
         try:
             state = _state(bike, size, rider, (height, mass, sex, hands), stiffness, combine, chart_texts,
                            param_texts, model)
             v = _parse(["bode speed"], [speed])["bode speed"]
-            fr = frequency_response(engine.model(state), 5.0 if v is None else v, inp, out)
+            uri = engine.answer(_bode_uri, engine, state, 5.0 if v is None else v, inp, out)[0]
         except InputError as exc:
-            return "", str(exc)
-        return _svg_uri(_bode_figure(fr, state)), ""
+            field = FIELDS["bode speed"] if str(exc.source) == "speed" or exc.key == "bode speed" else None
+            return no_update, _field_error(exc, field), "stale"
+        return uri, "", ""
 
-    @app.callback(Output("hqm-figure", "src"), Output("hqm-summary", "children"), *configuration)
+    @app.callback(Output("hqm-figure", "src"), Output("hqm-summary", "children"), Output("hqm-figure", "className"),
+                  *configuration)
     def handling_quality(bike, size, rider, height, mass, sex, hands, stiffness, combine, chart_texts,
                          param_texts, model):
+        """The HQM figure; on an error the last good figure stays, dimmed, with the error below it."""
         try:
             state = _state(bike, size, rider, (height, mass, sex, hands), stiffness, combine, chart_texts,
                            param_texts, model)
-            result = engine.handling(state)
-            stable = engine.evaluate(state).stability.ranges["strict"]["exact"]
+            uri, summary = engine.answer(_handling_uri, engine, state)[0]
         except InputError as exc:
-            return "", str(exc)
-        return _svg_uri(_handling_figure(result, stable, state)), _handling_summary(result)
+            return no_update, _field_error(exc), "stale"
+        return uri, summary, ""
 
     @app.callback(Output("body-controls", "style"), Input("rider", "value"))
     def body_controls(rider):
         return {} if rider == BODY_RIDER else {"display": "none"}
+
+
+def _sizes(engine, state):
+    """The size names of ``state``'s bicycle (cached by :meth:`~.engine.Engine.answer`)."""
+    return tuple(engine.sizes(state.bike))
+
+
+def _materials(engine, state):
+    """The stiffness choices of ``state``'s bicycle and size (cached by :meth:`~.engine.Engine.answer`)."""
+    return tuple(engine.materials(state.bike, state.size))
+
+
+def _side_view_uri(engine, state):
+    """The side view of ``state``'s bicycle and seated rider (an SVG data URL)."""
+    bicycle = engine.bicycle(state.bicycle_key)
+    return _svg_uri(_side_view_figure(bicycle, engine.seated(state.bicycle_key, state.rider_key)))
+
+
+def _bode_uri(engine, state, speed, inp, out):
+    """The Bode figure of ``state`` at ``speed`` (m/s) from ``inp`` to ``out`` (an SVG data URL)."""
+    response = frequency_response(engine.model(state), speed, inp, out)
+    return _svg_uri(_bode_figure(response, _bike_shown(engine, state)))
+
+
+def _handling_uri(engine, state):
+    """The HQM figure of ``state`` (an SVG data URL) and the summary line."""
+    result = engine.handling(state)
+    stable = engine.evaluate(state).stability.ranges["strict"]["exact"]
+    return _svg_uri(_handling_figure(result, stable, state, _bike_shown(engine, state))), _handling_summary(result)
 
 
 def _placeholder(key, value):
@@ -440,19 +515,25 @@ def _placeholder(key, value):
     return f"{value:.2f}" if key in CHART_ANGLES else f"{1000 * value:.1f}"
 
 
-def _eigenvalue_figure(result, state):
+def _bike_shown(engine, state):
+    """The bicycle as a figure title names it: a shipped name, or an upload by the file name it was
+    uploaded as (its ``upload-<secret>`` name is a key, not a title)."""
+    return engine.upload_label(state.bike) if state.bike.startswith(UPLOAD_PREFIX) else state.bike
+
+
+def _eigenvalue_figure(result, state, bike):
     rider = (f"a {state.sex} rider of {state.height:g} m and {state.mass:g} kg" if state.rider == BODY_RIDER
              else "no rider" if state.rider == "none" else f"rider {state.rider}")
     model = "" if state.model == BASE else f", model {state.model}"
-    return plot_eigenvalues(result, title=f"{state.bike}, {rider}, stiffness {state.stiffness}{model}")
+    return plot_eigenvalues(result, title=f"{bike}, {rider}, stiffness {state.stiffness}{model}")
 
 
-def _bode_figure(fr, state):
-    return plot_bode(fr, f"{state.bike}: {fr.output} / {fr.input} at {fr.speed:g} m/s", size=(6.4, 4.6))
+def _bode_figure(fr, bike):
+    return plot_bode(fr, f"{bike}: {fr.output} / {fr.input} at {fr.speed:g} m/s", size=(6.4, 4.6))
 
 
-def _handling_figure(result, stable, state):
-    return plot_handling(result, f"{state.bike}, rider {state.rider}: handling quality metric", size=(8.0, 3.4),
+def _handling_figure(result, stable, state, bike):
+    return plot_handling(result, f"{bike}, rider {state.rider}: handling quality metric", size=(8.0, 3.4),
                          stable_speeds=stable)
 
 

@@ -86,7 +86,8 @@ class PageState:
         if state.combine not in COMBINE_CHOICES:
             raise InputError(SOURCE, "combine", f"one of {', '.join(COMBINE_CHOICES)}")
         try:
-            state = replace(state, model=parse_model(state.model).name)
+            # '+' joins members; in a query string it arrives as a space (rider-lean+tyre as written)
+            state = replace(state, model=parse_model(re.sub(r"\s+", "+", state.model)).name)
         except InputError:
             raise InputError(SOURCE, "model", f"one of {', '.join(MODEL_CHOICES)}") from None
         overrides = tuple((name, _number(name, query[name])) for name in NAMES
