@@ -23,11 +23,10 @@ boundary is also where an eigenvalue with ``Re >= 0`` has modulus ``r``: ``det(A
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.linalg import matrix_balance
-from scipy.optimize import brentq
 
 from ...core.results import Result, quantity
 from .compound import additive_coefficients, multiplicative_coefficients
+from .eigen import has_quartic_path
 from .polynomial import real_roots
 
 OSCILLATORY, REAL = "oscillatory", "real"
@@ -99,8 +98,43 @@ def balanced(coefficients):
     P = np.asarray(coefficients, dtype=float)
     if P.shape[-1] == 0:
         return P
-    _, (scale, _) = matrix_balance(np.abs(P).sum(axis=0), permute=False, separate=True)
+    scale = balance_scale(np.abs(P).sum(axis=0))
     return P * scale[None, None, :] / scale[None, :, None]
+
+
+def balance_scale(A):
+    """The diagonal ``D`` (n,) (powers of 2) that balances the square matrix ``A``: ``D^-1 A D`` has
+    rows and columns of even 2-norms, by the iteration of LAPACK's ``gebal`` (Parlett and Reinsch
+    1969; James, Langou and Lowery 2014) without permutations, in numpy (no scipy on the Whipple
+    bicycle's path)."""
+    A = np.array(A, dtype=float)
+    n = len(A)
+    scale = np.ones(n)
+    tiny = np.finfo(float).tiny / np.finfo(float).eps
+    small, big = 2 * tiny, 1 / (2 * tiny)
+    for _ in range(100 * max(n, 1)):
+        again = False
+        for i in range(n):
+            c, r = float(np.linalg.norm(A[:, i])), float(np.linalg.norm(A[i, :]))
+            ca, ra = float(np.abs(A[:, i]).max()), float(np.abs(A[i, :]).max())
+            if c == 0 or r == 0:
+                continue
+            total, f, g = c + r, 1.0, r / 2
+            while c < g and max(f, c, ca) < big and min(r, g, ra) > small:
+                f, c, ca, r, g, ra = 2 * f, 2 * c, 2 * ca, r / 2, g / 2, ra / 2
+            g = c / 2
+            while g >= r and max(r, ra) < big and min(f, c, g, ca) > small:
+                f, c, g, ca, r, ra = f / 2, c / 2, g / 2, ca / 2, 2 * r, 2 * ra
+            if c + r >= 0.95 * total or (f < 1 and scale[i] < 1 and f * scale[i] <= tiny) or \
+                    (f > 1 and scale[i] > 1 and scale[i] >= 1 / (tiny * f)):
+                continue
+            scale[i] *= f
+            A[i, :] /= f
+            A[:, i] *= f
+            again = True
+        if not again:
+            break
+    return scale
 
 
 def _refine(f, v, lo, hi):
@@ -114,6 +148,7 @@ def _refine(f, v, lo, hi):
         if fb == 0:
             return b
         if np.sign(fa) != np.sign(fb):
+            from scipy.optimize import brentq      # lazy: only models beyond the closed form refine crossings
             return brentq(f, a, b, xtol=XTOL, rtol=4 * np.finfo(float).eps)
     return v
 
@@ -160,10 +195,11 @@ def axis_crossings(model, lo, hi, at=None):
     # at standstill every oscillation of an undamped model (the flexible member) is on the axis: the
     # roots found there, a round-off away from lo, are at lo and no crossing of (lo, hi]
     start = lo + MERGE_TOL * (1 + abs(lo))
+    small = has_quartic_path(model)
     found = []
     for kind, coefficients, check in ((REAL, P, _real_crossing),
                                       (OSCILLATORY, additive_coefficients(P), _oscillatory_crossing)):
-        for v in real_roots(coefficients, lo, hi):
+        for v in real_roots(coefficients, lo, hi, small):
             if v <= start:
                 continue
             hit = check(at, v, lo, hi)
@@ -188,5 +224,6 @@ def circle_speeds(model, radius, lo, hi, at=None):
     shifted[0] = shifted[0] - radius * np.eye(n)
     C2 = multiplicative_coefficients(P)
     C2[0] = C2[0] - radius ** 2 * np.eye(len(C2[0]))
-    v = np.concatenate([real_roots(shifted, lo, hi), real_roots(C2, lo, hi)])
+    small = has_quartic_path(model)
+    v = np.concatenate([real_roots(shifted, lo, hi, small), real_roots(C2, lo, hi, small)])
     return np.sort(v[(v > lo) & (v < hi)])

@@ -9,13 +9,12 @@ uncertainty use (:mod:`~bikemass.analysis.engine.critical`).
 """
 
 import numpy as np
-from scipy.optimize import linear_sum_assignment
 
 from .eigen import eigen_sweep
 from .modes import follow_modes
 from .naming import WOBBLE, family, is_weave, is_wobble
 from .speeds import DEFAULT_SPEEDS, speed_grid
-from .tracking import reorder, track
+from .tracking import assignments, reorder, track
 
 NAMING_STEP = DEFAULT_SPEEDS[2]
 """Speed step (m/s) of the grid on which modes are followed for naming when no analysis gives one
@@ -63,7 +62,7 @@ class TrackedModes:
             sub = np.linspace(s[k], s[k + 1], self.SUBSTEPS + 1)
             sweep = eigen_sweep(self.model, sub)
             start = self.modes.eigenvalues[k]
-            first = linear_sum_assignment(np.abs(start[:, None] - sweep.eigenvalues[0][None, :]))[1]
+            first = assignments(np.abs(start[:, None] - sweep.eigenvalues[0][None, :])[None])[0]
             order = track(sweep.eigenvalues, sweep.eigenvectors)[:, first]
             values, _ = reorder(sweep.eigenvalues, sweep.eigenvectors, order)
             cell = self._cells[k] = (sub, values)
