@@ -86,8 +86,10 @@ class Eigenvalues:
         v = float(v)
         out = self._cache.get(v)
         if out is None:
-            powers = v ** np.arange(len(self.coefficients))
-            out = self._cache[v] = np.linalg.eigvals(np.tensordot(powers, self.coefficients, axes=1))
+            A = self.coefficients[-1]
+            for P in self.coefficients[-2::-1]:            # Horner in v
+                A = A * v + P
+            out = self._cache[v] = np.linalg.eigvals(A)
         return out
 
 

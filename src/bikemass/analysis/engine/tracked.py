@@ -36,7 +36,7 @@ class TrackedModes:
 
     def __init__(self, model, modes, at):
         self.model, self.modes, self.at = model, modes, at
-        self._cells = {}
+        self._cells, self._guesses = {}, {}
 
     @classmethod
     def up_to(cls, model, lo, top, at):
@@ -69,13 +69,21 @@ class TrackedModes:
         return cell
 
     def guess(self, v):
-        """Each mode's value (m,) at speed ``v`` by interpolation on the fine sub-grid."""
+        """Each mode's value (m,) at speed ``v`` by interpolation on the fine sub-grid (a fresh array;
+        memoised per speed: the ranges ask for every mode at one speed)."""
+        v = float(v)
+        out = self._guesses.get(v)
+        if out is None:
+            out = self._guesses[v] = self._guess(v)
+        return out.copy()
+
+    def _guess(self, v):
         s, values = self.modes.speeds, self.modes.eigenvalues
         if len(s) == 1:
             return values[0]
-        k = int(np.clip(np.searchsorted(s, v) - 1, 0, len(s) - 2))
+        k = min(max(int(np.searchsorted(s, v)) - 1, 0), len(s) - 2)
         sub, vals = self._cell(k)
-        j = int(np.clip(np.searchsorted(sub, v) - 1, 0, len(sub) - 2))
+        j = min(max(int(np.searchsorted(sub, v)) - 1, 0), len(sub) - 2)
         t = (v - sub[j]) / (sub[j + 1] - sub[j])
         return vals[j] + t * (vals[j + 1] - vals[j])
 

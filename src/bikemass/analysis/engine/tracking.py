@@ -67,7 +67,7 @@ def step_costs(values, vectors):
     dist = np.abs(values[1:, None, :] - values[:-1, :, None])
     scale = np.maximum(np.abs(values).max(axis=1), 1.0)
     scale = np.maximum(scale[1:], scale[:-1])[:, None, None]
-    mac = np.abs(np.einsum("kai,kaj->kij", vectors[:-1].conj(), vectors[1:])) ** 2
+    mac = np.abs(np.matmul(np.swapaxes(vectors[:-1], 1, 2).conj(), vectors[1:])) ** 2     # x_i^H x_j
     sign = np.sign(values.imag)
     flip = (sign[:-1, :, None] * sign[1:, None, :]) < 0
     return dist / scale + (1.0 - mac) + HALF_PLANE_PENALTY * flip
@@ -119,11 +119,14 @@ def track(values, vectors):
     steps = assignments(costs)
     for k in np.flatnonzero(_breaks(steps, part[:-1], part[1:]).any(axis=1)):
         steps[k] = _repaired(steps[k], costs[k], part[k], part[k + 1])
-    order = np.empty((n, m), dtype=int)
-    order[0] = np.arange(m)
-    for k, step in enumerate(steps):              # row i (speed k) -> column step[i] (speed k + 1)
-        order[k + 1] = step[order[k]]
-    return order
+    # row i (speed k) -> column steps[k, i] (speed k + 1); order[k + 1] = steps[k] o ... o steps[0], the
+    # prefix compositions by doubling (log2(n) vector steps instead of a Python loop over the speeds)
+    prefix = steps.copy()
+    d = 1
+    while d < len(prefix):
+        prefix[d:] = np.take_along_axis(prefix[d:], prefix[:-d], axis=1)
+        d *= 2
+    return np.concatenate([np.arange(m)[None, :], prefix]) if len(prefix) else np.arange(m)[None, :].repeat(n, 0)
 
 
 def reorder(values, vectors, order):
