@@ -97,3 +97,18 @@ def test_brute_force_assignment_is_optimal():
         for c, g in zip(costs, got):
             assert c[np.arange(m), g].sum() == pytest.approx(c[np.arange(m), linear_sum_assignment(c)[1]].sum(),
                                                              abs=1e-14)
+
+
+@pytest.mark.parametrize("argv", [["stability", "benchmark", "--format", "json"], ["params", "benchmark"],
+                                  ["simulate", "benchmark", "--speed", "5", "--duration", "1"]])
+def test_the_whipple_commands_load_no_scipy(argv):
+    """The Whipple bicycle's stability, parameters and time response need no scipy module (its import
+    alone is about twice numpy's): issue 37's start-up."""
+    import subprocess
+    import sys
+    code = ("import sys; from bikemass.cli.main import main; sys.argv[0] = 'bikemass'; code = main(sys.argv[1:]); "
+            "sys.stderr.write('SCIPY ' + str(sorted(m for m in sys.modules if m.split('.')[0] == 'scipy')[:3]) + '\\n'); "
+            "sys.exit(code)")
+    done = subprocess.run([sys.executable, "-c", code, *argv], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert "SCIPY []" in done.stderr
