@@ -81,6 +81,14 @@ class Eigenvalues:
     def __init__(self, model):
         self.coefficients = np.asarray(model.dynamic_coefficients, dtype=float)
         self._cache = {}
+        self._balanced = None
+
+    @property
+    def balanced(self):
+        """:func:`balanced` of the coefficients, made once."""
+        if self._balanced is None:
+            self._balanced = balanced(self.coefficients)
+        return self._balanced
 
     def __call__(self, v):
         v = float(v)
@@ -111,6 +119,9 @@ def balance_scale(A):
     bicycle's path)."""
     A = np.array(A, dtype=float)
     n = len(A)
+    if n > 4:          # a richer model (scipy is loaded for it anyway): LAPACK's own, the same scales
+        from scipy.linalg import matrix_balance      # lazy: the Whipple bicycle's path runs without scipy
+        return matrix_balance(A, permute=False, separate=True)[1][0]
     scale = np.ones(n)
     tiny = np.finfo(float).tiny / np.finfo(float).eps
     small, big = 2 * tiny, 1 / (2 * tiny)
@@ -193,7 +204,7 @@ def axis_crossings(model, lo, hi, at=None):
     ``at`` may pass a shared :class:`Eigenvalues` of the model.
     """
     at = at or Eigenvalues(model)
-    P = balanced(at.coefficients)
+    P = at.balanced
     # at standstill every oscillation of an undamped model (the flexible member) is on the axis: the
     # roots found there, a round-off away from lo, are at lo and no crossing of (lo, hi]
     start = lo + MERGE_TOL * (1 + abs(lo))
@@ -220,7 +231,7 @@ def circle_speeds(model, radius, lo, hi, at=None):
     """Speeds in ``(lo, hi)`` where an eigenvalue may have modulus ``radius`` (1/s): candidates for the
     ends of marginally stable ranges (unverified: an extra speed only splits an interval)."""
     at = at or Eigenvalues(model)
-    P = balanced(at.coefficients)
+    P = at.balanced
     n = P.shape[-1]
     shifted = P.copy()
     shifted[0] = shifted[0] - radius * np.eye(n)
