@@ -14,7 +14,10 @@ Rows (median of the rounds, process CPU time, so that other processes' load coun
   relative step of 1e-6 and the speeds where the largest real part changes sign, interpolated on the
   grid (target <= 0.003);
 * ``bm.simulate`` 10 s in 0.01 s from a roll rate / the floor: one ``numpy.linalg.eig`` of the same
-  4 x 4 dynamic A and ``V exp(L t) V^-1 x0`` at all 1,001 samples at once.
+  4 x 4 dynamic A and ``V exp(L t) V^-1 x0`` at all 1,001 samples at once;
+* ``bm.stability`` of the Jamis + Relaxed as rider-lean, tyre and flexible (steel) members (the whole
+  analysis) / a plain loop over the same model: LAPACK eigenvalues at the 601 speeds at once, then
+  ``brentq`` on the largest real part in every grid cell where its sign changes (target <= 1).
 """
 
 import sys
@@ -85,6 +88,20 @@ def peer_sensitivity(p, speeds, rel=1e-6):
     return run
 
 
+def plain_loop(model, speeds):
+    """The plain analysis a user would write: eigenvalues at every speed, brentq on the largest real part."""
+    from scipy.optimize import brentq
+
+    def top(x):
+        return np.linalg.eigvals(model.dynamic_matrix([x])[0]).real.max()
+
+    def run():
+        largest = np.linalg.eigvals(model.dynamic_matrix(speeds)).real.max(axis=1)
+        cells = np.flatnonzero(np.sign(largest[:-1]) != np.sign(largest[1:]))
+        return [brentq(top, speeds[i], speeds[i + 1]) for i in cells]
+    return run
+
+
 def main(rounds=15):
     import os
     print(f"one configuration, median of {rounds} alternate rounds (process CPU time); load "
@@ -117,6 +134,12 @@ def main(rounds=15):
     ours, floor = alternately(lambda: bm.simulate(p, 4.6, {"roll-rate": 0.5}, duration=10.0), eig_floor,
                               rounds, 20, 20)
     rows.append(("bm.simulate 10 s, 1001 samples", ours, "vectorised eigen-decomposition", floor, None))
+
+    for member in ("rider-lean", "tyre", "flexible"):
+        built = bm.Scenario("jamis", "relaxed", "steel" if member == "flexible" else None, model=member).build()
+        ours, plain = alternately(lambda: bm.stability(built), plain_loop(built.model, speeds), max(3, rounds // 3),
+                                  2, 2)
+        rows.append((f"bm.stability, Jamis + Relaxed, {member}", ours, "601-speed eigvals + brentq loop", plain, 1.0))
 
     print(f"{'measure':45s} {'bikemass':>10s}  {'peer / floor':40s} {'':>10s} {'ratio':>8s}  target")
     for name, a, peer_name, b, target in rows:
