@@ -20,6 +20,7 @@ boundary is also where an eigenvalue with ``Re >= 0`` has modulus ``r``: ``det(A
 (a real root) or ``C_2(A(v)) - r^2 I`` singular (a pair; the multiplicative compound).
 """
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -122,14 +123,16 @@ def balance_scale(A):
     if n > 4:          # a richer model (scipy is loaded for it anyway): LAPACK's own, the same scales
         from scipy.linalg import matrix_balance      # lazy: the Whipple bicycle's path runs without scipy
         return matrix_balance(A, permute=False, separate=True)[1][0]
-    scale = np.ones(n)
-    tiny = np.finfo(float).tiny / np.finfo(float).eps
+    A = A.tolist()                      # a 4 x 4: Python floats are faster than numpy calls on it
+    scale = [1.0] * n
+    tiny = float(np.finfo(float).tiny / np.finfo(float).eps)
     small, big = 2 * tiny, 1 / (2 * tiny)
     for _ in range(100 * max(n, 1)):
         again = False
         for i in range(n):
-            c, r = float(np.linalg.norm(A[:, i])), float(np.linalg.norm(A[i, :]))
-            ca, ra = float(np.abs(A[:, i]).max()), float(np.abs(A[i, :]).max())
+            column, row = [A[k][i] for k in range(n)], A[i]
+            c, r = math.sqrt(sum(x * x for x in column)), math.sqrt(sum(x * x for x in row))
+            ca, ra = max(map(abs, column)), max(map(abs, row))
             if c == 0 or r == 0:
                 continue
             total, f, g = c + r, 1.0, r / 2
@@ -142,11 +145,13 @@ def balance_scale(A):
                     (f > 1 and scale[i] > 1 and scale[i] >= 1 / (tiny * f)):
                 continue
             scale[i] *= f
-            A[i, :] /= f
-            A[:, i] *= f
+            A[i] = [x / f for x in A[i]]
+            for k in range(n):
+                A[k][i] *= f
             again = True
         if not again:
             break
+    scale = np.array(scale)
     return scale
 
 

@@ -43,7 +43,7 @@ def real_roots(P, lo, hi, shifted=False):
     d, m = len(P) - 1, P.shape[-1]
     if d == 0 or m == 0:
         return np.empty(0)
-    norms = np.array([np.linalg.norm(p) for p in P])
+    norms = np.sqrt(np.einsum("kij,kij->k", P, P))         # Frobenius norms of the coefficients
     s = (norms[0] / norms[-1]) ** (1.0 / d) if norms[0] > 0 else 1.0
     Q = P * (s ** np.arange(d + 1))[:, None, None]
     Q = Q / max(np.abs(Q).max(), 1e-300)

@@ -124,7 +124,7 @@ def track(values, vectors):
     prefix = steps.copy()
     d = 1
     while d < len(prefix):
-        prefix[d:] = np.take_along_axis(prefix[d:], prefix[:-d], axis=1)
+        prefix[d:] = prefix[d:][np.arange(len(prefix) - d)[:, None], prefix[:-d]]
         d *= 2
     return np.concatenate([np.arange(m)[None, :], prefix]) if len(prefix) else np.arange(m)[None, :].repeat(n, 0)
 
