@@ -125,54 +125,9 @@ def job_path(job):
 
 
 def run_job(job):
-    """Draw one figure and save it (PNG); returns the path.  The figure's layout is its kind's
-    (:func:`laid_out`)."""
+    """Draw one figure and save it (PNG); returns the path."""
     # lazy: plots/ loads matplotlib (slower to import than numpy); study --no-figures runs without it
     from ..plots.figure import save_figure
     function, *args, path, title = job
-    save_figure(laid_out(function(*args, title), function.__name__), path)
+    save_figure(function(*args, title), path)
     return path
-
-
-_LAYOUTS = {}
-"""``{(kind, size, axes): positions}``: the axes' positions matplotlib's constrained layout gave the
-first figure of a kind in this process (a forked worker keeps its own)."""
-MARGIN = 1.0 / 72
-"""How far (inches, one point) inside the figure's edges every artist of a figure laid out by its
-kind's layout must stay (constrained layout keeps 3 points)."""
-
-
-def laid_out(fig, kind):
-    """``fig`` with the layout of the first figure of ``kind`` (same size and number of axes) drawn in
-    this process: its axes placed where constrained layout put that one's, and the solver switched
-    off; only if something would then reach past the figure's edge (a longer title, wider tick labels
-    or legend) does the solver lay this figure out itself.  The study draws 87 figures of five kinds;
-    the solver on each was about a third of their CPU time (issue 37)."""
-    # lazy: matplotlib only for a figure
-    from matplotlib.layout_engine import ConstrainedLayoutEngine
-    engine = fig.get_layout_engine()
-    if not isinstance(engine, ConstrainedLayoutEngine):
-        return fig
-    key = (kind, tuple(fig.get_size_inches().round(6)), len(fig.axes))
-    positions = _LAYOUTS.get(key)
-    if positions is None:
-        engine.execute(fig)
-        _LAYOUTS[key] = [ax.get_position().frozen() for ax in fig.axes]
-        fig.set_layout_engine("none")
-        return fig
-    fig.set_layout_engine("none")
-    for ax, position in zip(fig.axes, positions):
-        ax.set_position(position)
-    if not _inside(fig):
-        fig.set_layout_engine("constrained")
-    return fig
-
-
-def _inside(fig):
-    """Whether every artist of ``fig`` lies at least :data:`MARGIN` inside its edges."""
-    # lazy: matplotlib only for a figure
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    renderer = FigureCanvasAgg(fig).get_renderer()
-    box = fig.get_tightbbox(renderer)
-    width, height = fig.get_size_inches()
-    return box.x0 >= MARGIN and box.y0 >= MARGIN and box.x1 <= width - MARGIN and box.y1 <= height - MARGIN
