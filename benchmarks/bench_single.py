@@ -17,7 +17,10 @@ Rows (median of the rounds, process CPU time, so that other processes' load coun
   4 x 4 dynamic A and ``V exp(L t) V^-1 x0`` at all 1,001 samples at once;
 * ``bm.stability`` of the Jamis + Relaxed as rider-lean, tyre and flexible (steel) members (the whole
   analysis) / a plain loop over the same model: LAPACK eigenvalues at the 601 speeds at once, then
-  ``brentq`` on the largest real part in every grid cell where its sign changes (target <= 1).
+  ``brentq`` on the largest real part in every grid cell where its sign changes (target <= 1);
+* ``bm.uncertainty`` by Monte Carlo (200 draws of the benchmark's trail and rear mass, the draws'
+  modes followed at once) per draw / BicycleParameters' loop per draw (a model of each draw, its
+  eigenvalues at the same 101 speeds and its mode sorting).
 """
 
 import sys
@@ -102,6 +105,21 @@ def plain_loop(model, speeds):
     return run
 
 
+def peer_draws(p, speeds, draws):
+    """BicycleParameters' loop: a Meijaard2007Model of each draw (c and mB drawn) and its eigenvalues at
+    the band speeds, with its own mode sorting."""
+    from bicycleparameters.models import Meijaard2007Model, sort_eigenmodes
+    from bicycleparameters.parameter_sets import Meijaard2007ParameterSet
+    rng = np.random.default_rng(0)
+    base = {**p.to_dict(), "v": 0.0}
+
+    def run():
+        for c, mB in zip(base["c"] + 0.002 * rng.normal(size=draws), base["mB"] + rng.normal(size=draws)):
+            model = Meijaard2007Model(Meijaard2007ParameterSet({**base, "c": c, "mB": mB}, True))
+            sort_eigenmodes(*model.calc_eigen(v=speeds))
+    return run
+
+
 def main(rounds=15):
     import os
     print(f"one configuration, median of {rounds} alternate rounds (process CPU time); load "
@@ -134,6 +152,14 @@ def main(rounds=15):
     ours, floor = alternately(lambda: bm.simulate(p, 4.6, {"roll-rate": 0.5}, duration=10.0), eig_floor,
                               rounds, 20, 20)
     rows.append(("bm.simulate 10 s, 1001 samples", ours, "vectorised eigen-decomposition", floor, None))
+
+    scenario, spreads = bm.Scenario("benchmark"), {"c": 0.002, "mB": 1.0}
+    draws = 200
+    bands = np.linspace(0.0, 10.0, 101)
+    ours, peer = alternately(lambda: bm.uncertainty(scenario, spreads, method="montecarlo", samples=draws),
+                             peer_draws(p, bands, draws), max(3, rounds // 5), 1, 1)
+    rows.append(("Monte Carlo, 200 draws (bands on 101 speeds)", ours / draws, "BicycleParameters loop, per draw",
+                 peer / draws, None))
 
     for member in ("rider-lean", "tyre", "flexible"):
         built = bm.Scenario("jamis", "relaxed", "steel" if member == "flexible" else None, model=member).build()

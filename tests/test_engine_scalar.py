@@ -112,3 +112,19 @@ def test_the_whipple_commands_load_no_scipy(argv):
     done = subprocess.run([sys.executable, "-c", code, *argv], capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
     assert "SCIPY []" in done.stderr
+
+
+def test_contract_following_many_models_at_once_is_following_each():
+    """Contract test: the modes of 40 random Whipple variants followed as one sequence (the Monte
+    Carlo's path) are exactly those each gives alone; a richer member is left to the caller."""
+    import bikemass as bm
+    from bikemass.analysis.engine.modes import follow_many, follow_modes
+    models = [whipple_model(p, S) for p, S in SETS[::2][:40]]
+    speeds = np.linspace(0.0, 10.0, 101)
+    many, labels = follow_many(models, speeds)
+    for model, values, names in zip(models, many, labels):
+        alone = follow_modes(model, speeds)
+        assert names == alone.labels
+        assert np.array_equal(values, alone.eigenvalues)
+    tyre = bm.linear_model(bm.parameters("benchmark"), model="tyre")
+    assert follow_many([tyre, tyre], speeds) is None
