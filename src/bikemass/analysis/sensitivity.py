@@ -27,11 +27,14 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike
 
+from types import SimpleNamespace
+
 from ..core.tables import Table
+from ..models.canonical import canonical_entries
 from ..models.parameters import NAMES, parameter_units
-from .engine import closed_form
+from .engine import closed_form, scalar
 from .engine.crossings import OSCILLATORY, REAL
-from .model import STIFFNESS_ENTRIES, model_of, state_matrix_derivatives, stiffness_state_derivatives, values_of
+from .model import STEP, STIFFNESS_ENTRIES, values_of
 from .engine.critical import critical_speeds
 from .results import _stiffness
 from ..core.display import Display
@@ -207,24 +210,94 @@ def sensitivity(params: "BenchmarkParameters | RiderLeanParameters | Scenario | 
             return _member_sensitivity(built, vmax, tuple(names))
         params, stiffness = built.parameters, built.stiffness
     params, S, names = _checked(params, stiffness, vmax, names)
-    model = model_of(values_of(params), S)
-    found = closed_form.axis_crossings(model, 0.0, vmax)
+    return _whipple_sensitivity(params, S, vmax, names)
+
+
+def _whipple_sensitivity(params, S, vmax, names):
+    """:class:`Sensitivity` of the Whipple bicycle: one complex-step batch through the closed form.
+
+    Row 0 of the batch is the configuration, row ``1 + j`` has ``i h`` added to the ``j``-th of
+    ``names`` (then to each entry of S): the canonical matrices, the quartic's pieces and the two
+    quadratics in ``v^2`` are evaluated on all rows at once, and each crossing's root is taken on
+    the branch the real configuration's crossing is on, so ``Im v* / h`` is ``d v* / d p`` exact to
+    rounding (an analytic function of the parameters: no subtraction, no step error)."""
+    base = values_of(params)
+    stepped = (*names, *(STIFFNESS_ENTRIES if S is not None else ()))
+    B = 1 + len(stepped)
+    columns = {k: np.full(B, complex(v)) for k, v in base.items()}
+    for j, name in enumerate(names):
+        columns[name][1 + j] += 1j * STEP
+    Sc = None
+    if S is not None:
+        Sc = np.broadcast_to(np.asarray(S, dtype=complex), (B, 2, 2)).copy()
+        for j, cells in enumerate(STIFFNESS_ENTRIES.values()):
+            for cell in cells:
+                Sc[1 + len(names) + j][cell] += 1j * STEP
+    p = _batch_pieces(columns, Sc)
+    real = scalar.whipple_pieces(params, S)
     speeds, derivs = {}, {}
     for key, kind in SPEEDS.items():
-        crossing = next(((speed, w) for speed, k, w in found if k == kind), None)
-        speeds[key] = None if crossing is None else crossing[0]
-        if crossing is None:
-            derivs[key] = {n: None for n in (*names, *(STIFFNESS_ENTRIES if S is not None else ()))}
+        branch = _first_crossing_branch(real, kind, vmax)
+        if branch is None:
+            speeds[key] = None
+            derivs[key] = {n: None for n in stepped}
             continue
-        dA = {**state_matrix_derivatives(params, crossing[0], S, names),
-              **stiffness_state_derivatives(params, crossing[0], S)}
-        derivs[key] = speed_derivatives(model, dA, crossing[0], kind, crossing[1])
+        v = _crossing_speed(p, kind, branch)
+        speeds[key] = float(branch[2])
+        derivs[key] = {n: float(x) for n, x in zip(stepped, v[1:].imag / STEP)}
     d_s = None
     if S is not None:
         d_s = {key: {k: d.pop(k, None) for k in STIFFNESS_ENTRIES} for key, d in derivs.items()}
-    return Sensitivity(params=values_of(params), weave_speed=speeds["weave_speed"],
+    return Sensitivity(params=base, weave_speed=speeds["weave_speed"],
                        capsize_speed=speeds["capsize_speed"], d_weave_speed=derivs["weave_speed"],
                        d_capsize_speed=derivs["capsize_speed"], d_stiffness=d_s)
+
+
+def _batch_pieces(columns, S):
+    """closed_form.pieces of the Whipple bicycle of ``columns`` (complex arrays (B,) of the 26
+    parameters), with stacked rear-frame stiffness ``S`` (B, 2, 2) or None."""
+    M, C1, K0, K2 = (np.moveaxis(np.array(np.broadcast_arrays(*[x for row in m for x in row])).reshape(2, 2, -1),
+                                 -1, 0) for m in canonical_entries(SimpleNamespace(**columns)))
+    G = columns["g"][:, None, None] * K0
+    if S is not None:
+        G = G - np.swapaxes(G, -1, -2) @ np.linalg.solve(G + S, G)
+    return closed_form.pieces(M, C1, G, K2)
+
+
+def _quadratics(p):
+    """The two quadratics in ``u = v^2`` of the closed form: ``{kind: (a, b, c)}``."""
+    alpha, gamma, beta, a4 = p["alpha"], p["gamma"], p["beta"], p["a4"]
+    h2 = alpha * p["a21"] * gamma - a4 * gamma * gamma - alpha * alpha * p["d2"]
+    h1 = alpha * (p["a20"] * gamma + p["a21"] * beta) - 2 * a4 * beta * gamma - alpha * alpha * p["d1"]
+    h0 = alpha * p["a20"] * beta - a4 * beta * beta - alpha * alpha * p["d0"]
+    return {REAL: (p["d2"], p["d1"], p["d0"]), OSCILLATORY: (h2, h1, h0)}
+
+
+def _first_crossing_branch(real, kind, vmax):
+    """``(root index, a == 0, speed)`` of the first crossing of ``kind`` on (0, vmax] of the real pieces
+    ``real`` (scalar.pieces), or None: which root of which quadratic (scalar.quadratic_roots) it is."""
+    candidates = scalar.candidates(real)
+    speeds = candidates[0] if kind == REAL else candidates[1]
+    inside = [(s, i) for i, s in enumerate(speeds) if 0 < s <= vmax]
+    if not inside:
+        return None
+    s, i = min(inside)
+    return i, _quadratics(real)[kind][0] == 0, s
+
+
+def _crossing_speed(p, kind, branch):
+    """The crossing speed (complex (B,)) on ``branch`` of the batch's quadratic of ``kind``, the root
+    taken by the formulas of scalar.quadratic_roots with the real row's choices (a complex step stays
+    on one branch)."""
+    index, linear, _ = branch
+    a, b, c = _quadratics(p)[kind]
+    if linear:
+        u = -c / b
+    else:
+        root = np.sqrt(b * b - 4 * a * c)
+        q = -0.5 * (b + np.copysign(1.0, b[0].real) * root)
+        u = q / a if index == 0 else c / q
+    return np.sqrt(u)
 
 
 MEMBER_STEP = 1e-3

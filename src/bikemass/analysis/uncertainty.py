@@ -43,7 +43,7 @@ from ..models.parameters import NAMES
 from ..plots.stability import COLOURS, OTHER_COLOUR
 from ..scenario.scenario import Scenario
 from .engine.critical import critical_speeds
-from .engine.modes import follow_modes
+from .engine.modes import follow_many, follow_modes
 from .engine.speeds import speed_grid, speed_values
 from .model import STEP, model_of, values_of
 from .sensitivity import SPEEDS, speed_derivatives
@@ -432,22 +432,23 @@ def _montecarlo(scenario, spreads, n, seed, speeds, matrices, speed_out, eig_mod
     draws = {k: nominal[k] + spreads[k].sample(rng, n) for k in keys}
     mats = {m: [] for m in matrices}
     crit = {name: [] for name in SPEEDS}
-    reals = []
+    models = []
     for j in range(n):
         try:
             built = scenario.build({k: float(draws[k][j]) for k in keys})
         except InputError as exc:            # a draw the model is not defined for: the spread is too wide
             raise InputError(exc.source, exc.key, f"spreads whose Monte Carlo draws stay valid (draw {j + 1} of "
                              f"{n}: {exc.expected})") from None
-        if matrices:
-            p = built.parameters
-            for m, x in matrices_of(model_of(values_of(p), built.stiffness), p.g).items():
+        if matrices:                         # the Whipple bicycle's own model: its matrices as built
+            for m, x in matrices_of(built.model, built.parameters.g).items():
                 mats[m].append(np.real(x))
         found = critical_speeds(built.model)
         for name in SPEEDS:
             v = getattr(found, name)
             crit[name].append(np.nan if v is None else v)
-        reals.append(follow_modes(built.model, speeds).eigenvalues.real)
+        models.append(built.model)
+    many = follow_many(models, speeds)       # the draws' modes followed at once where they can be
+    reals = many[0].real if many is not None else [follow_modes(m, speeds).eigenvalues.real for m in models]
     for m in matrices:
         a = np.array(mats[m])
         matrices[m] = {**matrices[m], "linear_std": matrices[m]["std"], "std": a.std(axis=0, ddof=1),

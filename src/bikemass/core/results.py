@@ -46,6 +46,10 @@ def _plain(value):
     return value
 
 
+_FIELD_NAMES = {}
+"""``{result type: its field names}``, for :meth:`Result.frozen`."""
+
+
 @dataclass(frozen=True, eq=False)
 class Result(Display):
     """Base of every result type: frozen fields, read-only arrays, units per field; in Jupyter a
@@ -54,6 +58,19 @@ class Result(Display):
     def __post_init__(self):
         for f in fields(self):
             object.__setattr__(self, f.name, freeze(getattr(self, f.name)))
+
+    @classmethod
+    def frozen(cls, *values):
+        """An instance from ``values`` (every field, in order) that are immutable already (numbers,
+        strings, tuples of results): set once, without another freezing pass (the hot paths)."""
+        names = _FIELD_NAMES.get(cls)
+        if names is None:
+            names = _FIELD_NAMES[cls] = tuple(f.name for f in fields(cls))
+        if len(values) != len(names):
+            raise TypeError(f"{cls.__name__}.frozen takes {len(names)} values, got {len(values)}")
+        obj = object.__new__(cls)
+        obj.__dict__.update(zip(names, values))
+        return obj
 
     @classmethod
     def field_units(cls):

@@ -9,6 +9,7 @@ Equations of motion about the upright straight run at speed ``v`` (m/s)::
 prints it (and the thesis's Table 3-13).
 """
 
+import math
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -52,7 +53,16 @@ def canonical_matrices(p):
     Any object with the 26 attributes works; arrays of one shape (B,) give stacked matrices
     (B, 2, 2) (a sweep's chunk of configurations at once), complex values complex matrices.
     """
-    sl, cl = np.sin(p.lam), np.cos(p.lam)
+    M, C1, K0, K2 = canonical_entries(p)
+    return CanonicalMatrices(M=_matrix(M), C1=_matrix(C1), K0=_matrix(K0), K2=_matrix(K2), g=p.g)
+
+
+def canonical_entries(p):
+    """The entries of ``M, C1, K0, K2`` as nested ``((a, b), (c, d))`` rows, of whatever type the
+    parameters are: Python floats for floats (one configuration without any array: the scalar
+    fast path of :mod:`bikemass.analysis.engine.scalar`), arrays of shape (B,) for a batch, complex
+    for complex steps.  The one place the formulas of Meijaard et al. (2007), Appendix A, are written."""
+    sl, cl = _sin_cos(p.lam)
     # whole bicycle (T) about the rear contact point
     mT = p.mR + p.mB + p.mH + p.mF
     xT = (p.xB * p.mB + p.xH * p.mH + p.w * p.mF) / mT
@@ -78,18 +88,27 @@ def canonical_matrices(p):
     ST = SR + SF
     SA = mA * uA + mu * mT * xT
 
-    M = _matrix([[ITxx, IAlx + mu * ITxz],
-                 [IAlx + mu * ITxz, IAll + 2 * mu * IAlz + mu ** 2 * ITzz]])
-    K0 = _matrix([[mT * zT, -SA], [-SA, -SA * sl]])
-    K2 = _matrix([[0.0, (ST - mT * zT) / p.w * cl],
-                  [0.0, (SA + SF * sl) / p.w * cl]])
-    C1 = _matrix([[0.0, mu * ST + SF * cl + ITxz / p.w * cl - mu * mT * zT],
-                  [-(mu * ST + SF * cl), IAlz / p.w * cl + mu * (SA + ITzz / p.w * cl)]])
-    return CanonicalMatrices(M=M, C1=C1, K0=K0, K2=K2, g=p.g)
+    M = ((ITxx, IAlx + mu * ITxz),
+         (IAlx + mu * ITxz, IAll + 2 * mu * IAlz + mu ** 2 * ITzz))
+    K0 = ((mT * zT, -SA), (-SA, -SA * sl))
+    K2 = ((0.0, (ST - mT * zT) / p.w * cl),
+          (0.0, (SA + SF * sl) / p.w * cl))
+    C1 = ((0.0, mu * ST + SF * cl + ITxz / p.w * cl - mu * mT * zT),
+          (-(mu * ST + SF * cl), IAlz / p.w * cl + mu * (SA + ITzz / p.w * cl)))
+    return M, C1, K0, K2
+
+
+def _sin_cos(x):
+    """``(sin x, cos x)``: the math module's for a Python float (no numpy scalar on the scalar path)."""
+    if type(x) is float:
+        return math.sin(x), math.cos(x)
+    return np.sin(x), np.cos(x)
 
 
 def _matrix(rows):
     """A 2x2 matrix from entries that may be arrays of one shape (B,): shape (2, 2) or (B, 2, 2)."""
+    if all(type(x) is float for row in rows for x in row):
+        return np.array(rows)
     entries = np.broadcast_arrays(*(np.asarray(x) for row in rows for x in row))
     return np.stack(entries, axis=-1).reshape(*entries[0].shape, 2, 2)
 
@@ -99,6 +118,8 @@ def _spin_momentum(spin_inertia, radius):
     (``r = 0``, which carries no spin inertia: the limit of the two-mass-skate bicycle).  Radii
     may be arrays (a batch); complex values pass through (the sensitivities differentiate by
     complex steps)."""
+    if type(radius) is float:
+        return spin_inertia / radius if radius != 0 else 0 * spin_inertia
     r = np.asarray(radius)
     if r.ndim == 0:
         return spin_inertia / radius if radius != 0 else 0 * spin_inertia

@@ -12,12 +12,19 @@ the exterior square (size n (n - 1) / 2):
 Both are linear (bilinear) in ``A``, so a polynomial ``A(v)`` gives polynomial compounds.
 """
 
+from functools import lru_cache
+
 import numpy as np
 
 
+@lru_cache(maxsize=None)
 def pairs(n):
-    """Index arrays ``(p, q)`` of the n (n - 1) / 2 pairs p < q, in lexicographic order."""
-    return np.triu_indices(n, k=1)
+    """Index arrays ``(p, q)`` of the n (n - 1) / 2 pairs p < q, in lexicographic order (read-only,
+    made once per size)."""
+    p, q = np.triu_indices(n, k=1)
+    p.setflags(write=False)
+    q.setflags(write=False)
+    return p, q
 
 
 def additive_compound(A):

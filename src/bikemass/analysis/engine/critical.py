@@ -22,7 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core.results import Result, quantity
-from . import closed_form
+from . import closed_form, scalar
 from .crossings import DESTABILISING, OSCILLATORY, REAL, STABILISING, TOUCHING, Crossing, Eigenvalues, axis_crossings
 from .naming import WEAVE_FAMILY, WOBBLE, family, is_weave
 from .tracked import TrackedModes, root_name
@@ -109,7 +109,8 @@ def _start_roots(at, lo, end, count):
     if not count:
         return speed, []
     roots = at(speed)
-    top = roots[np.argsort(-roots.real, kind="stable")[:count]]
+    roots = roots.tolist() if isinstance(roots, np.ndarray) else roots    # a handful: sorted in Python
+    top = sorted(roots, key=lambda r: -r.real)[:count]
     return speed, sorted((r for r in top if r.imag >= 0), key=lambda r: -r.real)
 
 
@@ -120,34 +121,58 @@ def critical_speeds(model, hi=30.0, lo=0.0, tracked=None):
     crossings; without it a model beyond the two-coordinate closed form has its modes followed from
     standstill on the default grid's step up to its last crossing, and the closed form names an
     oscillatory crossing ``weave`` and leaves a real one unnamed (see the module docstring)."""
-    closed = closed_form.applies(model)
+    if closed_form.applies(model):
+        return closed_critical_speeds(scalar.model_pieces(model), hi, lo, tracked)
     at = tracked.at if tracked is not None else Eigenvalues(model)
-    if closed:
-        pieces = closed_form.model_pieces(model)
-        found = closed_form.axis_crossings(model, lo, hi)
-        count = lambda v: closed_form.unstable_count(closed_form.quartic(pieces, v))   # noqa: E731
-    else:
-        found = axis_crossings(model, lo, hi, at)
-        count = lambda v: int(np.sum(at(v).real > 0))          # noqa: E731
+    found = axis_crossings(model, lo, hi, at)
+    count = lambda v: int(np.sum(at(v).real > 0))          # noqa: E731
     ends = [lo, *[s for s, _, _ in found], hi]
     counts = [count(0.5 * (a + b)) if b > a else None for a, b in zip(ends, ends[1:])]
     start, start_roots = _start_roots(at, lo, ends[1], counts[0]) if hi > lo else (lo, [])
-    if tracked is None and not closed and (found or start_roots):
+    if tracked is None and (found or start_roots):
         tracked = TrackedModes.up_to(model, lo, max([start, *[s for s, _, _ in found]]), at)
+    name = lambda v, root: root_name(tracked, v, root)                         # noqa: E731
+    return _assembled(found, counts, ends, lo, hi, start, start_roots, name, tracked)
+
+
+def whipple_critical_speeds(params, stiffness=None, hi=30.0, lo=0.0):
+    """:class:`CriticalSpeeds` of the Whipple bicycle of ``params`` (a benchmark parameter set, rigid or
+    with the quasi-static rear-frame stiffness ``stiffness``, N m/rad) on ``(lo, hi]`` (m/s): the
+    scalar fast path (:mod:`~bikemass.analysis.engine.scalar`), no model built; the same numbers as
+    :func:`critical_speeds` of its model.  The parameters are taken as they are (checked by the caller)."""
+    return closed_critical_speeds(scalar.whipple_pieces(params, stiffness), hi, lo)
+
+
+def closed_critical_speeds(p, hi=30.0, lo=0.0, tracked=None):
+    """:class:`CriticalSpeeds` from the closed form's pieces ``p`` (:func:`scalar.pieces`), in floats."""
+    found = scalar.axis_crossings(p, lo, hi, (REAL, OSCILLATORY))
+    ends = [lo, *[s for s, _, _ in found], hi]
+    counts = [scalar.unstable_count(p, 0.5 * (a + b)) if b > a else None for a, b in zip(ends, ends[1:])]
+    if tracked is not None:
+        at = tracked.at
+    else:
+        at = lambda v: scalar.roots(scalar.quartic(p, v))                         # noqa: E731
+    start, start_roots = _start_roots(at, lo, ends[1], counts[0]) if hi > lo else (lo, [])
     if tracked is not None:
         name = lambda v, root: root_name(tracked, v, root)                         # noqa: E731
     else:
         name = lambda v, root: WEAVE_FAMILY if root.imag else ""                  # noqa: E731
+    return _assembled(found, counts, ends, lo, hi, start, start_roots, name, tracked)
+
+
+def _assembled(found, counts, ends, lo, hi, start, start_roots, name, tracked):
+    """The :class:`CriticalSpeeds` of the crossings ``found`` and the unstable counts between them."""
     crossings = []
     for k, (speed, kind, w) in enumerate(found):
         before, after = counts[k], counts[k + 1]
         direction = (TOUCHING if before is None or after is None or before == after
                      else STABILISING if after < before else DESTABILISING)
-        crossings.append(Crossing(speed, kind, direction, w, name(speed, 1j * w if kind == OSCILLATORY else 0j)))
+        crossings.append(Crossing.frozen(speed, kind, direction, w,
+                                         name(speed, 1j * w if kind == OSCILLATORY else 0j)))
     if tracked is not None:                       # in the order of the modes' labels
         start_roots = sorted(start_roots, key=lambda r: tracked.column_of(start, r))
-    unstable = tuple(StartInstability(float(lo), OSCILLATORY if r.imag else REAL, float(r.imag), name(start, r))
-                     for r in start_roots)
+    unstable = tuple(StartInstability.frozen(float(lo), OSCILLATORY if r.imag else REAL, float(r.imag),
+                                             name(start, r)) for r in start_roots)
     stable = []
     for (a, b), n in zip(zip(ends, ends[1:]), counts):
         if n == 0:
@@ -155,4 +180,4 @@ def critical_speeds(model, hi=30.0, lo=0.0, tracked=None):
                 stable[-1][1] = b
             else:
                 stable.append([a, b])
-    return CriticalSpeeds(tuple(crossings), tuple(tuple(r) for r in stable), float(lo), float(hi), unstable)
+    return CriticalSpeeds.frozen(tuple(crossings), tuple(tuple(r) for r in stable), float(lo), float(hi), unstable)

@@ -20,14 +20,14 @@ boundary is also where an eigenvalue with ``Re >= 0`` has modulus ``r``: ``det(A
 (a real root) or ``C_2(A(v)) - r^2 I`` singular (a pair; the multiplicative compound).
 """
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.linalg import matrix_balance
-from scipy.optimize import brentq
 
 from ...core.results import Result, quantity
 from .compound import additive_coefficients, multiplicative_coefficients
+from .eigen import has_quartic_path
 from .polynomial import real_roots
 
 OSCILLATORY, REAL = "oscillatory", "real"
@@ -82,13 +82,23 @@ class Eigenvalues:
     def __init__(self, model):
         self.coefficients = np.asarray(model.dynamic_coefficients, dtype=float)
         self._cache = {}
+        self._balanced = None
+
+    @property
+    def balanced(self):
+        """:func:`balanced` of the coefficients, made once."""
+        if self._balanced is None:
+            self._balanced = balanced(self.coefficients)
+        return self._balanced
 
     def __call__(self, v):
         v = float(v)
         out = self._cache.get(v)
         if out is None:
-            powers = v ** np.arange(len(self.coefficients))
-            out = self._cache[v] = np.linalg.eigvals(np.tensordot(powers, self.coefficients, axes=1))
+            A = self.coefficients[-1]
+            for P in self.coefficients[-2::-1]:            # Horner in v
+                A = A * v + P
+            out = self._cache[v] = np.linalg.eigvals(A)
         return out
 
 
@@ -99,8 +109,50 @@ def balanced(coefficients):
     P = np.asarray(coefficients, dtype=float)
     if P.shape[-1] == 0:
         return P
-    _, (scale, _) = matrix_balance(np.abs(P).sum(axis=0), permute=False, separate=True)
+    scale = balance_scale(np.abs(P).sum(axis=0))
     return P * scale[None, None, :] / scale[None, :, None]
+
+
+def balance_scale(A):
+    """The diagonal ``D`` (n,) (powers of 2) that balances the square matrix ``A``: ``D^-1 A D`` has
+    rows and columns of even 2-norms, by the iteration of LAPACK's ``gebal`` (Parlett and Reinsch
+    1969; James, Langou and Lowery 2014) without permutations, in numpy (no scipy on the Whipple
+    bicycle's path)."""
+    A = np.array(A, dtype=float)
+    n = len(A)
+    if n > 4:          # a richer model (scipy is loaded for it anyway): LAPACK's own, the same scales
+        from scipy.linalg import matrix_balance      # lazy: the Whipple bicycle's path runs without scipy
+        return matrix_balance(A, permute=False, separate=True)[1][0]
+    A = A.tolist()                      # a 4 x 4: Python floats are faster than numpy calls on it
+    scale = [1.0] * n
+    tiny = float(np.finfo(float).tiny / np.finfo(float).eps)
+    small, big = 2 * tiny, 1 / (2 * tiny)
+    for _ in range(100 * max(n, 1)):
+        again = False
+        for i in range(n):
+            column, row = [A[k][i] for k in range(n)], A[i]
+            c, r = math.sqrt(sum(x * x for x in column)), math.sqrt(sum(x * x for x in row))
+            ca, ra = max(map(abs, column)), max(map(abs, row))
+            if c == 0 or r == 0:
+                continue
+            total, f, g = c + r, 1.0, r / 2
+            while c < g and max(f, c, ca) < big and min(r, g, ra) > small:
+                f, c, ca, r, g, ra = 2 * f, 2 * c, 2 * ca, r / 2, g / 2, ra / 2
+            g = c / 2
+            while g >= r and max(r, ra) < big and min(f, c, g, ca) > small:
+                f, c, g, ca, r, ra = f / 2, c / 2, g / 2, ca / 2, 2 * r, 2 * ra
+            if c + r >= 0.95 * total or (f < 1 and scale[i] < 1 and f * scale[i] <= tiny) or \
+                    (f > 1 and scale[i] > 1 and scale[i] >= 1 / (tiny * f)):
+                continue
+            scale[i] *= f
+            A[i] = [x / f for x in A[i]]
+            for k in range(n):
+                A[k][i] *= f
+            again = True
+        if not again:
+            break
+    scale = np.array(scale)
+    return scale
 
 
 def _refine(f, v, lo, hi):
@@ -114,6 +166,7 @@ def _refine(f, v, lo, hi):
         if fb == 0:
             return b
         if np.sign(fa) != np.sign(fb):
+            from scipy.optimize import brentq      # lazy: only models beyond the closed form refine crossings
             return brentq(f, a, b, xtol=XTOL, rtol=4 * np.finfo(float).eps)
     return v
 
@@ -156,14 +209,15 @@ def axis_crossings(model, lo, hi, at=None):
     ``at`` may pass a shared :class:`Eigenvalues` of the model.
     """
     at = at or Eigenvalues(model)
-    P = balanced(at.coefficients)
+    P = at.balanced
     # at standstill every oscillation of an undamped model (the flexible member) is on the axis: the
     # roots found there, a round-off away from lo, are at lo and no crossing of (lo, hi]
     start = lo + MERGE_TOL * (1 + abs(lo))
+    small = has_quartic_path(model)
     found = []
     for kind, coefficients, check in ((REAL, P, _real_crossing),
                                       (OSCILLATORY, additive_coefficients(P), _oscillatory_crossing)):
-        for v in real_roots(coefficients, lo, hi):
+        for v in real_roots(coefficients, lo, hi, small):
             if v <= start:
                 continue
             hit = check(at, v, lo, hi)
@@ -182,11 +236,12 @@ def circle_speeds(model, radius, lo, hi, at=None):
     """Speeds in ``(lo, hi)`` where an eigenvalue may have modulus ``radius`` (1/s): candidates for the
     ends of marginally stable ranges (unverified: an extra speed only splits an interval)."""
     at = at or Eigenvalues(model)
-    P = balanced(at.coefficients)
+    P = at.balanced
     n = P.shape[-1]
     shifted = P.copy()
     shifted[0] = shifted[0] - radius * np.eye(n)
     C2 = multiplicative_coefficients(P)
     C2[0] = C2[0] - radius ** 2 * np.eye(len(C2[0]))
-    v = np.concatenate([real_roots(shifted, lo, hi), real_roots(C2, lo, hi)])
+    small = has_quartic_path(model)
+    v = np.concatenate([real_roots(shifted, lo, hi, small), real_roots(C2, lo, hi, small)])
     return np.sort(v[(v > lo) & (v < hi)])

@@ -37,15 +37,27 @@ def characteristic_coefficients(mechanics, speeds):
     return _det2_poly(M, mechanics.damping(v), mechanics.stiffness(v))
 
 
+def characteristic_of(M, C, K):
+    """Coefficients (..., 5) of ``det(M s^2 + C s + K)`` of stacked 2x2 ``M``, ``C``, ``K``."""
+    return _det2_poly(M, C, K)
+
+
 def _quartic_eigenvectors(mechanics, speeds, s):
     """Unit state eigenvectors (n, 4, 4), column i for eigenvalue ``s[:, i]``."""
     v = np.asarray(speeds, dtype=float)
-    K = mechanics.stiffness(v)[:, None]                 # (n, 1, 2, 2)
-    C = mechanics.damping(v)[:, None]
-    M = mechanics.M
+    return quartic_vectors(mechanics.M, mechanics.damping(v), mechanics.stiffness(v), s)
+
+
+def quartic_vectors(M, C, K, s):
+    """Unit state eigenvectors (..., 4, 4), column i for eigenvalue ``s[..., i]``, of stacked 2x2 ``M``
+    (broadcast), ``C`` and ``K`` (..., 2, 2) with roots ``s`` (..., 4)."""
+    M = np.asarray(M)
+    C, K = C[..., None, :, :], K[..., None, :, :]
+    if M.ndim > 2:
+        M = M[..., None, :, :]
 
     def P(i, j):                                  # entry (i, j) of M s^2 + C(v) s + K(v)
-        return (s * M[i, j] + C[..., i, j]) * s + K[..., i, j]
+        return (s * M[..., i, j] + C[..., i, j]) * s + K[..., i, j]
 
     p00, p01, p10, p11 = P(0, 0), P(0, 1), P(1, 0), P(1, 1)
     row1 = np.abs(p00) + np.abs(p01) >= np.abs(p10) + np.abs(p11)   # null vector from the larger row
@@ -53,8 +65,8 @@ def _quartic_eigenvectors(mechanics, speeds, s):
     delta = np.where(row1, p00, -p10)
     zero = (phi == 0) & (delta == 0)
     phi = np.where(zero, 1.0, phi)
-    x = np.stack([phi, delta, s * phi, s * delta], axis=1)
-    return x / np.linalg.norm(x, axis=1, keepdims=True)
+    x = np.stack([phi, delta, s * phi, s * delta], axis=-2)
+    return x / np.linalg.norm(x, axis=-2, keepdims=True)
 
 
 @dataclass(frozen=True, eq=False)

@@ -15,7 +15,9 @@ import numpy as np
 from ...core.results import Result, quantity
 from ...core.tables import Table, complex_columns
 from ...core.frozen import short_repr
-from .eigen import damping_ratio, eigen_sweep, natural_frequency
+from .eigen import (characteristic_of, damping_ratio, eigen_sweep, has_quartic_path, natural_frequency,
+                    quartic_vectors)
+from .quartic import quartic_roots
 from .naming import mode_names, settle_splits, split_rank, standstill_labels
 from .tracking import reorder, track
 from ...core.errors import InputError, short
@@ -112,3 +114,39 @@ def follow_modes(model, speeds):
                  eigenvectors=vectors[len(lead):, :, columns])
 
 
+
+
+def follow_many(models, speeds):
+    """Eigenvalues (D, n, m) of the modes of ``D`` models of one kind at ``speeds`` (m/s), columns in
+    the labels' order of each: ``follow_modes(model, speeds).eigenvalues`` of every model, found at
+    once where that is possible (a Monte Carlo's draws): two-coordinate models (the quartic path)
+    whose speed polynomials have the same degrees, on speeds from 0.  The roots of all quartics are one
+    evaluation, and the models' sequences are tracked as one (each step's assignment is the
+    same as alone; a model's own order is taken relative to its first speed).  Returns ``None``
+    for models that do not qualify (the caller follows them one by one) and the labels of each."""
+    v = check_speeds(speeds)
+    mechs = [m.mechanics for m in models]
+    if not models or v[0] != 0 or not all(has_quartic_path(m) for m in models) or \
+            len({(len(x.C), len(x.K)) for x in mechs}) != 1 or len({tuple(m.families) for m in models}) != 1:
+        return None
+    D, n = len(models), len(v)
+    M = np.stack([x.M for x in mechs])[:, None]                                   # (D, 1, 2, 2)
+    C = np.stack([x.damping(v) for x in mechs])                                    # (D, n, 2, 2)
+    K = np.stack([x.stiffness(v) for x in mechs])
+    coefficients = characteristic_of(np.broadcast_to(M, C.shape), C, K).reshape(D * n, 5)
+    s = quartic_roots(coefficients).reshape(D, n, 4)
+    vectors = quartic_vectors(M, C, K, s).reshape(D * n, 4, 4)
+    values = s.reshape(D * n, 4)
+    order = track(values, vectors).reshape(D, n, 4)
+    out, labelled = np.empty((D, n, 4), dtype=complex), []
+    families = dict(models[0].families)
+    for d in range(D):
+        own = order[d][:, np.argsort(order[d][0])]            # relative to the model's first speed
+        vals = np.take_along_axis(s[d], own, axis=1)
+        vecs = np.take_along_axis(vectors.reshape(D, n, 4, 4)[d], own[:, None, :], axis=2)
+        labels = standstill_labels(vals[0], vecs[0], families)
+        vals = np.take_along_axis(vals, settle_splits(vals, labels), axis=1)
+        ordered = split_rank(labels)
+        out[d] = vals[:, [labels.index(label) for label in ordered]]
+        labelled.append(tuple(ordered))
+    return out, labelled

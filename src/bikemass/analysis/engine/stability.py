@@ -221,10 +221,48 @@ def analyse(model, speeds=None, marginal=MARGINAL_THRESHOLD, stiffness=None):
         exact = (critical.stable if r is None else
                  interval_ranges(lo, hi, boundaries[criterion], lambda x, r=r: bool(np.all(margin(at(x), r) < 0))))
         ranges[criterion] = {"exact": exact, "grid": grid_ranges(v, is_stable(modes.eigenvalues, r).all(axis=1))}
+        inside = _inside_values(lo, hi, boundaries[criterion], modes, tracked)
         for c, label in enumerate(modes.labels):
             mode_ranges[label][criterion] = {
-                "exact": interval_ranges(lo, hi, boundaries[criterion],
-                                         lambda x, c=c, r=r: bool(margin(tracked.root(x, c), r) < 0)),
+                "exact": _joined([(a, b) for a, b, values in inside if margin(values[c], r) < 0]),
                 "grid": grid_ranges(v, is_stable(modes.eigenvalues[:, c], r))}
     return StabilityResult(model, modes, float(marginal), crossings, ranges, mode_ranges, stiffness,
                            critical.unstable_at_start)
+
+
+INSIDE = 1e-6
+"""A grid speed stands for an interval between boundary speeds when it is at least INSIDE (1 + v)
+m/s from both ends (no mode changes sign inside: every boundary is one)."""
+
+
+def _inside_values(lo, hi, boundaries, modes, tracked):
+    """``[(a, b, values)]`` of the intervals between ``lo``, the ``boundaries`` and ``hi`` (as
+    :func:`~bikemass.analysis.engine.ranges.interval_ranges` makes them): every tracked mode's value
+    (m,) inside, at the middle grid speed of the interval when it holds one (no eigenvalue problem),
+    else at its midpoint (the root continuing each mode there)."""
+    v, E = modes.speeds, modes.eigenvalues
+    ends = [lo, *[b for b in boundaries if lo < b < hi], hi]
+    out = []
+    for a, b in zip(ends, ends[1:]):
+        if not b > a:
+            continue
+        first = int(np.searchsorted(v, a + INSIDE * (1 + abs(a)), side="left"))
+        last = int(np.searchsorted(v, b - INSIDE * (1 + abs(b)), side="right")) - 1
+        if first <= last:
+            values = E[(first + last) // 2]
+        else:
+            mid = 0.5 * (a + b)
+            values = np.array([tracked.root(mid, c) for c in range(E.shape[1])])
+        out.append((float(a), float(b), values))
+    return out
+
+
+def _joined(intervals):
+    """``[[start, stop], ...]``: sorted intervals with those that touch joined."""
+    out = []
+    for a, b in intervals:
+        if out and out[-1][1] == a:
+            out[-1][1] = b
+        else:
+            out.append([a, b])
+    return out

@@ -9,13 +9,12 @@ uncertainty use (:mod:`~bikemass.analysis.engine.critical`).
 """
 
 import numpy as np
-from scipy.optimize import linear_sum_assignment
 
 from .eigen import eigen_sweep
 from .modes import follow_modes
 from .naming import WOBBLE, family, is_weave, is_wobble
 from .speeds import DEFAULT_SPEEDS, speed_grid
-from .tracking import reorder, track
+from .tracking import assignments, reorder, track
 
 NAMING_STEP = DEFAULT_SPEEDS[2]
 """Speed step (m/s) of the grid on which modes are followed for naming when no analysis gives one
@@ -37,7 +36,7 @@ class TrackedModes:
 
     def __init__(self, model, modes, at):
         self.model, self.modes, self.at = model, modes, at
-        self._cells = {}
+        self._cells, self._guesses = {}, {}
 
     @classmethod
     def up_to(cls, model, lo, top, at):
@@ -63,20 +62,28 @@ class TrackedModes:
             sub = np.linspace(s[k], s[k + 1], self.SUBSTEPS + 1)
             sweep = eigen_sweep(self.model, sub)
             start = self.modes.eigenvalues[k]
-            first = linear_sum_assignment(np.abs(start[:, None] - sweep.eigenvalues[0][None, :]))[1]
+            first = assignments(np.abs(start[:, None] - sweep.eigenvalues[0][None, :])[None])[0]
             order = track(sweep.eigenvalues, sweep.eigenvectors)[:, first]
             values, _ = reorder(sweep.eigenvalues, sweep.eigenvectors, order)
             cell = self._cells[k] = (sub, values)
         return cell
 
     def guess(self, v):
-        """Each mode's value (m,) at speed ``v`` by interpolation on the fine sub-grid."""
+        """Each mode's value (m,) at speed ``v`` by interpolation on the fine sub-grid (a fresh array;
+        memoised per speed: the ranges ask for every mode at one speed)."""
+        v = float(v)
+        out = self._guesses.get(v)
+        if out is None:
+            out = self._guesses[v] = self._guess(v)
+        return out.copy()
+
+    def _guess(self, v):
         s, values = self.modes.speeds, self.modes.eigenvalues
         if len(s) == 1:
             return values[0]
-        k = int(np.clip(np.searchsorted(s, v) - 1, 0, len(s) - 2))
+        k = min(max(int(np.searchsorted(s, v)) - 1, 0), len(s) - 2)
         sub, vals = self._cell(k)
-        j = int(np.clip(np.searchsorted(sub, v) - 1, 0, len(sub) - 2))
+        j = min(max(int(np.searchsorted(sub, v)) - 1, 0), len(sub) - 2)
         t = (v - sub[j]) / (sub[j + 1] - sub[j])
         return vals[j] + t * (vals[j + 1] - vals[j])
 

@@ -1,7 +1,8 @@
 """Following eigenvalues across speed: which root at one speed continues which at the next.
 
 Between neighbouring speeds every eigenvalue is matched to one at the next speed by an optimal
-assignment (``scipy.optimize.linear_sum_assignment``) on the cost::
+assignment on the cost (every permutation at once for a handful of roots, :func:`assignments`;
+``scipy.optimize.linear_sum_assignment`` beyond)::
 
     |l_j(k+1) - l_i(k)| / scale_k  +  (1 - MAC_ij)  +  HALF_PLANE_PENALTY [both complex, Im of opposite signs]
 
@@ -25,10 +26,40 @@ cheapest that breaks no pair wins.
 import numpy as np
 from itertools import permutations
 
-from scipy.optimize import linear_sum_assignment
-
 HALF_PLANE_PENALTY = 10.0
 """Cost of matching an upper-half-plane root to a lower one (the largest other cost is about 3)."""
+
+
+BRUTE_FORCE_MAX = 4
+"""Up to this many roots (24 permutations: the Whipple bicycle's) every assignment of a sweep is found at
+once by trying every permutation on all steps together (numpy, no scipy); beyond, the permutations
+outnumber what scipy's solver costs per step."""
+
+
+def assignments(costs):
+    """The optimal assignment of each cost matrix of the stack ``costs`` (k, m, m): (k, m) int, row i
+    assigned to column ``out[:, i]`` (the least total cost; the first permutation in lexicographic
+    order among equal ones)."""
+    costs = np.asarray(costs, dtype=float)
+    k, m = costs.shape[0], costs.shape[-1]
+    if k == 0:
+        return np.zeros((0, m), dtype=int)
+    if m <= BRUTE_FORCE_MAX:
+        perms = _permutations(m)                                      # (p, m)
+        totals = costs[:, np.arange(m)[None, :], perms].sum(axis=-1)  # (k, p)
+        return perms[np.argmin(totals, axis=1)]
+    from scipy.optimize import linear_sum_assignment      # lazy: scipy only for models of over 4 roots
+    return np.array([linear_sum_assignment(c)[1] for c in costs], dtype=int).reshape(k, m)
+
+
+_PERMUTATIONS = {}
+
+
+def _permutations(m):
+    out = _PERMUTATIONS.get(m)
+    if out is None:
+        out = _PERMUTATIONS[m] = np.array(list(permutations(range(m))), dtype=int).reshape(-1, m)
+    return out
 
 
 def step_costs(values, vectors):
@@ -36,7 +67,7 @@ def step_costs(values, vectors):
     dist = np.abs(values[1:, None, :] - values[:-1, :, None])
     scale = np.maximum(np.abs(values).max(axis=1), 1.0)
     scale = np.maximum(scale[1:], scale[:-1])[:, None, None]
-    mac = np.abs(np.einsum("kai,kaj->kij", vectors[:-1].conj(), vectors[1:])) ** 2
+    mac = np.abs(np.matmul(np.swapaxes(vectors[:-1], 1, 2).conj(), vectors[1:])) ** 2     # x_i^H x_j
     sign = np.sign(values.imag)
     flip = (sign[:-1, :, None] * sign[1:, None, :]) < 0
     return dist / scale + (1.0 - mac) + HALF_PLANE_PENALTY * flip
@@ -85,14 +116,17 @@ def track(values, vectors):
     costs = step_costs(values, vectors)
     part = partners(values)
     n, m = values.shape
-    steps = np.array([linear_sum_assignment(c)[1] for c in costs], dtype=int).reshape(n - 1, m)
+    steps = assignments(costs)
     for k in np.flatnonzero(_breaks(steps, part[:-1], part[1:]).any(axis=1)):
         steps[k] = _repaired(steps[k], costs[k], part[k], part[k + 1])
-    order = np.empty((n, m), dtype=int)
-    order[0] = np.arange(m)
-    for k, step in enumerate(steps):              # row i (speed k) -> column step[i] (speed k + 1)
-        order[k + 1] = step[order[k]]
-    return order
+    # row i (speed k) -> column steps[k, i] (speed k + 1); order[k + 1] = steps[k] o ... o steps[0], the
+    # prefix compositions by doubling (log2(n) vector steps instead of a Python loop over the speeds)
+    prefix = steps.copy()
+    d = 1
+    while d < len(prefix):
+        prefix[d:] = prefix[d:][np.arange(len(prefix) - d)[:, None], prefix[:-d]]
+        d *= 2
+    return np.concatenate([np.arange(m)[None, :], prefix]) if len(prefix) else np.arange(m)[None, :].repeat(n, 0)
 
 
 def reorder(values, vectors, order):

@@ -4,23 +4,40 @@ inputs, sampled at ``0, dt, 2 dt, ..., T`` and exact at the samples (the matrix 
 
 A step of size ``a`` (N m) holds the input at ``a`` from ``t = 0``; an impulse of size ``J``
 (N m s) adds ``B J`` to the state at ``t = 0``, so the first sample is the state just after it.
+
+With the held inputs as further states (``u' = 0``) the response is ``z[k] = Phi^k z[0]`` with one
+matrix exponential ``Phi`` over a step: the samples are filled by doubling (``z[m:2m] = z[0:m]
+(Phi^m)^T``, then ``Phi^2m = (Phi^m)^2``), ``log2(n)`` matrix products for ``n`` samples instead of a
+Python loop of ``n`` steps.
+
+An unstable model's response grows without bound (at standstill the bicycle falls: roll grows like
+``exp(3 t)``).  Where a state passes :data:`DIVERGED` times its unit's bound of :data:`LIMITS` (far
+past any meaning of a linear model about the upright run, and long before the numbers overflow)
+the response stops at the last sample before, with a one-line :class:`~bikemass.core.errors.BikemassWarning`.
+Initial values and input sizes beyond the bounds of :data:`LIMITS` are refused.
 """
 
 import math
 import numbers
+import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike
 
 from ...core.choices import closest
 from ...core.display import Display
-from ...core.errors import InputError, short, wrong_type
+from ...core.errors import BikemassWarning, InputError, short, wrong_type
 from ...core.frozen import FrozenMap, readonly, short_repr
 from ...core.tables import Table
-from .discrete import march
+from .discrete import hold_matrices
 from .plant import System, check_speed, input_index, linear_model
+
+if TYPE_CHECKING:                          # the annotations' names only
+    from numpy.typing import ArrayLike
+
 
 KINDS = ("step", "impulse")
 """How an input is applied."""
@@ -31,10 +48,21 @@ MAX_SAMPLES = 1_000_000
 DEFAULT_DURATION = 5.0
 DEFAULT_STEP = 0.01
 
+LIMITS = {"rad": math.pi, "rad/s": 100.0, "m": 1e3, "m/s": 100.0, "N": 1e5, "N m": 1e4, "N m s": 1e4}
+"""Largest magnitude of an initial value, a step or an impulse, by unit (another unit: 1e6): half a
+turn, 100 rad/s, 1 km, 100 m/s, 100 kN, 10 kN m, 10 kN m s.  Beyond them a linear model about the
+upright run means nothing."""
+DEFAULT_LIMIT = 1e6
+DIVERGED = 1e3
+"""A response stops where a state passes DIVERGED times its unit's :data:`LIMITS`."""
 
-def _number(value, source, key):
+
+def _number(value, source, key, unit=None):
     if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value):
         raise InputError(source, key, f"a finite number, got {short(value)}")
+    if unit is not None and not abs(value) <= LIMITS.get(unit, DEFAULT_LIMIT):
+        raise InputError(source, key, f"at most {LIMITS.get(unit, DEFAULT_LIMIT):g} {unit} in magnitude (a linear "
+                         f"model about the upright run), got {short(value)}")
     return float(value)
 
 
@@ -49,7 +77,8 @@ def initial_state(model, initial):
         if name not in model.state_names:
             raise InputError("initial", short(name), f"a state of the model: {', '.join(model.state_names)}"
                              f"{closest(name, model.state_names)}")
-        x0[model.state_index(name)] = _number(value, "initial", name)
+        i = model.state_index(name)
+        x0[i] = _number(value, "initial", name, model.states[i].unit)
     return x0
 
 
@@ -65,7 +94,7 @@ def applied_inputs(model, inputs):
         if not (isinstance(spec, (tuple, list)) and len(spec) == 2 and spec[0] in KINDS):
             raise InputError("inputs", short(name), f"(kind, size) with kind one of {', '.join(KINDS)}, "
                              f"got {short(spec)}")
-        out[name] = (spec[0], _number(spec[1], "inputs", name))
+        out[name] = (spec[0], _number(spec[1], "inputs", name, "N m" if spec[0] == "step" else "N m s"))
     return out
 
 
@@ -177,8 +206,15 @@ def simulate(system: System, speed: float, initial: "Mapping[str, float] | None"
     Raises
     ------
     InputError
-        A bad speed, an unknown state or input, an input other than a step or an impulse, or a
-        duration or step out of range (at most 10^6 samples).
+        A bad speed, an unknown state or input, an input other than a step or an impulse, an initial
+        value or input size beyond :data:`LIMITS`, or a duration or step out of range (at most 10^6
+        samples).
+
+    Warns
+    -----
+    BikemassWarning
+        The response of an unstable model grew past :data:`DIVERGED` times a state's bound: it stops
+        at the last sample before (``time`` is shorter than ``duration``).
 
     See Also
     --------
@@ -207,5 +243,40 @@ def simulate(system: System, speed: float, initial: "Mapping[str, float] | None"
             x0 = x0 + B[:, j] * size
         else:
             u[j] = size
-    values = march(A, B, x0, np.broadcast_to(u, (len(t), len(u))), float(step))
-    return TimeResponse(v, t, model.state_names, tuple(s.unit for s in model.states), values, applied)
+    Phi, G0, _ = hold_matrices(A, B, float(step))
+    n, m = len(x0), len(u)
+    step_matrix = np.block([[Phi, G0], [np.zeros((m, n)), np.eye(m)]])
+    values = powers_applied(step_matrix, np.concatenate([x0, u]), len(t))[:, :n]
+    units = tuple(s.unit for s in model.states)
+    kept = _bounded(values, units)
+    if kept < len(t):
+        bound = np.array([DIVERGED * LIMITS.get(unit, DEFAULT_LIMIT) for unit in units])
+        worst = int(np.argmax(~(np.abs(values[kept]) <= bound)))
+        warnings.warn(f"the response grows without bound at {v:g} m/s (an unstable model): {model.state_names[worst]} "
+                      f"passes {bound[worst]:g} {units[worst]} after {t[kept]:g} s; stopped at {t[kept - 1]:g} s",
+                      BikemassWarning, stacklevel=2)
+        t, values = t[:kept], values[:kept]
+    return TimeResponse(v, t, model.state_names, units, values, applied)
+
+
+def powers_applied(step_matrix, z0, count):
+    """``z[k] = step_matrix^k z0`` for ``k < count`` (count, N), by doubling: ``log2(count)`` matrix
+    products (overflow gives inf or nan, silently: the caller bounds the samples)."""
+    z = np.empty((count, len(z0)))
+    z[0] = z0
+    P, filled = np.asarray(step_matrix, dtype=float), 1
+    with np.errstate(over="ignore", invalid="ignore"):
+        while filled < count:
+            take = min(filled, count - filled)
+            z[filled:filled + take] = z[:take] @ P.T
+            filled += take
+            if filled < count:
+                P = P @ P
+    return z
+
+
+def _bounded(values, units):
+    """How many leading samples have every state within DIVERGED times its unit's bound (and finite)."""
+    bound = np.array([DIVERGED * LIMITS.get(unit, DEFAULT_LIMIT) for unit in units])
+    bad = ~np.all(np.abs(values) <= bound, axis=1)
+    return int(np.argmax(bad)) if bad.any() else len(values)
