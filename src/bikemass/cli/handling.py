@@ -470,13 +470,16 @@ def _finite(x):
 
 
 def handling_text(result, title):
-    """The gains, stability and HQM peak at every speed as a text table."""
+    """The gains, stability and HQM peak at every speed as a text table: the level ``unstable``
+    where the closed loop is (the peak of an unstable loop grades nothing and is not shown),
+    ``-`` without gains, and the gains' source with why a speed has no level."""
     # lazy: the library loads numpy; bikemass --help must not
     from ..analysis.handling.gains import NAMES
     # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import table
-    rows = [[v, *(None if g is None else getattr(g, n) for n in NAMES), "yes" if ok else "no", _finite(p),
-             _finite(w), level or "-", source]
+    rows = [[v, *(None if g is None else getattr(g, n) for n in NAMES), "yes" if ok else "no",
+             _finite(p) if level else None, _finite(w) if level else None,
+             level or ("-" if g is None else "unstable" if not ok else "none"), source]
             for v, g, ok, p, w, level, source in zip(result.speeds.tolist(), result.gains, result.closed_loop_stable,
                                                      result.hqm_peak, result.hqm_peak_frequency, result.levels,
                                                      result.gain_source)]

@@ -73,6 +73,11 @@ a value that sits on a rounding tie in exact arithmetic (-1.23625 shown to 4 dec
 rounds the same way on every machine instead of following its last-bit noise."""
 
 
+FIXED_LIMIT = 1e15
+"""From this size on a fixed-point format (``{:.4f}``) shows a float in exponent form instead
+(``1e+300``, not a 300-digit integer): past :data:`SIGNIFICANT` digits the rest is noise."""
+
+
 def as_written(x, unit):
     """The float ``x`` (in ``unit``) as bikemass writes it: 0.0 when below :data:`ZERO` in a
     unit of :data:`ZERO_UNITS` (never -0.0), else ``x`` with every digit."""
@@ -89,9 +94,13 @@ def as_shown(x):
 
 
 def formatted(fmt, x):
-    """``fmt.format(x)`` as a text table shows a float: from :func:`as_shown`, and a value that
-    rounds to zero without a minus sign (``-0.0000`` is written ``0.0000``)."""
-    text = fmt.format(as_shown(x))
+    """``fmt.format(x)`` as a text table shows a float: from :func:`as_shown`, a value that
+    rounds to zero without a minus sign (``-0.0000`` is written ``0.0000``), and a value of
+    :data:`FIXED_LIMIT` or more in a fixed-point format in exponent form."""
+    x = as_shown(x)
+    if np.isfinite(x) and abs(x) >= FIXED_LIMIT and fmt.rstrip("}").endswith("f"):
+        return f"{x:.{SIGNIFICANT}g}"
+    text = fmt.format(x)
     return fmt.format(0.0) if text == fmt.format(-0.0) else text
 
 
