@@ -307,13 +307,19 @@ STUDY_MARK = "report.md"
 """A folder holding this file is taken to be an earlier run's output, which :func:`new_folder` may replace."""
 
 
+def holds_files(folder):
+    """Whether ``folder`` holds a file anywhere in it: empty folders alone (what a run stopped
+    by a full disk may leave) are no content to protect."""
+    return any(files for _, _, files in os.walk(folder))
+
+
 def check_folder(out, mark=STUDY_MARK, option="(folder)"):
     """Refuse an output folder that :func:`new_folder` could not replace safely."""
     out = Path(out)
     if out.exists() or out.is_symlink():
         if not out.is_dir():
             raise InputError(out, option, "an output folder, got a file")
-        if any(out.iterdir()) and not (out / mark).is_file():
+        if holds_files(out) and not (out / mark).is_file():
             raise InputError(out, option, f"a new or empty folder, or an earlier output folder holding "
                                               f"{mark} (this one holds other files; nothing was changed)")
     _check_folder(out.resolve().parent, out, option)
