@@ -275,11 +275,24 @@ def _pairs(items, option):
     return out
 
 
+def _once(pairs, option):
+    """``pairs`` (``[(name, value)]``), InputError if a name is given twice (the option repeated, or
+    twice in one list): the last would silently win."""
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..core.errors import InputError
+    seen = {}
+    for name, value in pairs:
+        if name in seen:
+            raise InputError(option, f"{name}={value}", f"each name once ({name}={seen[name]} was given too)")
+        seen[name] = value
+    return pairs
+
+
 def _initial(args):
     # lazy: the library loads numpy; bikemass --help must not
     from ..core.errors import InputError
     values = {}
-    for name, value in _pairs(args.initial, "--initial"):
+    for name, value in _once(_pairs(args.initial, "--initial"), "--initial"):
         try:
             values[name] = float(value)
         except ValueError:
@@ -295,7 +308,7 @@ def _inputs(args):
     # lazy: the library loads numpy; bikemass --help must not
     from ..core.errors import InputError
     applied = {}
-    for name, value in _pairs(args.input, "--input"):
+    for name, value in _once(_pairs(args.input, "--input"), "--input"):
         kind, sep, size = value.partition(":")
         expected = "INPUT=step:SIZE (N m) or INPUT=impulse:SIZE (N m s)"
         try:

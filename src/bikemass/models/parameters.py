@@ -9,7 +9,9 @@ from dataclasses import asdict, dataclass, fields, replace
 
 import numpy as np
 
+from ..core.choices import closest
 from ..core.display import Display, html_table
+from ..core.errors import InputError
 
 DESCRIPTIONS = {
     "w": "wheelbase [m]", "c": "trail [m]", "lam": "steer-axis tilt [rad]",
@@ -80,8 +82,24 @@ class BenchmarkParameters(Display):
         return {k: float(v) for k, v in asdict(self).items()}
 
     def replace(self, **changes):
-        """A copy with some parameters changed."""
-        return replace(self, **changes)
+        """A copy with some parameters changed (by their names, SI): InputError for a name that is
+        not one of the 26; a value no bicycle has is warned about as in a parameter file
+        (:func:`~bikemass.models.plausibility.check_parameter_file`), and one the model is not
+        defined for is refused by every analysis."""
+        # lazy: plausibility imports this module (its checks are of these parameters)
+        from .plausibility import check_parameter_file
+        for name in changes:
+            if name not in NAMES:
+                meant = [k for k, text in DESCRIPTIONS.items() if name.lower().replace("_", " ") in text.lower()]
+                hint = closest(name, NAMES) or (f" ({name} is {' or '.join(meant[:3])})" if meant else "")
+                raise InputError("replace", name, f"one of the 26 benchmark parameter names ({', '.join(NAMES)})"
+                                 f"{hint}")
+        changed = replace(self, **changes)
+        try:
+            check_parameter_file(changed, "replace")          # its warnings, as a file's
+        except InputError:
+            pass                                               # every analysis refuses it, naming the key
+        return changed
 
     def display_rows(self):
         """``[(name, value, SI unit)]`` of the 26 parameters, in the Meijaard order."""

@@ -172,8 +172,6 @@ RESTART_HINT = "sweep --restart starts it over, or use another --out"
 
 def _changes(old, new):
     """Why the record ``old`` of a folder does not fit this run's ``new`` (a phrase), or ``None``."""
-    if old["fingerprint"] != new["fingerprint"]:
-        return f"it holds {short(old.get('spec'))}, a different sweep"
     if not isinstance(old.get("bikemass"), dict) or not isinstance(old.get("inputs"), dict):
         return "it was made by an earlier bikemass that did not record its input files' content"
     was, now = old["bikemass"], new["bikemass"]
@@ -205,7 +203,12 @@ def _check_folder(spec, out, restart=False):
         if restart:
             _clear(out)
             return record
-        why = _changes(_read_stamp(stamp), record)
+        old = _read_stamp(stamp)
+        if old["fingerprint"] != record["fingerprint"]:
+            raise InputError(out, STAMP, f"results of the same spec to resume (this folder holds "
+                             f"{short(old.get('spec'))}, a different sweep): use another --out, or --restart to "
+                             "replace it")
+        why = _changes(old, record)
         if why is not None:
             raise InputError(out, STAMP, f"the same spec, input files and bikemass to resume the sweep (here "
                              f"{why}): {RESTART_HINT}")

@@ -15,6 +15,7 @@ server's folder.
 """
 
 import contextlib
+import dataclasses
 import functools
 import hashlib
 import os
@@ -304,7 +305,7 @@ class Engine:
         base = self.base_parameters(state.bicycle_key, state.rider_key, state.combine)
         if not state.overrides:
             return base
-        params = base.replace(**dict(state.overrides))
+        params = dataclasses.replace(base, **dict(state.overrides))
         check_parameter_file(params, SOURCE)
         warn_parameters(params, SOURCE)
         return params

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core.display import Display
+from ...core.real import finite_real
 from ...core.errors import BikemassWarning, InputError, short
 from ...core.frozen import readonly, short_repr
 from ...core.limits import MAX_SPEED
@@ -34,13 +35,16 @@ GRADED_SOURCES = ("tuned", "given")
 NO_GAINS = "none: the published procedure found no gains at this speed"
 
 
-def gain_source(given, found, stable, peak):
+def gain_source(given, found, stable, peak, max_real=0.0):
     """What :attr:`HandlingResult.gain_source` says of one speed: where its gains came from
     (``given`` or tuned; ``found``: whether there are any) and, unless the speed is graded (a
-    ``stable`` closed loop and a finite HQM ``peak``), why it has no handling level."""
+    ``stable`` closed loop and a finite HQM ``peak``), why it has no handling level
+    (``max_real``: the closed loop's largest real part, 1/s; ``nan`` where it overflowed)."""
     if not found:
         return NO_GAINS
     source = GRADED_SOURCES[bool(given)]
+    if not math.isfinite(max_real):
+        return f"{source}: closed loop not computable (the gains overflow it), no handling level"
     if not stable:
         return f"{source}: closed loop unstable, no handling level"
     if not math.isfinite(peak):
@@ -52,7 +56,7 @@ def check_speeds(speeds):
     """``speeds`` (m/s) as an increasing 1-D float array in [0, MAX_SPEED]; InputError otherwise."""
     values = np.atleast_1d(np.asarray(speeds, dtype=object))
     if values.ndim != 1 or not 1 <= values.size <= MAX_SURVEY_SPEEDS or not all(
-            isinstance(v, numbers.Real) and not isinstance(v, bool) and math.isfinite(v) and 0 <= v <= MAX_SPEED
+            finite_real(v) and 0 <= v <= MAX_SPEED
             for v in values):
         raise InputError("speeds", short(speeds), f"1 to {MAX_SURVEY_SPEEDS} forward speeds in m/s, finite, "
                          f"in 0..{MAX_SPEED:g}")
@@ -71,8 +75,10 @@ def given_gains(gains, speeds):
         return v, [None] * len(v)
     if isinstance(gains, (str, os.PathLike)):
         table, source = read_gain_table(gains), os.fspath(gains)
+    elif isinstance(gains, Mapping) and not gains:
+        raise InputError("gains", "{}", "{speed in m/s: five gains} with at least one speed")
     elif isinstance(gains, Mapping):
-        table, source = {float(k): as_gains(g, "gains", f"speed {k}") for k, g in gains.items()}, "gains"
+        table, source = {_speed_key(k): as_gains(g, "gains", f"speed {k}") for k, g in gains.items()}, "gains"
     else:
         fixed = as_gains(gains)
         v = check_speeds(speeds) if speeds is not None else None
@@ -89,6 +95,20 @@ def given_gains(gains, speeds):
                              f"file: {', '.join(f'{s:g}' for s in known[:12])}{', ...' if len(known) > 12 else ''})")
         chosen.append(table[float(known[k])])
     return v, chosen
+
+
+def _speed_key(key):
+    """A key of a ``{speed: gains}`` mapping as a speed (m/s); InputError unless a finite number >= 0."""
+    if isinstance(key, bool) or not isinstance(key, (numbers.Real, str)):
+        raise InputError("gains", short(key), "{speed in m/s: five gains}: a speed as each key")
+    try:
+        speed = float(key)
+    except ValueError:
+        raise InputError("gains", short(key), "{speed in m/s: five gains}: a speed as each key (for one set of "
+                         "gains at every speed, five numbers or bm.Gains)") from None
+    if not (math.isfinite(speed) and speed >= 0):
+        raise InputError("gains", short(key), "{speed in m/s: five gains}: a finite speed >= 0 as each key")
+    return speed
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -250,7 +270,7 @@ def handling(system: "LinearModel | BenchmarkParameters", speeds: "ArrayLike | N
             except GainsNotFound as exc:
                 warnings.warn(f"{exc}; that speed is left out", BikemassWarning, stacklevel=2)
         row = _at_speed(plant, g)
-        source = gain_source(given is not None, g is not None, row[1], row[3])
+        source = gain_source(given is not None, g is not None, row[1], row[3], row[2])
         if g is not None and source not in GRADED_SOURCES:
             origin, reason = source.split(": ", 1)
             warnings.warn(f"at {speed:g} m/s with the {origin} gains: {reason}", BikemassWarning, stacklevel=2)
@@ -267,5 +287,7 @@ def _at_speed(plant, gains):
     if gains is None:
         return None, False, np.nan, np.nan, np.nan, np.full(len(CURVE_FREQUENCIES), np.nan)
     closed = closed_loop(plant, gains)
+    if not np.all(np.isfinite(closed.A)):               # gains so large the loop overflows: nothing to grade
+        return closed.gains, False, np.nan, np.nan, np.nan, np.full(len(CURVE_FREQUENCIES), np.nan)
     peak, where = hqm_peak(plant, gains)
     return closed.gains, closed.stable, closed.max_real, peak, where, hqm(plant, gains, CURVE_FREQUENCIES)
