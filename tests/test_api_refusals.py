@@ -167,3 +167,11 @@ def test_the_facade_returns_or_raises_input_error(name, a, b):
             CALLS[name](a, b)
         except bm.InputError as exc:
             assert str(exc) and "\n" not in str(exc)
+
+
+def test_the_names_module_lists_the_parameter_fields():
+    """Contract: models.names.NAMES (read by the plausibility checks) is BenchmarkParameters' fields."""
+    import dataclasses
+
+    from bikemass.models import names
+    assert names.NAMES == tuple(f.name for f in dataclasses.fields(bm.BenchmarkParameters)) == bm.PARAMETER_NAMES

@@ -12,6 +12,7 @@ import numpy as np
 from ..core.choices import closest
 from ..core.display import Display, html_table
 from ..core.errors import InputError
+from .names import NONNEGATIVE, POSITIVE, SIGNED  # noqa: F401 (their home was here; importers keep it)
 
 DESCRIPTIONS = {
     "w": "wheelbase [m]", "c": "trail [m]", "lam": "steer-axis tilt [rad]",
@@ -126,7 +127,8 @@ class BenchmarkParameters(Display):
 
 
 NAMES = tuple(f.name for f in fields(BenchmarkParameters))
-"""The 26 parameter names in the Meijaard order."""
+"""The 26 parameter names in the Meijaard order (:data:`bikemass.models.names.NAMES`, which the
+plausibility checks read without importing this module)."""
 
 
 def dimension(name):
@@ -143,14 +145,6 @@ def parameter_units():
     return {k: d[d.index("[") + 1:-1] for k, d in DESCRIPTIONS.items()}
 
 
-SIGNED = ("lam", "xB", "zB", "xH", "zH", "IBxz", "IHxz", "c")
-"""Parameters that may be zero or negative (``lam``'s range is checked apart)."""
-POSITIVE = ("w", "g", "mB", "mH")
-"""Parameters that must be positive: the model divides by the wheelbase and by the masses of the
-whole bicycle and of the front assembly."""
-NONNEGATIVE = tuple(k for k in NAMES if k not in SIGNED + POSITIVE)
-"""Wheel radii, wheel masses and moments of inertia: zero is a legitimate limit (the two-mass-skate
-bicycle of Kooijman et al. 2011 has point wheels without mass and point masses without inertia)."""
 SPEED_KEY = "v"
 """The speed BicycleParameters' parameter-set files hold beside the 26 names (m/s): not a bicycle
 parameter, read as the file's speed."""

@@ -22,7 +22,7 @@ import numpy as np
 
 from ..core.errors import BikemassWarning, InputError, short
 from ..core.real import finite_real
-from .parameters import NAMES, NONNEGATIVE, POSITIVE
+from .names import NAMES, NONNEGATIVE, POSITIVE
 
 RELATIVE_TOLERANCE = 1e-9
 """Asymmetry, negative moments and triangle excess below this fraction of the largest moment pass."""
