@@ -46,7 +46,7 @@ from contextlib import contextmanager
 from pathlib import Path
 
 from .. import __version__
-from ..core.errors import InputError, short, wrong_type
+from ..core.errors import InputError, one_line, short, wrong_type
 from ..core.gate import read_bytes, record_contents
 from ..core.output import holds_files, write_atomic
 from ..models.plausibility import warn
@@ -506,13 +506,14 @@ def _client(distributed, workers, scheduler):
         try:
             if not isinstance(scheduler, str):
                 raise ValueError(f"an address string or a distributed.Client, got {type(scheduler).__name__}")
-            if distributed.comm.parse_address(scheduler)[0] == "inproc":
-                raise ValueError("an inproc:// address names a scheduler inside one Python process; pass its "
-                                 "distributed.Client instead, or a tcp:// address")
+            scheme = distributed.comm.parse_address(scheduler)[0]
+            if scheme not in SCHEMES:
+                raise ValueError(f"an address tcp://HOST:PORT, ws:// or wss://; {scheme}:// needs more than an "
+                                 "address: connect a distributed.Client yourself and pass it to bm.sweep")
             distributed.comm.resolve_address(scheduler)      # a malformed address: one line, no Client made
             client = _connected(distributed, scheduler)
-        except (OSError, TimeoutError, ValueError) as exc:
-            raise InputError("--scheduler", scheduler, f"a running Dask scheduler ({exc})") from None
+        except Exception as exc:                  # whatever distributed raises while connecting: no scheduler
+            raise InputError("--scheduler", scheduler, f"a running Dask scheduler ({one_line(exc, 300)})") from None
         with client:
             yield client
         return
@@ -520,6 +521,8 @@ def _client(distributed, workers, scheduler):
         yield client
 
 
+SCHEMES = ("tcp", "ws", "wss")
+"""The schemes a scheduler address may have: the ones a client reaches with an address alone."""
 CONNECT_DEADLINE = 20
 """Seconds a scheduler has to answer (distributed's own 10 s timeout does not bound a listener that
 accepts the connection and never speaks)."""
