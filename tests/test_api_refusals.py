@@ -106,6 +106,10 @@ def test_shipped_bicycles_raise_no_absurdity_warning(name):
     (lambda: bm.Gains(None, 1, 2, 3, 4), "gains: k_delta: a finite number"),
     (lambda: bm.stability(BENCHMARK, marginal=1e300), "marginal"),
     (lambda: bm.stability(BENCHMARK, speeds=[10 ** 400]), "speeds"),
+    (lambda: bm.sensitivity(BENCHMARK, None, 10 ** 400), "vmax"),
+    (lambda: bm.uncertainty("jamis", {"mB": 10 ** 400}), "a finite standard deviation"),
+    (lambda: bm.load_bicycle({}, 1e300), "a name is a string"),
+    (lambda: bm.plot_handling(bm.handling(BENCHMARK, [5.0]), stable_speeds=[1.0]), "stable_speeds"),
 ])
 def test_the_api_refuses_in_one_input_error(call, needle):
     with pytest.raises(bm.InputError, match=None) as info:
@@ -154,6 +158,10 @@ CALLS = {
     "matrices": lambda a, b: bm.matrices(BENCHMARK, a),
     "speeds": lambda a, b: bm.speeds(a, b),
     "Gains": lambda a, b: bm.handling(BENCHMARK, [5.0], gains=bm.Gains(a, b, 12.66, 0.18, 0.1)),
+    "sensitivity stiffness, vmax": lambda a, b: bm.sensitivity(BENCHMARK, a, b),
+    "uncertainty spreads, method": lambda a, b: bm.uncertainty(BENCHMARK, {"mB": a}, method=b),
+    "load_bicycle name, size": lambda a, b: bm.load_bicycle("jamis", a, b),
+    "Scenario rider, stiffness": lambda a, b: bm.Scenario("benchmark", a, b).build(),
 }
 
 

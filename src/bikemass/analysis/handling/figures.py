@@ -10,7 +10,7 @@ from .mode_shapes import ModeShapes
 from .quality import LEVEL_BOUNDS
 from .survey import HandlingResult
 from .time_response import TimeResponse
-from ...core.errors import wrong_type
+from ...core.errors import InputError, short, wrong_type
 from ...plots.figure import Figure, new_figure
 
 BODE_SIZE = (6.4, 5.2)
@@ -213,6 +213,18 @@ def _level_bands(ax, top):
                 ha="right", va="center", fontsize="x-small", color="0.35")
 
 
+def _speed_ranges(ranges):
+    """``ranges`` as ``((start, stop), ...)`` of finite speeds (m/s); InputError otherwise."""
+    expected = "((start, stop), ...) in m/s, e.g. bm.stability(p).stable_speeds"
+    try:
+        pairs = tuple((float(a), float(b)) for a, b in ranges)
+    except (TypeError, ValueError, OverflowError):
+        raise InputError("stable_speeds", short(ranges), expected) from None
+    if not all(np.isfinite(pair).all() for pair in pairs):
+        raise InputError("stable_speeds", short(ranges), f"finite speeds: {expected}")
+    return pairs
+
+
 def plot_handling(result: HandlingResult, title: str = "", size: "tuple[float, float] | None" = None,
                   stable_speeds: "tuple[tuple[float, float], ...]" = ()) -> Figure:
     """Figure: the handling quality metric (HQM) against frequency at every speed (left) and its
@@ -256,6 +268,7 @@ def plot_handling(result: HandlingResult, title: str = "", size: "tuple[float, f
     """
     if not isinstance(result, HandlingResult):
         raise wrong_type("result", result, "a HandlingResult (bm.handling)")
+    stable_speeds = _speed_ranges(stable_speeds)
     fig = new_figure(size or HANDLING_SIZE)
     curves, peaks = fig.subplots(1, 2)
     graded = result.graded
