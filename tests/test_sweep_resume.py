@@ -45,6 +45,8 @@ def folder(tmp_path):
     (here / "bike.yaml").write_text((ROOT / "frames" / "jamis.yaml").read_text())
     (here / "tyres.yaml").write_text(TYRES)
     (here / "frame.yaml").write_text(FRAME)
+    (here / "body.yaml").write_text((ROOT / "bodies" / "thesis_rider.yaml").read_text())
+    (here / "pose.yaml").write_text("body: body.yaml\nbike: jamis\nchain: {torso_lean: 30 deg, hands: hoods}\n")
     return here
 
 
@@ -57,6 +59,10 @@ def folder(tmp_path):
      lambda t: t.replace("20000.0", "10000.0")),
     ("bike: benchmark\nvary:\n  stiffness: [infinite, frame.yaml]\nchunk: 1\n", "frame.yaml",
      lambda t: t.replace("6000.0", "5000.0")),
+    ("bike: jamis\nrider: pose.yaml\nvary:\n  c: [0.06, 0.08]\nchunk: 1\n", "pose.yaml",       # the rider's pose
+     lambda t: t.replace("30 deg", "35 deg")),
+    ("bike: jamis\nrider: pose.yaml\nvary:\n  c: [0.06, 0.08]\nchunk: 1\n", "body.yaml",       # a file the pose
+     lambda t: t.replace("mass: 41.05", "mass: 45.05")),                                         # names (cached)
 ])
 def test_a_resume_after_an_input_file_changed_is_refused_or_restarted(tmp_path, capsys, spec_text, changed, edit):
     here = folder(tmp_path)

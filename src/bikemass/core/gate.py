@@ -89,6 +89,19 @@ def record_contents():
         _CONTENTS.reset(token)
 
 
+def note_read(path):
+    """Under an active :func:`record_contents`, record ``path`` as read even where a cache of the
+    caller's served its content without reading it (a cache keyed by the file's modification
+    time: materials, chart defaults, bodies, yeadon measurements)."""
+    seen = _CONTENTS.get()
+    if seen is None or os.path.realpath(path) in seen:
+        return
+    try:
+        read_bytes(path)
+    except InputError:
+        pass                                          # the reader that needs it says what is wrong
+
+
 def was_read(path):
     """Whether ``path`` is a file read through the gate under the active :func:`track_inputs`."""
     seen = _READ.get()
