@@ -462,10 +462,19 @@ def _draw_lane_changes(args, model, result, options):
     from ..plots.figure import save_figure
     # lazy: matplotlib only for a figure
     from ..analysis.handling.figures import plot_lane_change
-    runs = [lane_change(model, v, g) for v, g in zip(result.speeds, result.gains) if g is not None and v > 0]
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..models.plausibility import warn
+    runs = [lane_change(model, v, g) for v, g, ok in zip(result.speeds, result.gains, result.closed_loop_stable)
+            if ok and v > 0]
+    left = [f"{v:g}" for v, g, ok in zip(result.speeds, result.gains, result.closed_loop_stable) if g is not None
+            and not ok]
+    if left:
+        warn(f"--lane-change: not drawn at {', '.join(left)} m/s (closed loop unstable: the run diverges)")
     if runs:
         fig = plot_lane_change(runs, f"{_title(args)}: double lane change", options.size)
         save_figure(fig, args.lane_change, options.dpi)
+    else:
+        warn(f"--lane-change: {args.lane_change} not written: no speed above 0 with a stable closed loop")
 
 
 def handling_csv(result):
