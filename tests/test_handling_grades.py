@@ -97,3 +97,13 @@ def test_the_figure_puts_no_ungraded_speed_in_a_level_band():
     assert sorted(float(line.get_xdata()[0]) for line in dashed) == [1.0, 2.0]
     # the left panel draws only the graded speeds' curves
     assert [line.get_label() for line in fig.axes[0].get_lines()] == ["3 m/s", "5 m/s"]
+
+
+def test_the_lane_change_leaves_out_unstable_loops(capsys, tmp_path):
+    lane = tmp_path / "lane.png"
+    assert main(["handling", "benchmark", "--speeds", "2,5", "--lane-change", str(lane), "--dpi", "40"]) == 0
+    err = capsys.readouterr().err
+    assert lane.is_file() and "not drawn at 2 m/s" in err
+    alone = tmp_path / "alone.png"
+    assert main(["handling", "benchmark", "--speeds", "2", "--lane-change", str(alone)]) == 0
+    assert not alone.exists() and "not written" in capsys.readouterr().err
