@@ -266,6 +266,8 @@ INVERSES = {
     "bikemass.sweep.vectorised": "the same static stiffness for a sweep chunk's stacked 2x2 (gK0 + S): no state matrix",
     "bikemass.analysis.engine.naming": "left eigenvectors (participation factors)",
     "bikemass.analysis.engine.polynomial": "a speed polynomial made monic after a Moebius shift: no state matrix",
+    "bikemass.analysis.engine.crossings": "the quasi-steady fast states of a state matrix whose roots are 1e8 apart "
+                                          "(separated_eigenvalues), to verify its crossings",
     "bikemass.analysis.sensitivity": "left eigenvectors (eigenvalue derivatives)",
     "bikemass.analysis.uncertainty": "left eigenvectors (eigenvalue derivatives)",
     "bikemass.analysis.handling.mode_shapes": "the kinematic states of an eigenvector",

@@ -314,10 +314,11 @@ def sweep_folder(folder, spec):
     import json
     sys.path.insert(0, str(REPO / "src"))
     from bikemass.sweep import read_spec
+    from bikemass.sweep.run import _record
     path = _write(folder, spec["spec"])
     out = Path(folder) / "out"
     (out / "chunks").mkdir(parents=True)
-    record = {"spec": str(path), "fingerprint": read_spec(path).fingerprint(), "keys": []}
+    record = _record(read_spec(path))             # this bikemass's record of the spec (inputs, version)
     row = {"weave_speed": 4.29, "capsize_speed": 6.02, "stable_from": 4.29, "stable_to": 6.02,
            "total_mass": 94.0, "error": None}
     state = spec["state"]

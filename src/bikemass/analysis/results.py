@@ -20,13 +20,14 @@ from ..core.errors import wrong_type
 from ..core.choices import RIGID
 from ..core.errors import InputTypeError
 from ..scenario.catalog import stiffness_matrix
-from ..core.errors import InputError
+from ..core.errors import InputError, short
+from ..core.real import finite_real
 from ..core.limits import MAX_SPEEDS
 from .engine.speeds import speed_range, speed_values
 from ..models.family import build as build_member
 from ..models.lean import RiderLeanParameters
 from ..models.linear import LinearModel
-from ..models.registry import model_of
+from ..models.registry import model_of, parse_model
 from ..models.tyres import Tyres, as_tyres
 from ..models.whipple import whipple_model
 from ..scenario.scenario import Built, Scenario
@@ -35,6 +36,8 @@ from .engine.stability import StabilityResult, analyse
 
 DEFAULT_MARGINAL = 2.0
 """Modulus (rad/s) below which an unstable eigenvalue counts as marginally stable (the thesis's)."""
+MAX_MARGINAL = 1e6
+"""Largest ``marginal`` modulus (rad/s): beyond every eigenvalue of a bicycle (``bikemass stability --marginal``'s bound)."""
 
 
 def matrices(params: BenchmarkParameters | CanonicalMatrices,
@@ -209,6 +212,10 @@ def built_model(params, stiffness=None, model=None, tyres=None):
         built = (params.replace(**given) if given else params).build()
         return built.model, built.stiffness
     choice = model_of(params, model)          # the parameter set's own member unless a model is named
+    if tyres is not None and not choice.has("tyre"):
+        raise InputError("tyres", short(tyres), f"a model with the tyre member (e.g. "
+                         f"{parse_model('+'.join((*choice.members, 'tyre'))).name}) for tyres; the model "
+                         f"{choice.name} has none")
     if isinstance(params, RiderLeanParameters) and not choice.has("rider-lean"):
         params = params.rigid()
     if not isinstance(params, (BenchmarkParameters, RiderLeanParameters)):
@@ -347,7 +354,8 @@ def stability(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Bu
     >>> print(f"weave {r.weave_speeds[0]:.4f} m/s, capsize {r.capsize_speeds[0]:.4f} m/s")
     weave 5.7421 m/s, capsize 8.5505 m/s
     """
-    if isinstance(marginal, bool) or not isinstance(marginal, (int, float)) or not 0 < marginal < float("inf"):
-        raise InputError("marginal", marginal, "a positive finite modulus in rad/s")
+    if not finite_real(marginal) or not 0 < marginal <= MAX_MARGINAL:
+        raise InputError("marginal", short(marginal), f"a modulus in rad/s above 0 and at most {MAX_MARGINAL:g} "
+                         "(as the command line's --marginal)")
     linear, S = built_model(params, stiffness, model, tyres)
     return analyse(linear, speed_values(speeds, max_speeds), marginal, S)

@@ -38,6 +38,8 @@ from .model import STEP, STIFFNESS_ENTRIES, values_of
 from .engine.critical import critical_speeds
 from .results import _stiffness
 from ..core.display import Display
+from ..core.limits import MAX_SPEED
+from ..core.real import finite_real
 from ..core.errors import InputError, short
 from ..core.keywords import renamed_keywords
 from ..models.lean import RiderLeanParameters
@@ -343,8 +345,8 @@ def _checked(params, S, vmax, names):
         raise wrong_type("params", params, "BenchmarkParameters (bm.parameters)")
     check_parameters(params, "params")
     S = _stiffness(S)
-    if isinstance(vmax, bool) or not isinstance(vmax, (int, float)) or not 0 < vmax < float("inf"):
-        raise InputError("vmax", short(vmax), "a positive finite speed in m/s")
+    if not finite_real(vmax) or not 0 < vmax <= MAX_SPEED:
+        raise InputError("vmax", short(vmax), f"a speed in m/s above 0 and at most {MAX_SPEED:g}")
     if isinstance(names, str) or not all(n in NAMES for n in names):
         raise InputError("names", short(names), f"a sequence of benchmark parameter names ({', '.join(NAMES)})")
     return params, S, tuple(names)

@@ -34,6 +34,7 @@ from numpy.typing import ArrayLike
 
 from ..core.tables import Table
 from ..core.display import Display
+from ..core.real import finite_real
 from ..core.errors import InputError
 from ..core.keywords import renamed_keywords
 from ..core.limits import MAX_SPEEDS
@@ -312,9 +313,7 @@ def _check_options(spreads, method, samples, seed):
             raise InputError("spreads", repr(key), "an input key: a parameter name or a dotted path (a string)")
         if not isinstance(spread, Spread) or spread.kind not in DISTRIBUTIONS:
             raise InputError("spreads", key, f"a Spread of kind {' or '.join(DISTRIBUTIONS)}, got {spread!r}")
-        if isinstance(spread.std, bool) or not (isinstance(spread.std, (int, float, np.floating, np.integer))
-                                                and np.isfinite(spread.std)
-                and spread.std >= 0):
+        if not finite_real(spread.std) or spread.std < 0:
             raise InputError("spreads", key, f"a finite standard deviation >= 0, got {spread.std!r}")
     if method not in ("linear", "montecarlo"):
         raise InputError("method", method, "linear or montecarlo")

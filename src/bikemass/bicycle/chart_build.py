@@ -13,6 +13,7 @@ import functools
 import numpy as np
 
 from ..core.config import Node, load_yaml
+from ..core.gate import note_read
 from ..core.paths import frames_dir
 from ..models.plausibility import warn
 from .chart import check_redundant, construct, read_chart
@@ -50,6 +51,7 @@ def load_defaults():
     """The chart defaults (``frames/chart_defaults.yaml``) as a :class:`~bikemass.core.config.Node`."""
     path = frames_dir() / "chart_defaults.yaml"
     node = _parsed(path, path.stat().st_mtime_ns)
+    note_read(path)
     return Node(_tree_copy(node.value), node.source, node.key)
 
 

@@ -81,6 +81,9 @@ def register(sub):
                     help="write no figures (matplotlib is then not imported; a sweep of millions of rows "
                          "reads no columns back)")
     sw.add_argument("--quiet", action="store_true", help="no progress bar or summary")
+    sw.add_argument("--restart", action="store_true",
+                    help="start over in an --out folder holding a sweep (its chunks and tables removed) instead "
+                         "of resuming it; a resume needs the same spec, input files and bikemass")
     add_figure_options(sw)
     # --out: a new or empty folder, or a sweep's own (holding bikemass.sweep.run.STAMP) to resume
     sw.set_defaults(run=run_sweep_command, folder_outputs=("out",), folder_mark="sweep.json")
@@ -277,6 +280,11 @@ def uncertainty_csv(result):
     return dialect.csv_text(["quantity", "unit", "nominal", "std", *extra], rows)
 
 
+MAX_FIGURE_ROWS = 5_000_000
+"""Most rows a sweep's figures are drawn from (about 230 bytes a row in memory: 1.2 GB); a larger
+sweep writes its tables and a note instead."""
+
+
 def run_sweep_command(args):
     # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import dumps, write_atomic
@@ -292,9 +300,15 @@ def run_sweep_command(args):
     with Progress(total, "sweep") as bar:
         if args.quiet:
             bar.enabled = False
-        rows = run_sweep(spec, args.out, args.workers, args.scheduler, progress=lambda n: bar.step(n=n))
+        rows = run_sweep(spec, args.out, args.workers, args.scheduler, progress=lambda n: bar.step(n=n),
+                         restart=args.restart)
     out = Path(args.out)
-    if not args.no_figures:
+    notes = list(rows.notes)
+    if not args.no_figures and len(rows) > MAX_FIGURE_ROWS:
+        notes.append(f"no figures: {len(rows)} rows are more than the {MAX_FIGURE_ROWS} figures are drawn "
+                     f"from (they hold every drawn column in memory, about 230 bytes a row); "
+                     f"results.csv has them all")
+    elif not args.no_figures:
         # lazy: matplotlib is slow to import; only figures need it
         from ..sweep.figures import sweep_figures
         for stem, fig in sweep_figures(rows, spec, options.size).items():
@@ -304,7 +318,7 @@ def run_sweep_command(args):
         from ..sweep.sobol import sobol_indices
         write_atomic(out / "sobol.json", dumps(sobol_indices(rows, spec), "json"))
     if not args.quiet:
-        for note in rows.notes:
+        for note in notes:
             print(f"bikemass: note: {note}", file=sys.stderr)
         errors = rows.refused
         print(f"{len(rows)} configurations -> {out / 'results.csv'}"

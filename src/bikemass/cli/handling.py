@@ -362,11 +362,24 @@ def _pairs(items, option):
     return out
 
 
+def _once(pairs, option):
+    """``pairs`` (``[(name, value)]``), InputError if a name is given twice (the option repeated, or
+    twice in one list): the last would silently win."""
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..core.errors import InputError
+    seen = {}
+    for name, value in pairs:
+        if name in seen:
+            raise InputError(option, f"{name}={value}", f"each name once ({name}={seen[name]} was given too)")
+        seen[name] = value
+    return pairs
+
+
 def _initial(args):
     # lazy: the library loads numpy; bikemass --help must not
     from ..core.errors import InputError
     values = {}
-    for name, value in _pairs(args.initial, "--initial"):
+    for name, value in _once(_pairs(args.initial, "--initial"), "--initial"):
         try:
             values[name] = float(value)
         except ValueError:
@@ -382,7 +395,7 @@ def _inputs(args):
     # lazy: the library loads numpy; bikemass --help must not
     from ..core.errors import InputError
     applied = {}
-    for name, value in _pairs(args.input, "--input"):
+    for name, value in _once(_pairs(args.input, "--input"), "--input"):
         kind, sep, size = value.partition(":")
         expected = "INPUT=step:SIZE (N m) or INPUT=impulse:SIZE (N m s)"
         try:
@@ -537,10 +550,19 @@ def _draw_lane_changes(args, model, result, options):
     from ..plots.figure import save_figure
     # lazy: matplotlib only for a figure
     from ..analysis.handling.figures import plot_lane_change
-    runs = [lane_change(model, v, g) for v, g in zip(result.speeds, result.gains) if g is not None and v > 0]
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..models.plausibility import warn
+    runs = [lane_change(model, v, g) for v, g, ok in zip(result.speeds, result.gains, result.closed_loop_stable)
+            if ok and v > 0]
+    left = [f"{v:g}" for v, g, ok in zip(result.speeds, result.gains, result.closed_loop_stable) if g is not None
+            and not ok]
+    if left:
+        warn(f"--lane-change: not drawn at {', '.join(left)} m/s (closed loop unstable: the run diverges)")
     if runs:
         fig = plot_lane_change(runs, f"{_title(args)}: double lane change", options.size)
         save_figure(fig, args.lane_change, options.dpi)
+    else:
+        warn(f"--lane-change: {args.lane_change} not written: no speed above 0 with a stable closed loop")
 
 
 def handling_csv(result):
@@ -558,13 +580,16 @@ def _finite(x):
 
 
 def handling_text(result, title):
-    """The gains, stability and HQM peak at every speed as a text table."""
+    """The gains, stability and HQM peak at every speed as a text table: the level ``unstable``
+    where the closed loop is (the peak of an unstable loop grades nothing and is not shown),
+    ``-`` without gains, and the gains' source with why a speed has no level."""
     # lazy: the library loads numpy; bikemass --help must not
     from ..analysis.handling.gains import NAMES
     # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import table
-    rows = [[v, *(None if g is None else getattr(g, n) for n in NAMES), "yes" if ok else "no", _finite(p),
-             _finite(w), level or "-", source]
+    rows = [[v, *(None if g is None else getattr(g, n) for n in NAMES), "yes" if ok else "no",
+             _finite(p) if level else None, _finite(w) if level else None,
+             level or ("-" if g is None else "unstable" if not ok else "none"), source]
             for v, g, ok, p, w, level, source in zip(result.speeds.tolist(), result.gains, result.closed_loop_stable,
                                                      result.hqm_peak, result.hqm_peak_frequency, result.levels,
                                                      result.gain_source)]

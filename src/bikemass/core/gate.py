@@ -20,6 +20,7 @@ failure, so deep nesting is answered by :data:`MAX_DEPTH` whatever the parser or
 
 import contextlib
 import contextvars
+import hashlib
 import os
 import re
 import stat
@@ -47,6 +48,9 @@ MAX_INT_DIGITS = 30
 _READ = contextvars.ContextVar("bikemass_inputs", default=None)
 """(device, inode) of every file read while :func:`track_inputs` is active."""
 
+_CONTENTS = contextvars.ContextVar("bikemass_input_contents", default=None)
+"""``{resolved path: sha256 of its bytes}`` of every file read while :func:`record_contents` is active."""
+
 _LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 """libyaml's parser where it is installed (about 7x faster), the pure-Python one otherwise."""
 _INT_TAG = "tag:yaml.org,2002:int"
@@ -71,6 +75,31 @@ def track_inputs():
         yield
     finally:
         _READ.reset(token)
+
+
+@contextlib.contextmanager
+def record_contents():
+    """Yield a dict that gathers ``{resolved path: SHA-256 hex digest}`` of every file read
+    through the gate while active (what a result was computed from, e.g. a sweep's record)."""
+    seen = {}
+    token = _CONTENTS.set(seen)
+    try:
+        yield seen
+    finally:
+        _CONTENTS.reset(token)
+
+
+def note_read(path):
+    """Under an active :func:`record_contents`, record ``path`` as read even where a cache of the
+    caller's served its content without reading it (a cache keyed by the file's modification
+    time: materials, chart defaults, bodies, yeadon measurements)."""
+    seen = _CONTENTS.get()
+    if seen is None or os.path.realpath(path) in seen:
+        return
+    try:
+        read_bytes(path)
+    except InputError:
+        pass                                          # the reader that needs it says what is wrong
 
 
 def was_read(path):
@@ -113,6 +142,8 @@ def read_bytes(path, limit=MAX_BYTES):
             raise InputError(path, "(file)", f"a readable file ({exc.strerror})") from None
     if len(data) > limit:
         raise InputError(path, "(file)", f"a file of at most {limit} bytes (it grew while being read)")
+    if _CONTENTS.get() is not None:
+        _CONTENTS.get()[os.path.realpath(path)] = hashlib.sha256(data).hexdigest()
     return data
 
 

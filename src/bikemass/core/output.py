@@ -73,6 +73,11 @@ a value that sits on a rounding tie in exact arithmetic (-1.23625 shown to 4 dec
 rounds the same way on every machine instead of following its last-bit noise."""
 
 
+FIXED_LIMIT = 1e15
+"""From this size on a fixed-point format (``{:.4f}``) shows a float in exponent form instead
+(``1e+300``, not a 300-digit integer): past :data:`SIGNIFICANT` digits the rest is noise."""
+
+
 def as_written(x, unit):
     """The float ``x`` (in ``unit``) as bikemass writes it: 0.0 when below :data:`ZERO` in a
     unit of :data:`ZERO_UNITS` (never -0.0), else ``x`` with every digit."""
@@ -89,9 +94,13 @@ def as_shown(x):
 
 
 def formatted(fmt, x):
-    """``fmt.format(x)`` as a text table shows a float: from :func:`as_shown`, and a value that
-    rounds to zero without a minus sign (``-0.0000`` is written ``0.0000``)."""
-    text = fmt.format(as_shown(x))
+    """``fmt.format(x)`` as a text table shows a float: from :func:`as_shown`, a value that
+    rounds to zero without a minus sign (``-0.0000`` is written ``0.0000``), and a value of
+    :data:`FIXED_LIMIT` or more in a fixed-point format in exponent form."""
+    x = as_shown(x)
+    if np.isfinite(x) and abs(x) >= FIXED_LIMIT and fmt.rstrip("}").endswith("f"):
+        return f"{x:.{SIGNIFICANT}g}"
+    text = fmt.format(x)
     return fmt.format(0.0) if text == fmt.format(-0.0) else text
 
 
@@ -298,13 +307,19 @@ STUDY_MARK = "report.md"
 """A folder holding this file is taken to be an earlier run's output, which :func:`new_folder` may replace."""
 
 
+def holds_files(folder):
+    """Whether ``folder`` holds a file anywhere in it: empty folders alone (what a run stopped
+    by a full disk may leave) are no content to protect."""
+    return any(files for _, _, files in os.walk(folder))
+
+
 def check_folder(out, mark=STUDY_MARK, option="(folder)"):
     """Refuse an output folder that :func:`new_folder` could not replace safely."""
     out = Path(out)
     if out.exists() or out.is_symlink():
         if not out.is_dir():
             raise InputError(out, option, "an output folder, got a file")
-        if any(out.iterdir()) and not (out / mark).is_file():
+        if holds_files(out) and not (out / mark).is_file():
             raise InputError(out, option, f"a new or empty folder, or an earlier output folder holding "
                                               f"{mark} (this one holds other files; nothing was changed)")
     _check_folder(out.resolve().parent, out, option)

@@ -4,6 +4,7 @@ import os
 from dataclasses import dataclass
 
 from ..core.config import load_yaml
+from ..core.gate import note_read
 from ..core.paths import frames_dir
 
 
@@ -41,6 +42,8 @@ def load_materials(path=None):
     cached = _READ.get(path)
     if version is None or cached is None or cached[0] != version:
         cached = _READ[path] = (version, read_materials(load_yaml(path)))
+    else:
+        note_read(path)
     return dict(cached[1])
 
 

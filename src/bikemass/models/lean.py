@@ -14,6 +14,7 @@ values with which his leaning rider is stable between about 5 and 7 m/s on the B
 ``k < m g h``: :attr:`RiderLeanParameters.gravity_stiffness` gives ``m g h`` to compare.
 """
 
+import dataclasses
 import math
 from dataclasses import dataclass, field, fields
 from typing import ClassVar
@@ -151,8 +152,8 @@ class RiderLeanParameters:
         I = np.array([[b.IBxx, 0.0, b.IBxz], [0.0, b.IByy, 0.0], [b.IBxz, 0.0, b.IBzz]])
         whole = combine((MassProperties(b.mB, [b.xB, 0.0, b.zB], I), self.upper.properties()))
         J = whole.inertia
-        return b.replace(mB=whole.mass, xB=whole.com[0], zB=whole.com[2], IBxx=J[0, 0], IByy=J[1, 1],
-                         IBzz=J[2, 2], IBxz=J[0, 2])
+        return dataclasses.replace(b, mB=whole.mass, xB=whole.com[0], zB=whole.com[2], IBxx=J[0, 0],
+                                   IByy=J[1, 1], IBzz=J[2, 2], IBxz=J[0, 2])
 
     @property
     def gravity_stiffness(self):

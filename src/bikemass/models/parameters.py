@@ -9,8 +9,11 @@ from dataclasses import asdict, dataclass, fields, replace
 
 import numpy as np
 
+from ..core.choices import closest
 from ..core.display import Display, html_table
+from ..core.errors import InputError
 from ..core.tables import Table
+from .names import NONNEGATIVE, POSITIVE, SIGNED  # noqa: F401 (their home was here; importers keep it)
 
 DESCRIPTIONS = {
     "w": "wheelbase [m]", "c": "trail [m]", "lam": "steer-axis tilt [rad]",
@@ -91,8 +94,24 @@ class BenchmarkParameters(Display):
                                                      for n in names]})}
 
     def replace(self, **changes):
-        """A copy with some parameters changed."""
-        return replace(self, **changes)
+        """A copy with some parameters changed (by their names, SI): InputError for a name that is
+        not one of the 26; a value no bicycle has is warned about as in a parameter file
+        (:func:`~bikemass.models.plausibility.check_parameter_file`), and one the model is not
+        defined for is refused by every analysis."""
+        # lazy: plausibility imports this module (its checks are of these parameters)
+        from .plausibility import check_parameter_file
+        for name in changes:
+            if name not in NAMES:
+                meant = [k for k, text in DESCRIPTIONS.items() if name.lower().replace("_", " ") in text.lower()]
+                hint = closest(name, NAMES) or (f" ({name} is {' or '.join(meant[:3])})" if meant else "")
+                raise InputError("replace", name, f"one of the 26 benchmark parameter names ({', '.join(NAMES)})"
+                                 f"{hint}")
+        changed = replace(self, **changes)
+        try:
+            check_parameter_file(changed, "replace")          # its warnings, as a file's
+        except InputError:
+            pass                                               # every analysis refuses it, naming the key
+        return changed
 
     def display_rows(self):
         """``[(name, value, SI unit)]`` of the 26 parameters, in the Meijaard order."""
@@ -119,7 +138,8 @@ class BenchmarkParameters(Display):
 
 
 NAMES = tuple(f.name for f in fields(BenchmarkParameters))
-"""The 26 parameter names in the Meijaard order."""
+"""The 26 parameter names in the Meijaard order (:data:`bikemass.models.names.NAMES`, which the
+plausibility checks read without importing this module)."""
 
 
 def dimension(name):
@@ -136,14 +156,6 @@ def parameter_units():
     return {k: d[d.index("[") + 1:-1] for k, d in DESCRIPTIONS.items()}
 
 
-SIGNED = ("lam", "xB", "zB", "xH", "zH", "IBxz", "IHxz", "c")
-"""Parameters that may be zero or negative (``lam``'s range is checked apart)."""
-POSITIVE = ("w", "g", "mB", "mH")
-"""Parameters that must be positive: the model divides by the wheelbase and by the masses of the
-whole bicycle and of the front assembly."""
-NONNEGATIVE = tuple(k for k in NAMES if k not in SIGNED + POSITIVE)
-"""Wheel radii, wheel masses and moments of inertia: zero is a legitimate limit (the two-mass-skate
-bicycle of Kooijman et al. 2011 has point wheels without mass and point masses without inertia)."""
 SPEED_KEY = "v"
 """The speed BicycleParameters' parameter-set files hold beside the 26 names (m/s): not a bicycle
 parameter, read as the file's speed."""

@@ -9,7 +9,9 @@ symmetric or not positive definite.  Warnings (:class:`~bikemass.core.errors.Bik
 one line each): a steer axis leaning forward (``lam < 0``), negative trail, a trail longer than the wheelbase, a wheel radius beyond any
 wheel, a wheelbase beyond any bicycle's, wheels that overlap, a centre of mass below the
 ground (z > 0) or far from the bicycle, a rider far from the bicycle or of a mass no rider
-has, masses beyond any bicycle.  The thresholds are stated below.
+has, masses beyond any bicycle; gravity, a steer-axis tilt, a body's radius of gyration or a
+frame stiffness no bicycle has (:func:`warn_absurd`, :func:`warn_stiffness`).  The thresholds
+are stated below.
 """
 
 import math
@@ -19,7 +21,8 @@ import warnings
 import numpy as np
 
 from ..core.errors import BikemassWarning, InputError, short
-from .parameters import NAMES, NONNEGATIVE, POSITIVE
+from ..core.real import finite_real
+from .names import NAMES, NONNEGATIVE, POSITIVE
 
 RELATIVE_TOLERANCE = 1e-9
 """Asymmetry, negative moments and triangle excess below this fraction of the largest moment pass."""
@@ -37,6 +40,21 @@ MAX_WHEELBASE = 2.5
 2.3 m, a tandem about 1.8 m)."""
 RIDER_MASS = (10.0, 300.0)
 """Rider masses (kg) outside this range are warned about (a small child to the heaviest adults)."""
+
+
+GRAVITY = (1.0, 30.0)
+"""Accelerations of gravity (m/s^2) outside this range are warned about (the Moon's 1.62 to
+Jupiter's 24.8)."""
+MAX_TILT = 1.3
+"""A steer-axis tilt ``|lam|`` above this (rad, 74 deg from vertical) is warned about: the steer
+axis nearly horizontal (a chopper's is about 0.7 rad)."""
+MAX_GYRATION = 5.0
+"""A body's radius of gyration ``sqrt(largest principal moment / mass)`` above this (m) is warned
+about: a body with such a moment for its mass reaches beyond any bicycle (a mass of 1e-12 kg
+with a fork's inertia)."""
+STIFFNESS_RANGE = (10.0, 1e10)
+"""Frame stiffness eigenvalues (N m/rad) outside this range are warned about (measured frames:
+1e3 to 1e5)."""
 
 
 def warn(message):
@@ -75,6 +93,7 @@ def check_stiffness(node):
         node.fail(f"a symmetric matrix (equal off-diagonal terms), got {S[0, 1]:.6g} and {S[1, 0]:.6g}")
     if not np.all(np.linalg.eigvalsh(S) > 0):
         node.fail("a positive definite 2x2 stiffness matrix (N m/rad)")
+    warn_stiffness(S, node.source)
     return S
 
 
@@ -86,6 +105,7 @@ def check_parameter_file(params, source, prefix=""):
     body has such moments, but the linear model is defined: ``IByy`` and ``IHyy`` do not enter
     it, a wheel's ``Iyy`` only as spin momentum; optimised published sets carry such values)."""
     check_parameters(params, source, prefix)
+    warn_absurd(params, source, prefix)
     for body in "RF":
         xx, yy = getattr(params, f"I{body}xx"), getattr(params, f"I{body}yy")
         if yy > 2 * xx * (1 + RELATIVE_TOLERANCE):
@@ -102,6 +122,35 @@ def check_parameter_file(params, source, prefix=""):
                  "which is computed")
 
 
+def warn_absurd(params, source, prefix=""):
+    """Warnings for values the model computes but no bicycle has: gravity outside
+    :data:`GRAVITY`, a steer axis tilted more than :data:`MAX_TILT`, a body (or a wheel with
+    mass) whose radius of gyration exceeds :data:`MAX_GYRATION`."""
+    if not GRAVITY[0] <= params.g <= GRAVITY[1]:
+        warn(f"{source}: {prefix}g = {params.g:.6g} m/s^2 is outside {GRAVITY[0]:g}..{GRAVITY[1]:g} m/s^2 "
+             "(Earth's is 9.81); computed as given")
+    if abs(params.lam) > MAX_TILT:
+        warn(f"{source}: {prefix}lam = {params.lam:.6g} rad tilts the steer axis more than {MAX_TILT:g} rad from "
+             "vertical (nearly horizontal; bicycles have 0.1..0.7 rad); computed as given")
+    for body in "BHRF":
+        mass = getattr(params, f"m{body}")
+        if mass <= 0:
+            continue
+        largest = float(np.linalg.eigvalsh(params.inertia(body))[-1])
+        if largest > mass * MAX_GYRATION ** 2:
+            warn(f"{source}: {prefix}m{body} = {mass:.6g} kg with a largest moment of inertia of {largest:.6g} "
+                 f"kg m^2: a radius of gyration of {math.sqrt(largest / mass):.3g} m, more than {MAX_GYRATION:g} m "
+                 "(no bicycle's body reaches that far); computed as given")
+
+
+def warn_stiffness(S, source):
+    """Warn if the 2x2 frame stiffness ``S`` (N m/rad) has an eigenvalue outside :data:`STIFFNESS_RANGE`."""
+    low, high = np.linalg.eigvalsh((np.asarray(S, float) + np.asarray(S, float).T) / 2)
+    if low < STIFFNESS_RANGE[0] or high > STIFFNESS_RANGE[1]:
+        warn(f"{source}: a frame stiffness S with eigenvalues {low:.3g} and {high:.3g} N m/rad, outside "
+             f"{STIFFNESS_RANGE[0]:g}..{STIFFNESS_RANGE[1]:g} (measured frames: 1e3..1e5); computed as given")
+
+
 def check_parameters(params, source, prefix=""):
     """``params`` (:class:`~bikemass.models.parameters.BenchmarkParameters`) if the model is defined for
     them, else InputError naming ``source`` and the parameter (``prefix`` + name): finite values;
@@ -116,9 +165,9 @@ def check_parameters(params, source, prefix=""):
     for key, value in values.items():
         if isinstance(value, bool) or not isinstance(value, numbers.Real):
             raise InputError(source, prefix + key, f"a number, got {short(value)}")
-        value = values[key] = float(value)
-        if not math.isfinite(value):
+        if not finite_real(value):
             raise InputError(source, prefix + key, f"a finite number, got {short(value)}")
+        value = values[key] = float(value)
         if value <= 0 and key in POSITIVE:
             raise InputError(source, prefix + key, f"a positive number, got {value:.6g}")
         if value < 0 and key in NONNEGATIVE:

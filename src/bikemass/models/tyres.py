@@ -23,8 +23,14 @@ from dataclasses import dataclass, field, fields
 from ..core.config import Node, load_yaml
 from ..core.errors import InputError
 from ..core.gate import plain_input
+from .plausibility import warn
 
 KEYS = ("cornering_coefficient", "camber_coefficient", "relaxation_length")
+RELAXATION_RANGE = (1e-3, 10.0)
+"""Relaxation lengths (m) outside this range are warned about (Dressel's bicycle tyres: 0.05 to
+0.3 m)."""
+CORNERING_RANGE = (1.0, 1e3)
+"""Cornering coefficients (1/rad) outside this range are warned about (bicycle tyres: 8 to 17)."""
 _DIMENSIONS = {"cornering_coefficient": "inverse angle", "camber_coefficient": "inverse angle",
                "relaxation_length": "length"}
 
@@ -45,6 +51,25 @@ class Tyre:
                     x == 0 and f.name != "camber_coefficient"):
                 raise InputError("tyre", f.name, f"{least} ({f.metadata['unit']}), got {x!r}")
             object.__setattr__(self, f.name, float(x))
+        self._warn_absurd()
+
+    def _warn_absurd(self):
+        """Warn of coefficients no tyre has (:data:`RELAXATION_RANGE`, :data:`CORNERING_RANGE`, a
+        camber coefficient above the cornering one): computed as given, but a relaxation length
+        below about 1e-12 m or a cornering coefficient of 1e8 /rad also puts roots of 1e12 1/s
+        and more beside the weave's, past what the critical speeds can be resolved from."""
+        sigma, c_alpha, c_gamma = self.relaxation_length, self.cornering_coefficient, self.camber_coefficient
+        if not RELAXATION_RANGE[0] <= sigma <= RELAXATION_RANGE[1]:
+            warn(f"tyre: relaxation_length = {sigma:.6g} m is outside {RELAXATION_RANGE[0]:g}..{RELAXATION_RANGE[1]:g} m "
+                 "(bicycle tyres: 0.05..0.3 m; the critical speeds of a much shorter one may be lost); "
+                 "computed as given")
+        if not CORNERING_RANGE[0] <= c_alpha <= CORNERING_RANGE[1]:
+            warn(f"tyre: cornering_coefficient = {c_alpha:.6g} 1/rad is outside {CORNERING_RANGE[0]:g}.."
+                 f"{CORNERING_RANGE[1]:g} 1/rad (bicycle tyres: 8..17 1/rad; the critical speeds of a much stiffer "
+                 "one may be lost); computed as given")
+        if c_gamma > c_alpha:
+            warn(f"tyre: camber_coefficient = {c_gamma:.6g} 1/rad is more than the cornering_coefficient "
+                 f"{c_alpha:.6g} 1/rad (bicycle tyres: about 0.05 of it); computed as given")
 
 
 @dataclass(frozen=True)

@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..core.config import Node, load_yaml
+from ..core.gate import note_read
 from . import stature
 from .anthropometry import Anthropometry, find_anthropometry, load_anthropometry
 from .chain import CHAIN_SEGMENTS, ChainBody, load_chain_body
@@ -47,6 +48,8 @@ def load_body(node: Node) -> Body:
         stat = os.stat(path)
         key += (str(path), stat.st_mtime_ns, stat.st_size)
     body = _BODIES.get(key)
+    if body is not None and not isinstance(node.value, dict):
+        note_read(path)
     if body is None:
         body = _BODIES[key] = _from_spec(node, node.value) if isinstance(node.value, dict) else _from_file(node, path)
         if len(_BODIES) > CACHE_SIZE:

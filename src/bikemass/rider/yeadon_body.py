@@ -32,7 +32,7 @@ from pathlib import Path
 import numpy as np
 
 from ..core.errors import BikemassWarning, shown
-from ..core.gate import load_data
+from ..core.gate import load_data, note_read
 from ..mass.inertia import MassProperties, combine
 from ..mass.solids import Lumped
 from ..core.paths import named_file
@@ -106,6 +106,7 @@ def human(path):
     scales its masses to the file's ``totalmass`` (1 without one)).  Cached per file content
     (a pose is read up to three times when it is seated); the Human is not to be changed."""
     p = Path(path).resolve()
+    note_read(p)
     return _human_of(str(p), p.stat().st_mtime_ns, p.stat().st_size)
 
 

@@ -18,7 +18,7 @@ from ..core.config import load_yaml
 from ..core.errors import BikemassWarning, InputError
 from ..core.paths import closest_name
 from ..mass.materials import Material, load_materials
-from ..models.plausibility import check_stiffness
+from ..models.plausibility import check_stiffness, warn_stiffness
 from ..rider import Rider
 from ..rider.seating import seat_rider
 from .frame import frame_stiffness
@@ -176,11 +176,12 @@ def stiffness_matrix(values):
     """``values`` as a 2x2 float array (N m/rad); InputError unless symmetric positive definite."""
     try:
         S = np.array(values, dtype=float)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
         S = None
     if S is None or S.shape != (2, 2) or not np.all(np.isfinite(S)) or not _positive_definite(S):
         raise InputError("stiffness", "(matrix)", "a symmetric positive definite 2x2 stiffness matrix "
                                                   f"in N m/rad, got {values!r}")
+    warn_stiffness(S, "stiffness")
     return S
 
 

@@ -73,6 +73,9 @@ def load_bicycle(bicycle: BicycleLike, name: str | None = None, size: str | None
     >>> bm.load_bicycle(bm.parameters("benchmark"), name="Meijaard 2007").name
     'Meijaard 2007'
     """
+    for key, value in (("name", name), ("size", size)):
+        if value is not None and not isinstance(value, str):
+            raise wrong_type(key, value, f"a {key} is a string")
     if isinstance(bicycle, Bicycle):
         return bicycle
     if isinstance(bicycle, BenchmarkParameters):

@@ -31,6 +31,7 @@ A benchmark parameter changed by name (``build({"c": 0.09})``) changes the set t
 for ``rider-lean`` the bicycle with the rider's legs but without the upper body.
 """
 
+import dataclasses
 import os
 from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
@@ -260,7 +261,7 @@ class Scenario:
         if params:
             if self.model.has("rider-lean"):
                 return self._lean(bike, rider, params).rigid()
-            p = check_parameters(p.replace(**dict(params)), self.origin)
+            p = check_parameters(dataclasses.replace(p, **dict(params)), self.origin)
         return p
 
     def frame_stiffness(self, which=None, changes=None):
@@ -272,7 +273,7 @@ class Scenario:
     def _lean(self, bike, rider, params):
         lean = self.inputs.lean(bike, rider)
         if params:
-            lean = lean.replace(bicycle=check_parameters(lean.bicycle.replace(**dict(params)), self.origin))
+            lean = lean.replace(bicycle=check_parameters(dataclasses.replace(lean.bicycle, **dict(params)), self.origin))
         return lean
 
     def _tyres(self):

@@ -10,6 +10,7 @@ the spread of the entry over these runs, the miss is "explained by the rounding 
 the printed parameters"; otherwise it is reported as not explained.
 """
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -42,8 +43,8 @@ def with_rider(frame, rider, how="thesis"):
     B = MassProperties(frame.mB, [frame.xB, 0.0, frame.zB], frame.inertia("B"))
     total = (combine if how == "exact" else combine_without_parallel_axis)((B, rider))
     I = total.inertia
-    return frame.replace(mB=total.mass, xB=total.com[0], zB=total.com[2],
-                         IBxx=I[0, 0], IByy=I[1, 1], IBzz=I[2, 2], IBxz=I[0, 2])
+    return dataclasses.replace(frame, mB=total.mass, xB=total.com[0], zB=total.com[2],
+                               IBxx=I[0, 0], IByy=I[1, 1], IBzz=I[2, 2], IBxz=I[0, 2])
 
 
 def half_unit_of_stiffness(value):
@@ -74,7 +75,7 @@ class PrintedInputs:
     def perturbed(self, deltas):
         """(frame with rider as the thesis combined them, S) with ``deltas`` (one per name) added."""
         d = dict(zip(self.names(), deltas))
-        frame = self.frame.replace(**{k: getattr(self.frame, k) + d[k] for k in FRAME_PARAMETERS})
+        frame = dataclasses.replace(self.frame, **{k: getattr(self.frame, k) + d[k] for k in FRAME_PARAMETERS})
         rider = self.rider
         if rider is not None:
             I = rider.inertia + np.array([[d["Ixx"], 0, d["Ixz"]], [0, d["Iyy"], 0], [d["Ixz"], 0, d["Izz"]]])

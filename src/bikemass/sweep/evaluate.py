@@ -52,12 +52,15 @@ class Finished:
     first_refusal: tuple
 
 
-def _scenario(scenario):
-    """The process's own instance of ``scenario`` (a value): one per sweep, its caches kept."""
-    if scenario not in _SCENARIOS:
+def _scenario(scenario, inputs=None):
+    """The process's own instance of ``scenario`` (a value): one per sweep, its caches kept, as
+    long as its input files have the contents of digest ``inputs`` (a file edited between two
+    sweeps is read again, in this process or on a long-lived Dask worker)."""
+    key = (scenario, inputs)
+    if key not in _SCENARIOS:
         _SCENARIOS.clear()
-        _SCENARIOS[scenario] = scenario
-    return _SCENARIOS[scenario]
+        _SCENARIOS[key] = scenario
+    return _SCENARIOS[key]
 
 
 def _bare_unit(scenario, key):
@@ -106,7 +109,7 @@ def finish_chunk(spec, chunk):
     every row itself)."""
     columns = spec.columns(chunk.start, chunk.stop)
     with one_blas_thread():
-        outcomes = evaluate_outcomes(_scenario(spec.scenario()), spec, columns, chunk.size)
+        outcomes = evaluate_outcomes(_scenario(spec.scenario(), spec.inputs), spec, columns, chunk.size)
     refused = [i for i, e in enumerate(outcomes.errors) if e is not None]
     first = (chunk.start + refused[0], outcomes.errors[refused[0]]) if refused else None
     return Finished(chunk, chunk_text(spec.keys, columns, outcomes), len(refused), first)

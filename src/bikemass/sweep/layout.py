@@ -10,7 +10,8 @@
 A chunk file is written atomically when its chunk is computed, by whichever process gathers
 the chunks; it is the sweep's state: a run of the same spec into the same folder keeps every
 chunk file that holds exactly its configurations' lines (the varied values equal to the
-spec's, every number readable) and computes the rest, whatever engine or chunk size either run
+spec's, every number readable, nothing but what bikemass writes: no NUL bytes of a crash, no
+carriage returns) and computes the rest, whatever engine or chunk size either run
 used.  The tables are written last, streamed chunk by chunk: the process that gathers the
 chunks holds one chunk at a time, whatever the number of configurations.
 """
@@ -61,7 +62,8 @@ def _summary(start, stop, errors):
 def _check(path, spec, start, stop):
     """:class:`Kept` of a chunk file that holds exactly the lines of those configurations of
     ``spec`` (ValueError otherwise)."""
-    columns = read_chunk(path.read_text(encoding="utf-8"), spec.keys, numeric_keys(spec), stop - start)
+    text = path.read_bytes().decode("utf-8")          # as copied into results.csv: no newline translation
+    columns = read_chunk(text, spec.keys, numeric_keys(spec), stop - start)
     expected = spec.columns(start, stop)
     if any(columns[k] != list(expected[k]) for k in spec.keys):
         raise ValueError("another configuration's values")

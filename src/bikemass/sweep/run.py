@@ -7,8 +7,10 @@ that gathers the chunks writes each to ``DIR/chunks/START-STOP.csv`` as it arriv
 only its index range and refusal count, so its memory does not grow with the sweep.  When every
 configuration has its lines, ``DIR/results.csv`` (and ``results.parquet`` with pyarrow) are
 assembled from the chunk files (:mod:`bikemass.sweep.layout`, which also says how a run
-resumes).  ``DIR/sweep.json`` records the spec's fingerprint: a folder with files but no
-record, a damaged one or another spec's is refused.  A sweep whose every configuration the
+resumes).  ``DIR/sweep.json`` records the spec's fingerprint, the SHA-256 of every input file
+and bikemass's version and code digest: a folder with files but no record, a damaged one,
+another spec's, or one whose inputs or bikemass changed since is refused (``restart`` starts
+it over).  A sweep whose every configuration the
 model refuses is an error (naming the first reason), one with some refused a warning; the rows
 keep each reason in ``error``.
 
@@ -27,6 +29,9 @@ result's ``notes`` say so): starting a local cluster and importing bikemass in i
 costs more than such a sweep.
 """
 
+import dataclasses
+import functools
+import hashlib
 import importlib
 import importlib.util
 import json
@@ -41,8 +46,10 @@ from typing import Any, cast
 from contextlib import contextmanager
 from pathlib import Path
 
-from ..core.errors import InputError, short, wrong_type
-from ..core.output import write_atomic
+from .. import __version__
+from ..core.errors import InputError, one_line, short, wrong_type
+from ..core.gate import read_bytes, record_contents
+from ..core.output import holds_files, write_atomic
 from ..models.plausibility import warn
 from ..scenario.inputs import STIFFNESS_KEY
 from .evaluate import Chunk, _scenario, finish_chunk, finish_chunk_pickled
@@ -126,31 +133,109 @@ STAMP = "sweep.json"
 MAX_STAMP_BYTES = 100_000
 
 
+@functools.lru_cache(maxsize=1)
+def code_digest():
+    """SHA-256 (16 hex digits) of bikemass's own source files: what computed a sweep's rows
+    besides its inputs (an edited install keeps its version number)."""
+    package = Path(__file__).resolve().parents[1]
+    digest = hashlib.sha256()
+    for path in sorted(package.rglob("*.py")):
+        digest.update(path.relative_to(package).as_posix().encode() + b"\0" + path.read_bytes() + b"\0")
+    return digest.hexdigest()[:16]
+
+
+def input_contents(spec):
+    """``{resolved path: SHA-256}`` of every file the sweep's configurations are made from: those
+    building its base configuration reads (the bicycle and what it builds on, the rider and its
+    pose, the tyres, the stiffness file), and every file the spec names (a varied stiffness
+    file, ...), found next to the spec."""
+    with record_contents() as read:
+        scenario = spec.scenario()
+        try:
+            scenario.build()
+        except (InputError, ValueError, ArithmeticError):
+            pass                                    # the rows will say why; the files read so far count
+        names = [spec.bike, spec.rider, spec.stiffness, spec.tyres]
+        names += [x for v in spec.variables if v.values is not None for x in v.values if isinstance(x, str)]
+        for name in names:
+            if isinstance(name, str) and Path(name).is_file():
+                try:
+                    read_bytes(name)
+                except InputError:
+                    pass                            # unreadable: the configuration that needs it says so
+    return dict(sorted(read.items()))
+
+
 def _record(spec):
-    return {"spec": spec.source, "fingerprint": spec.fingerprint(), "keys": list(spec.keys)}
+    return {"spec": spec.source, "fingerprint": spec.fingerprint(), "keys": list(spec.keys),
+            "bikemass": {"version": __version__, "code": code_digest()}, "inputs": input_contents(spec)}
 
 
-def _check_folder(spec, out):
-    """Before any work: ``out`` is a new or empty folder, or holds this sweep's own record (a
-    missing or damaged record, or another spec's, is refused: its chunks could be anyone's)."""
+RESTART_HINT = "sweep --restart starts it over, or use another --out"
+
+
+def _changes(old, new):
+    """Why the record ``old`` of a folder does not fit this run's ``new`` (a phrase), or ``None``."""
+    if not isinstance(old.get("bikemass"), dict) or not isinstance(old.get("inputs"), dict):
+        return "it was made by an earlier bikemass that did not record its input files' content"
+    was, now = old["bikemass"], new["bikemass"]
+    if was.get("version") != now["version"]:
+        return f"it was computed by bikemass {str(was.get('version'))[:40]}, this is {now['version']}"
+    if was.get("code") != now["code"]:
+        return f"bikemass's code changed since it was computed, at the same version {now['version']}"
+    for path in sorted(set(old["inputs"]) | set(new["inputs"])):
+        if path not in new["inputs"]:
+            return f"{path} was an input of it and is not one now"
+        if path not in old["inputs"]:
+            return f"{path} is an input now and was not one of it"
+        if old["inputs"][path] != new["inputs"][path]:
+            return f"{path} changed since it was computed"
+    return None
+
+
+def _check_folder(spec, out, restart=False):
+    """Before any work: ``out`` is a new or empty folder, or holds this sweep's own record made
+    from the same inputs by the same bikemass (``restart``: any sweep's folder is emptied
+    instead of resumed); the record returned.  A folder with files but no record, a damaged
+    record, or another spec's is refused: its chunks could be anyone's."""
     out = Path(out)
     if out.exists() and not out.is_dir():
         raise InputError(out, "--out", "a directory (this is a file)")
     stamp = out / STAMP
+    record = _record(spec)
     if stamp.is_file():
+        if restart:
+            _clear(out)
+            return record
         old = _read_stamp(stamp)
-        if old["fingerprint"] != _record(spec)["fingerprint"]:
+        if old["fingerprint"] != record["fingerprint"]:
             raise InputError(out, STAMP, f"results of the same spec to resume (this folder holds "
-                             f"{short(old.get('spec'))}, a different sweep): use another --out")
-    elif out.is_dir() and any(out.iterdir()):
+                             f"{short(old.get('spec'))}, a different sweep): use another --out, or --restart to "
+                             "replace it")
+        why = _changes(old, record)
+        if why is not None:
+            raise InputError(out, STAMP, f"the same spec, input files and bikemass to resume the sweep (here "
+                             f"{why}): {RESTART_HINT}")
+    elif out.is_dir() and holds_files(out):
         raise InputError(out, STAMP, f"a new or empty folder, or a sweep's own holding {STAMP} (this one holds "
                          f"other files and no {STAMP}, so its chunks could be another sweep's): use another --out")
+    return record
+
+
+SWEEP_FILES = (STAMP, "results.csv", "results.parquet", "sobol.json")
+"""The files of a sweep's folder that ``restart`` removes (with ``chunks/``); figures are rewritten."""
+
+
+def _clear(out):
+    """Empty a sweep's folder of its record, chunks and tables (``restart``)."""
+    shutil.rmtree(out / CHUNKS, ignore_errors=True)
+    for name in SWEEP_FILES[1:] + SWEEP_FILES[:1]:          # the record last: a failure leaves a sweep's folder
+        (out / name).unlink(missing_ok=True)
 
 
 def _read_stamp(stamp):
     """The record in ``stamp`` (a dict with a ``fingerprint``); InputError if it is damaged."""
-    damaged = ("the record bikemass sweep writes (JSON with a fingerprint); this one is damaged: remove the "
-               "folder or use another --out")
+    damaged = f"the record bikemass sweep writes (JSON with a fingerprint); this one is damaged: {RESTART_HINT}"
     try:
         if stamp.stat().st_size > MAX_STAMP_BYTES:
             raise ValueError
@@ -162,11 +247,14 @@ def _read_stamp(stamp):
     return record
 
 
-def _prepare(spec, out):
+def _prepare(record, out):
+    """The folder ``out`` with the sweep's ``record`` written first (a folder with chunks is
+    always a sweep's), then ``chunks/``."""
     out = Path(out)
-    (out / CHUNKS).mkdir(parents=True, exist_ok=True)
+    out.mkdir(parents=True, exist_ok=True)
     if not (out / STAMP).is_file():
-        write_atomic(out / STAMP, json.dumps(_record(spec), indent=2) + "\n")
+        write_atomic(out / STAMP, json.dumps(record, indent=2) + "\n")
+    (out / CHUNKS).mkdir(exist_ok=True)
     return out
 
 
@@ -188,7 +276,7 @@ def _outcome(result, spec, out, created):
 
 def run_sweep(spec: "SweepSpec | str | os.PathLike", out: "str | os.PathLike", workers: int | None = None,
               scheduler: "str | DaskClient | None" = None,
-              progress: "Callable[[int], object] | None" = None) -> SweepResult:
+              progress: "Callable[[int], object] | None" = None, restart: bool = False) -> SweepResult:
     """Evaluate every configuration of a design sweep into a folder (``bm.sweep``).
 
     Each configuration (a grid or a sample of the varied keys) is built and its weave and capsize
@@ -215,6 +303,11 @@ def run_sweep(spec: "SweepSpec | str | os.PathLike", out: "str | os.PathLike", w
     progress : callable, optional
         Called with the number of configurations already finished, then with the number
         finished by each chunk.
+    restart : bool
+        Start over in a folder holding a sweep (its record, chunks and tables removed) instead of
+        resuming it.  A resume needs the same spec, input files of the same content and the same
+        bikemass (``sweep.json`` records each file's SHA-256, bikemass's version and a digest of
+        its code); anything else is refused unless ``restart``.
 
     Returns
     -------
@@ -228,7 +321,8 @@ def run_sweep(spec: "SweepSpec | str | os.PathLike", out: "str | os.PathLike", w
     ------
     InputError
         Bad arguments or spec (naming its file and key); ``out`` a file, or a folder holding other
-        files than a sweep's own, another spec's sweep or a damaged ``sweep.json``; a scheduler that
+        files than a sweep's own, another spec's sweep, one computed from input files that changed
+        since or by another bikemass (without ``restart``), or a damaged ``sweep.json``; a scheduler that
         cannot be reached; the model refusing every configuration (the first reason named; a folder
         this call made is removed).
 
@@ -255,19 +349,22 @@ def run_sweep(spec: "SweepSpec | str | os.PathLike", out: "str | os.PathLike", w
     c 0.12 m: stable 4.6965..7.1149 m/s
     """
     _check_arguments(spec, out, workers, progress)
+    if not isinstance(restart, bool):
+        raise wrong_type("restart", restart, "True or False")
     if not hasattr(spec, "configurations"):
         spec = read_spec(spec)
     spec = cast(SweepSpec, spec)                   # a SweepSpec from here on (for the type checker)
     check_keys(spec)
-    _check_folder(spec, out)
-    created = not Path(out).exists() or not any(Path(out).iterdir())
+    created = not Path(out).exists() or not holds_files(out)
+    record = _check_folder(spec, out, restart)
+    spec = dataclasses.replace(spec, inputs=hashlib.sha256(json.dumps(record["inputs"]).encode()).hexdigest())
     gather = _Gathering(spec, progress)
     if scheduler is None and workers is not None:
-        gather.out = _prepare(spec, out)
+        gather.out = _prepare(record, out)
         workers = gather.small_enough_here(workers)
     with _engine(workers, scheduler) as (run, slots):       # a cluster that cannot be reached leaves no folder
         if gather.out is None:
-            gather.out = _prepare(spec, out)
+            gather.out = _prepare(record, out)
             gather.start()
         size = chunk_size(gather.missing_count(), slots, spec.chunk, cheap=takes(spec.keys))
         gather.collect(run(spec, [Chunk(a, b) for a, b in split(gather.missing(), size)], slots))
@@ -315,7 +412,7 @@ class _Gathering:
         if not missing:
             return None
         try:                                          # the files read before the clock starts
-            _scenario(self.spec.scenario()).parameters()
+            _scenario(self.spec.scenario(), self.spec.inputs).parameters()
         except (InputError, ValueError):
             pass                                      # every row says why
         size = chunk_size(self.missing_count(), None, self.spec.chunk, cheap=takes(self.spec.keys))
@@ -414,10 +511,14 @@ def _client(distributed, workers, scheduler):
         try:
             if not isinstance(scheduler, str):
                 raise ValueError(f"an address string or a distributed.Client, got {type(scheduler).__name__}")
+            scheme = distributed.comm.parse_address(scheduler)[0]
+            if scheme not in SCHEMES:
+                raise ValueError(f"an address tcp://HOST:PORT, ws:// or wss://; {scheme}:// needs more than an "
+                                 "address: connect a distributed.Client yourself and pass it to bm.sweep")
             distributed.comm.resolve_address(scheduler)      # a malformed address: one line, no Client made
             client = _connected(distributed, scheduler)
-        except (OSError, TimeoutError, ValueError) as exc:
-            raise InputError("--scheduler", scheduler, f"a running Dask scheduler ({exc})") from None
+        except Exception as exc:                  # whatever distributed raises while connecting: no scheduler
+            raise InputError("--scheduler", scheduler, f"a running Dask scheduler ({one_line(exc, 300)})") from None
         with client:
             yield client
         return
@@ -425,6 +526,8 @@ def _client(distributed, workers, scheduler):
         yield client
 
 
+SCHEMES = ("tcp", "ws", "wss")
+"""The schemes a scheduler address may have: the ones a client reaches with an address alone."""
 CONNECT_DEADLINE = 20
 """Seconds a scheduler has to answer (distributed's own 10 s timeout does not bound a listener that
 accepts the connection and never speaks)."""

@@ -76,6 +76,18 @@ class Variable:
     def grid(self):
         return self.values if self.values is not None else tuple(np.linspace(self.low, self.high, self.num).tolist())
 
+    def at(self, digits):
+        """The grid values at the indices ``digits`` (an integer array), as plain Python values,
+        without making the grid: a range's are ``np.linspace``'s own arithmetic (``low + i *
+        step``, the last point exactly ``high``), so one key of 10^8 points costs a chunk its
+        own rows only."""
+        if self.values is not None:
+            return _values(self.values, digits)
+        step = (self.high - self.low) / (self.num - 1)
+        x = np.asarray(digits, dtype=float) * step + self.low
+        x[np.asarray(digits) == self.num - 1] = self.high
+        return x.tolist()
+
     def from_unit(self, u):
         """Map ``u`` in [0, 1) to a value: uniform on the range, or an element of the list."""
         if self.values is not None:
@@ -99,6 +111,10 @@ class SweepSpec:
     chunk: int = None
     model: str = BASE
     tyres: str = None
+    inputs: str = None
+    """A digest of the input files' contents (:func:`bikemass.sweep.run.run_sweep` sets it): a
+    process that computes chunks reuses its scenario, and the files read into it, only for the
+    same contents."""
 
     def scenario(self):
         """The :class:`~bikemass.scenario.scenario.Scenario` every configuration changes."""
@@ -127,7 +143,7 @@ class SweepSpec:
         if self.method == "grid" and not self.global_sensitivity:
             sizes = [v.size() for v in self.variables]
             digits = np.unravel_index(np.arange(start, stop), sizes)
-            return {v.key: _values(v.grid(), d) for v, d in zip(self.variables, digits)}
+            return {v.key: v.at(d) for v, d in zip(self.variables, digits)}
         rows = self._sample()[start:stop]
         return {k: [row[k] for row in rows] for k in self.keys}
 
@@ -264,6 +280,12 @@ def _near(spec_path, name):
     return str(here.resolve()) if within_reach(here) and here.is_file() else name
 
 
+def _near_file(spec_path, name):
+    """A stiffness choice as :func:`_near` reads a file name (one with a suffix or a folder:
+    ``frame.yaml``, ``data/S.csv``) relative to the spec file; a material or ``infinite`` as given."""
+    return _near(spec_path, name) if Path(name).suffix or "/" in name or "\\" in name else name
+
+
 def _model_name(node):
     """The spec's ``model:`` as its canonical name (``whipple`` without one)."""
     if not node.has("model"):
@@ -282,6 +304,8 @@ def read_spec(path: "str | os.PathLike") -> "SweepSpec":
     if not vary.mapping():
         vary.fail("at least one key to vary")
     variables = tuple(_variable(str(k), item) for k, item in vary.items())
+    variables = tuple(Variable(v.key, values=tuple(_near_file(path, x) for x in v.values))
+                      if v.key == "stiffness" else v for v in variables)
     method, n, seed = "grid", None, 0
     if node.has("sample") and node["sample"].value != "grid":
         s = node["sample"]
@@ -314,7 +338,7 @@ def read_spec(path: "str | os.PathLike") -> "SweepSpec":
     spec = SweepSpec(
         source=str(path), bike=_near(path, node["bike"].string()),
         rider=_near(path, node["rider"].string()) if node.has("rider") else "none",
-        stiffness=node["stiffness"].string() if node.has("stiffness") else "infinite",
+        stiffness=_near_file(path, node["stiffness"].string()) if node.has("stiffness") else "infinite",
         combine=node["combine"].string(("exact", "thesis")) if node.has("combine") else "exact",
         max_speed=float(max_speed), variables=variables, method=method, n=n, seed=seed,
         global_sensitivity=gsa, chunk=None if chunk is None else int(chunk),

@@ -100,8 +100,17 @@ def _batch_text(keys, columns, outcomes):
 def read_chunk(text, keys, numeric_keys, count):
     """``{column: list}`` of the lines of one chunk file (``count`` of them; floats for the
     ``numeric_keys`` and the numbers, ``None`` for an empty cell; strings otherwise).
-    ValueError if the text is not ``count`` such lines (a damaged chunk file)."""
-    rows = list(csv.reader(io.StringIO(text, newline="")))
+    ValueError if the text is not ``count`` such lines as bikemass writes them (a damaged chunk
+    file: NUL bytes, as a crash or a full disk leaves; carriage returns ending lines, which
+    bikemass never writes and ``results.csv`` would copy; a field too long for the csv module)."""
+    if "\0" in text:
+        raise ValueError("not the lines bikemass writes (NUL bytes)")
+    try:
+        rows = list(csv.reader(io.StringIO(text, newline="")))
+    except csv.Error as exc:
+        raise ValueError(f"not CSV lines ({exc})") from None
+    if "\r" in text and text.count("\r") != sum(cell.count("\r") for row in rows for cell in row):
+        raise ValueError("not the lines bikemass writes (carriage returns ending lines)")
     width = len(keys) + len(OUTPUTS)
     if len(rows) != count or any(len(r) != width for r in rows):
         raise ValueError("not the lines of this chunk")

@@ -19,6 +19,7 @@ server's folder; errors about a shipped file name it from the data folder, never
 """
 
 import contextlib
+import dataclasses
 import functools
 import os
 import re
@@ -398,7 +399,7 @@ class Engine:
         base = self.base_parameters(state.bicycle_key, state.rider_key, state.combine)
         if not state.overrides:
             return base
-        params = base.replace(**dict(state.overrides))
+        params = dataclasses.replace(base, **dict(state.overrides))
         check_parameter_file(params, SOURCE)
         warn_parameters(params, SOURCE)
         return params

@@ -540,12 +540,16 @@ def _handling_figure(result, stable, state, bike):
 def _handling_summary(result):
     """One line per speed: the HQM peak and level, or why there is none."""
     lines = []
-    for v, peak, stable, level in zip(result.speeds, result.hqm_peak, result.closed_loop_stable, result.levels):
-        if not level:
+    for v, peak, gains, stable, level in zip(result.speeds, result.hqm_peak, result.gains, result.closed_loop_stable,
+                                             result.levels):
+        if gains is None:
             lines.append(f"{v:g} m/s: no gains found by the published procedure")
+        elif not stable:
+            lines.append(f"{v:g} m/s: closed loop unstable, no handling level")
+        elif level is None:
+            lines.append(f"{v:g} m/s: HQM peak not finite, no handling level")
         else:
-            lines.append(f"{v:g} m/s: HQM peak {peak:.2f} (Level {level})"
-                         + ("" if stable else ", closed loop unstable"))
+            lines.append(f"{v:g} m/s: HQM peak {peak:.2f} (Level {level})")
     return "; ".join(lines)
 
 

@@ -21,6 +21,7 @@ from .quartic import quartic_roots
 from .naming import mode_names, settle_splits, split_rank, standstill_labels
 from .tracking import reorder, track
 from ...core.errors import InputError, short
+from ...core.limits import MAX_SPEED
 
 START_STEP = 0.05
 """Largest speed step (m/s) of the extension down to standstill used for naming."""
@@ -88,13 +89,16 @@ class Modes(Result):
 
 def check_speeds(speeds):
     """``speeds`` as a 1-D float array; InputError (a ValueError) unless numbers, at least one,
-    finite, >= 0 and strictly increasing."""
+    finite, >= 0, strictly increasing and at most :data:`~bikemass.core.limits.MAX_SPEED`."""
     try:
         v = np.atleast_1d(np.asarray(speeds, dtype=float))
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
         raise InputError("speeds", short(speeds), "speeds in m/s: a 1-D array of numbers") from None
     if v.ndim != 1 or v.size == 0 or not np.all(np.isfinite(v)) or v[0] < 0 or np.any(np.diff(v) <= 0):
         raise InputError("speeds", short(speeds), "speeds must be at least one, finite, >= 0 and strictly increasing (m/s)")
+    if v[-1] > MAX_SPEED:
+        raise InputError("speeds", short(speeds), f"speeds of at most {MAX_SPEED:g} m/s (as the command line's), "
+                         f"got {v[-1]:g}")
     return v
 
 

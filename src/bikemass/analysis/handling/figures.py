@@ -10,7 +10,7 @@ from .mode_shapes import ModeShapes
 from .quality import LEVEL_BOUNDS
 from .survey import HandlingResult
 from .time_response import TimeResponse
-from ...core.errors import wrong_type
+from ...core.errors import InputError, short, wrong_type
 from ...plots.figure import Figure, new_figure
 
 BODE_SIZE = (6.4, 5.2)
@@ -218,11 +218,24 @@ def _level_bands(ax, top):
                 ha="right", va="center", fontsize="x-small", color="0.35")
 
 
+def _speed_ranges(ranges):
+    """``ranges`` as ``((start, stop), ...)`` of finite speeds (m/s); InputError otherwise."""
+    expected = "((start, stop), ...) in m/s, e.g. bm.stability(p).stable_speeds"
+    try:
+        pairs = tuple((float(a), float(b)) for a, b in ranges)
+    except (TypeError, ValueError, OverflowError):
+        raise InputError("stable_speeds", short(ranges), expected) from None
+    if not all(np.isfinite(pair).all() for pair in pairs):
+        raise InputError("stable_speeds", short(ranges), f"finite speeds: {expected}")
+    return pairs
+
+
 def plot_handling(result: HandlingResult, title: str = "", size: "tuple[float, float] | None" = None,
                   stable_speeds: "tuple[tuple[float, float], ...]" = ()) -> Figure:
     """Figure: the handling quality metric (HQM) against frequency at every speed (left) and its
-    peak against speed (right) over the handling-quality Levels 1-3; an unstable closed loop
-    is marked x.
+    peak against speed (right) over the handling-quality Levels 1-3; a speed where the closed
+    loop is unstable (or no gains were found) has no level: it is drawn as a dashed (dotted) line
+    across the Levels at that speed, not as a point in one of them.
 
     Parameters
     ----------
@@ -260,12 +273,13 @@ def plot_handling(result: HandlingResult, title: str = "", size: "tuple[float, f
     """
     if not isinstance(result, HandlingResult):
         raise wrong_type("result", result, "a HandlingResult (bm.handling)")
+    stable_speeds = _speed_ranges(stable_speeds)
     fig = new_figure(size or HANDLING_SIZE)
     curves, peaks = fig.subplots(1, 2)
-    finite = np.isfinite(result.hqm_peak)
-    top = float(np.nanmax(result.hqm_peak)) * 1.1 if finite.any() else 10.0
+    graded = result.graded
+    top = float(np.max(result.hqm_peak[graded])) * 1.1 if graded.any() else 10.0
     top = min(max(top, 9.0), 40.0)
-    for v, curve, ok in zip(result.speeds, result.hqm, finite):
+    for v, curve, ok in zip(result.speeds, result.hqm, graded):
         if ok:
             curves.plot(result.hqm_frequencies, curve, label=f"{v:g} m/s")
     curves.set_xlim(0, 20)
@@ -273,15 +287,21 @@ def plot_handling(result: HandlingResult, title: str = "", size: "tuple[float, f
     _level_bands(curves, top)
     curves.set_xlabel("frequency, rad/s")
     curves.set_ylabel("HQM")
-    if finite.sum() <= 10:
+    if 0 < graded.sum() <= 10:
         curves.legend(fontsize="x-small", loc="upper left")
     for start, stop in stable_speeds:
         peaks.axvspan(start, stop, color="tab:green", alpha=0.15, zorder=1, label="self-stable")
-    peaks.plot(result.speeds, result.hqm_peak, "o-", ms=3, color="k", zorder=3)
-    unstable = ~result.closed_loop_stable & finite
-    if unstable.any():
-        peaks.plot(result.speeds[unstable], result.hqm_peak[unstable], "x", color="tab:red", zorder=4,
-                   label="closed loop unstable")
+    peaks.plot(result.speeds, np.where(graded, result.hqm_peak, np.nan), "o-", ms=3, color="k", zorder=3)
+    # An unstable closed loop (or a speed without gains) has no level: marked across the bands at its
+    # speed, never as a point in one of them.
+    unstable = ~graded & np.array([g is not None for g in result.gains])
+    for mask, colour, style, label in ((unstable, "tab:red", "--", "closed loop unstable: no level"),
+                                       (~graded & ~unstable, "0.4", ":", "no gains found: no level")):
+        for v in result.speeds[mask]:
+            peaks.axvline(v, color=colour, ls=style, lw=1.2, zorder=4, label=label)
+    if not graded.any():
+        curves.text(0.5, 0.5, "no speed has a stable closed loop", transform=curves.transAxes, ha="center",
+                    va="center", color="0.3", fontsize="small")
     peaks.set_ylim(0, top)
     _level_bands(peaks, top)
     peaks.set_xlabel("speed, m/s")
@@ -369,16 +389,16 @@ def plot_handling_by_rider(results, title="", size=None, stable_speeds=None):
     stable_speeds = stable_speeds or {}
     fig = new_figure(size or (7.0, 5.6))
     peaks, bars = fig.subplots(2, 1, sharex=True, height_ratios=(3, 1))
-    finite = [r.hqm_peak[r.closed_loop_stable] for r in results.values()]
+    finite = [r.hqm_peak[r.graded] for r in results.values()]
     top = max([float(f.max()) for f in finite if f.size], default=10.0)
     top = min(max(1.1 * top, 9.0), 40.0)
     _level_bands(peaks, top)
     for k, (name, r) in enumerate(results.items()):
-        shown = np.where(r.closed_loop_stable, r.hqm_peak, np.nan)
+        shown = np.where(r.graded, r.hqm_peak, np.nan)
         peaks.plot(r.speeds, shown, "o-", ms=3, color=f"C{k}", label=name)
         for start, stop in stable_speeds.get(name, ()):
             bars.plot([start, stop], [k, k], color=f"C{k}", lw=6, solid_capstyle="butt")
-    if not any(np.isfinite(np.where(r.closed_loop_stable, r.hqm_peak, np.nan)).any() for r in results.values()):
+    if not any(r.graded.any() for r in results.values()):
         peaks.text(0.5, 0.5, "no gains close the loop stably", transform=peaks.transAxes, ha="center",
                    va="center", color="0.3")
     peaks.set_ylim(0, top)

@@ -81,7 +81,7 @@ def check_frequencies(frequencies):
     :data:`MAX_FREQUENCIES`; InputError otherwise."""
     try:
         w = np.atleast_1d(np.asarray(frequencies, dtype=float))
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
         raise InputError("frequencies", short(frequencies), "angular frequencies in rad/s: numbers") from None
     low, high = FREQUENCY_RANGE
     if w.ndim != 1 or not 1 <= w.size <= MAX_FREQUENCIES or not np.all(np.isfinite(w)) or w[0] < low \

@@ -19,6 +19,7 @@ import os
 from dataclasses import astuple, dataclass, fields
 
 from ...core.errors import InputError, short
+from ...core.real import finite_real
 from ...core.gate import read_text
 
 HEADER = ("speed", "kDelta", "kPhiDot", "kPhi", "kPsi", "kY")
@@ -68,6 +69,13 @@ class Gains:
     k_psi: float
     k_y: float
 
+    def __post_init__(self):
+        for f in fields(self):
+            x = getattr(self, f.name)
+            if not finite_real(x):
+                raise InputError("gains", f.name, f"a finite number in {UNITS[f.name]}, got {short(x)}")
+            object.__setattr__(self, f.name, float(x))
+
     def __iter__(self):
         return iter(astuple(self))
 
@@ -88,7 +96,7 @@ def as_gains(value, source="gains", key="(argument)"):
     else:
         try:
             values = tuple(float(x) for x in value)
-        except (TypeError, ValueError):
+        except (TypeError, ValueError, OverflowError):
             raise InputError(source, key, f"five gains k_delta, k_phi_dot, k_phi, k_psi, k_y, got {short(value)}") from None
     if len(values) != 5 or not all(math.isfinite(x) for x in values):
         raise InputError(source, key, f"five finite gains k_delta, k_phi_dot, k_phi, k_psi, k_y, got {short(value)}")

@@ -16,6 +16,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from ...core.display import Display
+from ...core.real import finite_real
 from ...core.errors import InputError, short
 from ...core.frozen import FrozenMap, readonly, short_repr
 from ...core.tables import Table
@@ -34,6 +35,19 @@ PATH_FILTER_FREQUENCY = 2.4
 PREVIEW = 2.75
 """``tau_p`` (s): how far ahead in time the rider sees the road (steer-torque control)."""
 KINDS = ("double", "single")
+MAX_SAMPLES = 1_000_000
+"""Most samples of one run (its states, a few hundred bytes a sample)."""
+
+
+def check_step(step, speed=None):
+    """``step`` (s) as a float: a finite number above 0 giving at most :data:`MAX_SAMPLES` samples
+    over the road at ``speed`` (m/s, when known); InputError otherwise."""
+    if not finite_real(step) or step <= 0:
+        raise InputError("step", short(step), "a time step in s, a finite number above 0")
+    if speed is not None and speed > 0 and LENGTH / speed / step > MAX_SAMPLES:
+        raise InputError("step", short(step), f"a time step of at least {LENGTH / speed / MAX_SAMPLES:.3g} s at "
+                         f"{speed:g} m/s (at most {MAX_SAMPLES} samples over the {LENGTH:g} m road)")
+    return float(step)
 
 
 def road(distance, kind="double"):
@@ -130,11 +144,12 @@ def follow_lane_change(closed, lateral_row, names, units, kind="double", step=0.
     ``lateral_row`` (N,) gives the fed back lateral position from the bicycle's N states; ``names``
     and ``units`` are the bicycle's states'.  The time runs over the whole road (250 m).
     """
-    if kind not in KINDS:
+    if not isinstance(kind, str) or kind not in KINDS:
         raise InputError("kind", short(kind), f"one of {', '.join(KINDS)}")
     v = closed.speed
     if not v > 0:
         raise InputError("speed", short(v), "a lane change needs a forward speed above 0 m/s")
+    step = check_step(step, v)
     t = np.arange(int(np.floor(LENGTH / v / step)) + 1) * step
     A, b = with_path_filter(closed.A, closed.b)
     x = march(A, b, np.zeros(len(A)), road(v * t, kind), step)
@@ -193,8 +208,12 @@ def lane_change(system: System, speed: float, gains: "Gains | ArrayLike | None" 
     >>> print(run.stable, f"{run.time[-1]:.1f} s, steer torque at most {peak:.3f} N m")
     True 50.0 s, steer torque at most 0.155 N m
     """
+    check_step(step)
+    if not isinstance(kind, str) or kind not in KINDS:
+        raise InputError("kind", short(kind), f"one of {', '.join(KINDS)}")
     model = linear_model(system, stiffness)
     plant = rider_plant(model, speed)
+    check_step(step, plant.speed)
     if gains is None:
         try:
             gains = tune_gains(plant)

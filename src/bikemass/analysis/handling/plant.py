@@ -11,11 +11,10 @@ rider's model (both through :func:`bikemass.analysis.results.built_model`, as ``
 the choices.
 """
 
-import math
-import numbers
 
 
 from ...core.choices import closest
+from ...core.real import finite_real
 from ...core.errors import InputError, short, wrong_type
 from ...core.limits import MAX_SPEED
 from ..results import built_model
@@ -62,8 +61,7 @@ def linear_model(system, stiffness=None):
 
 def check_speed(speed, what="speed"):
     """``speed`` as a float (m/s); InputError unless a finite number in [0, :data:`~bikemass.core.limits.MAX_SPEED`]."""
-    if isinstance(speed, bool) or not isinstance(speed, numbers.Real) or not math.isfinite(speed) \
-            or not 0 <= speed <= MAX_SPEED:
+    if not finite_real(speed) or not 0 <= speed <= MAX_SPEED:
         raise InputError(what, short(speed), f"a forward speed in m/s, a finite number in 0..{MAX_SPEED:g}")
     return float(speed)
 

@@ -174,8 +174,9 @@ class ClosedLoop:
 
     @property
     def stable(self):
-        """Every closed-loop eigenvalue has a negative real part."""
-        return self.max_real < 0
+        """Every closed-loop eigenvalue has a negative real part (``False`` where they could not be
+        computed: a loop whose matrix overflowed)."""
+        return bool(self.max_real < 0)
 
     def __repr__(self):
         return short_repr(self, ("speed", f"{self.speed:g} m/s"), ("states", len(self.states)),
@@ -185,6 +186,10 @@ class ClosedLoop:
 def closed_loop(plant, gains):
     """:class:`ClosedLoop` of a :class:`RiderPlant` with ``gains`` (:class:`Gains` or five numbers)."""
     gains = as_gains(gains)
-    A, b, _ = loop_system(plant, tuple(gains), 4, (True,) * 5)
-    eigenvalues = np.sort_complex(np.linalg.eigvals(A))
+    with np.errstate(over="ignore", invalid="ignore"):         # huge gains: an overflowed matrix, refused below
+        A, b, _ = loop_system(plant, tuple(gains), 4, (True,) * 5)
+    if np.all(np.isfinite(A)):
+        eigenvalues = np.sort_complex(np.linalg.eigvals(A))
+    else:                                     # gains so large the loop overflows: no eigenvalue to speak of
+        eigenvalues = np.full(len(A), complex(np.nan, np.nan))
     return ClosedLoop(plant.speed, gains, (*plant.states, *RIDER_STATES), A, b, plant.lateral, eigenvalues)

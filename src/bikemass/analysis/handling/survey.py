@@ -13,6 +13,7 @@ from numpy.typing import ArrayLike
 
 from ...core.choices import Tuning, check
 from ...core.display import Display
+from ...core.real import finite_real
 from ...core.errors import BikemassWarning, InputError, short
 from ...core.frozen import readonly, short_repr
 from ...core.tables import Table
@@ -32,11 +33,33 @@ SPEED_MATCH = 1e-9
 """How close (m/s) a speed must be to a gains file's to take its gains."""
 
 
+GRADED_SOURCES = ("tuned", "given")
+"""The :attr:`HandlingResult.gain_source` of a speed that has a handling level."""
+NO_GAINS = "none: the published procedure found no gains at this speed"
+
+
+def gain_source(given, found, stable, peak, max_real=0.0):
+    """What :attr:`HandlingResult.gain_source` says of one speed: where its gains came from
+    (``given`` or tuned; ``found``: whether there are any) and, unless the speed is graded (a
+    ``stable`` closed loop and a finite HQM ``peak``), why it has no handling level
+    (``max_real``: the closed loop's largest real part, 1/s; ``nan`` where it overflowed)."""
+    if not found:
+        return NO_GAINS
+    source = GRADED_SOURCES[bool(given)]
+    if not math.isfinite(max_real):
+        return f"{source}: closed loop not computable (the gains overflow it), no handling level"
+    if not stable:
+        return f"{source}: closed loop unstable, no handling level"
+    if not math.isfinite(peak):
+        return f"{source}: HQM peak not finite, no handling level"
+    return source
+
+
 def check_speeds(speeds):
     """``speeds`` (m/s) as an increasing 1-D float array in [0, MAX_SPEED]; InputError otherwise."""
     values = np.atleast_1d(np.asarray(speeds, dtype=object))
     if values.ndim != 1 or not 1 <= values.size <= MAX_SURVEY_SPEEDS or not all(
-            isinstance(v, numbers.Real) and not isinstance(v, bool) and math.isfinite(v) and 0 <= v <= MAX_SPEED
+            finite_real(v) and 0 <= v <= MAX_SPEED
             for v in values):
         raise InputError("speeds", short(speeds), f"1 to {MAX_SURVEY_SPEEDS} forward speeds in m/s, finite, "
                          f"in 0..{MAX_SPEED:g}")
@@ -55,8 +78,10 @@ def given_gains(gains, speeds):
         return v, [None] * len(v)
     if isinstance(gains, (str, os.PathLike)):
         table, source = read_gain_table(gains), os.fspath(gains)
+    elif isinstance(gains, Mapping) and not gains:
+        raise InputError("gains", "{}", "{speed in m/s: five gains} with at least one speed")
     elif isinstance(gains, Mapping):
-        table, source = {float(k): as_gains(g, "gains", f"speed {k}") for k, g in gains.items()}, "gains"
+        table, source = {_speed_key(k): as_gains(g, "gains", f"speed {k}") for k, g in gains.items()}, "gains"
     else:
         fixed = as_gains(gains)
         v = check_speeds(speeds) if speeds is not None else None
@@ -75,6 +100,20 @@ def given_gains(gains, speeds):
     return v, chosen
 
 
+def _speed_key(key):
+    """A key of a ``{speed: gains}`` mapping as a speed (m/s); InputError unless a finite number >= 0."""
+    if isinstance(key, bool) or not isinstance(key, (numbers.Real, str)):
+        raise InputError("gains", short(key), "{speed in m/s: five gains}: a speed as each key")
+    try:
+        speed = float(key)
+    except ValueError:
+        raise InputError("gains", short(key), "{speed in m/s: five gains}: a speed as each key (for one set of "
+                         "gains at every speed, five numbers or bm.Gains)") from None
+    if not (math.isfinite(speed) and speed >= 0):
+        raise InputError("gains", short(key), "{speed in m/s: five gains}: a finite speed >= 0 as each key")
+    return speed
+
+
 @dataclass(frozen=True, eq=False, repr=False)
 class HandlingResult(Display):
     """The rider and bicycle at every speed.
@@ -87,13 +126,17 @@ class HandlingResult(Display):
         The gains used at each speed (``None`` where the procedure found none).
     gain_source : tuple of str
         ``"tuned"`` (the published procedure, :mod:`~bikemass.analysis.handling.tuning`) or
-        ``"given"`` at each speed.
+        ``"given"`` at each speed; where the speed gets no handling level, followed by why
+        (``"tuned: closed loop unstable, no handling level"``), or ``"none: ..."`` where the
+        procedure found no gains (:func:`gain_source`).
     closed_loop_stable : numpy.ndarray (n,) of bool
         Whether every closed-loop eigenvalue has a negative real part.
     max_real : numpy.ndarray (n,)
         The largest closed-loop real part (1/s).
     hqm_peak, hqm_peak_frequency : numpy.ndarray (n,)
-        The HQM's peak (dimensionless) and where it is (rad/s); ``nan`` without gains.
+        The HQM's peak (dimensionless) and where it is (rad/s); ``nan`` without gains.  Where
+        the closed loop is unstable the formula's value is kept but grades nothing
+        (:attr:`levels` is ``None`` there).
     hqm_frequencies : numpy.ndarray (k,)
         rad/s, of :attr:`hqm`.
     hqm : numpy.ndarray (n, k)
@@ -119,9 +162,17 @@ class HandlingResult(Display):
             object.__setattr__(self, name, readonly(getattr(self, name)))
 
     @property
+    def graded(self):
+        """Whether each speed has a handling level (n,): gains, a stable closed loop and a finite
+        HQM peak.  The HQM of an unstable closed loop is no handling quality (its frequency
+        response is never reached), so such a speed gets no level whatever its peak."""
+        return readonly(self.closed_loop_stable & np.isfinite(self.hqm_peak))
+
+    @property
     def levels(self):
-        """The handling-quality level (1, 2, 3) at each speed; 0 without gains."""
-        return tuple(0 if not np.isfinite(p) else level(p) for p in self.hqm_peak)
+        """The handling-quality level (1, 2, 3) at each speed; ``None`` where there is none
+        (no gains, or the closed loop unstable: :attr:`graded`; :attr:`gain_source` says why)."""
+        return tuple(level(p) if ok else None for p, ok in zip(self.hqm_peak, self.graded))
 
     def gain(self, name):
         """One gain (``k_delta``, ...) at every speed, (n,); ``nan`` without gains."""
@@ -146,7 +197,8 @@ class HandlingResult(Display):
 
     def to_dict(self):
         """Plain data: speeds, gains, gain_source, closed_loop_stable, closed_loop_max_real,
-        hqm_peak, hqm_peak_frequency, level, lateral_feedback (``null`` where no gains were found)."""
+        hqm_peak, hqm_peak_frequency, level, lateral_feedback (``null`` where no gains were found;
+        ``level`` ``null`` also where the closed loop is unstable)."""
         def listed(values):
             return [float(x) if np.isfinite(x) else None for x in values]
         return {"speeds": self.speeds.tolist(),
@@ -210,7 +262,8 @@ def handling(system: System, speeds: "ArrayLike | None" = None,
     Warns
     -----
     BikemassWarning
-        At a speed where the procedure finds no gains (results there are ``nan``, not stable).
+        At a speed where the procedure finds no gains (results there are ``nan``, not stable),
+        and where the closed loop with the gains is unstable (no handling level there).
 
     See Also
     --------
@@ -231,7 +284,7 @@ def handling(system: System, speeds: "ArrayLike | None" = None,
     tuning = check(Tuning, tuning)
     model = linear_model(system, stiffness)
     v, chosen = given_gains(gains, speeds)
-    rows = []
+    rows, sources = [], []
     lateral = None
     for speed, given in zip(v, chosen):
         plant = rider_plant(model, speed)
@@ -242,8 +295,14 @@ def handling(system: System, speeds: "ArrayLike | None" = None,
                 g = tune(plant, tuning)
             except GainsNotFound as exc:
                 warnings.warn(f"{exc}; that speed is left out", BikemassWarning, stacklevel=2)
-        rows.append(_at_speed(plant, g))
-    return HandlingResult(v, tuple(r[0] for r in rows), tuple("given" if g is not None else "tuned" for g in chosen),
+        row = _at_speed(plant, g)
+        source = gain_source(given is not None, g is not None, row[1], row[3], row[2])
+        if g is not None and source not in GRADED_SOURCES:
+            origin, reason = source.split(": ", 1)
+            warnings.warn(f"at {speed:g} m/s with the {origin} gains: {reason}", BikemassWarning, stacklevel=2)
+        rows.append(row)
+        sources.append(source)
+    return HandlingResult(v, tuple(r[0] for r in rows), tuple(sources),
                           np.array([r[1] for r in rows], bool), np.array([r[2] for r in rows]),
                           np.array([r[3] for r in rows]), np.array([r[4] for r in rows]), CURVE_FREQUENCIES,
                           np.array([r[5] for r in rows]).reshape(len(v), len(CURVE_FREQUENCIES)), lateral)
@@ -254,5 +313,7 @@ def _at_speed(plant, gains):
     if gains is None:
         return None, False, np.nan, np.nan, np.nan, np.full(len(CURVE_FREQUENCIES), np.nan)
     closed = closed_loop(plant, gains)
+    if not np.all(np.isfinite(closed.A)):               # gains so large the loop overflows: nothing to grade
+        return closed.gains, False, np.nan, np.nan, np.nan, np.full(len(CURVE_FREQUENCIES), np.nan)
     peak, where = hqm_peak(plant, gains)
     return closed.gains, closed.stable, closed.max_real, peak, where, hqm(plant, gains, CURVE_FREQUENCIES)
