@@ -149,7 +149,7 @@ def _title(args):
     rider = "no rider" if args.rider == "none" else args.rider
     frame = "rigid frame" if args.stiffness == "infinite" else f"{args.stiffness} frame"
     model = "" if args.model == "whipple" else f", model {args.model}"
-    return f"{args.bike}, {rider}, {frame}{model}"
+    return f"{dialect.bike_name(args.bike)}, {rider}, {frame}{model}"
 
 
 def _output_name(model, name):

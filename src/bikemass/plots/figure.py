@@ -7,6 +7,7 @@ No pyplot and no ``matplotlib.use``: the caller's backend and open figures are l
 
 import math
 import os
+import textwrap
 import threading
 from io import BytesIO
 from pathlib import Path
@@ -104,6 +105,56 @@ def figure_format(path):
     return suffix
 
 
+TITLE_MARGIN = 4.0
+"""Points kept free between a title and the figure's edge."""
+
+
+def _titles(fig):
+    """Every title text of ``fig``: its suptitle and each axes' centre, left and right titles."""
+    texts = [fig._suptitle] if getattr(fig, "_suptitle", None) is not None else []
+    for ax in fig.axes:
+        texts += [ax.title, ax._left_title, ax._right_title]
+    return [t for t in texts if t.get_visible() and t.get_text().strip()]
+
+
+def _room(text, box, width):
+    """Width (pixels) ``text`` may take on a figure ``width`` pixels wide where it now spans
+    ``box``: all of it less the margins, kept about the text's anchor (centred, left or right)."""
+    align = text.get_horizontalalignment()
+    if align == "center":
+        centre = (box.x0 + box.x1) / 2
+        return 2 * min(centre, width - centre)
+    return width - box.x0 if align == "left" else box.x1
+
+
+def fit_titles(fig: figure.Figure) -> list:
+    """Wrap every title of ``fig`` (suptitle, axes titles) that is wider than the figure at its
+    place, at spaces, into as few lines as fit; return the texts changed.
+
+    A long bicycle name in a title would otherwise run past the figure's edge and be cut off in
+    the file. Constrained layout makes room for the extra lines when the figure is drawn. Called
+    by :func:`figure_bytes` (every saved or displayed figure); harmless to call again."""
+    from matplotlib.backends.backend_agg import RendererAgg   # lazy: only for measuring text, at drawing time
+
+    fig.draw_without_rendering()                   # lays the figure out: titles at their places
+    renderer = RendererAgg(max(1, int(fig.bbox.width)), max(1, int(fig.bbox.height)), fig.dpi)
+    margin = TITLE_MARGIN * fig.dpi / 72
+    changed = []
+    for text in _titles(fig):
+        lines = text.get_text().split("\n")
+        box = text.get_window_extent(renderer)
+        room = _room(text, box, fig.bbox.width) - 2 * margin
+        if box.width <= room:
+            continue
+        columns = max(map(len, lines))
+        while columns > 8 and text.get_window_extent(renderer).width > room:
+            columns = max(8, int(columns * 0.9))
+            text.set_text("\n".join("\n".join(textwrap.wrap(line, columns, break_on_hyphens=False)) or line
+                                     for line in lines))
+        changed.append(text)
+    return changed
+
+
 def figure_bytes(fig, fmt="png", dpi=DPI):
     """``fig`` rendered as ``fmt`` (bytes); text stays text in SVG and PDF."""
     width, height = fig.get_size_inches()
@@ -112,6 +163,7 @@ def figure_bytes(fig, fmt="png", dpi=DPI):
                          f"{dpi:g} dpi is {width * height * dpi * dpi:.3g})")
     buffer = BytesIO()
     with RENDERING, rc_context(VECTOR_TEXT):
+        fit_titles(fig)
         fig.savefig(buffer, format="rgba" if fmt == "png" else fmt, dpi=dpi)
     return _png(buffer.getvalue(), fig, dpi) if fmt == "png" else buffer.getvalue()
 

@@ -116,7 +116,9 @@ def plot_side_view(bicycle, rider=None, title=None, size=None, xlim=None, ylim=N
         ax.text(0.02, 0.98, "bodies known by mass, centre of mass and inertia only:\nno parts to draw",
                 transform=ax.transAxes, va="top", fontsize=7.5, color="0.3")
     ax.axhline(0, color="black", linewidth=0.8)
-    ax.set_aspect("equal")
+    # datalim: the axes keep the box constrained layout gives them (title and legend inside the
+    # figure) and the data limits grow to keep one metre the same length both ways
+    ax.set_aspect("equal", adjustable="box" if xlim and ylim else "datalim")
     ax.set_xlabel("x, forward from the rear contact (m)")
     ax.set_ylabel("height above the ground (m)")
     ax.set_title(title or bicycle.name, fontsize=10)
