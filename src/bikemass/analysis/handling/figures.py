@@ -213,6 +213,21 @@ def _level_bands(ax, top):
                 ha="right", va="center", fontsize="x-small", color="0.35")
 
 
+HQM_FREQUENCY_RANGE = 20.0
+"""Frequencies (rad/s) the HQM curves show at least: 0 to this (the rider's crossover region)."""
+
+
+def hqm_frequency_range(result, drawn):
+    """Top of the HQM curves' frequency axis (rad/s): :data:`HQM_FREQUENCY_RANGE`, widened to a
+    quarter past the highest frequency at which a drawn curve peaks (the peak and its fall
+    shown), never past the computed frequencies."""
+    w = np.asarray(result.hqm_frequencies)
+    peaks = [w[int(np.nanargmax(curve))] for curve, ok in zip(result.hqm, drawn)
+             if ok and np.isfinite(curve).any()]
+    top = max([HQM_FREQUENCY_RANGE, *(1.25 * f for f in peaks)])
+    return float(min(top, w.max())) if w.size else top
+
+
 def plot_handling(result: HandlingResult, title: str = "", size: "tuple[float, float] | None" = None,
                   stable_speeds: "tuple[tuple[float, float], ...]" = ()) -> Figure:
     """Figure: the handling quality metric (HQM) against frequency at every speed (left) and its
@@ -263,7 +278,7 @@ def plot_handling(result: HandlingResult, title: str = "", size: "tuple[float, f
     for v, curve, ok in zip(result.speeds, result.hqm, finite):
         if ok:
             curves.plot(result.hqm_frequencies, curve, label=f"{v:g} m/s")
-    curves.set_xlim(0, 20)
+    curves.set_xlim(0, hqm_frequency_range(result, finite))
     curves.set_ylim(0, top)
     _level_bands(curves, top)
     curves.set_xlabel("frequency, rad/s")
