@@ -225,3 +225,22 @@ def test_figure_bytes_fits_titles_of_any_figure():
     data = figure_bytes(fig, "png", 100)
     assert data.startswith(b"\x89PNG") and "\n" in fig._suptitle.get_text()
     assert _titles_inside(fig)
+
+
+def test_web_figures_name_an_upload_by_its_name():
+    """An uploaded bicycle's figures carry its ``name:``, never ``upload-<digest>``."""
+    pytest.importorskip("dash")
+    from bikemass.web import create_app
+    from bikemass.web.page import _bode_figure, _eigenvalue_figure
+    from bikemass.web.state import PageState
+    engine = create_app().engine
+    upload = engine.add_upload("mine.yaml", f'base: jamis\nname: "{LONG_NAME}"\n'.encode())
+    state = PageState(bike=upload, rider="none")
+    assert upload.startswith("upload-") and engine.bike_name(state) == LONG_NAME
+    result = engine.evaluate(state).stability
+    fig = _eigenvalue_figure(result, state, engine.bike_name(state))
+    fit_titles(fig)
+    title = fig.axes[0].get_title()
+    assert " ".join(title.split()).startswith(LONG_NAME) and "upload-" not in title and _titles_inside(fig)
+    fr = bm.frequency_response(engine.model(state), 5.0, "steer-torque", "roll-angle")
+    assert "upload-" not in _bode_figure(fr, state, engine.bike_name(state)).axes[0].get_title()

@@ -378,7 +378,7 @@ def _callbacks(app, engine):
         message = no_update if ctx.triggered_id is None else ""
         return (_speed_text(result.weave_speeds, "weave"), _speed_text(result.capsize_speeds, "capsize"),
                 _range_text(result.ranges["strict"]["exact"]), f"{p.mB + p.mH + p.mR + p.mF:.2f} kg",
-                _svg_uri(_eigenvalue_figure(result, state)), matrix, _bodies_table(p), _geometry_table(chart),
+                _svg_uri(_eigenvalue_figure(result, state, engine.bike_name(state))), matrix, _bodies_table(p), _geometry_table(chart),
                 links, "?" + query, [f"{base[n]:.6g}" for n in NAMES], shown,
                 {} if editable else {"display": "none"}, [html.Li(f"warning: {line}") for line in lines], message)
 
@@ -414,7 +414,7 @@ def _callbacks(app, engine):
             fr = frequency_response(engine.model(state), 5.0 if v is None else v, inp, out)
         except InputError as exc:
             return "", str(exc)
-        return _svg_uri(_bode_figure(fr, state)), ""
+        return _svg_uri(_bode_figure(fr, state, engine.bike_name(state))), ""
 
     @app.callback(Output("hqm-figure", "src"), Output("hqm-summary", "children"), *configuration)
     def handling_quality(bike, size, rider, height, mass, sex, hands, stiffness, combine, chart_texts,
@@ -426,7 +426,7 @@ def _callbacks(app, engine):
             stable = engine.evaluate(state).stability.ranges["strict"]["exact"]
         except InputError as exc:
             return "", str(exc)
-        return _svg_uri(_handling_figure(result, stable, state)), _handling_summary(result)
+        return _svg_uri(_handling_figure(result, stable, state, engine.bike_name(state))), _handling_summary(result)
 
     @app.callback(Output("body-controls", "style"), Input("rider", "value"))
     def body_controls(rider):
@@ -440,19 +440,19 @@ def _placeholder(key, value):
     return f"{value:.2f}" if key in CHART_ANGLES else f"{1000 * value:.1f}"
 
 
-def _eigenvalue_figure(result, state):
+def _eigenvalue_figure(result, state, name):
     rider = (f"a {state.sex} rider of {state.height:g} m and {state.mass:g} kg" if state.rider == BODY_RIDER
              else "no rider" if state.rider == "none" else f"rider {state.rider}")
     model = "" if state.model == BASE else f", model {state.model}"
-    return plot_eigenvalues(result, title=f"{state.bike}, {rider}, stiffness {state.stiffness}{model}")
+    return plot_eigenvalues(result, title=f"{name}, {rider}, stiffness {state.stiffness}{model}")
 
 
-def _bode_figure(fr, state):
-    return plot_bode(fr, f"{state.bike}: {fr.output} / {fr.input} at {fr.speed:g} m/s", size=(6.4, 4.6))
+def _bode_figure(fr, state, name):
+    return plot_bode(fr, f"{name}: {fr.output} / {fr.input} at {fr.speed:g} m/s", size=(6.4, 4.6))
 
 
-def _handling_figure(result, stable, state):
-    return plot_handling(result, f"{state.bike}, rider {state.rider}: handling quality metric", size=(8.0, 3.4),
+def _handling_figure(result, stable, state, name):
+    return plot_handling(result, f"{name}, rider {state.rider}: handling quality metric", size=(8.0, 3.4),
                          stable_speeds=stable)
 
 
