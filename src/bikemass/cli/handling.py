@@ -224,14 +224,14 @@ def _frequencies(text):
     from ..analysis.handling.frequency import log_frequencies
     # lazy: the library loads numpy; bikemass --help must not
     from ..core.errors import InputError
-    expected = "START:STOP:N in rad/s with START < STOP and N >= 2 points (logarithmic)"
     try:
-        start, stop, count = text.split(":")
-        return log_frequencies(float(start), float(stop), int(count))
+        start, stop, count = (float(x) for x in text.split(":"))
+    except ValueError:
+        start = stop = count = float("nan")            # log_frequencies states the rule
+    try:
+        return log_frequencies(start, stop, int(count) if float(count).is_integer() else count)
     except InputError as exc:
         raise InputError("--frequencies", text, exc.expected) from None
-    except ValueError:
-        raise InputError("--frequencies", text, expected) from None
 
 
 def run_bode(args):
@@ -307,16 +307,18 @@ def _inputs(args):
     return applied
 
 
-def _with_option_names(call, names):
+def _with_option_names(call, names, typed=None):
     """``call()``, with an InputError about an argument renamed to its option (``initial`` ->
-    ``--initial``)."""
+    ``--initial``) and showing what was typed (``typed``: ``{argument: text}``), not the value
+    the text was turned into."""
     # lazy: the library loads numpy; bikemass --help must not
     from ..core.errors import InputError
     try:
         return call()
     except InputError as exc:
         if exc.source in names:
-            raise InputError(names[exc.source], exc.key, exc.expected) from None
+            key = (typed or {}).get(exc.source, exc.key)
+            raise InputError(names[exc.source], key, exc.expected) from None
         raise
 
 
@@ -423,7 +425,8 @@ def run_handling(args):
         raise InputError("--speeds", "(missing)", "the speeds in m/s (V1,V2,...), or a --gains file whose speeds are used")
     speeds = None if args.speeds is None else _speeds(args.speeds)
     model = bicycle_model(args)
-    result = _with_option_names(lambda: handling(model, speeds, args.gains), {"speeds": "--speeds"})
+    result = _with_option_names(lambda: handling(model, speeds, args.gains), {"speeds": "--speeds"},
+                                {"speeds": args.speeds})
 
     def render(fmt):
         if fmt in ("json", "yaml"):
