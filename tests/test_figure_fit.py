@@ -244,3 +244,21 @@ def test_web_figures_name_an_upload_by_its_name():
     assert " ".join(title.split()).startswith(LONG_NAME) and "upload-" not in title and _titles_inside(fig)
     fr = bm.frequency_response(engine.model(state), 5.0, "steer-torque", "roll-angle")
     assert "upload-" not in _bode_figure(fr, state, engine.bike_name(state)).axes[0].get_title()
+
+
+@pytest.mark.parametrize("argv", [
+    ["eig", "{bike}", "--speeds", "0:10:0.5"],
+    ["stability", "{bike}", "--speeds", "0:10:0.5"],
+    ["bode", "{bike}", "--speed", "5", "--input", "steer-torque", "--output", "roll-angle"],
+    ["mode-shapes", "{bike}", "--speed", "5"],
+    ["simulate", "{bike}", "--speed", "5", "--duration", "2"],
+    ["handling", "{bike}", "--speeds", "4,6"],
+    ["draw", "{bike}"],
+    ["geometry", "{bike}"],
+])
+def test_every_figure_of_a_long_named_bicycle_keeps_its_text_inside(tmp_path, long_named, argv):
+    """The figures a new user makes of a bicycle with a long name: the PNG's outermost pixels
+    blank (no title, legend or label cut at the edge)."""
+    png = tmp_path / "figure.png"
+    assert main([a.format(bike=long_named) for a in argv] + ["--plot", str(png), "--quiet"]) == 0
+    assert _edges_blank(png)

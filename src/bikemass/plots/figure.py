@@ -105,7 +105,7 @@ def figure_format(path):
     return suffix
 
 
-TITLE_MARGIN = 4.0
+TITLE_MARGIN = 8.0
 """Points kept free between a title and the figure's edge."""
 
 

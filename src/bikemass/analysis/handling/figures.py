@@ -200,7 +200,8 @@ def plot_mode_shapes(shapes: ModeShapes, title: str = "", size: "tuple[float, fl
         z = shapes.eigenvalues[i]
         ax.set_title(f"{shapes.names[i]}\n{z.real:.3g} {'+' if z.imag >= 0 else '-'} {abs(z.imag):.3g}j 1/s",
                      fontsize="small")
-    axes[0].legend(loc="lower left", bbox_to_anchor=(-0.3, -0.35), fontsize="small")
+    handles, labels = axes[0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="outside lower center", ncols=len(labels), fontsize="small")   # laid out inside
     fig.suptitle(title or f"mode shapes at {shapes.speed:g} m/s", fontsize="medium")
     return fig
 
