@@ -107,7 +107,7 @@ def run_params(args):
         lean = scenario.build().lean
         dialect.emit(args, lambda f: moore_yaml(lean))
     else:
-        title = f"{args.bike} with rider {args.rider} (combine {args.combine})"
+        title = f"{dialect.bike_name(args.bike)} with rider {args.rider} (combine {args.combine})"
         included = (args.rider not in (None, "none") or scenario.inputs.lean_set is not None
                     or scenario.inputs.bicycle().rider_included)
         dialect.emit(args, lambda f: format_parameters(params, f, title, included))

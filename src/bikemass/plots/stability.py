@@ -179,6 +179,18 @@ def _off_scale_note(ax, far):
                    va="bottom", fontsize=7.5, color="0.25")
 
 
+def mode_colours(names):
+    """``{name: colour}`` for legend ``names`` (in order): :data:`COLOURS` for the bicycle's
+    modes, :data:`OTHER_COLOURS` in turn for every other name, so no two names share a colour
+    (up to twelve others)."""
+    colours = {}
+    for name in names:
+        if name not in colours:
+            others = sum(1 for n in colours if n not in COLOURS)
+            colours[name] = COLOURS.get(name, OTHER_COLOURS[others % len(OTHER_COLOURS)])
+    return colours
+
+
 def _grown(mask):
     """``mask`` with one more point at both ends of every run, so neighbouring pieces join."""
     out = mask.copy()
@@ -189,11 +201,10 @@ def _grown(mask):
 
 def _draw_curves(ax, speeds, eigenvalues, names):
     """Real (solid) and positive imaginary (dashed) parts, one colour per physical name."""
-    drawn, colours = {}, dict(COLOURS)
+    drawn = {}
+    colours = mode_colours(legend_name(name) for name in dict.fromkeys(names.ravel()))
     for name in dict.fromkeys(names.ravel()):
         legend = legend_name(name)
-        if legend not in colours:
-            colours[legend] = OTHER_COLOURS[(len(colours) - len(COLOURS)) % len(OTHER_COLOURS)]
         colour = colours[legend]
         for c in range(eigenvalues.shape[1]):
             mask = names[:, c] == name
