@@ -95,7 +95,7 @@ def test_draw_of_a_chart_bicycle_with_a_rider_keeps_title_and_legend_inside(tmp_
     assert _titles_inside(figures[0]) and _edges_blank(png)
     fig = figures[0]
     renderer = RendererAgg(int(fig.bbox.width), int(fig.bbox.height), fig.dpi)
-    legend = fig.axes[0].get_legend().get_window_extent(renderer)
+    legend = fig.legends[0].get_window_extent(renderer)
     assert legend.y0 >= 0 and legend.x0 >= 0 and legend.x1 <= fig.bbox.width
 
 

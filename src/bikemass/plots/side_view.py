@@ -123,8 +123,9 @@ def plot_side_view(bicycle, rider=None, title=None, size=None, xlim=None, ylim=N
     ax.set_ylabel("height above the ground (m)")
     ax.set_title(title or bicycle.name, fontsize=10)
     lines, labels = ax.get_legend_handles_labels()
-    ax.legend(handles + lines, [h.get_label() for h in handles] + labels, fontsize=7.5, loc="upper center",
-              bbox_to_anchor=(0.5, -0.1), ncol=2, frameon=False)
+    # a figure legend below the axes: constrained layout gives it its own room under the x label
+    fig.legend(handles + lines, [h.get_label() for h in handles] + labels, fontsize=7.5,
+               loc="outside lower center", ncol=2, frameon=False)
     ax.grid(True, linewidth=0.3)
     if xlim:
         ax.set_xlim(xlim)
