@@ -162,3 +162,13 @@ def test_critical_speeds_are_found_to_the_stated_accuracy(bike, rider):
         assert abs(weave(v) - v) <= 1e-13
     for v in result.capsize_speeds:
         assert abs(capsize(v) - v) <= 1e-13
+
+
+def test_a_whole_number_may_be_written_with_an_exponent(capsys):
+    """``--max-speeds 1e4`` is the whole number 10000 (it was refused as 'a whole number'); a
+    fraction is refused saying what the option counts."""
+    assert main(["eig", "benchmark", "--speeds", "0:2:1", "--max-speeds", "1e4", "--quiet"]) == 0
+    err = _error(capsys, ["uncertainty", "benchmark", "--samples", "2.5"])
+    assert "--samples: a number of samples, got '2.5'" in err
+    err = _error(capsys, ["eig", "benchmark", "--max-speeds", "12.5"])
+    assert "a whole number" in err and "12.5" in err
