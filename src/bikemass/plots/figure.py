@@ -127,6 +127,26 @@ def _room(text, box, width):
     return width - box.x0 if align == "left" else box.x1
 
 
+EARLY_FIT = 0.8
+"""A title narrower than this share of the room its axes' place gives it before layout is taken
+to fit without laying the figure out (constrained layout moves an axes' centre by a few per cent)."""
+
+
+def _fits_before_layout(text, renderer, fig, margin):
+    """Whether ``text`` surely fits: its width (which layout does not change) well inside the room
+    about the centre of its axes as placed before layout (the figure's centre for a suptitle)."""
+    width = text.get_window_extent(renderer).width
+    axes = getattr(text, "axes", None)
+    if axes is None or text is getattr(fig, "_suptitle", None):
+        centre = 0.5
+    else:
+        box = axes.get_position()
+        centre = {"left": box.x0, "right": box.x1}.get(text.get_horizontalalignment(), (box.x0 + box.x1) / 2)
+        if text.get_horizontalalignment() in ("left", "right"):
+            return width <= EARLY_FIT * (fig.bbox.width * (1 - centre if centre == box.x0 else centre) - margin)
+    return width <= EARLY_FIT * (2 * min(centre, 1 - centre) * fig.bbox.width - 2 * margin)
+
+
 def fit_titles(fig: figure.Figure) -> list:
     """Wrap every title of ``fig`` (suptitle, axes titles) that is wider than the figure at its
     place, at spaces, into as few lines as fit; return the texts changed.
@@ -136,11 +156,16 @@ def fit_titles(fig: figure.Figure) -> list:
     by :func:`figure_bytes` (every saved or displayed figure); harmless to call again."""
     from matplotlib.backends.backend_agg import RendererAgg   # lazy: only for measuring text, at drawing time
 
-    fig.draw_without_rendering()                   # lays the figure out: titles at their places
+    titles = _titles(fig)
+    if not titles:
+        return []
     renderer = RendererAgg(max(1, int(fig.bbox.width)), max(1, int(fig.bbox.height)), fig.dpi)
     margin = TITLE_MARGIN * fig.dpi / 72
+    if all(_fits_before_layout(text, renderer, fig, margin) for text in titles):
+        return []                                  # the common case, without laying the figure out
+    fig.draw_without_rendering()                   # lays the figure out: titles at their places
     changed = []
-    for text in _titles(fig):
+    for text in titles:
         lines = text.get_text().split("\n")
         box = text.get_window_extent(renderer)
         room = _room(text, box, fig.bbox.width) - 2 * margin
