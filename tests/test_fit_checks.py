@@ -167,3 +167,13 @@ def test_params_table_shows_the_front_load(capsys):
     assert main(["params", "cargo", "--rider", "no-hands", "--format", "table"]) == 0
     captured = capsys.readouterr()
     assert "(BELOW EN 15194" in captured.out and "EN 15194" in captured.err
+
+
+def test_a_rider_too_small_to_reach_the_pedals_hears_about_standover_too(tmp_path, capsys):
+    """The Jamis's fixed saddle is out of a 1.45 m rider's reach: refused in one line, which also
+    says the top tube stands above the rider's crotch."""
+    pose = _body_pose(tmp_path, 1.45, 45, "female")
+    pose.write_text(pose.read_text().replace("torso_lean: 40 deg, ", ""))
+    assert main(["stability", "jamis", "--rider", str(pose), "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "feet out of reach" in err and "(standover)" in err

@@ -24,6 +24,7 @@ from ..core.config import Node
 from ..core.errors import BikemassWarning, InputError, shown
 from .body import chain_of, load_body
 from .chain import CHAIN_SEGMENTS, FEET, JOINTS
+from .fit import standover_clearance, standover_height
 from .pose import angle_deg, read_pose
 from ..core.paths import within_reach
 
@@ -110,8 +111,18 @@ def solve_chain(chain, body, bicycle):
         solution.check_reachable()
     except InputError as exc:
         key = "hands" if ".grips." in exc.key else "crank" if exc.key.endswith("crank_length") else None
-        chain.fail(f"{exc.expected} [{exc.source}: {exc.key}]", key)
+        chain.fail(f"{exc.expected} [{exc.source}: {exc.key}]{_standover_note(bicycle, body)}", key)
     return solution, front
+
+
+def _standover_note(bicycle, body):
+    """``"; ... standover ..."`` where the top tube is also above the crotch of the rider standing
+    astride the frame (a rider too small for the frame), else ``""``."""
+    clearance = standover_clearance(bicycle, body.inseam)
+    if clearance is None or clearance >= 0:
+        return ""
+    return (f"; the frame is too big for this rider: its top tube ({standover_height(bicycle) * 1000:.0f} mm) is "
+            f"{-clearance * 1000:.0f} mm above the crotch of the rider standing astride it (standover)")
 
 
 CHAIN_POSE_KEYS = ("body", "chain")
