@@ -113,8 +113,8 @@ def _titles(fig):
     """Every title text of ``fig``: its suptitle and each axes' centre, left and right titles."""
     texts = [fig._suptitle] if getattr(fig, "_suptitle", None) is not None else []
     for ax in fig.axes:
-        texts += [ax.title, ax._left_title, ax._right_title]
-    return [t for t in texts if t.get_visible() and t.get_text().strip()]
+        texts += [ax.title, getattr(ax, "_left_title", None), getattr(ax, "_right_title", None)]
+    return [t for t in texts if t is not None and t.get_visible() and t.get_text().strip()]
 
 
 def _room(text, box, width):
@@ -134,17 +134,22 @@ to fit without laying the figure out (constrained layout moves an axes' centre b
 
 def _fits_before_layout(text, renderer, fig, margin):
     """Whether ``text`` surely fits: its width (which layout does not change) well inside the room
-    about the centre of its axes as placed before layout (the figure's centre for a suptitle)."""
+    its anchor leaves as placed before layout (a suptitle: the figure's centre; an axes title: the
+    axes' centre, left or right edge as the title is aligned)."""
     width = text.get_window_extent(renderer).width
+    whole = fig.bbox.width
     axes = getattr(text, "axes", None)
-    if axes is None or text is getattr(fig, "_suptitle", None):
-        centre = 0.5
+    box = axes.get_position() if axes is not None and text is not getattr(fig, "_suptitle", None) else None
+    align = text.get_horizontalalignment()
+    if box is None:
+        room = whole - 2 * margin
+    elif align == "left":
+        room = (1 - box.x0) * whole - margin
+    elif align == "right":
+        room = box.x1 * whole - margin
     else:
-        box = axes.get_position()
-        centre = {"left": box.x0, "right": box.x1}.get(text.get_horizontalalignment(), (box.x0 + box.x1) / 2)
-        if text.get_horizontalalignment() in ("left", "right"):
-            return width <= EARLY_FIT * (fig.bbox.width * (1 - centre if centre == box.x0 else centre) - margin)
-    return width <= EARLY_FIT * (2 * min(centre, 1 - centre) * fig.bbox.width - 2 * margin)
+        room = 2 * min(box.x0 + box.x1, 2 - box.x0 - box.x1) / 2 * whole - 2 * margin
+    return width <= EARLY_FIT * room
 
 
 def fit_titles(fig: figure.Figure) -> list:
