@@ -238,7 +238,7 @@ def test_side_view_draws_wheels_for_a_parameter_file_and_colours_by_body():
     rider = catalog.load_rider(pose)
     ax = plot_side_view(catalog.load_bicycle("jamis"), rider).axes[0]
     assert any(t.get_text().startswith("rear frame + rider") for t in ax.texts)
-    labels = [t.get_text() for t in ax.get_legend().get_texts()]
+    labels = [t.get_text() for t in ax.figure.legends[0].get_texts()]
     assert any("ellipse of gyration" in t for t in labels)
     assert any(t.get_text().startswith("front frame + rider") for t in ax.texts)
     forearms = [p for p in ax.patches if p.get_facecolor() == pytest.approx(to_rgba(COLOURS["front_frame"], 0.3))]

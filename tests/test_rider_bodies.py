@@ -142,7 +142,10 @@ def test_relaxed_on_cargo_is_reseated_and_stability_uses_it(capsys, bikes):
     assert used == bicycle_parameters(cargo, seated).to_dict()
     assert used != bicycle_parameters(cargo, written).to_dict()
     code, out, err = run(capsys, "stability", "cargo", "--rider", "relaxed", "--format", "json")
-    assert code == 0 and err == ""
+    lines = [line for line in err.splitlines() if line.startswith("bikemass:")]
+    # the one warning: the Cargo carries 24.8 % of bicycle and rider on its front wheel with this
+    # rider, below EN 15194's 25 % (tests/test_fit_checks.py)
+    assert code == 0 and len(lines) == 1 and "EN 15194" in lines[0]
 
 
 def test_thesis_placement_stays_without_a_bicycle(capsys):

@@ -41,7 +41,7 @@ from ..core.limits import MAX_SPEEDS
 from ..core.units import UnitError, dimension_of, split_quantity, to_si
 from ..models.lean import RiderLeanParameters
 from ..models.parameters import NAMES
-from ..plots.stability import COLOURS, OTHER_COLOUR
+from ..plots.stability import mode_colours
 from ..scenario.scenario import Scenario
 from .engine.critical import critical_speeds
 from .engine.modes import follow_many, follow_modes
@@ -480,8 +480,10 @@ def uncertainty_figure(result, title="", size=None):
     fig = Figure(figsize=size or (11, 5), layout="constrained")
     axes = fig.subplots(1, 2, width_ratios=(2, 1))
     v = result.eigen["speeds"]
+    keys = {label: "weave" if label in ("weave 1", "weave 2") else label for label in result.eigen["modes"]}
+    colours = mode_colours(keys.values())                    # "weave 1", "weave 2" -> the weave's colour
     for label, m in result.eigen["modes"].items():
-        c = COLOURS.get(label.split(" ")[0], OTHER_COLOUR)      # "weave 1", "weave 2" -> the weave's colour
+        c = colours[keys[label]]
         re = m["nominal"].real
         axes[0].plot(v, re, color=c, ls="--" if label == "weave 2" else "-", label=label)
         axes[0].fill_between(v, re - 2 * m["std_re"], re + 2 * m["std_re"], color=c, alpha=0.2, lw=0)

@@ -48,6 +48,13 @@ BB height (one rounding of the wheel radius); 25 mm for standover, whose point o
 STAND_INS = {"bb_drop": "bb_height", "fork_offset": "trail"}
 """A frame key a chart may leave out when it prints this one instead: BB drop = wheel radius -
 BB height; fork offset = r cos(head angle) - trail sin(head angle) (both with the chart's wheel)."""
+WHEEL_DEPENDENT = ("bb_height", "trail", "mechanical_trail", "standover")
+"""Checked keys that move with the wheel radius (the frame fixed to the axles by bb_drop): a
+chart measures them with its stock tyre."""
+MAX_TYRE_CHANGE = 0.05
+"""m: most a wheel's radius may differ from the chart's stock one (its bb_height + bb_drop) and
+still be taken for another tyre on the same frame (700c x 25 to 29 x 2.6 in is 44 mm); further,
+the published BB height is checked against the wheel given, as before."""
 WHEEL_KEYS = ("wheel", "tire_width", "wheel_radius")
 OTHER_KEYS = ("units", "tolerances", "note")
 ANGLE_RANGE_DEG = (45.0, 90.0)
@@ -74,6 +81,18 @@ class Chart:
     tire_width: float | None = None
     checks: tuple = ()
     tolerances: tuple = ()
+    stock_radius: float | None = None
+    """Radius (m) of the wheel the chart's published BB height (and trail, standover) were measured
+    with, where it differs from ``wheel_radius`` (another tyre on the frame): bb_height + bb_drop."""
+
+    def stock_values(self, values):
+        """``values`` (construction, m) with the wheel-dependent keys as the stock wheel makes them:
+        every height shifts by the change of radius, trail by its cotangent of the head angle."""
+        if self.stock_radius is None:
+            return dict(values)
+        dr, ha = self.stock_radius - self.wheel_radius, self.head_tube_angle
+        shift = {"bb_height": dr, "standover": dr, "trail": dr / np.tan(ha), "mechanical_trail": dr * np.cos(ha)}
+        return {k: v + shift[k] if k in shift and v is not None else v for k, v in values.items()}
 
     def points(self):
         """Frame points ``{name: (x, height)}`` (m) and the derived chart values, see :func:`construct`."""
@@ -143,8 +162,14 @@ def read_chart(node):
         t = node["tolerances"]
         t.check_keys(optional=CHECKED_KEYS)
         tolerances = {k: _value(t[k], "length", units) for k in CHECKED_KEYS if t.has(k)}
+    stock = None
+    if "bb_height" not in stood_in and given("bb_height") and given("bb_drop"):
+        stock = _value(node["bb_height"], "length", units) + v["bb_drop"]
+        tolerance = {**TOLERANCES, **tolerances}["bb_height"]
+        if not tolerance < abs(stock - radius) <= MAX_TYRE_CHANGE:
+            stock = None                      # the stock wheel, or a BB height the check refuses
     chart = Chart(**v, wheel_radius=radius, tire_width=tire, checks=checks,
-                  tolerances=tuple(tolerances.items()))
+                  tolerances=tuple(tolerances.items()), stock_radius=stock)
     _check_feasible(chart, node)
     return chart
 
@@ -214,13 +239,28 @@ def _check_feasible(chart, node):
 def check_redundant(chart, values, node, extra=None):
     """Fail at the first checked chart key whose value differs from the construction
     (``values``, m) by more than its tolerance; ``extra`` adds values derived elsewhere."""
-    values = {**values, **(extra or {})}
+    values = chart.stock_values({**values, **(extra or {})})
     tolerances = {**TOLERANCES, **dict(chart.tolerances)}
     for key, given in chart.checks:
         if key not in values:
             continue
         built = values[key]
         if abs(built - given) > tolerances[key]:
+            stock = (f" with its stock wheel ({chart.stock_radius * 1000:.1f} mm radius: bb_height + bb_drop)"
+                     if chart.stock_radius is not None and key in WHEEL_DEPENDENT else "")
             node.fail(f"a {key} within {tolerances[key] * 1000:g} mm of {built * 1000:.1f} mm, what the chart's "
-                      f"frame gives (stack, reach, angles, bb_drop, fork_offset, chainstay, wheel); "
+                      f"frame gives{stock} (stack, reach, angles, bb_drop, fork_offset, chainstay, wheel); "
                       f"got {given * 1000:.1f} mm", key)
+
+
+def tyre_change_note(chart, values, source):
+    """A warning line where the chart's wheel is not the one its published values were measured
+    with (``chart.stock_radius``): what the wheel given makes of the BB height and trail; else None."""
+    if chart.stock_radius is None:
+        return None
+    stock = chart.stock_values(values)
+    changed = ", ".join(f"{key.replace('_', ' ')} {stock[key] * 1000:.1f} -> {values[key] * 1000:.1f} mm"
+                        for key in ("bb_height", "trail") if values.get(key) is not None)
+    return (f"{source}: chart.wheel: a wheel of {chart.wheel_radius * 1000:.1f} mm radius on a frame whose chart "
+            f"was measured with one of {chart.stock_radius * 1000:.1f} mm (bb_height + bb_drop): the published "
+            f"BB height and trail are checked with the stock wheel, the bicycle is built with this one ({changed})")

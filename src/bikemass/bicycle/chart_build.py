@@ -16,7 +16,7 @@ from ..core.config import Node, load_yaml
 from ..core.gate import note_read
 from ..core.paths import frames_dir
 from ..models.plausibility import warn
-from .chart import check_redundant, construct, read_chart
+from .chart import check_redundant, construct, read_chart, tyre_change_note
 
 CHART_TOP_KEYS = ("name", "source", "description", "note", "chart", "sizes", "frame", "cockpit", "saddle",
                   "crank_length", "brakes", "wheel_parts", "wheels", "components", "loads", "materials",
@@ -126,6 +126,9 @@ def expand_chart(node):
         kp[name] = _xyz(points[name])
     midpoint_height = (points["top_tube_front"][1] + points["seat_cluster"][1]) / 2
     check_redundant(chart, values, node["chart"], {"standover": midpoint_height + top_tube / 2})
+    note = tyre_change_note(chart, values, node.source)
+    if note:
+        warn(note)
 
     cockpit_material = cockpit["material"].string()
     tubes = [_tube(n, a, b, s) for n, a, b, s in (

@@ -7,6 +7,7 @@ from ..core.errors import InputError
 from ..core.progress import Progress
 from . import dialect
 from .figure_options import add_figure_options, figure_options, write_figure
+from .options import whole
 
 PLOT_FORMAT = "png"
 """The sweep's figure format unless ``--plot-format`` gives one."""
@@ -52,8 +53,8 @@ def register(sub):
                           "{distribution: uniform, half_width: h} (each in SI: m, kg, rad; or with a unit: '0.1 mm', '3 deg')")
     unc.add_argument("--method", choices=("linear", "montecarlo"), default="linear",
                      help="linear (default) or montecarlo")
-    unc.add_argument("--samples", type=int, default=1000, metavar="N", help="Monte Carlo samples (default 1000)")
-    unc.add_argument("--seed", type=int, default=0, help="random seed of the Monte Carlo draws (default 0)")
+    unc.add_argument("--samples", type=whole("a number of samples"), default=1000, metavar="N", help="Monte Carlo samples (default 1000)")
+    unc.add_argument("--seed", type=whole("a whole-number seed"), default=0, help="random seed of the Monte Carlo draws (default 0)")
     unc.add_argument("--speeds", metavar="START:STOP:STEP", default="0:10:0.1",
                      help="speeds of the eigenvalue bands in m/s (default 0:10:0.1)")
     unc.set_defaults(run=run_uncertainty)
@@ -72,7 +73,7 @@ def register(sub):
     sw.add_argument("spec", metavar="SPEC.yaml", help="sweep specification")
     sw.add_argument("--out", metavar="DIR", required=True, help="output folder (created; reused to resume)")
     engine = sw.add_mutually_exclusive_group()
-    engine.add_argument("--workers", type=int, metavar="N",
+    engine.add_argument("--workers", type=whole("a number of workers"), metavar="N",
                         help="run on a local Dask cluster of N single-threaded worker processes")
     engine.add_argument("--scheduler", metavar="ADDRESS",
                         help="run on an existing Dask distributed cluster (e.g. tcp://10.0.0.5:8786)")
@@ -111,7 +112,7 @@ def _options(args):
 
 def _title(args):
     model = "" if args.model == "whipple" else f", model {args.model}"
-    return f"{args.bike}, rider {args.rider}, stiffness {args.stiffness}{model}"
+    return f"{dialect.bike_name(args.bike)}, rider {args.rider}, stiffness {args.stiffness}{model}"
 
 
 def run_sensitivity(args):

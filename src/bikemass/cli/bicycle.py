@@ -125,7 +125,7 @@ def run_params(args):
         lean = scenario.build().lean
         dialect.emit(args, lambda f: moore_yaml(lean))
     else:
-        title = f"{args.bike} with rider {args.rider} (combine {args.combine})"
+        title = f"{dialect.bike_name(args.bike)} with rider {args.rider} (combine {args.combine})"
         included = (args.rider not in (None, "none") or scenario.inputs.lean_set is not None
                     or scenario.inputs.bicycle().rider_included)
         # a measured bicycle's standard deviations belong to its own parameters: not with a rider added

@@ -159,6 +159,18 @@ def scenario(args, rider=None, stiffness=None, bike=None, origin=None):
                     origin=origin or bike, **options)
 
 
+def bike_name(bike):
+    """The name titles give BIKE: the ``name:`` its file declares (a parameter file: the file's
+    stem), else BIKE as typed (a file that is not a bicycle, such as a rider-lean parameter set)."""
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..scenario.loading import load_bicycle
+
+    try:
+        return load_bicycle(bike).name or str(bike)
+    except InputError:
+        return str(bike)
+
+
 def add_speeds(p):
     p.add_argument("--speeds", metavar="START:STOP:STEP", default=DEFAULT_SPEEDS,
                    help=f"speed grid in m/s (default {DEFAULT_SPEEDS}, the thesis's)")

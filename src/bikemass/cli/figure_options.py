@@ -28,9 +28,9 @@ def add_figure_options(parser, xlim=None, ylim=None):
     group.add_argument("--size", metavar="W,H", help="figure width and height in inches (e.g. 7,4.5)")
     group.add_argument("--dpi", metavar="N", default="150", help="resolution of PNG output (default 150)")
     if xlim:
-        group.add_argument("--xlim", metavar="LOW:HIGH", help=f"horizontal axis range: {xlim} (a negative LOW: --xlim=-1:2)")
+        group.add_argument("--xlim", metavar="LOW:HIGH", help=f"horizontal axis range: {xlim}, e.g. -1:2")
     if ylim:
-        group.add_argument("--ylim", metavar="LOW:HIGH", help=f"vertical axis range: {ylim} (a negative LOW: --ylim=-1:2)")
+        group.add_argument("--ylim", metavar="LOW:HIGH", help=f"vertical axis range: {ylim}, e.g. -1:2")
 
 
 def _numbers(text, option, separator, count, expected):

@@ -180,7 +180,7 @@ def _title(args):
     rider = "no rider" if args.rider == "none" else args.rider
     frame = "rigid frame" if args.stiffness == "infinite" else f"{args.stiffness} frame"
     model = "" if args.model == "whipple" else f", model {args.model}"
-    return f"{args.bike}, {rider}, {frame}{model}"
+    return f"{dialect.bike_name(args.bike)}, {rider}, {frame}{model}"
 
 
 def _output_name(model, name):
@@ -256,17 +256,18 @@ def _frequencies(text, hz=False):
     from ..analysis.handling.frequency import log_frequencies
     # lazy: the library loads numpy; bikemass --help must not
     from ..core.errors import InputError
-    unit, scale = ("Hz", 2 * math.pi) if hz else ("rad/s", 1.0)
-    expected = f"START:STOP:N in {unit} with START < STOP and N >= 2 points (logarithmic)"
+    scale = 2 * math.pi if hz else 1.0
     if text is None:
         start, stop, count = DEFAULT_FREQUENCIES.split(":")
         return log_frequencies(float(start), float(stop), int(count))
     try:
-        start, stop, count = text.split(":")
-        return log_frequencies(float(start) * scale, float(stop) * scale, int(count))
-    except InputError as exc:
-        raise InputError("--frequencies", text, expected if hz else exc.expected) from None
+        start, stop, count = (float(x) for x in text.split(":"))
     except ValueError:
+        start = stop = count = float("nan")            # log_frequencies states the rule
+    try:
+        return log_frequencies(start * scale, stop * scale, int(count) if float(count).is_integer() else count)
+    except InputError as exc:
+        expected = f"START:STOP:N in Hz, 2 pi START and 2 pi STOP as {exc.expected}" if hz else exc.expected
         raise InputError("--frequencies", text, expected) from None
 
 
@@ -407,16 +408,18 @@ def _inputs(args):
     return applied
 
 
-def _with_option_names(call, names):
+def _with_option_names(call, names, typed=None):
     """``call()``, with an InputError about an argument renamed to its option (``initial`` ->
-    ``--initial``)."""
+    ``--initial``) and showing what was typed (``typed``: ``{argument: text}``), not the value
+    the text was turned into."""
     # lazy: the library loads numpy; bikemass --help must not
     from ..core.errors import InputError
     try:
         return call()
     except InputError as exc:
         if exc.source in names:
-            raise InputError(names[exc.source], exc.key, exc.expected) from None
+            key = (typed or {}).get(exc.source, exc.key)
+            raise InputError(names[exc.source], key, exc.expected) from None
         raise
 
 
@@ -524,7 +527,7 @@ def run_handling(args):
     speeds = None if args.speeds is None else _speeds(args.speeds)
     model = bicycle_model(args)
     result = _with_option_names(lambda: handling(model, speeds, args.gains, tuning=args.tuning),
-                                {"speeds": "--speeds"})
+                                {"speeds": "--speeds"}, {"speeds": args.speeds})
 
     def render(fmt):
         if fmt in ("json", "yaml"):

@@ -3,6 +3,7 @@
 import argparse
 import importlib
 import os
+import re
 import sys
 import warnings
 
@@ -44,6 +45,12 @@ Williams (2015): corrected by default; the thesis's way by name (--as-printed,
 class Parser(argparse.ArgumentParser):
     """argparse with its errors on one line (the usage is one ``--help`` away)."""
 
+    def parse_known_args(self, args=None, namespace=None):
+        """argparse's, where a value that starts with a minus sign (``--ylim -15:60``,
+        ``--speeds -1:5:0.1``) goes to the option before it, as ``--ylim=-15:60`` would."""
+        args = sys.argv[1:] if args is None else list(args)
+        return super().parse_known_args(_joined_negative_values(self, args), namespace)
+
     def error(self, message):
         self.exit(2, f"{self.prog}: error: {one_line(message, 600)} (see {self.prog} --help)\n")
 
@@ -58,6 +65,31 @@ class Parser(argparse.ArgumentParser):
             if text is not None:
                 action.help = text()
         return super().format_help()
+
+
+NEGATIVE_VALUE = re.compile(r"-(\d|\.\d|inf\b|nan\b)", re.IGNORECASE)
+"""A command-line word that starts like a negative number (argparse would take ``-15:60`` or
+``-1e-3,2`` for an unknown option)."""
+
+
+def _joined_negative_values(parser, args):
+    """``args`` with each option that takes one value joined to a following word that starts
+    like a negative number (``--ylim -15:60`` -> ``--ylim=-15:60``); words after ``--`` untouched."""
+    out, i = [], 0
+    while i < len(args):
+        word = args[i]
+        if word == "--":
+            return out + args[i:]
+        action = parser._option_string_actions.get(word)
+        if (action is not None and action.nargs is None and action.option_strings and word.startswith("--")
+                and i + 1 < len(args) and NEGATIVE_VALUE.match(args[i + 1])
+                and args[i + 1] not in parser._option_string_actions):
+            out.append(f"{word}={args[i + 1]}")
+            i += 2
+            continue
+        out.append(word)
+        i += 1
+    return out
 
 
 def build_parser():

@@ -21,7 +21,7 @@ def number(low=-math.inf, high=math.inf, integer=False, open_low=False, what="a 
     """An argparse type: a finite float (or int) in [low, high] (``open_low``: above ``low``)."""
     def parse(text):
         try:
-            value = int(text) if integer else float(text)
+            value = _whole(text) if integer else float(text)
         except (ValueError, OverflowError):
             raise argparse.ArgumentTypeError(f"{what}, got {short(text, 40)}") from None
         inside = (value > low if open_low else value >= low) and value <= high
@@ -34,6 +34,24 @@ def number(low=-math.inf, high=math.inf, integer=False, open_low=False, what="a 
         return value
     parse.__name__ = what     # argparse names the type in its messages
     return parse
+
+
+def _whole(text):
+    """``text`` as an int: digits (``1000``) or any number that is whole (``1e3``, ``1000.0``);
+    ValueError for a fraction or no number."""
+    try:
+        return int(text)
+    except ValueError:
+        value = float(text)
+        if not (math.isfinite(value) and value.is_integer()):
+            raise ValueError(text) from None
+        return int(value)
+
+
+def whole(what="a whole number"):
+    """An argparse type: an int written as digits or as a whole number (``1e3``); the range is
+    the library's to check."""
+    return number(integer=True, what=what)
 
 
 def count(low=1, high=10**9, what="a whole number"):

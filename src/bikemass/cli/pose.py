@@ -28,6 +28,10 @@ def register(sub):
     p.add_argument("--crank", type=angle(360), metavar="DEG",
                    help="crank angle (deg, 0 = right crank forward, positive pedalling); each foot on "
                         "its pedal.  Default: symmetric legs, feet on the crank axis (as the thesis)")
+    p.add_argument("--feet", choices=("ball", "bicycleparameters"), default="ball",
+                   help="the point of the lower leg on the crank axis or pedal: ball (the ball of the foot, "
+                        "default) or bicycleparameters (BicycleParameters' seating of a yeadon body: the "
+                        "shank's line at the heel's level, the foot beyond; docs/riders.md)")
     p.add_argument("--fix", action="append", default=[], metavar="JOINT=DEG",
                    help=f"fix any joint angle ({JOINT_HELP}); repeatable")
     p.add_argument("--name", help="pose name written to the file")
@@ -86,7 +90,7 @@ def run_pose(args):
     from ..scenario.posing import pose_rider
 
     options = dialect.figure_checked(args)
-    posed = pose_rider(args.bike, args.body, args.hands, args.crank, _fixed(args), args.name)
+    posed = pose_rider(args.bike, args.body, args.hands, args.crank, _fixed(args), args.name, args.feet)
     dialect.emit(args, lambda fmt: _pose_text(args, posed, fmt))
     if args.plot:
         # lazy: plots/ load matplotlib; only the figure needs it
@@ -111,7 +115,8 @@ def _pose_text(args, posed, fmt):
         return text
     header = "".join(f"# {line}\n" for line in (
         f"Chain pose written by: bikemass pose {args.bike} --hands {hands}"
-        + (f" --crank {args.crank:g}" if args.crank is not None else ""),
+        + (f" --crank {args.crank:g}" if args.crank is not None else "")
+        + (f" --feet {args.feet}" if args.feet != "ball" else ""),
         "joint angles (deg): " + ", ".join(f"{k} {v:.3f}" for k, v in sorted(solution.pose.angles.items())),
         "placement form (docs/riders.md): location = top-plane centre (m), angle (deg)"))
     return header + text

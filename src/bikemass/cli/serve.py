@@ -7,6 +7,7 @@ import socket
 import threading
 
 from ..core.errors import InputError
+from .options import whole
 
 DEFAULT_PORT = 8050
 LOOPBACK = "127.0.0.1"
@@ -24,7 +25,7 @@ def register(sub):
                     "/api/stability and /api/params answer the same query with the JSON of "
                     "'bikemass stability' and 'bikemass params'. Ctrl-C stops it (exit status 130, "
                     "SIGTERM 143). Needs the 'web' extra: pip install 'bikemass[web]'.")
-    serve.add_argument("--port", type=int, default=DEFAULT_PORT, help=f"TCP port (default {DEFAULT_PORT})")
+    serve.add_argument("--port", type=whole("a TCP port number"), default=DEFAULT_PORT, help=f"TCP port (default {DEFAULT_PORT})")
     serve.add_argument("--host", default=LOOPBACK,
                        help=f"address to listen on (default {LOOPBACK}: this machine only; "
                             "0.0.0.0 exposes the page to the network); requests must name the server by "

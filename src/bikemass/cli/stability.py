@@ -104,7 +104,7 @@ def _combine(combine):
 def _title(args):
     thesis = " (rider added as the thesis did)" if args.rider != "none" and args.combine == "thesis" else ""
     model = "" if getattr(args, "model", "whipple") == "whipple" else f", model {args.model}"
-    return f"{args.bike}, {_rider_name(args.rider)}, {_stiffness_name(args.stiffness)}{model}{thesis}"
+    return f"{dialect.bike_name(args.bike)}, {_rider_name(args.rider)}, {_stiffness_name(args.stiffness)}{model}{thesis}"
 
 
 def run_eig(args):
@@ -190,7 +190,7 @@ def run_compare(args):
     if args.plot:
         # lazy: plots/ load matplotlib; only the figure needs it
         from ..plots.critical_speeds import plot_critical_speeds
-        fig = plot_critical_speeds(results, f"{args.bike}: weave and capsize speeds ({_combine(args.combine)})",
+        fig = plot_critical_speeds(results, f"{dialect.bike_name(args.bike)}: weave and capsize speeds ({_combine(args.combine)})",
                                    options.size, options.xlim)
         dialect.save_plot(args, fig, options)
     return 0

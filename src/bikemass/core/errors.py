@@ -14,9 +14,20 @@ MAX_PART = 300
 """Longest file name, key or expectation shown in a message (characters)."""
 
 
+def _plain(value):
+    """``value`` with numpy arrays and numbers as Python lists and numbers (``1000000.0``, not
+    ``array([1000000.])`` or ``np.float64(1000000.0)``); anything else as it is."""
+    if type(value).__module__ == "numpy" and hasattr(value, "tolist"):
+        return value.tolist()
+    if isinstance(value, (list, tuple)) and any(type(v).__module__ == "numpy" for v in value):
+        return type(value)(_plain(v) for v in value)
+    return value
+
+
 def short(value, limit=60):
-    """``repr`` of ``value`` cut to about ``limit`` characters (never more than one line)."""
-    text = repr(value)
+    """``repr`` of ``value`` cut to about ``limit`` characters (never more than one line); numpy
+    arrays and numbers written as plain Python lists and numbers."""
+    text = repr(_plain(value))
     return one_line(text if len(text) <= limit else text[:limit - 5] + "...", limit)
 
 

@@ -211,6 +211,31 @@ def table(headers, rows, floatfmt="{:.3f}"):
     return "\n".join(lines) + "\n"
 
 
+NAME_MAX = 255
+"""Longest file name (bytes) assumed where the file system does not say (Linux, macOS, Windows)."""
+TEMPORARY_EXTRA = 16
+"""Bytes a temporary name adds to its prefix: tempfile's 8 random characters, the suffix and a dot."""
+
+
+def _temporary_prefix(target):
+    """Prefix of the temporary file or folder written next to ``target`` before it is renamed:
+    ``.<name>.``, with the name shortened (kept readable, made unique by a digest of the whole
+    name) where the full one would take a legal ``target`` name past the file system's limit."""
+    import hashlib                                     # lazy: only for names near the limit
+    name = Path(target).name
+    try:
+        limit = os.pathconf(Path(target).parent if str(Path(target).parent) else ".", "PC_NAME_MAX")
+    except (OSError, ValueError, AttributeError):
+        limit = NAME_MAX
+    prefix = f".{name}."
+    if len(prefix.encode()) + TEMPORARY_EXTRA <= limit:
+        return prefix
+    digest = hashlib.sha1(name.encode("utf-8", "surrogateescape")).hexdigest()[:10]
+    keep = max(0, limit - TEMPORARY_EXTRA - len(digest) - 3)
+    head = name.encode("utf-8", "surrogateescape")[:keep].decode("utf-8", "ignore")
+    return f".{head}~{digest}."
+
+
 def write_atomic(path, data):
     """Write ``data`` (str or bytes, or a function that writes the content to the binary file it
     is given: a large file streamed) to ``path`` via a temporary file and rename: never half-written.
@@ -229,7 +254,7 @@ def write_atomic(path, data):
     mode = "wb" if streamed or isinstance(data, bytes) else "w"
     try:
         target.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(dir=target.parent, prefix=f".{target.name}.", suffix=".tmp")
+        fd, tmp = tempfile.mkstemp(dir=target.parent, prefix=_temporary_prefix(target), suffix=".tmp")
     except OSError as exc:
         raise InputError(path, "(output)", f"a file in a writable folder ({exc.strerror})") from None
     # a stop signal waits until the file is in place (a streamed one: only for the rename; a stop
@@ -334,7 +359,7 @@ def new_folder(out, mark=STUDY_MARK):
     check_folder(out, mark)
     parent = out.resolve().parent
     parent.mkdir(parents=True, exist_ok=True)
-    tmp = Path(tempfile.mkdtemp(dir=parent, prefix=f".{out.name}.", suffix=".tmp"))
+    tmp = Path(tempfile.mkdtemp(dir=parent, prefix=_temporary_prefix(out), suffix=".tmp"))
     try:
         yield tmp
         with deferred():
@@ -342,7 +367,7 @@ def new_folder(out, mark=STUDY_MARK):
             old = None
             if out.exists():
                 check_folder(out, mark)
-                old = Path(tempfile.mkdtemp(dir=parent, prefix=f".{out.name}.", suffix=".old"))
+                old = Path(tempfile.mkdtemp(dir=parent, prefix=_temporary_prefix(out), suffix=".old"))
                 os.replace(out, old / "previous")
             os.replace(tmp, out)
             if old is not None:

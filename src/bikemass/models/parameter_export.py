@@ -20,6 +20,7 @@ from ..core.choices import PARAMETER_FORMATS as FORMATS
 from ..core.errors import InputError
 from ..core.output import as_written, dumps, table, with_units
 from .parameters import DESCRIPTIONS, NAMES, parameter_units
+from .plausibility import EN15194_FRONT_SHARE, front_load
 
 
 def format_parameters(params, fmt, title="", rider_included=False, std=None):
@@ -41,8 +42,12 @@ def format_parameters(params, fmt, title="", rider_included=False, std=None):
     if fmt == "table":
         rows = [[k, DESCRIPTIONS[k].split(" [")[0], values[k], *([std.get(k, 0.0)] if std else []), units[k]]
                 for k in NAMES]
-        return (f"{title}\n" if title else "") + table(["parameter", "meaning", "value", *(["std"] if std else []),
+        text = (f"{title}\n" if title else "") + table(["parameter", "meaning", "value", *(["std"] if std else []),
                                                          "unit"], rows, "{:.6g}")
+        share, kg = front_load(params)
+        verdict = ("" if not rider_included else "meets" if share >= EN15194_FRONT_SHARE else "BELOW")
+        rule = f" ({verdict} EN 15194: at least {EN15194_FRONT_SHARE * 100:.0f} % with the rider seated)" if verdict else ""
+        return text.rstrip("\n") + f"\nfront wheel load: {share * 100:.1f} % of the weight ({kg:.2f} kg){rule}\n"
     if fmt == "csv":
         if std:
             return "parameter,value,std,unit\n" + "".join(

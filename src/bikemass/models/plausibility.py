@@ -276,3 +276,39 @@ def warn_rider(rider_com, geometry, source, rider_name, mass=None):
               and abs(y) <= RIDER_REACH):
         warn(f"{source}: rider {rider_name}'s centre of mass [{x:.4g}, {y:.4g}, {z:.4g}] m is far from "
              f"the bicycle (more than {RIDER_REACH:g} m beyond a wheel contact, or above {RIDER_HEIGHT:g} m)")
+
+
+EN15194_FRONT_SHARE = 0.25
+"""EN 15194 (electrically power assisted cycles), like EN 14764 and ISO 4210 for other bicycles:
+with the rider seated, at least 25 % of the weight of bicycle and rider on the front wheel."""
+
+
+def front_load(params):
+    """``(share, front mass)``: the fraction of the total weight on the front wheel and the mass (kg)
+    it carries, the bicycle standing on level ground: moments about the rear contact give the front
+    contact's load ``m_T g x_T / w``, with ``m_T = mR + mB + mH + mF`` and the total centre of mass
+    ``x_T = (mB xB + mH xH + mF w) / m_T`` (the rear wheel's at x = 0).
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> from bikemass.models.plausibility import front_load
+    >>> share, kg = front_load(bm.parameters("benchmark"))
+    >>> print(f"{share:.4f} of {kg / share:.0f} kg")
+    0.3354 of 94 kg
+    """
+    total = params.mR + params.mB + params.mH + params.mF
+    moment = params.mB * params.xB + params.mH * params.xH + params.mF * params.w
+    share = moment / (total * params.w)
+    return float(share), float(share * total)
+
+
+def front_load_problem(params, source):
+    """The warning line where a bicycle with its rider seated puts less than
+    :data:`EN15194_FRONT_SHARE` of the weight on the front wheel (EN 15194's rule); else None."""
+    share, kg = front_load(params)
+    if share >= EN15194_FRONT_SHARE:
+        return None
+    return (f"{source}: front wheel load {share * 100:.1f} % of bicycle and rider ({kg:.1f} kg), below the "
+            f"{EN15194_FRONT_SHARE * 100:.0f} % EN 15194 asks with the rider seated: the front wheel may lift "
+            "or slide (steep climbs, hard acceleration)")

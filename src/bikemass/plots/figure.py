@@ -7,6 +7,7 @@ No pyplot and no ``matplotlib.use``: the caller's backend and open figures are l
 
 import math
 import os
+import textwrap
 import threading
 from io import BytesIO
 from pathlib import Path
@@ -104,6 +105,86 @@ def figure_format(path):
     return suffix
 
 
+TITLE_MARGIN = 8.0
+"""Points kept free between a title and the figure's edge."""
+
+
+def _titles(fig):
+    """Every title text of ``fig``: its suptitle and each axes' centre, left and right titles."""
+    texts = [fig._suptitle] if getattr(fig, "_suptitle", None) is not None else []
+    for ax in fig.axes:
+        texts += [ax.title, getattr(ax, "_left_title", None), getattr(ax, "_right_title", None)]
+    return [t for t in texts if t is not None and t.get_visible() and t.get_text().strip()]
+
+
+def _room(text, box, width):
+    """Width (pixels) ``text`` may take on a figure ``width`` pixels wide where it now spans
+    ``box``: all of it less the margins, kept about the text's anchor (centred, left or right)."""
+    align = text.get_horizontalalignment()
+    if align == "center":
+        centre = (box.x0 + box.x1) / 2
+        return 2 * min(centre, width - centre)
+    return width - box.x0 if align == "left" else box.x1
+
+
+EARLY_FIT = 0.8
+"""A title narrower than this share of the room its axes' place gives it before layout is taken
+to fit without laying the figure out (constrained layout moves an axes' centre by a few per cent)."""
+
+
+def _fits_before_layout(text, renderer, fig, margin):
+    """Whether ``text`` surely fits: its width (which layout does not change) well inside the room
+    its anchor leaves as placed before layout (a suptitle: the figure's centre; an axes title: the
+    axes' centre, left or right edge as the title is aligned)."""
+    width = text.get_window_extent(renderer).width
+    whole = fig.bbox.width
+    axes = getattr(text, "axes", None)
+    box = axes.get_position() if axes is not None and text is not getattr(fig, "_suptitle", None) else None
+    align = text.get_horizontalalignment()
+    if box is None:
+        room = whole - 2 * margin
+    elif align == "left":
+        room = (1 - box.x0) * whole - margin
+    elif align == "right":
+        room = box.x1 * whole - margin
+    else:
+        room = 2 * min(box.x0 + box.x1, 2 - box.x0 - box.x1) / 2 * whole - 2 * margin
+    return width <= EARLY_FIT * room
+
+
+def fit_titles(fig: figure.Figure) -> list:
+    """Wrap every title of ``fig`` (suptitle, axes titles) that is wider than the figure at its
+    place, at spaces, into as few lines as fit; return the texts changed.
+
+    A long bicycle name in a title would otherwise run past the figure's edge and be cut off in
+    the file. Constrained layout makes room for the extra lines when the figure is drawn. Called
+    by :func:`figure_bytes` (every saved or displayed figure); harmless to call again."""
+    from matplotlib.backends.backend_agg import RendererAgg   # lazy: only for measuring text, at drawing time
+
+    titles = _titles(fig)
+    if not titles:
+        return []
+    renderer = RendererAgg(max(1, int(fig.bbox.width)), max(1, int(fig.bbox.height)), fig.dpi)
+    margin = TITLE_MARGIN * fig.dpi / 72
+    if all(_fits_before_layout(text, renderer, fig, margin) for text in titles):
+        return []                                  # the common case, without laying the figure out
+    fig.draw_without_rendering()                   # lays the figure out: titles at their places
+    changed = []
+    for text in titles:
+        lines = text.get_text().split("\n")
+        box = text.get_window_extent(renderer)
+        room = _room(text, box, fig.bbox.width) - 2 * margin
+        if box.width <= room:
+            continue
+        columns = max(map(len, lines))
+        while columns > 8 and text.get_window_extent(renderer).width > room:
+            columns = max(8, int(columns * 0.9))
+            text.set_text("\n".join("\n".join(textwrap.wrap(line, columns, break_on_hyphens=False)) or line
+                                     for line in lines))
+        changed.append(text)
+    return changed
+
+
 def figure_bytes(fig, fmt="png", dpi=DPI):
     """``fig`` rendered as ``fmt`` (bytes); text stays text in SVG and PDF."""
     width, height = fig.get_size_inches()
@@ -112,6 +193,7 @@ def figure_bytes(fig, fmt="png", dpi=DPI):
                          f"{dpi:g} dpi is {width * height * dpi * dpi:.3g})")
     buffer = BytesIO()
     with RENDERING, rc_context(VECTOR_TEXT):
+        fit_titles(fig)
         fig.savefig(buffer, format="rgba" if fmt == "png" else fmt, dpi=dpi)
     return _png(buffer.getvalue(), fig, dpi) if fmt == "png" else buffer.getvalue()
 

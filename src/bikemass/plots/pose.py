@@ -36,5 +36,7 @@ def plot_pose(bicycle, rider, solution, title=None, size=None, xlim=None, ylim=N
     for i, target in enumerate(solution.targets):
         ax.plot(target.target[0], -target.target[1], "x", color="red", markersize=9, mew=2, zorder=6,
                 label="contact targets" if i == 0 else None)
-    ax.legend(loc="upper right", fontsize="small")
+    ours = [(h, label) for h, label in zip(*ax.get_legend_handles_labels())
+            if label in ("rider joints", "contact targets")]       # the side view's own are in its legend below
+    ax.legend(*zip(*ours), loc="upper right", fontsize="small")
     return fig

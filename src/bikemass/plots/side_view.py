@@ -116,13 +116,16 @@ def plot_side_view(bicycle, rider=None, title=None, size=None, xlim=None, ylim=N
         ax.text(0.02, 0.98, "bodies known by mass, centre of mass and inertia only:\nno parts to draw",
                 transform=ax.transAxes, va="top", fontsize=7.5, color="0.3")
     ax.axhline(0, color="black", linewidth=0.8)
-    ax.set_aspect("equal")
+    # datalim: the axes keep the box constrained layout gives them (title and legend inside the
+    # figure) and the data limits grow to keep one metre the same length both ways
+    ax.set_aspect("equal", adjustable="box" if xlim and ylim else "datalim")
     ax.set_xlabel("x, forward from the rear contact (m)")
     ax.set_ylabel("height above the ground (m)")
     ax.set_title(title or bicycle.name, fontsize=10)
     lines, labels = ax.get_legend_handles_labels()
-    ax.legend(handles + lines, [h.get_label() for h in handles] + labels, fontsize=7.5, loc="upper center",
-              bbox_to_anchor=(0.5, -0.1), ncol=2, frameon=False)
+    # a figure legend below the axes: constrained layout gives it its own room under the x label
+    fig.legend(handles + lines, [h.get_label() for h in handles] + labels, fontsize=7.5,
+               loc="outside lower center", ncol=2, frameon=False)
     ax.grid(True, linewidth=0.3)
     if xlim:
         ax.set_xlim(xlim)

@@ -17,8 +17,18 @@ SIZE = (7.0, 4.6)
 
 REAL_WEAVE = "weave as real roots"
 COLOURS = {"weave": "tab:blue", REAL_WEAVE: "tab:purple", "capsize": "tab:red", "caster": "tab:green"}
-OTHER_COLOUR = "tab:orange"
+OTHER_COLOURS = ("tab:orange", "tab:brown", "tab:pink", "tab:olive", "tab:cyan", "tab:gray", "navy", "gold",
+                 "teal", "maroon", "lime", "black")
+"""Colours of the other modes (the richer models' lean, tyre, wobble, ...), in order of appearance,
+none of them one of :data:`COLOURS`: one colour per legend entry (cycling only past twelve)."""
+OTHER_COLOUR = OTHER_COLOURS[0]
 LEGEND_ORDER = ("weave", REAL_WEAVE, "capsize", "caster")
+BICYCLE_MODES = ("weave", REAL_WEAVE, "capsize")
+"""The modes whose roots set the eigenvalue axis (with those of other modes of like size)."""
+OFF_SCALE_FACTOR = 3.0
+"""Another mode's roots widen the automatic eigenvalue axis only if they stay within this many
+times the bicycle modes' reach; a mode beyond it (a 64 Hz fork mode, a fast tyre lag) is left
+off-scale and named in a note, so the weave and capsize roots keep their room."""
 
 
 def legend_name(name):
@@ -149,14 +159,68 @@ def default_xlim(speeds, critical):
     return float(speeds[0]), float(min(speeds[-1], max(np.ceil(1.6 * max(marks)), speeds[0] + 1)))
 
 
-def default_ylim(speeds, eigenvalues, names, xlim):
-    """Eigenvalue range (1/s) shown, symmetric about zero: every real and imaginary part in
-    ``xlim`` except the clipped caster root, with a margin."""
+def _mode_reach(speeds, eigenvalues, names, xlim):
+    """``{legend name: largest |Re| or |Im| (1/s) in xlim}`` of every mode (the clipped caster root
+    not among them)."""
     inside = (speeds >= xlim[0]) & (speeds <= xlim[1])
-    keep = names[inside] != CLIPPED
-    values = eigenvalues[inside][keep]
-    reach = 1.08 * max(np.abs(values.real).max(initial=0), np.abs(values.imag).max(initial=0)) or 1.0
-    return -reach, reach
+    reach = {}
+    for name in dict.fromkeys(names[inside].ravel()):
+        if name == CLIPPED:
+            continue
+        values = eigenvalues[inside][names[inside] == name]
+        top = max(np.abs(values.real).max(initial=0), np.abs(values.imag).max(initial=0))
+        legend = legend_name(name)
+        reach[legend] = max(reach.get(legend, 0.0), float(top))
+    return reach
+
+
+def default_ylim(speeds, eigenvalues, names, xlim):
+    """Eigenvalue range (1/s) shown, symmetric about zero, with a margin: the roots of the
+    bicycle modes (:data:`BICYCLE_MODES`) in ``xlim`` and those of every other mode within
+    :data:`OFF_SCALE_FACTOR` times their reach (the clipped caster root never counts)."""
+    reach = _mode_reach(speeds, eigenvalues, names, xlim)
+    core = max((r for name, r in reach.items() if name in BICYCLE_MODES), default=0.0)
+    shown = [r for name, r in reach.items() if name in BICYCLE_MODES or not core or r <= OFF_SCALE_FACTOR * core]
+    top = 1.08 * max(shown, default=0.0) or 1.0
+    return -top, top
+
+
+def off_scale(speeds, eigenvalues, names, xlim, ylim):
+    """``{legend name: largest |Re| or |Im| (1/s)}`` of the modes with roots outside ``ylim``
+    within ``xlim`` (the clipped caster root has its own note)."""
+    low, high = min(ylim), max(ylim)
+    inside = (speeds >= xlim[0]) & (speeds <= xlim[1])
+    out = {}
+    for name in dict.fromkeys(names[inside].ravel()):
+        if name == CLIPPED:
+            continue
+        values = eigenvalues[inside][names[inside] == name]
+        parts = np.concatenate([values.real, np.abs(values.imag[values.imag != 0])])
+        if parts.size and ((parts < low) | (parts > high)).any():
+            legend = legend_name(name)
+            out[legend] = max(out.get(legend, 0.0), float(np.abs(parts).max()))
+    return out
+
+
+def _off_scale_note(ax, far):
+    """A note under the legend naming the modes off the axis and how far they reach."""
+    if not far:
+        return None
+    lines = [f"{name}: |$\\lambda$| parts to {value:.3g} 1/s" for name, value in far.items()]
+    return ax.text(1.01, 0.0, "off the axis:\n" + "\n".join(lines), transform=ax.transAxes, ha="left",
+                   va="bottom", fontsize=7.5, color="0.25")
+
+
+def mode_colours(names):
+    """``{name: colour}`` for legend ``names`` (in order): :data:`COLOURS` for the bicycle's
+    modes, :data:`OTHER_COLOURS` in turn for every other name, so no two names share a colour
+    (up to twelve others)."""
+    colours = {}
+    for name in names:
+        if name not in colours:
+            others = sum(1 for n in colours if n not in COLOURS)
+            colours[name] = COLOURS.get(name, OTHER_COLOURS[others % len(OTHER_COLOURS)])
+    return colours
 
 
 def _grown(mask):
@@ -170,9 +234,10 @@ def _grown(mask):
 def _draw_curves(ax, speeds, eigenvalues, names):
     """Real (solid) and positive imaginary (dashed) parts, one colour per physical name."""
     drawn = {}
+    colours = mode_colours(legend_name(name) for name in dict.fromkeys(names.ravel()))
     for name in dict.fromkeys(names.ravel()):
         legend = legend_name(name)
-        colour = COLOURS.get(legend, OTHER_COLOUR)
+        colour = colours[legend]
         for c in range(eigenvalues.shape[1]):
             mask = names[:, c] == name
             if not mask.any():
@@ -251,6 +316,7 @@ def eigenvalue_figure(modes, critical, title="", size=None, xlim=None, ylim=None
     ax.set_ylim(ylim)
     mark_critical_speeds(ax, critical, xlim)
     _caster_note(ax, speeds, eigenvalues, names, xlim, ylim)
+    _off_scale_note(ax, off_scale(speeds, eigenvalues, names, xlim, ylim))
     ax.plot([], [], "-", color="0.3", label="real part")
     ax.plot([], [], "--", color="0.3", label="imaginary part")
     handles, labels = ax.get_legend_handles_labels()

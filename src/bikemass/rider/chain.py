@@ -31,6 +31,12 @@ from .anthropometry import load_anthropometry
 CHAIN_SEGMENTS = ("head", "torso", "upper_arm", "lower_arm", "thigh", "lower_leg")
 """Segments an anthropometry needs for a chain pose."""
 
+BALL, BICYCLEPARAMETERS = "ball", "bicycleparameters"
+FEET = (BALL, BICYCLEPARAMETERS)
+"""Which point of the lower leg goes on the crank axis (or the pedal): ``ball`` (its far end:
+the ball of a yeadon foot, the sole of a cylinder to the floor), or ``bicycleparameters``
+(BicycleParameters' ``rider_on_bike``: the shank's line at the heel's level, yeadon bodies)."""
+
 JOINTS = ("torso_lean", "neck", "shoulder", "elbow", "hip", "knee")
 """Joint angles of the symmetric chain (deg).  ``hip_left``/``knee_left`` may differ
 from ``hip``/``knee`` (the right leg) when the feet are on pedals at a crank angle."""
@@ -55,11 +61,31 @@ class ChainBody:
     shoulder: np.ndarray
     hip: np.ndarray
     seat: float
+    feet: tuple = ()
+    """``((placement, lower-leg chain length m), ...)``: other points of the lower leg that may go
+    on the crank axis or pedal than its far end (:data:`FEET`; a yeadon body's
+    ``bicycleparameters``)."""
+    leg_length: float | None = None
+    """Floor-to-crotch length (m) kept when the lower leg's chain length is another placement's."""
 
     @property
     def inseam(self):
         """Floor-to-crotch length (m) of the straight leg: hip joint to foot less the seat depth."""
+        if self.leg_length is not None:
+            return self.leg_length
         return self.lengths["thigh"] + self.lengths["lower_leg"] - self.seat
+
+    def with_feet(self, placement):
+        """This body with ``placement`` (one of :data:`FEET`) the point of the lower leg that goes
+        on the crank axis or the pedal: ``ball`` (the lower leg's far end, the default) or
+        ``bicycleparameters`` (BicycleParameters' seating of a yeadon rider: the shank's line at
+        the heel's level, the foot beyond it; docs/riders.md).  The inseam stays the anatomical
+        one.  KeyError if the body has no such point."""
+        if placement == BALL:
+            return self
+        length = dict(self.feet)[placement]
+        return ChainBody(self.name, self.source, {**self.lengths, "lower_leg": length}, self.neck, self.shoulder,
+                         self.hip, self.seat, self.feet, self.inseam)
 
 
 def load_chain_body(path, name=None) -> ChainBody:

@@ -8,7 +8,9 @@
 
 ``chain`` keys: ``hands`` (a grip of the bicycle's ``contacts:``, a list of grips (the first
 the bicycle has) or ``none``; default ``hoods`` if the bicycle has them, else its first
-grip), ``crank`` (deg; default: legs symmetric, feet on the crank axis), ``front`` (the
+grip), ``crank`` (deg; default: legs symmetric, feet on the crank axis), ``feet`` (which point
+of the lower leg goes there: ``ball``, default, or ``bicycleparameters`` for a yeadon body,
+BicycleParameters' seating; docs/riders.md), ``front`` (the
 segments that move with the front frame, e.g. ``[lower_arm]`` for hands holding the bars)
 and any joint angle to fix (deg, see :data:`~bikemass.rider.chain.JOINTS`).  ``name`` is
 optional.  The same keys form the ``posture:`` of a placement-form pose.  See docs/poses.md.
@@ -21,11 +23,26 @@ from ..bicycle import Bicycle, load_bicycle
 from ..core.config import Node
 from ..core.errors import BikemassWarning, InputError, shown
 from .body import chain_of, load_body
-from .chain import CHAIN_SEGMENTS, JOINTS
+from .chain import CHAIN_SEGMENTS, FEET, JOINTS
+from .fit import standover_clearance, standover_height
 from .pose import angle_deg, read_pose
 from ..core.paths import within_reach
 
-CHAIN_KEYS = ("hands", "crank", "front", *JOINTS)
+CHAIN_KEYS = ("hands", "crank", "front", "feet", *JOINTS)
+
+
+def feet_body(chain, body):
+    """``body`` (:class:`~bikemass.rider.chain.ChainBody`) with the ``feet:`` placement of the
+    ``chain``/``posture`` node (default ``ball``; docs/riders.md); an error on the key for a
+    placement the body has no point for."""
+    if chain is None or not chain.has("feet"):
+        return body
+    placement = chain["feet"].string(FEET)
+    try:
+        return body.with_feet(placement)
+    except KeyError:
+        chain.fail(f"ball for this body ({placement} places a yeadon body: body: {{yeadon: FILE}}; other bodies' "
+                   "lower legs end at the sole already)", "feet")
 
 
 def default_hands(contacts):
@@ -89,13 +106,23 @@ def solve_chain(chain, body, bicycle):
     # lazy: rider.solve loads scipy.optimize (slower to import than numpy); only chain poses need it
     from .solve import solve_on_bicycle
     hands, crank, fixed, front = chain_settings(chain, bicycle.contacts)
-    solution = solve_on_bicycle(body, bicycle.contacts, hands, crank, fixed)
+    solution = solve_on_bicycle(feet_body(chain, body), bicycle.contacts, hands, crank, fixed)
     try:
         solution.check_reachable()
     except InputError as exc:
         key = "hands" if ".grips." in exc.key else "crank" if exc.key.endswith("crank_length") else None
-        chain.fail(f"{exc.expected} [{exc.source}: {exc.key}]", key)
+        chain.fail(f"{exc.expected} [{exc.source}: {exc.key}]{_standover_note(bicycle, body)}", key)
     return solution, front
+
+
+def _standover_note(bicycle, body):
+    """``"; ... standover ..."`` where the top tube is also above the crotch of the rider standing
+    astride the frame (a rider too small for the frame), else ``""``."""
+    clearance = standover_clearance(bicycle, body.inseam)
+    if clearance is None or clearance >= 0:
+        return ""
+    return (f"; the frame is too big for this rider: its top tube ({standover_height(bicycle) * 1000:.0f} mm) is "
+            f"{-clearance * 1000:.0f} mm above the crotch of the rider standing astride it (standover)")
 
 
 CHAIN_POSE_KEYS = ("body", "chain")

@@ -1,7 +1,7 @@
 """Does the rider fit the bicycle?  The checks a bicycle fitter makes, as warning lines.
 
 A rider seated on a bicycle (:func:`bikemass.rider.seating.seat_rider`) may reach every
-contact and still be on the wrong size of frame.  Four checks, each a warning naming the
+contact and still be on the wrong size of frame.  Five checks, each a warning naming the
 rider, the bicycle and the number (docs/riders.md, "Fit"):
 
 * **seat post showing**: the saddle's height above the seat tube's top, less the saddle, is
@@ -21,6 +21,13 @@ rider, the bicycle and the number (docs/riders.md, "Fit"):
   :data:`TOE_AHEAD_OF_BALL` of it ahead of the ball, plus :data:`SHOE` of shoe) reaches into
   the front wheel's circle when the wheel is turned by more than :data:`TOE_OVERLAP` (a few
   millimetres are common on small road frames and meet only the give of a shoe's toe box).
+* **standover**: the top of the top tube at its midpoint (the chart's ``standover``, as built:
+  :func:`~bikemass.bicycle.derived_chart.derived_chart`) above the rider's crotch standing flat
+  on the ground astride the frame: the inseam (floor to crotch: the chain body's legs less its
+  seat depth; for a body from height, mass and sex the stature fractions' hip height, about
+  0.47 of the stature, less the thigh's radius) plus :data:`SOLE` of shoe. Fitters ask 2-5 cm
+  of clearance; bikemass warns where there is none (:data:`MIN_STANDOVER_CLEARANCE`): the
+  rider cannot stand astride the frame.
 
 Where a check needs what the bicycle or pose does not say (a saddle fixed without a seat
 tube top, a pose used as written), it is left out.
@@ -28,6 +35,7 @@ tube top, a pose used as written), it is left out.
 
 import numpy as np
 from ..bicycle.contacts import SADDLE_RULES
+from ..bicycle.derived_chart import derived_chart
 
 MAX_EXPOSED_POST = 0.30
 """m of seat post above the seat tube: a 350 mm post less 2.5 x 27.2 mm in the frame leaves
@@ -46,6 +54,11 @@ SHOE = 0.01
 """m of shoe beyond the toes."""
 TOE_OVERLAP = 0.02
 """m of toe overlap warned about beyond."""
+SOLE = 0.01
+"""m of shoe sole under the foot of a rider standing astride the frame."""
+MIN_STANDOVER_CLEARANCE = 0.0
+"""m between crotch and top tube below which the standover is warned about: none at all (the top
+tube above the crotch of a rider standing flat-footed astride it)."""
 
 
 def fit_warnings(bicycle, chain, solution, rider_name, hands=None):
@@ -69,6 +82,12 @@ def fit_warnings(bicycle, chain, solution, rider_name, hands=None):
         if elbow is not None and elbow < MIN_ELBOW_FLEXION:
             lines.append(f"{who}: elbows locked straight (bent {elbow:.0f} deg) to reach the {hands}: the bars are "
                          "too far away for this rider")
+    clearance = standover_clearance(bicycle, chain.inseam)
+    if clearance is not None and clearance < MIN_STANDOVER_CLEARANCE:
+        lines.append(f"{who}: standover: the top tube is {standover_height(bicycle) * 1000:.0f} mm above the "
+                     f"ground, {-clearance * 1000:.0f} mm above the crotch of the rider standing astride it "
+                     f"(inseam {chain.inseam * 1000:.0f} mm + {SOLE * 1000:.0f} mm of shoe): the frame is too "
+                     "big for this rider")
     overlap = toe_overlap(bicycle, contacts, chain.inseam)
     if overlap > TOE_OVERLAP:
         lines.append(f"{who}: toe overlap: the toe reaches {overlap * 1000:.0f} mm into the front wheel when it "
@@ -100,3 +119,17 @@ def toe_overlap(bicycle, contacts, inseam):
     axle = g.front_axle
     gap = float(np.hypot(toe[0] - axle[0], toe[2] - axle[2]))
     return max(0.0, g.front_wheel_radius - gap)
+
+
+def standover_height(bicycle):
+    """Height (m) of the top of the top tube above the ground at its midpoint, as built (None
+    for a bicycle without a ``top_tube``)."""
+    return derived_chart(bicycle)["standover"]
+
+
+def standover_clearance(bicycle, inseam):
+    """Crotch above the top tube (m) for a rider of ``inseam`` (m, floor to crotch) standing
+    flat-footed astride the frame in shoes (:data:`SOLE`); negative: the top tube is higher than
+    the crotch. None without a top tube."""
+    height = standover_height(bicycle)
+    return None if height is None else inseam + SOLE - height

@@ -37,7 +37,7 @@ from ..core.gate import MAPPING, plain_input
 from ..core.paths import resolve
 from . import Rider, poses_dir
 from .body import load_body
-from .chain_file import bicycle_contacts, chain_settings, read_chain_pose, solve_chain
+from .chain_file import bicycle_contacts, chain_settings, feet_body, read_chain_pose, solve_chain
 from .pose import read_pose
 from .fit import fit_warnings
 
@@ -152,7 +152,7 @@ def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, toleran
     if "chain" in node.value:
         own = node.has("bike")
         name, parts, solution, solved_on = read_chain_pose(node, None if own else bicycle)
-        chain = load_body(node["body"]).chain
+        chain = feet_body(node["chain"], load_body(node["body"]).chain)
         hands = chain_settings(node["chain"], solved_on.contacts)[0]
         rider = Rider(str(pose), name, parts)
         return _checked(pose, rider, bicycle, chain, hands, "solved", solution, allow_off_contact, tolerance,
@@ -171,7 +171,8 @@ def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, toleran
             if not allow_off_contact:
                 raise
             hands = "nearest"          # the posture's grip is missing here: the nearest one counts
-    measured = measure_contacts(rider.parts, body.chain, contacts, hands)
+    chain = feet_body(posture, body.chain)
+    measured = measure_contacts(rider.parts, chain, contacts, hands)
     if _off(measured, tolerance) and posture is not None and not allow_off_contact:
         solution, front = solve_chain(posture, body.chain, bicycle)
         front = front or tuple(s for s, seg in node["segments"].items()
@@ -180,8 +181,8 @@ def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, toleran
         document = solution.pose.placement_form(name, body.label, front)
         _, parts = read_pose(Node(document, source, None))
         rider = Rider(str(pose), name, parts)
-        return _checked(pose, rider, bicycle, body.chain, hands, "solved", solution, False, tolerance, posture)
-    return _checked(pose, rider, bicycle, body.chain, hands, "as written", None, allow_off_contact, tolerance,
+        return _checked(pose, rider, bicycle, chain, hands, "solved", solution, False, tolerance, posture)
+    return _checked(pose, rider, bicycle, chain, hands, "as written", None, allow_off_contact, tolerance,
                     node)
 
 

@@ -16,7 +16,9 @@ Kinds (yeadon's segments and solids):
 * upper arm: B1 (shoulder to elbow); lower arm: B2 (forearm and hand), its chain length
   from the elbow to the middle of the palm (halfway between base of thumb and knuckles);
 * thigh: K1 (hip to knee); lower leg: K2 (shank and foot), its chain length from the knee
-  to the ball of the foot (the pedal contact; yeadon's foot is in line with the shank).
+  to the ball of the foot (the pedal contact; yeadon's foot is in line with the shank);
+  with ``feet: bicycleparameters`` from the knee to the heel's level on the shank's line
+  (BicycleParameters' ``rider_on_bike``: Lj5L - Lj3L + Lj6L), the foot beyond it.
 
 Joints: shoulders and hips where yeadon puts them (half the Ls4 width, half the hip width);
 the seat (sit point below the hip joints) is the thigh radius at the crotch (Lk1p / 2 pi).
@@ -37,7 +39,7 @@ from ..mass.inertia import MassProperties, combine
 from ..mass.solids import Lumped
 from ..core.paths import named_file
 from .anthropometry import Anthropometry, BodySegment
-from .chain import ChainBody
+from .chain import BICYCLEPARAMETERS, ChainBody
 
 YEADON_TO_BENCHMARK = np.array([[0.0, -1.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, -1.0]])
 """Rotation from yeadon's frame (x to the left, y backwards, z up) to the benchmark frame."""
@@ -165,5 +167,8 @@ def yeadon_body(node):
     seat = (h.meas["Lj1p"] + h.meas["Lk1p"]) / 2 / (2 * np.pi)
     name = node.get("name", path.stem).string()
     anthropometry = Anthropometry(name, path, segments)
-    chain = ChainBody(name, path, lengths, np.zeros(3), shoulder, hip, float(seat))
+    # BicycleParameters seats the shank's line at the heel's level on the crank axis: the knee
+    # to the ankle (Lj5L - Lj3L, both from the hip joint) and on by the heel's length (Lj6L, from the ankle)
+    heel = float(h.meas["Lj5L"] - h.meas["Lj3L"] + h.meas["Lj6L"])
+    chain = ChainBody(name, path, lengths, np.zeros(3), shoulder, hip, float(seat), ((BICYCLEPARAMETERS, heel),))
     return anthropometry, chain

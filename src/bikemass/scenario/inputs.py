@@ -41,6 +41,7 @@ from ..mass.materials import Material, load_materials
 from ..models.flexible import Compliances
 from ..models.lean import RiderLeanParameters
 from ..models.parameters import NAMES, BenchmarkParameters
+from ..models.plausibility import front_load_problem, warn
 from ..rider import Rider, _read_document, poses_dir
 from ..rider.chain_file import bicycle_contacts
 from ..rider.lean_split import rider_lean_parameters
@@ -506,7 +507,12 @@ class Inputs:
             if rider is None and bicycle.published is not None:
                 return bicycle_parameters(bicycle, None, self.combine, self.method)
             bodies = _lru(self._cache("bodies"), bike_changes, lambda: self._bicycle_bodies(bicycle))
-            return parameters_from_bodies(bicycle, combined_bodies(bicycle, rider, self.combine, self.method, bodies))
+            params = parameters_from_bodies(bicycle, combined_bodies(bicycle, rider, self.combine, self.method, bodies))
+            if rider is not None:
+                problem = front_load_problem(params, f"{bicycle.name} with rider {rider.name}")
+                if problem:
+                    warn(problem)
+            return params
         return _lru(self._cache("params"), (bike_changes, rider_changes), build)
 
     def lean(self, bike_changes=(), rider_changes=()):

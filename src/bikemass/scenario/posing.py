@@ -15,7 +15,7 @@ from ..core.errors import BikemassWarning, InputError, short, wrong_type
 from ..core.frozen import freeze, short_repr
 from ..rider import Rider
 from ..rider.body import chain_of, load_body
-from ..rider.chain import JOINTS, joint_gaps
+from ..rider.chain import BALL, FEET, JOINTS, joint_gaps
 from ..rider.chain_file import bicycle_contacts, default_hands
 from ..rider.pose import read_pose
 from .loading import BicycleLike, load_bicycle
@@ -88,7 +88,7 @@ def _degrees(value, what):
 
 def pose_rider(bicycle: BicycleLike, body: "str | Mapping" = DEFAULT_BODY, hands: Grip | str | None = None,
                crank: float | None = None, fixed: "Mapping[str, float] | None" = None,
-               name: str | None = None) -> PosedRider:
+               name: str | None = None, feet: str = "ball") -> PosedRider:
     """Pose a rider by joint angles on a bicycle's contact points.
 
     Hips on the saddle, hands on a grip, feet on the pedals; the joint angles not ``fixed`` are
@@ -110,6 +110,10 @@ def pose_rider(bicycle: BicycleLike, body: "str | Mapping" = DEFAULT_BODY, hands
         Joint angles to hold (deg): any of torso_lean, neck, shoulder, elbow, hip, knee.
     name : str, optional
         The pose's name (default ``"<hands> on <bicycle name as given, or its name:>"``).
+    feet : {"ball", "bicycleparameters"}
+        The point of the lower leg on the crank axis (or pedal): the ball of the foot (default),
+        or BicycleParameters' seating of a yeadon body, the shank's line at the heel's level
+        (docs/riders.md, "Feet").
 
     Returns
     -------
@@ -158,11 +162,21 @@ def pose_rider(bicycle: BicycleLike, body: "str | Mapping" = DEFAULT_BODY, hands
             raise InputError("fixed", joint, f"a joint angle: one of {', '.join(JOINTS)}")
         fixed[joint] = _degrees(value, f"fixed.{joint}")
     crank = None if crank is None else _degrees(crank, "crank")
+    if feet not in FEET:
+        raise InputError("feet", short(feet), f"one of {', '.join(FEET)}")
+    try:
+        chain_body = chain_body.with_feet(feet)
+    except KeyError:
+        raise InputError("feet", feet, "ball for this body (bicycleparameters places a yeadon body: "
+                         "{yeadon: FILE})") from None
     solution = solve_on_bicycle(chain_body, model.contacts, hands, crank, fixed).check_reachable()
     for line in solution.pose.warnings():
         warnings.warn(line, BikemassWarning, stacklevel=2)
     name = name or f"{hands} on {bicycle if isinstance(bicycle, str) else model.name}"
     document = solution.pose.placement_form(name, loaded.label)
+    if feet != BALL:         # read again, the contacts are checked with the same point on the crank axis
+        document["posture"] = {"hands": hands, "feet": feet, **({"crank": f"{crank!r} deg"} if crank is not None
+                                                                else {})}
     node = Node(document, name, None)
     _, parts = read_pose(node)
     # a body named or given inline can be read again from the document: bicycles re-check it

@@ -49,6 +49,29 @@ def match_counts(entries):
     return {"all": count("T"), "chapter 4": count("T4"), "chapter 5": count("T5"), "identical": identical}
 
 
+NUMBER_WORDS = ("no", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten")
+
+
+def _count(n, singular, plural=None):
+    """``n`` with its noun in the right grammatical number (``one miss``, ``2 misses``)."""
+    word = NUMBER_WORDS[n] if 0 <= n < len(NUMBER_WORDS) else str(n)
+    return f"{word} {singular if n == 1 else plural or singular + 's'}"
+
+
+def misses_sentence(misses, explained, why="the rounding of the printed inputs"):
+    """One sentence on the misses and how many ``why`` explains, in the right grammatical number:
+    "No entry missed.", "The one miss is explained by ...", "Of the 3 misses, 2 are explained by ..."."""
+    if misses == 0:
+        return "No entry missed."
+    if misses == 1:
+        return f"The one miss is {'' if explained else 'not '}explained by {why}."
+    if explained == misses:
+        return f"All {misses} misses are explained by {why}."
+    if explained == 0:
+        return f"Of the {misses} misses, none is explained by {why}."
+    return f"Of the {misses} misses, {_count(explained, 'is', 'are')} explained by {why}."
+
+
 def render(results):
     """The Markdown text of ``report.md`` for :class:`~bikemass.study.pipeline.StudyResults`."""
     r = results
@@ -63,9 +86,8 @@ def render(results):
            "## Summary\n",
            f"* Tables 4-2..4-7 and 5-1..5-3 (thesis run): **{counts['all'][0]} of {counts['all'][1]}** "
            f"entries within {TOLERANCE} m/s (Chapter 4: {counts['chapter 4'][0]}/{counts['chapter 4'][1]}, "
-           f"Chapter 5: {counts['chapter 5'][0]}/{counts['chapter 5'][1]}; {counts['identical']} identical); "
-           f"{len(misses)} missed, "
-           f"{explained} of them explained by the rounding of the printed parameters (see Misses)."]
+           f"Chapter 5: {counts['chapter 5'][0]}/{counts['chapter 5'][1]}; {counts['identical']} identical). "
+           + misses_sentence(len(misses), explained, "the rounding of the printed parameters (see Misses)")]
     others = [f"{name} run {m} of {n}" for name in ("corrected", "geometry")
               for m, n in [match_counts(compare(r.runs[name]))["all"]]]
     out.append(f"* For contrast, against the same tables (grid values): {', '.join(others)}: the printed "

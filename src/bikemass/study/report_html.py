@@ -7,7 +7,7 @@ import html
 import re
 
 from .configurations import BICYCLES, RIDERS, THESIS_NAMES
-from .report import LEGEND, match_counts
+from .report import LEGEND, match_counts, misses_sentence
 from .runs import RUNS
 from .stability_tables import CHAPTER4, CHAPTER5, TOLERANCE, title
 from .handling import handling_findings
@@ -157,8 +157,8 @@ def render_html(results, figures):
             f"<p>Every number of the thesis's stability Tables 4-2..4-7 and 5-1..5-3 was recomputed from the "
             f"thesis's own inputs: <b>{counts['all'][0]} of {counts['all'][1]}</b> agree within "
             f"{TOLERANCE} m/s, one step of its speed grid ({counts['identical']} identical to the printed two "
-            f"decimals). Of the {len(misses)} misses, {explained} are explained by the rounding of the "
-            f"printed inputs (see <a href='#misses'>Misses</a>).</p>",
+            f"decimals). " + misses_sentence(len(misses), explained, "the rounding of the printed inputs (see "
+                                                     "<a href='#misses'>Misses</a>)") + "</p>",
             "<h3>What the corrections change, and by how much</h3><ul>"]
     out += [f"<li>{_inline(line)}</li>" for line in r.correction_summary]
     out += ["</ul>"] + _handling_findings(r) + _flexible_findings(r)

@@ -6,11 +6,37 @@ too).
 """
 
 import numpy as np
+
+from ..core.errors import InputError
+from ..models.parameters import parameter_units
 from ..plots.figure import Figure
 
 from .layout import numeric_keys
 
 SPEED_COLUMNS = ("weave_speed", "capsize_speed")
+
+
+def key_unit(spec, key):
+    """The unit the values of varied ``key`` are in: the unit they were given with, else the one
+    its file writes there, else SI (a benchmark parameter's own: ``c`` m, ``lam`` rad; ``"SI"``
+    for a bare number where the file has none either); ``None`` for a key with no number
+    (a model or a pose name)."""
+    if key not in numeric_keys(spec):
+        return None
+    if spec.units.get(key):
+        return spec.units[key]
+    if key in parameter_units():
+        return parameter_units()[key]
+    try:
+        return spec.scenario().file_unit(key) or "SI"
+    except (InputError, ValueError):
+        return "SI"
+
+
+def key_label(spec, key):
+    """Axis label of varied ``key``: the key with its unit in parentheses (``c (m)``)."""
+    unit = key_unit(spec, key)
+    return key if unit is None else f"{key} ({unit})"
 
 
 def _prefetch(rows, spec):
@@ -53,10 +79,15 @@ def heatmap_figure(rows, spec, size=None):
         z[cell[first]] = _column(rows, col)[pick][first]
         mesh = _cells(ax, xs, ys, z.reshape(len(ys), len(xs)))
         fig.colorbar(mesh, ax=ax, label=f"{col.replace('_', ' ')} (m/s)")
-        ax.set_xlabel(kx)
-        ax.set_ylabel(ky)
+        ax.set_xlabel(key_label(spec, kx))
+        ax.set_ylabel(key_label(spec, ky))
         ax.set_title(col.replace("_", " ") + " (blank: none)")
     return fig
+
+
+def _unit_suffix(spec, key):
+    unit = key_unit(spec, key)
+    return "" if unit in (None, "SI") else f" {unit}"
 
 
 def _evenly_spaced(values):
@@ -89,9 +120,9 @@ def lines_figure(rows, spec, size=None, max_lines=8):
     for ax, col in zip(axes, SPEED_COLUMNS):
         y = _column(rows, col)
         for value, member in groups.items():
-            label = None if value is None else f"{spec.keys[1]} = {value:.4g}" if isinstance(value, float) else str(value)
+            label = None if value is None else f"{spec.keys[1]} = {value:.4g}{_unit_suffix(spec, spec.keys[1])}" if isinstance(value, float) else str(value)
             ax.plot(x[member], y[member], marker=".", label=label)
-        ax.set_xlabel(kx)
+        ax.set_xlabel(key_label(spec, kx))
         ax.set_ylabel(f"{col.replace('_', ' ')} (m/s)")
         ax.grid(alpha=0.3)
     if len(groups) > 1:
@@ -107,7 +138,7 @@ def scatter_figure(rows, spec, size=None):
     for j, key in enumerate(keys):
         for i, col in enumerate(SPEED_COLUMNS):
             axes[i, j].plot(_column(rows, key), _column(rows, col), ".", ms=3, alpha=0.6)
-            axes[i, j].set_xlabel(key)
+            axes[i, j].set_xlabel(key_label(spec, key))
             axes[i, j].set_ylabel(f"{col.replace('_', ' ')} (m/s)")
     return fig
 

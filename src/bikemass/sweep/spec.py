@@ -216,7 +216,17 @@ def count_of(spec):
 STIFFNESS_CHOICES = "infinite, steel, titanium, aluminum or a file"
 
 
+VARY_TAKES = ("one of the 26 benchmark parameter names (c, lam, ...), stiffness, or a dotted path into the "
+              "bicycle or pose YAML (chart.stack, rider.chain.torso_lean, ...)")
+"""What a key under ``vary:`` may be, for messages."""
+SET_ONCE = ("bike", "rider", "combine", "model", "tyres", "max_speed")
+"""Spec keys that hold one value for the whole sweep (one sweep per model, per bicycle, ...)."""
+
+
 def _variable(key, node):
+    if key in SET_ONCE:
+        node.fail(f"a key that varies one input: {VARY_TAKES}; {key} is set once for the whole sweep, at the "
+                  f"top of the spec ({key}: ...), so run one sweep per {key}")
     if isinstance(node.value, list):
         if not node.value:
             node.fail("a non-empty list of values, or {from, to, num}")
@@ -257,6 +267,9 @@ def _in_one_unit(nodes):
         try:
             read.append(split_quantity(node.value))
         except UnitError as exc:
+            if isinstance(node.value, str) and not _starts_with_number(node.value):
+                node.fail(f"a number, or '<number> <unit>' (every value of a varied key is a number; only "
+                          f"stiffness takes names: {STIFFNESS_CHOICES}), got {node.value!r}")
             node.fail(str(exc))
     unit = read[0][1]
     if not unit:
@@ -272,6 +285,15 @@ def _in_one_unit(nodes):
             node.fail(f"a value of the first value's dimension ({dimension}, e.g. '1 {unit}'), got {node.value!r}")
         numbers.append(x if given == unit else x * table[given] / table[unit])
     return numbers, unit
+
+
+def _starts_with_number(text):
+    """Whether ``text`` begins with a number (``"0.5 mm"``), as a value with a unit does."""
+    try:
+        float(text.split()[0])
+    except (ValueError, IndexError):
+        return False
+    return True
 
 
 def _near(spec_path, name):

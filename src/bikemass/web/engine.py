@@ -284,6 +284,14 @@ class Engine:
             raise InputError("URL", "bike", "a shipped bicycle name (paths are not accepted)")
         return bike
 
+    def bike_name(self, state):
+        """The name figures give the bicycle of ``state``: its file's ``name:`` (an upload's too,
+        never ``upload-<digest>``), else the uploaded file's name or the shipped name."""
+        try:
+            return self.bicycle(state.bicycle_key).name or state.bike
+        except InputError:
+            return self.upload_label(state.bike) if state.bike.startswith(UPLOAD_PREFIX) else state.bike
+
     def sizes(self, bike):
         """The size names of ``bike``'s size run, ``()`` if it has none."""
         def sizes():

@@ -23,7 +23,7 @@ from ..plots.stability import plot_eigenvalues
 from ..rider import shipped_poses
 from ..scenario.scenario import model_signals
 from .api import DOWNLOADS, register_routes
-from .engine import UPLOAD_LIMIT, UPLOAD_PREFIX, Engine, HANDLING_SPEEDS
+from .engine import UPLOAD_LIMIT, Engine, HANDLING_SPEEDS
 from .state import BODY_RIDER, CHART_ANGLES, CHART_KEYS, HANDS, MODEL_CHOICES, SEXES, SOURCE, PageState
 from ..analysis.handling.frequency import frequency_response
 from ..analysis.handling.figures import plot_bode, plot_handling
@@ -516,9 +516,9 @@ def _placeholder(key, value):
 
 
 def _bike_shown(engine, state):
-    """The bicycle as a figure title names it: a shipped name, or an upload by the file name it was
-    uploaded as (its ``upload-<secret>`` name is a key, not a title)."""
-    return engine.upload_label(state.bike) if state.bike.startswith(UPLOAD_PREFIX) else state.bike
+    """The bicycle as a figure title names it: its file's ``name:`` (an upload's too), else the file name
+    it was uploaded as or the shipped name (an ``upload-<secret>`` name is a key, not a title)."""
+    return engine.bike_name(state)
 
 
 def _eigenvalue_figure(result, state, bike):

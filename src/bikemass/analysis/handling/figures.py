@@ -205,7 +205,8 @@ def plot_mode_shapes(shapes: ModeShapes, title: str = "", size: "tuple[float, fl
         z = shapes.eigenvalues[i]
         ax.set_title(f"{shapes.names[i]}\n{z.real:.3g} {'+' if z.imag >= 0 else '-'} {abs(z.imag):.3g}j 1/s",
                      fontsize="small")
-    axes[0].legend(loc="lower left", bbox_to_anchor=(-0.3, -0.35), fontsize="small")
+    handles, labels = axes[0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="outside lower center", ncols=len(labels), fontsize="small")   # laid out inside
     fig.suptitle(title or f"mode shapes at {shapes.speed:g} m/s", fontsize="medium")
     return fig
 
@@ -228,6 +229,21 @@ def _speed_ranges(ranges):
     if not all(np.isfinite(pair).all() for pair in pairs):
         raise InputError("stable_speeds", short(ranges), f"finite speeds: {expected}")
     return pairs
+
+
+HQM_FREQUENCY_RANGE = 20.0
+"""Frequencies (rad/s) the HQM curves show at least: 0 to this (the rider's crossover region)."""
+
+
+def hqm_frequency_range(result, drawn):
+    """Top of the HQM curves' frequency axis (rad/s): :data:`HQM_FREQUENCY_RANGE`, widened to a
+    quarter past the highest frequency at which a drawn curve peaks (the peak and its fall
+    shown), never past the computed frequencies."""
+    w = np.asarray(result.hqm_frequencies)
+    peaks = [w[int(np.nanargmax(curve))] for curve, ok in zip(result.hqm, drawn)
+             if ok and np.isfinite(curve).any()]
+    top = max([HQM_FREQUENCY_RANGE, *(1.25 * f for f in peaks)])
+    return float(min(top, w.max())) if w.size else top
 
 
 def plot_handling(result: HandlingResult, title: str = "", size: "tuple[float, float] | None" = None,
@@ -282,7 +298,7 @@ def plot_handling(result: HandlingResult, title: str = "", size: "tuple[float, f
     for v, curve, ok in zip(result.speeds, result.hqm, graded):
         if ok:
             curves.plot(result.hqm_frequencies, curve, label=f"{v:g} m/s")
-    curves.set_xlim(0, 20)
+    curves.set_xlim(0, hqm_frequency_range(result, graded))
     curves.set_ylim(0, top)
     _level_bands(curves, top)
     curves.set_xlabel("frequency, rad/s")

@@ -72,7 +72,7 @@ def log_frequencies(start, stop, count):
     if not all(isinstance(x, (int, float)) and not isinstance(x, bool) and np.isfinite(x) for x in values) \
             or not (low <= start < stop <= high) or int(count) != count or not 2 <= count <= MAX_FREQUENCIES:
         raise InputError("frequencies", short(values), f"START:STOP:N in rad/s with {low:g} <= START < STOP <= "
-                         f"{high:g} and 2 <= N <= {MAX_FREQUENCIES} points (spaced logarithmically)")
+                         f"{high:g} and N a whole number of points, 2 <= N <= {MAX_FREQUENCIES} (spaced logarithmically)")
     return np.geomspace(start, stop, int(count))
 
 
