@@ -272,6 +272,8 @@ INVERSES = {
     "bikemass.fe.twist": "the rear frame's beam deflection",
     "bikemass.scenario.frame": "calls the beam model's modal solver, imported as solve",
     "bikemass.fe.elements": "a beam element's shape functions",
+    "bikemass.models.nonlinear": "the nonlinear bicycle's dependent speeds (the constraints) and its "
+                                 "constrained accelerations: no linear state matrix",
 }
 """Every module that inverts or solves with a matrix, and what for: a new one must say here why it
 is not a second assembly of a state matrix."""

@@ -3,7 +3,7 @@
 The generated code (:mod:`bikemass.models.generated.nonlinear_whipple`, derived by
 :mod:`bikemass.models.derive.nonlinear`) gives, for a configuration (roll, pitch, steer), the
 generalised forces of every speed as if all were independent, ``H = -M u' + F``, the velocity
-constraints ``A u = 0`` (``A u' + b = 0``) and the holonomic constraint ``f = 0`` (the front wheel
+constraints ``A u = 0`` (``A u' + b = 0``, ``b`` by a complex step) and the holonomic constraint ``f = 0`` (the front wheel
 touching the ground).  Here they become Kane's equations of the constrained system::
 
     u_D = W u_I,   W = -A_D^-1 A_I            the dependent speeds (yaw, pitch, lateral, wheel rates)
@@ -32,18 +32,44 @@ STATE = ("x", "y", "yaw", "roll", "rear-wheel", "steer", "front-wheel", "forward
 """Names of the minimal state's entries (m, m, rad, rad, rad, rad, rad, m/s, rad/s, rad/s)."""
 STATE_UNITS = ("m", "m", "rad", "rad", "rad", "rad", "rad", "m/s", "rad/s", "rad/s")
 
-_SPEED = {name: i for i, name in enumerate(_code.SPEEDS)}
-INDEPENDENT = (_SPEED["u_lon"], _SPEED["u_phi"], _SPEED["u_delta"])
-"""Indices in the generated SPEEDS of the independent speeds: forward speed, roll rate, steer rate."""
-DEPENDENT = tuple(_code.DEPENDENT)
-_COORDINATE_RATE = tuple(_SPEED[n] for n in ("u_psi", "u_phi", "u_betaR", "u_delta", "u_betaF"))
-"""Speeds that are the rates of the state's yaw, roll, rear wheel, steer, front wheel."""
-
-_ORDER = np.array(INDEPENDENT + DEPENDENT)
+SPEEDS = ("u_lon", "u_lat", "u_psi", "u_phi", "u_theta", "u_betaR", "u_delta", "u_betaF")
+"""The speeds in the order of :attr:`Configuration.speeds`: the rear contact's velocity along and
+across the heading (m/s), then the rates (rad/s) of yaw, roll, pitch, rear wheel, steer, front wheel."""
+_NATURAL = np.array([_code.SPEEDS.index(n) for n in SPEEDS])
+"""Where each of :data:`SPEEDS` sits in the generated order (independent speeds first)."""
+INDEPENDENT = tuple(SPEEDS.index(n) for n in _code.SPEEDS[:3])
+"""Indices in :data:`SPEEDS` of the independent speeds: forward speed, roll rate, steer rate."""
+DEPENDENT = tuple(SPEEDS.index(n) for n in _code.SPEEDS[3:])
+"""Indices in :data:`SPEEDS` of the dependent speeds, in the order the constraints fix them."""
+_RATES = np.array([_code.SPEEDS.index(n) for n in ("u_psi", "u_phi", "u_betaR", "u_delta", "u_betaF")])
+"""Where (generated order) the rates of the state's yaw, roll, rear wheel, steer, front wheel sit."""
+_LON, _LAT = _code.SPEEDS.index("u_lon"), _code.SPEEDS.index("u_lat")
 _EYE3 = np.eye(3)
 
+COMPLEX_STEP = 1e-20
+"""The step (s) of the complex-step derivative of the constraints along the motion: its error is of
+the order of its square, far below round-off."""
+
+PITCH_STEP = 1e-8
+"""Newton on the pitch stops after a step below this (rad): it converges quadratically, so the pitch
+is then off by about the step squared times f''/2f' (under 1e-16 rad; round-off)."""
 PITCH_TOLERANCE = 1e-15
-"""Newton on the pitch stops when its step is below this (rad; round-off is ~1e-16)."""
+"""Newton on the pitch of many samples at once stops when every step is below this (rad)."""
+
+
+def _solve3(a, r):
+    """``a^-1 r`` (3,) for a 3x3 ``a`` and ``r`` given as lists (Cramer's rule: a numpy call costs
+    more than the arithmetic); ArithmeticError when ``a`` is singular."""
+    (a00, a01, a02), (a10, a11, a12), (a20, a21, a22) = a
+    c00, c01, c02 = a11 * a22 - a12 * a21, a12 * a20 - a10 * a22, a10 * a21 - a11 * a20
+    det = a00 * c00 + a01 * c01 + a02 * c02
+    if det == 0.0 or not math.isfinite(det):
+        raise ArithmeticError("the reduced mass matrix is singular")
+    r0, r1, r2 = r
+    x0 = (r0 * c00 + r1 * (a02 * a21 - a01 * a22) + r2 * (a01 * a12 - a02 * a11)) / det
+    x1 = (r0 * c01 + r1 * (a00 * a22 - a02 * a20) + r2 * (a02 * a10 - a00 * a12)) / det
+    x2 = (r0 * c02 + r1 * (a01 * a20 - a00 * a21) + r2 * (a00 * a11 - a01 * a10)) / det
+    return np.array((x0, x1, x2))
 
 
 class ConstraintError(ArithmeticError):
@@ -84,8 +110,11 @@ class NonlinearWhipple:
     def __init__(self, parameters: BenchmarkParameters):
         self.parameters = parameters
         values = [float(getattr(parameters, name)) for name, _, _ in _code.PARAMETERS]
-        (self._holonomic, self._constraints, self._dynamics, self._energy,
-         self._heights) = _code.bind(*values)
+        functions = dict(zip((name for name, _, _ in _code.FUNCTIONS), _code.bind(*values)))
+        self._functions = functions
+        self._holonomic, self._constraints = functions["holonomic"], functions["constraints"]
+        self._complex_constraints, self._dynamics = functions["constraints_complex"], functions["dynamics"]
+        self._energy, self._heights = functions["energy"], functions["heights"]
         self._guess = 0.0
 
     def pitch(self, roll, steer, guess=None):
@@ -99,61 +128,91 @@ class NonlinearWhipple:
                 break
             step = f / dtheta
             theta -= step
-            if abs(step) <= PITCH_TOLERANCE * (1.0 + abs(theta)):
+            if abs(step) <= PITCH_STEP:
                 self._guess = theta
                 return theta
         raise ConstraintError(f"no pitch puts the front wheel on the ground at roll {roll:.6g} rad, "
                               f"steer {steer:.6g} rad")
 
     def speeds(self, roll, pitch, steer, independent):
-        """Every speed (8,) from the independent ones ``(u_lon, roll rate, steer rate)``."""
+        """Every speed (8,) in the order of :data:`SPEEDS` from the independent ones ``(u_lon, roll
+        rate, steer rate)``."""
+        return self._speeds(roll, pitch, steer, np.asarray(independent, dtype=float))[_NATURAL]
+
+    def _speeds(self, roll, pitch, steer, ui):
+        """Every speed in the generated order (independent first)."""
         A = self._constraints(roll, pitch, steer)
-        W = -np.linalg.solve(A[:, DEPENDENT], A[:, INDEPENDENT])
-        u = np.zeros(8)
-        u[list(INDEPENDENT)] = independent
-        u[list(DEPENDENT)] = W @ np.asarray(independent, dtype=float)
-        return u
+        return np.concatenate((ui, -np.linalg.solve(A[:, 3:], A[:, :3] @ ui)))
+
+    def _solve(self, state, torques):
+        """``(pitch, speeds, speed rates)``, both in the generated order (independent first)."""
+        roll, steer = float(state[3]), float(state[5])      # floats: the generated code runs on them
+        ui = np.asarray(state[7:10], dtype=float)
+        pitch = self.pitch(roll, steer)
+        A = self._constraints(roll, pitch, steer)
+        inverse = np.linalg.inv(A[:, 3:])
+        W = inverse @ A[:, :3]
+        W *= -1.0
+        u = np.concatenate((ui, W @ ui))
+        speeds = u.tolist()
+        M, F = self._dynamics(roll, pitch, steer, *speeds, *torques)
+        h = COMPLEX_STEP                # A' u = Im A(q + i h q') u / h, q' = (roll, pitch, steer rates)
+        b = self._complex_constraints(complex(roll, h * speeds[1]), complex(pitch, h * speeds[3]),
+                                      complex(steer, h * speeds[2])).imag @ u
+        b /= h
+        s_D = inverse @ b
+        s_D *= -1.0
+        S = np.vstack((_EYE3, W))
+        ST = S.T
+        accelerations = _solve3((ST @ (M @ S)).tolist(), (ST @ (np.asarray(F) - M[:, 3:] @ s_D)).tolist())
+        return pitch, u, np.concatenate((accelerations, W @ accelerations + s_D))
 
     def configuration(self, state, torques=(0.0, 0.0)):
         """:class:`Configuration` at the minimal ``state`` (10,) with ``torques`` (roll, steer; N m)."""
-        roll, steer = float(state[3]), float(state[5])
-        ui = np.asarray(state[7:10], dtype=float)
-        pitch = self.pitch(roll, steer)
-        A = self._constraints(roll, pitch, steer)[:, _ORDER]
-        inverse = np.linalg.inv(A[:, 3:])
-        W = -inverse @ A[:, :3]
-        u = np.empty(8)
-        u[_ORDER] = np.concatenate((ui, W @ ui))
-        M, F, b = self._dynamics(roll, pitch, steer, *u, *torques)
-        M = M[np.ix_(_ORDER, _ORDER)]
-        F = np.asarray(F)[_ORDER]
-        S = np.vstack((_EYE3, W))
-        s_D = -inverse @ np.asarray(b)
-        ST = S.T
-        accelerations = np.linalg.solve(ST @ M @ S, ST @ F - ST @ (M[:, 3:] @ s_D))
-        rates = np.empty(8)
-        rates[_ORDER] = np.concatenate((accelerations, W @ accelerations + s_D))
-        return Configuration(pitch, u, accelerations, rates)
+        pitch, u, ud = self._solve(np.asarray(state, dtype=float), torques)
+        return Configuration(pitch, u[_NATURAL], ud[:3].copy(), ud[_NATURAL])
 
     def rates(self, state, torques=(0.0, 0.0)):
         """The time derivative (10,) of the minimal ``state`` (:data:`STATE`)."""
-        c = self.configuration(state, torques)
-        u, yaw = c.speeds, state[2]
+        _, u, ud = self._solve(state, torques)
+        yaw = state[2]
         cy, sy = math.cos(yaw), math.sin(yaw)
         out = np.empty(10)
-        out[0] = u[0] * cy - u[1] * sy
-        out[1] = u[0] * sy + u[1] * cy
-        out[2:7] = u[list(_COORDINATE_RATE)]
-        out[7:10] = c.accelerations
+        out[0] = u[_LON] * cy - u[_LAT] * sy
+        out[1] = u[_LON] * sy + u[_LAT] * cy
+        out[2:7] = u[_RATES]
+        out[7:10] = ud[:3]
         return out
 
     def energy(self, state):
         """``(kinetic, potential)`` energy (J) at the minimal ``state``; the ground is zero height."""
-        roll, steer = state[3], state[5]
+        roll, steer = float(state[3]), float(state[5])
         pitch = self.pitch(roll, steer)
-        u = self.speeds(roll, pitch, steer, state[7:10])
-        kinetic, potential = self._energy(roll, pitch, steer, *u)
+        u = self._speeds(roll, pitch, steer, np.asarray(state[7:10], dtype=float))
+        kinetic, potential = self._energy(roll, pitch, steer, *u.tolist())
         return kinetic, potential
+
+    def samples(self, states):
+        """``(pitch, kinetic, potential)``: arrays (n,) at the minimal ``states`` (n, 10), evaluated
+        for all of them at once (the pitch by Newton's method on every sample together)."""
+        f = self._functions
+        states = np.asarray(states, dtype=float)
+        roll, steer = states[:, 3], states[:, 5]
+        pitch = np.zeros(len(states))
+        for _ in range(30):
+            (value,), (_, dtheta, _) = f["holonomic_arrays"](roll, pitch, steer)
+            step = value / dtheta
+            pitch -= step
+            if np.all(np.abs(step) <= PITCH_TOLERANCE * (1.0 + np.abs(pitch))):
+                break
+        else:
+            raise ConstraintError("no pitch puts the front wheel on the ground at some sample")
+        A = np.array(f["constraints_arrays"](roll, pitch, steer)).T.reshape(len(states), 5, 8)
+        ui = states[:, 7:10]
+        dependent = -np.linalg.solve(A[:, :, 3:], (A[:, :, :3] @ ui[:, :, None]))[:, :, 0]
+        u = np.concatenate((ui, dependent), axis=1)
+        kinetic, potential = f["energy_arrays"](roll, pitch, steer, *u.T)
+        return pitch, kinetic, potential
 
     def heights(self, roll, steer):
         """Heights (m) above the ground of the centres of mass of the rear wheel, rear frame, front
@@ -165,9 +224,9 @@ class NonlinearWhipple:
         ``-M u' + F + A^T lambda = 0``: the ground's forces (N) on the contacts along the constraints'
         rows (rear wheel along and across the heading, front wheel along and across its line on the
         ground, then the vertical one of the front wheel, +z down: minus its normal force)."""
-        c = self.configuration(state, torques)
-        roll, steer = state[3], state[5]
-        A = self._constraints(roll, c.pitch, steer)
-        M, F, _ = self._dynamics(roll, c.pitch, steer, *c.speeds, *torques)
-        ud = c.speed_rates
+        state = np.asarray(state, dtype=float)
+        pitch, u, ud = self._solve(state, torques)
+        roll, steer = float(state[3]), float(state[5])
+        A = self._constraints(roll, pitch, steer)
+        M, F = self._dynamics(roll, pitch, steer, *u.tolist(), *torques)
         return np.linalg.lstsq(A.T, M @ ud - np.asarray(F), rcond=None)[0]

@@ -191,7 +191,7 @@ def simulate(system: "LinearModel | BenchmarkParameters", speed: float, initial:
     -0.249568 rad/s
     >>> n = bm.simulate(bm.parameters("benchmark"), 4.6, initial={"roll-rate": 0.5}, duration=1.0, nonlinear=True)
     >>> print(f"{n['roll-rate'][-1]:.6f} rad/s at {n['forward-speed'][-1]:.4f} m/s")
-    -0.210836 rad/s at 4.6079 m/s
+    -0.211102 rad/s at 4.6223 m/s
     """
     if nonlinear:
         # lazy: the nonlinear model (its generated code, scipy's integrator) only for a nonlinear run

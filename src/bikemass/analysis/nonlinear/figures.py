@@ -16,7 +16,7 @@ COLOURS = {"roll-angle": ("#1f77b4", "#8fbbd9"), "steer-angle": ("#d62728", "#eb
 """Each state's colour: (nonlinear, linear: lighter and dashed)."""
 
 
-def plot_nonlinear_response(response: NonlinearResponse, linear=None, title: str = "",
+def plot_nonlinear_response(response: NonlinearResponse, linear: "TimeResponse | None" = None, title: str = "",
                             size: "tuple[float, float] | None" = None) -> Figure:
     """Figure: the nonlinear run's roll and steer angles, their rates, the lateral position and the
     forward speed against time (s), the linear model's response (dashed) beside it when given.
@@ -42,6 +42,11 @@ def plot_nonlinear_response(response: NonlinearResponse, linear=None, title: str
     ------
     InputTypeError
         Anything but a nonlinear response (and a linear one with the states of the Whipple bicycle).
+
+    See Also
+    --------
+    simulate : What it draws (``nonlinear=True``, and the linear run).
+    plot_time_response : A linear run alone.
 
     Examples
     --------

@@ -16,7 +16,9 @@ and the rates of the other coordinates.  What is written out, as functions of th
   :func:`~bikemass.models.derive.kane.generalised_forces` as the linear family), split as
   ``H = -M(q) u' + F(q, u, r)``;
 - the velocity constraints ``A(q) u = 0`` (rolling without slip at both contacts, and the time
-  derivative of the holonomic constraint) and ``b = A'(q, u) u`` so that ``A u' + b = 0``;
+  derivative of the holonomic constraint), also as a function of complex arguments: ``b = A' u``
+  (``A u' + b = 0``) is the derivative of ``A(q + h q') u`` in ``h``, which the numeric code takes
+  by a complex step (exact to round-off, and a third of the cost of writing ``b`` out);
 - the holonomic constraint ``f(q) = 0`` (the front contact on the ground) and its gradient;
 - the kinetic and potential energy (the ground as zero height) and the heights of the frames'
   centres of mass.
@@ -27,6 +29,7 @@ constraints for the dependent speeds, which swells the expressions, is never for
 """
 
 import random
+import re
 from dataclasses import dataclass
 
 import sympy as sm
@@ -36,6 +39,11 @@ from .kane import TIME, generalised_forces
 
 MODULE = "nonlinear_whipple"
 """The generated module's name (in :mod:`bikemass.models.generated`)."""
+INDEPENDENT = ("u_lon", "u_phi", "u_delta")
+"""The independent speeds: the rear contact's forward speed, the roll rate and the steer rate.  The
+generated code takes and returns the speeds in the order: these, then the dependent ones (pitch
+rate, rear wheel rate, lateral speed, front wheel rate, yaw rate: the order the constraints fix
+them in), so that the numeric code needs no reordering."""
 CONFIGURATION = ("phi", "theta", "delta")
 """The coordinates the written expressions depend on (roll, pitch, steer)."""
 
@@ -45,7 +53,8 @@ class NonlinearDerived:
     """The nonlinear Whipple bicycle, symbolically (see the module docstring).
 
     ``parameters`` ((name, unit, meaning)); ``coordinates``, ``speeds``, ``inputs``: the names of
-    ``q``, ``u`` and ``r`` in order; ``dependent``: indices of the dependent speeds; ``groups``:
+    ``q``, ``u`` (:data:`INDEPENDENT` first) and ``r`` in order; ``dependent``: indices of the
+    dependent speeds in ``speeds``; ``groups``:
     ``{function name: (argument symbols, {output name: sympy Matrix})}``.
     """
 
@@ -88,9 +97,6 @@ def derive_nonlinear():
     A = fv.jacobian(u)
     if A.has(*u):
         raise ValueError("a velocity constraint that is not linear in the speeds")
-    qdot = sm.Matrix([written(system.kinematics[s]) for s in system.coordinates])
-    b = sm.Matrix([sum((A[i, j].diff(qk) * qdot[k] * u[j] for j in range(len(u)) for k, qk in enumerate(q)),
-                       sm.S.Zero) for i in range(A.rows)])
     f = written(system.holonomic[0])
     config = [q[[str(s.func) for s in system.coordinates].index(n)] for n in CONFIGURATION]
     gradient = sm.Matrix([f]).jacobian(config)
@@ -110,11 +116,16 @@ def derive_nonlinear():
     heights = [written(h) for h in heights]
 
     free = set(config) | set(u) | set(r) | set(bike.parameters.values())
+    names = [str(s.func) for s in system.speeds]
+    order = [names.index(n) for n in INDEPENDENT] + [names.index(str(s.func)) for s in system.dependent_speeds]
+    ordered = [u[i] for i in order]
+    M, F, A = M.extract(order, order), F.extract(order, [0]), A.extract(list(range(A.rows)), order)
+    M = _symmetric(M.xreplace(heading), [*config, *bike.parameters.values()])
     groups = {
         "holonomic": (config, {"f": sm.Matrix([f]), "gradient": gradient}),
         "constraints": (config, {"A": A}),
-        "dynamics": (config + u + r, {"M": M, "F": F, "b": b}),
-        "energy": (config + u, {"energy": sm.Matrix([kinetic, potential])}),
+        "dynamics": (config + ordered + r, {"M": M, "F": F}),
+        "energy": (config + ordered, {"energy": sm.Matrix([kinetic, potential])}),
         "heights": (config, {"heights": sm.Matrix(heights)}),
     }
     for name, (args, outputs) in groups.items():
@@ -124,29 +135,18 @@ def derive_nonlinear():
             extra = set().union(*(e.free_symbols for e in matrix)) - free
             if extra:
                 raise ValueError(f"{name}/{key} depends on {sorted(map(str, extra))}")
-    names = [str(s.func) for s in system.speeds]
-    dependent = tuple(names.index(str(s.func)) for s in system.dependent_speeds)
     return NonlinearDerived(
         parameters=tuple((k, bike.units[k], bike.descriptions[k]) for k in bike.parameters),
-        coordinates=tuple(str(s.func) for s in system.coordinates), speeds=tuple(names),
-        inputs=tuple(name for name, _ in bike.input_names), dependent=dependent, groups=groups)
+        coordinates=tuple(str(s.func) for s in system.coordinates), speeds=tuple(names[i] for i in order),
+        inputs=tuple(name for name, _ in bike.input_names), dependent=tuple(range(len(INDEPENDENT), len(u))),
+        groups=groups)
 
 
-def _check_heading_free(matrix, heading, what, seed=33):
-    """ValueError unless ``matrix`` is the same at two headings (every other symbol at a random value)."""
-    (psi, _), = heading.items()
-    symbols = sorted(set().union(*(e.free_symbols for e in matrix)) - {psi}, key=str)
-    if psi not in set().union(*(e.free_symbols for e in matrix)):
-        return
-    rng = random.Random(seed)
-    point = [rng.uniform(0.2, 1.2) for _ in symbols]
-    f = sm.lambdify([psi, *symbols], list(matrix), "math", cse=True)
-    a, b = f(0.0, *point), f(1.1, *point)
-    scale = max(1.0, max(abs(float(x)) for x in a))
-    if max(abs(float(x) - float(y)) for x, y in zip(a, b)) > 1e-9 * scale:
-        raise ValueError(f"{what} depends on the heading")
-
-
+ARRAYS = ("holonomic", "constraints", "energy")
+"""The functions also written for arrays of configurations (every output a flat tuple of arrays,
+row by row): the outputs of a run, evaluated at every sample at once."""
+COMPLEX = ("constraints",)
+"""The functions also written for complex arguments (the complex step of ``b``)."""
 PREFIX = {"holonomic": "f", "constraints": "a", "dynamics": "d", "energy": "e", "heights": "z"}
 """The names of each function's common subexpressions (distinct: the parameters' ones share a scope)."""
 
@@ -159,20 +159,37 @@ configuration (roll ``phi``, pitch ``theta``, steer ``delta``), the speeds ``u``
 inputs (INPUTS) listed in FUNCTIONS::
 
     H = -M(q) u' + F(q, u, r)      generalised forces of every speed as if all were independent
-    A(q) u = 0,  A u' + b = 0      rolling without slip, front contact on the ground (rate)
+    A(q) u = 0                     rolling without slip, front contact on the ground (rate);
+                                   constraints_complex: the same for complex arguments
     f(q) = 0                       front contact on the ground
 """
 
+import cmath
 import math
 
 import numpy as np
 
 sin, cos, sqrt = math.sin, math.cos, math.sqrt
+csin, ccos, csqrt = cmath.sin, cmath.cos, cmath.sqrt
 '''
+
+
+def _symmetric(M, symbols, seed=33):
+    """``M`` with its lower triangle the upper one's (the same expressions: the code computes each
+    once), after checking at a random point (30 digits) that it is symmetric."""
+    rng = random.Random(seed)
+    point = {s: sm.Float(rng.uniform(0.2, 1.2), 30) for s in symbols}
+    for i in range(M.rows):
+        for j in range(i + 1, M.cols):
+            difference = (M[i, j] - M[j, i]).xreplace(point).evalf(30)
+            if abs(difference) > 1e-20:
+                raise ValueError(f"the mass matrix is not symmetric at ({i}, {j}): {difference}")
+    return sm.Matrix(M.rows, M.cols, lambda i, j: M[min(i, j), max(i, j)])
 
 
 def module_source_nonlinear(derived):
     """The Python source of the generated module of :class:`NonlinearDerived` ``derived``."""
+    # lazy: the printer only when code is written
     from sympy.printing.pycode import PythonCodePrinter
 
     class Printer(PythonCodePrinter):
@@ -195,10 +212,11 @@ def module_source_nonlinear(derived):
                 known.add(symbol)
             else:
                 body.append(f"        {symbol} = {printer.doprint(expr)}")
-        results, k = [], 0
+        results, arrays, k = [], [], 0
         for key, shape, es in flat:
             values = [printer.doprint(e) if e != 0 else "0.0" for e in reduced[k:k + len(es)]]
             k += len(es)
+            arrays.append("(" + ", ".join(f"{v} + zero" for v in values) + ",)")
             if shape[1] == 1 and key in ("f",):
                 results.append(values[0])
             elif shape[0] == 1 or shape[1] == 1:
@@ -207,15 +225,25 @@ def module_source_nonlinear(derived):
                 rows = [", ".join(values[i * shape[1]:(i + 1) * shape[1]]) for i in range(shape[0])]
                 results.append("np.array([" + ", ".join(f"[{row}]" for row in rows) + "])")
         arglist = ", ".join(str(a) for a in args)
-        functions.append(f"    def {group}({arglist}):")
-        functions.append(f'        """{", ".join(outputs)} ({", ".join(f"{a}x{b}" for _, (a, b), _ in flat)})."""')
-        functions += body
-        functions.append(f"        return {', '.join(results)}")
-        functions.append("")
-        docs.append((group, tuple(str(a) for a in args), tuple(outputs)))
+        variants = [(group, body, results)]
+        if group in COMPLEX:
+            plain = lambda line: re.sub(r"\b(sin|cos|sqrt)\(", r"c\1(", line)  # noqa: E731
+            variants.append((f"{group}_complex", [plain(b) for b in body], [plain(r) for r in results]))
+        if group in ARRAYS:
+            numpy = lambda line: re.sub(r"\b(sin|cos|sqrt)\(", r"np.\1(", line)  # noqa: E731
+            variants.append((f"{group}_arrays", ["        zero = np.zeros(np.shape(phi))"] + [numpy(b) for b in body],
+                             [numpy(r) for r in arrays]))
+        for name, lines_, returned in variants:
+            functions.append(f"    def {name}({arglist}):")
+            functions.append(f'        """{", ".join(outputs)} ({", ".join(f"{a}x{b}" for _, (a, b), _ in flat)})."""')
+            functions += lines_
+            functions.append(f"        return {', '.join(returned)}")
+            functions.append("")
+            docs.append((name, tuple(str(a) for a in args), tuple(outputs)))
     lines = [HEADER.format(sympy=sm.__version__), ""]
     lines += [f"PARAMETERS = {derived.parameters!r}", '"""(name, SI unit, meaning) of the arguments of bind, in order."""',
               f"COORDINATES = {derived.coordinates!r}", f"SPEEDS = {derived.speeds!r}",
+              '"""The speeds, in the order the functions take and return them: the independent first."""',
               f"DEPENDENT = {derived.dependent!r}",
               '"""Indices in SPEEDS of the speeds the rows of A fix (the others are independent)."""',
               f"INPUTS = {derived.inputs!r}", f"FUNCTIONS = {tuple(docs)!r}",
