@@ -167,6 +167,26 @@ class NonlinearWhipple:
         accelerations = _solve3((ST @ (M @ S)).tolist(), (ST @ (np.asarray(F) - M[:, 3:] @ s_D)).tolist())
         return pitch, u, np.concatenate((accelerations, W @ accelerations + s_D))
 
+    def steady_forces(self, state, torques=(0.0, 0.0)):
+        """The generalised forces (3,) of the independent speeds (forward, roll, steer) with every
+        acceleration zero, ``S^T (F - M s)``: zero in a steady motion (N, N m, N m)."""
+        state = np.asarray(state, dtype=float)
+        roll, steer = float(state[3]), float(state[5])
+        ui = state[7:10]
+        pitch = self.pitch(roll, steer)
+        A = self._constraints(roll, pitch, steer)
+        inverse = np.linalg.inv(A[:, 3:])
+        W = -inverse @ A[:, :3]
+        u = np.concatenate((ui, W @ ui))
+        speeds = u.tolist()
+        M, F = self._dynamics(roll, pitch, steer, *speeds, *torques)
+        h = COMPLEX_STEP
+        b = self._complex_constraints(complex(roll, h * speeds[1]), complex(pitch, h * speeds[3]),
+                                      complex(steer, h * speeds[2])).imag @ u / h
+        s_D = -inverse @ b
+        S = np.vstack((_EYE3, W))
+        return S.T @ (np.asarray(F) - M[:, 3:] @ s_D)
+
     def configuration(self, state, torques=(0.0, 0.0)):
         """:class:`Configuration` at the minimal ``state`` (10,) with ``torques`` (roll, steer; N m)."""
         pitch, u, ud = self._solve(np.asarray(state, dtype=float), torques)
