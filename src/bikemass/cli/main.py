@@ -23,6 +23,7 @@ COMMAND_MODULES = (
     "serve",
     "analysis",
     "handling",
+    "nonlinear",
 )
 """Modules under ``bikemass.cli`` whose ``register(subparsers)`` adds sub-commands."""
 

@@ -3,10 +3,12 @@
 import numpy as np
 
 from .simulate import NonlinearResponse
+from .turn import HandsFreeTurns
 from ...core.errors import wrong_type
 from ...plots.figure import Figure, new_figure
 
 RUN_SIZE = (7.0, 7.2)
+TURNS_SIZE = (6.4, 5.2)
 PANELS = (("rad", ("roll-angle", "steer-angle")), ("rad/s", ("roll-rate", "steer-rate")),
           ("m", ("lateral",)), ("m/s", ("forward-speed",)))
 """The panels: a unit and the states drawn in it."""
@@ -80,4 +82,55 @@ def plot_nonlinear_response(response: NonlinearResponse, linear: "TimeResponse |
     axes[0].set_title(title or f"{what} Whipple bicycle from {response.speed:g} m/s")
     if response.stopped:
         axes[-1].annotate(response.stopped, (0.01, 0.03), xycoords="axes fraction", fontsize="x-small")
+    return fig
+
+
+def plot_hands_free_turns(turns: HandsFreeTurns, title: str = "", size: "tuple[float, float] | None" = None) -> Figure:
+    """Figure: the hands-free circles' speed (m/s) and lean (rad) against the steer angle (rad), the
+    linear capsize speed marked.
+
+    Parameters
+    ----------
+    turns : HandsFreeTurns
+        From :func:`bikemass.hands_free_turns`.
+    title : str
+        Title (default: what is drawn).
+    size : (float, float), optional
+        Figure size (width, height) in inches.
+
+    Returns
+    -------
+    Figure
+        A :class:`matplotlib.figure.Figure` (no pyplot; shows itself in Jupyter).
+
+    Raises
+    ------
+    InputTypeError
+        Anything but a family of hands-free turns.
+
+    See Also
+    --------
+    hands_free_turns : What it draws.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> fig = bm.plot_hands_free_turns(bm.hands_free_turns(bm.parameters("benchmark"), [0.05, 0.1, 0.2]))
+    >>> len(fig.axes)                       # m/s, rad
+    2
+    """
+    if not isinstance(turns, HandsFreeTurns):
+        raise wrong_type("turns", turns, "a HandsFreeTurns (bm.hands_free_turns)")
+    fig = new_figure(size or TURNS_SIZE)
+    top, bottom = fig.subplots(2, 1, sharex=True)
+    top.plot(turns.steer, turns.speed, color="#1f77b4", marker=".", label="hands-free circle")
+    top.axhline(turns.capsize_speed, color="#7f7f7f", linestyle="--", label="linear capsize speed")
+    top.set_ylabel("speed, m/s")
+    top.legend(fontsize="small", loc="best")
+    bottom.plot(turns.steer, turns.roll, color="#d62728", marker=".")
+    bottom.set_ylabel("lean, rad")
+    bottom.set_xlabel("steer angle, rad")
+    for ax in (top, bottom):
+        ax.grid(True, alpha=0.3)
+    top.set_title(title or "hands-free steady turns of the nonlinear bicycle")
     return fig

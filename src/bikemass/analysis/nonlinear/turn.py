@@ -33,6 +33,9 @@ from ...models.canonical import canonical_matrices
 from ...models.nonlinear import ConstraintError, NonlinearWhipple
 from ...models.parameters import BenchmarkParameters
 
+CONTINUATION_STEP = 0.01
+"""Largest step in steer angle (rad) when following the hands-free family from one solution to
+the next (finer steps than asked are taken in between)."""
 TOLERANCE = 1e-9
 """What the solutions satisfy: the generalised forces (N m) and the radius (relative) to this."""
 
@@ -281,8 +284,8 @@ def hands_free_turns(parameters: BenchmarkParameters, steers: "ArrayLike") -> Ha
     parameters : BenchmarkParameters
         The bicycle and rider.
     steers : array_like (n,)
-        Steer angles (rad), each nonzero and below pi/2 in size; the family is followed from the
-        first (each solution the next one's starting point).
+        Steer angles (rad), each nonzero and below pi/2 in size; the family is followed from small
+        steer angles in steps of at most :data:`CONTINUATION_STEP`, each solution the next one's start.
 
     Returns
     -------
@@ -314,22 +317,31 @@ def hands_free_turns(parameters: BenchmarkParameters, steers: "ArrayLike") -> Ha
     bike = NonlinearWhipple(parameters)
     v0 = capsize_speed(parameters)
     out = np.full((len(values), 4), np.nan)
-    guess = None
-    for i, delta in enumerate(values):
-        if guess is None:
-            v = v0 if math.isfinite(v0) else 5.0
-            guess = [_linear(parameters, v, delta)[0], v]
+    guess, previous = None, 0.0
 
-        def residual(x, delta=delta):
+    def solve(delta, guess):
+        def residual(x):
             forces = bike.steady_forces(_state(x[0], delta, x[1]))
             return [forces[1], forces[2]]
+        roll, v = _root(residual, guess, "no hands-free circle")
+        if not v > 0:
+            raise ArithmeticError("the family turned to riding backwards")
+        return [roll, v]
 
+    for i, delta in enumerate(values):
         try:
-            roll, v = _root(residual, guess, "no hands-free circle")
-        except ArithmeticError:
+            if guess is None or np.sign(delta) != np.sign(previous):
+                v = v0 if math.isfinite(v0) else 5.0
+                start = math.copysign(min(abs(delta), CONTINUATION_STEP), delta)
+                guess, previous = solve(start, [_linear(parameters, v, start)[0], v]), start
+            steps = max(1, math.ceil(abs(delta - previous) / CONTINUATION_STEP))
+            for between in np.linspace(previous, delta, steps + 1)[1:]:
+                guess = solve(float(between), guess)
+            previous = delta
+        except (ArithmeticError, ConstraintError):
             guess = None
             continue
+        roll, v = guess
         yaw_rate, pitch = _yaw_rate(bike, roll, delta, v)
         out[i] = roll, v, v / yaw_rate, pitch
-        guess = [roll, v]
     return HandsFreeTurns(values, out[:, 1], out[:, 0], out[:, 2], out[:, 3], v0)
