@@ -23,7 +23,7 @@ import pytest
 
 import bikemass as bm
 from bikemass.models.generated import nonlinear_whipple as shipped
-from bikemass.models.nonlinear import DEPENDENT, NonlinearWhipple
+from bikemass.models.nonlinear import NonlinearWhipple
 
 # Basu-Mandal et al. (2007), Table 1 (benchmark bicycle; their names; rad, m, s).
 STATE = {"x": 0.0, "y": 0.0, "z": 0.2440472102925, "theta": 0.0, "psi": 0.9501292851472,

@@ -52,15 +52,15 @@ def reference_equations(p):
     d1 = math.cos(lam) * (c + w - rR * math.tan(lam))
     d3 = -math.cos(lam) * (c - rF * math.tan(lam))
     d2 = (rR + d1 * math.sin(lam) - rF + d3 * math.sin(lam)) / math.cos(lam)
-    O = me.Point("O")
-    O.set_vel(N, 0)
-    P = O.locatenew("P", q1 * N.x + q2 * N.y)
+    origin = me.Point("O")
+    origin.set_vel(N, 0)
+    P = origin.locatenew("P", q1 * N.x + q2 * N.y)
     Rc = P.locatenew("Rc", -rR * B.z)
     Fc = Rc.locatenew("Fc", d1 * C.x + d2 * C.z + d3 * E.x)
     Bo = Rc.locatenew("Bo", p.xB * Cb.x + (p.zB + rR) * Cb.z)
     Ho = Fc.locatenew("Ho", (p.xH - w) * Eb.x + (p.zH + rF) * Eb.z)
     for point in (P, Rc, Fc, Bo, Ho):
-        point.set_vel(N, point.pos_from(O).dt(N))
+        point.set_vel(N, point.pos_from(origin).dt(N))
     kd = {qi.diff(t): ui for qi, ui in zip(q, u)}
     bodies = [me.RigidBody("R", Rc, R, p.mR, (me.inertia(C, p.IRxx, p.IRyy, p.IRxx), Rc)),
               me.RigidBody("B", Bo, C, p.mB, (me.inertia(Cb, p.IBxx, p.IByy, p.IBzz, 0, 0, p.IBxz), Bo)),
@@ -78,8 +78,8 @@ def reference_equations(p):
     constraints = sm.Matrix([vR & A.x, vR & A.y, vF & A.x, vF & A.y, vF & A.z])
     Amat = constraints.jacobian(u)
     b = (Amat * sm.Matrix(u)).jacobian(q) * sm.Matrix(u)
-    holonomic = (Fc.pos_from(O) + rF * down) & N.z
-    heights = [-(body.masscenter.pos_from(O) & N.z) for body in bodies]
+    holonomic = (Fc.pos_from(origin) + rF * down) & N.z
+    heights = [-(body.masscenter.pos_from(origin) & N.z) for body in bodies]
     kinetic = sum(body.kinetic_energy(N) for body in bodies).subs(kd)
     energy = kinetic + sum(body.mass * g * h for body, h in zip(bodies, heights))
     qs, us = sm.symbols("q1:9"), sm.symbols("u1:9")

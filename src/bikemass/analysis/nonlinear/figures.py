@@ -18,7 +18,7 @@ COLOURS = {"roll-angle": ("#1f77b4", "#8fbbd9"), "steer-angle": ("#d62728", "#eb
 """Each state's colour: (nonlinear, linear: lighter and dashed)."""
 
 
-def plot_nonlinear_response(response: NonlinearResponse, linear: "TimeResponse | None" = None, title: str = "",
+def plot_nonlinear_response(response: NonlinearResponse, linear: "object | None" = None, title: str = "",
                             size: "tuple[float, float] | None" = None) -> Figure:
     """Figure: the nonlinear run's roll and steer angles, their rates, the lateral position and the
     forward speed against time (s), the linear model's response (dashed) beside it when given.

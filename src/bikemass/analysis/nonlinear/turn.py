@@ -275,7 +275,7 @@ def capsize_speed(parameters):
     return math.sqrt(min(positive)) if positive else math.nan
 
 
-def hands_free_turns(parameters: BenchmarkParameters, steers: "ArrayLike") -> HandsFreeTurns:
+def hands_free_turns(parameters: BenchmarkParameters, steers: "np.typing.ArrayLike") -> HandsFreeTurns:
     """The steady turns that need no steer torque, one per steer angle: a family that starts, at
     zero steer, at the linear model's capsize speed.
 
@@ -319,7 +319,7 @@ def hands_free_turns(parameters: BenchmarkParameters, steers: "ArrayLike") -> Ha
     out = np.full((len(values), 4), np.nan)
     guess, previous = None, 0.0
 
-    def solve(delta, guess):
+    def circle(delta, guess):
         def residual(x):
             forces = bike.steady_forces(_state(x[0], delta, x[1]))
             return [forces[1], forces[2]]
@@ -333,10 +333,10 @@ def hands_free_turns(parameters: BenchmarkParameters, steers: "ArrayLike") -> Ha
             if guess is None or np.sign(delta) != np.sign(previous):
                 v = v0 if math.isfinite(v0) else 5.0
                 start = math.copysign(min(abs(delta), CONTINUATION_STEP), delta)
-                guess, previous = solve(start, [_linear(parameters, v, start)[0], v]), start
+                guess, previous = circle(start, [_linear(parameters, v, start)[0], v]), start
             steps = max(1, math.ceil(abs(delta - previous) / CONTINUATION_STEP))
             for between in np.linspace(previous, delta, steps + 1)[1:]:
-                guess = solve(float(between), guess)
+                guess = circle(float(between), guess)
             previous = delta
         except (ArithmeticError, ConstraintError):
             guess = None
