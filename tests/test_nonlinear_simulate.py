@@ -14,6 +14,7 @@ with a roll rate of 0.05 rad/s, at 4.6 m/s with 0.5 rad/s and at 8 m/s with 0.05
 a solver passes when the energy drifts by less than 1e-3 %.
 """
 
+import json
 import math
 import warnings
 
@@ -21,6 +22,7 @@ import numpy as np
 import pytest
 
 import bikemass as bm
+from bikemass.cli.main import main
 from bikemass.core.errors import BikemassWarning, InputError
 
 sm = pytest.importorskip("sympy")
@@ -145,17 +147,21 @@ def reference(meijaard):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("speed, roll_rate", IFTOMM)
-def test_the_iftomm_cases_agree_with_an_independent_reference(meijaard, reference, speed, roll_rate):
-    """Roll and steer angles and rates and the forward speed at t = 1..5 s to 1e-6 (absolute, in
-    rad, rad/s and m/s; both integrate at 1e-10 or tighter, so 1e-6 leaves the tolerances'
-    error far behind and catches any difference of the equations); the energy at the start to
-    1e-9 relative (measured: see the report in docs/nonlinear.md)."""
+def test_the_iftomm_cases_agree_with_an_independent_reference(meijaard, reference, speed, roll_rate, capsys):
+    """``bikemass simulate benchmark --nonlinear --speed V --initial roll-rate=W --duration 5
+    --format json``: roll and steer angles and rates and the forward speed at t = 1..5 s to 1e-6
+    (absolute, in rad, rad/s and m/s; the reference integrates at 1e-12, bikemass at 1e-10, so
+    1e-6 leaves the tolerances' error far behind and catches any difference of the equations;
+    measured 1.4e-8 at most); the energy at the start to 1e-9 relative (measured 4e-16)."""
     times = np.arange(0.0, 5.0 + 1e-9, 1.0)
     expected, energy = reference_run(reference, meijaard, speed, roll_rate, times)
-    r = bm.simulate(meijaard, speed, initial={"roll-rate": roll_rate}, duration=5.0, step=1.0, nonlinear=True)
-    got = np.column_stack([r[n] for n in COMPARED])
+    code = main(["simulate", "benchmark", "--nonlinear", "--speed", str(speed), "--initial", f"roll-rate={roll_rate}",
+                 "--duration", "5", "--format", "json"])
+    states = json.loads(capsys.readouterr().out)["states"]
+    assert code == 0
+    got = np.column_stack([np.array(states[n])[::100] for n in COMPARED])
     np.testing.assert_allclose(got, expected, rtol=0, atol=1e-6)
-    assert r["energy"][0] == pytest.approx(energy, rel=1e-9)
+    assert states["energy"][0] == pytest.approx(energy, rel=1e-9)
 
 
 @pytest.mark.slow
