@@ -3,8 +3,8 @@
 The generated code (:mod:`bikemass.models.generated.nonlinear_whipple`, derived by
 :mod:`bikemass.models.derive.nonlinear`) gives, for a configuration (roll, pitch, steer), the
 generalised forces of every speed as if all were independent, ``H = -M u' + F``, the velocity
-constraints ``A u = 0`` (``A u' + b = 0``, ``b`` by a complex step) and the holonomic constraint ``f = 0`` (the front wheel
-touching the ground).  Here they become Kane's equations of the constrained system::
+constraints ``A u = 0`` (``A u' + b = 0``, ``b`` by a complex step) and the holonomic constraint
+``f = 0`` (the front wheel touching the ground).  Here they become Kane's equations of the constrained system::
 
     u_D = W u_I,   W = -A_D^-1 A_I            the dependent speeds (yaw, pitch, lateral, wheel rates)
     u'  = S u_I' + s,  S = [1; W],  s_D = -A_D^-1 b
@@ -13,7 +13,7 @@ touching the ground).  Here they become Kane's equations of the constrained syst
 with the independent speeds ``u_I``: the rear contact's forward speed ``u_lon`` (m/s), the roll rate
 and the steer rate (rad/s).  The pitch is solved from the holonomic constraint by Newton's method
 whenever it is needed, so the constraints hold to round-off along any trajectory; ``A_D`` is
-regular at zero steer (its determinant vanishes only with the front wheel across the frame).
+regular at zero steer, upright or rolled (tests/test_models_nonlinear.py).
 
 The minimal state (:data:`STATE`) is ``[x, y, yaw, roll, rear wheel, steer, front wheel, u_lon,
 roll rate, steer rate]``; :meth:`NonlinearWhipple.rates` is its time derivative.
@@ -79,7 +79,7 @@ class ConstraintError(ArithmeticError):
 @dataclass(frozen=True)
 class Configuration:
     """One instant of the nonlinear bicycle: the pitch (rad), every speed (``speeds`` in the
-    generated order ``u_lon, u_lat, yaw rate, roll rate, pitch rate, rear wheel rate, steer rate,
+    order of :data:`SPEEDS`: ``u_lon, u_lat, yaw rate, roll rate, pitch rate, rear wheel rate, steer rate,
     front wheel rate``: m/s, m/s, rad/s, ...), the accelerations of the independent speeds
     (``accelerations``: forward, roll, steer) and those of every speed (``speed_rates``, in the
     order of ``speeds``)."""
