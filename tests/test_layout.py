@@ -278,6 +278,8 @@ INVERSES = {
     "bikemass.scenario.frame": "calls the beam model's modal solver, imported as solve",
     "bikemass.fe.elements": "a beam element's shape functions",
     "bikemass.bicycle.measured": "a frame's Ixx, Ixz, Izz from its torsional-pendulum moments (3x3 least squares)",
+    "bikemass.models.nonlinear": "the nonlinear bicycle's dependent speeds (the constraints) and its "
+                                 "constrained accelerations: no linear state matrix",
 }
 """Every module that inverts or solves with a matrix, and what for: a new one must say here why it
 is not a second assembly of a state matrix."""

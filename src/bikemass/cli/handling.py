@@ -58,6 +58,10 @@ def register(sub):
                      metavar="T", help="end time, s (default 5)")
     sim.add_argument("--step", type=number(0, 1e6, open_low=True, what="a time step in s"), default=0.01,
                      metavar="DT", help="time step of the samples, s (default 0.01)")
+    sim.add_argument("--nonlinear", action="store_true",
+                     help="the nonlinear Whipple bicycle instead (integrated numerically; --model whipple, rigid "
+                          "frame): adds forward-speed (m/s), pitch-angle (rad), x (m) and energy (J); a fall "
+                          "(roll 60 degrees) ends the run with a warning; --plot draws it beside the linear run")
     dialect.add_output(sim, what="the samples")
     dialect.add_plot(sim, "every state against time")
     sim.set_defaults(run=every_size(run_simulate))
@@ -429,10 +433,17 @@ def run_simulate(args):
 
     options = dialect.figure_checked(args)
     initial, applied = _initial(args), _inputs(args)
-    model = bicycle_model(args)
-    r = _with_option_names(lambda: simulate(model, args.speed, initial, applied, args.duration, args.step),
-                           {"initial": "--initial", "inputs": "--input", "input": "--input", "step": "--step",
-                            "duration": "--duration"})
+    names = {"initial": "--initial", "inputs": "--input", "input": "--input", "step": "--step",
+             "duration": "--duration"}
+    if getattr(args, "nonlinear", False):
+        built = _nonlinear_built(args)
+        model = built.model
+        r = _with_option_names(lambda: simulate(built.parameters, args.speed, initial, applied, args.duration,
+                                                args.step, nonlinear=True), names)
+    else:
+        model = bicycle_model(args)
+        r = _with_option_names(lambda: simulate(model, args.speed, initial, applied, args.duration, args.step),
+                               names)
 
     def render(fmt):
         if fmt in ("json", "yaml"):
@@ -445,11 +456,32 @@ def run_simulate(args):
         from ..core.output import table
         return table(headers, rows, floatfmt="{:.6g}")
     dialect.emit(args, render)
-    if args.plot:
+    if args.plot and getattr(args, "nonlinear", False):
+        # lazy: matplotlib only for a figure
+        from ..analysis.nonlinear.figures import plot_nonlinear_response
+        linear = simulate(model, args.speed, initial, applied, args.duration, args.step)
+        fig = plot_nonlinear_response(r, linear, f"{_title(args)}: nonlinear and linear from {r.speed:g} m/s",
+                                      options.size)
+        dialect.save_plot(args, fig, options)
+    elif args.plot:
         # lazy: matplotlib only for a figure
         from ..analysis.handling.figures import plot_time_response
         dialect.save_plot(args, plot_time_response(r, f"{_title(args)} at {r.speed:g} m/s", options.size), options)
     return 0
+
+
+def _nonlinear_built(args):
+    """The built scenario of ``--nonlinear``: the Whipple bicycle with a rigid frame, else InputError."""
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..core.errors import InputError
+    if args.model != BASE:
+        raise InputError("--nonlinear", f"--model {args.model}", f"--model {BASE}: the nonlinear model is the "
+                         "Whipple bicycle")
+    built = dialect.scenario(args).build()
+    if built.stiffness is not None:
+        raise InputError("--nonlinear", f"--stiffness {args.stiffness}", "--stiffness infinite: the nonlinear "
+                         "model has a rigid frame")
+    return built
 
 
 def run_mode_shapes(args):

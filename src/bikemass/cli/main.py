@@ -25,6 +25,7 @@ COMMAND_MODULES = (
     "analysis",
     "handling",
     "optimise",
+    "nonlinear",
 )
 """Modules under ``bikemass.cli`` whose ``register(subparsers)`` adds sub-commands."""
 

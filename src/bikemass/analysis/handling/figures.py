@@ -119,7 +119,7 @@ def plot_time_response(response: TimeResponse, title: str = "", size: "tuple[flo
     Examples
     --------
     >>> import bikemass as bm
-    >>> r = bm.simulate(bm.parameters("benchmark"), 4.6, initial={"roll-rate": 0.5})   # Meijaard's Fig. 4
+    >>> r = bm.simulate(bm.parameters("benchmark"), 4.6, initial={"roll-rate": 0.5})   # Meijaard's push, linear
     >>> fig = bm.plot_time_response(r)
     >>> len(fig.axes)                         # rad, rad/s, m
     3

@@ -33,6 +33,7 @@ from ...core.errors import BikemassWarning, InputError, short, wrong_type
 from ...core.frozen import FrozenMap, readonly, short_repr
 from ...core.tables import Table
 from .discrete import hold_matrices
+from ..nonlinear.response import NonlinearResponse
 from .plant import System, check_speed, input_index, linear_model
 
 if TYPE_CHECKING:                          # the annotations' names only
@@ -177,7 +178,8 @@ class TimeResponse(Display):
 
 def simulate(system: System, speed: float, initial: "Mapping[str, float] | None" = None,
              inputs: "Mapping[str, tuple[str, float]] | None" = None, duration: float = DEFAULT_DURATION,
-             step: float = DEFAULT_STEP, stiffness: "ArrayLike | None" = None) -> TimeResponse:
+             step: float = DEFAULT_STEP, stiffness: "ArrayLike | None" = None,
+             nonlinear: bool = False) -> "TimeResponse | NonlinearResponse":
     """The time response from initial conditions and to steps and impulses of the inputs.
 
     Parameters
@@ -197,10 +199,14 @@ def simulate(system: System, speed: float, initial: "Mapping[str, float] | None"
         The samples ``0, step, 2 step, ...`` up to ``duration`` (s); default 5 s in 0.01 s.
     stiffness : array_like (2, 2), optional
         Rear-frame stiffness S (N m/rad) of a parameter set.
+    nonlinear : bool
+        The nonlinear Whipple bicycle of a parameter set instead (:mod:`bikemass.analysis.nonlinear`,
+        integrated numerically): its states add the forward speed, pitch, x and energy, and a fall
+        ends the run early (docs/nonlinear.md).
 
     Returns
     -------
-    TimeResponse
+    TimeResponse or NonlinearResponse
         ``time`` (s) and ``values`` (n, N); ``response["roll-rate"]`` is one state's samples.
 
     Raises
@@ -219,6 +225,7 @@ def simulate(system: System, speed: float, initial: "Mapping[str, float] | None"
     See Also
     --------
     plot_time_response : Draw it.
+    plot_nonlinear_response : Draw a nonlinear run beside the linear one.
     lane_change : A rider steering the bicycle through a manoeuvre.
 
     Examples
@@ -229,7 +236,17 @@ def simulate(system: System, speed: float, initial: "Mapping[str, float] | None"
     TimeResponse(speed=4.6 m/s, time=0..1 s x 101, states=6, inputs=none)
     >>> print(f"{r['roll-rate'][-1]:.6f} rad/s")
     -0.249568 rad/s
+    >>> n = bm.simulate(bm.parameters("benchmark"), 4.6, initial={"roll-rate": 0.5}, duration=1.0, nonlinear=True)
+    >>> print(f"{n['roll-rate'][-1]:.6f} rad/s at {n['forward-speed'][-1]:.4f} m/s")
+    -0.211102 rad/s at 4.6223 m/s
     """
+    if nonlinear:
+        # lazy: the nonlinear model (its generated code, scipy's integrator) only for a nonlinear run
+        from ..nonlinear.simulate import simulate_nonlinear
+        if stiffness is not None:
+            raise InputError("stiffness", short(stiffness), "none: the nonlinear model has a rigid frame")
+        # a parameter set only: simulate_nonlinear refuses any other system in one line
+        return simulate_nonlinear(system, speed, initial, inputs, duration, step)  # type: ignore[arg-type]
     model = linear_model(system, stiffness)
     v = check_speed(speed)
     x0 = initial_state(model, initial)

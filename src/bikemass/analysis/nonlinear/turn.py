@@ -1,0 +1,347 @@
+"""Steady turns of the nonlinear Whipple bicycle: circles at constant speed, lean and steer.
+
+In a steady turn the roll, steer and pitch stay constant and the bicycle yaws at a constant rate;
+the dependent speeds follow from the rolling constraints, every acceleration vanishes and so does
+``b = A' u`` (the configuration does not change).  Kane's equations then reduce to the generalised
+forces ``G = S^T F`` of the independent speeds (:meth:`~bikemass.models.nonlinear.NonlinearWhipple.
+steady_forces`): the forward one vanishes identically (no work is done), the roll one must vanish,
+and the steer one is balanced by the rider's steer torque.  So, for a speed ``v``:
+
+- given the turn's radius (of the rear contact's circle) or the steer angle, the lean solves
+  ``G_roll = 0`` (with the radius ``v / yaw rate`` as the second equation), and the steer torque is
+  ``-G_steer``;
+- hands-free circles (no steer torque) solve ``G_roll = G_steer = 0`` for the lean and the speed at
+  a given steer angle: a family over the steer angle that starts, at zero steer, at the linear
+  model's capsize speed (where ``det(g K0 + v^2 K2) = 0``), as Basu-Mandal et al. (2007) found.
+
+Newton's method (finite-difference-free: scipy's ``root`` with its Jacobian by differences of the
+smooth residual) starts from the linear model's steady turn (``(g K0 + v^2 K2) [phi, delta] =
+[0, T]``, the yaw rate ``v delta cos(lam) / w``).
+"""
+
+import math
+import numbers
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...core.display import Display
+from ...core.errors import InputError, short, wrong_type
+from ...core.frozen import readonly, short_repr
+from ...core.limits import MAX_SPEED
+from ...models.canonical import canonical_matrices
+from ...models.nonlinear import ConstraintError, NonlinearWhipple
+from ...models.parameters import BenchmarkParameters
+
+CONTINUATION_STEP = 0.01
+"""Largest step in steer angle (rad) when following the hands-free family from one solution to
+the next (finer steps than asked are taken in between)."""
+TOLERANCE = 1e-9
+"""What the solutions satisfy: the generalised forces (N m) and the radius (relative) to this."""
+
+
+@dataclass(frozen=True, repr=False)
+class SteadyTurn:
+    """One steady turn of the nonlinear Whipple bicycle.
+
+    Attributes
+    ----------
+    speed : float
+        Forward speed of the rear contact (m/s).
+    radius : float
+        Radius of the rear contact's circle (m); positive turning right.
+    roll, steer, pitch : float
+        Lean (rad, right positive), steer angle and the rear frame's pitch (rad).
+    steer_torque : float
+        The rider's steer torque that holds it (N m).
+    yaw_rate : float
+        Turning rate (rad/s).
+    linear_roll, linear_steer, linear_steer_torque : float
+        The linear model's steady turn at the same speed and radius (rad, rad, N m).
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> turn = bm.steady_turn(bm.parameters("benchmark"), 5.0, radius=10.0)
+    >>> print(f"lean {turn.roll:.4f} rad, steer {turn.steer:.4f} rad, torque {turn.steer_torque:.4f} N m")
+    lean 0.2444 rad, steer 0.1037 rad, torque -0.1469 N m
+    """
+
+    speed: float
+    radius: float
+    roll: float
+    steer: float
+    pitch: float
+    steer_torque: float
+    yaw_rate: float
+    linear_roll: float
+    linear_steer: float
+    linear_steer_torque: float
+
+    def to_dict(self):
+        """Plain ``{name: float}`` (SI; angles in rad)."""
+        return {k: float(getattr(self, k)) for k in self.__dataclass_fields__}
+
+    def unit_block(self):
+        """The unit of each key of :meth:`to_dict`."""
+        return {"speed": "m/s", "radius": "m", "roll": "rad", "steer": "rad", "pitch": "rad", "steer_torque": "N m",
+                "yaw_rate": "rad/s", "linear_roll": "rad", "linear_steer": "rad", "linear_steer_torque": "N m"}
+
+    def __repr__(self):
+        return short_repr(self, ("speed", f"{self.speed:g} m/s"), ("radius", f"{self.radius:.4g} m"),
+                          ("roll", f"{self.roll:.4g} rad"), ("steer", f"{self.steer:.4g} rad"),
+                          ("steer_torque", f"{self.steer_torque:.4g} N m"))
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class HandsFreeTurns(Display):
+    """The hands-free steady turns (no steer torque) of the nonlinear Whipple bicycle, one per
+    steer angle.
+
+    Attributes
+    ----------
+    steer : numpy.ndarray (n,)
+        Steer angles (rad) the family is computed at.
+    speed, roll, radius, pitch : numpy.ndarray (n,)
+        Forward speed (m/s), lean (rad), radius of the rear contact's circle (m) and pitch (rad);
+        NaN where Newton's method found no circle.
+    capsize_speed : float
+        The linear model's speed with ``det(g K0 + v^2 K2) = 0`` (m/s): the family's zero-steer limit.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> family = bm.hands_free_turns(bm.parameters("benchmark"), [0.01, 0.05])
+    >>> print(f"{family.capsize_speed:.4f} m/s; {family.speed[0]:.4f} m/s at 0.01 rad of steer")
+    6.0243 m/s; 6.0212 m/s at 0.01 rad of steer
+    """
+
+    steer: np.ndarray
+    speed: np.ndarray
+    roll: np.ndarray
+    radius: np.ndarray
+    pitch: np.ndarray
+    capsize_speed: float
+
+    def __post_init__(self):
+        for name in ("steer", "speed", "roll", "radius", "pitch"):
+            object.__setattr__(self, name, readonly(getattr(self, name), float))
+
+    def to_dict(self):
+        """Plain data: the capsize speed and the family's columns."""
+        return {"capsize_speed": self.capsize_speed, "steer": self.steer.tolist(), "speed": self.speed.tolist(),
+                "roll": self.roll.tolist(), "radius": self.radius.tolist(), "pitch": self.pitch.tolist()}
+
+    def unit_block(self):
+        """The unit of each key of :meth:`to_dict`."""
+        return {"capsize_speed": "m/s", "steer": "rad", "speed": "m/s", "roll": "rad", "radius": "m", "pitch": "rad"}
+
+    def __repr__(self):
+        return short_repr(self, ("turns", len(self.steer)), ("capsize_speed", f"{self.capsize_speed:.4f} m/s"))
+
+
+def _speed(value):
+    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value) \
+            or not 0 < value <= MAX_SPEED:
+        raise InputError("speed", short(value), f"a forward speed in m/s, a finite number in (0, {MAX_SPEED:g}]")
+    return float(value)
+
+
+def _state(roll, steer, speed):
+    state = np.zeros(10)
+    state[3], state[5], state[7] = roll, steer, speed
+    return state
+
+
+def _yaw_rate(bike, roll, steer, speed):
+    pitch = bike.pitch(roll, steer)
+    return float(bike.speeds(roll, pitch, steer, (speed, 0.0, 0.0))[2]), pitch
+
+
+def _linear(parameters, speed, steer):
+    """The linear model's ``(roll, steer torque)`` at ``steer`` (rad) and ``speed``."""
+    m = canonical_matrices(parameters)
+    K = m.g * m.K0 + speed ** 2 * m.K2
+    roll = -K[0, 1] * steer / K[0, 0]
+    return roll, K[1, 0] * roll + K[1, 1] * steer
+
+
+def _root(function, guess, what):
+    # lazy: scipy's root finder only for a steady turn
+    from scipy.optimize import root
+
+    try:
+        with np.errstate(all="ignore"):
+            solution = root(function, guess, method="hybr", tol=1e-14)
+    except ConstraintError:
+        raise ArithmeticError(what) from None
+    if not np.all(np.isfinite(solution.x)) or np.max(np.abs(function(solution.x))) > TOLERANCE:
+        raise ArithmeticError(what)
+    return solution.x
+
+
+def steady_turn(parameters: BenchmarkParameters, speed: float, radius: "float | None" = None,
+                steer: "float | None" = None) -> SteadyTurn:
+    """The nonlinear bicycle's steady turn at ``speed`` on a circle of ``radius`` or at ``steer``.
+
+    Parameters
+    ----------
+    parameters : BenchmarkParameters
+        The bicycle and rider.
+    speed : float
+        Forward speed of the rear contact (m/s), above zero.
+    radius : float, optional
+        Radius of the rear contact's circle (m); negative turns left.  Give it or ``steer``.
+    steer : float, optional
+        Steer angle (rad), instead of the radius.
+
+    Returns
+    -------
+    SteadyTurn
+        Lean, steer, pitch, steer torque and yaw rate, and the linear model's lean, steer and torque
+        for the same circle.
+
+    Raises
+    ------
+    InputError
+        Not exactly one of ``radius`` and ``steer``, a bad value, or no steady turn found there (a
+        circle too tight for the front wheel, or no lean that balances it).
+
+    See Also
+    --------
+    hands_free_turns : The circles that need no steer torque.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> turn = bm.steady_turn(bm.parameters("benchmark"), 5.0, steer=0.05)
+    >>> print(f"radius {turn.radius:.3f} m, lean {turn.roll:.4f} rad (linear {turn.linear_roll:.4f})")
+    radius 21.281 m, lean 0.1187 rad (linear 0.1199)
+    """
+    if not isinstance(parameters, BenchmarkParameters):
+        raise wrong_type("parameters", parameters, "a benchmark parameter set")
+    v = _speed(speed)
+    if (radius is None) == (steer is None):
+        raise InputError("steady_turn", "radius/steer", "exactly one of a radius (m) and a steer angle (rad)")
+    bike = NonlinearWhipple(parameters)
+    p = parameters
+
+    def roll_force(roll, delta):
+        return bike.steady_forces(_state(roll, delta, v))[1]
+
+    if steer is not None:
+        if isinstance(steer, bool) or not isinstance(steer, numbers.Real) or not abs(steer) < math.pi / 2:
+            raise InputError("steer", short(steer), "a steer angle in rad, below pi/2 in size")
+        delta = float(steer)
+        guess = _linear(p, v, delta)[0]
+        try:
+            roll = float(_root(lambda x: [roll_force(x[0], delta)], [guess], "no lean balances it")[0])
+        except ArithmeticError as exc:
+            raise InputError("steer", short(steer), f"a steer angle with a steady turn at {v:g} m/s ({exc})") from None
+    else:
+        if isinstance(radius, bool) or not isinstance(radius, numbers.Real) or not math.isfinite(radius) \
+                or abs(radius) <= p.w:
+            raise InputError("radius", short(radius), f"a radius in m, larger in size than the wheelbase {p.w:g} m")
+        R = float(radius)
+        delta0 = math.atan(p.w / (R * math.cos(p.lam)))
+
+        def residual(x):
+            yaw_rate, _ = _yaw_rate(bike, x[0], x[1], v)
+            return [roll_force(x[0], x[1]), (yaw_rate * R - v) / v]
+
+        try:
+            roll, delta = (float(z) for z in _root(residual, [_linear(p, v, delta0)[0], delta0], "no steady turn"))
+        except ArithmeticError as exc:
+            raise InputError("radius", short(radius), f"a radius with a steady turn at {v:g} m/s ({exc})") from None
+    forces = bike.steady_forces(_state(roll, delta, v))
+    yaw_rate, pitch = _yaw_rate(bike, roll, delta, v)
+    linear_steer = p.w * yaw_rate / (v * math.cos(p.lam))          # the linear model's circle: same radius
+    linear_roll, linear_torque = _linear(p, v, linear_steer)
+    return SteadyTurn(v, v / yaw_rate if yaw_rate else math.inf, roll, delta, pitch, -float(forces[2]), yaw_rate,
+                      float(linear_roll), float(linear_steer), float(linear_torque))
+
+
+def capsize_speed(parameters):
+    """The speed (m/s) at which ``det(g K0 + v^2 K2)`` vanishes (the linear capsize speed of a bicycle
+    like the benchmark's), or NaN if it does not."""
+    m = canonical_matrices(parameters)
+    a, b = m.g * m.K0, m.K2
+    # det(a + s b) = 0, s = v^2: a quadratic in s
+    c2 = b[0, 0] * b[1, 1] - b[0, 1] * b[1, 0]
+    c1 = a[0, 0] * b[1, 1] + a[1, 1] * b[0, 0] - a[0, 1] * b[1, 0] - a[1, 0] * b[0, 1]
+    c0 = a[0, 0] * a[1, 1] - a[0, 1] * a[1, 0]
+    roots = np.roots([c2, c1, c0]) if c2 else np.array([-c0 / c1])
+    positive = [r.real for r in roots if abs(r.imag) < 1e-12 and r.real > 0]
+    return math.sqrt(min(positive)) if positive else math.nan
+
+
+def hands_free_turns(parameters: BenchmarkParameters, steers: "np.typing.ArrayLike") -> HandsFreeTurns:
+    """The steady turns that need no steer torque, one per steer angle: a family that starts, at
+    zero steer, at the linear model's capsize speed.
+
+    Parameters
+    ----------
+    parameters : BenchmarkParameters
+        The bicycle and rider.
+    steers : array_like (n,)
+        Steer angles (rad), each nonzero and below pi/2 in size; the family is followed from small
+        steer angles in steps of at most :data:`CONTINUATION_STEP`, each solution the next one's start.
+
+    Returns
+    -------
+    HandsFreeTurns
+        Speed, lean, radius and pitch per steer angle (NaN where none was found).
+
+    Raises
+    ------
+    InputError
+        A steer angle of zero (the straight run, hands-free at any speed), or out of range.
+
+    See Also
+    --------
+    steady_turn : A turn of a given radius or steer angle, and its steer torque.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> family = bm.hands_free_turns(bm.parameters("benchmark"), [0.1, 0.2])
+    >>> [f"{v:.3f}" for v in family.speed]
+    ['5.692', '4.783']
+    """
+    if not isinstance(parameters, BenchmarkParameters):
+        raise wrong_type("parameters", parameters, "a benchmark parameter set")
+    values = np.atleast_1d(np.asarray(steers, dtype=float)) if not isinstance(steers, str) else None
+    if values is None or values.ndim != 1 or len(values) == 0 or not np.all(np.isfinite(values)) \
+            or np.any(values == 0) or np.any(np.abs(values) >= math.pi / 2):
+        raise InputError("steers", short(steers), "steer angles in rad, nonzero and below pi/2 in size")
+    bike = NonlinearWhipple(parameters)
+    v0 = capsize_speed(parameters)
+    out = np.full((len(values), 4), np.nan)
+    guess, previous = None, 0.0
+
+    def circle(delta, guess):
+        def residual(x):
+            forces = bike.steady_forces(_state(x[0], delta, x[1]))
+            return [forces[1], forces[2]]
+        roll, v = _root(residual, guess, "no hands-free circle")
+        if not v > 0:
+            raise ArithmeticError("the family turned to riding backwards")
+        return [roll, v]
+
+    for i, delta in enumerate(values):
+        try:
+            if guess is None or np.sign(delta) != np.sign(previous):
+                v = v0 if math.isfinite(v0) else 5.0
+                start = math.copysign(min(abs(delta), CONTINUATION_STEP), delta)
+                guess, previous = circle(start, [_linear(parameters, v, start)[0], v]), start
+            steps = max(1, math.ceil(abs(delta - previous) / CONTINUATION_STEP))
+            for between in np.linspace(previous, delta, steps + 1)[1:]:
+                guess = circle(float(between), guess)
+            previous = delta
+        except (ArithmeticError, ConstraintError):
+            guess = None
+            continue
+        roll, v = guess
+        yaw_rate, pitch = _yaw_rate(bike, roll, delta, v)
+        out[i] = roll, v, v / yaw_rate, pitch
+    return HandsFreeTurns(values, out[:, 1], out[:, 0], out[:, 2], out[:, 3], v0)

@@ -1,0 +1,95 @@
+"""Steady turns of the nonlinear Whipple bicycle (bm.steady_turn, bm.hands_free_turns) against the
+linear model's limit and the nonlinear simulator.
+
+- Wide circles: the nonlinear lean, steer and steer torque tend to the linear model's steady turn
+  (``(g K0 + v^2 K2) [phi, delta] = [0, T]`` with the yaw rate ``v delta cos(lam) / w``) with an
+  error of the order of the lean squared (the bicycle's symmetry removes the first-order one): ten
+  times the radius, a hundredth of the relative difference (to 5 %).
+- Hands-free circles start, at zero steer, at the speed where ``det(g K0 + v^2 K2)`` vanishes: the
+  benchmark's linear capsize speed, 6.0243 m/s (Meijaard et al. 2007; here from the eigenvalues,
+  bm.stability, to 1e-6 m/s), approached as the steer angle squared.
+- A steady turn is a solution of the equations of motion: simulated from it (with its steer torque
+  held), the lean and steer stay put for 0.5 s to 1e-7 rad.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+import bikemass as bm
+from bikemass.core.errors import InputError
+
+
+@pytest.fixture(scope="module")
+def meijaard():
+    return bm.parameters("benchmark")
+
+
+def _relative(turn):
+    return max(abs(turn.roll / turn.linear_roll - 1), abs(turn.steer / turn.linear_steer - 1),
+               abs(turn.steer_torque / turn.linear_steer_torque - 1))
+
+
+@pytest.mark.parametrize("speed", [3.0, 5.0, 8.0])
+def test_wide_circles_tend_to_the_linear_steady_turn(meijaard, speed):
+    wide, wider = bm.steady_turn(meijaard, speed, radius=300.0), bm.steady_turn(meijaard, speed, radius=3000.0)
+    assert wide.radius == pytest.approx(300.0, rel=1e-9) and wider.yaw_rate == pytest.approx(speed / 3000.0, rel=1e-9)
+    assert _relative(wide) < 1e-3                         # measured 1.1e-4 at 3 m/s
+    assert _relative(wide) / _relative(wider) == pytest.approx(100.0, rel=0.05)
+
+
+def test_a_left_turn_mirrors_a_right_turn(meijaard):
+    right, left = bm.steady_turn(meijaard, 5.0, radius=20.0), bm.steady_turn(meijaard, 5.0, radius=-20.0)
+    for name in ("roll", "steer", "steer_torque", "yaw_rate"):
+        assert getattr(left, name) == pytest.approx(-getattr(right, name), rel=1e-9)
+    assert left.pitch == pytest.approx(right.pitch, rel=1e-9)
+
+
+def test_a_steer_angle_gives_the_same_turn_as_its_radius(meijaard):
+    by_steer = bm.steady_turn(meijaard, 4.0, steer=0.1)
+    by_radius = bm.steady_turn(meijaard, 4.0, radius=by_steer.radius)
+    assert by_radius.roll == pytest.approx(by_steer.roll, abs=1e-9)
+    assert by_radius.steer == pytest.approx(0.1, abs=1e-9)
+
+
+def test_hands_free_circles_start_at_the_capsize_speed(meijaard):
+    capsize = bm.stability(meijaard).capsize_speeds[0]
+    family = bm.hands_free_turns(meijaard, [0.004, 0.002, 0.02, 0.2])
+    assert family.capsize_speed == pytest.approx(capsize, abs=1e-6)
+    assert family.capsize_speed == pytest.approx(6.0243, abs=5e-5)
+    gaps = np.abs(family.speed[:2] - family.capsize_speed)
+    assert gaps[0] / gaps[1] == pytest.approx(4.0, rel=0.05)
+    assert np.all(np.isfinite(family.speed)) and np.all(np.diff(family.speed[1:]) < 0)
+
+
+def test_a_steady_turn_stays_steady_when_simulated(meijaard):
+    turn = bm.steady_turn(meijaard, 5.0, radius=15.0)
+    r = bm.simulate(meijaard, 5.0, initial={"roll-angle": turn.roll, "steer-angle": turn.steer},
+                    inputs={"steer-torque": ("step", turn.steer_torque)}, duration=0.5, nonlinear=True)
+    np.testing.assert_allclose(r["roll-angle"], turn.roll, atol=1e-7)
+    np.testing.assert_allclose(r["steer-angle"], turn.steer, atol=1e-7)
+    np.testing.assert_allclose(r["forward-speed"], 5.0, atol=1e-7)
+    assert r["heading"][-1] == pytest.approx(turn.yaw_rate * 0.5, rel=1e-6)
+
+
+def test_hands_free_circles_need_no_torque(meijaard):
+    family = bm.hands_free_turns(meijaard, [0.15])
+    turn = bm.steady_turn(meijaard, float(family.speed[0]), steer=0.15)
+    assert turn.steer_torque == pytest.approx(0.0, abs=1e-8)
+    assert turn.roll == pytest.approx(family.roll[0], abs=1e-9)
+
+
+def test_bad_input_is_refused(meijaard):
+    with pytest.raises(InputError, match="exactly one"):
+        bm.steady_turn(meijaard, 5.0)
+    with pytest.raises(InputError, match="exactly one"):
+        bm.steady_turn(meijaard, 5.0, radius=10.0, steer=0.1)
+    with pytest.raises(InputError, match="wheelbase"):
+        bm.steady_turn(meijaard, 5.0, radius=0.5)
+    with pytest.raises(InputError):
+        bm.steady_turn(meijaard, 0.0, radius=10.0)
+    with pytest.raises(InputError, match="nonzero"):
+        bm.hands_free_turns(meijaard, [0.0, 0.1])
+    with pytest.raises(InputError):
+        bm.steady_turn(meijaard, 5.0, steer=math.pi)
