@@ -14,6 +14,8 @@
 The shipped code against a fresh derivation: tests/test_models_derive.py (every combination).
 """
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
@@ -34,7 +36,7 @@ BENCHMARK = bm.load_bicycle("benchmark").published
 
 
 def random_compliances(seed):
-    """Compliances with random axes, stiffnesses and modal inertias."""
+    """Compliances with random axes, stiffnesses, modal inertias, damping ratios and steering damping."""
     rng = np.random.default_rng(seed)
     made = []
     for name in ("frame", "fork"):
@@ -42,7 +44,8 @@ def random_compliances(seed):
         made.append(Compliance(name, (rng.uniform(0.3, 1.2), rng.uniform(-1.2, -0.2)), (np.cos(angle), np.sin(angle)),
                                rng.uniform(1e3, 1e4), rng.uniform(0.05, 0.3), rng.uniform(-0.2, 0.2, 2),
                                rng.uniform(0.01, 0.1)))
-    return Compliances(*made)
+    made = [replace(c, damping_ratio=rng.uniform(0.01, 0.2)) for c in made]
+    return Compliances(*made, steer_damping=rng.uniform(0.1, 2.0))
 
 
 def random_values(seed, rigid=None):
@@ -50,9 +53,12 @@ def random_values(seed, rigid=None):
     return values("flexible", rigid or BENCHMARK, compliances=random_compliances(seed))
 
 
-def matrices(p):
-    """``(M, C1, K0, K2)`` of the flexible model at values ``p`` (from its LinearModel's mechanics)."""
+def matrices(p, damping=False):
+    """``(M, C1, K0, K2)`` of the flexible model at values ``p`` (from its LinearModel's mechanics); with
+    ``damping``, ``(M, C0, C1, K0, K2)``."""
     mech = linear_model("flexible", p).mechanics
+    if damping:
+        return mech.M, mech.C[0], mech.C[1], mech.K[0], mech.K[2]
     return mech.M, mech.C[1], mech.K[0], mech.K[2]
 
 
@@ -76,11 +82,14 @@ def test_roll_steer_block_is_meijaard(seed, jamis):
 @pytest.mark.parametrize("seed, speed", [(3, 5.0), (4, 2.0)])
 def test_independent_numerical_kane(seed, speed):
     """M, C(v) and K(v) of all four coordinates equal an independent numerical linearisation of Kane's
-    equations (finite differences of exact rotations; observed agreement 1e-8 .. 1e-6)."""
+    equations (finite differences of exact rotations; observed agreement 1e-8 .. 1e-6), the frame's, the
+    fork's and the steering bearing's dampers included (random coefficients; the reference adds each as
+    a Rayleigh dissipation of its own coordinate's rate)."""
     p = random_values(seed)
-    M, C1, K0, K2 = matrices(p)
+    assert min(p["cr"], p["cf"], p["cs"]) > 0
+    M, C0, C1, K0, K2 = matrices(p, damping=True)
     Mn, Cn, Kn = reference.linear_matrices(p, speed)
-    for ours, theirs in ((M, Mn), (speed * C1, Cn), (K0 + speed ** 2 * K2, Kn)):
+    for ours, theirs in ((M, Mn), (C0 + speed * C1, Cn), (K0 + speed ** 2 * K2, Kn)):
         np.testing.assert_allclose(ours, theirs, atol=2e-5 * np.abs(ours).max())
 
 
