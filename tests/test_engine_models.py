@@ -123,7 +123,7 @@ def test_infinitely_stiff_frame_and_fork_give_the_rigid_critical_speeds(jamis_fl
     assert held.capsize_speeds == (pytest.approx(rigid.capsize_speed, abs=1e-9),)
     errors = []
     for factor in (1e4, 1e6):
-        result = analyse(build("flexible", params, compliances=flexible.scaled(factor)))
+        result = analyse(build("flexible", params, compliances=flexible.undamped().scaled(factor)))
         assert [(c.kind, c.mode) for c in result.crossings] == [("oscillatory", "weave"), ("real", "capsize")]
         errors.append(((result.weave_speeds[0] - rigid.weave_speed) * factor,
                        (result.capsize_speeds[0] - rigid.capsize_speed) * factor))

@@ -11,8 +11,10 @@ import numpy as np
 
 from ..core.errors import InputError
 
-DAMPING_RATIO = 0.02
-"""Default structural damping ratio of a frame or fork compliance (docs/models-flexible.md, "Damping")."""
+DAMPING_RATIO = 0.0
+"""Default structural damping ratio of a frame or fork compliance: none, since no published measurement
+of a bicycle frame's or fork's damping ratio was at hand (docs/models-flexible.md, "Damping"); give a
+measured one as ``damping_ratio``."""
 
 
 @dataclass(frozen=True)

@@ -27,8 +27,11 @@ _PLACEHOLDER = Compliance("held", (0.0, 0.0), (1.0, 0.0), 1.0, 0.0, (0.0, 0.0), 
 """Values for a compliance held rigid (its coordinate is removed, so they enter nothing)."""
 
 
-STEER_DAMPING = 0.0
-"""Default viscous damping of the steering bearing (N m s/rad; docs/models-flexible.md, "Damping")."""
+STEER_DAMPING = 0.34
+"""Default viscous damping of the steering bearings (N m s/rad): 0.34 +/- 0.04, identified from the damped
+steer oscillations of the Davis instrumented bicycle (front wheel off the ground, springs on the bars;
+Moore 2012, PhD dissertation "Human Control of a Bicycle", UC Davis, ch. "Davis Instrumented
+Bicycle", "Bearing Friction"; docs/models-flexible.md, "Damping")."""
 
 
 @dataclass(frozen=True)
