@@ -206,7 +206,8 @@ def constrained_accelerations(geometry, c, rates, independent, tau=1e-5):
 def kane_residual(p, v, q, u, a):
     """Kane's equations ``F_r + F*_r`` (4,) for the lateral speeds at the state ``q, u, a`` (lateral
     coordinates, rates, accelerations (4,) each), the rear wheel spinning at ``-v/rR``: numerically,
-    every quantity from :class:`Geometry` (springs included)."""
+    every quantity from :class:`Geometry` (springs and dampers included: each damper's generalised force
+    is minus its coefficient times its own coordinate's rate, a Rayleigh dissipation function)."""
     g = Geometry(p)
     c = np.zeros(10)
     c[list(LATERAL)] = q
@@ -226,8 +227,9 @@ def kane_residual(p, v, q, u, a):
             w = motion.omega[b]
             total += partial.omega[b] @ (-(I @ motion.alpha[b]) - np.cross(w, I @ w))
         out[r] = total
-    out[2] -= p["kr"] * q[2]
-    out[3] -= p["kf"] * q[3]
+    out[2] -= p["kr"] * q[2] + p.get("cr", 0.0) * u[2]
+    out[3] -= p["kf"] * q[3] + p.get("cf", 0.0) * u[3]
+    out[1] -= p.get("cs", 0.0) * u[1]          # the steering bearing's damper: steer is D to H's rotation
     return out
 
 

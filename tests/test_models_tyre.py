@@ -9,7 +9,7 @@ from scipy.optimize import brentq
 
 from bikemass.scenario.scenario import parameters
 from bikemass.core.errors import InputError
-from bikemass.models.family import build
+from bikemass.models.family import build, coefficients, values
 from bikemass.models.tyres import DEFAULT_TYRE, DEFAULT_TYRES, Tyre, Tyres, load_tyres, tyres_from_mapping
 
 BENCHMARK = parameters("benchmark")
@@ -192,3 +192,74 @@ def test_the_engine_names_the_tyre_induced_shimmy_wobble():
     assert result.wobble_speeds == (wobble[0].speed,) and 20 < wobble[0].speed < 30
     assert 6 <= wobble[0].frequency / (2 * np.pi) <= 9
     assert [c.mode for c in result.crossings if c.mode != "wobble"] == ["weave", "capsize"]
+
+
+# The tyre's moments about the ground normal: M_z = -t_p F + N C_mgamma gamma on each wheel.
+
+def _descriptor(tyre):
+    """``(E, A, B)`` of the tyre model on the benchmark with ``tyre`` on both wheels."""
+    return coefficients("tyre", values("tyre", BENCHMARK, tyres=Tyres(tyre, tyre)))
+
+
+def test_tyre_moments_equal_their_closed_form_generalised_forces():
+    """A moment ``M_z`` about the ground normal on a wheel enters each speed's equation through the wheel's
+    partial angular velocity about the normal (upright, to first order): the front wheel turns with the
+    yaw rate (1) and the steer rate (cos lam), the rear wheel with the yaw rate only; roll and lateral
+    velocity do not turn a wheel about the vertical.  With the self-aligning moment ``-t_p F`` and the
+    twisting torque ``N C_mgamma gamma`` (front camber roll + sin(lam) steer, rear camber roll; static
+    loads by moments about the rear contact), the change of the descriptor matrices is that outer
+    product, scaled as the steer torque's column is (its generalised force is 1 on the steer rate's
+    equation, 0 elsewhere).  Nothing else changes (relative 1e-12)."""
+    p, loads = BENCHMARK, _loads(BENCHMARK)
+    base = Tyre(12.0, 0.7, 0.2)
+    trail = {"rear": 0.013, "front": 0.021}
+    twist = {"rear": 0.017, "front": 0.011}
+    E0, A0, B0 = _descriptor(base)
+    model = build("tyre", p, Tyres(base, base))
+    names = model.state_names
+    t = Tyres(replace(base, pneumatic_trail=trail["front"], twisting_coefficient=twist["front"]),
+              replace(base, pneumatic_trail=trail["rear"], twisting_coefficient=twist["rear"]))
+    E1, A1, B1 = coefficients("tyre", values("tyre", p, tyres=t))
+    steer_torque = model.input_names.index("steer-torque")
+    scale = B0[0][names.index("steer-rate"), steer_torque]
+    expected_B = np.zeros_like(B0[0][:, steer_torque])
+    expected_B[names.index("steer-rate")] = scale
+    np.testing.assert_allclose(B0[0][:, steer_torque], expected_B, atol=1e-15)
+    partial = {"front": {"yaw-rate": 1.0, "steer-rate": np.cos(p.lam)}, "rear": {"yaw-rate": 1.0}}
+    camber = {"front": {"roll-angle": 1.0, "steer-angle": np.sin(p.lam)}, "rear": {"roll-angle": 1.0}}
+    expected = np.zeros_like(A0[0])
+    for wheel in ("front", "rear"):
+        for speed, share in partial[wheel].items():
+            row = names.index(speed)
+            expected[row, names.index(f"{wheel}-lateral-force")] -= scale * share * trail[wheel]
+            for q, dgamma in camber[wheel].items():
+                expected[row, names.index(q)] += scale * share * loads[wheel] * twist[wheel] * dgamma
+    np.testing.assert_allclose(A1[0] - A0[0], expected, rtol=0, atol=1e-12 * np.abs(A0[0]).max())
+    for k in range(1, len(A0)):
+        np.testing.assert_array_equal(A1[k], A0[k])
+    np.testing.assert_array_equal(E1, E0)
+    np.testing.assert_array_equal(B1, B0)
+
+
+def test_zero_tyre_moments_are_the_force_only_tyre():
+    """Zero trail and twisting coefficient (the default) give the force-only tyre exactly."""
+    E0, A0, B0 = _descriptor(Tyre(12.0, 0.7, 0.2))
+    E1, A1, B1 = _descriptor(Tyre(12.0, 0.7, 0.2, pneumatic_trail=0.0, twisting_coefficient=0.0))
+    for a, b in ((E0, E1), (A0, A1), (B0, B1)):
+        np.testing.assert_array_equal(a, b)
+    assert DEFAULT_TYRE.pneumatic_trail == DEFAULT_TYRE.twisting_coefficient == 0.0
+
+
+def test_tyre_file_moments_with_units(tmp_path):
+    path = tmp_path / "tyres.yaml"
+    path.write_text(TYRE_FILE.replace("relaxation_length: 0.2 m}", "relaxation_length: 0.2 m, pneumatic_trail: 15 mm, "
+                                      "twisting_coefficient: 0.2 mm/deg}"))
+    tyres = load_tyres(path)
+    assert tyres.front.pneumatic_trail == pytest.approx(0.015, rel=1e-15)
+    assert tyres.front.twisting_coefficient == pytest.approx(0.2e-3 * 180 / np.pi, rel=1e-15)
+    assert tyres.rear.pneumatic_trail == tyres.rear.twisting_coefficient == 0.0
+    path.write_text(TYRE_FILE.replace("relaxation_length: 0.2 m}", "relaxation_length: 0.2 m, twisting_coefficient: 0.01}"))
+    with pytest.raises(InputError, match="front.twisting_coefficient: a moment per unit load per angle"):
+        load_tyres(path)
+    with pytest.raises(InputError, match="tyre: pneumatic_trail: a number >= 0"):
+        Tyre(11.0, 0.5, 0.2, pneumatic_trail=-0.01)

@@ -132,7 +132,7 @@ def test_wobble_against_the_model_built_directly(table, direct):
             assert growing.all(), row
         else:
             i = int(np.flatnonzero(growing)[0]) + 1
-            assert not growing[:i - 1].any() and growing[i - 1:].all(), row
+            assert not growing[:i - 1].any() and growing[i - 1], row     # the first onset (damped, it may end)
             speed = brentq(nearest_real_part(model, roots[i]), GRID[i - 1], GRID[i], xtol=1e-12)
             assert start == pytest.approx(speed, abs=1e-7), row
         capsize = number(row["flexible capsize (m/s)"])
@@ -182,7 +182,7 @@ def test_a_very_stiff_frame_gives_back_the_rigid_bicycle(direct):
     for bike in ("jamis", "cargo"):
         params = parameters(bike, "relaxed")
         rigid = bm.stability(params)
-        stiff = {f: flexible.wobble(build("flexible", params, compliances=compliance(bike, "steel").scaled(f)))
+        stiff = {f: flexible.wobble(build("flexible", params, compliances=compliance(bike, "steel").undamped().scaled(f)))
                  for f in (1e4, 1e6)}
         for which in ("weave_speeds", "capsize_speeds"):
             error = {f: abs(getattr(w, which)[0] - getattr(rigid, which)[0]) for f, w in stiff.items()}

@@ -1,5 +1,6 @@
 """The stability engine names the flexible model's wobble (bikemass.analysis.engine), checked against
-the eigenvalues followed by hand from standstill (plain numpy, not the engine's tracking):
+the eigenvalues followed by hand from standstill (plain numpy, not the engine's tracking), the member
+undamped (no steering damper, no structural damping: ``Compliances.undamped``):
 
 * the Jamis with the Relaxed rider and a steel frame and fork: the slowest oscillation of the
   compliances' family, followed from standstill to 8 m/s, is steer-dominated and lies in the 6-9 Hz
@@ -31,7 +32,7 @@ GRID = np.round(np.arange(0.0, 30.0 + 1e-9, 0.05), 12)
 def flexible_model(bike):
     bicycle = bm.load_bicycle(bike)
     params = bm.parameters(bicycle, bm.load_rider("relaxed"))
-    return build("flexible", params, compliances=compliances(bicycle, "steel"))
+    return build("flexible", params, compliances=compliances(bicycle, "steel").undamped())
 
 
 def slowest_compliance_root(model):

@@ -39,16 +39,18 @@ DIMENSIONS = {
     "stiffness": ("N m/rad", {"N m/rad": 1.0, "N*m/rad": 1.0, "kN m/rad": 1e3}),
     "acceleration": ("m/s^2", {"m/s^2": 1.0}),
     "inverse angle": ("1/rad", {"1/rad": 1.0, "1/deg": 180 / math.pi}),
+    "length per angle": ("m/rad", {"m/rad": 1.0, "m/deg": 180 / math.pi, "mm/rad": 1e-3, "mm/deg": 0.18 / math.pi}),
     "speed": ("m/s", {"m/s": 1.0, "km/h": 1 / 3.6}),
     "damping": ("N m s/rad", {"N m s/rad": 1.0, "N*m*s/rad": 1.0}),
     "dimensionless": ("", {"": 1.0}),
 }
 """dimension -> (SI unit, {unit: factor to SI}).  ``pressure`` also covers elastic moduli,
 ``stiffness`` is rotational (moment per angle), ``inverse angle`` a coefficient per angle (a tyre's
-force per unit load per radian of slip)."""
+force per unit load per radian of slip), ``length per angle`` a moment per unit load per angle (a tyre's
+twisting torque coefficient)."""
 
 ARTICLES = {"angle": "an", "acceleration": "an", "inertia": "an", "inverse angle": "an"}
-UNIT_REQUIRED = ("angle", "inverse angle")
+UNIT_REQUIRED = ("angle", "inverse angle", "length per angle")
 """Dimensions whose bare numbers are refused (radians or degrees could be meant)."""
 
 _QUANTITY = re.compile(r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*")
@@ -74,6 +76,8 @@ def describe(dimension):
     if dimension == "angle":
         return (f"{noun} with its unit ('<number> deg' or '<number> rad'; "
                 "a bare number could be either)")
+    if dimension == "length per angle":
+        return "a moment per unit load per angle with its unit ('<number> m/rad' or '<number> mm/deg')"
     if dimension == "inverse angle":
         return ("a coefficient per angle with its unit ('<number> 1/rad' or '<number> 1/deg'; "
                 "a bare number could be either)")

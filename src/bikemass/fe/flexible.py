@@ -6,7 +6,7 @@ import numpy as np
 
 from ..core.errors import InputError
 from ..mass.materials import Material
-from ..models.flexible import Compliances
+from ..models.flexible import STEER_DAMPING, Compliances
 from .fork import fork_bending, fork_structure
 from .model import resolve_material
 from .stiffness import head_tube_axis
@@ -35,7 +35,8 @@ def compliances(bicycle, material=None, frame=True, fork=True, timoshenko=True):
     Compliances
         The twist about an axis at right angles to the steer axis, and the fork's bending axis, each
         with its stiffness (N m/rad) and its tubes' modal inertia, loaded as the front contact loads
-        them (:mod:`bikemass.fe.twist`).
+        them (:mod:`bikemass.fe.twist`), the default structural damping ratio of each and the default
+        steering-bearing damping (docs/models-flexible.md, "Damping").
 
     Raises
     ------
@@ -53,4 +54,4 @@ def compliances(bicycle, material=None, frame=True, fork=True, timoshenko=True):
     axis = head_tube_axis(bicycle.structure)
     twist = frame_twist(bicycle.structure, contact, material, timoshenko) if frame else None
     bending = fork_bending(fork_structure(bicycle, material), contact, axis, timoshenko) if fork else None
-    return Compliances(twist, bending)
+    return Compliances(twist, bending, steer_damping=STEER_DAMPING)

@@ -11,6 +11,12 @@ import numpy as np
 
 from ..core.errors import InputError
 
+DAMPING_RATIO = 0.0
+"""Default structural damping ratio of a frame or fork compliance: none, since no published measurement
+of a bicycle frame's or fork's damping ratio was at hand (docs/models-flexible.md, "Damping"); give a
+measured one as ``damping_ratio``."""
+
+
 @dataclass(frozen=True)
 class Compliance:
     """One compliance as a rotation ``theta`` about a line in the plane of symmetry (benchmark frame,
@@ -33,22 +39,27 @@ class Compliance:
         "m: the deforming tubes' kinetic energy is m theta'**2 / 2 (relative to the parent)")})
     load_point: tuple = field(default=None, metadata={"unit": "m", "description": (
         "(x, z) of the design load's (unit lateral force's) point on the steer axis")})
+    damping_ratio: float = field(default=DAMPING_RATIO, metadata={"unit": "1", "description": (
+        "structural damping as the damping ratio of the compliance's own vibration (docs/models-flexible.md)")})
 
     def __post_init__(self):
         for name in ("point", "direction", "modal_moment", "load_point"):
             value = getattr(self, name)
             if value is not None:
                 object.__setattr__(self, name, tuple(float(x) for x in value))
-        for name in ("stiffness", "modal_momentum", "modal_mass"):
+        for name in ("stiffness", "modal_momentum", "modal_mass", "damping_ratio"):
             object.__setattr__(self, name, float(getattr(self, name)))
         values = (*self.point, *self.direction, self.stiffness, self.modal_momentum, *self.modal_moment,
-                  self.modal_mass)
+                  self.modal_mass, self.damping_ratio)
         if not np.all(np.isfinite(values)):
             raise InputError(f"compliance {self.name}", "(values)", f"finite numbers, got {values}")
         if not np.isclose(np.hypot(*self.direction), 1.0, atol=1e-9):
             raise InputError(f"compliance {self.name}", "direction", f"a unit vector (x, z), got {self.direction}")
         if not self.stiffness > 0:
             raise InputError(f"compliance {self.name}", "stiffness", f"a positive number (N m/rad), got {self.stiffness}")
+        if not 0 <= self.damping_ratio < 1:
+            raise InputError(f"compliance {self.name}", "damping_ratio",
+                             f"a number in [0, 1) (an underdamped structure), got {self.damping_ratio}")
         if self.modal_mass < 0:
             raise InputError(f"compliance {self.name}", "modal_mass", f"a number >= 0 (kg m^2/rad^2), got {self.modal_mass}")
 

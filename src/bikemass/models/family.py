@@ -141,7 +141,7 @@ def values(model, bicycle, tyres=None, compliances=None):
         if not isinstance(compliances, Compliances):
             raise InputError("compliances", choice.name, "the flexible model needs the frame's and the fork's "
                              "compliances (Compliances: bikemass.fe.flexible.compliances(bicycle, material))")
-        out.update(compliances.values())
+        out.update(compliances.values(out))
     elif compliances is not None:
         raise InputError("compliances", choice.name, f"no compliances for the model {choice.name} (add the "
                          f"flexible member: {_with(choice, 'flexible')})")

@@ -6,6 +6,9 @@ A tyre file (YAML, read through the input gate; every coefficient carries its un
     front: {cornering_coefficient: 11.46 1/rad, camber_coefficient: 0.573 1/rad, relaxation_length: 0.175 m}
     rear:  {cornering_coefficient: 11.46 1/rad, camber_coefficient: 0.573 1/rad, relaxation_length: 0.175 m}
 
+and optionally, per wheel, the moments about the ground normal: ``pneumatic_trail`` (a length) and
+``twisting_coefficient`` (a moment per unit load per angle, ``m/rad`` or ``mm/deg``); both default to 0.
+
 Default (:data:`DEFAULT_TYRES`): 11.46 /rad, 0.573 /rad and 0.175 m on both wheels, the TU Delft
 Bicycle Lab's values for the Batavus Browser's tyres (``mechmotum/bicycle-kickplate-model``,
 ``parameters.py``: "estimates from Andrew's dissertation"), i.e. from Dressel's measurements of
@@ -31,24 +34,35 @@ RELAXATION_RANGE = (1e-3, 10.0)
 0.3 m)."""
 CORNERING_RANGE = (1.0, 1e3)
 """Cornering coefficients (1/rad) outside this range are warned about (bicycle tyres: 8 to 17)."""
+MOMENT_KEYS = ("pneumatic_trail", "twisting_coefficient")
+"""Optional keys: the tyre's moments about the ground normal (default 0, no moment)."""
 _DIMENSIONS = {"cornering_coefficient": "inverse angle", "camber_coefficient": "inverse angle",
                "relaxation_length": "length"}
 
 
 @dataclass(frozen=True)
 class Tyre:
-    """One tyre: lateral force ``N (C_alpha alpha + C_gamma gamma)`` lagging over ``relaxation_length``."""
+    """One tyre: lateral force ``N (C_alpha alpha + C_gamma gamma)`` lagging over ``relaxation_length``, and
+    the moment about the ground normal ``-t_p F + N C_mgamma gamma`` (z down: positive turns the wheel to
+    the right): the self-aligning moment of the force acting ``pneumatic_trail`` behind the contact, and
+    the twisting torque of camber (``twisting_coefficient`` > 0 turns the wheel towards its lean).  Both
+    default to zero (no moment)."""
 
     cornering_coefficient: float = field(metadata={"unit": "1/rad", "description": "d(F_y/N)/d(slip angle)"})
     camber_coefficient: float = field(metadata={"unit": "1/rad", "description": "d(F_y/N)/d(camber angle)"})
     relaxation_length: float = field(metadata={"unit": "m", "description": "distance rolled to build up the force"})
+    pneumatic_trail: float = field(default=0.0, metadata={
+        "unit": "m", "description": "distance behind the contact at which the lateral force acts (self-aligning moment)"})
+    twisting_coefficient: float = field(default=0.0, metadata={
+        "unit": "m/rad", "description": "d(M_z/N)/d(camber angle), towards the lean (twisting torque)"})
 
     def __post_init__(self):
         for f in fields(self):
             x = getattr(self, f.name)
-            least = "a number >= 0" if f.name == "camber_coefficient" else "a positive number"
+            zero_ok = f.name in ("camber_coefficient", *MOMENT_KEYS)
+            least = "a number >= 0" if zero_ok else "a positive number"
             if isinstance(x, bool) or not isinstance(x, (int, float)) or not math.isfinite(x) or x < 0 or (
-                    x == 0 and f.name != "camber_coefficient"):
+                    x == 0 and not zero_ok):
                 raise InputError("tyre", f.name, f"{least} ({f.metadata['unit']}), got {x!r}")
             object.__setattr__(self, f.name, float(x))
         self._warn_absurd()
@@ -82,8 +96,12 @@ class Tyres:
     def values(self):
         """``{name: float}`` of the generated code's tyre parameters."""
         f, r = self.front, self.rear
-        return {"CaR": r.cornering_coefficient, "CgR": r.camber_coefficient, "sigmaR": r.relaxation_length,
-                "CaF": f.cornering_coefficient, "CgF": f.camber_coefficient, "sigmaF": f.relaxation_length}
+        out = {}
+        for key, t in (("R", r), ("F", f)):
+            out.update({f"Ca{key}": t.cornering_coefficient, f"Cg{key}": t.camber_coefficient,
+                        f"sigma{key}": t.relaxation_length, f"tp{key}": t.pneumatic_trail,
+                        f"Cmg{key}": t.twisting_coefficient})
+        return out
 
 
 DEFAULT_TYRE = Tyre(cornering_coefficient=11.46, camber_coefficient=0.573, relaxation_length=0.175)
@@ -92,10 +110,15 @@ DEFAULT_TYRES = Tyres(front=DEFAULT_TYRE, rear=DEFAULT_TYRE)
 
 
 def _tyre(node):
-    node.check_keys(required=KEYS, optional=("note",))
+    node.check_keys(required=KEYS, optional=("note", *MOMENT_KEYS))
+    moments = {}
+    if node.has("pneumatic_trail"):
+        moments["pneumatic_trail"] = node["pneumatic_trail"].number("length", nonnegative=True)
+    if node.has("twisting_coefficient"):
+        moments["twisting_coefficient"] = node["twisting_coefficient"].number("length per angle", nonnegative=True)
     return Tyre(cornering_coefficient=node["cornering_coefficient"].number("inverse angle", positive=True),
                 camber_coefficient=node["camber_coefficient"].number("inverse angle", nonnegative=True),
-                relaxation_length=node["relaxation_length"].number("length", positive=True))
+                relaxation_length=node["relaxation_length"].number("length", positive=True), **moments)
 
 
 def tyres_from_node(node):

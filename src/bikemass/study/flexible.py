@@ -233,7 +233,8 @@ def flexible_table(results, speeds):
                  notes=("Geometry bicycles and Table 3-3 riders as the geometry run builds them. Spring: the "
                         "thesis's quasi-static frame (Eq. 3.27-3.30) with S condensed from the beam model; flexible: "
                         "the rear frame's twist and the fork's bending with their tubes' inertia, stiffness from the "
-                        "beam models of the same tubes (docs/models-flexible.md); no damping. Wobble: the "
+                        "beam models of the same tubes (docs/models-flexible.md); damped only in the steering "
+                        "bearings (0.34 N m s/rad, measured). Wobble: the "
                         "steer-dominated oscillation of the compliances' family. Weave and capsize: the first "
                         "crossing on 0..30 m/s; '-': none.",))
 
@@ -369,5 +370,6 @@ def flexible_findings(results, speeds, bands):
         text += ("; the material decides whether it is unstable at all for " + ", ".join(
             f"{THESIS_NAMES[b]} {THESIS_NAMES[r]}" for b, r in decided))
     text += (f"; of the {len(self_stable)} combinations self-stable somewhere on a rigid frame, {kept} keep a "
-             "self-stable speed (no damping in the model: tyres and the rider's arms damp a real wobble).")
+             "self-stable speed (the model's only damping is the steering bearings': tyres, the rider's arms and the "
+             "structure damp a real wobble).")
     return lines + [text]

@@ -9,6 +9,9 @@ the plane of symmetry against a torsional spring, and the tubes that deform carr
 * **Fork bending** ``theta_f``: the hub frame K (massless) turns relative to the front frame about the
   line through ``(xf, 0, zf)`` with direction ``(nfx, 0, nfz)``; the front wheel turns on K's axle.
   Spring ``kf``.
+* **Damping**: a viscous damper in parallel with each spring (``cr``, ``cf``, N m s/rad: the structural
+  damping, :meth:`bikemass.models.flexible.Compliances.values` converts a damping ratio), and one in the
+  steering bearing, ``cs`` (N m s/rad) between the front frame and the head frame D about the steer axis.
 
 The tubes' inertia is their Ritz field's (:mod:`bikemass.fe.twist`): the modal momentum ``L``, its
 moment about the origin ``(Jx, Jz)`` and the modal mass ``m`` of the deformation relative to the parent
@@ -33,14 +36,18 @@ PARAMETERS = {
           ("nrx", "1", "frame twist axis, direction x"), ("nrz", "1", "frame twist axis, direction z"),
           ("kr", "N m/rad", "frame twist stiffness"), ("mtr", "kg", "frame tubes' modal particle, mass"),
           ("xtr", "m", "frame tubes' modal particle, x"), ("ztr", "m", "frame tubes' modal particle, z"),
-          ("dtr", "m/rad", "frame tubes' modal particle, sideways per radian")),
+          ("dtr", "m/rad", "frame tubes' modal particle, sideways per radian"),
+          ("cr", "N m s/rad", "frame twist damping")),
     "f": (("xf", "m", "fork bending axis, x of a point"), ("zf", "m", "fork bending axis, z of a point"),
           ("nfx", "1", "fork bending axis, direction x"), ("nfz", "1", "fork bending axis, direction z"),
           ("kf", "N m/rad", "fork bending stiffness"), ("mtf", "kg", "fork tubes' modal particle, mass"),
           ("xtf", "m", "fork tubes' modal particle, x"), ("ztf", "m", "fork tubes' modal particle, z"),
-          ("dtf", "m/rad", "fork tubes' modal particle, sideways per radian")),
+          ("dtf", "m/rad", "fork tubes' modal particle, sideways per radian"),
+          ("cf", "N m s/rad", "fork bending damping")),
+    "s": (("cs", "N m s/rad", "steering bearing damping"),),
 }
-"""The member's parameters (name, SI unit, meaning): the frame's (``r``), then the fork's (``f``)."""
+"""The member's parameters (name, SI unit, meaning): the frame's (``r``), the fork's (``f``), the steering
+bearing's (``s``)."""
 FAMILY = "wobble"
 """The family of both compliances' modes (the engine names a mode by the family holding most of it)."""
 
@@ -65,7 +72,7 @@ class Flexible(Member):
     name = "flexible"
 
     def rear(self, bike):
-        self.p = {name: bike.parameter(name, unit, text) for key in "rf" for name, unit, text in PARAMETERS[key]}
+        self.p = {name: bike.parameter(name, unit, text) for key in "rfs" for name, unit, text in PARAMETERS[key]}
         self.theta_r, self.u_r = bike.coordinate("theta_r")
         bike.dynamic.append(Coordinate(self.theta_r, self.u_r, "frame-twist", "frame-twist-rate", "rad", FAMILY))
         C = bike.frames["C"]
@@ -77,8 +84,9 @@ class Flexible(Member):
         Z = bike.points["Rc"].locatenew("Zr", p["xr"] * frame.x + (p["zr"] + bike.p("rR")) * frame.z)
         bike.pivots["head"] = (Z, (p["xr"], p["zr"]))
         bike.frames["D"] = D
-        spring = -p["kr"] * self.theta_r * axis
+        spring = -(p["kr"] * self.theta_r + p["cr"] * self.u_r) * axis
         bike.loads += [(D, spring), (frame, -spring)]
+        self.head_frame = D
         return D
 
     def axle(self, bike, frame):
@@ -91,8 +99,11 @@ class Flexible(Member):
         Z = S0.locatenew("Zf", (p["xf"] - steer_point[0]) * frame.x + p["zf"] * frame.z)
         bike.pivots["axle"] = (Z, (p["xf"], p["zf"]))
         bike.frames["K"] = K
-        spring = -p["kf"] * theta_f * axis
+        spring = -(p["kf"] * theta_f + p["cf"] * u_f) * axis
         bike.loads += [(K, spring), (frame, -spring)]
+        steer = next(c for c in bike.dynamic if c.name == "steer-angle")
+        damper = -p["cs"] * steer.u * bike.frames["S"].z        # on the front frame, about the steer axis
+        bike.loads += [(frame, damper), (self.head_frame, -damper)]
         return K
 
     def _modal(self, bike, name, parent, base, at, key, theta):

@@ -14,7 +14,7 @@ import numpy as np
 
 NAME = 'flexible'
 MEMBERS = ('flexible',)
-PARAMETERS = (('w', 'm', 'wheelbase'), ('c', 'm', 'trail'), ('lam', 'rad', 'steer-axis tilt'), ('g', 'm/s^2', 'gravity'), ('rR', 'm', 'rear wheel radius'), ('mR', 'kg', 'rear wheel mass'), ('IRxx', 'kg m^2', 'rear wheel Ixx'), ('IRyy', 'kg m^2', 'rear wheel Iyy'), ('xB', 'm', 'rear frame CoM x'), ('zB', 'm', 'rear frame CoM z'), ('mB', 'kg', 'rear frame mass'), ('IBxx', 'kg m^2', 'rear frame Ixx'), ('IByy', 'kg m^2', 'rear frame Iyy'), ('IBzz', 'kg m^2', 'rear frame Izz'), ('IBxz', 'kg m^2', 'rear frame Ixz'), ('xH', 'm', 'front frame CoM x'), ('zH', 'm', 'front frame CoM z'), ('mH', 'kg', 'front frame mass'), ('IHxx', 'kg m^2', 'front frame Ixx'), ('IHyy', 'kg m^2', 'front frame Iyy'), ('IHzz', 'kg m^2', 'front frame Izz'), ('IHxz', 'kg m^2', 'front frame Ixz'), ('rF', 'm', 'front wheel radius'), ('mF', 'kg', 'front wheel mass'), ('IFxx', 'kg m^2', 'front wheel Ixx'), ('IFyy', 'kg m^2', 'front wheel Iyy'), ('xr', 'm', 'frame twist axis, x of a point'), ('zr', 'm', 'frame twist axis, z of a point'), ('nrx', '1', 'frame twist axis, direction x'), ('nrz', '1', 'frame twist axis, direction z'), ('kr', 'N m/rad', 'frame twist stiffness'), ('mtr', 'kg', "frame tubes' modal particle, mass"), ('xtr', 'm', "frame tubes' modal particle, x"), ('ztr', 'm', "frame tubes' modal particle, z"), ('dtr', 'm/rad', "frame tubes' modal particle, sideways per radian"), ('xf', 'm', 'fork bending axis, x of a point'), ('zf', 'm', 'fork bending axis, z of a point'), ('nfx', '1', 'fork bending axis, direction x'), ('nfz', '1', 'fork bending axis, direction z'), ('kf', 'N m/rad', 'fork bending stiffness'), ('mtf', 'kg', "fork tubes' modal particle, mass"), ('xtf', 'm', "fork tubes' modal particle, x"), ('ztf', 'm', "fork tubes' modal particle, z"), ('dtf', 'm/rad', "fork tubes' modal particle, sideways per radian"))
+PARAMETERS = (('w', 'm', 'wheelbase'), ('c', 'm', 'trail'), ('lam', 'rad', 'steer-axis tilt'), ('g', 'm/s^2', 'gravity'), ('rR', 'm', 'rear wheel radius'), ('mR', 'kg', 'rear wheel mass'), ('IRxx', 'kg m^2', 'rear wheel Ixx'), ('IRyy', 'kg m^2', 'rear wheel Iyy'), ('xB', 'm', 'rear frame CoM x'), ('zB', 'm', 'rear frame CoM z'), ('mB', 'kg', 'rear frame mass'), ('IBxx', 'kg m^2', 'rear frame Ixx'), ('IByy', 'kg m^2', 'rear frame Iyy'), ('IBzz', 'kg m^2', 'rear frame Izz'), ('IBxz', 'kg m^2', 'rear frame Ixz'), ('xH', 'm', 'front frame CoM x'), ('zH', 'm', 'front frame CoM z'), ('mH', 'kg', 'front frame mass'), ('IHxx', 'kg m^2', 'front frame Ixx'), ('IHyy', 'kg m^2', 'front frame Iyy'), ('IHzz', 'kg m^2', 'front frame Izz'), ('IHxz', 'kg m^2', 'front frame Ixz'), ('rF', 'm', 'front wheel radius'), ('mF', 'kg', 'front wheel mass'), ('IFxx', 'kg m^2', 'front wheel Ixx'), ('IFyy', 'kg m^2', 'front wheel Iyy'), ('xr', 'm', 'frame twist axis, x of a point'), ('zr', 'm', 'frame twist axis, z of a point'), ('nrx', '1', 'frame twist axis, direction x'), ('nrz', '1', 'frame twist axis, direction z'), ('kr', 'N m/rad', 'frame twist stiffness'), ('mtr', 'kg', "frame tubes' modal particle, mass"), ('xtr', 'm', "frame tubes' modal particle, x"), ('ztr', 'm', "frame tubes' modal particle, z"), ('dtr', 'm/rad', "frame tubes' modal particle, sideways per radian"), ('cr', 'N m s/rad', 'frame twist damping'), ('xf', 'm', 'fork bending axis, x of a point'), ('zf', 'm', 'fork bending axis, z of a point'), ('nfx', '1', 'fork bending axis, direction x'), ('nfz', '1', 'fork bending axis, direction z'), ('kf', 'N m/rad', 'fork bending stiffness'), ('mtf', 'kg', "fork tubes' modal particle, mass"), ('xtf', 'm', "fork tubes' modal particle, x"), ('ztf', 'm', "fork tubes' modal particle, z"), ('dtf', 'm/rad', "fork tubes' modal particle, sideways per radian"), ('cf', 'N m s/rad', 'fork bending damping'), ('cs', 'N m s/rad', 'steering bearing damping'))
 """(name, SI unit, meaning) of every argument of coefficients, in order."""
 STATES = (('roll-angle', 'rad'), ('steer-angle', 'rad'), ('frame-twist', 'rad'), ('fork-bending', 'rad'), ('roll-rate', 'rad/s'), ('steer-rate', 'rad/s'), ('frame-twist-rate', 'rad/s'), ('fork-bending-rate', 'rad/s'), ('heading', 'rad'), ('lateral', 'm'))
 """(name, unit) of every state; the first N_DYNAMIC are dynamic."""
@@ -31,7 +31,7 @@ SECOND_ORDER = True
 def _make(cos, sin):
     """The coefficient function computing with these functions (cos, sin)."""
 
-    def coefficients(shape, w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf):
+    def coefficients(shape, w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, cr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf, cf, cs):
         x0 = rR**2
         x1 = -rR - zB
         x2 = zr**2
@@ -312,14 +312,17 @@ def _make(cos, sin):
         A[..., 0, 5, 1] = -x143*(-x139*(-rF*x82 - x136*x172*x40 + x21*x22*x23 + x21*x23*x27 - x7*x82 - x82*zf) - x172*x41) + x144*x21 + x145*x21 + x146*x21 - x173*x41
         A[..., 0, 5, 2] = nrx*x144 + nrx*x145 + nrx*x146 - x143*(rF*x175 - x139*(w*x136*(rF*x175 + x176 - x177 - x179) - x180) - x179 - x181) - x184*x41
         A[..., 0, 5, 3] = -x143*(-x139*(-x151*x186 + x187) - x186) + x167*(-x160*x22 + x165*x73) + x188
+        A[..., 0, 5, 5] = -cs
         A[..., 0, 6, 0] = x142*x57 + x156 + x189 + x190
         A[..., 0, 6, 1] = x135*(x108*x175 + x191) - x135*(-x109*x175 + x191) - x143*(-x139*(w*x136*x192 - x180) + x192) + x167*(x115*x21 - x175*x22) + x167*(-x175*x27 + x21*x58) - x173*x57 + x183*(-x175*x29 + x21*x61)
         A[..., 0, 6, 2] = -kr*x121 - kr*x122 + nrx*x152 + nrx*x153 + nrx*x155 + nrx*x189 + nrx*x190 - x143*(-x139*(nrx*x47 + nrx*x49 + nrx*x54 - rF*x121 - x136*x178*x56 + x193*x7 + x193*zf - x193*zr) - x178*x57) - x184*x57
         A[..., 0, 6, 3] = -x143*(-x139*(-x151*x195 + x196) - x195) + x167*(x115*x165 - x194*x22) + x197
+        A[..., 0, 6, 6] = -cr*x121 - cr*x122
         A[..., 0, 7, 0] = x142*x33*(rF*x199 + x171 - x200) + x157 + x198
         A[..., 0, 7, 1] = -x143*(-x139*(-x151*x201 - x165*x34 + x187 + x199*x34) - x201) - x173*x70 + x188 + x198*x21
         A[..., 0, 7, 2] = nrx*x198 - x143*(-x139*(-x151*x204 - x165*x50 + x196 + x199*x50) - x204) - x184*x70 + x197
         A[..., 0, 7, 3] = g*mF*x128*x165 - kf*x132 - kf*x133 - x143*(-x139*(-x151*x209 + 2*x165*x170 + x199*x200 + x22*(-x21*(x205*x23 - x206) + x23*(x205*x21 + x207)) + x7*(-x21*(x207 - x208*x21) + x23*(x206 + x208*x23))) - x209)
+        A[..., 0, 7, 7] = -cf*x132 - cf*x133
         A[..., 0, 8, 5] = -x41
         A[..., 0, 8, 6] = -x57
         A[..., 0, 8, 7] = -x70
@@ -364,10 +367,10 @@ _arrays = _make(np.cos, np.sin)
 _floats = _make(math.cos, math.sin)
 
 
-def coefficients(w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf):
+def coefficients(w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, cr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf, cf, cs):
     """``(E, A, B)``: E (..., 10, 10), A (..., 3, 10, 10), B (..., 1, 10, 2), the leading
     dimensions those of the parameters (floats or arrays, SI, see PARAMETERS) broadcast together."""
-    args = (w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf,)
+    args = (w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, cr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf, cf, cs,)
     if all(type(a) is float for a in args):
         return _floats((), *args)
     return _arrays(np.broadcast_shapes(*(np.shape(a) for a in args)), *args)

@@ -14,7 +14,7 @@ import numpy as np
 
 NAME = 'rider-lean+flexible'
 MEMBERS = ('rider-lean', 'flexible')
-PARAMETERS = (('w', 'm', 'wheelbase'), ('c', 'm', 'trail'), ('lam', 'rad', 'steer-axis tilt'), ('g', 'm/s^2', 'gravity'), ('rR', 'm', 'rear wheel radius'), ('mR', 'kg', 'rear wheel mass'), ('IRxx', 'kg m^2', 'rear wheel Ixx'), ('IRyy', 'kg m^2', 'rear wheel Iyy'), ('xB', 'm', 'rear frame CoM x'), ('zB', 'm', 'rear frame CoM z'), ('mB', 'kg', 'rear frame mass'), ('IBxx', 'kg m^2', 'rear frame Ixx'), ('IByy', 'kg m^2', 'rear frame Iyy'), ('IBzz', 'kg m^2', 'rear frame Izz'), ('IBxz', 'kg m^2', 'rear frame Ixz'), ('xH', 'm', 'front frame CoM x'), ('zH', 'm', 'front frame CoM z'), ('mH', 'kg', 'front frame mass'), ('IHxx', 'kg m^2', 'front frame Ixx'), ('IHyy', 'kg m^2', 'front frame Iyy'), ('IHzz', 'kg m^2', 'front frame Izz'), ('IHxz', 'kg m^2', 'front frame Ixz'), ('rF', 'm', 'front wheel radius'), ('mF', 'kg', 'front wheel mass'), ('IFxx', 'kg m^2', 'front wheel Ixx'), ('IFyy', 'kg m^2', 'front wheel Iyy'), ('mU', 'kg', 'upper body mass'), ('xU', 'm', 'upper body CoM x'), ('zU', 'm', 'upper body CoM z'), ('IUxx', 'kg m^2', 'upper body Ixx'), ('IUyy', 'kg m^2', 'upper body Iyy'), ('IUzz', 'kg m^2', 'upper body Izz'), ('IUxz', 'kg m^2', 'upper body Ixz'), ('zhip', 'm', 'hip (lean) axis z'), ('klean', 'N m/rad', 'lean stiffness'), ('clean', 'N m s/rad', 'lean damping'), ('xr', 'm', 'frame twist axis, x of a point'), ('zr', 'm', 'frame twist axis, z of a point'), ('nrx', '1', 'frame twist axis, direction x'), ('nrz', '1', 'frame twist axis, direction z'), ('kr', 'N m/rad', 'frame twist stiffness'), ('mtr', 'kg', "frame tubes' modal particle, mass"), ('xtr', 'm', "frame tubes' modal particle, x"), ('ztr', 'm', "frame tubes' modal particle, z"), ('dtr', 'm/rad', "frame tubes' modal particle, sideways per radian"), ('xf', 'm', 'fork bending axis, x of a point'), ('zf', 'm', 'fork bending axis, z of a point'), ('nfx', '1', 'fork bending axis, direction x'), ('nfz', '1', 'fork bending axis, direction z'), ('kf', 'N m/rad', 'fork bending stiffness'), ('mtf', 'kg', "fork tubes' modal particle, mass"), ('xtf', 'm', "fork tubes' modal particle, x"), ('ztf', 'm', "fork tubes' modal particle, z"), ('dtf', 'm/rad', "fork tubes' modal particle, sideways per radian"))
+PARAMETERS = (('w', 'm', 'wheelbase'), ('c', 'm', 'trail'), ('lam', 'rad', 'steer-axis tilt'), ('g', 'm/s^2', 'gravity'), ('rR', 'm', 'rear wheel radius'), ('mR', 'kg', 'rear wheel mass'), ('IRxx', 'kg m^2', 'rear wheel Ixx'), ('IRyy', 'kg m^2', 'rear wheel Iyy'), ('xB', 'm', 'rear frame CoM x'), ('zB', 'm', 'rear frame CoM z'), ('mB', 'kg', 'rear frame mass'), ('IBxx', 'kg m^2', 'rear frame Ixx'), ('IByy', 'kg m^2', 'rear frame Iyy'), ('IBzz', 'kg m^2', 'rear frame Izz'), ('IBxz', 'kg m^2', 'rear frame Ixz'), ('xH', 'm', 'front frame CoM x'), ('zH', 'm', 'front frame CoM z'), ('mH', 'kg', 'front frame mass'), ('IHxx', 'kg m^2', 'front frame Ixx'), ('IHyy', 'kg m^2', 'front frame Iyy'), ('IHzz', 'kg m^2', 'front frame Izz'), ('IHxz', 'kg m^2', 'front frame Ixz'), ('rF', 'm', 'front wheel radius'), ('mF', 'kg', 'front wheel mass'), ('IFxx', 'kg m^2', 'front wheel Ixx'), ('IFyy', 'kg m^2', 'front wheel Iyy'), ('mU', 'kg', 'upper body mass'), ('xU', 'm', 'upper body CoM x'), ('zU', 'm', 'upper body CoM z'), ('IUxx', 'kg m^2', 'upper body Ixx'), ('IUyy', 'kg m^2', 'upper body Iyy'), ('IUzz', 'kg m^2', 'upper body Izz'), ('IUxz', 'kg m^2', 'upper body Ixz'), ('zhip', 'm', 'hip (lean) axis z'), ('klean', 'N m/rad', 'lean stiffness'), ('clean', 'N m s/rad', 'lean damping'), ('xr', 'm', 'frame twist axis, x of a point'), ('zr', 'm', 'frame twist axis, z of a point'), ('nrx', '1', 'frame twist axis, direction x'), ('nrz', '1', 'frame twist axis, direction z'), ('kr', 'N m/rad', 'frame twist stiffness'), ('mtr', 'kg', "frame tubes' modal particle, mass"), ('xtr', 'm', "frame tubes' modal particle, x"), ('ztr', 'm', "frame tubes' modal particle, z"), ('dtr', 'm/rad', "frame tubes' modal particle, sideways per radian"), ('cr', 'N m s/rad', 'frame twist damping'), ('xf', 'm', 'fork bending axis, x of a point'), ('zf', 'm', 'fork bending axis, z of a point'), ('nfx', '1', 'fork bending axis, direction x'), ('nfz', '1', 'fork bending axis, direction z'), ('kf', 'N m/rad', 'fork bending stiffness'), ('mtf', 'kg', "fork tubes' modal particle, mass"), ('xtf', 'm', "fork tubes' modal particle, x"), ('ztf', 'm', "fork tubes' modal particle, z"), ('dtf', 'm/rad', "fork tubes' modal particle, sideways per radian"), ('cf', 'N m s/rad', 'fork bending damping'), ('cs', 'N m s/rad', 'steering bearing damping'))
 """(name, SI unit, meaning) of every argument of coefficients, in order."""
 STATES = (('roll-angle', 'rad'), ('steer-angle', 'rad'), ('lean-angle', 'rad'), ('frame-twist', 'rad'), ('fork-bending', 'rad'), ('roll-rate', 'rad/s'), ('steer-rate', 'rad/s'), ('lean-rate', 'rad/s'), ('frame-twist-rate', 'rad/s'), ('fork-bending-rate', 'rad/s'), ('heading', 'rad'), ('lateral', 'm'))
 """(name, unit) of every state; the first N_DYNAMIC are dynamic."""
@@ -31,7 +31,7 @@ SECOND_ORDER = True
 def _make(cos, sin):
     """The coefficient function computing with these functions (cos, sin)."""
 
-    def coefficients(shape, w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, mU, xU, zU, IUxx, IUyy, IUzz, IUxz, zhip, klean, clean, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf):
+    def coefficients(shape, w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, mU, xU, zU, IUxx, IUyy, IUzz, IUxz, zhip, klean, clean, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, cr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf, cf, cs):
         x0 = -zU + zhip
         x1 = rR + zhip
         x2 = mU*x1
@@ -342,6 +342,7 @@ def _make(cos, sin):
         A[..., 0, 6, 1] = -x161*(-x157*(-rF*x95 - x14*x95 - x154*x190*x51 + x31*x32*x33 + x31*x33*x37 - x95*zf) - x190*x52) + x162*x31 + x163*x31 + x164*x31 - x191*x52
         A[..., 0, 6, 3] = nrx*x162 + nrx*x163 + nrx*x164 - x161*(rF*x193 - x157*(w*x154*(rF*x193 + x194 - x195 - x197) - x198) - x197 - x199) - x202*x52
         A[..., 0, 6, 4] = -x161*(-x157*(-x169*x204 + x205) - x204) + x185*(-x178*x32 + x183*x85) + x206
+        A[..., 0, 6, 6] = -cs
         A[..., 0, 7, 0] = x152
         A[..., 0, 7, 2] = -klean + x152
         A[..., 0, 7, 7] = -clean
@@ -349,10 +350,12 @@ def _make(cos, sin):
         A[..., 0, 8, 1] = x153*(x123*x193 + x209) - x153*(-x124*x193 + x209) - x161*(-x157*(w*x154*x210 - x198) + x210) + x185*(x132*x31 - x193*x32) + x185*(-x193*x37 + x31*x70) - x191*x69 + x201*(-x193*x39 + x31*x73)
         A[..., 0, 8, 3] = -kr*x138 - kr*x139 + nrx*x170 + nrx*x171 + nrx*x173 + nrx*x207 + nrx*x208 - x161*(-x157*(nrx*x59 + nrx*x61 + nrx*x66 - rF*x138 + x14*x211 - x154*x196*x68 + x211*zf - x211*zr) - x196*x69) - x202*x69
         A[..., 0, 8, 4] = -x161*(-x157*(-x169*x213 + x214) - x213) + x185*(x132*x183 - x212*x32) + x215
+        A[..., 0, 8, 8] = -cr*x138 - cr*x139
         A[..., 0, 9, 0] = x160*x44*(rF*x217 + x189 - x218) + x175 + x216
         A[..., 0, 9, 1] = -x161*(-x157*(-x169*x219 - x183*x45 + x205 + x217*x45) - x219) - x191*x82 + x206 + x216*x31
         A[..., 0, 9, 3] = nrx*x216 - x161*(-x157*(-x169*x222 - x183*x62 + x214 + x217*x62) - x222) - x202*x82 + x215
         A[..., 0, 9, 4] = g*mF*x145*x183 - kf*x149 - kf*x150 - x161*(-x157*(x14*(-x31*(x225 - x226*x31) + x33*(x224 + x226*x33)) - x169*x227 + 2*x183*x188 + x217*x218 + x32*(-x31*(x223*x33 - x224) + x33*(x223*x31 + x225))) - x227)
+        A[..., 0, 9, 9] = -cf*x149 - cf*x150
         A[..., 0, 10, 6] = -x52
         A[..., 0, 10, 8] = -x69
         A[..., 0, 10, 9] = -x82
@@ -404,10 +407,10 @@ _arrays = _make(np.cos, np.sin)
 _floats = _make(math.cos, math.sin)
 
 
-def coefficients(w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, mU, xU, zU, IUxx, IUyy, IUzz, IUxz, zhip, klean, clean, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf):
+def coefficients(w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, mU, xU, zU, IUxx, IUyy, IUzz, IUxz, zhip, klean, clean, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, cr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf, cf, cs):
     """``(E, A, B)``: E (..., 12, 12), A (..., 3, 12, 12), B (..., 1, 12, 3), the leading
     dimensions those of the parameters (floats or arrays, SI, see PARAMETERS) broadcast together."""
-    args = (w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, mU, xU, zU, IUxx, IUyy, IUzz, IUxz, zhip, klean, clean, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf,)
+    args = (w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, mU, xU, zU, IUxx, IUyy, IUzz, IUxz, zhip, klean, clean, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, cr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf, cf, cs,)
     if all(type(a) is float for a in args):
         return _floats((), *args)
     return _arrays(np.broadcast_shapes(*(np.shape(a) for a in args)), *args)

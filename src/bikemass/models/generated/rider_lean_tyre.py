@@ -14,7 +14,7 @@ import numpy as np
 
 NAME = 'rider-lean+tyre'
 MEMBERS = ('rider-lean', 'tyre')
-PARAMETERS = (('w', 'm', 'wheelbase'), ('c', 'm', 'trail'), ('lam', 'rad', 'steer-axis tilt'), ('g', 'm/s^2', 'gravity'), ('rR', 'm', 'rear wheel radius'), ('mR', 'kg', 'rear wheel mass'), ('IRxx', 'kg m^2', 'rear wheel Ixx'), ('IRyy', 'kg m^2', 'rear wheel Iyy'), ('xB', 'm', 'rear frame CoM x'), ('zB', 'm', 'rear frame CoM z'), ('mB', 'kg', 'rear frame mass'), ('IBxx', 'kg m^2', 'rear frame Ixx'), ('IByy', 'kg m^2', 'rear frame Iyy'), ('IBzz', 'kg m^2', 'rear frame Izz'), ('IBxz', 'kg m^2', 'rear frame Ixz'), ('xH', 'm', 'front frame CoM x'), ('zH', 'm', 'front frame CoM z'), ('mH', 'kg', 'front frame mass'), ('IHxx', 'kg m^2', 'front frame Ixx'), ('IHyy', 'kg m^2', 'front frame Iyy'), ('IHzz', 'kg m^2', 'front frame Izz'), ('IHxz', 'kg m^2', 'front frame Ixz'), ('rF', 'm', 'front wheel radius'), ('mF', 'kg', 'front wheel mass'), ('IFxx', 'kg m^2', 'front wheel Ixx'), ('IFyy', 'kg m^2', 'front wheel Iyy'), ('mU', 'kg', 'upper body mass'), ('xU', 'm', 'upper body CoM x'), ('zU', 'm', 'upper body CoM z'), ('IUxx', 'kg m^2', 'upper body Ixx'), ('IUyy', 'kg m^2', 'upper body Iyy'), ('IUzz', 'kg m^2', 'upper body Izz'), ('IUxz', 'kg m^2', 'upper body Ixz'), ('zhip', 'm', 'hip (lean) axis z'), ('klean', 'N m/rad', 'lean stiffness'), ('clean', 'N m s/rad', 'lean damping'), ('CaR', '1/rad', 'rear cornering coefficient'), ('CgR', '1/rad', 'rear camber coefficient'), ('sigmaR', 'm', 'rear relaxation length'), ('CaF', '1/rad', 'front cornering coefficient'), ('CgF', '1/rad', 'front camber coefficient'), ('sigmaF', 'm', 'front relaxation length'))
+PARAMETERS = (('w', 'm', 'wheelbase'), ('c', 'm', 'trail'), ('lam', 'rad', 'steer-axis tilt'), ('g', 'm/s^2', 'gravity'), ('rR', 'm', 'rear wheel radius'), ('mR', 'kg', 'rear wheel mass'), ('IRxx', 'kg m^2', 'rear wheel Ixx'), ('IRyy', 'kg m^2', 'rear wheel Iyy'), ('xB', 'm', 'rear frame CoM x'), ('zB', 'm', 'rear frame CoM z'), ('mB', 'kg', 'rear frame mass'), ('IBxx', 'kg m^2', 'rear frame Ixx'), ('IByy', 'kg m^2', 'rear frame Iyy'), ('IBzz', 'kg m^2', 'rear frame Izz'), ('IBxz', 'kg m^2', 'rear frame Ixz'), ('xH', 'm', 'front frame CoM x'), ('zH', 'm', 'front frame CoM z'), ('mH', 'kg', 'front frame mass'), ('IHxx', 'kg m^2', 'front frame Ixx'), ('IHyy', 'kg m^2', 'front frame Iyy'), ('IHzz', 'kg m^2', 'front frame Izz'), ('IHxz', 'kg m^2', 'front frame Ixz'), ('rF', 'm', 'front wheel radius'), ('mF', 'kg', 'front wheel mass'), ('IFxx', 'kg m^2', 'front wheel Ixx'), ('IFyy', 'kg m^2', 'front wheel Iyy'), ('mU', 'kg', 'upper body mass'), ('xU', 'm', 'upper body CoM x'), ('zU', 'm', 'upper body CoM z'), ('IUxx', 'kg m^2', 'upper body Ixx'), ('IUyy', 'kg m^2', 'upper body Iyy'), ('IUzz', 'kg m^2', 'upper body Izz'), ('IUxz', 'kg m^2', 'upper body Ixz'), ('zhip', 'm', 'hip (lean) axis z'), ('klean', 'N m/rad', 'lean stiffness'), ('clean', 'N m s/rad', 'lean damping'), ('CaR', '1/rad', 'rear cornering coefficient'), ('CgR', '1/rad', 'rear camber coefficient'), ('sigmaR', 'm', 'rear relaxation length'), ('tpR', 'm', 'rear pneumatic trail'), ('CmgR', 'm/rad', 'rear twisting torque coefficient'), ('CaF', '1/rad', 'front cornering coefficient'), ('CgF', '1/rad', 'front camber coefficient'), ('sigmaF', 'm', 'front relaxation length'), ('tpF', 'm', 'front pneumatic trail'), ('CmgF', 'm/rad', 'front twisting torque coefficient'))
 """(name, SI unit, meaning) of every argument of coefficients, in order."""
 STATES = (('roll-angle', 'rad'), ('steer-angle', 'rad'), ('lean-angle', 'rad'), ('roll-rate', 'rad/s'), ('steer-rate', 'rad/s'), ('lean-rate', 'rad/s'), ('lateral-velocity', 'm/s'), ('yaw-rate', 'rad/s'), ('rear-lateral-force', 'N'), ('front-lateral-force', 'N'), ('heading', 'rad'), ('lateral', 'm'))
 """(name, unit) of every state; the first N_DYNAMIC are dynamic."""
@@ -31,7 +31,7 @@ SECOND_ORDER = False
 def _make(cos, sin):
     """The coefficient function computing with these functions (cos, sin)."""
 
-    def coefficients(shape, w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, mU, xU, zU, IUxx, IUyy, IUzz, IUxz, zhip, klean, clean, CaR, CgR, sigmaR, CaF, CgF, sigmaF):
+    def coefficients(shape, w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, mU, xU, zU, IUxx, IUyy, IUzz, IUxz, zhip, klean, clean, CaR, CgR, sigmaR, tpR, CmgR, CaF, CgF, sigmaF, tpF, CmgF):
         x0 = rR + zhip
         x1 = -zU + zhip
         x2 = mU*x1
@@ -90,14 +90,16 @@ def _make(cos, sin):
         x55 = x50 + x51 - x54
         x56 = mF*w + mH*xH + x46
         x57 = x52*x56
-        x58 = g*(x39 - x57)
-        x59 = CaF*g
-        x60 = x57*x59
-        x61 = IFyy/rF
-        x62 = x15*x61
-        x63 = IRyy/rR + x61
-        x64 = x14*x61
-        x65 = g*x57
+        x58 = g*x57
+        x59 = CmgF*x58
+        x60 = x15*x59
+        x61 = g*(x39 - x57)
+        x62 = CaF*g
+        x63 = x57*x62
+        x64 = IFyy/rF
+        x65 = x15*x64
+        x66 = IRyy/rR + x64
+        x67 = x14*x64
         E = np.zeros(shape + (12, 12))
         A = np.zeros(shape + (2, 12, 12))
         B = np.zeros(shape + (1, 12, 3))
@@ -137,34 +139,37 @@ def _make(cos, sin):
         A[..., 0, 3, 0] = g*x10 + g*x18 - g*x22 + g*x26 + g*x27 + g*x8 - g*x9 + x49
         A[..., 0, 3, 1] = x55
         A[..., 0, 3, 2] = x49
-        A[..., 0, 4, 0] = x55
-        A[..., 0, 4, 1] = x14*x50 + x14*x51 - x14*x54
-        A[..., 0, 4, 9] = -x16
+        A[..., 0, 4, 0] = x55 + x60
+        A[..., 0, 4, 1] = x14*x50 + x14*x51 - x14*x54 + x14*x60
+        A[..., 0, 4, 9] = -tpF*x15 - x16
         A[..., 0, 5, 0] = x49
         A[..., 0, 5, 2] = -klean + x49
         A[..., 0, 5, 5] = -clean
         A[..., 0, 6, 8] = 1
         A[..., 0, 6, 9] = 1
-        A[..., 0, 7, 9] = w
-        A[..., 0, 8, 6] = -CaR*x58
-        A[..., 0, 9, 4] = x16*x60
-        A[..., 0, 9, 6] = -x60
-        A[..., 0, 9, 7] = -x56*x59
+        A[..., 0, 7, 0] = CmgR*x61 + x59
+        A[..., 0, 7, 1] = x14*x59
+        A[..., 0, 7, 8] = -tpR
+        A[..., 0, 7, 9] = -tpF + w
+        A[..., 0, 8, 6] = -CaR*x61
+        A[..., 0, 9, 4] = x16*x63
+        A[..., 0, 9, 6] = -x63
+        A[..., 0, 9, 7] = -x56*x62
         A[..., 0, 10, 7] = 1
         A[..., 0, 11, 6] = 1
-        A[..., 1, 3, 4] = -x62
-        A[..., 1, 3, 7] = -x29 - x63
-        A[..., 1, 4, 3] = x62
-        A[..., 1, 4, 7] = -x36 - x64
+        A[..., 1, 3, 4] = -x65
+        A[..., 1, 3, 7] = -x29 - x66
+        A[..., 1, 4, 3] = x65
+        A[..., 1, 4, 7] = -x36 - x67
         A[..., 1, 5, 7] = -x2
         A[..., 1, 6, 7] = -x39
-        A[..., 1, 7, 3] = x63
-        A[..., 1, 7, 4] = x64
+        A[..., 1, 7, 3] = x66
+        A[..., 1, 7, 4] = x67
         A[..., 1, 7, 7] = -x47
-        A[..., 1, 8, 0] = CgR*x58
+        A[..., 1, 8, 0] = CgR*x61
         A[..., 1, 8, 8] = -1
-        A[..., 1, 9, 0] = CgF*x65
-        A[..., 1, 9, 1] = x65*(CaF*x15 + CgF*x14)
+        A[..., 1, 9, 0] = CgF*x58
+        A[..., 1, 9, 1] = x58*(CaF*x15 + CgF*x14)
         A[..., 1, 9, 9] = -1
         A[..., 1, 11, 10] = 1
         B[..., 0, 3, 0] = 1
@@ -178,10 +183,10 @@ _arrays = _make(np.cos, np.sin)
 _floats = _make(math.cos, math.sin)
 
 
-def coefficients(w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, mU, xU, zU, IUxx, IUyy, IUzz, IUxz, zhip, klean, clean, CaR, CgR, sigmaR, CaF, CgF, sigmaF):
+def coefficients(w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, mU, xU, zU, IUxx, IUyy, IUzz, IUxz, zhip, klean, clean, CaR, CgR, sigmaR, tpR, CmgR, CaF, CgF, sigmaF, tpF, CmgF):
     """``(E, A, B)``: E (..., 12, 12), A (..., 2, 12, 12), B (..., 1, 12, 3), the leading
     dimensions those of the parameters (floats or arrays, SI, see PARAMETERS) broadcast together."""
-    args = (w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, mU, xU, zU, IUxx, IUyy, IUzz, IUxz, zhip, klean, clean, CaR, CgR, sigmaR, CaF, CgF, sigmaF,)
+    args = (w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, mU, xU, zU, IUxx, IUyy, IUzz, IUxz, zhip, klean, clean, CaR, CgR, sigmaR, tpR, CmgR, CaF, CgF, sigmaF, tpF, CmgF,)
     if all(type(a) is float for a in args):
         return _floats((), *args)
     return _arrays(np.broadcast_shapes(*(np.shape(a) for a in args)), *args)

@@ -14,7 +14,7 @@ import numpy as np
 
 NAME = 'tyre'
 MEMBERS = ('tyre',)
-PARAMETERS = (('w', 'm', 'wheelbase'), ('c', 'm', 'trail'), ('lam', 'rad', 'steer-axis tilt'), ('g', 'm/s^2', 'gravity'), ('rR', 'm', 'rear wheel radius'), ('mR', 'kg', 'rear wheel mass'), ('IRxx', 'kg m^2', 'rear wheel Ixx'), ('IRyy', 'kg m^2', 'rear wheel Iyy'), ('xB', 'm', 'rear frame CoM x'), ('zB', 'm', 'rear frame CoM z'), ('mB', 'kg', 'rear frame mass'), ('IBxx', 'kg m^2', 'rear frame Ixx'), ('IByy', 'kg m^2', 'rear frame Iyy'), ('IBzz', 'kg m^2', 'rear frame Izz'), ('IBxz', 'kg m^2', 'rear frame Ixz'), ('xH', 'm', 'front frame CoM x'), ('zH', 'm', 'front frame CoM z'), ('mH', 'kg', 'front frame mass'), ('IHxx', 'kg m^2', 'front frame Ixx'), ('IHyy', 'kg m^2', 'front frame Iyy'), ('IHzz', 'kg m^2', 'front frame Izz'), ('IHxz', 'kg m^2', 'front frame Ixz'), ('rF', 'm', 'front wheel radius'), ('mF', 'kg', 'front wheel mass'), ('IFxx', 'kg m^2', 'front wheel Ixx'), ('IFyy', 'kg m^2', 'front wheel Iyy'), ('CaR', '1/rad', 'rear cornering coefficient'), ('CgR', '1/rad', 'rear camber coefficient'), ('sigmaR', 'm', 'rear relaxation length'), ('CaF', '1/rad', 'front cornering coefficient'), ('CgF', '1/rad', 'front camber coefficient'), ('sigmaF', 'm', 'front relaxation length'))
+PARAMETERS = (('w', 'm', 'wheelbase'), ('c', 'm', 'trail'), ('lam', 'rad', 'steer-axis tilt'), ('g', 'm/s^2', 'gravity'), ('rR', 'm', 'rear wheel radius'), ('mR', 'kg', 'rear wheel mass'), ('IRxx', 'kg m^2', 'rear wheel Ixx'), ('IRyy', 'kg m^2', 'rear wheel Iyy'), ('xB', 'm', 'rear frame CoM x'), ('zB', 'm', 'rear frame CoM z'), ('mB', 'kg', 'rear frame mass'), ('IBxx', 'kg m^2', 'rear frame Ixx'), ('IByy', 'kg m^2', 'rear frame Iyy'), ('IBzz', 'kg m^2', 'rear frame Izz'), ('IBxz', 'kg m^2', 'rear frame Ixz'), ('xH', 'm', 'front frame CoM x'), ('zH', 'm', 'front frame CoM z'), ('mH', 'kg', 'front frame mass'), ('IHxx', 'kg m^2', 'front frame Ixx'), ('IHyy', 'kg m^2', 'front frame Iyy'), ('IHzz', 'kg m^2', 'front frame Izz'), ('IHxz', 'kg m^2', 'front frame Ixz'), ('rF', 'm', 'front wheel radius'), ('mF', 'kg', 'front wheel mass'), ('IFxx', 'kg m^2', 'front wheel Ixx'), ('IFyy', 'kg m^2', 'front wheel Iyy'), ('CaR', '1/rad', 'rear cornering coefficient'), ('CgR', '1/rad', 'rear camber coefficient'), ('sigmaR', 'm', 'rear relaxation length'), ('tpR', 'm', 'rear pneumatic trail'), ('CmgR', 'm/rad', 'rear twisting torque coefficient'), ('CaF', '1/rad', 'front cornering coefficient'), ('CgF', '1/rad', 'front camber coefficient'), ('sigmaF', 'm', 'front relaxation length'), ('tpF', 'm', 'front pneumatic trail'), ('CmgF', 'm/rad', 'front twisting torque coefficient'))
 """(name, SI unit, meaning) of every argument of coefficients, in order."""
 STATES = (('roll-angle', 'rad'), ('steer-angle', 'rad'), ('roll-rate', 'rad/s'), ('steer-rate', 'rad/s'), ('lateral-velocity', 'm/s'), ('yaw-rate', 'rad/s'), ('rear-lateral-force', 'N'), ('front-lateral-force', 'N'), ('heading', 'rad'), ('lateral', 'm'))
 """(name, unit) of every state; the first N_DYNAMIC are dynamic."""
@@ -31,7 +31,7 @@ SECOND_ORDER = False
 def _make(cos, sin):
     """The coefficient function computing with these functions (cos, sin)."""
 
-    def coefficients(shape, w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, CaR, CgR, sigmaR, CaF, CgF, sigmaF):
+    def coefficients(shape, w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, CaR, CgR, sigmaR, tpR, CmgR, CaF, CgF, sigmaF, tpF, CmgF):
         x0 = rR**2
         x1 = -rR - zB
         x2 = mB*rR
@@ -73,14 +73,16 @@ def _make(cos, sin):
         x38 = x33 + x34 - x37
         x39 = mF*w + mH*xH + x26
         x40 = x35*x39
-        x41 = g*(x25 - x40)
-        x42 = CaF*g
-        x43 = x40*x42
-        x44 = IFyy/rF
-        x45 = x44*x5
-        x46 = IRyy/rR + x44
-        x47 = x4*x44
-        x48 = g*x40
+        x41 = g*x40
+        x42 = CmgF*x41
+        x43 = x42*x5
+        x44 = g*(x25 - x40)
+        x45 = CaF*g
+        x46 = x40*x45
+        x47 = IFyy/rF
+        x48 = x47*x5
+        x49 = IRyy/rR + x47
+        x50 = x4*x47
         E = np.zeros(shape + (10, 10))
         A = np.zeros(shape + (2, 10, 10))
         B = np.zeros(shape + (1, 10, 2))
@@ -110,30 +112,33 @@ def _make(cos, sin):
         A[..., 0, 1, 3] = 1
         A[..., 0, 2, 0] = -g*x12 + g*x15 + g*x16 + g*x2 + g*x8
         A[..., 0, 2, 1] = x38
-        A[..., 0, 3, 0] = x38
-        A[..., 0, 3, 1] = x33*x4 + x34*x4 - x37*x4
-        A[..., 0, 3, 7] = -x6
+        A[..., 0, 3, 0] = x38 + x43
+        A[..., 0, 3, 1] = x33*x4 + x34*x4 - x37*x4 + x4*x43
+        A[..., 0, 3, 7] = -tpF*x5 - x6
         A[..., 0, 4, 6] = 1
         A[..., 0, 4, 7] = 1
-        A[..., 0, 5, 7] = w
-        A[..., 0, 6, 4] = -CaR*x41
-        A[..., 0, 7, 3] = x43*x6
-        A[..., 0, 7, 4] = -x43
-        A[..., 0, 7, 5] = -x39*x42
+        A[..., 0, 5, 0] = CmgR*x44 + x42
+        A[..., 0, 5, 1] = x4*x42
+        A[..., 0, 5, 6] = -tpR
+        A[..., 0, 5, 7] = -tpF + w
+        A[..., 0, 6, 4] = -CaR*x44
+        A[..., 0, 7, 3] = x46*x6
+        A[..., 0, 7, 4] = -x46
+        A[..., 0, 7, 5] = -x39*x45
         A[..., 0, 8, 5] = 1
         A[..., 0, 9, 4] = 1
-        A[..., 1, 2, 3] = -x45
-        A[..., 1, 2, 5] = -x17 - x46
-        A[..., 1, 3, 2] = x45
-        A[..., 1, 3, 5] = -x23 - x47
+        A[..., 1, 2, 3] = -x48
+        A[..., 1, 2, 5] = -x17 - x49
+        A[..., 1, 3, 2] = x48
+        A[..., 1, 3, 5] = -x23 - x50
         A[..., 1, 4, 5] = -x25
-        A[..., 1, 5, 2] = x46
-        A[..., 1, 5, 3] = x47
+        A[..., 1, 5, 2] = x49
+        A[..., 1, 5, 3] = x50
         A[..., 1, 5, 5] = -x31
-        A[..., 1, 6, 0] = CgR*x41
+        A[..., 1, 6, 0] = CgR*x44
         A[..., 1, 6, 6] = -1
-        A[..., 1, 7, 0] = CgF*x48
-        A[..., 1, 7, 1] = x48*(CaF*x5 + CgF*x4)
+        A[..., 1, 7, 0] = CgF*x41
+        A[..., 1, 7, 1] = x41*(CaF*x5 + CgF*x4)
         A[..., 1, 7, 7] = -1
         A[..., 1, 9, 8] = 1
         B[..., 0, 2, 0] = 1
@@ -146,10 +151,10 @@ _arrays = _make(np.cos, np.sin)
 _floats = _make(math.cos, math.sin)
 
 
-def coefficients(w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, CaR, CgR, sigmaR, CaF, CgF, sigmaF):
+def coefficients(w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, CaR, CgR, sigmaR, tpR, CmgR, CaF, CgF, sigmaF, tpF, CmgF):
     """``(E, A, B)``: E (..., 10, 10), A (..., 2, 10, 10), B (..., 1, 10, 2), the leading
     dimensions those of the parameters (floats or arrays, SI, see PARAMETERS) broadcast together."""
-    args = (w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, CaR, CgR, sigmaR, CaF, CgF, sigmaF,)
+    args = (w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, CaR, CgR, sigmaR, tpR, CmgR, CaF, CgF, sigmaF, tpF, CmgF,)
     if all(type(a) is float for a in args):
         return _floats((), *args)
     return _arrays(np.broadcast_shapes(*(np.shape(a) for a in args)), *args)
