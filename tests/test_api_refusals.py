@@ -183,3 +183,19 @@ def test_the_names_module_lists_the_parameter_fields():
 
     from bikemass.models import names
     assert names.NAMES == tuple(f.name for f in dataclasses.fields(bm.BenchmarkParameters)) == bm.PARAMETER_NAMES
+
+
+@pytest.mark.parametrize("call", [
+    lambda p: bm.simulate(p, 5.0, step=10 ** 400),
+    lambda p: bm.simulate(p, 5.0, duration=10 ** 400),
+    lambda p: bm.simulate(p, 5.0, initial={"roll-rate": 10 ** 400}),
+    lambda p: bm.simulate(p, 5.0, inputs={"steer-torque": ("step", 10 ** 400)}),
+    lambda p: bm.simulate(p, 5.0, nonlinear=True, step=10 ** 400),
+    lambda p: bm.simulate(p, 5.0, nonlinear=True, initial={"roll-rate": 10 ** 400}),
+    lambda p: bm.simulate(p, 10 ** 400, nonlinear=True),
+    lambda p: bm.steady_turn(p, 5.0, radius=10 ** 400),
+], ids=["step", "duration", "initial", "input", "nonlinear-step", "nonlinear-initial", "nonlinear-speed", "turn-radius"])
+def test_an_integer_beyond_the_float_range_is_refused_not_raised(call):
+    """An integer of 10^400 (no float holds it: math.isfinite raises OverflowError on it) is one InputError."""
+    with pytest.raises(bm.InputError):
+        call(bm.parameters("benchmark"))

@@ -18,7 +18,6 @@ Initial values and input sizes beyond the bounds of :data:`LIMITS` are refused.
 """
 
 import math
-import numbers
 import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -31,6 +30,7 @@ from ...core.choices import closest
 from ...core.display import Display
 from ...core.errors import BikemassWarning, InputError, short, wrong_type
 from ...core.frozen import FrozenMap, readonly, short_repr
+from ...core.real import finite_real
 from ...core.tables import Table
 from .discrete import hold_matrices
 from ..nonlinear.response import NonlinearResponse
@@ -59,7 +59,7 @@ DIVERGED = 1e3
 
 
 def _number(value, source, key, unit=None):
-    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value):
+    if not finite_real(value):
         raise InputError(source, key, f"a finite number, got {short(value)}")
     if unit is not None and not abs(value) <= LIMITS.get(unit, DEFAULT_LIMIT):
         raise InputError(source, key, f"at most {LIMITS.get(unit, DEFAULT_LIMIT):g} {unit} in magnitude (a linear "
@@ -103,7 +103,7 @@ def sample_times(duration, step):
     """``0, step, 2 step, ...`` up to ``duration`` (s); InputError unless both are positive and
     finite with at most :data:`MAX_SAMPLES` samples."""
     for key, value in (("duration", duration), ("step", step)):
-        if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value) or value <= 0:
+        if not finite_real(value) or value <= 0:
             raise InputError(key, short(value), "a positive, finite time in s")
     count = math.floor(duration / step * (1 + 1e-12)) + 1
     if count > MAX_SAMPLES or count < 2:

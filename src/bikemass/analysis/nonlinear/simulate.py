@@ -22,6 +22,7 @@ from collections.abc import Mapping
 import numpy as np
 
 from ...core.choices import closest
+from ...core.real import finite_real
 from ...core.errors import BikemassWarning, InputError, short, wrong_type
 from ...core.limits import MAX_SPEED
 from ...models.nonlinear import ConstraintError, NonlinearWhipple
@@ -50,14 +51,14 @@ _INDEX = {"roll-angle": 3, "steer-angle": 5, "roll-rate": 8, "steer-rate": 9, "h
 
 
 def _number(value, source, key):
-    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value):
+    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not finite_real(value):
         raise InputError(source, key, f"a finite number, got {short(value)}")
     return float(value)
 
 
 def _times(duration, step):
     for key, value in (("duration", duration), ("step", step)):
-        if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value) or value <= 0:
+        if isinstance(value, bool) or not isinstance(value, numbers.Real) or not finite_real(value) or value <= 0:
             raise InputError(key, short(value), "a positive, finite time in s")
     count = math.floor(duration / step * (1 + 1e-12)) + 1
     if count > MAX_SAMPLES or count < 2:
@@ -177,7 +178,7 @@ def simulate_nonlinear(parameters: BenchmarkParameters, speed: float, initial: "
     if not isinstance(parameters, BenchmarkParameters):
         raise wrong_type("system", parameters, "a benchmark parameter set (the nonlinear model is the Whipple "
                                                 "bicycle)")
-    if isinstance(speed, bool) or not isinstance(speed, numbers.Real) or not math.isfinite(speed) \
+    if isinstance(speed, bool) or not isinstance(speed, numbers.Real) or not finite_real(speed) \
             or not 0 <= speed <= MAX_SPEED:
         raise InputError("speed", short(speed), f"a forward speed in m/s, a finite number in 0..{MAX_SPEED:g}")
     start = _initial(initial)

@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core.display import Display
+from ...core.real import finite_real
 from ...core.errors import InputError, short, wrong_type
 from ...core.frozen import readonly, short_repr
 from ...core.limits import MAX_SPEED
@@ -141,7 +142,7 @@ class HandsFreeTurns(Display):
 
 
 def _speed(value):
-    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value) \
+    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not finite_real(value) \
             or not 0 < value <= MAX_SPEED:
         raise InputError("speed", short(value), f"a forward speed in m/s, a finite number in (0, {MAX_SPEED:g}]")
     return float(value)
@@ -239,7 +240,7 @@ def steady_turn(parameters: BenchmarkParameters, speed: float, radius: "float | 
         except ArithmeticError as exc:
             raise InputError("steer", short(steer), f"a steer angle with a steady turn at {v:g} m/s ({exc})") from None
     else:
-        if isinstance(radius, bool) or not isinstance(radius, numbers.Real) or not math.isfinite(radius) \
+        if isinstance(radius, bool) or not isinstance(radius, numbers.Real) or not finite_real(radius) \
                 or abs(radius) <= p.w:
             raise InputError("radius", short(radius), f"a radius in m, larger in size than the wheelbase {p.w:g} m")
         R = float(radius)
