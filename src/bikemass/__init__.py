@@ -54,6 +54,7 @@ _API = {
     "ParameterFileWarning": "bicycle.parameter_text",
     "load_parameter_set": "bicycle.parameter_sets", "ParameterSetFile": "bicycle.parameter_sets",
     "RiderLeanParameters": "models.lean",
+    "Control": "models.control", "load_control": "models.control", "ScheduledModel": "models.control",
 }
 """Public name -> the module (under ``bikemass``) that defines it."""
 

@@ -136,6 +136,16 @@ def add_model(p):
                         "bicycle tyres (Dressel 2013; docs/models.md)")
 
 
+def add_control(p):
+    """``--control FILE``: a linear feedback scheduled in speed, added to the model's inputs."""
+    p.add_argument("--control", metavar="FILE",
+                   help="close the loop with a control file: for each input, the signals fed back into it "
+                        "(states or outputs by name) and each gain's schedule in speed, e.g. 'steer-torque: "
+                        "{roll-rate: {speeds: [0, 1.5, 4.7], gains: [0, 12.5, 0]}}' (gains in SI, linear "
+                        "between the speeds, constant outside; u = K(v) y is added to the inputs, so a positive "
+                        "roll-rate -> steer-torque gain steers into the fall); docs/stability.md, Closed loops")
+
+
 def scenario(args, rider=None, stiffness=None, bike=None, origin=None):
     """The :class:`~bikemass.scenario.scenario.Scenario` of a command's BIKE, ``--rider``,
     ``--stiffness``, ``--combine``, ``--method``, ``--allow-off-contact``, ``--model`` and ``--tyres``

@@ -23,6 +23,7 @@ def register(sub):
                     "position (rear contact; front-lateral: front contact), at one speed.")
     _input_output(tf)
     _data(tf, "the zeros, poles and gain")
+    dialect.add_control(tf)
     tf.set_defaults(run=every_size(run_tf))
 
     bode = _command(
@@ -35,6 +36,7 @@ def register(sub):
                       help=f"N angular frequencies from START to STOP rad/s, logarithmic (default {DEFAULT_FREQUENCIES})")
     _data(bode, "the magnitude and phase at every frequency")
     dialect.add_plot(bode, "the Bode plot")
+    dialect.add_control(bode)
     bode.set_defaults(run=every_size(run_bode))
 
     sim = _command(
@@ -54,6 +56,7 @@ def register(sub):
                      metavar="DT", help="time step of the samples, s (default 0.01)")
     dialect.add_output(sim, what="the samples")
     dialect.add_plot(sim, "every state against time")
+    dialect.add_control(sim)
     sim.set_defaults(run=every_size(run_simulate))
 
     shapes = _command(
@@ -63,6 +66,7 @@ def register(sub):
                     "roll, steer, heading and lateral position; --plot draws them as phasors.")
     dialect.add_output(shapes, what="the mode shapes")
     dialect.add_plot(shapes, "the mode shapes as phasors")
+    dialect.add_control(shapes)
     shapes.set_defaults(run=every_size(run_mode_shapes))
 
     hand = _command(
@@ -141,15 +145,22 @@ def _data(p, what):
 def bicycle_model(args):
     """The :class:`~bikemass.models.linear.LinearModel` of BIKE with ``--rider``, ``--combine``,
     ``--allow-off-contact``, ``--stiffness``, ``--model`` and ``--tyres``: the one place these
-    commands build their model (the scenario builder, :func:`bikemass.cli.dialect.scenario`)."""
-    return dialect.scenario(args).build().model
+    commands build their model (the scenario builder, :func:`bikemass.cli.dialect.scenario`); with
+    ``--control`` the closed loop at ``--speed`` (:func:`bikemass.models.control.close_loop`)."""
+    model = dialect.scenario(args).build().model
+    if getattr(args, "control", None):
+        # lazy: the library loads numpy; bikemass --help must not
+        from ..models.control import close_loop
+        return close_loop(model, args.control).at(args.speed)     # the closed loop at the one speed
+    return model
 
 
 def _title(args):
     rider = "no rider" if args.rider == "none" else args.rider
     frame = "rigid frame" if args.stiffness == "infinite" else f"{args.stiffness} frame"
     model = "" if args.model == "whipple" else f", model {args.model}"
-    return f"{args.bike}, {rider}, {frame}{model}"
+    control = f", control {args.control}" if getattr(args, "control", None) else ""
+    return f"{args.bike}, {rider}, {frame}{model}{control}"
 
 
 def _output_name(model, name):

@@ -77,19 +77,31 @@ class Crossing(Result):
 
 
 class Eigenvalues:
-    """``model``'s dynamic eigenvalues (1/s) at single speeds, memoised: ``at(v)``."""
+    """``model``'s dynamic eigenvalues (1/s) at single speeds, memoised: ``at(v)``.
+
+    ``pieces`` holds ``(lo, hi, coefficients)`` of each polynomial the model is made of
+    (:attr:`~bikemass.models.linear.LinearModel.speed_pieces`: one for a model, one per speed
+    interval for a closed loop with scheduled gains); ``coefficients`` are the first piece's."""
 
     def __init__(self, model):
-        self.coefficients = np.asarray(model.dynamic_coefficients, dtype=float)
+        self.pieces = tuple((lo, hi, np.asarray(m.dynamic_coefficients, dtype=float))
+                            for lo, hi, m in model.speed_pieces)
+        self._starts = np.array([lo for lo, _, _ in self.pieces[1:]])
+        self.coefficients = self.pieces[0][2]
         self._cache = {}
 
     def __call__(self, v):
         v = float(v)
         out = self._cache.get(v)
         if out is None:
-            powers = v ** np.arange(len(self.coefficients))
-            out = self._cache[v] = np.linalg.eigvals(np.tensordot(powers, self.coefficients, axes=1))
+            P = self.pieces[int(np.searchsorted(self._starts, v, side="right"))][2]
+            powers = v ** np.arange(len(P))
+            out = self._cache[v] = np.linalg.eigvals(np.tensordot(powers, P, axes=1))
         return out
+
+    def spans(self, lo, hi):
+        """``[(a, b, coefficients)]``: each piece's polynomial and its part ``[a, b]`` of ``[lo, hi]``."""
+        return [(max(lo, a), min(hi, b), P) for a, b, P in self.pieces if max(lo, a) <= min(hi, b)]
 
 
 def balanced(coefficients):
@@ -156,19 +168,20 @@ def axis_crossings(model, lo, hi, at=None):
     ``at`` may pass a shared :class:`Eigenvalues` of the model.
     """
     at = at or Eigenvalues(model)
-    P = balanced(at.coefficients)
     # at standstill every oscillation of an undamped model (the flexible member) is on the axis: the
     # roots found there, a round-off away from lo, are at lo and no crossing of (lo, hi]
     start = lo + MERGE_TOL * (1 + abs(lo))
     found = []
-    for kind, coefficients, check in ((REAL, P, _real_crossing),
-                                      (OSCILLATORY, additive_coefficients(P), _oscillatory_crossing)):
-        for v in real_roots(coefficients, lo, hi):
-            if v <= start:
-                continue
-            hit = check(at, v, lo, hi)
-            if hit is not None and start < hit[0] <= hi:
-                found.append((float(hit[0]), kind, hit[1]))
+    for a, b, piece in at.spans(lo, hi):      # each polynomial on its own speeds (one for a model)
+        P = balanced(piece)
+        for kind, coefficients, check in ((REAL, P, _real_crossing),
+                                          (OSCILLATORY, additive_coefficients(P), _oscillatory_crossing)):
+            for v in real_roots(coefficients, a, b):
+                if v <= start:
+                    continue
+                hit = check(at, v, lo, hi)
+                if hit is not None and start < hit[0] <= hi:
+                    found.append((float(hit[0]), kind, hit[1]))
     found.sort()
     out = []
     for c in found:
@@ -182,11 +195,14 @@ def circle_speeds(model, radius, lo, hi, at=None):
     """Speeds in ``(lo, hi)`` where an eigenvalue may have modulus ``radius`` (1/s): candidates for the
     ends of marginally stable ranges (unverified: an extra speed only splits an interval)."""
     at = at or Eigenvalues(model)
-    P = balanced(at.coefficients)
-    n = P.shape[-1]
-    shifted = P.copy()
-    shifted[0] = shifted[0] - radius * np.eye(n)
-    C2 = multiplicative_coefficients(P)
-    C2[0] = C2[0] - radius ** 2 * np.eye(len(C2[0]))
-    v = np.concatenate([real_roots(shifted, lo, hi), real_roots(C2, lo, hi)])
+    found = []
+    for a, b, piece in at.spans(lo, hi):
+        P = balanced(piece)
+        n = P.shape[-1]
+        shifted = P.copy()
+        shifted[0] = shifted[0] - radius * np.eye(n)
+        C2 = multiplicative_coefficients(P)
+        C2[0] = C2[0] - radius ** 2 * np.eye(len(C2[0]))
+        found += [real_roots(shifted, a, b), real_roots(C2, a, b)]
+    v = np.concatenate(found) if found else np.empty(0)
     return np.sort(v[(v > lo) & (v < hi)])
