@@ -33,6 +33,7 @@ def register(sub):
     _bike_and_rider(params)
     dialect.add_combine(params)
     dialect.add_method(params)
+    dialect.add_stiffness(params)
     dialect.add_model(params)
     params.add_argument("--compare", metavar="BIKE2",
                         help="every parameter beside BIKE2's (e.g. jamis vs jamis-thesis, the published "
@@ -110,7 +111,16 @@ def run_params(args):
         title = f"{args.bike} with rider {args.rider} (combine {args.combine})"
         included = (args.rider not in (None, "none") or scenario.inputs.lean_set is not None
                     or scenario.inputs.bicycle().rider_included)
-        dialect.emit(args, lambda f: format_parameters(params, f, title, included))
+        if fmt in ("yaml", "json") and (args.model != "whipple" or args.stiffness != "infinite"):
+            # every parameter the model uses, members included: a file every command reads back as it
+            # lazy: the library loads numpy; bikemass --help must not
+            from ..models.parameter_export import member_document, member_units
+            built = scenario.build()
+            data = member_document(built.choice, params, built.lean, built.compliances, built.tyres,
+                                   built.stiffness, included, args.stiffness)
+            dialect.emit(args, lambda f: dialect.document(data, f, member_units()))
+        else:
+            dialect.emit(args, lambda f: format_parameters(params, f, title, included))
     return 0
 
 

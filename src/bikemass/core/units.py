@@ -36,7 +36,7 @@ DIMENSIONS = {
                         "psi": POUND * 9.80665 / INCH**2, "ksi": 1e3 * POUND * 9.80665 / INCH**2,
                         "Msi": 1e6 * POUND * 9.80665 / INCH**2}),
     "density": ("kg/m^3", {"kg/m^3": 1.0, "g/cm^3": 1e3, "g/cc": 1e3, "lb/in^3": POUND / INCH**3}),
-    "stiffness": ("N m/rad", {"N m/rad": 1.0, "N*m/rad": 1.0, "kN m/rad": 1e3}),
+    "stiffness": ("N m/rad", {"N m/rad": 1.0, "N*m/rad": 1.0, "kN m/rad": 1e3, "N m/deg": 180 / math.pi}),
     "acceleration": ("m/s^2", {"m/s^2": 1.0}),
     "inverse angle": ("1/rad", {"1/rad": 1.0, "1/deg": 180 / math.pi}),
     "speed": ("m/s", {"m/s": 1.0, "km/h": 1 / 3.6}),
@@ -75,7 +75,7 @@ def describe(dimension):
         return (f"{noun} with its unit ('<number> deg' or '<number> rad'; "
                 "a bare number could be either)")
     if dimension == "inverse angle":
-        return (f"a coefficient per angle with its unit ('<number> 1/rad' or '<number> 1/deg'; "
+        return ("a coefficient per angle with its unit ('<number> 1/rad' or '<number> 1/deg'; "
                 "a bare number could be either)")
     return f"{noun} (a number in {si}, or '<number> <unit>' with unit {others})"
 

@@ -11,6 +11,9 @@ import numpy as np
 
 from ..core.errors import InputError
 
+_DIMENSIONS = {"point": "length", "load_point": "length", "stiffness": "stiffness"}
+"""The fields read with a unit (others are plain numbers in the SI unit of :meth:`Compliance.units`)."""
+
 @dataclass(frozen=True)
 class Compliance:
     """One compliance as a rotation ``theta`` about a line in the plane of symmetry (benchmark frame,
@@ -70,3 +73,29 @@ class Compliance:
     def to_dict(self):
         """Plain values (SI; the units: :meth:`units`)."""
         return {f.name: (list(v) if isinstance(v := getattr(self, f.name), tuple) else v) for f in fields(self)}
+
+
+def compliance_from_node(node):
+    """A :class:`Compliance` of a config :class:`~bikemass.core.config.Node` holding its fields
+    (:meth:`Compliance.to_dict`'s form; ``stiffness`` may carry a unit: ``"1.2e4 N m/rad"``,
+    ``"210 N m/deg"``)."""
+    names = [f.name for f in fields(Compliance)]
+    node.check_keys(required=[n for n in names if n != "load_point"], optional=("load_point", "note"))
+
+    def number(child, name):
+        return child.number(_DIMENSIONS.get(name, "dimensionless"))
+
+    values = {}
+    for name in names:
+        child = node.get(name)
+        if name == "name":
+            values[name] = child.string()
+        elif child.missing:
+            values[name] = None
+        elif isinstance(child.value, list):
+            values[name] = tuple(number(e, name) for e in child.elements())
+            if len(values[name]) != 2:
+                child.fail("a pair (x, z)")
+        else:
+            values[name] = number(child, name)
+    return Compliance(**values)

@@ -18,7 +18,7 @@ from dataclasses import dataclass, fields, replace
 
 
 from ..core.errors import InputError
-from .compliance import Compliance
+from .compliance import Compliance, compliance_from_node
 
 COORDINATES = {"frame": "frame-twist", "fork": "fork-bending"}
 """Each compliance's coordinate (the state's name in the linear model)."""
@@ -75,5 +75,23 @@ class Compliances:
     def massless(self):
         """Both with tubes of no inertia (what rides on them keeps its own)."""
         return self.scaled(inertia=0.0)
+
+    def to_dict(self):
+        """``{"frame": ..., "fork": ...}``: each compliance's plain values (SI,
+        :meth:`~bikemass.models.compliance.Compliance.units`), ``"rigid"`` for one held rigid: the
+        ``flexible:`` block of a parameter file (:func:`compliances_from_node` reads it back)."""
+        return {w: (c.to_dict() if (c := getattr(self, w)) is not None else "rigid") for w in COORDINATES}
+
+
+def compliances_from_node(node):
+    """:class:`Compliances` of a parameter file's ``flexible:`` block (a config
+    :class:`~bikemass.core.config.Node`): ``frame:`` and ``fork:``, each a compliance's fields
+    (:class:`~bikemass.models.compliance.Compliance`, SI or with units) or ``rigid``."""
+    node.check_keys(optional=(*COORDINATES, "source", "note"))
+    out = {}
+    for which in COORDINATES:
+        child = node.get(which, "rigid")
+        out[which] = None if child.value in ("rigid", "infinite", None) else compliance_from_node(child)
+    return Compliances(**out)
 
 
