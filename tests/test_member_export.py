@@ -88,3 +88,46 @@ def test_a_measured_stiffness_edited_into_the_file_is_used(capsys, tmp_path):
     for speed, roots in enumerate(held):
         for root in roots:
             assert np.min(np.abs(ours[speed] - root)) <= 1e-5 * max(1.0, abs(root))
+
+
+# ---------------------------------------------------------------- measured stiffness in place of the beam model's
+def _compliance(stiffness, direction=(0.0, 1.0)):
+    from bikemass.core.config import Node
+    from bikemass.models.compliance import compliance_from_node
+    block = {"name": "fork", "point": [0.9, 0.0], "direction": list(direction), "stiffness": stiffness,
+             "modal_momentum": 0.0, "modal_moment": [0.0, 0.0], "modal_mass": 0.0}
+    return compliance_from_node(Node(block, "test.yaml", "flexible.fork"))
+
+
+def test_a_fork_lateral_stiffness_at_the_axle():
+    """A lateral stiffness K (N/mm) at a point a distance d from the bending axis is a torsional stiffness
+    K d^2 about it: the axis along z through x = 0.9 m, the axle at x = 1.0 m (d = 0.1 m, a closed
+    form), 120 N/mm -> 120e3 * 0.01 = 1200 N m/rad (1e-12 relative)."""
+    c = _compliance({"lateral": "120 N/mm", "at": [1.0, -0.35]})
+    assert c.stiffness == pytest.approx(1200.0, rel=1e-12)
+    tilted = _compliance({"lateral": "120 N/mm", "at": [0.9 + 0.8, -0.6]}, direction=(0.6, 0.8))
+    assert tilted.stiffness == pytest.approx(120e3 * 1.0, rel=1e-12)       # (0.8, -0.6) is normal to the axis, d = 1 m
+
+
+def test_a_steering_head_torsional_stiffness_as_the_test_reports_it():
+    """A torque per degree about the axis itself is that stiffness in N m/rad (x 180/pi); with the test's
+    load and gauge points and arms, k = K d_load d_gauge / (lever gauge_arm) (closed form: d_load 0.3 m,
+    d_gauge 0.1 m, lever 0.5 m, gauge arm 0.2 m: k = K * 0.3)."""
+    assert _compliance({"torsional": "100 N m/deg"}).stiffness == pytest.approx(100 * 180 / np.pi, rel=1e-14)
+    c = _compliance({"torsional": "100 N m/rad", "load": [1.2, -0.5], "gauge": [1.0, 0.1], "lever": 0.5,
+                     "gauge_arm": 0.2})
+    assert c.stiffness == pytest.approx(100 * 0.3 * 0.1 / (0.5 * 0.2), rel=1e-12)
+    same_arms = _compliance({"torsional": "100 N m/rad", "load": [1.2, -0.5], "gauge": [1.0, 0.1]})
+    assert same_arms.stiffness == pytest.approx(100.0, rel=1e-12)
+
+
+@pytest.mark.parametrize("stiffness, key", [
+    ({"lateral": "120 N/mm", "at": [0.9, -0.3]}, "flexible.fork.stiffness.at"),          # on the axis
+    ({"lateral": "120 N m/rad", "at": [1.0, 0.0]}, "flexible.fork.stiffness.lateral"),  # wrong unit
+    ({"torsional": "100 N m/deg", "load": [1.0, 0.0]}, "flexible.fork.stiffness"),
+])
+def test_bad_measurements_are_refused(stiffness, key):
+    from bikemass.core.errors import InputError
+    with pytest.raises(InputError) as info:
+        _compliance(stiffness)
+    assert info.value.key == key

@@ -157,7 +157,7 @@ def bicycle_model(args):
 
 def _title(args):
     rider = "no rider" if args.rider == "none" else args.rider
-    frame = "rigid frame" if args.stiffness == "infinite" else f"{args.stiffness} frame"
+    frame = dialect.stiffness_label(args.stiffness)
     model = "" if args.model == "whipple" else f", model {args.model}"
     control = f", control {args.control}" if getattr(args, "control", None) else ""
     return f"{args.bike}, {rider}, {frame}{model}{control}"

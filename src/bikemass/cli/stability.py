@@ -91,7 +91,7 @@ def _rider_name(rider):
 
 
 def _stiffness_name(stiffness):
-    return "rigid frame" if stiffness == "infinite" else f"{stiffness} frame"
+    return dialect.stiffness_label(stiffness)
 
 
 def _combine(combine):

@@ -37,6 +37,7 @@ DIMENSIONS = {
                         "Msi": 1e6 * POUND * 9.80665 / INCH**2}),
     "density": ("kg/m^3", {"kg/m^3": 1.0, "g/cm^3": 1e3, "g/cc": 1e3, "lb/in^3": POUND / INCH**3}),
     "stiffness": ("N m/rad", {"N m/rad": 1.0, "N*m/rad": 1.0, "kN m/rad": 1e3, "N m/deg": 180 / math.pi}),
+    "linear stiffness": ("N/m", {"N/m": 1.0, "N/mm": 1e3, "kN/m": 1e3}),
     "acceleration": ("m/s^2", {"m/s^2": 1.0}),
     "inverse angle": ("1/rad", {"1/rad": 1.0, "1/deg": 180 / math.pi}),
     "speed": ("m/s", {"m/s": 1.0, "km/h": 1 / 3.6}),
