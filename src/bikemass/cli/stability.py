@@ -253,6 +253,8 @@ def stability_text(result, title):
     if result.unstable_at_start:
         lines.append(f"unstable from the lowest speed ({v[0]:g} m/s):".ljust(52)
                      + ", ".join(_start_text(u) for u in result.unstable_at_start))
+    if not result.stable_speeds:
+        lines.append("no stable speeds: the modes that prevent them, " + result.prevented_by.text())
     lines.append("")
     rows = [[f"{s:.12f}", kind, d, modes, name] for s, kind, d, modes, name in _crossing_rows(result)]
     lines += ["crossings of Re = 0",
