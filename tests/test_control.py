@@ -202,3 +202,28 @@ def test_cli_bad_control_file_is_one_line_and_exit_2(tmp_path, capsys):
     assert main(["stability", "benchmark", "--control", str(bad)]) == 2
     err = capsys.readouterr().err.strip()
     assert "steer-torque.yaw" in err and "roll-rate" in err and len(err.splitlines()) == 1
+
+
+@pytest.mark.parametrize("control", [
+    {"steer-torque": {"roll-rate": {"speeds": [0, 1.5, 4.7], "gains": [0, 12.48, 0]}}},
+    {"steer-torque": {"steer-rate": -0.8, "roll-angle": 3.0}},
+    {"roll-torque": {"steer-angle": {"speeds": [0, 5], "gains": [1, 4]}}},
+])
+def test_contract_each_piece_keeps_its_mechanics(control):
+    """Where the feedback reads coordinates and rates, each piece keeps ``M, C(v), K(v)`` with the
+    feedback moved into ``C`` and ``K``: its first-order form is the piece's ``A(v)`` (1e-12), and the
+    mode shapes scale by the coordinates."""
+    closed = bm.linear_model(bm.parameters("benchmark"), control=control)
+    for v in (0.7, 3.1, 6.0):
+        piece = closed.at(v)
+        mech = piece.mechanics
+        M, C, K = mech.M, mech.damping(v), mech.stiffness(v)
+        A = np.block([[np.zeros((2, 2)), np.eye(2)], [-np.linalg.solve(M, K), -np.linalg.solve(M, C)]])
+        assert piece.dynamic_matrix(v) == pytest.approx(A, abs=1e-12 * np.abs(A).max())
+
+
+def test_a_feedback_of_a_tyre_force_has_no_mechanics():
+    model = bm.linear_model(bm.parameters("benchmark"), model="tyre",
+                            control={"steer-torque": {"front-lateral-force": 0.001}})
+    assert model.at(2.0).mechanics is None
+    assert bm.stability(model, speeds=bm.speeds(0, 5, 0.5)).speeds[-1] == 5.0

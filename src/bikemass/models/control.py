@@ -27,8 +27,9 @@ each interval the closed loop ``A(v) + B(v) (K0 + v K1) C`` is again a polynomia
 higher).  :class:`ScheduledModel` keeps one :class:`~bikemass.models.linear.LinearModel` per interval
 (:attr:`ScheduledModel.speed_pieces`); the engine solves each piece's polynomial problem on its own
 interval and joins them (the closed loop is continuous in ``v``, so crossings at a joint are found
-by one side).  One-speed analyses (transfer functions, responses) take the piece of their speed:
-:meth:`ScheduledModel.at`.
+by one side).  One-speed analyses (transfer functions, responses, mode shapes) take the piece of
+their speed: :meth:`ScheduledModel.at`, which keeps ``M, C(v), K(v), F`` (the feedback moved into
+``C`` and ``K``) where the feedback reads only the coordinates and their rates.
 """
 
 import math
@@ -228,7 +229,8 @@ def _feedback_matrix(model, feedback, speed):
 
 
 def _closed_piece(model, F0, F1, name):
-    """``model`` with ``A(v) + B(v) (F0 + v F1)`` (coefficients of ``v**k``), a polynomial again."""
+    """``model`` with ``A(v) + B(v) (F0 + v F1)`` (coefficients of ``v**k``), a polynomial again; its
+    ``M, C(v), K(v), F`` too where the feedback is on the coordinates and their rates alone."""
     A, B = np.asarray(model.A), np.asarray(model.B)
     linear = bool(np.any(F1))
     degree = max(len(A), len(B) + linear)
@@ -238,7 +240,27 @@ def _closed_piece(model, F0, F1, name):
         out[k] += Bk @ F0
         if linear:
             out[k + 1] += Bk @ F1
-    return replace(model, name=name, A=readonly(out), mechanics=None)
+    return replace(model, name=name, A=readonly(out), mechanics=_closed_mechanics(model, F0, F1))
+
+
+def _closed_mechanics(model, F0, F1):
+    """``M, C(v) - F Kd(v), K(v) - F Kq(v), F`` of the closed loop (``Kq``, ``Kd``: the feedback on the
+    coordinates and on their rates), or ``None`` where the model has no mechanics, its input matrix
+    depends on speed, or the feedback reads another state (a tyre's force: no ``M, C, K`` form)."""
+    mech = model.mechanics
+    if mech is None or len(model.B) != 1:
+        return None
+    n = len(mech.M)
+    if np.any(F0[:, 2 * n:]) or np.any(F1[:, 2 * n:]):
+        return None
+
+    def closed(terms, columns):
+        out = np.zeros((max(len(terms), 2), n, n), dtype=np.result_type(terms, float))
+        out[:len(terms)] = terms
+        out[0] -= mech.F @ F0[:, columns]
+        out[1] -= mech.F @ F1[:, columns]
+        return readonly(out if np.any(out[1:]) or len(terms) > 1 else out[:1])
+    return replace(mech, C=closed(mech.C, slice(n, 2 * n)), K=closed(mech.K, slice(0, n)))
 
 
 @dataclass(frozen=True, eq=False)
@@ -292,7 +314,8 @@ class ScheduledModel:
 
     @property
     def mechanics(self):
-        """``None``: a closed loop is analysed in state space (the feedback may mix coordinates and rates)."""
+        """``None``: the closed loop's ``M, C(v), K(v)`` differ from piece to piece (each piece has its
+        own where the feedback is on coordinates and rates: ``at(v).mechanics``)."""
         return None
 
     def _index(self, speed):
