@@ -176,18 +176,23 @@ def test_leaning_rider_against_the_model_built_directly(study, direct):
 
 
 def test_a_very_stiff_frame_gives_back_the_rigid_bicycle(direct):
-    """Stiffness times f: the weave and capsize speeds approach the rigid ones as 1/f, the wobble's
-    frequency grows as sqrt(f) (its inertia fixed)."""
+    """Stiffness times f: the weave and capsize speeds approach the rigid ones as 1/f, the compliances'
+    slowest oscillation's frequency grows as sqrt(f) (its inertia fixed), and so far above the published
+    wobble band (15 Hz at most) none of it is named wobble."""
     _, parameters, compliance = direct
     for bike in ("jamis", "cargo"):
         params = parameters(bike, "relaxed")
         rigid = bm.stability(params)
-        stiff = {f: flexible.wobble(build("flexible", params, compliances=compliance(bike, "steel").undamped().scaled(f)))
-                 for f in (1e4, 1e6)}
+        models = {f: build("flexible", params, compliances=compliance(bike, "steel").undamped().scaled(f))
+                  for f in (1e4, 1e6)}
+        stiff = {f: flexible.wobble(m) for f, m in models.items()}
         for which in ("weave_speeds", "capsize_speeds"):
             error = {f: abs(getattr(w, which)[0] - getattr(rigid, which)[0]) for f, w in stiff.items()}
             assert error[1e6] < 1e-4 and error[1e4] / error[1e6] == pytest.approx(100, rel=0.2), (bike, which)
-        assert stiff[1e6].frequency / stiff[1e4].frequency == pytest.approx(10.0, rel=1e-3)
+        slowest = {f: min(abs(z.imag) for z in np.linalg.eigvals(m.dynamic_matrix(8.0)) if abs(z.imag) > 2 * np.pi * 15)
+                   for f, m in models.items()}
+        assert slowest[1e6] / slowest[1e4] == pytest.approx(10.0, rel=1e-3)
+        assert all(w.frequency is None for w in stiff.values())
 
 
 def test_findings_answer_from_the_table(study, table):

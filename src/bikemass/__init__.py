@@ -63,6 +63,7 @@ _API = {
     "load_parameter_set": "bicycle.parameter_sets", "ParameterSetFile": "bicycle.parameter_sets",
     "RiderLeanParameters": "models.lean",
     "optimise": "design.optimise", "OptimiseResult": "design.optimise", "plot_optimisation": "design.figures",
+    "Control": "models.control", "load_control": "models.control", "ScheduledModel": "models.control",
 }
 """Public name -> the module (under ``bikemass``) that defines it."""
 

@@ -24,6 +24,7 @@ from ..core.errors import InputError, short
 from ..core.real import finite_real
 from ..core.limits import MAX_SPEEDS
 from .engine.speeds import speed_range, speed_values
+from ..models.control import Control, ScheduledModel, close_loop
 from ..models.family import build as build_member
 from ..models.lean import RiderLeanParameters
 from ..models.linear import LinearModel
@@ -141,7 +142,8 @@ def speeds(start: float = 0.0, stop: float = 30.0, step: float = 0.05, max_speed
 
 def linear_model(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Built | LinearModel",
                  stiffness: "ArrayLike | None" = None, model: "str | None" = None,
-                 tyres: "Tyres | str | Mapping | None" = None) -> LinearModel:
+                 tyres: "Tyres | str | Mapping | None" = None,
+                 control: "Control | str | Mapping | None" = None) -> "LinearModel | ScheduledModel":
     """The linear model of a parameter set or a scenario (a
     :class:`~bikemass.models.linear.LinearModel` is returned as it is).
 
@@ -164,13 +166,19 @@ def linear_model(params: "BenchmarkParameters | RiderLeanParameters | Scenario |
     tyres : Tyres, str or Mapping, optional
         The ``tyre`` member's tyres (a tyre file or a mapping in its form; default
         :data:`~bikemass.models.tyres.DEFAULT_TYRES`).
+    control : Control, str or Mapping, optional
+        A linear feedback added to the inputs, ``u = K(v) y``, each gain scheduled in speed (a
+        :class:`~bikemass.models.control.Control`, a control file or a mapping in its form:
+        :mod:`bikemass.models.control`); the closed loop is returned.
 
     Returns
     -------
-    LinearModel
+    LinearModel or ScheduledModel
         States roll-angle, steer-angle (rad), roll-rate, steer-rate (rad/s), heading (rad),
         lateral (m); inputs roll-torque, steer-torque (N m) (a richer member adds its own);
-        ``A(v)``, ``B(v)`` as polynomials in speed.
+        ``A(v)``, ``B(v)`` as polynomials in speed.  With ``control``: the closed loop, a
+        :class:`~bikemass.models.control.ScheduledModel` (one polynomial per speed interval of
+        the schedules; ``.at(v)`` is the LinearModel at one speed).
 
     Raises
     ------
@@ -195,12 +203,20 @@ def linear_model(params: "BenchmarkParameters | RiderLeanParameters | Scenario |
     >>> model.state_matrix([5.0]).shape                 # A(v) at one speed: (speeds, 6, 6)
     (1, 6, 6)
     """
-    return built_model(params, stiffness, model, tyres)[0]
+    return built_model(params, stiffness, model, tyres, control)[0]
 
 
-def built_model(params, stiffness=None, model=None, tyres=None):
-    """``(LinearModel, S or None)`` of :func:`linear_model`'s arguments: the model and the quasi-static
-    rear-frame stiffness (N m/rad) it holds."""
+def built_model(params, stiffness=None, model=None, tyres=None, control=None):
+    """``(LinearModel, S or None)`` of :func:`linear_model`'s arguments: the model (the closed loop
+    with ``control``) and the quasi-static rear-frame stiffness (N m/rad) it holds."""
+    if control is not None:
+        linear, S = built_model(params, stiffness, model, tyres)
+        return close_loop(linear, control), S
+    if isinstance(params, ScheduledModel):
+        given = {k: v for k, v in (("stiffness", stiffness), ("model", model), ("tyres", tyres)) if v is not None}
+        if given:
+            raise InputError(next(iter(given)), "(argument)", "none with a closed loop (it is built in)")
+        return params, None
     given = {k: v for k, v in (("stiffness", stiffness), ("model", model), ("tyres", tyres)) if v is not None}
     if isinstance(params, (LinearModel, Built)):
         if given:
@@ -244,7 +260,8 @@ def built_model(params, stiffness=None, model=None, tyres=None):
 def eigenvalues(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Built | LinearModel",
                 stiffness: "ArrayLike | None" = None, speeds: "ArrayLike | None" = None,
                 max_speeds: int = MAX_SPEEDS, model: "str | None" = None,
-                tyres: "Tyres | str | Mapping | None" = None) -> Modes:
+                tyres: "Tyres | str | Mapping | None" = None,
+                control: "Control | str | Mapping | None" = None) -> Modes:
     """Eigenvalues over speed, followed across speed and named.
 
     Parameters
@@ -260,6 +277,8 @@ def eigenvalues(params: "BenchmarkParameters | RiderLeanParameters | Scenario | 
         InputError before any work.
     model, tyres : str or Tyres, optional
         The model of the family and the ``tyre`` member's tyres, as for :func:`linear_model`.
+    control : Control, str or Mapping, optional
+        A feedback scheduled in speed (:mod:`bikemass.models.control`): the closed loop's modes.
 
     Returns
     -------
@@ -288,13 +307,14 @@ def eigenvalues(params: "BenchmarkParameters | RiderLeanParameters | Scenario | 
     >>> print(f"{weave.real:.9f} +- {abs(weave.imag):.8f}i 1/s")
     -0.775341882 +- 4.46486771i 1/s
     """
-    return follow_modes(linear_model(params, stiffness, model, tyres), speed_values(speeds, max_speeds))
+    return follow_modes(linear_model(params, stiffness, model, tyres, control), speed_values(speeds, max_speeds))
 
 
 def stability(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Built | LinearModel",
               stiffness: "ArrayLike | None" = None, speeds: "ArrayLike | None" = None,
               marginal: float = DEFAULT_MARGINAL, max_speeds: int = MAX_SPEEDS, model: "str | None" = None,
-              tyres: "Tyres | str | Mapping | None" = None) -> StabilityResult:
+              tyres: "Tyres | str | Mapping | None" = None,
+              control: "Control | str | Mapping | None" = None) -> StabilityResult:
     """Eigenvalues, critical speeds and stable speed ranges of a bicycle.
 
     Parameters
@@ -315,6 +335,11 @@ def stability(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Bu
         InputError before any work.
     model, tyres
         The member of the model family and its tyres, as for :func:`linear_model`.
+    control : Control, str or Mapping, optional
+        A linear feedback ``u = K(v) y`` added to the inputs, each gain scheduled in speed (a
+        :class:`~bikemass.models.control.Control`, a control file or a mapping in its form:
+        :mod:`bikemass.models.control`): the closed loop is analysed, its critical speeds exact
+        on every interval of the schedules.
 
     Returns
     -------
@@ -353,9 +378,17 @@ def stability(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Bu
     >>> r = bm.stability(bm.parameters(bike, "relaxed"), stiffness=bm.stiffness(bike, "steel"))
     >>> print(f"weave {r.weave_speeds[0]:.4f} m/s, capsize {r.capsize_speeds[0]:.4f} m/s")
     weave 5.7421 m/s, capsize 8.5505 m/s
+
+    A steer-into-the-fall law (roll rate to steer torque, N m s/rad, ramped down to 0 at 4.7 m/s)
+    stabilises the benchmark bicycle from a lower speed:
+
+    >>> law = {"steer-torque": {"roll-rate": {"speeds": [0, 1.5, 4.7], "gains": [0, 12.48, 0]}}}
+    >>> closed = bm.stability(bm.parameters("benchmark"), control=law)
+    >>> print(f"stable from {closed.stable_speeds[0][0]:.4f} m/s")
+    stable from 3.5122 m/s
     """
     if not finite_real(marginal) or not 0 < marginal <= MAX_MARGINAL:
         raise InputError("marginal", short(marginal), f"a modulus in rad/s above 0 and at most {MAX_MARGINAL:g} "
                          "(as the command line's --marginal)")
-    linear, S = built_model(params, stiffness, model, tyres)
+    linear, S = built_model(params, stiffness, model, tyres, control)
     return analyse(linear, speed_values(speeds, max_speeds), marginal, S)

@@ -51,9 +51,15 @@ BENCHMARK, PRINCIPAL, RIDER_LEAN = "benchmark", "principal", MOORE_PARAMETERIZAT
 PARAMETERIZATIONS = {"benchmark": BENCHMARK, "Meijaard2007": BENCHMARK, "principal": PRINCIPAL,
                      "Moore2019": PRINCIPAL, "MooreRiderLean2012": RIDER_LEAN}
 """``parameterization:`` as BicycleParameters' files and its ``to_yaml`` write it -> bikemass's name."""
-SET_KEYS = ("parameterization", "values", "parameters", "rider", "description", "name", "source", "uncertainty")
+MEMBER_KEYS = ("model", "flexible", "tyre", "frame_stiffness")
+"""Blocks a parameter file may carry beside its parameter set: what ``bikemass params --model M``
+writes so that every command reads back the same model (the model it was written for, the
+flexible member's compliances, the tyres, the Whipple model's quasi-static S in N m/rad); read by
+:mod:`bikemass.scenario.inputs`."""
+SET_KEYS = ("parameterization", "values", "parameters", "rider", "description", "name", "source", "units",
+            "uncertainty", *MEMBER_KEYS)
 """Top-level keys of the ``parameterization:`` / ``values:`` form."""
-FILE_KEYS = ("name", "description", "source", "rider_included", "units", "warnings", "uncertainty")
+FILE_KEYS = ("name", "description", "source", "rider_included", "units", "warnings", "uncertainty", *MEMBER_KEYS)
 """Metadata keys of bikemass's own (flat) benchmark parameter files (``warnings``: what bikemass
 warned about when it wrote the file as JSON; read back, the set is checked again)."""
 

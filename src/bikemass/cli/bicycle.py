@@ -47,6 +47,7 @@ def register(sub):
     _bike_and_rider(params)
     dialect.add_combine(params)
     dialect.add_method(params)
+    dialect.add_stiffness(params)
     dialect.add_model(params)
     params.add_argument("--compare", metavar="BIKE2",
                         help="every parameter beside BIKE2's (e.g. jamis vs jamis-thesis, the published "
@@ -130,7 +131,16 @@ def run_params(args):
                     or scenario.inputs.bicycle().rider_included)
         # a measured bicycle's standard deviations belong to its own parameters: not with a rider added
         std = scenario.file_std if args.rider in (None, "none") and args.model == "whipple" else None
-        dialect.emit(args, lambda f: format_parameters(params, f, title, included, std))
+        if fmt in ("yaml", "json") and (args.model != "whipple" or args.stiffness != "infinite"):
+            # every parameter the model uses, members included: a file every command reads back as it
+            # lazy: the library loads numpy; bikemass --help must not
+            from ..models.parameter_export import member_document, member_units
+            built = scenario.build()
+            data = member_document(built.choice, params, built.lean, built.compliances, built.tyres,
+                                   built.stiffness, included, args.stiffness)
+            dialect.emit(args, lambda f: dialect.document(data, f, member_units()))
+        else:
+            dialect.emit(args, lambda f: format_parameters(params, f, title, included, std))
     return 0
 
 

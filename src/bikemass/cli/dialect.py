@@ -106,10 +106,45 @@ def add_stiffness(p, many=False):
                        help="comma-separated stiffnesses as for stability --stiffness "
                             "(e.g. infinite,steel,aluminum)")
         return
-    p.add_argument("--stiffness", metavar="S", default=RIGID,
-                   help="rear-frame stiffness: infinite (rigid, default), steel, titanium, aluminum "
-                        "(the bicycle's published S if it carries one, else the beam model of its rear "
-                        "frame, condensed) or a YAML file with S: [[..], [..]] in N m/rad")
+    action = p.add_argument("--stiffness", metavar="S", default=RIGID,
+                            help="rear-frame stiffness: infinite (rigid, default), a material (steel, titanium, "
+                                 "aluminum, carbon, ...: the bicycle's published S if it carries one, else the "
+                                 "beam model of its own tube sections in that material) or a YAML file with S: "
+                                 "[[..], [..]] in N m/rad")
+    late_help(action, lambda: STIFFNESS_HELP.format(materials=material_list()))
+
+
+STIFFNESS_HELP = (
+    "rear-frame stiffness: infinite (rigid, default); a material: {materials} (frames/materials.yaml): the "
+    "bicycle's published S if it carries one, else the beam models of the bicycle's own tube sections with "
+    "that material's properties (a steel bicycle's tubes in carbon fibre are not a carbon frame); or a YAML "
+    "file with S: [[..], [..]] in N m/rad. With the flexible member a parameter file written by params "
+    "--model flexible carries its own compliances (measured values may be edited in)")
+
+
+def material_list():
+    """Every material ``--stiffness`` offers, with its names and modulus (frames/materials.yaml)."""
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..mass.materials import load_materials
+    table = load_materials()
+    by = {}
+    for name, m in table.items():
+        by.setdefault(m.key, (m, []))[1].append(name)
+    return "; ".join(f"{' or '.join(sorted(set(names), key=len))} ({m.name}, E {m.E / 1e9:g} GPa)"
+                     for m, names in by.values())
+
+
+def stiffness_label(stiffness):
+    """What a stiffness choice is, for a title: ``rigid frame``, ``<material> on the bicycle's tube
+    sections`` (a material is a property, not a frame), or the file's name."""
+    if stiffness in (RIGID, "rigid", None):
+        return "rigid frame"
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..mass.materials import load_materials
+    material = load_materials().get(stiffness)
+    if material is not None:
+        return f"{material.name} on the bicycle's tube sections"
+    return f"frame stiffness {stiffness}"
 
 
 MODEL_HELP = (
@@ -136,6 +171,16 @@ def add_model(p):
                    help="tyre file for the tyre member: front: and rear: each with cornering_coefficient and "
                         "camber_coefficient (1/rad or 1/deg) and relaxation_length (m); default: measured "
                         "bicycle tyres (Dressel 2013; docs/models.md)")
+
+
+def add_control(p):
+    """``--control FILE``: a linear feedback scheduled in speed, added to the model's inputs."""
+    p.add_argument("--control", metavar="FILE",
+                   help="close the loop with a control file: for each input, the signals fed back into it "
+                        "(states or outputs by name) and each gain's schedule in speed, e.g. 'steer-torque: "
+                        "{roll-rate: {speeds: [0, 1.5, 4.7], gains: [0, 12.5, 0]}}' (gains in SI, linear "
+                        "between the speeds, constant outside; u = K(v) y is added to the inputs, so a positive "
+                        "roll-rate -> steer-torque gain steers into the fall); docs/stability.md, Closed loops")
 
 
 def scenario(args, rider=None, stiffness=None, bike=None, origin=None):

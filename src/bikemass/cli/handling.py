@@ -25,6 +25,7 @@ def register(sub):
                     "position (rear contact; front-lateral: front contact), at one speed.")
     _input_output(tf)
     _data(tf, "the zeros, poles and gain")
+    dialect.add_control(tf)
     tf.set_defaults(run=every_size(run_tf))
 
     bode = _command(
@@ -41,6 +42,7 @@ def register(sub):
                            "the document's frequencies and the plot's frequency axis")
     _data(bode, "the magnitude and phase at every frequency")
     dialect.add_plot(bode, "the Bode plot")
+    dialect.add_control(bode)
     bode.set_defaults(run=every_size(run_bode))
 
     sim = _command(
@@ -64,6 +66,7 @@ def register(sub):
                           "(roll 60 degrees) ends the run with a warning; --plot draws it beside the linear run")
     dialect.add_output(sim, what="the samples")
     dialect.add_plot(sim, "every state against time")
+    dialect.add_control(sim)
     sim.set_defaults(run=every_size(run_simulate))
 
     shapes = _command(
@@ -73,6 +76,7 @@ def register(sub):
                     "roll, steer, heading and lateral position; --plot draws them as phasors.")
     dialect.add_output(shapes, what="the mode shapes")
     dialect.add_plot(shapes, "the mode shapes as phasors")
+    dialect.add_control(shapes)
     shapes.set_defaults(run=every_size(run_mode_shapes))
 
     space = _command(
@@ -176,15 +180,22 @@ def _data(p, what):
 def bicycle_model(args):
     """The :class:`~bikemass.models.linear.LinearModel` of BIKE with ``--rider``, ``--combine``,
     ``--allow-off-contact``, ``--stiffness``, ``--model`` and ``--tyres``: the one place these
-    commands build their model (the scenario builder, :func:`bikemass.cli.dialect.scenario`)."""
-    return dialect.scenario(args).build().model
+    commands build their model (the scenario builder, :func:`bikemass.cli.dialect.scenario`); with
+    ``--control`` the closed loop at ``--speed`` (:func:`bikemass.models.control.close_loop`)."""
+    model = dialect.scenario(args).build().model
+    if getattr(args, "control", None):
+        # lazy: the library loads numpy; bikemass --help must not
+        from ..models.control import close_loop
+        return close_loop(model, args.control).at(args.speed)     # the closed loop at the one speed
+    return model
 
 
 def _title(args):
     rider = "no rider" if args.rider == "none" else args.rider
-    frame = "rigid frame" if args.stiffness == "infinite" else f"{args.stiffness} frame"
+    frame = dialect.stiffness_label(args.stiffness)
     model = "" if args.model == "whipple" else f", model {args.model}"
-    return f"{dialect.bike_name(args.bike)}, {rider}, {frame}{model}"
+    control = f", control {args.control}" if getattr(args, "control", None) else ""
+    return f"{dialect.bike_name(args.bike)}, {rider}, {frame}{model}{control}"
 
 
 def _output_name(model, name):

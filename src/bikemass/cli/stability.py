@@ -75,6 +75,7 @@ def _common(p):
     dialect.add_combine(p)
     dialect.add_stiffness(p)
     dialect.add_model(p)
+    dialect.add_control(p)
     dialect.add_speeds(p)
     _max_speeds(p)
 
@@ -94,7 +95,7 @@ def _rider_name(rider):
 
 
 def _stiffness_name(stiffness):
-    return "rigid frame" if stiffness == "infinite" else f"{stiffness} frame"
+    return dialect.stiffness_label(stiffness)
 
 
 def _combine(combine):
@@ -104,7 +105,8 @@ def _combine(combine):
 def _title(args):
     thesis = " (rider added as the thesis did)" if args.rider != "none" and args.combine == "thesis" else ""
     model = "" if getattr(args, "model", "whipple") == "whipple" else f", model {args.model}"
-    return f"{dialect.bike_name(args.bike)}, {_rider_name(args.rider)}, {_stiffness_name(args.stiffness)}{model}{thesis}"
+    control = f", control {args.control}" if getattr(args, "control", None) else ""
+    return f"{dialect.bike_name(args.bike)}, {_rider_name(args.rider)}, {_stiffness_name(args.stiffness)}{model}{control}{thesis}"
 
 
 def run_eig(args):
@@ -115,7 +117,7 @@ def run_eig(args):
     options = dialect.figure_checked(args)
     speeds = dialect.parse_speeds(args.speeds, args.max_speeds)
     built = _built(args)
-    modes = eigenvalues(built, speeds=speeds, max_speeds=args.max_speeds)
+    modes = eigenvalues(built, speeds=speeds, max_speeds=args.max_speeds, control=args.control)
 
     def render(fmt):
         if fmt in ("json", "yaml"):
@@ -126,7 +128,7 @@ def run_eig(args):
         # lazy: plots/ load matplotlib; only the figure needs it
         from ..analysis.results import stability
         from ..plots.stability import plot_eigenvalues
-        result = stability(built, speeds=speeds, max_speeds=args.max_speeds)     # marks v_w, v_c and shades the stable speeds
+        result = stability(built, speeds=speeds, max_speeds=args.max_speeds, control=args.control)     # marks v_w, v_c and shades the stable speeds
         dialect.save_plot(args, plot_eigenvalues(result, _title(args), options.size, **options.limits()), options)
     return 0
 
@@ -139,7 +141,8 @@ def run_stability(args):
     if not args.marginal > 0:
         raise InputError("--marginal", args.marginal, "a positive modulus in rad/s")
     speeds = dialect.parse_speeds(args.speeds, args.max_speeds)
-    result = stability(_built(args), speeds=speeds, marginal=args.marginal, max_speeds=args.max_speeds)
+    result = stability(_built(args), speeds=speeds, marginal=args.marginal, max_speeds=args.max_speeds,
+                       control=args.control)
 
     def render(fmt):
         if fmt in ("json", "yaml"):
@@ -276,6 +279,8 @@ def stability_text(result, title):
     if result.unstable_at_start:
         lines.append(f"unstable from the lowest speed ({v[0]:g} m/s):".ljust(52)
                      + ", ".join(_start_text(u) for u in result.unstable_at_start))
+    if not result.stable_speeds:
+        lines.append("no stable speeds: the modes that prevent them, " + result.prevented_by.text())
     lines.append("")
     rows = [[f"{s:.12f}", kind, d, modes, name] for s, kind, d, modes, name in _crossing_rows(result)]
     lines += ["crossings of Re = 0",

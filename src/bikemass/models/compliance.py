@@ -16,6 +16,8 @@ DAMPING_RATIO = 0.0
 of a bicycle frame's or fork's damping ratio was at hand (docs/models-flexible.md, "Damping"); give a
 measured one as ``damping_ratio``."""
 
+_DIMENSIONS = {"point": "length", "load_point": "length", "stiffness": "stiffness"}
+"""The fields read with a unit (others are plain numbers in the SI unit of :meth:`Compliance.units`)."""
 
 @dataclass(frozen=True)
 class Compliance:
@@ -81,3 +83,82 @@ class Compliance:
     def to_dict(self):
         """Plain values (SI; the units: :meth:`units`)."""
         return {f.name: (list(v) if isinstance(v := getattr(self, f.name), tuple) else v) for f in fields(self)}
+
+
+def compliance_from_node(node):
+    """A :class:`Compliance` of a config :class:`~bikemass.core.config.Node` holding its fields
+    (:meth:`Compliance.to_dict`'s form; ``stiffness`` may carry a unit: ``"1.2e4 N m/rad"``,
+    ``"210 N m/deg"``)."""
+    names = [f.name for f in fields(Compliance)]
+    optional = ("load_point", "damping_ratio")
+    node.check_keys(required=[n for n in names if n not in optional], optional=(*optional, "note"))
+
+    def number(child, name):
+        return child.number(_DIMENSIONS.get(name, "dimensionless"))
+
+    values = {}
+    for name in names:
+        child = node.get(name)
+        if name == "stiffness" and isinstance(child.value, dict):
+            continue                                       # a measurement: needs the axis, read below
+        if name == "name":
+            values[name] = child.string()
+        elif name == "damping_ratio" and child.missing:
+            continue                                       # the default (Compliance.damping_ratio)
+        elif child.missing:
+            values[name] = None
+        elif isinstance(child.value, list):
+            values[name] = tuple(number(e, name) for e in child.elements())
+            if len(values[name]) != 2:
+                child.fail("a pair (x, z)")
+        else:
+            values[name] = number(child, name)
+    stiffness = node["stiffness"]
+    if isinstance(stiffness.value, dict):
+        values["stiffness"] = measured_stiffness(stiffness, values["point"], values["direction"])
+    return Compliance(**values)
+
+
+def _distance(at, point, direction):
+    """Distance (m) of ``at`` (x, z) from the axis through ``point`` along the unit ``direction``."""
+    dx, dz = at[0] - point[0], at[1] - point[1]
+    return abs(dx * direction[1] - dz * direction[0])
+
+
+def measured_stiffness(node, point, direction):
+    """The torsional stiffness (N m/rad) about the axis (``point``, unit ``direction``, x-z plane) of a
+    bench test's measurement (a config :class:`~bikemass.core.config.Node`):
+
+    * ``{lateral: "120 N/mm", at: [x, z]}``: a lateral force at ``at`` over the lateral deflection
+      there (a fork's lateral stiffness at the axle); the force's moment about the axis is ``F d``
+      and the deflection ``theta d`` (``d`` the distance of ``at`` from the axis), so ``k = K d**2``;
+    * ``{torsional: "95 N m/deg", load: [x, z], gauge: [x, z], lever: m, gauge_arm: m}``: a
+      torque over a rotation as a test reports them (a steering-head stiffness): the torque the
+      test states is ``F lever`` for a lateral force ``F`` at ``load``, the rotation it states the
+      deflection at ``gauge`` over ``gauge_arm``; about this axis the force's moment is ``F d_load``
+      and the deflection ``theta d_gauge``, so ``k = K d_load d_gauge / (lever gauge_arm)``.
+      ``lever`` and ``gauge_arm`` default to ``d_load`` and ``d_gauge`` (the test's arms measured
+      from this axis), and without ``load`` and ``gauge`` the torque and the rotation are taken
+      about the axis itself: ``k = K``.
+    """
+    if node.has("lateral"):
+        node.check_keys(required=("lateral", "at"), optional=("note", "source"))
+        K = node["lateral"].number("linear stiffness", positive=True)
+        d = _distance(node["at"].vector("length", 2), point, direction)
+        if not d > 0:
+            node.fail("a point off the compliance's axis (its lateral stiffness there is a torsional one)", "at")
+        return K * d * d
+    node.check_keys(required=("torsional",), optional=("load", "gauge", "lever", "gauge_arm", "note", "source"))
+    K = node["torsional"].number("stiffness", positive=True)
+    if node.has("load") != node.has("gauge"):
+        node.fail("both load: and gauge: (the test's points), or neither (torque and rotation about the axis)")
+    if not node.has("load"):
+        return K
+    arms = []
+    for where, arm in (("load", "lever"), ("gauge", "gauge_arm")):
+        d = _distance(node[where].vector("length", 2), point, direction)
+        if not d > 0:
+            node.fail("a point off the compliance's axis", where)
+        arms.append((d, node[arm].number("length", positive=True) if node.has(arm) else d))
+    (d_load, lever), (d_gauge, gauge_arm) = arms
+    return K * d_load * d_gauge / (lever * gauge_arm)

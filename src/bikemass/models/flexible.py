@@ -18,7 +18,7 @@ from dataclasses import dataclass, fields, replace
 
 
 from ..core.errors import InputError
-from .compliance import Compliance
+from .compliance import Compliance, compliance_from_node
 
 COORDINATES = {"frame": "frame-twist", "fork": "fork-bending"}
 """Each compliance's coordinate (the state's name in the linear model)."""
@@ -126,5 +126,28 @@ class Compliances:
     def massless(self):
         """Both with tubes of no inertia (what rides on them keeps its own)."""
         return self.scaled(inertia=0.0)
+
+    def to_dict(self):
+        """``{"frame": ..., "fork": ...}``: each compliance's plain values (SI,
+        :meth:`~bikemass.models.compliance.Compliance.units`), ``"rigid"`` for one held rigid: the
+        ``flexible:`` block of a parameter file (:func:`compliances_from_node` reads it back), and
+        ``steer_damping`` (N m s/rad)."""
+        return {**{w: (c.to_dict() if (c := getattr(self, w)) is not None else "rigid") for w in COORDINATES},
+                "steer_damping": self.steer_damping}
+
+
+def compliances_from_node(node):
+    """:class:`Compliances` of a parameter file's ``flexible:`` block (a config
+    :class:`~bikemass.core.config.Node`): ``frame:`` and ``fork:``, each a compliance's fields
+    (:class:`~bikemass.models.compliance.Compliance`, SI or with units) or ``rigid``, and the steering
+    bearing's ``steer_damping`` (N m s/rad; 0 without it)."""
+    node.check_keys(optional=(*COORDINATES, "steer_damping", "source", "note"))
+    out = {}
+    for which in COORDINATES:
+        child = node.get(which, "rigid")
+        out[which] = None if child.value in ("rigid", "infinite", None) else compliance_from_node(child)
+    if node.has("steer_damping"):
+        out["steer_damping"] = node["steer_damping"].number("damping", nonnegative=True)
+    return Compliances(**out)
 
 

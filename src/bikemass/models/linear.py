@@ -18,6 +18,7 @@ keeps ``M, C, K, F`` as :class:`SecondOrder` beside its state-space form (``x = 
 Analyses (stability, transfer functions, responses) take a :class:`LinearModel` and nothing else.
 """
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -185,6 +186,18 @@ class LinearModel:
         except ValueError:
             raise ValueError(f"model {self.name!r} has no input {name!r} "
                              f"(inputs: {', '.join(self.input_names)})") from None
+
+    @property
+    def speed_pieces(self):
+        """``((lo, hi, model), ...)``: the polynomials in speed the model is made of, and the speeds
+        (m/s) each holds on; one for a :class:`LinearModel` (a closed loop with scheduled gains,
+        :class:`~bikemass.models.control.ScheduledModel`, has one per interval)."""
+        return ((-math.inf, math.inf, self),)
+
+    def at(self, speed):
+        """The model that holds at ``speed`` (m/s): this one (a scheduled closed loop gives the piece
+        of that speed)."""
+        return self
 
     def state_matrix(self, speed):
         """``A(v)``: shape (N, N) for one speed (m/s), (n, N, N) for an array of n speeds."""

@@ -78,3 +78,40 @@ def meijaard_yaml(params, speed=1.0, rider_included=False):
     data = {"description": "", "parameterization": MEIJAARD, "parameters": "",
             "rider": True if rider_included else None, "values": {**values, "v": float(speed)}}
     return yaml.safe_dump(data, sort_keys=True)
+
+
+def member_document(choice, params, lean=None, compliances=None, tyres=None, stiffness=None, rider_included=False,
+                    source=""):
+    """Every parameter a model of the family uses, as one parameter file (plain data) that every command
+    reads back as the same model: the set the model takes (the 26 benchmark names, SI; for a model
+    with ``rider-lean`` the ``MooreRiderLean2012`` set of the rider split at the hips), ``model:`` (the
+    member combination's name), and each member's block (:data:`~bikemass.bicycle.parameter_sets.MEMBER_KEYS`):
+    ``flexible:`` the frame's and the fork's compliances (axis, stiffness N m/rad, modal inertia),
+    ``tyre:`` the tyre file's form, ``frame_stiffness:`` the Whipple model's quasi-static S (N m/rad).
+
+    ``choice`` is a :class:`~bikemass.models.registry.ModelChoice`; ``source`` says what made the
+    compliances (a material), written beside them."""
+    from .moore2012 import PARAMETERIZATION, to_moore_values          # lazy: only a rider-lean file needs it
+    if choice.has("rider-lean"):
+        doc = {"description": "", "parameterization": PARAMETERIZATION, "parameters": "", "rider": None,
+               "values": to_moore_values(lean)}
+    else:
+        doc = {**params.to_dict(), **({"rider_included": True} if rider_included else {})}
+    doc["model"] = choice.name
+    if choice.has("flexible") and compliances is not None:
+        doc["flexible"] = {**compliances.to_dict(), **({"source": str(source)} if source else {})}
+    if choice.has("tyre") and tyres is not None:
+        doc["tyre"] = {w: {"cornering_coefficient": f"{t.cornering_coefficient!r} 1/rad",
+                           "camber_coefficient": f"{t.camber_coefficient!r} 1/rad",
+                           "relaxation_length": t.relaxation_length}
+                       for w, t in (("front", tyres.front), ("rear", tyres.rear))}
+    if not choice.members and stiffness is not None:
+        doc["frame_stiffness"] = [[float(x) for x in row] for row in stiffness]
+    return doc
+
+
+def member_units():
+    """The units of :func:`member_document`'s keys beside the benchmark parameters' (SI)."""
+    from .compliance import Compliance          # lazy: numpy; the text formats above do not need it
+    return {**{k: u for k, u in Compliance.units().items() if u}, "relaxation_length": "m",
+            "frame_stiffness": "N m/rad"}

@@ -38,8 +38,9 @@ from ..core.paths import frames_dir, resolve
 from ..core.units import DIMENSIONS, dimension_of, to_si
 from ..mass.inertia import combine
 from ..mass.materials import Material, load_materials
-from ..models.flexible import Compliances
+from ..models.flexible import Compliances, compliances_from_node
 from ..models.lean import RiderLeanParameters
+from ..models.tyres import tyres_from_node
 from ..models.parameters import NAMES, BenchmarkParameters
 from ..models.plausibility import front_load_problem, warn
 from ..rider import Rider, _read_document, poses_dir
@@ -290,6 +291,33 @@ class Inputs:
                 read = read_parameter_set(node)
                 self._lean_set, self._lean_source = read.parameters, read.source
         return self._lean_set
+
+    @property
+    def file_members(self):
+        """What a parameter file written by ``bikemass params --model M`` carries beside its set
+        (:data:`~bikemass.bicycle.parameter_sets.MEMBER_KEYS`): ``{"model": str, "flexible":
+        Compliances, "tyre": Tyres, "frame_stiffness": 2x2 S (N m/rad)}``, each key only when
+        present; ``{}`` for any other bicycle."""
+        if "_file_members" not in self.__dict__:
+            node, bike = None, self.bike
+            if isinstance(bike, Mapping):
+                node = Node(plain_input(bike, MAPPING), MAPPING, "")
+            elif isinstance(bike, (str, os.PathLike)):
+                path = resolve(split_size(os.fspath(bike))[0], frames_dir(), "bicycle")
+                node = None if _is_parameter_text(path) else load_yaml(path)
+            found = {}
+            if node is not None and kind_of(node) is not None:
+                if node.has("model"):
+                    found["model"] = node["model"].string()
+                if node.has("flexible"):
+                    found["flexible"] = compliances_from_node(node["flexible"])
+                if node.has("tyre"):
+                    found["tyre"] = tyres_from_node(node["tyre"])
+                if node.has("frame_stiffness"):
+                    found["frame_stiffness"] = catalog.stiffness_matrix(node["frame_stiffness"].matrix(
+                        "stiffness", (2, 2)))
+            self._file_members = found
+        return self._file_members
 
     def _read_rider(self):
         """The rider's source and document (``None`` without a rider or for a Rider built from parts)."""
@@ -567,6 +595,8 @@ class Inputs:
         which, key = _stiffness_key(which)
 
         def build():
+            if _rigid(which) and "frame_stiffness" in self.file_members and not bike_changes:
+                return self.file_members["frame_stiffness"]          # the S a parameter file carries
             if not self._is_material(which):
                 return catalog.stiffness(self.bike, which)
             return catalog.stiffness(self.bicycle(bike_changes), which, "computed" if bike_changes else "auto")
@@ -579,6 +609,8 @@ class Inputs:
         which, key = _stiffness_key(which)
 
         def build():
+            if _rigid(which) and "flexible" in self.file_members:
+                return self.file_members["flexible"]     # a parameter file's compliances (params --model)
             if which is None or (isinstance(which, str) and which in (RIGID, "rigid")):
                 return Compliances()
             if not (self._is_material(which) or _material_file(which)):
@@ -590,6 +622,11 @@ class Inputs:
             from ..fe.flexible import compliances
             return compliances(self.bicycle(bike_changes), which)
         return _lru(self._cache("compliances"), (key, bike_changes), build)
+
+
+def _rigid(which):
+    """Whether stiffness choice ``which`` is the default, rigid one."""
+    return which is None or (isinstance(which, str) and which in (RIGID, "rigid"))
 
 
 def _stiffness_key(which):

@@ -277,6 +277,8 @@ class Scenario:
         return lean
 
     def _tyres(self):
+        if self.model.has("tyre") and self.tyres is None and "tyre" in self.inputs.file_members:
+            return self.inputs.file_members["tyre"]           # a parameter file's tyres (params --model)
         return as_tyres(self.tyres) if self.model.has("tyre") else None
 
     def build(self, changes=None):

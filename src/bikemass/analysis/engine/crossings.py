@@ -77,29 +77,48 @@ class Crossing(Result):
 
 
 class Eigenvalues:
-    """``model``'s dynamic eigenvalues (1/s) at single speeds, memoised: ``at(v)``."""
+    """``model``'s dynamic eigenvalues (1/s) at single speeds, memoised: ``at(v)``.
+
+    ``pieces`` holds ``(lo, hi, coefficients)`` of each polynomial the model is made of
+    (:attr:`~bikemass.models.linear.LinearModel.speed_pieces`: one for a model, one per speed
+    interval for a closed loop with scheduled gains); ``coefficients`` are the first piece's."""
 
     def __init__(self, model):
-        self.coefficients = np.asarray(model.dynamic_coefficients, dtype=float)
+        self.pieces = tuple((lo, hi, np.asarray(m.dynamic_coefficients, dtype=float))
+                            for lo, hi, m in model.speed_pieces)
+        self._starts = np.array([lo for lo, _, _ in self.pieces[1:]])
+        self.coefficients = self.pieces[0][2]
         self._cache = {}
-        self._balanced = None
+        self._balanced = {}
+
+    def balanced_piece(self, k):
+        """:func:`balanced` of piece ``k``'s coefficients, made once."""
+        if k not in self._balanced:
+            self._balanced[k] = balanced(self.pieces[k][2])
+        return self._balanced[k]
 
     @property
     def balanced(self):
-        """:func:`balanced` of the coefficients, made once."""
-        if self._balanced is None:
-            self._balanced = balanced(self.coefficients)
-        return self._balanced
+        """:func:`balanced` of the (first piece's) coefficients, made once."""
+        return self.balanced_piece(0)
 
     def __call__(self, v):
         v = float(v)
         out = self._cache.get(v)
         if out is None:
-            A = self.coefficients[-1]
-            for P in self.coefficients[-2::-1]:            # Horner in v
-                A = A * v + P
+            P = self.pieces[int(np.searchsorted(self._starts, v, side="right"))][2] if self._starts.size \
+                else self.coefficients
+            A = P[-1]
+            for Q in P[-2::-1]:                             # Horner in v
+                A = A * v + Q
             out = self._cache[v] = separated_eigenvalues(A)
         return out
+
+    def spans(self, lo, hi):
+        """``[(a, b, balanced coefficients)]``: each piece's polynomial (:func:`balanced`) and its part
+        ``[a, b]`` of ``[lo, hi]``."""
+        return [(max(lo, a), min(hi, b), self.balanced_piece(k)) for k, (a, b, _) in enumerate(self.pieces)
+                if max(lo, a) <= min(hi, b)]
 
 
 SEPARATION = 1e8
@@ -251,20 +270,20 @@ def axis_crossings(model, lo, hi, at=None):
     ``at`` may pass a shared :class:`Eigenvalues` of the model.
     """
     at = at or Eigenvalues(model)
-    P = at.balanced
     # at standstill every oscillation of an undamped model (the flexible member) is on the axis: the
     # roots found there, a round-off away from lo, are at lo and no crossing of (lo, hi]
     start = lo + MERGE_TOL * (1 + abs(lo))
     small = has_quartic_path(model)
     found = []
-    for kind, coefficients, check in ((REAL, P, _real_crossing),
-                                      (OSCILLATORY, additive_coefficients(P), _oscillatory_crossing)):
-        for v in real_roots(coefficients, lo, hi, small):
-            if v <= start:
-                continue
-            hit = check(at, v, lo, hi)
-            if hit is not None and start < hit[0] <= hi:
-                found.append((float(hit[0]), kind, hit[1]))
+    for a, b, P in at.spans(lo, hi):      # each polynomial on its own speeds (one for a model), balanced
+        for kind, coefficients, check in ((REAL, P, _real_crossing),
+                                          (OSCILLATORY, additive_coefficients(P), _oscillatory_crossing)):
+            for v in real_roots(coefficients, a, b, small):
+                if v <= start:
+                    continue
+                hit = check(at, v, lo, hi)
+                if hit is not None and start < hit[0] <= hi:
+                    found.append((float(hit[0]), kind, hit[1]))
     found.sort()
     out = []
     for c in found:
@@ -278,12 +297,14 @@ def circle_speeds(model, radius, lo, hi, at=None):
     """Speeds in ``(lo, hi)`` where an eigenvalue may have modulus ``radius`` (1/s): candidates for the
     ends of marginally stable ranges (unverified: an extra speed only splits an interval)."""
     at = at or Eigenvalues(model)
-    P = at.balanced
-    n = P.shape[-1]
-    shifted = P.copy()
-    shifted[0] = shifted[0] - radius * np.eye(n)
-    C2 = multiplicative_coefficients(P)
-    C2[0] = C2[0] - radius ** 2 * np.eye(len(C2[0]))
     small = has_quartic_path(model)
-    v = np.concatenate([real_roots(shifted, lo, hi, small), real_roots(C2, lo, hi, small)])
+    found = []
+    for a, b, P in at.spans(lo, hi):
+        n = P.shape[-1]
+        shifted = P.copy()
+        shifted[0] = shifted[0] - radius * np.eye(n)
+        C2 = multiplicative_coefficients(P)
+        C2[0] = C2[0] - radius ** 2 * np.eye(len(C2[0]))
+        found += [real_roots(shifted, a, b, small), real_roots(C2, a, b, small)]
+    v = np.concatenate(found) if found else np.empty(0)
     return np.sort(v[(v > lo) & (v < hi)])

@@ -108,7 +108,7 @@ def follow_modes(model, speeds):
     lead = np.linspace(0.0, v[0], int(np.ceil(v[0] / START_STEP)) + 1)[:-1]
     sweep = eigen_sweep(model, np.concatenate([lead, v]))
     values, vectors = reorder(sweep.eigenvalues, sweep.eigenvectors, track(sweep.eigenvalues, sweep.eigenvectors))
-    labels = standstill_labels(values[0], vectors[0], dict(model.families))
+    labels = standstill_labels(values[0], vectors[0], dict(model.families), [s.name for s in model.dynamic_states])
     order = settle_splits(values, labels)
     values = np.take_along_axis(values, order, axis=1)
     vectors = np.take_along_axis(vectors, order[:, None, :], axis=2)

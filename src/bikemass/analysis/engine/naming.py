@@ -37,6 +37,11 @@ fork or tyres that slip add to the Whipple bicycle's modes."""
 WOBBLE_MIN_FREQUENCY = 2 * np.pi * 3.0
 """Lowest frequency (rad/s, 3 Hz) of an oscillation named wobble; the weave of a bicycle stays
 below it up to about 15 m/s, the wobble of the literature lies at 6-12 Hz (docs/models.md)."""
+WOBBLE_MAX_FREQUENCY = 2 * np.pi * 15.0
+"""Highest frequency (rad/s, 15 Hz) of an oscillation named wobble: the published wobble band is
+about 4-12 Hz (Ploechl et al. 2012: 6-9 Hz; Klinger et al. 2014: 8-12 Hz hands on); a mode of the
+compliances far above it (a fork bending at 60-80 Hz, a frame twist at 30 Hz) is named by the
+coordinate that moves most in it (``fork-bending``, ``frame-twist``), not wobble."""
 
 
 def participation(vectors):
@@ -62,11 +67,14 @@ def _bicycle_labels(values):
     return labels
 
 
-def standstill_labels(values, vectors, families):
+def standstill_labels(values, vectors, families, states=None):
     """Labels of the roots ``values`` (m,) with state eigenvectors ``vectors`` (N, m) at standstill.
 
     ``families`` maps each family name to the indices of its dynamic states; the Whipple states
-    form :data:`BICYCLE`.  Returns a list of unique labels in the order of ``values``.
+    form :data:`BICYCLE`.  ``states``, the dynamic states' names, lets a root of the compliances'
+    family (:data:`WOBBLE`) above :data:`WOBBLE_MAX_FREQUENCY` be named by its family's coordinate
+    that moves most in it (``fork-bending``, ``frame-twist``).  Returns a list of unique labels in
+    the order of ``values``.
     """
     values = np.asarray(values)
     if len(families) == 1:
@@ -81,7 +89,14 @@ def standstill_labels(values, vectors, families):
     others = [f for f in names if f != BICYCLE]
     rest = [i for i in range(len(values)) if labels[i] is None]
     home = {i: others[int(np.argmax([weight[names.index(f), i] for f in others]))] for i in rest}
-    for f in others:
+    if states is not None and WOBBLE in families:
+        for i in rest:
+            if home[i] == WOBBLE and abs(values[i].imag) > WOBBLE_MAX_FREQUENCY:
+                by = {}
+                for j in families[WOBBLE]:
+                    by[coordinate(states[j])] = by.get(coordinate(states[j]), 0.0) + share[j, i]
+                home[i] = max(by, key=by.get)
+    for f in dict.fromkeys([*others, *home.values()]):
         mine = sorted((i for i in rest if home[i] == f), key=lambda i: _standstill_order(values[i]))
         for k, i in enumerate(mine):
             labels[i] = f if len(mine) == 1 else f"{f} {k + 1}"
@@ -177,9 +192,10 @@ def coordinate(state):
 
 
 def is_wobble(model, speed, root):
-    """Whether the oscillation ``root`` (1/s) of ``model`` at ``speed`` (m/s) is wobble: at least 3 Hz
-    and its largest share (participation factors, summed by coordinate) on the steer coordinate."""
-    if abs(root.imag) < WOBBLE_MIN_FREQUENCY:
+    """Whether the oscillation ``root`` (1/s) of ``model`` at ``speed`` (m/s) is wobble: 3 to 15 Hz
+    (:data:`WOBBLE_MIN_FREQUENCY`, :data:`WOBBLE_MAX_FREQUENCY`) and its largest share (participation
+    factors, summed by coordinate) on the steer coordinate."""
+    if not WOBBLE_MIN_FREQUENCY <= abs(root.imag) <= WOBBLE_MAX_FREQUENCY:
         return False
     values, vectors = np.linalg.eig(model.dynamic_matrix(speed))
     k = int(np.argmin(np.abs(values - root)))

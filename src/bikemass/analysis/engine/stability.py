@@ -20,6 +20,52 @@ CRITERIA = ("strict", "marginal")
 
 
 @dataclass(frozen=True, eq=False)
+class Prevented(Result):
+    """What prevents a stable speed range where there is none: at the grid speed where the fewest
+    roots are unstable, the modes still unstable there (named as people read them: ``wobble``,
+    ``fork-bending``, ``weave, real (upper)``) and one root of each (the upper of a pair).
+
+    Attributes
+    ----------
+    speed : float
+        The grid speed (m/s) where the fewest roots have ``Re > 0`` (the first such speed).
+    modes : tuple of str
+        The unstable modes there.
+    roots : tuple of complex
+        One unstable root (1/s) of each mode: its real part is the growth rate, its imaginary
+        part the frequency (rad/s).
+    """
+
+    speed: float = quantity("m/s")
+    modes: tuple = ()
+    roots: tuple = quantity("1/s", default=())
+
+    def to_dict(self):
+        """``{"speed", "unstable_modes", "roots": [[re, im], ...]}``."""
+        return {"speed": self.speed, "unstable_modes": list(self.modes),
+                "roots": [[float(r.real), float(r.imag)] for r in self.roots]}
+
+    def text(self):
+        """One line: ``at 4.5 m/s, wobble (+1.2 1/s, 7.35 Hz) stays unstable``."""
+        parts = [f"{m} ({r.real:+.3g} 1/s{f', {abs(r.imag) / (2 * np.pi):.3g} Hz' if r.imag else ', real'})"
+                 for m, r in zip(self.modes, self.roots)]
+        return f"at {self.speed:g} m/s, where fewest roots are unstable: {', '.join(parts)}"
+
+
+def prevented(modes):
+    """:class:`Prevented` of :class:`~bikemass.analysis.engine.modes.Modes` with no stable grid speed."""
+    unstable = modes.eigenvalues.real > 0
+    k = int(np.argmin(unstable.sum(axis=1)))
+    names, roots = modes.names()[k], modes.eigenvalues[k]
+    found = {}
+    for c in np.flatnonzero(unstable[k]):
+        if names[c] not in found or roots[c].imag > found[names[c]].imag:
+            found[names[c]] = complex(roots[c])
+    ordered = sorted(found.items(), key=lambda item: -item[1].real)
+    return Prevented(float(modes.speeds[k]), tuple(m for m, _ in ordered), tuple(r for _, r in ordered))
+
+
+@dataclass(frozen=True, eq=False)
 class StabilityResult(Result):
     """Modes, critical speeds and stable speed ranges of one linear model (``bm.stability``).
 
@@ -142,6 +188,13 @@ class StabilityResult(Result):
         """``((start, stop), ...)`` (m/s) where every mode is strictly stable (exact ends)."""
         return self.ranges["strict"]["exact"]
 
+    @property
+    def prevented_by(self):
+        """Where no speed of the span is strictly stable, the modes that prevent it
+        (:class:`Prevented`: at the grid speed where the fewest roots are unstable); ``None`` when a
+        stable range exists."""
+        return None if self.stable_speeds else prevented(self.modes)
+
     def mode_crossings(self, label):
         """The crossings of the tracked mode ``label`` (a pair's crossing counts for both members)."""
         return tuple(c for c in self.crossings if c.mode == label or c.mode == family(label) != label)
@@ -163,6 +216,7 @@ class StabilityResult(Result):
             **({"wobble_speeds": list(self.wobble_speeds)} if self.wobble_speeds else {}),
             "crossings": [c.to_dict() for c in self.crossings],
             "unstable_at_start": [u.to_dict() for u in self.unstable_at_start],
+            **({"no_stable_range": self.prevented_by.to_dict()} if not self.stable_speeds else {}),
             "marginal_threshold": self.marginal,
             "ranges": ranges(self.ranges),
             "modes": {label: ranges(r) for label, r in {"weave": self.weave_ranges, **self.mode_ranges}.items()},
@@ -171,6 +225,7 @@ class StabilityResult(Result):
     def units(self):
         """The ``units`` block of :meth:`to_dict`."""
         return {"weave_speeds": "m/s", "capsize_speeds": "m/s", "wobble_speeds": "m/s", **Crossing.field_units(),
+                "roots": "1/s (real, imaginary)",
                 "marginal_threshold": "rad/s", "ranges": "m/s", "modes": "m/s"}
 
     def display_rows(self):
@@ -189,6 +244,8 @@ class StabilityResult(Result):
         if self.unstable_at_start:
             rows.append((f"unstable from {v[0]:g} m/s",
                          ", ".join(u.mode or u.kind for u in self.unstable_at_start), ""))
+        if not self.stable_speeds:
+            rows.append(("no stable speeds", self.prevented_by.text(), ""))
         return rows + [("stable (strict)", spans(self.stable_speeds), "m/s"),
                        (f"stable (marginal, |lambda| < {self.marginal:g} rad/s)",
                         spans(self.ranges["marginal"]["exact"]), "m/s"),
