@@ -243,7 +243,7 @@ def test_web_figures_name_an_upload_by_its_name():
     title = fig.axes[0].get_title()
     assert " ".join(title.split()).startswith(LONG_NAME) and "upload-" not in title and _titles_inside(fig)
     fr = bm.frequency_response(engine.model(state), 5.0, "steer-torque", "roll-angle")
-    assert "upload-" not in _bode_figure(fr, state, engine.bike_name(state)).axes[0].get_title()
+    assert "upload-" not in _bode_figure(fr, engine.bike_name(state)).axes[0].get_title()
 
 
 @pytest.mark.parametrize("argv", [

@@ -137,7 +137,7 @@ def test_sweep_chunks_are_evaluated_inside_the_limit(monkeypatch, tmp_path):
     def outcomes(model, spec, columns, count):
         seen.append(blas_threads())
         return Outcomes({k: np.full(count, np.nan) for k in NUMBERS}, [None] * count)
-    monkeypatch.setattr(sweep_evaluate, "_scenario", lambda scenario: None)
+    monkeypatch.setattr(sweep_evaluate, "_scenario", lambda scenario, inputs=None: None)
     monkeypatch.setattr(sweep_evaluate, "evaluate_outcomes", outcomes)
     (tmp_path / "s.yaml").write_text("bike: benchmark\nvary: {c: [0.07, 0.08]}\n")
     finished = sweep_evaluate.finish_chunk(read_spec(str(tmp_path / "s.yaml")), sweep_evaluate.Chunk(0, 2))

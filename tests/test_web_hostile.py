@@ -272,11 +272,18 @@ def test_states_name_no_paths():
         PageState.from_query({"stiffness": "/etc/passwd"})
 
 
-def test_figures_name_an_upload_by_its_file_not_its_secret_name(app):
+def test_figures_name_an_upload_by_its_name_not_its_secret_name(app):
+    """An upload's figures carry the bicycle's ``name:`` (issue 35: not a file name, never ``upload-<secret>``),
+    and the file name it was uploaded as where the file has no ``name:``."""
     from bikemass.web.page import _bike_shown, _eigenvalue_figure
     name = app.engine.add_upload("my bike.yaml", (frames_dir() / "benchmark.yaml").read_bytes())
     state = PageState(bike=name, rider="none")
-    assert _bike_shown(app.engine, state) == "my bike.yaml"
+    assert _bike_shown(app.engine, state) == "Benchmark (Meijaard et al. 2007)"
     figure = _eigenvalue_figure(app.engine.evaluate(state).stability, state, _bike_shown(app.engine, state))
     titles = [figure._suptitle.get_text() if figure._suptitle else ""] + [a.get_title() for a in figure.axes]
-    assert any(t.startswith("my bike.yaml, no rider") for t in titles) and not any("upload-" in t for t in titles)
+    assert any(" ".join(t.split()).startswith("Benchmark (Meijaard et al. 2007), no rider") for t in titles)
+    assert not any("upload-" in t for t in titles)
+    text = "\n".join(line for line in (frames_dir() / "benchmark.yaml").read_text().splitlines()
+                     if not line.startswith("name:"))
+    unnamed = app.engine.add_upload("no name.yaml", text.encode())
+    assert _bike_shown(app.engine, PageState(bike=unnamed, rider="none")) in ("no name.yaml", "no name")

@@ -287,10 +287,14 @@ class Engine:
     def bike_name(self, state):
         """The name figures give the bicycle of ``state``: its file's ``name:`` (an upload's too,
         never ``upload-<digest>``), else the uploaded file's name or the shipped name."""
+        upload = state.bike.startswith(UPLOAD_PREFIX)
         try:
-            return self.bicycle(state.bicycle_key).name or state.bike
+            name = self.bicycle(state.bicycle_key).name
         except InputError:
-            return self.upload_label(state.bike) if state.bike.startswith(UPLOAD_PREFIX) else state.bike
+            name = None
+        if upload and (not name or name == Path(self._uploads.get(state.bike, "upload")).stem):
+            return self.upload_label(state.bike)            # no name: of its own (the stored file's stem)
+        return name or state.bike
 
     def sizes(self, bike):
         """The size names of ``bike``'s size run, ``()`` if it has none."""
