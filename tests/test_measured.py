@@ -246,7 +246,8 @@ def test_measured_inputs_are_refused_on_other_bicycles_and_named_when_unknown():
 
 
 @pytest.mark.parametrize("name, bad, key", [("nF", "0", "nF"), ("TtP1", "-1.2", "TtP1"), ("d", "0.01", "lam"),
-                                            ("l", "0.001", "l"), ("mB", "abc", "mB"), ("aB1", "nan", "aB1")])
+                                            ("l", "0.001", "l"), ("mB", "abc", "mB"), ("aB1", "nan", "aB1"),
+                                            ("TtB2", "-2.0", "TtB2")])
 def test_measurements_that_give_no_bicycle_are_refused_naming_the_key(tmp_path, name, bad, key):
     """Nonsense measurements: one InputError naming the key, no numpy warning, no traceback."""
     text = "\n".join(f"{name} = {bad}" if ln.split("=")[0].strip() == name else ln
@@ -257,6 +258,23 @@ def test_measurements_that_give_no_bicycle_are_refused_naming_the_key(tmp_path, 
         warnings.simplefilter("error", RuntimeWarning)
         with pytest.raises(InputError, match=rf"\b{key}\b"):
             bm.load_measured(path)
+    assert main(["params", str(path)]) == 2
+
+
+@pytest.mark.parametrize("turn", [0.0, 180.0])
+def test_three_orientations_about_two_axes_are_refused_naming_the_repeat(tmp_path, turn):
+    """Three pendulum orientations of which two share an axis (the same angle, or 180 deg apart) give
+    no inertia tensor (three unknowns, two equations): one InputError naming the repeat; a fourth
+    distinct axis (RigidMeasured: five orientations) would make it solvable again."""
+    lines = (DATA / "BrowserMeasured.txt").read_text().splitlines()
+    alpha = {ln.split("=")[0].strip(): ln.split("=")[1].split("+/-")[0] for ln in lines if ln.startswith("alphaB")}
+    assert len(alpha) == 3
+    text = "\n".join(f"alphaB2 = {float(alpha['alphaB1']) + turn}" if ln.startswith("alphaB2") else ln
+                     for ln in lines)
+    path = tmp_path / "BadMeasured.txt"
+    path.write_text(text)
+    with pytest.raises(InputError, match=r"alphaB2: .*three different axes"):
+        bm.load_measured(path)
     assert main(["params", str(path)]) == 2
 
 
