@@ -95,3 +95,15 @@ def test_the_cargo_has_damping_line_gains_but_no_stable_loop():
 def test_a_bad_tuning_is_refused():
     with pytest.raises(bm.InputError, match="tuning"):
         bm.handling(bm.parameters("benchmark"), [5.0], tuning="cma-es")
+
+
+@pytest.mark.parametrize("tuning", ["hmh2012", "bmd2016"])
+def test_no_gains_at_standstill(tuning):
+    """At 0 m/s the heading moves the bicycle no sideways (y' = v psi: the lateral loop's open-loop
+    gain is zero, a limit), so no k_y exists: the speed gets no gains (was k_y ~ 6e8 from round-off
+    with bmd2016), and 0.1 m/s still gets finite ones."""
+    with pytest.warns(bm.BikemassWarning, match="0 m/s"):
+        result = bm.handling(bm.parameters("benchmark"), [0.0, 0.1], tuning=tuning)
+    assert result.gains[0] is None
+    if result.gains[1] is not None:
+        assert np.all(np.isfinite(np.asarray(tuple(result.gains[1]), dtype=float)))
