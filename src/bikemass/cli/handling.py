@@ -518,7 +518,7 @@ def run_handling(args):
             return dialect.result_document(result.to_dict(), result.unit_block(), fmt)
         if fmt == "csv":
             return handling_csv(result)
-        return handling_text(result, _title(args))
+        return handling_text(result, _title(args), args.tuning)
     dialect.emit(args, render)
     if args.plot:
         # lazy: matplotlib only for a figure
@@ -557,8 +557,9 @@ def _finite(x):
     return float(x) if math.isfinite(x) else None
 
 
-def handling_text(result, title):
-    """The gains, stability and HQM peak at every speed as a text table."""
+def handling_text(result, title, tuning="hmh2012"):
+    """The gains, stability and HQM peak at every speed as a text table (the title names a tuning other
+    than the default: the gains column says only "tuned")."""
     # lazy: the library loads numpy; bikemass --help must not
     from ..analysis.handling.gains import NAMES
     # lazy: the library loads numpy; bikemass --help must not
@@ -570,5 +571,6 @@ def handling_text(result, title):
                                                      result.gain_source)]
     headers = ["speed (m/s)", "k_delta", "k_phi_dot", "k_phi", "k_psi", "k_y", "stable", "HQM peak",
                "at (rad/s)", "level", "gains"]
-    return (f"{title}: Hess, Moore & Hubbard (2012) rider, lateral feedback {result.lateral}\n"
+    tuned_by = "" if tuning == "hmh2012" else f", gains tuned by {tuning}"
+    return (f"{title}: Hess, Moore & Hubbard (2012) rider, lateral feedback {result.lateral}{tuned_by}\n"
             + table(headers, rows, floatfmt="{:.4f}"))
