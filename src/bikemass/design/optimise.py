@@ -14,6 +14,7 @@ do not, ``converged`` is false and the result says along which variable the kink
 
 import os
 import time
+import warnings
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
@@ -202,6 +203,9 @@ def _search(spec, problem, progress, start_time):
         return problem.value(target_metric, x_of(u))
 
     centre = np.full(n, 0.5)
+    with warnings.catch_warnings():     # the design as given: a bad bicycle, rider or model is its own error,
+        warnings.simplefilter("ignore")  # not the box's (its warnings are the designs' to give)
+        problem.scenario.build()
     try:
         scale = abs(raw(centre)) or 1.0
     except InputError as exc:
