@@ -518,7 +518,9 @@ def run_handling(args):
             return dialect.result_document(result.to_dict(), result.unit_block(), fmt)
         if fmt == "csv":
             return handling_csv(result)
-        return handling_text(result, _title(args), args.tuning)
+        # the gains column says "tuned" for either tuning: the title names one other than the default
+        tuned_by = "" if args.tuning == "hmh2012" else f", gains tuned by {args.tuning}"
+        return handling_text(result, _title(args) + tuned_by)
     dialect.emit(args, render)
     if args.plot:
         # lazy: matplotlib only for a figure
@@ -557,9 +559,8 @@ def _finite(x):
     return float(x) if math.isfinite(x) else None
 
 
-def handling_text(result, title, tuning="hmh2012"):
-    """The gains, stability and HQM peak at every speed as a text table (the title names a tuning other
-    than the default: the gains column says only "tuned")."""
+def handling_text(result, title):
+    """The gains, stability and HQM peak at every speed as a text table."""
     # lazy: the library loads numpy; bikemass --help must not
     from ..analysis.handling.gains import NAMES
     # lazy: the library loads numpy; bikemass --help must not
@@ -571,6 +572,5 @@ def handling_text(result, title, tuning="hmh2012"):
                                                      result.gain_source)]
     headers = ["speed (m/s)", "k_delta", "k_phi_dot", "k_phi", "k_psi", "k_y", "stable", "HQM peak",
                "at (rad/s)", "level", "gains"]
-    tuned_by = "" if tuning == "hmh2012" else f", gains tuned by {tuning}"
-    return (f"{title}: Hess, Moore & Hubbard (2012) rider, lateral feedback {result.lateral}{tuned_by}\n"
+    return (f"{title}: Hess, Moore & Hubbard (2012) rider, lateral feedback {result.lateral}\n"
             + table(headers, rows, floatfmt="{:.4f}"))
