@@ -8,6 +8,10 @@ deviations to 1e-6 relative (both exact first-order propagation: measured 6e-14)
 ``lam_std="bicycleparameters"``.  The default ``lam_std="implicit"`` differs from the peer only on
 the four bicycles whose steer axis follows from the offsets ``h1..h5``; there it is checked against
 a central finite difference of the peer's own nominal computation.
+
+The ``test_contract_*`` tests hold bikemass to itself (a measured bicycle read through every door,
+written and read back, propagated by the command as by the library), the numbers themselves being
+held to the peer above.
 """
 
 import shutil
@@ -152,7 +156,7 @@ def test_covariance_holds_the_standard_deviations_and_is_positive_semidefinite()
     assert abs(C[i, j]) > 0                                       # the trail shares the wheel radius
 
 
-def test_yaml_form_reads_as_the_text():
+def test_contract_yaml_form_reads_as_the_text():
     text = ours(DATA / "BrowserMeasured.txt")
     shipped = bm.load_measured("browser-measured")
     for k, (v, s) in text.items():
@@ -171,7 +175,7 @@ def test_missing_measurement_names_the_key(tmp_path):
 
 # -- a measured bicycle everywhere a bicycle is read -------------------------------------------------
 
-def test_load_bicycle_takes_a_measured_file_and_keeps_its_std():
+def test_contract_load_bicycle_takes_a_measured_file_and_keeps_its_std():
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         bike = bm.load_bicycle(DATA / "PistaMeasured.txt")
@@ -181,7 +185,7 @@ def test_load_bicycle_takes_a_measured_file_and_keeps_its_std():
     assert bm.Scenario(str(DATA / "PistaMeasured.txt")).file_std == {k: v for k, v in direct.std.items() if v > 0}
 
 
-def test_std_survives_yaml_and_json_and_the_bicycleparameters_text(tmp_path, capsys):
+def test_contract_std_survives_yaml_and_json_and_the_bicycleparameters_text(tmp_path, capsys):
     """``params`` of a measured bicycle writes its standard deviations (YAML/JSON ``uncertainty:``,
     BicycleParameters' ``value+/-std``); read back, they are the same (bit for bit: repr)."""
     source = str(DATA / "FisherMeasured.txt")
@@ -198,7 +202,7 @@ def test_std_survives_yaml_and_json_and_the_bicycleparameters_text(tmp_path, cap
     assert document["uncertainty"]["c"] == expected["c"]
 
 
-def test_uncertainty_command_propagates_the_measurements(tmp_path):
+def test_contract_uncertainty_command_propagates_the_measurements(tmp_path):
     """``bikemass uncertainty <Name>Measured.txt`` takes the 40 measurements with a std as its independent
     inputs (the bicycle recomputed from them): the weave speed's linear std equals ``sqrt(g' C g)``
     with ``g`` the exact sensitivities (``bm.sensitivity``) and ``C`` the 26 parameters' covariance
@@ -287,7 +291,7 @@ def test_yaml_form_refuses_a_value_that_is_not_a_number(tmp_path):
         bm.load_bicycle(path)
 
 
-def test_uncertainty_defaults_to_the_bicycles_own_spreads():
+def test_contract_uncertainty_defaults_to_the_bicycles_own_spreads():
     """Contract test: ``bm.uncertainty(BIKE)`` without spreads takes the measurements of a bicycle
     computed from them, as the command does; a bicycle without standard deviations is refused."""
     source = str(DATA / "YellowMeasured.txt")
@@ -301,7 +305,7 @@ def test_uncertainty_defaults_to_the_bicycles_own_spreads():
         bm.uncertainty("benchmark")
 
 
-def test_a_yaml_parameter_file_carries_std_as_value_plus_minus_or_a_block(tmp_path):
+def test_contract_a_yaml_parameter_file_carries_std_as_value_plus_minus_or_a_block(tmp_path):
     """BicycleParameters' ``value+/-std`` in a YAML parameter file, or an ``uncertainty:`` block, are
     the file's standard deviations (the text file's the same); both for one name is refused."""
     text = bm.load_parameter_text(Path(bp.__file__).parent / "app-data" / "bicycles" / "Browser" / "Parameters"
