@@ -20,7 +20,7 @@ import yaml
 
 import bikemass as bm
 from bikemass.cli.main import main
-from meijaard import C1, G, K0, K2, M, state_matrix
+from meijaard import C1, G, K0, K2, M, roll_per_steer_torque, state_matrix
 
 STATES = ("roll-angle", "steer-angle", "roll-rate", "steer-rate", "heading", "lateral")
 TOL = 1e-12
@@ -128,7 +128,9 @@ def test_outputs_option_and_refusals(tmp_path, capsys):
 
 
 def test_to_control_frequency_response_equals_bikemass():
-    """python-control's own frequency response of the exported system (its evaluation, not bikemass's)."""
+    """python-control's own frequency response of the exported system (its evaluation, not bikemass's),
+    and for roll angle / steer torque that of Meijaard et al.'s printed matrices (1e-9 relative: the
+    printed digits move the response by under 1e-12)."""
     control = pytest.importorskip("control")
     p = bm.parameters("benchmark")
     sys = bm.linear_model(p).to_control(5.0)
@@ -140,6 +142,8 @@ def test_to_control_frequency_response_equals_bikemass():
             siso = sys[sys.output_labels.index(out), sys.input_labels.index(inp)]
             g = np.asarray(control.frequency_response(siso, w).complex).ravel()
             np.testing.assert_allclose(g, fr.values, rtol=1e-9, atol=0)
+            if (inp, out) == ("steer-torque", "roll-angle"):
+                np.testing.assert_allclose(g, roll_per_steer_torque(5.0, w), rtol=1e-9, atol=0)
 
 
 def test_to_scipy_frequency_response_equals_bikemass():
