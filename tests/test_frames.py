@@ -138,7 +138,7 @@ def test_contract_analysis_frames_hold_their_results():
 def test_no_rows_no_frame_and_pandas_missing(monkeypatch):
     with pytest.raises(TypeError, match="no rows"):
         bm.matrices(P).to_frame()
-    with pytest.raises(ValueError, match="tables: eigenvalues, crossings"):
+    with pytest.raises(bm.InputError, match="tables: eigenvalues, crossings"):
         bm.stability(P).to_frame("nope")
     monkeypatch.setitem(sys.modules, "pandas", None)
     with pytest.raises(ImportError, match=r"bikemass\[pandas\]"):

@@ -163,3 +163,14 @@ def test_richer_model_to_control_keeps_names():
     sys = model.to_control(5.0)
     assert sys.nstates == len(model.states) > 4 and sys.state_labels == list(model.state_names)
     np.testing.assert_array_equal(sys.A, model.state_matrix(5.0))
+
+
+@pytest.mark.parametrize("call, key", [
+    (lambda m: m.to_scipy(float("nan")), "speed"), (lambda m: m.to_scipy(-1.0), "speed"),
+    (lambda m: m.to_scipy("5"), "speed"), (lambda m: m.to_scipy(5.0, outputs=["yaw"]), "outputs"),
+])
+def test_exports_refuse_a_bad_speed_or_output_naming_it(call, key):
+    """A speed the analyses refuse (not finite, negative, not a number) is refused by the exports too,
+    not turned into a state space of NaN; an unknown output names the model's outputs."""
+    with pytest.raises(bm.InputError, match=rf"^{key}: "):
+        call(bm.linear_model(bm.parameters("benchmark")))
