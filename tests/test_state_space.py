@@ -125,6 +125,9 @@ def test_outputs_option_and_refusals(tmp_path, capsys):
     assert main(["state-space", "benchmark", "--speed", "5", "--outputs", "roll-angel", "-o",
                  str(tmp_path / "x.json")]) == 2
     assert "did you mean 'roll-angle'" in capsys.readouterr().err and not (tmp_path / "x.json").exists()
+    assert main(["state-space", "benchmark", "--speed", "5", "--outputs", "lateral,roll-angle,lateral", "-o",
+                 str(tmp_path / "x.json")]) == 2         # two rows of C named alike: refused
+    assert "--outputs: lateral: each output once" in capsys.readouterr().err and not (tmp_path / "x.json").exists()
 
 
 def test_to_control_frequency_response_equals_bikemass():

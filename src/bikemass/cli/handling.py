@@ -314,6 +314,9 @@ def run_state_space(args):
     outputs = None
     if args.outputs:
         outputs = [_named(name.strip(), model.output_names, "--outputs") for name in args.outputs.split(",")]
+        twice = next((name for k, name in enumerate(outputs) if name in outputs[:k]), None)
+        if twice:                    # two rows of C with one name: a reader of the file cannot tell them apart
+            raise InputError("--outputs", twice, "each output once")
     ss = state_space(model, args.speed, outputs)
     if fmt == "mat":
         dialect.write_data(args, ss.to_mat())
