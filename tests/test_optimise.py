@@ -192,6 +192,18 @@ def test_a_bicycle_or_rider_that_does_not_build_is_its_own_error_as_in_a_sweep(t
     assert len(err.splitlines()) == 1 and words in err and "centre" not in err
 
 
+def test_a_search_that_reaches_an_unbuildable_design_keeps_its_start_and_says_why():
+    """A box wider than bicycles (lam to 3 rad, beyond the horizontal steer axis at pi/2): the search
+    stops where a design cannot be built; the answer is its start (built by the screening, within
+    (-pi/2, pi/2)), not converged, the message naming the key, and no false 'no design met every
+    constraint' (there are none)."""
+    spec = OptimiseSpec(source="test", bike="benchmark", variables=(DesignVariable("lam", -3.0, 3.0),),
+                        sense="maximise", objective="stable-range")
+    result = bm.optimise(spec)
+    assert abs(result.variables["lam"]) < math.pi / 2 and not result.converged
+    assert "lam" in result.message and not any("constraint" in note for note in result.notes)
+
+
 def test_every_metric_has_a_unit_and_a_description():
     for m in catalogue().values():
         assert m.unit and m.description and m.kind in ("speed", "parameters", "geometry", "handling")

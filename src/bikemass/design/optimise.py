@@ -310,8 +310,10 @@ def _search(spec, problem, progress, start_time):
                 polished = _minimax(problem, x_of, span, scale, record, cons, np.clip(res.x, 0.0, 1.0), minimize)
                 if violation(polished.x[:n]) <= FEASIBLE and objective(polished.x[:n]) <= objective(res.x):
                     res = polished
-        except InputError as exc:
-            runs.append((True, np.inf, np.inf, np.array(u0), False, f"a design the search reached failed: {exc}"))
+        except InputError as exc:          # the start stands (the screening built it), with why the search stopped
+            v0 = violation(np.array(u0))
+            runs.append((v0 > FEASIBLE, v0, float(objective(np.array(u0))), np.array(u0), False,
+                         f"a design the search reached failed: {exc}"))
             continue
         u = np.clip(res.x[:n], 0.0, 1.0)
         v = violation(u)
