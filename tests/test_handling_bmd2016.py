@@ -49,7 +49,8 @@ def test_the_optimal_bicycles_get_their_published_gains(bicycle, speed):
 
 def test_the_benchmark_gets_the_10_db_rules_gains_at_5_m_s():
     """Moore, Hubbard & Hess (2016) chose the damping lines as those the 10 dB rule gives the benchmark at
-    5 m/s: the two tunings agree there (to 2e-4 relative: the 10 dB rule's grid of frequencies)."""
+    5 m/s: the two tunings agree there (to 2e-3 relative, measured 1e-3 at most on k_phi_dot: the 10 dB
+    rule's grid of frequencies); k_delta is the published 46.5457 to 2e-4."""
     p = bm.parameters("benchmark")
     a = np.array(tuple(bm.handling(p, [5.0]).gains[0]))
     b = np.array(tuple(bm.handling(p, [5.0], tuning="bmd2016").gains[0]))
