@@ -249,6 +249,16 @@ def test_measured_inputs_are_refused_on_other_bicycles_and_named_when_unknown():
     assert moved.mB == 10.86 and moved.IByy != scenario.parameters().IByy     # the pendulum formula holds mB
 
 
+def test_an_unknown_measurement_as_a_spread_is_named():
+    """``measured.<name>`` in the spreads of ``uncertainty`` (its own code path: the nominal value is
+    read before any build) names the key and the file's measurements (was an internal KeyError)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        scenario = bm.Scenario(str(DATA / "BrowserMeasured.txt"))
+        with pytest.raises(InputError, match=r"measured\.nosuch: a measurement of this file \('lF, "):
+            bm.uncertainty(scenario, {"measured.TtB1": 1e-3, "measured.nosuch": 1.0})
+
+
 @pytest.mark.parametrize("name, bad, key", [("nF", "0", "nF"), ("TtP1", "-1.2", "TtP1"), ("d", "0.01", "lam"),
                                             ("l", "0.001", "l"), ("mB", "abc", "mB"), ("aB1", "nan", "aB1"),
                                             ("TtB2", "-2.0", "TtB2")])
