@@ -14,21 +14,8 @@ import pytest
 
 import bikemass as bm
 from bikemass.cli.main import main
+from meijaard import CAPSIZE, WEAVE, roll_per_steer_torque
 
-M = np.array([[80.81722, 2.31941332208709], [2.31941332208709, 0.29784188199686]])
-C1 = np.array([[0.0, 33.86641391492494], [-0.85035641456978, 1.68540397397560]])
-K0 = np.array([[-80.95, -2.59951685249872], [-2.59951685249872, -0.80329488458618]])
-K2 = np.array([[0.0, 76.59734589573222], [0.0, 2.65431523794604]])
-G = 9.81
-WEAVE, CAPSIZE = 4.29238253634111, 6.02426201538837
-
-
-def printed_response(v, w):
-    """roll angle / steer torque (rad/(N m)) at angular frequencies ``w`` from the printed matrices."""
-    Minv = np.linalg.inv(M)
-    A = np.block([[np.zeros((2, 2)), np.eye(2)], [-Minv @ (G * K0 + v ** 2 * K2), -Minv @ (v * C1)]])
-    b = np.concatenate([np.zeros(2), Minv[:, 1]])
-    return np.array([np.linalg.solve(1j * x * np.eye(4) - A, b)[0] for x in w])
 
 
 def run(capsys, *argv):
@@ -44,7 +31,7 @@ def test_bode_hz_frequencies_in_hz(capsys):
     f = np.array(doc["frequencies"])
     np.testing.assert_allclose(f, np.geomspace(0.1, 10, 21), rtol=1e-14)
     assert doc["units"]["frequencies"] == "Hz"
-    g = printed_response(5.0, 2 * np.pi * f)
+    g = roll_per_steer_torque(5.0, 2 * np.pi * f)
     np.testing.assert_allclose(doc["magnitude"], 20 * np.log10(np.abs(g)), rtol=0, atol=1e-8)
     csv = run(capsys, "bode", "benchmark", "--speed", 5, "--input", "steer-torque", "--output", "roll-angle",
               "--hz", "--frequencies", "1:10:2", "--format", "csv")

@@ -49,7 +49,8 @@ def test_the_optimal_bicycles_get_their_published_gains(bicycle, speed):
 
 def test_the_benchmark_gets_the_10_db_rules_gains_at_5_m_s():
     """Moore, Hubbard & Hess (2016) chose the damping lines as those the 10 dB rule gives the benchmark at
-    5 m/s: the two tunings agree there (to 2e-4 relative: the 10 dB rule's grid of frequencies)."""
+    5 m/s: the two tunings agree there (to 2e-3 relative, measured 1e-3 at most on k_phi_dot: the 10 dB
+    rule's grid of frequencies); k_delta is the published 46.5457 to 2e-4."""
     p = bm.parameters("benchmark")
     a = np.array(tuple(bm.handling(p, [5.0]).gains[0]))
     b = np.array(tuple(bm.handling(p, [5.0], tuning="bmd2016").gains[0]))
@@ -95,3 +96,15 @@ def test_the_cargo_has_damping_line_gains_but_no_stable_loop():
 def test_a_bad_tuning_is_refused():
     with pytest.raises(bm.InputError, match="tuning"):
         bm.handling(bm.parameters("benchmark"), [5.0], tuning="cma-es")
+
+
+@pytest.mark.parametrize("tuning", ["hmh2012", "bmd2016"])
+def test_no_gains_at_standstill(tuning):
+    """At 0 m/s the heading moves the bicycle no sideways (y' = v psi: the lateral loop's open-loop
+    gain is zero, a limit), so no k_y exists: the speed gets no gains (was k_y ~ 6e8 from round-off
+    with bmd2016), and 0.1 m/s still gets finite ones."""
+    with pytest.warns(bm.BikemassWarning, match="0 m/s"):
+        result = bm.handling(bm.parameters("benchmark"), [0.0, 0.1], tuning=tuning)
+    assert result.gains[0] is None
+    if result.gains[1] is not None:
+        assert np.all(np.isfinite(np.asarray(tuple(result.gains[1]), dtype=float)))

@@ -354,3 +354,12 @@ def test_docstring_examples_run(module):
     mod = importlib.import_module(f"bikemass.analysis.handling.{module}")
     failed, attempted = doctest.testmod(mod, optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
     assert attempted and not failed
+
+
+def test_handling_table_names_a_tuning_other_than_the_default(capsys):
+    """The gains column says "tuned" for either tuning, so the title names bmd2016 (the default's title is
+    as docs/handling.md shows it)."""
+    code, out, _ = run(capsys, "handling", "benchmark", "--speeds", 5, "--tuning", "bmd2016")
+    assert code == 0 and "rigid frame, gains tuned by bmd2016: Hess, Moore & Hubbard" in out.splitlines()[0]
+    code, out, _ = run(capsys, "handling", "benchmark", "--speeds", 5)
+    assert code == 0 and "tuned by" not in out.splitlines()[0]

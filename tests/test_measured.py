@@ -8,6 +8,10 @@ deviations to 1e-6 relative (both exact first-order propagation: measured 6e-14)
 ``lam_std="bicycleparameters"``.  The default ``lam_std="implicit"`` differs from the peer only on
 the four bicycles whose steer axis follows from the offsets ``h1..h5``; there it is checked against
 a central finite difference of the peer's own nominal computation.
+
+The ``test_contract_*`` tests hold bikemass to itself (a measured bicycle read through every door,
+written and read back, propagated by the command as by the library), the numbers themselves being
+held to the peer above.
 """
 
 import shutil
@@ -152,7 +156,7 @@ def test_covariance_holds_the_standard_deviations_and_is_positive_semidefinite()
     assert abs(C[i, j]) > 0                                       # the trail shares the wheel radius
 
 
-def test_yaml_form_reads_as_the_text():
+def test_contract_yaml_form_reads_as_the_text():
     text = ours(DATA / "BrowserMeasured.txt")
     shipped = bm.load_measured("browser-measured")
     for k, (v, s) in text.items():
@@ -171,7 +175,7 @@ def test_missing_measurement_names_the_key(tmp_path):
 
 # -- a measured bicycle everywhere a bicycle is read -------------------------------------------------
 
-def test_load_bicycle_takes_a_measured_file_and_keeps_its_std():
+def test_contract_load_bicycle_takes_a_measured_file_and_keeps_its_std():
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         bike = bm.load_bicycle(DATA / "PistaMeasured.txt")
@@ -181,7 +185,7 @@ def test_load_bicycle_takes_a_measured_file_and_keeps_its_std():
     assert bm.Scenario(str(DATA / "PistaMeasured.txt")).file_std == {k: v for k, v in direct.std.items() if v > 0}
 
 
-def test_std_survives_yaml_and_json_and_the_bicycleparameters_text(tmp_path, capsys):
+def test_contract_std_survives_yaml_and_json_and_the_bicycleparameters_text(tmp_path, capsys):
     """``params`` of a measured bicycle writes its standard deviations (YAML/JSON ``uncertainty:``,
     BicycleParameters' ``value+/-std``); read back, they are the same (bit for bit: repr)."""
     source = str(DATA / "FisherMeasured.txt")
@@ -198,7 +202,7 @@ def test_std_survives_yaml_and_json_and_the_bicycleparameters_text(tmp_path, cap
     assert document["uncertainty"]["c"] == expected["c"]
 
 
-def test_uncertainty_command_propagates_the_measurements(tmp_path):
+def test_contract_uncertainty_command_propagates_the_measurements(tmp_path):
     """``bikemass uncertainty <Name>Measured.txt`` takes the 40 measurements with a std as its independent
     inputs (the bicycle recomputed from them): the weave speed's linear std equals ``sqrt(g' C g)``
     with ``g`` the exact sensitivities (``bm.sensitivity``) and ``C`` the 26 parameters' covariance
@@ -245,8 +249,19 @@ def test_measured_inputs_are_refused_on_other_bicycles_and_named_when_unknown():
     assert moved.mB == 10.86 and moved.IByy != scenario.parameters().IByy     # the pendulum formula holds mB
 
 
+def test_an_unknown_measurement_as_a_spread_is_named():
+    """``measured.<name>`` in the spreads of ``uncertainty`` (its own code path: the nominal value is
+    read before any build) names the key and the file's measurements (was an internal KeyError)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        scenario = bm.Scenario(str(DATA / "BrowserMeasured.txt"))
+        with pytest.raises(InputError, match=r"measured\.nosuch: a measurement of this file \('lF, "):
+            bm.uncertainty(scenario, {"measured.TtB1": 1e-3, "measured.nosuch": 1.0})
+
+
 @pytest.mark.parametrize("name, bad, key", [("nF", "0", "nF"), ("TtP1", "-1.2", "TtP1"), ("d", "0.01", "lam"),
-                                            ("l", "0.001", "l"), ("mB", "abc", "mB"), ("aB1", "nan", "aB1")])
+                                            ("l", "0.001", "l"), ("mB", "abc", "mB"), ("aB1", "nan", "aB1"),
+                                            ("TtB2", "-2.0", "TtB2")])
 def test_measurements_that_give_no_bicycle_are_refused_naming_the_key(tmp_path, name, bad, key):
     """Nonsense measurements: one InputError naming the key, no numpy warning, no traceback."""
     text = "\n".join(f"{name} = {bad}" if ln.split("=")[0].strip() == name else ln
@@ -260,6 +275,23 @@ def test_measurements_that_give_no_bicycle_are_refused_naming_the_key(tmp_path, 
     assert main(["params", str(path)]) == 2
 
 
+@pytest.mark.parametrize("turn", [0.0, 180.0])
+def test_three_orientations_about_two_axes_are_refused_naming_the_repeat(tmp_path, turn):
+    """Three pendulum orientations of which two share an axis (the same angle, or 180 deg apart) give
+    no inertia tensor (three unknowns, two equations): one InputError naming the repeat; a fourth
+    distinct axis (RigidMeasured: five orientations) would make it solvable again."""
+    lines = (DATA / "BrowserMeasured.txt").read_text().splitlines()
+    alpha = {ln.split("=")[0].strip(): ln.split("=")[1].split("+/-")[0] for ln in lines if ln.startswith("alphaB")}
+    assert len(alpha) == 3
+    text = "\n".join(f"alphaB2 = {float(alpha['alphaB1']) + turn}" if ln.startswith("alphaB2") else ln
+                     for ln in lines)
+    path = tmp_path / "BadMeasured.txt"
+    path.write_text(text)
+    with pytest.raises(InputError, match=r"alphaB2: .*three different axes"):
+        bm.load_measured(path)
+    assert main(["params", str(path)]) == 2
+
+
 def test_yaml_form_refuses_a_value_that_is_not_a_number(tmp_path):
     document = yaml.safe_load(Path(bm.load_measured("browser-measured").source).read_text())
     document["TcB1"] = {"value": 1.7}
@@ -269,7 +301,7 @@ def test_yaml_form_refuses_a_value_that_is_not_a_number(tmp_path):
         bm.load_bicycle(path)
 
 
-def test_uncertainty_defaults_to_the_bicycles_own_spreads():
+def test_contract_uncertainty_defaults_to_the_bicycles_own_spreads():
     """Contract test: ``bm.uncertainty(BIKE)`` without spreads takes the measurements of a bicycle
     computed from them, as the command does; a bicycle without standard deviations is refused."""
     source = str(DATA / "YellowMeasured.txt")
@@ -283,7 +315,7 @@ def test_uncertainty_defaults_to_the_bicycles_own_spreads():
         bm.uncertainty("benchmark")
 
 
-def test_a_yaml_parameter_file_carries_std_as_value_plus_minus_or_a_block(tmp_path):
+def test_contract_a_yaml_parameter_file_carries_std_as_value_plus_minus_or_a_block(tmp_path):
     """BicycleParameters' ``value+/-std`` in a YAML parameter file, or an ``uncertainty:`` block, are
     the file's standard deviations (the text file's the same); both for one name is refused."""
     text = bm.load_parameter_text(Path(bp.__file__).parent / "app-data" / "bicycles" / "Browser" / "Parameters"

@@ -177,6 +177,30 @@ def test_a_bad_spec_is_one_line_naming_the_key(tmp_path, capsys, doc, key):
     assert len(err.splitlines()) == 1 and key in err and str(spec) in err
 
 
+@pytest.mark.parametrize("doc, words", [
+    ({"bike": "nosuchbike"}, "nosuchbike: (name): a bicycle file or one of"),
+    ({"bike": "jamis", "rider": "nosuch.yaml"}, "nosuch.yaml: (file): an existing pose file"),
+])
+def test_a_bicycle_or_rider_that_does_not_build_is_its_own_error_as_in_a_sweep(tmp_path, capsys, doc, words):
+    """Not 'variables: a box whose centre can be built: ...' (the box is fine)."""
+    spec = write_spec(tmp_path, {**doc, "variables": {"c": {"min": 0.05, "max": 0.1}}, "maximise": "stable-range"})
+    assert main(["optimise", str(spec)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and words in err and "centre" not in err
+
+
+def test_a_search_that_reaches_an_unbuildable_design_keeps_its_start_and_says_why():
+    """A box wider than bicycles (lam to 3 rad, beyond the horizontal steer axis at pi/2): the search
+    stops where a design cannot be built; the answer is its start (built by the screening, within
+    (-pi/2, pi/2)), not converged, the message naming the key, and no false 'no design met every
+    constraint' (there are none)."""
+    spec = OptimiseSpec(source="test", bike="benchmark", variables=(DesignVariable("lam", -3.0, 3.0),),
+                        sense="maximise", objective="stable-range")
+    result = bm.optimise(spec)
+    assert abs(result.variables["lam"]) < math.pi / 2 and not result.converged
+    assert "lam" in result.message and not any("constraint" in note for note in result.notes)
+
+
 def test_every_metric_has_a_unit_and_a_description():
     for m in catalogue().values():
         assert m.unit and m.description and m.kind in ("speed", "parameters", "geometry", "handling")

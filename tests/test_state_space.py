@@ -20,32 +20,13 @@ import yaml
 
 import bikemass as bm
 from bikemass.cli.main import main
+from meijaard import C1, G, K0, K2, M, roll_per_steer_torque, state_matrix
 
-# Meijaard et al. 2007, Sec. 4 (K0 without g), and Table 1 (w, c, lam)
-M = np.array([[80.81722, 2.31941332208709], [2.31941332208709, 0.29784188199686]])
-C1 = np.array([[0.0, 33.86641391492494], [-0.85035641456978, 1.68540397397560]])
-K0 = np.array([[-80.95, -2.59951685249872], [-2.59951685249872, -0.80329488458618]])
-K2 = np.array([[0.0, 76.59734589573222], [0.0, 2.65431523794604]])
-WHEELBASE, TRAIL, TILT, G = 1.02, 0.08, np.pi / 10, 9.81
 STATES = ("roll-angle", "steer-angle", "roll-rate", "steer-rate", "heading", "lateral")
 TOL = 1e-12
 """A from the printed matrices against A exported: the printed digits (14-15 significant) round the
 exact values by at most 5e-15 relative; through M^-1 that moves A's entries (at most 23 1/s^2 at
 5 m/s) by under 1e-13."""
-
-
-def meijaard_state_matrix(v):
-    """States in :data:`STATES` order: Meijaard's Eq. (A 1) in first-order form, with the heading
-    ``psi' = (v delta + c delta') cos(lam) / w`` and the rear contact's lateral ``y' = v psi``."""
-    A = np.zeros((6, 6))
-    A[:2, 2:4] = np.eye(2)
-    Minv = np.linalg.inv(M)
-    A[2:4, :2] = -Minv @ (G * K0 + v ** 2 * K2)
-    A[2:4, 2:4] = -Minv @ (v * C1)
-    A[4, 1] = v * np.cos(TILT) / WHEELBASE
-    A[4, 3] = TRAIL * np.cos(TILT) / WHEELBASE
-    A[5, 4] = v
-    return A
 
 
 def in_order(A, names):
@@ -69,7 +50,7 @@ def test_mat_A_is_meijaards_state_matrix(tmp_path):
     data = scipy.io.loadmat(export(tmp_path, "ss.mat"))
     states = names(data["states"])
     assert set(states) == set(STATES)
-    np.testing.assert_allclose(in_order(data["A"], states), meijaard_state_matrix(5.0), rtol=0, atol=TOL)
+    np.testing.assert_allclose(in_order(data["A"], states), state_matrix(5.0), rtol=0, atol=TOL)
     assert names(data["inputs"]) == ["roll-torque", "steer-torque"]
     assert data["B"].shape == (6, 2) and data["C"].shape == (7, 6) and data["D"].shape == (7, 2)
     assert names(data["outputs"])[:6] == states and names(data["state_units"])[:2] == ["rad", "rad"]
@@ -81,7 +62,7 @@ def test_mat_A_is_meijaards_state_matrix(tmp_path):
 def test_npz_A_B_are_meijaards(tmp_path):
     data = np.load(export(tmp_path, "ss.npz"))                     # no pickled objects: allow_pickle stays off
     states = [str(s) for s in data["states"]]
-    np.testing.assert_allclose(in_order(data["A"], states), meijaard_state_matrix(5.0), rtol=0, atol=TOL)
+    np.testing.assert_allclose(in_order(data["A"], states), state_matrix(5.0), rtol=0, atol=TOL)
     # B: M^-1 on the torques' rows (roll torque, steer torque act on roll and steer)
     index = [states.index(s) for s in ("roll-rate", "steer-rate")]
     np.testing.assert_allclose(data["B"][index], np.linalg.inv(M), rtol=0, atol=TOL)
@@ -93,7 +74,7 @@ def test_npz_A_B_are_meijaards(tmp_path):
 def test_json_yaml_carry_names_units_and_A(tmp_path, suffix):
     path = export(tmp_path, "ss" + suffix)
     doc = (json.loads if suffix == ".json" else yaml.safe_load)(path.read_text())
-    np.testing.assert_allclose(in_order(np.array(doc["A"]), doc["states"]), meijaard_state_matrix(5.0),
+    np.testing.assert_allclose(in_order(np.array(doc["A"]), doc["states"]), state_matrix(5.0),
                                rtol=0, atol=TOL)
     assert doc["units"]["speed"] == "m/s" and set(doc["units"]) >= {"A", "B", "C", "D", "mechanics_M"}
     assert doc["inputs"] == ["roll-torque", "steer-torque"] and doc["outputs"][-1] == "front-lateral"
@@ -121,7 +102,7 @@ def test_csv_layout_rebuilds_A(tmp_path):
     for r in rows:
         if r["matrix"] == "A":
             A[STATES.index(r["row"]), STATES.index(r["column"])] = float(r["value"])
-    np.testing.assert_allclose(A, meijaard_state_matrix(5.0), rtol=0, atol=TOL)
+    np.testing.assert_allclose(A, state_matrix(5.0), rtol=0, atol=TOL)
     roll_rate = next(r for r in rows if r["matrix"] == "A" and r["row"] == "roll-rate" and r["column"] == "steer-angle")
     assert (roll_rate["row unit"], roll_rate["column unit"]) == ("rad/s^2", "rad")
     k2 = [r for r in rows if r["matrix"] == "mechanics_K" and r["power"] == "2"]
@@ -144,10 +125,15 @@ def test_outputs_option_and_refusals(tmp_path, capsys):
     assert main(["state-space", "benchmark", "--speed", "5", "--outputs", "roll-angel", "-o",
                  str(tmp_path / "x.json")]) == 2
     assert "did you mean 'roll-angle'" in capsys.readouterr().err and not (tmp_path / "x.json").exists()
+    assert main(["state-space", "benchmark", "--speed", "5", "--outputs", "lateral,roll-angle,lateral", "-o",
+                 str(tmp_path / "x.json")]) == 2         # two rows of C named alike: refused
+    assert "--outputs: lateral: each output once" in capsys.readouterr().err and not (tmp_path / "x.json").exists()
 
 
 def test_to_control_frequency_response_equals_bikemass():
-    """python-control's own frequency response of the exported system (its evaluation, not bikemass's)."""
+    """python-control's own frequency response of the exported system (its evaluation, not bikemass's),
+    and for roll angle / steer torque that of Meijaard et al.'s printed matrices (1e-9 relative: the
+    printed digits move the response by under 1e-12)."""
     control = pytest.importorskip("control")
     p = bm.parameters("benchmark")
     sys = bm.linear_model(p).to_control(5.0)
@@ -159,6 +145,8 @@ def test_to_control_frequency_response_equals_bikemass():
             siso = sys[sys.output_labels.index(out), sys.input_labels.index(inp)]
             g = np.asarray(control.frequency_response(siso, w).complex).ravel()
             np.testing.assert_allclose(g, fr.values, rtol=1e-9, atol=0)
+            if (inp, out) == ("steer-torque", "roll-angle"):
+                np.testing.assert_allclose(g, roll_per_steer_torque(5.0, w), rtol=1e-9, atol=0)
 
 
 def test_to_scipy_frequency_response_equals_bikemass():
@@ -178,3 +166,14 @@ def test_richer_model_to_control_keeps_names():
     sys = model.to_control(5.0)
     assert sys.nstates == len(model.states) > 4 and sys.state_labels == list(model.state_names)
     np.testing.assert_array_equal(sys.A, model.state_matrix(5.0))
+
+
+@pytest.mark.parametrize("call, key", [
+    (lambda m: m.to_scipy(float("nan")), "speed"), (lambda m: m.to_scipy(-1.0), "speed"),
+    (lambda m: m.to_scipy("5"), "speed"), (lambda m: m.to_scipy(5.0, outputs=["yaw"]), "outputs"),
+])
+def test_exports_refuse_a_bad_speed_or_output_naming_it(call, key):
+    """A speed the analyses refuse (not finite, negative, not a number) is refused by the exports too,
+    not turned into a state space of NaN; an unknown output names the model's outputs."""
+    with pytest.raises(bm.InputError, match=rf"^{key}: "):
+        call(bm.linear_model(bm.parameters("benchmark")))

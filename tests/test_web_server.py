@@ -76,39 +76,35 @@ def fetch(url, headers=None):
 
 @pytest.mark.slow
 def test_a_cached_answer_does_not_wait_for_uncached_handling_requests():
-    """8 uncached /api/handling requests (about 1 s of computation each, one at a time under the
-    engine's lock) in flight; a cached /api/stability must come back at once (issue 35: within 1 s;
-    before, it queued behind them: 5.6 s with 16)."""
+    """8 uncached /api/handling requests in flight over HTTP, none able to finish (the test holds the
+    engine's lock, as a long computation would); a cached /api/stability must still come back, with
+    all 8 still waiting (issue 35: before, it queued behind them, 5.6 s with 16). No clock: an answer
+    that needed the lock could not come while the test holds it (bench_web.py measures the time)."""
     app = create_app()
     cached = "/api/stability?bike=benchmark&rider=none"
     with serving(app) as base:
         first = fetch(base + cached)
         assert first[0] == 200
-        done = []
+        done, again = [], []
 
         def handling(i):
             status = fetch(f"{base}/api/handling?bike=benchmark&rider=none&c={0.07 + 0.002 * i!r}")[0]
             done.append(status)
         threads = [threading.Thread(target=handling, args=(i,)) for i in range(8)]
-        for t in threads:
-            t.start()
+        reader = threading.Thread(target=lambda: again.append(fetch(base + cached)))
         lock = app.engine._lock
-        for _ in range(3000):          # until a handling computation holds the engine's lock (at most 30 s)
-            if not lock.acquire(blocking=False):
-                break
-            lock.release()
-            time.sleep(0.01)
-        else:
-            pytest.fail("no handling computation took the engine's lock")
-        start = time.perf_counter()
-        again = fetch(base + cached)
-        latency = time.perf_counter() - start
-        in_flight = 8 - len(done)
+        with lock:
+            for t in threads:
+                t.start()
+            reader.start()
+            reader.join(60)
+            answered, in_flight = not reader.is_alive(), 8 - len(done)
+        reader.join()
         for t in threads:
             t.join()
-    assert again[0] == 200 and json.loads(again[2]) == json.loads(first[2])
-    assert in_flight >= 1, "the handling requests had all finished: nothing was measured"
-    assert latency < 1.0, f"cached answer took {latency:.3f} s with {in_flight} handling requests in flight"
+    assert answered, "the cached answer waited for the engine's lock"
+    assert again[0][0] == 200 and json.loads(again[0][2]) == json.loads(first[2])
+    assert in_flight == 8, "a handling request finished without the engine's lock: nothing was held up"
     assert done == [200] * 8
 
 

@@ -150,9 +150,19 @@ def measured_data(nominal, std, source):
     for name, value in nominal.items():
         if not np.isfinite(value):
             raise InputError(source, name, f"a finite number, got {short(value)}")
-    for name in needed:
+    periods = [f"Tt{part}{i}" for part, found in orientations.items() for i in found]
+    for name in (*needed, *periods):
         if name not in ("f", *OFFSET_GEOMETRY, *SPLIT_REFERENCE) and not nominal[name] > 0:
             raise InputError(source, name, f"a positive number (a length, mass, count or period), got {nominal[name]!r}")
+    for part, found in orientations.items():
+        axes = {}                                                   # alpha and alpha + 180 deg: one axis
+        for i in found:
+            axes.setdefault(round(nominal[f"alpha{part}{i}"] % 180.0, 9), f"alpha{part}{i}")
+        if len(axes) < 3:
+            repeated = next(f"alpha{part}{i}" for i in found if f"alpha{part}{i}" not in axes.values())
+            raise InputError(source, repeated, f"pendulum orientations of body {part} about at least "
+                             f"three different axes (angles apart by other than a multiple of 180 deg), got "
+                             + ", ".join(f"{nominal[f'alpha{part}{i}']:g}" for i in found) + " deg")
     if split and not nominal["l"] > (nominal["d5"] + nominal["d6"]) / 2:
         raise InputError(source, "l", "the outer distance from the front axle to the handlebar reference circle: "
                          f"more than their radii together ({(nominal['d5'] + nominal['d6']) / 2!r} m)")

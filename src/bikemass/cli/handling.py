@@ -330,6 +330,9 @@ def run_state_space(args):
     outputs = None
     if args.outputs:
         outputs = [_named(name.strip(), model.output_names, "--outputs") for name in args.outputs.split(",")]
+        twice = next((name for k, name in enumerate(outputs) if name in outputs[:k]), None)
+        if twice:                    # two rows of C with one name: a reader of the file cannot tell them apart
+            raise InputError("--outputs", twice, "each output once")
     ss = state_space(model, args.speed, outputs)
     if fmt == "mat":
         dialect.write_data(args, ss.to_mat())
@@ -577,7 +580,9 @@ def run_handling(args):
             return dialect.result_document(result.to_dict(), result.unit_block(), fmt)
         if fmt == "csv":
             return handling_csv(result)
-        return handling_text(result, _title(args))
+        # the gains column says "tuned" for either tuning: the title names one other than the default
+        tuned_by = "" if args.tuning == "hmh2012" else f", gains tuned by {args.tuning}"
+        return handling_text(result, _title(args) + tuned_by)
     dialect.emit(args, render)
     if args.plot:
         # lazy: matplotlib only for a figure

@@ -16,6 +16,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .errors import InputError, short
+
 
 @dataclass(frozen=True)
 class Table:
@@ -75,13 +77,22 @@ class Tabular:
         pandas.DataFrame
             One column per quantity, names without units; ``frame.attrs["units"]`` gives each
             column's SI unit, ``frame.attrs`` the result's context (speed, model, ...).
+
+        Raises
+        ------
+        InputError
+            ``table`` is not one of the result's tables (a ValueError).
+        TypeError
+            The result has no rows.
+        ImportError
+            pandas is not installed.
         """
         tables = self.tables()
         if not tables:
             raise TypeError(f"{type(self).__name__} has no rows to make a table of")
         name = next(iter(tables)) if table is None else table
         if name not in tables:
-            raise ValueError(f"{type(self).__name__} has no table {name!r} (tables: {', '.join(tables)})")
+            raise InputError("table", short(name), f"a {type(self).__name__} table (tables: {', '.join(tables)})")
         return data_frame(tables[name], type(self).__name__, name)
 
 

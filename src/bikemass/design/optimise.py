@@ -14,6 +14,7 @@ do not, ``converged`` is false and the result says along which variable the kink
 
 import os
 import time
+import warnings
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
@@ -202,6 +203,9 @@ def _search(spec, problem, progress, start_time):
         return problem.value(target_metric, x_of(u))
 
     centre = np.full(n, 0.5)
+    with warnings.catch_warnings():     # the design as given: a bad bicycle, rider or model is its own error,
+        warnings.simplefilter("ignore")  # not the box's (its warnings are the designs' to give)
+        problem.scenario.build()
     try:
         scale = abs(raw(centre)) or 1.0
     except InputError as exc:
@@ -306,8 +310,10 @@ def _search(spec, problem, progress, start_time):
                 polished = _minimax(problem, x_of, span, scale, record, cons, np.clip(res.x, 0.0, 1.0), minimize)
                 if violation(polished.x[:n]) <= FEASIBLE and objective(polished.x[:n]) <= objective(res.x):
                     res = polished
-        except InputError as exc:
-            runs.append((True, np.inf, np.inf, np.array(u0), False, f"a design the search reached failed: {exc}"))
+        except InputError as exc:          # the start stands (the screening built it), with why the search stopped
+            v0 = violation(np.array(u0))
+            runs.append((v0 > FEASIBLE, v0, float(objective(np.array(u0))), np.array(u0), False,
+                         f"a design the search reached failed: {exc}"))
             continue
         u = np.clip(res.x[:n], 0.0, 1.0)
         v = violation(u)

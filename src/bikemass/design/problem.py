@@ -22,7 +22,7 @@ from ..core.errors import InputError
 from ..models.parameters import NAMES
 from ..rider.body import load_body
 from ..scenario.inputs import split_changes
-from .metrics import GEOMETRY, HANDLING, PARAMETERS, SPEED, UNDEFINED, handling_of, hqm_curve_of, rider_in_loop, parameter_function, \
+from .metrics import GEOMETRY, HANDLING, PARAMETERS, UNDEFINED, handling_of, hqm_curve_of, rider_in_loop, parameter_function, \
     parameter_gradient, speed_crossings, toe_overlap_of
 
 STIFFNESS_CELLS = {"S_phiphi": ((0, 0),), "S_phidelta": ((0, 1),), "S_deltadelta": ((1, 1),)}
@@ -222,8 +222,3 @@ class Problem:
     def _toe_overlap(self, changes):
         bike_changes = split_changes(changes)[0]
         return toe_overlap_of(self.scenario.inputs.bicycle(bike_changes), self._inseam)
-
-
-def speed_is_defined(problem, metric, x):
-    """Whether speed metric ``metric`` exists at design ``x`` (not its stand-in limit)."""
-    return metric.kind != SPEED or speed_crossings(metric.name, problem.design(x).critical)[0] is not None

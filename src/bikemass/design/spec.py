@@ -229,7 +229,7 @@ def read_spec(path):
             items.append(Bounds(name, low, high))
         constraints = tuple(items)
     if speed is None and any(catalogue()[m].kind == HANDLING for m in (objective, *(c.metric for c in constraints))):
-        node.fail("speed: the speed (m/s) at which hqm-peak is taken", "speed")
+        node.fail("the speed (m/s) at which hqm-peak and closed-loop-real are taken", "speed")
     starts = _whole(node, "starts", 2, 1, MAX_STARTS)
     seed = _whole(node, "seed", 0, 0, 2 ** 32 - 1)
     return OptimiseSpec(**{**spec.__dict__, "variables": design, "constraints": constraints, "starts": starts,

@@ -19,11 +19,14 @@ Analyses (stability, transfer functions, responses) take a :class:`LinearModel` 
 """
 
 import math
+import numbers
 from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..core.errors import InputError, short
 from ..core.frozen import readonly
+from ..core.limits import MAX_SPEED
 
 
 @dataclass(frozen=True)
@@ -275,6 +278,11 @@ class LinearModel:
             ``A`` (N, N), ``B`` (N, m), ``C`` (p, N), ``D`` (p, m) in SI; the rows and columns in the
             order of :attr:`states`, :attr:`inputs` and ``outputs`` (scipy keeps no names).
 
+        Raises
+        ------
+        InputError
+            A speed that is not a finite number in 0..1000 m/s, or an unknown output.
+
         Examples
         --------
         >>> import bikemass as bm
@@ -284,7 +292,8 @@ class LinearModel:
         """
         # lazy: scipy.signal is needed only for this export, and loads slowly
         import scipy.signal
-        return scipy.signal.StateSpace(*self.state_space(float(speed), self._outputs(outputs)))
+        names = self._outputs(outputs)
+        return scipy.signal.StateSpace(*self.state_space(_export_speed(speed), names))
 
     def to_control(self, speed, outputs=None):
         """The state space at one speed as a python-control ``StateSpace`` with the signal names.
@@ -309,6 +318,8 @@ class LinearModel:
         ------
         ImportError
             python-control is not installed.
+        InputError
+            A speed that is not a finite number in 0..1000 m/s, or an unknown output.
 
         Examples
         --------
@@ -323,16 +334,32 @@ class LinearModel:
         except ImportError as exc:
             raise ImportError("LinearModel.to_control needs python-control: pip install 'bikemass[control]'") from exc
         names = self._outputs(outputs)
-        A, B, C, D = self.state_space(float(speed), names)
+        A, B, C, D = self.state_space(_export_speed(speed), names)
         return control.ss(A, B, C, D, states=list(self.state_names), inputs=list(self.input_names),
                           outputs=list(names), name=self.name)
 
     def _outputs(self, outputs):
-        return self.output_names if outputs is None else tuple(outputs)
+        """The outputs of an export (default every state and further output); InputError naming an
+        unknown one."""
+        names = self.output_names if outputs is None else tuple(outputs)
+        for name in names:
+            if name not in self.output_names:
+                raise InputError("outputs", short(name), f"outputs of the {self.name} model: one of "
+                                 + ", ".join(self.output_names))
+        return names
 
     def __repr__(self):
         return (f"LinearModel({self.name!r}, states=({', '.join(self.state_names)}), "
                 f"inputs=({', '.join(self.input_names)}), degree={len(self.A) - 1})")
+
+
+def _export_speed(speed):
+    """``speed`` (m/s) of an exported state space as a float; InputError unless a finite number in
+    0..:data:`~bikemass.core.limits.MAX_SPEED` (as every analysis takes)."""
+    if isinstance(speed, bool) or not isinstance(speed, numbers.Real) or not math.isfinite(speed) \
+            or not 0 <= speed <= MAX_SPEED:
+        raise InputError("speed", short(speed), f"a forward speed in m/s, a finite number in 0..{MAX_SPEED:g}")
+    return float(speed)
 
 
 def state_form(E, A, B, mass):

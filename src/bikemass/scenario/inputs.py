@@ -32,7 +32,7 @@ from ..bicycle.parameter_sets import RIDER_LEAN, kind_of, read_parameter_set, re
 from ..bicycle.sizes import select_size, split_size
 from ..core.choices import RIGID
 from ..core.config import Node, load_yaml
-from ..core.errors import InputError
+from ..core.errors import InputError, short
 from ..core.gate import MAPPING, plain_input
 from ..core.paths import frames_dir, resolve
 from ..core.units import DIMENSIONS, dimension_of, to_si
@@ -171,7 +171,10 @@ def get_path(model, key):
     if key in NAMES:
         return float(getattr(model.parameters(), key))
     if key.startswith(MEASURED_PREFIX):
-        return float(model.measurements(key)[key[len(MEASURED_PREFIX):]])
+        nominal, name = model.measurements(key), key[len(MEASURED_PREFIX):]
+        if name not in nominal:
+            raise InputError(model.origin, key, f"a measurement of this file ({short(', '.join(nominal), 80)})")
+        return float(nominal[name])
     document, path, value = _located(model, key)
     unit = _file_unit(document, path, value)
     try:

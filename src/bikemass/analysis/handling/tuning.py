@@ -154,7 +154,11 @@ def inner_gain(plant, gains, loop):
 
 def crossover_gain(plant, gains, loop, frequency):
     """The gain of the open ``loop`` (2, 3 or 4; inner ``gains`` set) that crosses it over at
-    ``frequency`` (rad/s): ``1 / |G_o(j w_c)|``."""
+    ``frequency`` (rad/s): ``1 / |G_o(j w_c)|``; :class:`GainsNotFound` for the lateral loop (4) at
+    standstill, where the heading moves the bicycle no sideways (``y' = v psi``) and ``|G_o|`` is
+    round-off."""
+    if loop == 4 and plant.speed == 0:
+        raise GainsNotFound("no k_y at 0 m/s: a standing bicycle's heading does not move it sideways")
     A, b, c = loop_system(plant, (*gains, 1.0), loop, (True,) * loop + (False,))
     return float(1 / np.abs(response(A, b, c, [frequency])[0]))
 
