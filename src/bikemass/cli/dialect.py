@@ -111,7 +111,7 @@ def add_stiffness(p, many=False):
                                  "aluminum, carbon, ...: the bicycle's published S if it carries one, else the "
                                  "beam model of its own tube sections in that material) or a YAML file with S: "
                                  "[[..], [..]] in N m/rad")
-    late_help(action, lambda: STIFFNESS_HELP.format(materials=material_list()))
+    late_help(action, lambda: STIFFNESS_HELP.format(materials=materials_or_note()))
 
 
 STIFFNESS_HELP = (
@@ -120,6 +120,15 @@ STIFFNESS_HELP = (
     "that material's properties (a steel bicycle's tubes in carbon fibre are not a carbon frame); or a YAML "
     "file with S: [[..], [..]] in N m/rad. With the flexible member a parameter file written by params "
     "--model flexible carries its own compliances (measured values may be edited in)")
+
+
+def materials_or_note():
+    """:func:`material_list`, or where the shipped data cannot be found (``--help`` works without
+    them) a note saying where the materials would come from."""
+    try:
+        return material_list()
+    except InputError:
+        return "those of the shipped frames/materials.yaml (not found here: see BIKEMASS_DATA in README.md)"
 
 
 def material_list():
