@@ -239,8 +239,8 @@ def lane_change(system: System, speed: float, gains: "Gains | ArrayLike | None" 
     >>> print(run.stable, f"{run.time[-1]:.1f} s, steer torque at most {peak:.3f} N m")
     True 50.0 s, steer torque at most 0.155 N m
     >>> n = bm.lane_change(bm.parameters("benchmark"), 5.0, nonlinear=True)
-    >>> print(n.model, f"steer torque at most {abs(n.signals['steer-torque']).max():.3f} N m")
-    nonlinear steer torque at most 0.155 N m
+    >>> print(n.model, f"steer torque at most {abs(n.signals['steer-torque']).max():.4f} N m")
+    nonlinear steer torque at most 0.1544 N m
     """
     check_step(step)
     if nonlinear:
