@@ -81,6 +81,8 @@ def test_nonlinear_refuses_other_systems():
         bm.lane_change(linear_model(P, None), SPEED, nonlinear=True)
     with pytest.raises(InputError):
         bm.lane_change(P, SPEED, nonlinear=True, stiffness=np.eye(2))
+    with pytest.raises(InputError, match="stable"):          # 2 m/s: the linear closed loop diverges
+        bm.lane_change(P, 2.0, nonlinear=True)
 
 
 def test_cli(tmp_path, capsys):

@@ -224,7 +224,8 @@ def lane_change(system: System, speed: float, gains: "Gains | ArrayLike | None" 
     ------
     InputError
         A speed not above 0, gains that are not five finite numbers, an unknown ``kind`` or a bad
-        ``step``; ``nonlinear`` with anything but a parameter set, or with a stiffness.
+        ``step``; ``nonlinear`` with anything but a parameter set, with a stiffness, or where the
+        closed loop is unstable.
 
     See Also
     --------
@@ -259,6 +260,9 @@ def lane_change(system: System, speed: float, gains: "Gains | ArrayLike | None" 
             raise InputError("speed", f"{plant.speed:g}", f"{exc}; give the gains") from None
     closed = closed_loop(plant, as_gains(gains))
     if nonlinear:
+        if not closed.stable:
+            raise InputError("speed", f"{plant.speed:g}", "a speed where the rider's closed loop is stable (on the "
+                             "linear model, with these gains): otherwise the nonlinear run only diverges")
         return follow_nonlinear(system, closed, kind, step)
     return follow_lane_change(closed, model.output_matrix([plant.lateral])[0], model.state_names,
                               tuple(s.unit for s in model.states), kind, step)
@@ -352,6 +356,10 @@ def follow_nonlinear(parameters, closed, kind="double", step=0.01, scale=1.0):
         out[13] = wp ** 2 * (track(t) - z[12]) - 2 * wp * z[13]
         return out
 
+    def fall(_, z):
+        return NONLINEAR_FALL - abs(z[3])
+    fall.terminal = True                               # type: ignore[attr-defined]
+
     t = np.arange(int(np.floor(LENGTH / v / step)) + 1) * step
     kinks = [START, START + WIDTH / SLOPE]
     if kind == "double":
@@ -366,18 +374,18 @@ def follow_nonlinear(parameters, closed, kind="double", step=0.01, scale=1.0):
             upto = int(np.searchsorted(t, b * (1 + 1e-14), side="right"))
             inside = t[done:upto]
             try:
-                sol = solve_ivp(rates, (a, b), z, method="DOP853", rtol=NONLINEAR_RTOL, atol=NONLINEAR_ATOL, dense_output=True)
+                sol = solve_ivp(rates, (a, b), z, method="DOP853", rtol=NONLINEAR_RTOL, atol=NONLINEAR_ATOL,
+                                dense_output=True, events=fall)
             except (ConstraintError, np.linalg.LinAlgError, FloatingPointError, ArithmeticError):
                 stopped = f"stopped after t = {a:.6g} s: the integration broke down"
                 break
-            if sol.status != 0:
-                stopped = f"stopped after t = {a:.6g} s: {sol.message}"
-                break
-            samples = sol.sol(inside).T if len(inside) else np.zeros((0, 14))
-            fallen = np.nonzero(np.abs(samples[:, 3]) >= NONLINEAR_FALL)[0]
-            if len(fallen):
-                samples = samples[:fallen[0]]
-                stopped = f"stopped at t = {inside[fallen[0]]:.4f} s: the bicycle fell (roll reached 60 degrees)"
+            if sol.status != 0:                        # a fall (the event) or a failure: samples up to it
+                inside = inside[inside < sol.t[-1]]
+                upto = done + len(inside)
+                stopped = (f"stopped at t = {sol.t[-1]:.4f} s: the bicycle fell (roll reached 60 degrees)"
+                           if sol.status == 1 else
+                           f"stopped after t = {sol.t[-1]:.6g} s: the integration broke down ({sol.message})")
+            samples = sol.sol(inside).T if len(inside) and sol.sol is not None else np.zeros((0, 14))
             states.append(samples)
             done = upto
             z = sol.y[:, -1]
@@ -387,13 +395,14 @@ def follow_nonlinear(parameters, closed, kind="double", step=0.01, scale=1.0):
     t = t[:len(x)]
     pitch, kinetic, potential = bike.samples(x[:, :10])
     front = np.array([lateral(row, th) for row, th in zip(x, pitch)])
-    columns = (x[:, 3], x[:, 5], x[:, 8], x[:, 9], x[:, 2], x[:, 1], front, x[:, 10], x[:, 7], pitch, kinetic + potential)
+    columns = (x[:, 3], x[:, 5], x[:, 8], x[:, 9], x[:, 2], x[:, 1], front, x[:, 10], x[:, 7], pitch,
+               kinetic + potential)
     signals = dict(zip(NONLINEAR_NAMES, columns))
     stable = closed.stable
     if stopped:
         warnings.warn(stopped, BikemassWarning, stacklevel=3)
-    return LaneChange(v, t, scale * road(v * (t - PREVIEW), kind), x[:, 12], signals, dict(zip(NONLINEAR_NAMES, NONLINEAR_UNITS)),
-                      stable, model="nonlinear", stopped=stopped)
+    return LaneChange(v, t, scale * road(v * (t - PREVIEW), kind), x[:, 12], signals,
+                      dict(zip(NONLINEAR_NAMES, NONLINEAR_UNITS)), stable, model="nonlinear", stopped=stopped)
 
 
 def check_parameters(system):
