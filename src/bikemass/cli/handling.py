@@ -120,6 +120,9 @@ def register(sub):
     dialect.add_plot(hand, "the HQM against frequency and its peak against speed")
     hand.add_argument("--lane-change", metavar="FILE",
                       help="also draw the double lane change at every speed into FILE (.png, .pdf, ...)")
+    hand.add_argument("--nonlinear", action="store_true",
+                      help="with --lane-change: draw the rider (the same gains) steering the nonlinear Whipple "
+                           "bicycle beside the linear run at every speed (--model whipple, rigid frame)")
     hand.set_defaults(run=every_size(run_handling))
 
 
@@ -571,6 +574,12 @@ def run_handling(args):
     if args.speeds is None and args.gains is None:
         raise InputError("--speeds", "(missing)", "the speeds in m/s (V1,V2,...), or a --gains file whose speeds are used")
     speeds = None if args.speeds is None else _speeds(args.speeds)
+    parameters = None
+    if args.nonlinear:
+        if not args.lane_change:
+            raise InputError("--nonlinear", "(without --lane-change)", "--lane-change FILE: --nonlinear draws the "
+                             "lane change on the nonlinear bicycle")
+        parameters = _nonlinear_built(args).parameters
     model = bicycle_model(args)
     result = _with_option_names(lambda: handling(model, speeds, args.gains, tuning=args.tuning),
                                 {"speeds": "--speeds"}, {"speeds": args.speeds})
@@ -590,11 +599,13 @@ def run_handling(args):
         dialect.save_plot(args, plot_handling(result, f"{_title(args)}: handling quality metric", options.size),
                           options)
     if args.lane_change:
-        _draw_lane_changes(args, model, result, options)
+        _draw_lane_changes(args, model, result, options, parameters)
     return 0
 
 
-def _draw_lane_changes(args, model, result, options):
+def _draw_lane_changes(args, model, result, options, parameters=None):
+    """The lane changes at every stable speed into ``args.lane_change``; with ``parameters`` (a
+    benchmark parameter set) each beside the nonlinear bicycle's run with the same gains."""
     # lazy: the library loads numpy; bikemass --help must not
     from ..analysis.handling.lane_change import lane_change
     # lazy: the library loads numpy; bikemass --help must not
@@ -603,14 +614,19 @@ def _draw_lane_changes(args, model, result, options):
     from ..analysis.handling.figures import plot_lane_change
     # lazy: the library loads numpy; bikemass --help must not
     from ..models.plausibility import warn
-    runs = [lane_change(model, v, g) for v, g, ok in zip(result.speeds, result.gains, result.closed_loop_stable)
-            if ok and v > 0]
+    runs = []
+    for v, g, ok in zip(result.speeds, result.gains, result.closed_loop_stable):
+        if ok and v > 0:
+            runs.append(lane_change(model, v, g))
+            if parameters is not None:
+                runs.append(lane_change(parameters, v, g, nonlinear=True))
     left = [f"{v:g}" for v, g, ok in zip(result.speeds, result.gains, result.closed_loop_stable) if g is not None
             and not ok]
     if left:
         warn(f"--lane-change: not drawn at {', '.join(left)} m/s (closed loop unstable: the run diverges)")
     if runs:
-        fig = plot_lane_change(runs, f"{_title(args)}: double lane change", options.size)
+        what = "double lane change, linear and nonlinear" if parameters is not None else "double lane change"
+        fig = plot_lane_change(runs, f"{_title(args)}: {what}", options.size)
         save_figure(fig, args.lane_change, options.dpi)
     else:
         warn(f"--lane-change: {args.lane_change} not written: no speed above 0 with a stable closed loop")

@@ -334,7 +334,8 @@ def plot_lane_change(runs: "LaneChange | list[LaneChange]", title: str = "",
                      size: "tuple[float, float] | None" = None) -> Figure:
     """Figure: lateral positions (road and front contact), roll and steer angles (deg) and the
     rider's steer torque (N m) against the distance along the road (m; the front contact's, the
-    lane change starting at 35 m), one line per run, in three panels.
+    lane change starting at 35 m), one line per run, in three panels; a nonlinear run
+    (``bm.lane_change(..., nonlinear=True)``) is labelled so, to draw it beside the linear one.
 
     Parameters
     ----------
@@ -376,10 +377,10 @@ def plot_lane_change(runs: "LaneChange | list[LaneChange]", title: str = "",
         lat = next(name for name in ("front-lateral", "lateral") if name in run.signals)
         if k == 0:
             lateral.plot(x, run.road, color="0.5", lw=3, alpha=0.5, label="road")
-        lateral.plot(x, run.signals[lat], color=colour, label=f"{lat}, {run.speed:g} m/s")
-        angles.plot(x, np.degrees(run.signals["roll-angle"]), color=colour, label=f"roll, {run.speed:g} m/s")
-        angles.plot(x, np.degrees(run.signals["steer-angle"]), color=colour, ls="--",
-                    label=f"steer, {run.speed:g} m/s")
+        which = f"{run.speed:g} m/s" + (", nonlinear" if run.model == "nonlinear" else "")
+        lateral.plot(x, run.signals[lat], color=colour, label=f"{lat}, {which}")
+        angles.plot(x, np.degrees(run.signals["roll-angle"]), color=colour, label=f"roll, {which}")
+        angles.plot(x, np.degrees(run.signals["steer-angle"]), color=colour, ls="--", label=f"steer, {which}")
         torque.plot(x, run.signals["steer-torque"], color=colour)
     lateral.set_ylabel("lateral position, m")
     angles.set_ylabel("angle, deg")

@@ -8,8 +8,26 @@ lane change stays at 2 m after 45 m).  The rider previews the road: the track ``
 the path filter ``F_p(s) = 2.4^2 / (s^2 + 2 (2.4) s + 2.4^2)`` and commands the front contact's
 lateral position, while the bicycle meets that road ``tau_p = 2.75 s`` later, so the road at the
 front contact is ``y(v (t - tau_p))`` (the preview delays the road, never the rider's command).
+
+The rider on the nonlinear Whipple bicycle (``nonlinear=True``, :func:`follow_nonlinear`): the closed loop is the nonlinear bicycle's minimal state (:data:`bikemass.models.nonlinear.STATE`,
+10 entries) with the rider's neuromuscular states (steer torque ``T``, N m, and its rate) and the
+path filter's (command ``y_c``, m, and its rate) integrated alongside::
+
+    x'  = f(x, T)                                      the nonlinear bicycle (NonlinearWhipple.rates)
+    T'' = w_nm^2 (u - T) - 2 zeta_nm w_nm T'           the neuromuscular system
+    u   = k_delta (k_phidot (k_phi (k_psi (k_y (y_c - y_Q) - psi) - phi) - phidot) - delta)
+    y_c'' = w_p^2 (y_road(v t) - y_c) - 2 w_p y_c'     the path filter of the linear run
+
+with the loop signals read from the nonlinear state: the steer angle, roll rate, roll angle, the
+heading (the yaw) and ``y_Q``, the front contact's lateral position on the ground, computed exactly
+from the configuration (:func:`front_contact`).  The gains are those of the linear procedure
+(tuned at the speed on the linear model), the road and the preview are the linear run's (the road is read at the nominal speed's distance
+``v t``: the rider is given the same command), and the bicycle starts upright and straight at the
+speed.  scipy's DOP853 integrates between the road's kinks (rtol 1e-10, atol 1e-10).
 """
 
+import math
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -17,14 +35,14 @@ from numpy.typing import ArrayLike
 
 from ...core.display import Display
 from ...core.real import finite_real
-from ...core.errors import InputError, short
+from ...core.errors import BikemassWarning, InputError, short
 from ...core.frozen import FrozenMap, readonly, short_repr
 from ...core.tables import Table
 from ...core.threads import one_blas_thread
 from .discrete import march
 from .gains import Gains, as_gains
 from .plant import System, linear_model
-from .rider import closed_loop, rider_plant
+from .rider import NEUROMUSCULAR_DAMPING, NEUROMUSCULAR_FREQUENCY, closed_loop, rider_plant
 from .tuning import GainsNotFound, tune_gains
 
 START, WIDTH, SLOPE, LENGTH, HELD = 35.0, 2.0, 0.2, 250.0, 40.0
@@ -94,6 +112,11 @@ class LaneChange(Display):
         ``{name: unit}`` of :attr:`signals`.
     stable : bool
         Whether the closed loop is stable.
+    model : str
+        ``"linear"`` or ``"nonlinear"`` (the nonlinear Whipple bicycle; its signals add
+        ``forward-speed``, m/s).
+    stopped : str
+        Why a nonlinear run ended before the road's end (a fall); empty otherwise.
     """
 
     speed: float
@@ -103,6 +126,8 @@ class LaneChange(Display):
     signals: FrozenMap
     units: FrozenMap
     stable: bool
+    model: str = "linear"
+    stopped: str = ""
 
     def __post_init__(self):
         for name in ("time", "road", "command"):
@@ -118,7 +143,8 @@ class LaneChange(Display):
 
     def to_dict(self):
         """Plain data: speed, time, road, command and every signal."""
-        return {"speed": self.speed, "stable": bool(self.stable), "time": self.time.tolist(),
+        return {"speed": self.speed, "stable": bool(self.stable), "model": self.model, "stopped": self.stopped,
+                "time": self.time.tolist(),
                 "road": self.road.tolist(), "command": self.command.tolist(),
                 "signals": {k: v.tolist() for k, v in self.signals.items()}}
 
@@ -134,7 +160,7 @@ class LaneChange(Display):
         return {"signals": Table(columns, units, {"speed": self.speed, "stable": bool(self.stable)})}
 
     def __repr__(self):
-        return short_repr(self, ("speed", f"{self.speed:g} m/s"), ("time", f"0..{self.time[-1]:g} s x {len(self.time)}"),
+        return short_repr(self, ("speed", f"{self.speed:g} m/s"), ("model", self.model), ("time", f"0..{self.time[-1]:g} s x {len(self.time)}"),
                           ("stable", self.stable))
 
 
@@ -164,7 +190,8 @@ def follow_lane_change(closed, lateral_row, names, units, kind="double", step=0.
 
 @one_blas_thread()
 def lane_change(system: System, speed: float, gains: "Gains | ArrayLike | None" = None,
-                kind: str = "double", step: float = 0.01, stiffness: "ArrayLike | None" = None) -> LaneChange:
+                kind: str = "double", step: float = 0.01, stiffness: "ArrayLike | None" = None,
+                nonlinear: bool = False) -> LaneChange:
     """The rider and bicycle through a 2 m lane change (and back, ``kind="double"``).
 
     Parameters
@@ -182,6 +209,10 @@ def lane_change(system: System, speed: float, gains: "Gains | ArrayLike | None" 
         Time step of the samples (s); the run covers the whole 250 m road.
     stiffness : array_like (2, 2), optional
         Rear-frame stiffness S (N m/rad) of a parameter set.
+    nonlinear : bool
+        The rider (the same gains, tuned on the linear model) steering the nonlinear Whipple
+        bicycle of a parameter set instead (:func:`follow_nonlinear`;
+        docs/nonlinear.md); a fall (roll 60 degrees) ends the run with a warning.
 
     Returns
     -------
@@ -193,7 +224,8 @@ def lane_change(system: System, speed: float, gains: "Gains | ArrayLike | None" 
     ------
     InputError
         A speed not above 0, gains that are not five finite numbers, an unknown ``kind`` or a bad
-        ``step``.
+        ``step``; ``nonlinear`` with anything but a parameter set, with a stiffness, or where the
+        closed loop is unstable.
 
     See Also
     --------
@@ -207,8 +239,15 @@ def lane_change(system: System, speed: float, gains: "Gains | ArrayLike | None" 
     >>> peak = abs(run.signals["steer-torque"]).max()
     >>> print(run.stable, f"{run.time[-1]:.1f} s, steer torque at most {peak:.3f} N m")
     True 50.0 s, steer torque at most 0.155 N m
+    >>> n = bm.lane_change(bm.parameters("benchmark"), 5.0, nonlinear=True)
+    >>> print(n.model, f"steer torque at most {abs(n.signals['steer-torque']).max():.4f} N m")
+    nonlinear steer torque at most 0.1544 N m
     """
     check_step(step)
+    if nonlinear:
+        check_parameters(system)
+        if stiffness is not None:
+            raise InputError("stiffness", short(stiffness), "none: the nonlinear model has a rigid frame")
     if not isinstance(kind, str) or kind not in KINDS:
         raise InputError("kind", short(kind), f"one of {', '.join(KINDS)}")
     model = linear_model(system, stiffness)
@@ -220,5 +259,157 @@ def lane_change(system: System, speed: float, gains: "Gains | ArrayLike | None" 
         except GainsNotFound as exc:
             raise InputError("speed", f"{plant.speed:g}", f"{exc}; give the gains") from None
     closed = closed_loop(plant, as_gains(gains))
+    if nonlinear:
+        if not closed.stable:
+            raise InputError("speed", f"{plant.speed:g}", "a speed where the rider's closed loop is stable (on the "
+                             "linear model, with these gains): otherwise the nonlinear run only diverges")
+        return follow_nonlinear(system, closed, kind, step)
     return follow_lane_change(closed, model.output_matrix([plant.lateral])[0], model.state_names,
                               tuple(s.unit for s in model.states), kind, step)
+
+
+NONLINEAR_RTOL, NONLINEAR_ATOL = 1e-10, 1e-10
+"""DOP853's tolerances (relative; absolute in the states' units)."""
+NONLINEAR_FALL = math.radians(60.0)
+"""Roll (rad) at which a nonlinear run stops as a fall (as :mod:`bikemass.analysis.nonlinear.simulate`)."""
+NONLINEAR_NAMES = ("roll-angle", "steer-angle", "roll-rate", "steer-rate", "heading", "lateral", "front-lateral",
+         "steer-torque", "forward-speed", "pitch-angle", "energy")
+"""The signals of a nonlinear run: the linear run's, then the forward speed of the rear contact, the
+pitch and the energy (kinetic plus potential, the ground at zero height)."""
+NONLINEAR_UNITS = ("rad", "rad", "rad/s", "rad/s", "rad", "m", "m", "N m", "m/s", "rad", "J")
+
+
+def _rx(a):
+    c, s = math.cos(a), math.sin(a)
+    return np.array(((1.0, 0.0, 0.0), (0.0, c, -s), (0.0, s, c)))
+
+
+def _ry(a):
+    c, s = math.cos(a), math.sin(a)
+    return np.array(((c, 0.0, s), (0.0, 1.0, 0.0), (-s, 0.0, c)))
+
+
+def _rz(a):
+    c, s = math.cos(a), math.sin(a)
+    return np.array(((c, -s, 0.0), (s, c, 0.0), (0.0, 0.0, 1.0)))
+
+
+def front_contact(parameters, x, y, yaw, roll, pitch, steer):
+    """The front wheel's ground contact (3,) in the ground frame (m; x forward, y right, z down) of
+    the configuration: the rear contact ``(x, y)``, yaw, roll, pitch and steer (rad).
+
+    The kinematics of :mod:`bikemass.models.derive.bicycle`: the rear frame ``C = Rz(yaw) Rx(roll)
+    Ry(pitch)``, the front frame ``E = C Ry(lam) Rz(steer) Ry(-lam)``; the rear wheel's centre ``rR``
+    above the rear contact along the roll frame's z, the steer axis's foot ``w + c`` ahead of the rear
+    contact, the front axle ``c`` behind it and ``rF`` above along the front frame, and the contact
+    ``rF`` below the axle in the wheel's plane, along the steepest descent."""
+    p = parameters
+    A = _rz(yaw)
+    B = A @ _rx(roll)
+    C = B @ _ry(pitch)
+    E = C @ _ry(p.lam) @ _rz(steer) @ _ry(-p.lam)
+    rear_centre = np.array((x, y, 0.0)) - p.rR * B[:, 2]
+    foot = rear_centre + (p.w + p.c) * C[:, 0] + p.rR * C[:, 2]
+    axle = foot - p.c * E[:, 0] - p.rF * E[:, 2]
+    tilt = E[2, 1]                                    # N.z . E.y
+    down = np.array((0.0, 0.0, 1.0)) - tilt * E[:, 1]
+    return axle + p.rF * down / math.sqrt(1.0 - tilt ** 2)
+
+
+def follow_nonlinear(parameters, closed, kind="double", step=0.01, scale=1.0):
+    """:class:`LaneChange` of the rider (the gains of ``closed``, a
+    :class:`~bikemass.analysis.handling.rider.ClosedLoop`) on the nonlinear bicycle of ``parameters``.
+
+    ``scale`` multiplies the road (1: the 2 m lane change; small: the linear limit).  The run stops
+    early with ``stopped`` saying why (a fall past 60 degrees of roll, or the integration breaking
+    down), keeping every sample before.
+    """
+    # lazy: scipy's integrator only for a nonlinear run
+    from scipy.integrate import solve_ivp
+    # lazy: the nonlinear model (its generated code) only for a nonlinear run
+    from ...models.nonlinear import ConstraintError, NonlinearWhipple
+
+    v = closed.speed
+    gains = tuple(closed.gains)
+    products = np.cumprod(gains)                       # k0, k0 k1, ..., k0 .. k4
+    w2 = NEUROMUSCULAR_FREQUENCY ** 2
+    damping = 2 * NEUROMUSCULAR_DAMPING * NEUROMUSCULAR_FREQUENCY
+    wp = PATH_FILTER_FREQUENCY
+    bike = NonlinearWhipple(parameters)
+    p = parameters
+
+    def track(t):
+        return scale * float(road(v * t, kind))
+
+    def lateral(z, pitch):
+        return front_contact(p, z[0], z[1], z[2], z[3], pitch, z[5])[1]
+
+    def rates(t, z):
+        torque = z[10]
+        signals = (z[5], z[8], z[3], z[2], lateral(z, bike.pitch(float(z[3]), float(z[5]))))
+        u = products[4] * z[12] - float(np.dot(products, signals))
+        out = np.empty(14)
+        out[:10] = bike.rates(z[:10], (0.0, torque))
+        out[10] = z[11]
+        out[11] = w2 * (u - torque) - damping * z[11]
+        out[12] = z[13]
+        out[13] = wp ** 2 * (track(t) - z[12]) - 2 * wp * z[13]
+        return out
+
+    def fall(_, z):
+        return NONLINEAR_FALL - abs(z[3])
+    fall.terminal = True                               # type: ignore[attr-defined]
+
+    t = np.arange(int(np.floor(LENGTH / v / step)) + 1) * step
+    kinks = [START, START + WIDTH / SLOPE]
+    if kind == "double":
+        kinks += [kinks[1] + HELD, kinks[1] + HELD + WIDTH / SLOPE]
+    edges = [0.0, *(d / v for d in kinks if d / v < t[-1]), float(t[-1])]
+    z = np.zeros(14)
+    z[7] = v
+    states, stopped = [z[None, :]], ""
+    done = 1
+    with np.errstate(over="raise", divide="raise", invalid="raise"):
+        for a, b in zip(edges[:-1], edges[1:]):
+            upto = int(np.searchsorted(t, b * (1 + 1e-14), side="right"))
+            inside = t[done:upto]
+            try:
+                sol = solve_ivp(rates, (a, b), z, method="DOP853", rtol=NONLINEAR_RTOL, atol=NONLINEAR_ATOL,
+                                dense_output=True, events=fall)
+            except (ConstraintError, np.linalg.LinAlgError, FloatingPointError, ArithmeticError):
+                stopped = f"stopped after t = {a:.6g} s: the integration broke down"
+                break
+            if sol.status != 0:                        # a fall (the event) or a failure: samples up to it
+                inside = inside[inside < sol.t[-1]]
+                upto = done + len(inside)
+                stopped = (f"stopped at t = {sol.t[-1]:.4f} s: the bicycle fell (roll reached 60 degrees)"
+                           if sol.status == 1 else
+                           f"stopped after t = {sol.t[-1]:.6g} s: the integration broke down ({sol.message})")
+            samples = sol.sol(inside).T if len(inside) and sol.sol is not None else np.zeros((0, 14))
+            states.append(samples)
+            done = upto
+            z = sol.y[:, -1]
+            if stopped:
+                break
+    x = np.concatenate(states)
+    t = t[:len(x)]
+    pitch, kinetic, potential = bike.samples(x[:, :10])
+    front = np.array([lateral(row, th) for row, th in zip(x, pitch)])
+    columns = (x[:, 3], x[:, 5], x[:, 8], x[:, 9], x[:, 2], x[:, 1], front, x[:, 10], x[:, 7], pitch,
+               kinetic + potential)
+    signals = dict(zip(NONLINEAR_NAMES, columns))
+    stable = closed.stable
+    if stopped:
+        warnings.warn(stopped, BikemassWarning, stacklevel=3)
+    return LaneChange(v, t, scale * road(v * (t - PREVIEW), kind), x[:, 12], signals,
+                      dict(zip(NONLINEAR_NAMES, NONLINEAR_UNITS)), stable, model="nonlinear", stopped=stopped)
+
+
+def check_parameters(system):
+    """``system`` as a parameter set for the nonlinear model, else InputError."""
+    # lazy: the parameter classes only to check a nonlinear run's system
+    from ...models.parameters import BenchmarkParameters
+    if not isinstance(system, BenchmarkParameters):
+        raise InputError("system", type(system).__name__, "a benchmark parameter set (BenchmarkParameters): the "
+                         "nonlinear model is the Whipple bicycle")
+    return system
