@@ -8,3 +8,5 @@ MAX_SPEED = 1000.0
 """Highest speed of a grid (m/s)."""
 MIN_SPEED_STEP = 1e-6
 """Finest speed step (m/s): finer steps print as duplicate speeds."""
+MAX_SAMPLES = 1_000_000
+"""Most time samples of one response or run (its states, a few hundred bytes a sample)."""

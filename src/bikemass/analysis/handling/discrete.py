@@ -20,6 +20,10 @@ import math
 
 import numpy as np
 
+from ...core.errors import InputError, short
+from ...core.limits import MAX_SAMPLES
+from ...core.real import finite_real
+
 TAYLOR_NORM = 0.5
 """Largest 1-norm of a matrix whose exponential is summed as its Taylor series (18 terms)."""
 TAYLOR_TERMS = 18
@@ -66,3 +70,17 @@ def march(A, B, x0, u, dt):
     for k in range(len(u) - 1):
         x[k + 1] = Phi @ x[k] + drive[k]
     return x
+
+
+def sample_times(duration, step):
+    """``0, step, 2 step, ...`` up to ``duration`` (s): the samples of a linear response and of a nonlinear
+    run; InputError unless both are positive and finite with 2 to :data:`~bikemass.core.limits.MAX_SAMPLES`
+    samples."""
+    for key, value in (("duration", duration), ("step", step)):
+        if not finite_real(value) or value <= 0:
+            raise InputError(key, short(value), "a positive, finite time in s")
+    count = math.floor(duration / step * (1 + 1e-12)) + 1
+    if count > MAX_SAMPLES or count < 2:
+        raise InputError("step", short(step), f"2 to {MAX_SAMPLES} samples from 0 to the duration "
+                         f"{duration:g} s, got {count}")
+    return step * np.arange(count)

@@ -37,6 +37,7 @@ from ...core.display import Display
 from ...core.real import finite_real
 from ...core.errors import BikemassWarning, InputError, short
 from ...core.frozen import FrozenMap, readonly, short_repr
+from ...core.limits import MAX_SAMPLES
 from ...core.tables import Table
 from ...core.threads import one_blas_thread
 from .discrete import march
@@ -53,12 +54,10 @@ PATH_FILTER_FREQUENCY = 2.4
 PREVIEW = 2.75
 """``tau_p`` (s): how far ahead in time the rider sees the road (steer-torque control)."""
 KINDS = ("double", "single")
-MAX_SAMPLES = 1_000_000
-"""Most samples of one run (its states, a few hundred bytes a sample)."""
 
 
 def check_step(step, speed=None):
-    """``step`` (s) as a float: a finite number above 0 giving at most :data:`MAX_SAMPLES` samples
+    """``step`` (s) as a float: a finite number above 0 giving at most :data:`~bikemass.core.limits.MAX_SAMPLES` samples
     over the road at ``speed`` (m/s, when known); InputError otherwise."""
     if not finite_real(step) or step <= 0:
         raise InputError("step", short(step), "a time step in s, a finite number above 0")

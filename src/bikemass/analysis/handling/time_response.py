@@ -32,7 +32,7 @@ from ...core.errors import BikemassWarning, InputError, short, wrong_type
 from ...core.frozen import FrozenMap, readonly, short_repr
 from ...core.real import finite_real
 from ...core.tables import Table
-from .discrete import hold_matrices
+from .discrete import hold_matrices, sample_times
 from ..nonlinear.response import NonlinearResponse
 from .plant import System, check_speed, input_index, linear_model
 
@@ -42,9 +42,6 @@ if TYPE_CHECKING:                          # the annotations' names only
 
 KINDS = ("step", "impulse")
 """How an input is applied."""
-
-MAX_SAMPLES = 1_000_000
-"""Most time samples of one response."""
 
 DEFAULT_DURATION = 5.0
 DEFAULT_STEP = 0.01
@@ -97,19 +94,6 @@ def applied_inputs(model, inputs):
                              f"got {short(spec)}")
         out[name] = (spec[0], _number(spec[1], "inputs", name, "N m" if spec[0] == "step" else "N m s"))
     return out
-
-
-def sample_times(duration, step):
-    """``0, step, 2 step, ...`` up to ``duration`` (s); InputError unless both are positive and
-    finite with at most :data:`MAX_SAMPLES` samples."""
-    for key, value in (("duration", duration), ("step", step)):
-        if not finite_real(value) or value <= 0:
-            raise InputError(key, short(value), "a positive, finite time in s")
-    count = math.floor(duration / step * (1 + 1e-12)) + 1
-    if count > MAX_SAMPLES or count < 2:
-        raise InputError("step", short(step), f"2 to {MAX_SAMPLES} samples from 0 to the duration "
-                         f"{duration:g} s, got {count}")
-    return step * np.arange(count)
 
 
 @dataclass(frozen=True, eq=False, repr=False)

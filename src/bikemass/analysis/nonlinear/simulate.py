@@ -27,6 +27,7 @@ from ...core.errors import BikemassWarning, InputError, short, wrong_type
 from ...core.limits import MAX_SPEED
 from ...models.nonlinear import ConstraintError, NonlinearWhipple
 from ...models.parameters import BenchmarkParameters
+from ..handling.discrete import sample_times
 from .response import NAMES, UNITS, NonlinearResponse  # noqa: F401 (NAMES, UNITS: the outputs, defined with the result)
 
 FALL_ROLL = math.radians(60.0)
@@ -41,7 +42,6 @@ INITIAL = ("roll-angle", "steer-angle", "roll-rate", "steer-rate", "heading", "l
 """The states an initial condition may set (the forward speed is the ``speed`` argument)."""
 INPUTS = ("roll-torque", "steer-torque")
 KINDS = ("step", "impulse")
-MAX_SAMPLES = 1_000_000
 RTOL = 1e-10
 """The integrator's relative tolerance."""
 ATOL = 1e-9
@@ -54,17 +54,6 @@ def _number(value, source, key):
     if isinstance(value, bool) or not isinstance(value, numbers.Real) or not finite_real(value):
         raise InputError(source, key, f"a finite number, got {short(value)}")
     return float(value)
-
-
-def _times(duration, step):
-    for key, value in (("duration", duration), ("step", step)):
-        if isinstance(value, bool) or not isinstance(value, numbers.Real) or not finite_real(value) or value <= 0:
-            raise InputError(key, short(value), "a positive, finite time in s")
-    count = math.floor(duration / step * (1 + 1e-12)) + 1
-    if count > MAX_SAMPLES or count < 2:
-        raise InputError("step", short(step), f"2 to {MAX_SAMPLES} samples from 0 to the duration "
-                         f"{duration:g} s, got {count}")
-    return step * np.arange(count)
 
 
 def _initial(initial):
@@ -183,7 +172,7 @@ def simulate_nonlinear(parameters: BenchmarkParameters, speed: float, initial: "
         raise InputError("speed", short(speed), f"a forward speed in m/s, a finite number in 0..{MAX_SPEED:g}")
     start = _initial(initial)
     applied = _inputs(inputs)
-    t = _times(duration, step)
+    t = sample_times(duration, step)
     for key, value in (("rtol", rtol), ("atol", atol)):
         if isinstance(value, bool) or not isinstance(value, numbers.Real) or not 0 < value < 1:
             raise InputError(key, short(value), "a tolerance between 0 and 1")
