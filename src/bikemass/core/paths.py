@@ -102,6 +102,19 @@ def within_reach(path):
     return any(real == folder or real.startswith(folder + os.sep) for folder in allowed)
 
 
+def near_spec(spec_path, name):
+    """A file named relative to a spec file (a sweep's, an optimisation's), if it exists there; else the
+    name as given (a shipped name, or a path from the current folder)."""
+    here = Path(spec_path).parent / name
+    return str(here.resolve()) if within_reach(here) and here.is_file() else name
+
+
+def near_spec_file(spec_path, name):
+    """A stiffness choice as :func:`near_spec` reads a file name (one with a suffix or a folder:
+    ``frame.yaml``, ``data/S.csv``) relative to the spec file; a material or ``infinite`` as given."""
+    return near_spec(spec_path, name) if Path(name).suffix or "/" in name or "\\" in name else name
+
+
 def check_reach(path, source, key, given=None):
     """``path`` if :func:`within_reach`, else InputError naming ``source`` and ``key`` (the file
     and key that named it) and the name as ``given`` there, never the file's content."""

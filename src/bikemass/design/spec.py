@@ -24,12 +24,11 @@ A bound or target with a unit is converted to SI; a bare number is SI for a benc
 """
 
 from dataclasses import dataclass
-from pathlib import Path
 
 from ..core.config import load_yaml
 from ..core.errors import InputError
 from ..core.limits import MAX_SPEED
-from ..core.paths import within_reach
+from ..core.paths import near_spec, near_spec_file
 from ..core.units import DIMENSIONS, UnitError, dimension_of, split_quantity
 from ..models.parameters import NAMES, dimension
 from ..models.registry import BASE, parse_model
@@ -110,12 +109,6 @@ class OptimiseSpec:
     def metrics(self):
         """The objective's metric and every constraint's, each once, in that order."""
         return tuple(dict.fromkeys((self.objective, *(c.metric for c in self.all_constraints))))
-
-
-def _near(spec_path, name):
-    """A file named relative to the spec file, if it exists there; else the name as given."""
-    here = Path(spec_path).parent / name
-    return str(here.resolve()) if within_reach(here) and here.is_file() else name
 
 
 def _variable(scenario, key, node):
@@ -200,11 +193,11 @@ def read_spec(path):
         node.fail(f"a speed of at most {MAX_SPEED:g} m/s", "speed")
     tuning = node["tuning"].string(Tuning.values()) if node.has("tuning") else Tuning.HMH2012.value
     spec = OptimiseSpec(
-        source=str(path), speed=speed, tuning=tuning, bike=_near(path, node["bike"].string()),
-        rider=_near(path, node["rider"].string()) if node.has("rider") else "none",
-        stiffness=_near(path, node["stiffness"].string()) if node.has("stiffness") else "infinite",
+        source=str(path), speed=speed, tuning=tuning, bike=near_spec(path, node["bike"].string()),
+        rider=near_spec(path, node["rider"].string()) if node.has("rider") else "none",
+        stiffness=near_spec_file(path, node["stiffness"].string()) if node.has("stiffness") else "infinite",
         combine=node["combine"].string(("exact", "thesis")) if node.has("combine") else "exact",
-        model=model, tyres=_near(path, node["tyres"].string()) if node.has("tyres") else None,
+        model=model, tyres=near_spec(path, node["tyres"].string()) if node.has("tyres") else None,
         max_speed=float(max_speed), variables=(), sense=sense, objective=objective, target=target)
     scenario = spec.scenario()
     variables = node["variables"]

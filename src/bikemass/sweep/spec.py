@@ -31,14 +31,13 @@ import json
 import math
 import os
 from dataclasses import dataclass
-from pathlib import Path
 
 import numpy as np
 
 from ..core.config import load_yaml
 from ..core.errors import InputError
 from ..core.limits import MAX_SPEED
-from ..core.paths import within_reach
+from ..core.paths import near_spec, near_spec_file
 from ..core.units import DIMENSIONS, UnitError, dimension_of, split_quantity
 from ..models.parameters import NAMES, dimension
 from ..models.registry import BASE, parse_model
@@ -296,18 +295,6 @@ def _starts_with_number(text):
     return True
 
 
-def _near(spec_path, name):
-    """A file named relative to the spec file, if it exists there; else the name as given."""
-    here = Path(spec_path).parent / name
-    return str(here.resolve()) if within_reach(here) and here.is_file() else name
-
-
-def _near_file(spec_path, name):
-    """A stiffness choice as :func:`_near` reads a file name (one with a suffix or a folder:
-    ``frame.yaml``, ``data/S.csv``) relative to the spec file; a material or ``infinite`` as given."""
-    return _near(spec_path, name) if Path(name).suffix or "/" in name or "\\" in name else name
-
-
 def _model_name(node):
     """The spec's ``model:`` as its canonical name (``whipple`` without one)."""
     if not node.has("model"):
@@ -326,7 +313,7 @@ def read_spec(path: "str | os.PathLike") -> "SweepSpec":
     if not vary.mapping():
         vary.fail("at least one key to vary")
     variables = tuple(_variable(str(k), item) for k, item in vary.items())
-    variables = tuple(Variable(v.key, values=tuple(_near_file(path, x) for x in v.values))
+    variables = tuple(Variable(v.key, values=tuple(near_spec_file(path, x) for x in v.values))
                       if v.key == "stiffness" else v for v in variables)
     method, n, seed = "grid", None, 0
     if node.has("sample") and node["sample"].value != "grid":
@@ -358,13 +345,13 @@ def read_spec(path: "str | os.PathLike") -> "SweepSpec":
         if chunk != int(chunk):
             node.fail("a whole number of configurations per task", "chunk")
     spec = SweepSpec(
-        source=str(path), bike=_near(path, node["bike"].string()),
-        rider=_near(path, node["rider"].string()) if node.has("rider") else "none",
-        stiffness=_near_file(path, node["stiffness"].string()) if node.has("stiffness") else "infinite",
+        source=str(path), bike=near_spec(path, node["bike"].string()),
+        rider=near_spec(path, node["rider"].string()) if node.has("rider") else "none",
+        stiffness=near_spec_file(path, node["stiffness"].string()) if node.has("stiffness") else "infinite",
         combine=node["combine"].string(("exact", "thesis")) if node.has("combine") else "exact",
         max_speed=float(max_speed), variables=variables, method=method, n=n, seed=seed,
         global_sensitivity=gsa, chunk=None if chunk is None else int(chunk),
-        model=_model_name(node), tyres=_near(path, node["tyres"].string()) if node.has("tyres") else None)
+        model=_model_name(node), tyres=near_spec(path, node["tyres"].string()) if node.has("tyres") else None)
     grid = method == "grid" and not gsa
     limit = MAX_CONFIGURATIONS if grid else MAX_SAMPLES
     if count_of(spec) > limit:
