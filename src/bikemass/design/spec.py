@@ -31,7 +31,7 @@ from ..core.limits import MAX_SPEED
 from ..core.paths import near_spec, near_spec_file
 from ..core.units import DIMENSIONS, UnitError, dimension_of, split_quantity
 from ..models.parameters import NAMES, dimension
-from ..models.registry import BASE, parse_model
+from ..models.registry import BASE, spec_model
 from ..scenario.scenario import Scenario
 from ..core.choices import Tuning
 from .metrics import HANDLING, STABILITY_MARGIN, catalogue
@@ -179,12 +179,7 @@ def read_spec(path):
         target = _metric_value(pairs[0][1], objective)
     else:
         objective = _metric_name(node, node[sense].string(), sense)
-    model = BASE
-    if node.has("model"):
-        try:
-            model = parse_model(node["model"].string()).name
-        except InputError as exc:
-            node["model"].fail(exc.expected)
+    model = spec_model(node)
     max_speed = node["max_speed"].number("speed", positive=True) if node.has("max_speed") else 30.0
     if max_speed > MAX_SPEED:
         node.fail(f"a speed of at most {MAX_SPEED:g} m/s, got {max_speed:g}", "max_speed")

@@ -56,3 +56,14 @@ def model_of(params, model=None, source="model"):
 def module_name(members):
     """The generated module of a combination: ``whipple``, ``rider_lean``, ``tyre``, ``rider_lean_tyre``."""
     return "_".join(m.replace("-", "_") for m in members) or BASE
+
+
+def spec_model(node):
+    """The ``model:`` of a spec's top-level config :class:`~bikemass.core.config.Node` (a sweep's, an
+    optimisation's) as its canonical name, ``whipple`` without one; InputError naming the key."""
+    if not node.has("model"):
+        return BASE
+    try:
+        return parse_model(node["model"].string()).name
+    except InputError as exc:
+        node["model"].fail(exc.expected)

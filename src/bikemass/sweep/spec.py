@@ -35,12 +35,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.config import load_yaml
-from ..core.errors import InputError
 from ..core.limits import MAX_SPEED
 from ..core.paths import near_spec, near_spec_file
 from ..core.units import DIMENSIONS, UnitError, dimension_of, split_quantity
 from ..models.parameters import NAMES, dimension
-from ..models.registry import BASE, parse_model
+from ..models.registry import BASE, spec_model
 from ..scenario.scenario import Scenario
 
 SAMPLE_METHODS = ("grid", "lhs", "sobol")
@@ -295,16 +294,6 @@ def _starts_with_number(text):
     return True
 
 
-def _model_name(node):
-    """The spec's ``model:`` as its canonical name (``whipple`` without one)."""
-    if not node.has("model"):
-        return BASE
-    try:
-        return parse_model(node["model"].string()).name
-    except InputError as exc:
-        node["model"].fail(exc.expected)
-
-
 def read_spec(path: "str | os.PathLike") -> "SweepSpec":
     """:class:`SweepSpec` of a YAML file; InputError naming the key on bad input."""
     node = load_yaml(path)
@@ -351,7 +340,7 @@ def read_spec(path: "str | os.PathLike") -> "SweepSpec":
         combine=node["combine"].string(("exact", "thesis")) if node.has("combine") else "exact",
         max_speed=float(max_speed), variables=variables, method=method, n=n, seed=seed,
         global_sensitivity=gsa, chunk=None if chunk is None else int(chunk),
-        model=_model_name(node), tyres=near_spec(path, node["tyres"].string()) if node.has("tyres") else None)
+        model=spec_model(node), tyres=near_spec(path, node["tyres"].string()) if node.has("tyres") else None)
     grid = method == "grid" and not gsa
     limit = MAX_CONFIGURATIONS if grid else MAX_SAMPLES
     if count_of(spec) > limit:
