@@ -29,6 +29,12 @@ STIFFNESS_CELLS = {"S_phiphi": ((0, 0),), "S_phidelta": ((0, 1),), "S_deltadelta
 """The independent entries of the symmetric frame stiffness S and the cell each is read from."""
 
 
+def _step_size(value):
+    """The central differences' step for a variable at ``value``: :data:`GEOMETRY_STEP` relative, absolute
+    at 0 (the same step wherever a design is differenced, so that its designs are built once)."""
+    return GEOMETRY_STEP * abs(value) if value else GEOMETRY_STEP
+
+
 class Design:
     """One design built: ``x`` (SI), the :class:`~bikemass.scenario.scenario.Built` and, on first
     use, its critical speeds on ``(0, max_speed]``."""
@@ -169,7 +175,7 @@ class Problem:
             if variable.key in NAMES and not members:
                 params[variable.key][k] = 1.0
                 continue
-            h = GEOMETRY_STEP * abs(x[k]) if x[k] else GEOMETRY_STEP
+            h = _step_size(x[k])
             plus, minus = (self.design(np.where(np.arange(n) == k, x[k] + s, x)).built for s in (h, -h))
             for name in NAMES:
                 params[name][k] = (getattr(plus.parameters, name) - getattr(minus.parameters, name)) / (2 * h)
@@ -190,21 +196,17 @@ class Problem:
 
     def hqm_curve_jacobian(self, x):
         """``d HQM(w_j) / d x_k`` (240, n): central differences (relative step :data:`GEOMETRY_STEP`)."""
-        columns = []
-        for k in range(len(x)):
-            h = GEOMETRY_STEP * abs(x[k]) if x[k] else GEOMETRY_STEP
-            step = np.where(np.arange(len(x)) == k, h, 0.0)
-            columns.append((self.hqm_curve(x + step) - self.hqm_curve(x - step)) / (2 * h))
-        return np.stack(columns, axis=1)
+        return self._difference(self.hqm_curve, x)
 
     def _difference(self, f, x):
-        """Central differences of ``f`` in each variable (relative step :data:`GEOMETRY_STEP`)."""
-        out = np.zeros(len(x))
+        """Central differences of ``f`` (a number or an array of shape s) in each variable (relative step
+        :data:`GEOMETRY_STEP`): shape (n,) or (*s, n)."""
+        columns = []
         for k in range(len(x)):
-            h = GEOMETRY_STEP * abs(x[k]) if x[k] else GEOMETRY_STEP
+            h = _step_size(x[k])
             step = np.where(np.arange(len(x)) == k, h, 0.0)
-            out[k] = (f(x + step) - f(x - step)) / (2 * h)
-        return out
+            columns.append((np.asarray(f(x + step)) - np.asarray(f(x - step))) / (2 * h))
+        return np.stack(columns, axis=-1)
 
     # -- geometry ----------------------------------------------------------------------------
     @cached_property
