@@ -235,11 +235,13 @@ def test_the_optimal_handling_bicycle_at_4_m_s_beats_the_published_one(tmp_path,
     """Issue 34 / Moore, Hubbard & Hess (2016): minimising the HQM peak at 4 m/s over c, w, lam, rF from the
     benchmark (tuning bmd2016) reaches a peak no higher than the paper's optimum for 4 m/s (its Table 2: c, w,
     lam, rF = -0.206, 1.103, 0.265, 0.477) scored by the same code (0.635), the closed loop stable; and the
-    reported objective is what bikemass handling --tuning bmd2016 gives the reported design (1e-9)."""
+    reported objective is what bikemass handling --tuning bmd2016 gives the reported design (1e-9).  Four
+    starts: the HQM peak under a stable closed loop has many local minima (the paper's own words), and a
+    search from two starts reaches the published level on most orders and seeds of the box, not all."""
     spec = write_spec(tmp_path, {"bike": "benchmark", "speed": 4.0, "tuning": "bmd2016",
                                  "variables": {"c": {"min": -0.5, "max": 0.5}, "w": {"min": 0.327, "max": 2.0},
                                                "lam": {"min": -1.5, "max": 1.5}, "rF": {"min": 0.05, "max": 1.0}},
-                                 "minimise": "hqm-peak"})
+                                 "minimise": "hqm-peak", "starts": 4})
     result = bm.optimise(spec)
     published = bm.parameters("benchmark").replace(c=-0.206, w=1.103, lam=0.265, rF=0.477)
     score = bm.handling(published, [4.0], tuning="bmd2016").hqm_peak[0]

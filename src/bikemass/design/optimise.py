@@ -2,7 +2,8 @@
 
 The search: the box is screened (its centre and a scrambled Sobol sample, values only), then a
 gradient-based local search (scipy's SLSQP, with bounds and the constraints) starts from each of the
-best ``starts`` screened designs; the best feasible end point is the answer.  Variables are scaled
+best ``starts`` screened designs; the best feasible end point is the answer, or the best feasible
+design built on the way where a local search wandered off a better one (then ``converged`` is false).  Variables are scaled
 to the unit box, the objective by its size at the box's centre.  Gradients are those of
 :class:`~bikemass.design.problem.Problem`.
 
@@ -36,6 +37,21 @@ KINK_STEP = 1e-4
 SLSQP_TOLERANCE = {"target": 1e-16, "maximise": 1e-10, "minimise": 1e-10}
 """SLSQP's ``ftol`` on the scaled objective (a target's is the square of a relative miss)."""
 MAX_ITERATIONS = 100
+ROUGH_SIMPLEX = 0.05
+"""Size of Nelder-Mead's first simplex (:func:`_rough`), a share of the unit box."""
+ROUGH_PENALTY = 1e3
+"""Weight of the constraints' violation in :func:`_rough`'s objective."""
+ROUGH_EVALUATIONS = 400
+"""Designs one Nelder-Mead search may build (:func:`_rough`)."""
+ROUGH_RESTARTS = 1
+"""Times :func:`_rough` restarts Nelder-Mead from where it ended."""
+IMPROVEMENT = 1e-6
+"""A design built on the way replaces the local searches' best end point where it is better by more than
+this (the scaled objective: a share of the objective's size at the box's centre)."""
+SCREENING = 32
+"""Designs screened per design variable (rounded up to a power of two): a metric such as the HQM peak
+under a stable closed loop is defined well on a tenth of a box and rough there, so the local searches
+need starts that are already good."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -279,7 +295,7 @@ def _search(spec, problem, progress, start_time):
         return call
 
     # screening: the design as given, the centre and a scrambled Sobol sample of the box, values only
-    m = int(np.ceil(np.log2(max(8, 4 * n))))
+    m = int(np.ceil(np.log2(max(8, SCREENING * n))))
     points = [centre, *qmc.Sobol(d=n, scramble=True, seed=spec.seed).random_base2(m)]
     given = (np.array([problem.scenario.value(v.key) for v in spec.variables]) - lo) / span
     if np.all((given >= 0) & (given <= 1)):
@@ -303,9 +319,12 @@ def _search(spec, problem, progress, start_time):
     minimax = spec.objective == "hqm-peak" and spec.sense == "minimise"
     for *_, u0 in screened[:spec.starts]:
         try:
-            res = minimize(tracked(objective), np.array(u0), jac=objective_gradient, method="SLSQP",
-                           bounds=[(0.0, 1.0)] * n, constraints=cons,
-                           options={"ftol": SLSQP_TOLERANCE[spec.sense], "maxiter": MAX_ITERATIONS})
+            if minimax:                    # a maximum over frequency: a kinked, steep objective (see _rough)
+                res = _rough(tracked(objective), violation, np.array(u0), minimize)
+            else:
+                res = minimize(tracked(objective), np.array(u0), jac=objective_gradient, method="SLSQP",
+                               bounds=[(0.0, 1.0)] * n, constraints=cons,
+                               options={"ftol": SLSQP_TOLERANCE[spec.sense], "maxiter": MAX_ITERATIONS})
             if minimax:                    # polished as a minimax problem from where the direct search ended
                 polished = _minimax(problem, x_of, span, scale, record, cons, np.clip(res.x, 0.0, 1.0), minimize)
                 if violation(polished.x[:n]) <= FEASIBLE and objective(polished.x[:n]) <= objective(res.x):
@@ -318,6 +337,13 @@ def _search(spec, problem, progress, start_time):
         u = np.clip(res.x[:n], 0.0, 1.0)
         v = violation(u)
         runs.append((v > FEASIBLE, v, float(objective(u)), u, bool(res.success), str(res.message)))
+    best_built = min(((e.violation > FEASIBLE, e.violation, objective((np.array(e.variables) - lo) / span), e)
+                      for e in history), key=lambda r: r[:3])
+    best_run = min(runs, key=lambda r: r[:3])
+    if not best_built[0] and (best_run[0] or best_built[2] < best_run[2] - IMPROVEMENT):
+        # a feasible design built on the way beats every end point clearly
+        runs.append((*best_built[:3], (np.array(best_built[3].variables) - lo) / span, False,
+                     "the best design built on the way (no local search ended at a better one)"))
     runs.sort(key=lambda r: (r[0], r[1], r[2]))
     infeasible, worst, _, u_best, success, message = runs[0]
     x_best = x_of(u_best)
@@ -350,6 +376,25 @@ def _search(spec, problem, progress, start_time):
         gradient=gradient, variable_units={v.key: _unit_of(v) for v in spec.variables},
         metric_units={name: metric(name).unit for name in spec.metrics},
         seconds=time.perf_counter() - start_time)
+
+
+def _rough(objective, violation, u0, minimize):
+    """Nelder-Mead from ``u0`` (a simplex of :data:`ROUGH_SIMPLEX` of the box) on the objective plus
+    :data:`ROUGH_PENALTY` times the constraints' violation: no gradient, so a kink or a steep side of
+    the objective cannot throw the search across the box as a first gradient step does."""
+    n = len(u0)
+
+    def penalised(u):
+        return objective(u) + ROUGH_PENALTY * violation(u)
+    res = None
+    for _ in range(ROUGH_RESTARTS + 1):    # restarted from where it ended with a fresh simplex: a collapsed one stalls
+        simplex = np.vstack([u0, u0 + ROUGH_SIMPLEX * np.eye(n)])
+        simplex = np.where(simplex > 1.0, 2 * u0 - simplex, simplex)      # kept in the box
+        res = minimize(penalised, u0, method="Nelder-Mead", bounds=[(0.0, 1.0)] * n,
+                       options={"initial_simplex": simplex, "xatol": 1e-6, "fatol": 1e-9,
+                                "maxfev": ROUGH_EVALUATIONS})
+        u0 = np.clip(res.x, 0.0, 1.0)
+    return res
 
 
 def _minimax(problem, x_of, span, scale, record, constraints, u0, minimize):
