@@ -15,9 +15,9 @@ finite-difference step anywhere, and the critical speeds are the engine's closed
 (:mod:`bikemass.analysis.engine.closed_form`), the same numbers ``bm.stability`` reports.  Any
 other member of the family (a :class:`~bikemass.scenario.scenario.Scenario` with ``model=``) goes
 through the engine: its critical speeds are :func:`~bikemass.analysis.engine.critical.critical_speeds`
-(the weave's crossing, as ``bm.stability`` names it), and ``dA/dp`` of its generated code is a five-point
-central difference in each parameter (relative step :data:`MEMBER_STEP`; truncation error of order
-``step**4``, rounding of order ``1e-16 / step``: about 1e-10 relative).  Elasticities are
+(the weave's crossing, as ``bm.stability`` names it), and ``dA/dp`` of its generated code comes from
+the same complex step through that code (the generated coefficients take complex parameters): exact
+to rounding there too.  Elasticities are
 ``(p / v*) d v* / d p`` (per cent change of the speed per per cent change of the parameter).
 """
 
@@ -302,25 +302,11 @@ def _crossing_speed(p, kind, branch):
     return np.sqrt(u)
 
 
-MEMBER_STEP = 1e-3
-"""Relative step of the five-point central difference of a member's ``dA/dp`` (absolute for a zero
-parameter, in its SI unit)."""
-
-
-def member_state_derivatives(built, speed, names=NAMES, step=MEMBER_STEP):
-    """``{name: dA/dp}`` (dynamic block at ``speed``) of a built member's generated model, by a
-    five-point central difference in each benchmark parameter of the set it takes."""
-    base = built.values()
-    n = built.model.n_dynamic
-
-    def at(name, x):
-        return built.with_values({**base, name: x}).dynamic_matrix(speed)[:n, :n]
-    out = {}
-    for name in names:
-        x = base[name]
-        h = step * abs(x) if x else step
-        out[name] = (8 * (at(name, x + h) - at(name, x - h)) - (at(name, x + 2 * h) - at(name, x - 2 * h))) / (12 * h)
-    return out
+def member_state_derivatives(built, speed, names=NAMES):
+    """``{name: dA/dp}`` (dynamic block at ``speed``) of a built member's generated model, by the
+    complex step through its generated code (:func:`~bikemass.models.family.dynamic_derivatives`):
+    exact to rounding, the same rule as the Whipple bicycle's."""
+    return built.derivatives(speed, names, STEP)
 
 
 def _member_sensitivity(built, vmax, names):

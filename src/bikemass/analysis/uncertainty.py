@@ -123,10 +123,15 @@ def directions(scenario, spreads, step=1e-4):
 
 def member_directions(scenario, spreads, speeds, step=1e-4):
     """``{key: dA}``: the dynamic block's derivative (n_speeds, n, n) per unit of each input of a
-    member other than the Whipple bicycle, by a central difference through the builder (relative
-    step ``step``, absolute for an input at zero)."""
-    out = {}
+    member other than the Whipple bicycle: by the complex step through the generated code for a
+    parameter of the model's code, by a central difference through the builder (relative step
+    ``step``, absolute for an input at zero) for a design input (geometry, pose, material)."""
+    built = scenario.build()
+    own = tuple(key for key in spreads if key in built.values())
+    out = dict(built.derivatives(speeds, own, STEP)) if own else {}
     for key in spreads:
+        if key in out:
+            continue
         x = scenario.value(key)
         h = step * abs(x) if x else step
         a, b = scenario.build({key: x + h}).model, scenario.build({key: x - h}).model

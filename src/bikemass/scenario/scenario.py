@@ -41,7 +41,8 @@ import numpy as np
 from ..core.choices import RIGID, Combine, Method, check
 from ..core.errors import InputError, short
 from ..core.frozen import readonly, short_repr
-from ..models.family import build as build_member, generated, held_coordinates, linear_model, values as member_values
+from ..models.family import build as build_member, dynamic_derivatives, generated, held_coordinates, linear_model, \
+    values as member_values
 from ..models.flexible import Compliances
 from ..models.lean import RiderLeanParameters
 from ..models.linear import LinearModel
@@ -104,6 +105,12 @@ class Built:
         """The model of the same member at other parameter ``values`` (``{name: float}``, as
         :meth:`values`), the same coordinates held."""
         return linear_model(self.choice, values, held_coordinates(self.choice, self.compliances))
+
+    def derivatives(self, speed, names, step):
+        """``{name: dA/dp}``: the dynamic block of the model's ``A(speed)`` differentiated with respect to
+        each parameter of ``names`` (as :meth:`values` names them) by the complex step ``i * step``."""
+        return dynamic_derivatives(self.choice, self.values(), tuple(names), speed, step,
+                                   held_coordinates(self.choice, self.compliances))
 
     def __repr__(self):
         return short_repr(self, ("model", repr(self.model.name)), ("stiffness", self.stiffness is not None))

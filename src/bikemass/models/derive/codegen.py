@@ -68,8 +68,8 @@ def module_source(derived: Derived, generator="bikemass.models.derive"):
               f"SECOND_ORDER = {derived.second_order}", '"""Whether the dynamic states are exactly [q, q\']."""',
               "", ""]
     body = [f"    {symbol} = {printer.doprint(expr)}" for symbol, expr in replacements]
-    body += [f"    E = np.zeros(shape + ({N}, {N}))", f"    A = np.zeros(shape + ({dA}, {N}, {N}))",
-             f"    B = np.zeros(shape + ({dB}, {N}, {m}))"]
+    body += [f"    E = np.zeros(shape + ({N}, {N}), dtype)", f"    A = np.zeros(shape + ({dA}, {N}, {N}), dtype)",
+             f"    B = np.zeros(shape + ({dB}, {N}, {m}), dtype)"]
     body += [f"    {array}[..., {', '.join(map(str, index))}] = {printer.doprint(expr)}"
              for (array, index, _), expr in zip(targets, reduced)]
     functions = sorted(set(re.findall(r"\b([a-z]\w*)\(", "\n".join(body))) - {"zeros"})
@@ -79,7 +79,7 @@ def module_source(derived: Derived, generator="bikemass.models.derive"):
     lines.append(f"def _make({', '.join(functions)}):")
     lines.append(f'    """The coefficient function computing with these functions ({", ".join(functions)})."""')
     lines.append("")
-    lines.append(f"    def coefficients(shape, {', '.join(names)}):")
+    lines.append(f"    def coefficients(shape, dtype, {', '.join(names)}):")
     lines += ["    " + line for line in body]
     lines.append("        return E, A, B")
     lines.append("    return coefficients")
@@ -89,9 +89,10 @@ def module_source(derived: Derived, generator="bikemass.models.derive"):
     lines += ["", ""]
     lines.append(f"def coefficients({', '.join(names)}):")
     lines.append(f'    """``(E, A, B)``: E (..., {N}, {N}), A (..., {dA}, {N}, {N}), B (..., {dB}, {N}, {m}), the leading')
-    lines.append('    dimensions those of the parameters (floats or arrays, SI, see PARAMETERS) broadcast together."""')
+    lines.append('    dimensions those of the parameters (floats or arrays, SI, see PARAMETERS) broadcast together;')
+    lines.append('    complex where a parameter is (the complex step: exact derivatives)."""')
     lines.append(f"    args = ({', '.join(names)},)")
     lines.append("    if all(type(a) is float for a in args):")
-    lines.append("        return _floats((), *args)")
-    lines.append("    return _arrays(np.broadcast_shapes(*(np.shape(a) for a in args)), *args)")
+    lines.append("        return _floats((), float, *args)")
+    lines.append("    return _arrays(np.broadcast_shapes(*(np.shape(a) for a in args)), np.result_type(float, *args), *args)")
     return "\n".join(lines) + "\n"

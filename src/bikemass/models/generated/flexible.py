@@ -31,7 +31,7 @@ SECOND_ORDER = True
 def _make(cos, sin):
     """The coefficient function computing with these functions (cos, sin)."""
 
-    def coefficients(shape, w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, cr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf, cf, cs):
+    def coefficients(shape, dtype, w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, cr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf, cf, cs):
         x0 = rR**2
         x1 = -rR - zB
         x2 = zr**2
@@ -275,9 +275,9 @@ def _make(cos, sin):
         x240 = x239*x40
         x241 = x239*x56
         x242 = x239*x69
-        E = np.zeros(shape + (10, 10))
-        A = np.zeros(shape + (3, 10, 10))
-        B = np.zeros(shape + (1, 10, 2))
+        E = np.zeros(shape + (10, 10), dtype)
+        A = np.zeros(shape + (3, 10, 10), dtype)
+        B = np.zeros(shape + (1, 10, 2), dtype)
         E[..., 0, 0] = 1
         E[..., 1, 1] = 1
         E[..., 2, 2] = 1
@@ -369,8 +369,9 @@ _floats = _make(math.cos, math.sin)
 
 def coefficients(w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, cr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf, cf, cs):
     """``(E, A, B)``: E (..., 10, 10), A (..., 3, 10, 10), B (..., 1, 10, 2), the leading
-    dimensions those of the parameters (floats or arrays, SI, see PARAMETERS) broadcast together."""
+    dimensions those of the parameters (floats or arrays, SI, see PARAMETERS) broadcast together;
+    complex where a parameter is (the complex step: exact derivatives)."""
     args = (w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, cr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf, cf, cs,)
     if all(type(a) is float for a in args):
-        return _floats((), *args)
-    return _arrays(np.broadcast_shapes(*(np.shape(a) for a in args)), *args)
+        return _floats((), float, *args)
+    return _arrays(np.broadcast_shapes(*(np.shape(a) for a in args)), np.result_type(float, *args), *args)

@@ -31,7 +31,7 @@ SECOND_ORDER = True
 def _make(cos, sin):
     """The coefficient function computing with these functions (cos, sin)."""
 
-    def coefficients(shape, w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, mU, xU, zU, IUxx, IUyy, IUzz, IUxz, zhip, klean, clean):
+    def coefficients(shape, dtype, w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, mU, xU, zU, IUxx, IUyy, IUzz, IUxz, zhip, klean, clean):
         x0 = -zU + zhip
         x1 = rR + zhip
         x2 = mU*x1
@@ -95,9 +95,9 @@ def _make(cos, sin):
         x60 = x25*x56
         x61 = -x35 - x36 - x60
         x62 = c*mF - mF*x15 - x32 - x40 - x49 - x50
-        E = np.zeros(shape + (8, 8))
-        A = np.zeros(shape + (3, 8, 8))
-        B = np.zeros(shape + (1, 8, 3))
+        E = np.zeros(shape + (8, 8), dtype)
+        A = np.zeros(shape + (3, 8, 8), dtype)
+        B = np.zeros(shape + (1, 8, 3), dtype)
         E[..., 0, 0] = 1
         E[..., 1, 1] = 1
         E[..., 2, 2] = 1
@@ -146,8 +146,9 @@ _floats = _make(math.cos, math.sin)
 
 def coefficients(w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, mU, xU, zU, IUxx, IUyy, IUzz, IUxz, zhip, klean, clean):
     """``(E, A, B)``: E (..., 8, 8), A (..., 3, 8, 8), B (..., 1, 8, 3), the leading
-    dimensions those of the parameters (floats or arrays, SI, see PARAMETERS) broadcast together."""
+    dimensions those of the parameters (floats or arrays, SI, see PARAMETERS) broadcast together;
+    complex where a parameter is (the complex step: exact derivatives)."""
     args = (w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, mU, xU, zU, IUxx, IUyy, IUzz, IUxz, zhip, klean, clean,)
     if all(type(a) is float for a in args):
-        return _floats((), *args)
-    return _arrays(np.broadcast_shapes(*(np.shape(a) for a in args)), *args)
+        return _floats((), float, *args)
+    return _arrays(np.broadcast_shapes(*(np.shape(a) for a in args)), np.result_type(float, *args), *args)

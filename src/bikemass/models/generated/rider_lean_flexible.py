@@ -31,7 +31,7 @@ SECOND_ORDER = True
 def _make(cos, sin):
     """The coefficient function computing with these functions (cos, sin)."""
 
-    def coefficients(shape, w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, mU, xU, zU, IUxx, IUyy, IUzz, IUxz, zhip, klean, clean, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, cr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf, cf, cs):
+    def coefficients(shape, dtype, w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, mU, xU, zU, IUxx, IUyy, IUzz, IUxz, zhip, klean, clean, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, cr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf, cf, cs):
         x0 = -zU + zhip
         x1 = rR + zhip
         x2 = mU*x1
@@ -293,9 +293,9 @@ def _make(cos, sin):
         x258 = x257*x51
         x259 = x257*x68
         x260 = x257*x81
-        E = np.zeros(shape + (12, 12))
-        A = np.zeros(shape + (3, 12, 12))
-        B = np.zeros(shape + (1, 12, 3))
+        E = np.zeros(shape + (12, 12), dtype)
+        A = np.zeros(shape + (3, 12, 12), dtype)
+        B = np.zeros(shape + (1, 12, 3), dtype)
         E[..., 0, 0] = 1
         E[..., 1, 1] = 1
         E[..., 2, 2] = 1
@@ -409,8 +409,9 @@ _floats = _make(math.cos, math.sin)
 
 def coefficients(w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, mU, xU, zU, IUxx, IUyy, IUzz, IUxz, zhip, klean, clean, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, cr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf, cf, cs):
     """``(E, A, B)``: E (..., 12, 12), A (..., 3, 12, 12), B (..., 1, 12, 3), the leading
-    dimensions those of the parameters (floats or arrays, SI, see PARAMETERS) broadcast together."""
+    dimensions those of the parameters (floats or arrays, SI, see PARAMETERS) broadcast together;
+    complex where a parameter is (the complex step: exact derivatives)."""
     args = (w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, mU, xU, zU, IUxx, IUyy, IUzz, IUxz, zhip, klean, clean, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, cr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf, cf, cs,)
     if all(type(a) is float for a in args):
-        return _floats((), *args)
-    return _arrays(np.broadcast_shapes(*(np.shape(a) for a in args)), *args)
+        return _floats((), float, *args)
+    return _arrays(np.broadcast_shapes(*(np.shape(a) for a in args)), np.result_type(float, *args), *args)

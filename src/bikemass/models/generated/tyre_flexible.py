@@ -31,7 +31,7 @@ SECOND_ORDER = False
 def _make(cos, sin):
     """The coefficient function computing with these functions (cos, sin)."""
 
-    def coefficients(shape, w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, cr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf, cf, cs, CaR, CgR, sigmaR, tpR, CmgR, CaF, CgF, sigmaF, tpF, CmgF):
+    def coefficients(shape, dtype, w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, cr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf, cf, cs, CaR, CgR, sigmaR, tpR, CmgR, CaF, CgF, sigmaF, tpF, CmgF):
         x0 = rR**2
         x1 = -rR - zB
         x2 = zr**2
@@ -260,9 +260,9 @@ def _make(cos, sin):
         x225 = x203*x217 - x204*x217
         x226 = nrx*x217
         x227 = nfx*x217
-        E = np.zeros(shape + (14, 14))
-        A = np.zeros(shape + (2, 14, 14))
-        B = np.zeros(shape + (1, 14, 2))
+        E = np.zeros(shape + (14, 14), dtype)
+        A = np.zeros(shape + (2, 14, 14), dtype)
+        B = np.zeros(shape + (1, 14, 2), dtype)
         E[..., 0, 0] = 1
         E[..., 1, 1] = 1
         E[..., 2, 2] = 1
@@ -391,8 +391,9 @@ _floats = _make(math.cos, math.sin)
 
 def coefficients(w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, cr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf, cf, cs, CaR, CgR, sigmaR, tpR, CmgR, CaF, CgF, sigmaF, tpF, CmgF):
     """``(E, A, B)``: E (..., 14, 14), A (..., 2, 14, 14), B (..., 1, 14, 2), the leading
-    dimensions those of the parameters (floats or arrays, SI, see PARAMETERS) broadcast together."""
+    dimensions those of the parameters (floats or arrays, SI, see PARAMETERS) broadcast together;
+    complex where a parameter is (the complex step: exact derivatives)."""
     args = (w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy, xr, zr, nrx, nrz, kr, mtr, xtr, ztr, dtr, cr, xf, zf, nfx, nfz, kf, mtf, xtf, ztf, dtf, cf, cs, CaR, CgR, sigmaR, tpR, CmgR, CaF, CgF, sigmaF, tpF, CmgF,)
     if all(type(a) is float for a in args):
-        return _floats((), *args)
-    return _arrays(np.broadcast_shapes(*(np.shape(a) for a in args)), *args)
+        return _floats((), float, *args)
+    return _arrays(np.broadcast_shapes(*(np.shape(a) for a in args)), np.result_type(float, *args), *args)

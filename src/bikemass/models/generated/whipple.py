@@ -31,7 +31,7 @@ SECOND_ORDER = True
 def _make(cos, sin):
     """The coefficient function computing with these functions (cos, sin)."""
 
-    def coefficients(shape, w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy):
+    def coefficients(shape, dtype, w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy):
         x0 = rR**2
         x1 = -rR - zB
         x2 = mB*rR
@@ -78,9 +78,9 @@ def _make(cos, sin):
         x43 = x39*x4
         x44 = -x21 - x22 - x43
         x45 = c*mF - mF*x9 - x26 - x32 - x33
-        E = np.zeros(shape + (6, 6))
-        A = np.zeros(shape + (3, 6, 6))
-        B = np.zeros(shape + (1, 6, 2))
+        E = np.zeros(shape + (6, 6), dtype)
+        A = np.zeros(shape + (3, 6, 6), dtype)
+        B = np.zeros(shape + (1, 6, 2), dtype)
         E[..., 0, 0] = 1
         E[..., 1, 1] = 1
         E[..., 2, 2] = IBxx + IHxx + mB*x0 + mB*x1**2 + mF*rF**2 + mH*zH**2 + mR*x0 + 2*x1*x2 + x3
@@ -115,8 +115,9 @@ _floats = _make(math.cos, math.sin)
 
 def coefficients(w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy):
     """``(E, A, B)``: E (..., 6, 6), A (..., 3, 6, 6), B (..., 1, 6, 2), the leading
-    dimensions those of the parameters (floats or arrays, SI, see PARAMETERS) broadcast together."""
+    dimensions those of the parameters (floats or arrays, SI, see PARAMETERS) broadcast together;
+    complex where a parameter is (the complex step: exact derivatives)."""
     args = (w, c, lam, g, rR, mR, IRxx, IRyy, xB, zB, mB, IBxx, IByy, IBzz, IBxz, xH, zH, mH, IHxx, IHyy, IHzz, IHxz, rF, mF, IFxx, IFyy,)
     if all(type(a) is float for a in args):
-        return _floats((), *args)
-    return _arrays(np.broadcast_shapes(*(np.shape(a) for a in args)), *args)
+        return _floats((), float, *args)
+    return _arrays(np.broadcast_shapes(*(np.shape(a) for a in args)), np.result_type(float, *args), *args)
