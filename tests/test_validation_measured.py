@@ -5,7 +5,7 @@ The references are measurements, not models: the weave eigenvalues Kooijman, Sch
 paper's vector drawing, and the one eigenvalue the text prints), and those Haitjema (2023) fitted on
 the TU Delft balance-assist bicycle (Tables 3-5 of his note), all in ``reference/measured_weave.yaml``;
 the bicycles' parameters are the shipped ``kooijman2008`` (the paper's Table 1) and
-``balanceassist-measured`` (BicycleParameters' raw measurements of the same bicycle).
+``gazelle-balance-assist`` (BicycleParameters' raw measurements of the same bicycle).
 
 Each tolerance is the measurement's own scatter, computed here from the measured values alone:
 
@@ -168,10 +168,10 @@ def assist_rows():
 
 
 def test_balance_assist_shipped_equals_bicycleparameters_raw_file():
-    """frames/balanceassist_measured.yaml is BicycleParameters' Balanceassistv1Measured.txt: the same
+    """frames/gazelle_balance_assist.yaml is BicycleParameters' Balanceassistv1Measured.txt: the same
     26 parameters and standard deviations (1e-12 relative)."""
     raw = ROOT / "tests" / "data" / "bicycleparameters" / "measured" / "Balanceassistv1Measured.txt"
-    a, b = bm.load_measured("balanceassist-measured"), bm.load_measured(raw)
+    a, b = bm.load_measured("gazelle-balance-assist"), bm.load_measured(raw)
     for name, value in b.parameters.to_dict().items():
         assert a.parameters.to_dict()[name] == pytest.approx(value, rel=1e-12, abs=1e-15), name
         assert a.std[name] == pytest.approx(b.std[name], rel=1e-12, abs=1e-15), name
@@ -180,7 +180,7 @@ def test_balance_assist_shipped_equals_bicycleparameters_raw_file():
 def test_balance_assist_closed_loop_equals_an_independent_computation():
     """bikemass's --control closed loop of the note's law equals numpy's eigenvalues of the canonical
     matrices with the roll-rate feedback written in by hand (1e-9 1/s), at every measured speed."""
-    p = bm.parameters("balanceassist-measured")
+    p = bm.parameters("gazelle-balance-assist")
     m = bm.matrices(p)
     speeds, _ = assist_rows()
     for setting in (6, 8, 10):
@@ -198,7 +198,7 @@ def test_balance_assist_whipple_overpredicts_the_weave_frequency_at_5_m_s():
     at5 = np.array([rows[k][-1, 1] for k in (6, 8, 10)])
     assert speeds[-1] == 5.0
     mean, sd = at5.mean(), at5.std(ddof=1)
-    model = weave(bm.parameters("balanceassist-measured"), [5.0])[0].imag
+    model = weave(bm.parameters("gazelle-balance-assist"), [5.0])[0].imag
     assert model - mean > 3 * sd
     assert model / mean > 1.4
 
@@ -208,7 +208,7 @@ def test_balance_assist_overpredicted_at_every_speed_and_gain():
     is above the measured one at all 21 points by more than 3 repeat standard deviations."""
     speeds, rows = assist_rows()
     sd = np.array([rows[k][-1, 1] for k in (6, 8, 10)]).std(ddof=1)
-    p = bm.parameters("balanceassist-measured")
+    p = bm.parameters("gazelle-balance-assist")
     for setting, measured in rows.items():
         model = weave(p, speeds, control=assist_law(setting))
         assert np.all(model.imag - measured[:, 1] > 3 * sd), setting
@@ -219,7 +219,7 @@ def test_balance_assist_tyre_member_does_not_narrow_the_miss():
     3 repeat standard deviations: of bikemass's members for a riderless bicycle, none narrows it."""
     _, rows = assist_rows()
     at5 = np.array([rows[k][-1, 1] for k in (6, 8, 10)])
-    model = weave(bm.parameters("balanceassist-measured"), [5.0], model="tyre")[0].imag
+    model = weave(bm.parameters("gazelle-balance-assist"), [5.0], model="tyre")[0].imag
     assert model - at5.mean() > 3 * at5.std(ddof=1)
 
 
@@ -231,7 +231,7 @@ def test_balance_assist_steer_inertia_and_damping_would_narrow_the_miss():
     (what a geared steering motor's rotor and drag would add) brings both below the uncorrected ones:
     frequency below 1, real part below 0.5 1/s."""
     speeds, rows = assist_rows()
-    m = bm.matrices(bm.parameters("balanceassist-measured"))
+    m = bm.matrices(bm.parameters("gazelle-balance-assist"))
 
     def rms(inertia, damping):
         miss = np.array([canonical_weave(m, v, s * max(5.0 - v, 0.0), inertia, damping) - complex(*row)
