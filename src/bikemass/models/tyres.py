@@ -7,7 +7,8 @@ A tyre file (YAML, read through the input gate; every coefficient carries its un
     rear:  {cornering_coefficient: 11.46 1/rad, camber_coefficient: 0.573 1/rad, relaxation_length: 0.175 m}
 
 and optionally, per wheel, the moments about the ground normal: ``pneumatic_trail`` (a length) and
-``twisting_coefficient`` (a moment per unit load per angle, ``m/rad`` or ``mm/deg``); both default to 0.
+``twisting_coefficient`` (a moment per unit load per angle, ``m/rad`` or ``mm/deg``); both default to 0
+(a measured pneumatic trail, and why it is not the default: :data:`MEASURED_TRAIL`, :data:`TRAIL_TYRES`).
 
 Default (:data:`DEFAULT_TYRES`): 11.46 /rad, 0.573 /rad and 0.175 m on both wheels, the TU Delft
 Bicycle Lab's values for the Batavus Browser's tyres (``mechmotum/bicycle-kickplate-model``,
