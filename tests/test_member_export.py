@@ -131,3 +131,17 @@ def test_bad_measurements_are_refused(stiffness, key):
     with pytest.raises(InputError) as info:
         _compliance(stiffness)
     assert info.value.key == key
+
+
+def test_contract_tyre_moments_read_back(capsys, tmp_path):
+    """A tyre file with moments (the measured trail, a twisting coefficient) is written with them and reads
+    back as the same model (the moments were dropped from the file before)."""
+    tyres = tmp_path / "tyres.yaml"
+    tyres.write_text("front: {cornering_coefficient: 11.46 1/rad, camber_coefficient: 0.573 1/rad, relaxation_length: "
+                     "0.175 m, pneumatic_trail: 16.6 mm, twisting_coefficient: 0.3 mm/deg}\n"
+                     "rear: {cornering_coefficient: 12 1/rad, camber_coefficient: 0.5 1/rad, relaxation_length: 0.2 m, "
+                     "pneumatic_trail: 12 mm}\n")
+    out = round_trip(capsys, tmp_path, "tyre+flexible", "--stiffness", "steel", "--tyres", str(tyres))
+    doc = yaml.safe_load(out.read_text())["tyre"]
+    assert doc["front"]["pneumatic_trail"] == "0.0166 m" and doc["rear"]["pneumatic_trail"] == "0.012 m"
+    assert "twisting_coefficient" in doc["front"] and "twisting_coefficient" not in doc["rear"]

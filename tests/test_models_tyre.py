@@ -10,7 +10,8 @@ from scipy.optimize import brentq
 from bikemass.scenario.scenario import parameters
 from bikemass.core.errors import InputError
 from bikemass.models.family import build, coefficients, values
-from bikemass.models.tyres import DEFAULT_TYRE, DEFAULT_TYRES, Tyre, Tyres, load_tyres, tyres_from_mapping
+from bikemass.models.tyres import (DEFAULT_TYRE, DEFAULT_TYRES, MEASURED_TRAIL, TRAIL_TYRE, TRAIL_TYRES, Tyre, Tyres,
+                                   load_tyres, tyres_from_mapping)
 
 BENCHMARK = parameters("benchmark")
 SPEEDS = [0.0, 0.5, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0]
@@ -263,3 +264,62 @@ def test_tyre_file_moments_with_units(tmp_path):
         load_tyres(path)
     with pytest.raises(InputError, match="tyre: pneumatic_trail: a number >= 0"):
         Tyre(11.0, 0.5, 0.2, pneumatic_trail=-0.01)
+
+
+# Dell'Orto, Mastinu, Happee & Moore (2024, Vehicle System Dynamics, doi:10.1080/00423114.2024.2338143):
+# Pacejka-89 coefficients of the Schwalbe Energizer Plus 47-622 at 400 kPa (slip and camber in degrees,
+# load in kN, force in N, moment in N m), as mechmotum/bicycle-kickplate-model's tire_data.py carries them.
+_FY_400KPA = (2.41687583414210, -827.137473764760, 1237.66083004943, 395.200360397803, 3.04468161785720,
+              0.00261138053320087, -0.922053239766776, 1.64994486504353, 0.0379083581395092, 0.736968117242096,
+              -0.266395254094883, 5.50670683634620, -128.332286072010, 42.3694891796893)
+_MZ_400KPA = (2.21843255129583, 11.5353268949534, 0.999589243739601, -0.421820285221245, -4.40274539041674,
+              0.189524333398220, 0.00529677470051710, 7.18443466280740, -16.9117717254093, 5.14613592375553,
+              -0.126298815430486, 0.0745699176433646, -1.21219459523314, 0.453513932334205, 0.602307673841529,
+              0.0536303220687809, -0.656371696645942, 0.407297064320888)
+
+
+def _magic(slip, camber, load):
+    """Lateral force (N) and moment about the normal (N m) of the 400 kPa fit (Bakker, Nyborg & Pacejka 1989's
+    form: ``D sin(C atan(B x - E (B x - atan(B x)))) + S_v`` with ``x = slip + S_h``), slip and camber in degrees,
+    load in kN."""
+    def curve(C, D, BCD, E, Sh, Sv):
+        B = BCD / (C * D)
+        x = slip + Sh
+        return D * np.sin(C * np.arctan(B * x - E * (B * x - np.arctan(B * x)))) + Sv
+    a, b, z, g = _FY_400KPA, _MZ_400KPA, load, abs(camber)
+    force = curve(a[0], a[1] * z ** 2 + a[2] * z, a[3] * np.sin(2 * np.arctan(z / a[4])) * (1 - a[5] * g),
+                  a[6] * z + a[7], a[8] * camber + a[9] * z + a[10], a[11] * z * camber + a[12] * z + a[13])
+    moment = curve(b[0], b[1] * z ** 2 + b[2] * z, (b[3] * z ** 2 + b[4] * z) * (1 - b[6] * g) * np.exp(-b[5] * z),
+                   (b[7] * z ** 2 + b[8] * z + b[9]) * (1 - b[10] * g), b[11] * camber + b[12] * z + b[13],
+                   (b[14] * z ** 2 + b[15] * z) * camber + b[16] * z + b[17])
+    return force, moment
+
+
+def test_the_measured_trail_is_the_linearised_published_fit():
+    """MEASURED_TRAIL is ``-(dM_z/d alpha) / (dF_y/d alpha)`` of Dell'Orto et al.'s (2024) 400 kPa fit at zero slip
+    and camber (central differences of 1e-4 deg) for every load of 300-600 N, to 0.1 mm (the load dependence:
+    16.5-16.6 mm); positive (the force acts behind the contact, the moment opposes the slip).  The same fit's
+    camber moment changes sign inside that load range (why the twisting coefficient stays 0), and its cornering
+    coefficient (14.3-14.7 /rad) lies inside Dressel's range beside the default's 11.46 /rad."""
+    h = 1e-4
+    camber_moments = []
+    for load in (0.3, 0.4, 0.5, 0.6):
+        dF = (_magic(h, 0.0, load)[0] - _magic(-h, 0.0, load)[0]) / (2 * h)
+        dM = (_magic(h, 0.0, load)[1] - _magic(-h, 0.0, load)[1]) / (2 * h)
+        assert -dM / dF == pytest.approx(MEASURED_TRAIL, abs=1e-4)
+        assert 8.6 <= dF * 180 / np.pi / (1000 * load) <= 20.1       # Dressel's softest to stiffest, 1/rad
+        camber_moments.append((_magic(0.0, h, load)[1] - _magic(0.0, -h, load)[1]) / (2 * h))
+    assert min(camber_moments) < 0 < max(camber_moments)
+    assert TRAIL_TYRE == replace(DEFAULT_TYRE, pneumatic_trail=MEASURED_TRAIL) and TRAIL_TYRES == Tyres(TRAIL_TYRE, TRAIL_TYRE)
+
+
+def test_the_measured_trail_without_twisting_torque_leaves_the_benchmark_no_stable_speed():
+    """With the measured trail and no twisting torque the benchmark bicycle on the default tyres has no stable
+    speed: a real root is unstable at every speed from about 3 m/s (counted with numpy's eigenvalues on a
+    0.5 m/s grid), where the force-only tyres leave it stable between its weave and capsize speeds (4.3-6.0 m/s)."""
+    trail = build("tyre", BENCHMARK, TRAIL_TYRES)
+    plain = build("tyre", BENCHMARK, DEFAULT_TYRES)
+    for v in np.arange(3.5, 10.01, 0.5):
+        values = np.linalg.eigvals(trail.dynamic_matrix(v))
+        assert np.any((values.imag == 0) & (values.real > 0.5)), v
+    assert np.all(np.linalg.eigvals(plain.dynamic_matrix(5.0)).real < 0)

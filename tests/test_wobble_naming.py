@@ -153,3 +153,60 @@ def test_where_no_stable_range_exists_the_output_names_the_modes_that_prevent_it
         assert np.min(np.abs(unstable - r)) < 1e-9 * abs(r)
     assert "wobble" in p.modes
     assert result.to_dict()["no_stable_range"]["unstable_modes"] == list(p.modes)
+
+
+def _steer_dominated_in_band(model, speed):
+    """The roots (Im > 0) at ``speed`` of 3-15 Hz whose largest participation, summed by coordinate, is on
+    steer (plain numpy), with their steer participation."""
+    values, X = np.linalg.eig(model.dynamic_matrix(speed))
+    share = np.abs(X * np.linalg.inv(X).T)
+    out = []
+    for k, root in enumerate(values):
+        if root.imag <= 0 or not 3.0 <= root.imag / (2 * np.pi) <= 15.0:
+            continue
+        by = {}
+        for state, x in zip(model.dynamic_states, share[:, k] / share[:, k].sum()):
+            name = state.name.removesuffix("-rate").removesuffix("-angle")
+            by[name] = by.get(name, 0.0) + x
+        if max(by, key=by.get) == "steer":
+            out.append((root, by["steer"]))
+    return out
+
+
+@pytest.mark.parametrize("grid", [GRID, np.arange(1.0, 9.5, 1.0), np.arange(0.0, 5.01, 0.5), np.arange(10.0, 20.01, 2.0)],
+                         ids=["0-30", "1-9", "0-5", "10-20"])
+def test_tyre_and_flexible_wobble_is_labelled_by_what_moves(grid):
+    """Jamis + Relaxed, tyre+flexible, steel: the steer-dominated oscillation of the wobble band at 8 m/s
+    (found by plain numpy: one root, 6.5 Hz) is the column labelled ``wobble 1`` / ``wobble 2`` (its
+    conjugate) on any grid (the labels are fixed following the modes up to 8 m/s whatever the grid; the
+    grid's own roots are compared at a grid speed), which was labelled ``tyre 3`` / ``tyre 4`` by its family at
+    standstill; no other label is of the wobble family and none above 15 Hz."""
+    model = bm.Scenario("jamis", "relaxed", stiffness="steel", model="tyre+flexible").build().model
+    (root, steer), = _steer_dominated_in_band(model, 8.0)
+    assert 6.0 <= root.imag / (2 * np.pi) <= 7.0 and steer > 0.3
+    result = analyse(model, grid)
+    assert sorted(label for label in result.labels if family(label) == WOBBLE) == ["wobble 1", "wobble 2"]
+    reference = analyse(model, GRID)
+    k = int(np.flatnonzero(GRID == 8.0)[0])
+    column = int(np.argmin(np.abs(reference.eigenvalues[k] - root)))
+    assert abs(reference.eigenvalues[k, column] - root) < 1e-8 * abs(root)
+    assert reference.labels[column] == "wobble 1" and reference.modes.names()[k, column] == WOBBLE
+    for c, label in enumerate(result.labels):       # the same mode on every grid: compare at its first speed
+        same = int(np.argmin(np.abs(reference.eigenvalues[int(np.argmin(np.abs(GRID - grid[0])))] -
+                                    result.eigenvalues[0, c])))
+        if np.isclose(GRID, grid[0], atol=1e-9).any():
+            assert reference.labels[same] == label
+    hz = np.abs(result.eigenvalues.imag) / (2 * np.pi)
+    assert not any(family(label) == WOBBLE and np.any(hz[:, c] > 15.0) for c, label in enumerate(result.labels))
+
+
+def test_flexible_jamis_without_tyres_keeps_its_wobble_by_family():
+    """The flexible Jamis (no tyres) has no steer-dominated oscillation in the band at 8 m/s (plain numpy:
+    its 7.4 Hz mode is frame-twist-dominated by participation), so its labels by family stand: the 7.4 Hz
+    pair is ``wobble 1`` / ``wobble 2``."""
+    model = flexible_model("jamis")
+    assert _steer_dominated_in_band(model, 8.0) == []
+    result = analyse(model, GRID)
+    k = int(np.flatnonzero(GRID == 8.0)[0])
+    column = result.labels.index("wobble 1")
+    assert 7.0 <= abs(result.eigenvalues[k, column].imag) / (2 * np.pi) <= 8.0

@@ -103,7 +103,11 @@ def member_document(choice, params, lean=None, compliances=None, tyres=None, sti
     if choice.has("tyre") and tyres is not None:
         doc["tyre"] = {w: {"cornering_coefficient": f"{t.cornering_coefficient!r} 1/rad",
                            "camber_coefficient": f"{t.camber_coefficient!r} 1/rad",
-                           "relaxation_length": t.relaxation_length}
+                           "relaxation_length": t.relaxation_length,
+                           # the moments only when a tyre has them (a force-only tyre's file as before)
+                           **({"pneumatic_trail": f"{t.pneumatic_trail!r} m"} if t.pneumatic_trail else {}),
+                           **({"twisting_coefficient": f"{t.twisting_coefficient!r} m/rad"}
+                              if t.twisting_coefficient else {})}
                        for w, t in (("front", tyres.front), ("rear", tyres.rear))}
     if not choice.members and stiffness is not None:
         doc["frame_stiffness"] = [[float(x) for x in row] for row in stiffness]

@@ -7,7 +7,8 @@ A tyre file (YAML, read through the input gate; every coefficient carries its un
     rear:  {cornering_coefficient: 11.46 1/rad, camber_coefficient: 0.573 1/rad, relaxation_length: 0.175 m}
 
 and optionally, per wheel, the moments about the ground normal: ``pneumatic_trail`` (a length) and
-``twisting_coefficient`` (a moment per unit load per angle, ``m/rad`` or ``mm/deg``); both default to 0.
+``twisting_coefficient`` (a moment per unit load per angle, ``m/rad`` or ``mm/deg``); both default to 0
+(a measured pneumatic trail, and why it is not the default: :data:`MEASURED_TRAIL`, :data:`TRAIL_TYRES`).
 
 Default (:data:`DEFAULT_TYRES`): 11.46 /rad, 0.573 /rad and 0.175 m on both wheels, the TU Delft
 Bicycle Lab's values for the Batavus Browser's tyres (``mechmotum/bicycle-kickplate-model``,
@@ -105,8 +106,31 @@ class Tyres:
 
 
 DEFAULT_TYRE = Tyre(cornering_coefficient=11.46, camber_coefficient=0.573, relaxation_length=0.175)
-"""The TU Delft Bicycle Lab's Browser tyre from Dressel's measurements (see the module docstring)."""
+"""The TU Delft Bicycle Lab's Browser tyre from Dressel's measurements (see the module docstring).
+No moments: see :data:`MEASURED_TRAIL` for why the published pneumatic trail is not its default."""
 DEFAULT_TYRES = Tyres(front=DEFAULT_TYRE, rear=DEFAULT_TYRE)
+
+MEASURED_TRAIL = 0.0166
+"""Pneumatic trail (m) of a measured bicycle tyre: the Schwalbe Energizer Plus 47-622 (28 x 1.75) at
+400 kPa, Dell'Orto, Mastinu, Happee & Moore (2024), "Measurement of lateral characteristics and
+identification of Magic Formula parameters of city and cargo bicycle tyres", Vehicle System Dynamics,
+doi:10.1080/00423114.2024.2338143; their Pacejka-89 coefficients as the TU Delft lab's
+``mechmotum/bicycle-kickplate-model`` (``tire_data.py``, ``SchwalbeT03_400kPa``) carries them,
+linearised at zero slip and camber: ``t_p = -(dM_z/d alpha) / (dF_y/d alpha)``, 16.5 to 16.6 mm for
+loads of 300 to 600 N (a right-handed axis system gives ``M_z = -t_p F_y`` whichever way its z axis
+points, so the sign needs no convention: positive, the force acts behind the contact and the moment
+turns the wheel towards its velocity, opposing the slip).  The same fit's camber moment,
+``dM_z/d gamma``, is -7 to +6 mm/rad per unit load over those loads and changes sign at about 450 N:
+no published twisting coefficient with a defensible sign was found, and it stays 0.
+
+Not a default: with this trail and no twisting torque the default tyres turn the benchmark bicycle
+unstable at every speed (its capsize root crosses at 2.97 m/s and stays unstable;
+``docs/models.md``), the opposite of Bulsink, Doria, Lovato & Schwab (2015), who find measured tyre
+moments stabilise capsize, mainly through the twisting torque that is missing here."""
+TRAIL_TYRE = Tyre(cornering_coefficient=11.46, camber_coefficient=0.573, relaxation_length=0.175,
+                  pneumatic_trail=MEASURED_TRAIL)
+"""The default tyre with the measured pneumatic trail :data:`MEASURED_TRAIL` (no twisting torque)."""
+TRAIL_TYRES = Tyres(front=TRAIL_TYRE, rear=TRAIL_TYRE)
 
 
 def _tyre(node):

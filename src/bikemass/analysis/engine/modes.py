@@ -5,7 +5,9 @@
 (:mod:`~bikemass.analysis.engine.tracking`) and names the modes
 (:mod:`~bikemass.analysis.engine.naming`).  Names are fixed at standstill: a grid that starts
 above 0 m/s is extended down to 0 m/s (steps of at most :data:`START_STEP`) for the naming, and
-the extension is dropped again.
+the extension is dropped again.  A model with modes besides the bicycle's names its wobble by what
+moves at :data:`~bikemass.analysis.engine.naming.REFERENCE_SPEED` (8 m/s): its grid is extended up
+to that speed (steps of at most :data:`START_STEP`), or the speed inserted, for the naming alone.
 """
 
 from dataclasses import dataclass
@@ -18,7 +20,7 @@ from ...core.frozen import short_repr
 from .eigen import (characteristic_of, damping_ratio, eigen_sweep, has_quartic_path, natural_frequency,
                     quartic_vectors)
 from .quartic import quartic_roots
-from .naming import mode_names, settle_splits, split_rank, standstill_labels
+from .naming import REFERENCE_SPEED, mode_names, settle_splits, split_rank, standstill_labels
 from .tracking import reorder, track
 from ...core.errors import InputError, short
 from ...core.limits import MAX_SPEED
@@ -102,20 +104,41 @@ def check_speeds(speeds):
     return v
 
 
+def naming_grid(v, reference=None):
+    """``(grid, keep, at)``: the speeds ``v`` (m/s) extended down to standstill, up to ``reference``
+    (m/s; ``None``: no reference) or with it inserted, in steps of at most :data:`START_STEP`; the
+    indices of ``v`` in the grid and the index of the reference speed (``None`` without one)."""
+    lead = np.linspace(0.0, v[0], int(np.ceil(v[0] / START_STEP)) + 1)[:-1]
+    tail = np.empty(0)
+    if reference is not None and v[-1] < reference:
+        tail = np.linspace(v[-1], reference, int(np.ceil((reference - v[-1]) / START_STEP)) + 1)[1:]
+    grid = np.concatenate([lead, v, tail])
+    keep = np.arange(len(lead), len(lead) + len(v))
+    if reference is None:
+        return grid, keep, None
+    near = np.flatnonzero(np.abs(grid - reference) <= 1e-9)
+    if len(near):
+        return grid, keep, int(near[0])
+    at = int(np.searchsorted(grid, reference))
+    return np.insert(grid, at, reference), np.where(keep >= at, keep + 1, keep), at
+
+
 def follow_modes(model, speeds):
     """:class:`Modes` of ``model`` (a :class:`~bikemass.models.linear.LinearModel`) at ``speeds`` (m/s)."""
     v = check_speeds(speeds)
-    lead = np.linspace(0.0, v[0], int(np.ceil(v[0] / START_STEP)) + 1)[:-1]
-    sweep = eigen_sweep(model, np.concatenate([lead, v]))
+    families = dict(model.families)
+    grid, keep, at = naming_grid(v, REFERENCE_SPEED if len(families) > 1 else None)
+    sweep = eigen_sweep(model, grid)
     values, vectors = reorder(sweep.eigenvalues, sweep.eigenvectors, track(sweep.eigenvalues, sweep.eigenvectors))
-    labels = standstill_labels(values[0], vectors[0], dict(model.families), [s.name for s in model.dynamic_states])
+    reference = None if at is None else (values[at], vectors[at])
+    labels = standstill_labels(values[0], vectors[0], families, [s.name for s in model.dynamic_states], reference)
     order = settle_splits(values, labels)
     values = np.take_along_axis(values, order, axis=1)
     vectors = np.take_along_axis(vectors, order[:, None, :], axis=2)
     ordered = split_rank(labels)
     columns = [labels.index(label) for label in ordered]
-    return Modes(speeds=v, labels=tuple(ordered), eigenvalues=values[len(lead):, columns],
-                 eigenvectors=vectors[len(lead):, :, columns])
+    return Modes(speeds=v, labels=tuple(ordered), eigenvalues=values[keep][:, columns],
+                 eigenvectors=vectors[keep][:, :, columns])
 
 
 

@@ -13,6 +13,16 @@ share of it (participation factors ``|x_k y_k|`` of right and left eigenvectors,
 Verghese & Schweppe 1982: independent of the states' units), the four most bicycle-like roots
 keep the rules above, and the others are named ``family`` or ``family 1``, ``family 2``, ...
 
+Wobble is named by what moves (:func:`wobble_columns`): the tracked oscillation that at
+:data:`REFERENCE_SPEED` lies in the wobble band (:data:`WOBBLE_MIN_FREQUENCY` to
+:data:`WOBBLE_MAX_FREQUENCY`) with its largest share (participation, summed by coordinate) on the
+steer coordinate, the test :func:`is_wobble` applies to a crossing, is labelled ``wobble`` (its
+conjugate with it: ``wobble 1``, ``wobble 2``) whatever family holds it at standstill (the tyre and
+flexible Jamis's 6.5 Hz steer mode belongs to the tyres' family there).  A root the compliances'
+family would have named wobble is then named by its coordinate that moves most (``frame-twist``).
+Where no oscillation passes the test (the flexible Jamis without tyres: its 7.4 Hz mode is
+frame-twist-dominated by participation) the labels by family stand.
+
 When a complex pair splits into two real roots again the tracking cannot tell which root
 continues which label (both leave one point).  The convention (the one Williams 2015's tables
 follow): of the two labels, the one earlier in the rank (weave 1, weave 2, capsize, caster, then
@@ -44,6 +54,14 @@ compliances far above it (a fork bending at 60-80 Hz, a frame twist at 30 Hz) is
 coordinate that moves most in it (``fork-bending``, ``frame-twist``), not wobble."""
 
 
+REFERENCE_SPEED = 8.0
+"""Speed (m/s) at which the wobble is recognised by what moves (:func:`wobble_columns`): the issue's and
+the study's 8 m/s (``bikemass.study.flexible.SPEED``), where the published wobble is well developed (it
+lies at 4-12 Hz there) and the weave is damped into a slow oscillation below the wobble band.  The modes
+are always followed up to it (:func:`~bikemass.analysis.engine.modes.follow_modes` extends the grid),
+so the labels do not depend on the grid asked for."""
+
+
 def participation(vectors):
     """Participation factors (N, m) of the states in each mode: ``|x_ki (X^-1)_ik|``, columns sum to 1."""
     P = np.abs(vectors * np.linalg.inv(vectors).T)
@@ -67,14 +85,16 @@ def _bicycle_labels(values):
     return labels
 
 
-def standstill_labels(values, vectors, families, states=None):
+def standstill_labels(values, vectors, families, states=None, reference=None):
     """Labels of the roots ``values`` (m,) with state eigenvectors ``vectors`` (N, m) at standstill.
 
     ``families`` maps each family name to the indices of its dynamic states; the Whipple states
     form :data:`BICYCLE`.  ``states``, the dynamic states' names, lets a root of the compliances'
     family (:data:`WOBBLE`) above :data:`WOBBLE_MAX_FREQUENCY` be named by its family's coordinate
-    that moves most in it (``fork-bending``, ``frame-twist``).  Returns a list of unique labels in
-    the order of ``values``.
+    that moves most in it (``fork-bending``, ``frame-twist``).  ``reference``, the same tracked roots
+    and eigenvectors ``(values, vectors)`` at :data:`REFERENCE_SPEED`, with ``states`` names the
+    wobble by what moves (:func:`wobble_columns`; a root of the compliances' family that is not it
+    is then named by its coordinate too).  Returns a list of unique labels in the order of ``values``.
     """
     values = np.asarray(values)
     if len(families) == 1:
@@ -89,13 +109,16 @@ def standstill_labels(values, vectors, families, states=None):
     others = [f for f in names if f != BICYCLE]
     rest = [i for i in range(len(values)) if labels[i] is None]
     home = {i: others[int(np.argmax([weight[names.index(f), i] for f in others]))] for i in rest}
+    wobble = () if reference is None or states is None else wobble_columns(*reference, states, rest)
     if states is not None and WOBBLE in families:
         for i in rest:
-            if home[i] == WOBBLE and abs(values[i].imag) > WOBBLE_MAX_FREQUENCY:
+            if home[i] == WOBBLE and (abs(values[i].imag) > WOBBLE_MAX_FREQUENCY or (wobble and i not in wobble)):
                 by = {}
                 for j in families[WOBBLE]:
                     by[coordinate(states[j])] = by.get(coordinate(states[j]), 0.0) + share[j, i]
                 home[i] = max(by, key=by.get)
+    for i in wobble:
+        home[i] = WOBBLE
     for f in dict.fromkeys([*others, *home.values()]):
         mine = sorted((i for i in rest if home[i] == f), key=lambda i: _standstill_order(values[i]))
         for k, i in enumerate(mine):
@@ -191,6 +214,44 @@ def coordinate(state):
     return head if tail in ("angle", "rate") else state
 
 
+def _shares(share, states):
+    """``{coordinate: participation}`` of one root's participation factors ``share`` (N,)."""
+    by = {}
+    for state, x in zip(states, share):
+        by[coordinate(state)] = by.get(coordinate(state), 0.0) + x
+    return by
+
+
+def wobble_columns(values, vectors, states, candidates):
+    """The columns of the wobble among ``candidates`` (indices into ``values``): a tuple of the root and
+    its conjugate's column (empty if none).
+
+    ``values`` (m,) and ``vectors`` (N, m) are the tracked roots and eigenvectors at
+    :data:`REFERENCE_SPEED`, ``states`` the dynamic states' names.  Of the candidates that oscillate in
+    the wobble band (:data:`WOBBLE_MIN_FREQUENCY` to :data:`WOBBLE_MAX_FREQUENCY`) with their largest
+    share, summed by coordinate, on the steer coordinate (:func:`is_wobble`'s test), the one with the
+    largest steer share is the wobble (on a tie the slower).  Its conjugate is the candidate nearest
+    its conjugate value.
+    """
+    values = np.asarray(values)
+    share = participation(vectors)
+    found = []
+    for i in candidates:
+        if values[i].imag <= 0 or not WOBBLE_MIN_FREQUENCY <= values[i].imag <= WOBBLE_MAX_FREQUENCY:
+            continue
+        by = _shares(share[:, i], states)
+        if max(by, key=by.get) == "steer":
+            found.append((-by["steer"], values[i].imag, i))
+    if not found:
+        return ()
+    i = min(found)[2]
+    others = [j for j in candidates if j != i]
+    if not others:
+        return (i,)
+    j = min(others, key=lambda j: abs(values[j] - np.conj(values[i])))
+    return (i, j) if abs(values[j] - np.conj(values[i])) <= 1e-6 * abs(values[i]) else (i,)
+
+
 def is_wobble(model, speed, root):
     """Whether the oscillation ``root`` (1/s) of ``model`` at ``speed`` (m/s) is wobble: 3 to 15 Hz
     (:data:`WOBBLE_MIN_FREQUENCY`, :data:`WOBBLE_MAX_FREQUENCY`) and its largest share (participation
@@ -199,10 +260,7 @@ def is_wobble(model, speed, root):
         return False
     values, vectors = np.linalg.eig(model.dynamic_matrix(speed))
     k = int(np.argmin(np.abs(values - root)))
-    share = participation(vectors)[:, k]
-    by = {}
-    for state, x in zip(model.dynamic_states, share):
-        by[coordinate(state.name)] = by.get(coordinate(state.name), 0.0) + x
+    by = _shares(participation(vectors)[:, k], [s.name for s in model.dynamic_states])
     return max(by, key=by.get) == "steer"
 
 
