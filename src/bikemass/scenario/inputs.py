@@ -40,6 +40,7 @@ from ..mass.inertia import combine
 from ..mass.materials import Material, load_materials
 from ..models.flexible import Compliances, compliances_from_node
 from ..models.lean import RiderLeanParameters
+from ..models.arms import arms_from_node
 from ..models.tyres import tyres_from_node
 from ..models.parameters import NAMES, BenchmarkParameters
 from ..models.plausibility import front_load_problem, warn
@@ -299,7 +300,7 @@ class Inputs:
     def file_members(self):
         """What a parameter file written by ``bikemass params --model M`` carries beside its set
         (:data:`~bikemass.bicycle.parameter_sets.MEMBER_KEYS`): ``{"model": str, "flexible":
-        Compliances, "tyre": Tyres, "frame_stiffness": 2x2 S (N m/rad)}``, each key only when
+        Compliances, "tyre": Tyres, "arms": Arms, "frame_stiffness": 2x2 S (N m/rad)}``, each key only when
         present; ``{}`` for any other bicycle."""
         if "_file_members" not in self.__dict__:
             node, bike = None, self.bike
@@ -316,6 +317,8 @@ class Inputs:
                     found["flexible"] = compliances_from_node(node["flexible"])
                 if node.has("tyre"):
                     found["tyre"] = tyres_from_node(node["tyre"])
+                if node.has("arms"):
+                    found["arms"] = arms_from_node(node["arms"])
                 if node.has("frame_stiffness"):
                     found["frame_stiffness"] = catalog.stiffness_matrix(node["frame_stiffness"].matrix(
                         "stiffness", (2, 2)))

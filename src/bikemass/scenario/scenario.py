@@ -41,6 +41,7 @@ import numpy as np
 from ..core.choices import RIGID, Combine, Method, check
 from ..core.errors import InputError, short
 from ..core.frozen import readonly, short_repr
+from ..models.arms import Arms, as_arms
 from ..models.family import build as build_member, generated, held_coordinates, linear_model, values as member_values
 from ..models.flexible import Compliances
 from ..models.lean import RiderLeanParameters
@@ -77,6 +78,8 @@ class Built:
         The frame's twist and the fork's bending (``flexible``).
     tyres : Tyres or None
         The tyres (``tyre``).
+    arms : Arms or None
+        The rider's arms about the steer axis (``arms``).
 
     Examples
     --------
@@ -93,12 +96,13 @@ class Built:
     lean: RiderLeanParameters | None = None
     compliances: Compliances | None = None
     tyres: Tyres | None = None
+    arms: Arms | None = None
 
     def values(self):
         """``{name: float}`` of the parameters the model was generated from (the 26 benchmark names
         of the set the model takes, and its members'): what :func:`bikemass.models.family.linear_model`
         takes."""
-        return member_values(self.choice, self.lean or self.parameters, self.tyres, self.compliances)
+        return member_values(self.choice, self.lean or self.parameters, self.tyres, self.compliances, self.arms)
 
     def with_values(self, values):
         """The model of the same member at other parameter ``values`` (``{name: float}``, as
@@ -146,6 +150,11 @@ class Scenario:
         Use a rider pose as written even off the bicycle's contacts (the thesis's riders).
     origin : str
         What errors about changes name as their source (a sweep's spec file, ``--inputs``, ...).
+    arms
+        For the ``arms`` member: a :class:`~bikemass.models.arms.Arms`, an arms YAML file or a mapping
+        in its form (``stiffness`` N m/rad, ``damping`` N m s/rad about the steer axis); ``None``: a
+        parameter file's ``arms:`` block, else zero (no published default; warned).  Refused without
+        the member.
 
     Raises
     ------
@@ -173,6 +182,7 @@ class Scenario:
     tyres: object = None
     allow_off_contact: bool = False
     origin: str = field(default="changes", compare=False)
+    arms: object = None
 
     def __post_init__(self):
         object.__setattr__(self, "model", model_of(self.bicycle, self.model))   # None: the bicycle's own member
@@ -186,6 +196,12 @@ class Scenario:
                              f"{self.model.name} has none")
         if self.tyres is not None and not isinstance(self.tyres, (Tyres, str, os.PathLike, Mapping)):
             as_tyres(self.tyres)                               # names what it takes
+        if self.arms is not None and not self.model.has("arms"):
+            raise InputError("arms", short(self.arms), f"a model with the arms member (e.g. "
+                             f"{parse_model('+'.join((*self.model.members, 'arms'))).name}) for arms; the model "
+                             f"{self.model.name} has none")
+        if self.arms is not None and not isinstance(self.arms, (Arms, str, os.PathLike, Mapping)):
+            as_arms(self.arms)                                 # names what it takes
         self._refuse_stiffness(self.stiffness)
 
     def _refuse_stiffness(self, choice):
@@ -281,6 +297,13 @@ class Scenario:
             return self.inputs.file_members["tyre"]           # a parameter file's tyres (params --model)
         return as_tyres(self.tyres) if self.model.has("tyre") else None
 
+    def _arms(self):
+        if not self.model.has("arms"):
+            return None
+        if self.arms is None and "arms" in self.inputs.file_members:
+            return self.inputs.file_members["arms"]           # a parameter file's arms (params --model)
+        return as_arms(self.arms)
+
     def build(self, changes=None):
         """:class:`Built` of the scenario with ``changes`` (``{key: value}``, keys as in
         :mod:`bikemass.scenario.inputs`; cached by their values)."""
@@ -298,8 +321,9 @@ class Scenario:
             return Built(p, None if S is None else readonly(S), whipple.whipple_model(p, S), self.model)
         lean = self._lean(bike, rider, params) if self.model.has("rider-lean") else None
         flexible = self.inputs.compliances(choice, bike) if self.model.has("flexible") else None
-        tyres = self._tyres()
-        return Built(p, None, build_member(self.model, lean or p, tyres, flexible), self.model, lean, flexible, tyres)
+        tyres, arms = self._tyres(), self._arms()
+        return Built(p, None, build_member(self.model, lean or p, tyres, flexible, arms), self.model, lean, flexible,
+                     tyres, arms)
 
     def replace(self, **changes):
         """A copy with some fields changed (a new scenario: its own caches)."""
