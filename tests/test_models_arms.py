@@ -185,3 +185,23 @@ def test_contract_params_with_arms_read_back(capsys, tmp_path):
 
     direct, back = eigenvalues(*scenario), eigenvalues(str(out), "--model", "tyre+flexible+arms")
     assert back == pytest.approx(direct, rel=1e-9, abs=1e-9 * np.abs(direct).max())
+
+
+def test_a_sweep_takes_the_arms_file(tmp_path):
+    """A sweep spec's ``arms:`` (beside it) reaches every configuration: each row's weave speed equals
+    ``bm.stability`` of the benchmark with that trail and the arms (1e-9 m/s: the same engine, so this
+    checks the plumbing, not the numbers), and differs from the rows without arms (the damping moves it)."""
+    import csv
+    (tmp_path / "arms.yaml").write_text("damping: 0.8 N m s/rad\n")
+    spec = tmp_path / "spec.yaml"
+    spec.write_text("bike: benchmark\nmodel: arms\narms: arms.yaml\nvary:\n  c: [0.07, 0.09]\n")
+    assert main(["sweep", str(spec), "--out", str(tmp_path / "o"), "--quiet"]) == 0
+    with open(tmp_path / "o" / "results.csv") as fh:
+        rows = list(csv.DictReader(fh))
+    assert len(rows) == 2
+    for row in rows:
+        c = float(row["c"])
+        arms = bm.stability(bm.Scenario("benchmark", model="arms", arms=Arms(damping=0.8)).build({"c": c}).model)
+        plain = bm.stability(bm.Scenario("benchmark").build({"c": c}).model)
+        assert float(row["weave_speed"]) == pytest.approx(arms.weave_speeds[0], abs=1e-9)
+        assert abs(arms.weave_speeds[0] - plain.weave_speeds[0]) > 0.02
