@@ -174,7 +174,7 @@ def test_contract_params_with_arms_read_back(capsys, tmp_path):
                 "--arms", str(arms_file)]
     assert main(["params", *scenario, "--format", "yaml", "-o", str(out)]) == 0, capsys.readouterr().err
     doc = yaml.safe_load(out.read_text())
-    assert doc["arms"] == {"stiffness": 12.0, "damping": 0.9} and doc["units"]["damping"] == "N m s/rad"
+    assert doc["arms"] == {"stiffness": 12.0, "damping": 0.9, "forearms": "pose"} and doc["units"]["damping"] == "N m s/rad"
 
     def eigenvalues(*argv):
         capsys.readouterr()
@@ -205,3 +205,52 @@ def test_a_sweep_takes_the_arms_file(tmp_path):
         plain = bm.stability(bm.Scenario("benchmark").build({"c": c}).model)
         assert float(row["weave_speed"]) == pytest.approx(arms.weave_speeds[0], abs=1e-9)
         assert abs(arms.weave_speeds[0] - plain.weave_speeds[0]) > 0.02
+
+
+# ---------------------------------------------------------------- the forearms' mass on the handlebars
+def test_forearms_on_the_handlebars_move_their_mass_to_the_front_frame(jamis):
+    """``forearms: handlebars``: the front frame gains exactly the forearms' mass and first moment, the
+    rear frame loses them (1e-12 relative: the parts' own mass properties, summed by hand); the leaning
+    upper body loses them too; the system's total mass and mass centre do not change."""
+    pose = jamis.replace(model="rider-lean+arms", arms=Arms(forearms="pose")).build()
+    held = jamis.replace(model="rider-lean+arms", arms=Arms(forearms="handlebars")).build()
+    rider = jamis.inputs.seated()
+    forearms = [props for name, _, props in rider.breakdown() if name.startswith("lower_arm")]
+    m = sum(f.mass for f in forearms)
+    mx = sum(f.mass * f.com[0] for f in forearms)
+    mz = sum(f.mass * f.com[2] for f in forearms)
+    a, b = pose.parameters, held.parameters
+    assert b.mH == pytest.approx(a.mH + m, rel=1e-12) and b.mB == pytest.approx(a.mB - m, rel=1e-12)
+    assert b.mH * b.xH == pytest.approx(a.mH * a.xH + mx, rel=1e-12)
+    assert b.mH * b.zH == pytest.approx(a.mH * a.zH + mz, rel=1e-12)
+    assert b.mB * b.xB + b.mH * b.xH == pytest.approx(a.mB * a.xB + a.mH * a.xH, rel=1e-12)
+    assert held.lean.upper.mass == pytest.approx(pose.lean.upper.mass - m, rel=1e-12)
+    assert 3.0 < m < 5.0                                              # two forearms with hands, kg
+
+
+def test_forearms_stay_with_a_rider_whose_hands_are_off_the_bars():
+    with pytest.raises(InputError, match="hands on the grips"):
+        bm.Scenario("jamis", "no-hands", model="arms", arms=Arms(forearms="handlebars")).build()
+    with pytest.raises(InputError, match="forearms"):
+        Arms(forearms="elbows")
+
+
+def test_contract_held_forearms_read_back(capsys, tmp_path):
+    """Contract test: a parameter file written with ``forearms: handlebars`` holds the moved mass in its
+    26 parameters and reads back as the same model (1e-9 relative)."""
+    arms_file = tmp_path / "arms.yaml"
+    arms_file.write_text("damping: 0.5 N m s/rad\nforearms: handlebars\n")
+    out = tmp_path / "model.yaml"
+    scenario = ["jamis", "--rider", "relaxed", "--model", "arms", "--arms", str(arms_file)]
+    assert main(["params", *scenario, "--format", "yaml", "-o", str(out)]) == 0, capsys.readouterr().err
+    doc = yaml.safe_load(out.read_text())
+    assert doc["arms"]["forearms"] == "handlebars" and doc["mH"] > 5.0
+
+    def eigenvalues(*argv):
+        capsys.readouterr()
+        assert main(["eig", *argv, "--speeds", "1:9:4", "--format", "json"]) == 0, capsys.readouterr().err
+        import json
+        return np.array([m["eigenvalues"] for m in json.loads(capsys.readouterr().out)["modes"]])
+
+    direct, back = eigenvalues(*scenario), eigenvalues(str(out), "--model", "arms")
+    assert back == pytest.approx(direct, rel=1e-9, abs=1e-9 * np.abs(direct).max())

@@ -183,8 +183,8 @@ def add_model(p):
                         "bicycle tyres (Dressel 2013; docs/models.md)")
     p.add_argument("--arms", metavar="FILE",
                    help="arms file for the arms member: stiffness (N m/rad) and damping (N m s/rad) about the "
-                        "steer axis; default 0 and 0, warned: no published measurement was at hand "
-                        "(docs/models.md, The rider's arms)")
+                        "steer axis, forearms: pose or handlebars (their mass with the front frame); default 0, "
+                        "0, pose, warned: no published measurement was at hand (docs/models.md, The rider's arms)")
 
 
 def add_control(p):

@@ -5,6 +5,7 @@ An arms file (YAML, read through the input gate; each value SI or with its unit)
 
     stiffness: 0 N m/rad          # k_arms, about the steer axis
     damping: 0 N m s/rad          # c_arms, about the steer axis
+    forearms: pose                # or handlebars: the forearms' mass moves with the bars
 
 **No published default.** When this member was written no measured value of a bicycle rider's arm
 stiffness or damping about the steer axis could be read (the rider-identification and wobble papers
@@ -25,14 +26,18 @@ from ..core.gate import plain_input
 from .plausibility import warn
 
 KEYS = ("stiffness", "damping")
-"""An arms file's keys (both optional, 0 when not given)."""
+"""An arms file's numbers (both optional, 0 when not given)."""
+FOREARMS = ("pose", "handlebars")
+"""Where the forearms' mass goes: where the rider's pose puts it, or on the handlebars (front frame)."""
 
 
 @dataclass(frozen=True)
 class Arms:
     """The rider's arms about the steer axis: the torque ``-(stiffness a + damping a')`` on the handlebars
     (the opposite on the upper body), ``a`` the handlebars' rotation relative to the upper body about
-    the steer axis (rad).  Both 0: the rider without arms.
+    the steer axis (rad).  Both 0: the rider without arms.  ``forearms``: ``"pose"`` (default) leaves
+    the arms' mass where the rider's pose puts it; ``"handlebars"`` moves each forearm whose hand is on
+    a grip to the front frame (:mod:`bikemass.rider.hands`; a scenario's seated rider only).
 
     Examples
     --------
@@ -43,9 +48,14 @@ class Arms:
 
     stiffness: float = field(default=0.0, metadata={"unit": "N m/rad", "description": "arms' stiffness about the steer axis"})
     damping: float = field(default=0.0, metadata={"unit": "N m s/rad", "description": "arms' damping about the steer axis"})
+    forearms: str = field(default="pose", metadata={"description": "where the forearms' mass goes: pose or handlebars"})
 
     def __post_init__(self):
+        if self.forearms not in FOREARMS:
+            raise InputError("arms", "forearms", f"one of {', '.join(FOREARMS)}, got {self.forearms!r}")
         for f in fields(self):
+            if f.name not in KEYS:
+                continue
             x = getattr(self, f.name)
             if isinstance(x, bool) or not isinstance(x, (int, float)) or not math.isfinite(x) or x < 0:
                 raise InputError("arms", f.name, f"a finite number >= 0 ({f.metadata['unit']}), got {x!r}")
@@ -56,13 +66,14 @@ class Arms:
         return {"k_arms": self.stiffness, "c_arms": self.damping}
 
     def to_dict(self):
-        """``{"stiffness": N m/rad, "damping": N m s/rad}``: the ``arms:`` block of a parameter file."""
-        return {"stiffness": self.stiffness, "damping": self.damping}
+        """``{"stiffness": N m/rad, "damping": N m s/rad, "forearms": str}``: the ``arms:`` block of a
+        parameter file."""
+        return {"stiffness": self.stiffness, "damping": self.damping, "forearms": self.forearms}
 
     @staticmethod
     def units():
         """``{field: SI unit}``."""
-        return {f.name: f.metadata["unit"] for f in fields(Arms)}
+        return {f.name: f.metadata["unit"] for f in fields(Arms) if "unit" in f.metadata}
 
 
 NO_ARMS = Arms()
@@ -70,9 +81,11 @@ NO_ARMS = Arms()
 
 
 def arms_from_node(node):
-    """:class:`Arms` of a config :class:`~bikemass.core.config.Node` (``stiffness:``, ``damping:``)."""
-    node.check_keys(optional=(*KEYS, "source", "note"))
-    return Arms(**{k: node[k].number(k, nonnegative=True) for k in KEYS if node.has(k)})
+    """:class:`Arms` of a config :class:`~bikemass.core.config.Node` (``stiffness:``, ``damping:``,
+    ``forearms:``)."""
+    node.check_keys(optional=(*KEYS, "forearms", "source", "note"))
+    forearms = {"forearms": node["forearms"].string(FOREARMS)} if node.has("forearms") else {}
+    return Arms(**{k: node[k].number(k, nonnegative=True) for k in KEYS if node.has(k)}, **forearms)
 
 
 def as_arms(given=None, source="arms"):

@@ -243,7 +243,7 @@ class Scenario:
         """The current value of input ``key`` (SI; :func:`~bikemass.scenario.inputs.get_path`); a
         benchmark name's in the set the model takes (for ``rider-lean``, without the upper body)."""
         if key in NAMES and self.model.has("rider-lean"):
-            return float(getattr(self.inputs.lean().bicycle, key))
+            return float(getattr(self.inputs.lean(forearms_held=self._held()).bicycle, key))
         return get_path(self.inputs, key)
 
     def file_unit(self, key):
@@ -273,7 +273,7 @@ class Scenario:
             raise InputError(self.inputs._lean_source, "parameterization", "a Whipple parameter set (benchmark or "
                              f"principal) for the model {self.model.name}; a MooreRiderLean2012 set is for the "
                              "rider-lean model (--model rider-lean, bm.Scenario(FILE, model='rider-lean'))")
-        p = self.inputs.parameters(bike, rider)
+        p = self.inputs.parameters(bike, rider, self._held())
         if params:
             if self.model.has("rider-lean"):
                 return self._lean(bike, rider, params).rigid()
@@ -287,7 +287,7 @@ class Scenario:
         return self.inputs.frame_stiffness(self.stiffness if which is None else which, bike)
 
     def _lean(self, bike, rider, params):
-        lean = self.inputs.lean(bike, rider)
+        lean = self.inputs.lean(bike, rider, self._held())
         if params:
             lean = lean.replace(bicycle=check_parameters(dataclasses.replace(lean.bicycle, **dict(params)), self.origin))
         return lean
@@ -303,6 +303,16 @@ class Scenario:
         if self.arms is None and "arms" in self.inputs.file_members:
             return self.inputs.file_members["arms"]           # a parameter file's arms (params --model)
         return as_arms(self.arms)
+
+    def _held(self):
+        """Whether the arms member holds the rider's forearms on the handlebars (``forearms: handlebars``)."""
+        if not self.model.has("arms") or self.rider in (None, "none"):
+            return False          # no seated rider to move (a parameter file's set has its forearms where they were)
+        found = self.__dict__.get("_forearms")
+        if found is None:
+            found = as_arms(self.arms).forearms if self.arms is not None else "pose"
+            object.__setattr__(self, "_forearms", found)
+        return found == "handlebars"
 
     def build(self, changes=None):
         """:class:`Built` of the scenario with ``changes`` (``{key: value}``, keys as in

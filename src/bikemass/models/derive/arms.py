@@ -11,9 +11,9 @@ from the saddle, minus the upper body's lean about it (``sin(lam)`` per radian o
 the relative angular velocity's component along the steer axis with each coordinate's rate replaced
 by the coordinate (exact to first order, all the linear model needs); the member adds no coordinate.
 
-The arms' own mass stays where the rider's seating put it (forearms with the hands on the bars in the
-front frame, the rest with the torso: :mod:`bikemass.rider`); the member adds only the joint's
-stiffness and damping.
+The arms' own mass is in the bodies the benchmark parameters give (where the rider's pose puts the
+segments, or the forearms on the front frame with ``forearms: handlebars``: :mod:`bikemass.rider.hands`);
+the derivation adds only the joint's stiffness and damping.
 """
 
 from .bicycle import Member
