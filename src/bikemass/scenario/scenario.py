@@ -152,9 +152,9 @@ class Scenario:
         What errors about changes name as their source (a sweep's spec file, ``--inputs``, ...).
     arms
         For the ``arms`` member: a :class:`~bikemass.models.arms.Arms`, an arms YAML file or a mapping
-        in its form (``stiffness`` N m/rad, ``damping`` N m s/rad about the steer axis); ``None``: a
-        parameter file's ``arms:`` block, else zero (no published default; warned).  Refused without
-        the member.
+        in its form (``stiffness`` N m/rad, ``damping`` N m s/rad about the steer axis; ``forearms:
+        handlebars`` puts the seated rider's forearms on the front frame); ``None``: a parameter file's
+        ``arms:`` block, else zero (no published default; warned).  Refused without the member.
 
     Raises
     ------
