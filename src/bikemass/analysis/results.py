@@ -24,6 +24,7 @@ from ..core.errors import InputError, short
 from ..core.real import finite_real
 from ..core.limits import MAX_SPEEDS
 from .engine.speeds import speed_range, speed_values
+from ..models.arms import as_arms
 from ..models.control import Control, ScheduledModel, close_loop
 from ..models.family import build as build_member
 from ..models.lean import RiderLeanParameters
@@ -254,7 +255,8 @@ def built_model(params, stiffness=None, model=None, tyres=None, control=None):
                          f"rider (bm.Scenario(bike, rider, model={choice.name!r})) or RiderLeanParameters")
     if isinstance(params, BenchmarkParameters):
         check_parameters(params, "params")
-    return build_member(choice, params, as_tyres(tyres) if choice.has("tyre") else tyres), None
+    arms = as_arms() if choice.has("arms") else None         # zero, warned; other values: a Scenario's arms=
+    return build_member(choice, params, as_tyres(tyres) if choice.has("tyre") else tyres, arms=arms), None
 
 
 def eigenvalues(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Built | LinearModel",

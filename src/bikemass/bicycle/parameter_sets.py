@@ -51,10 +51,10 @@ BENCHMARK, PRINCIPAL, RIDER_LEAN = "benchmark", "principal", MOORE_PARAMETERIZAT
 PARAMETERIZATIONS = {"benchmark": BENCHMARK, "Meijaard2007": BENCHMARK, "principal": PRINCIPAL,
                      "Moore2019": PRINCIPAL, "MooreRiderLean2012": RIDER_LEAN}
 """``parameterization:`` as BicycleParameters' files and its ``to_yaml`` write it -> bikemass's name."""
-MEMBER_KEYS = ("model", "flexible", "tyre", "frame_stiffness")
+MEMBER_KEYS = ("model", "flexible", "tyre", "arms", "frame_stiffness")
 """Blocks a parameter file may carry beside its parameter set: what ``bikemass params --model M``
 writes so that every command reads back the same model (the model it was written for, the
-flexible member's compliances, the tyres, the Whipple model's quasi-static S in N m/rad); read by
+flexible member's compliances, the tyres, the rider's arms, the Whipple model's quasi-static S in N m/rad); read by
 :mod:`bikemass.scenario.inputs`."""
 SET_KEYS = ("parameterization", "values", "parameters", "rider", "description", "name", "source", "units",
             "uncertainty", *MEMBER_KEYS)

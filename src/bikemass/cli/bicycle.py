@@ -137,7 +137,7 @@ def run_params(args):
             from ..models.parameter_export import member_document, member_units
             built = scenario.build()
             data = member_document(built.choice, params, built.lean, built.compliances, built.tyres,
-                                   built.stiffness, included, args.stiffness)
+                                   built.stiffness, included, args.stiffness, built.arms)
             dialect.emit(args, lambda f: dialect.document(data, f, member_units()))
         else:
             dialect.emit(args, lambda f: format_parameters(params, f, title, included, std))

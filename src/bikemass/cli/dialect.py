@@ -161,8 +161,9 @@ MODEL_HELP = (
     "thesis's quasi-static flexible rear frame), rider-lean (the rider's upper body leans at the hips "
     "against a spring and damper; needs --rider, or a MooreRiderLean2012 parameter file as BIKE), tyre "
     "(tyres that slip, --tyres FILE), flexible (the rear frame twists and the fork bends, stiffness and "
-    "inertia from the beam models of the tubes in the --stiffness material; infinite: rigid), or members "
-    "joined by + (e.g. rider-lean+tyre); see docs/models.md")
+    "inertia from the beam models of the tubes in the --stiffness material; infinite: rigid), arms (the "
+    "hands on the grips: a spring and damper about the steer axis between the bars and the upper body, "
+    "--arms FILE), or members joined by + (e.g. rider-lean+tyre); see docs/models.md")
 
 
 def model_choice(text):
@@ -174,12 +175,16 @@ def model_choice(text):
 
 
 def add_model(p):
-    """``--model`` and ``--tyres``."""
+    """``--model``, ``--tyres`` and ``--arms``."""
     p.add_argument("--model", type=model_choice, default=BASE, metavar="MODEL", help=MODEL_HELP)
     p.add_argument("--tyres", metavar="FILE",
                    help="tyre file for the tyre member: front: and rear: each with cornering_coefficient and "
                         "camber_coefficient (1/rad or 1/deg) and relaxation_length (m); default: measured "
                         "bicycle tyres (Dressel 2013; docs/models.md)")
+    p.add_argument("--arms", metavar="FILE",
+                   help="arms file for the arms member: stiffness (N m/rad) and damping (N m s/rad) about the "
+                        "steer axis, forearms: pose or handlebars (their mass with the front frame); default 0, "
+                        "0, pose, warned: no published measurement was at hand (docs/models.md, The rider's arms)")
 
 
 def add_control(p):
@@ -194,7 +199,7 @@ def add_control(p):
 
 def scenario(args, rider=None, stiffness=None, bike=None, origin=None):
     """The :class:`~bikemass.scenario.scenario.Scenario` of a command's BIKE, ``--rider``,
-    ``--stiffness``, ``--combine``, ``--method``, ``--allow-off-contact``, ``--model`` and ``--tyres``
+    ``--stiffness``, ``--combine``, ``--method``, ``--allow-off-contact``, ``--model``, ``--tyres`` and ``--arms``
     (each where the command has it; ``rider``, ``stiffness`` and ``bike`` replace the options'; errors
     about changed inputs name ``origin``, default BIKE)."""
     # lazy: the library loads numpy; bikemass --help must not
@@ -204,7 +209,11 @@ def scenario(args, rider=None, stiffness=None, bike=None, origin=None):
         raise InputError("--tyres", args.tyres, f"a --model with the tyre member (e.g. --model "
                          f"{parse_model(args.model + '+tyre' if args.model != BASE else 'tyre').name}); "
                          f"--model {args.model} has no tyres")
-    options = {k: getattr(args, k) for k in ("combine", "method", "allow_off_contact", "model", "tyres")
+    if getattr(args, "arms", None) and not parse_model(args.model).has("arms"):
+        raise InputError("--arms", args.arms, f"a --model with the arms member (e.g. --model "
+                         f"{parse_model(args.model + '+arms' if args.model != BASE else 'arms').name}); "
+                         f"--model {args.model} has no arms")
+    options = {k: getattr(args, k) for k in ("combine", "method", "allow_off_contact", "model", "tyres", "arms")
                if getattr(args, k, None) is not None}
     if not isinstance(options.get("method"), str) or options["method"] not in Method.values():
         options.pop("method", None)                       # uncertainty's --method is its own

@@ -13,6 +13,7 @@ import numpy as np
 
 from ..core.errors import InputError
 from ..core.frozen import readonly
+from .arms import Arms
 from .flexible import Compliances
 from .parameters import NAMES, BenchmarkParameters
 from .lean import RiderLeanParameters
@@ -143,7 +144,7 @@ def dynamic_derivatives(model, values, names, speed, step, held=()):
     return {name: dynamic[i].imag / step for i, name in enumerate(names)}
 
 
-def values(model, bicycle, tyres=None, compliances=None):
+def values(model, bicycle, tyres=None, compliances=None, arms=None):
     """The ``{name: float}`` of ``model`` from typed parameters (see :func:`build`)."""
     choice = parse_model(model)
     if choice.has("rider-lean"):
@@ -173,6 +174,14 @@ def values(model, bicycle, tyres=None, compliances=None):
     elif compliances is not None:
         raise InputError("compliances", choice.name, f"no compliances for the model {choice.name} (add the "
                          f"flexible member: {_with(choice, 'flexible')})")
+    if choice.has("arms"):
+        if not isinstance(arms, Arms):
+            raise InputError("arms", choice.name, "the arms member needs the arms' stiffness and damping (Arms: "
+                             "bikemass.models.arms.as_arms)")
+        out.update(arms.values())
+    elif arms is not None:
+        raise InputError("arms", choice.name, f"no arms for the model {choice.name} (add the arms member: "
+                         f"{_with(choice, 'arms')})")
     return out
 
 
@@ -181,7 +190,7 @@ def _with(choice, member):
     return parse_model("+".join((*choice.members, member))).name
 
 
-def build(model, bicycle, tyres=None, compliances=None):
+def build(model, bicycle, tyres=None, compliances=None, arms=None):
     """The :class:`~bikemass.models.linear.LinearModel` of ``model`` (``"whipple"``, ``"rider-lean"``,
     ``"tyre"``, ``"flexible"`` or members joined by ``+``, or a
     :class:`~bikemass.models.registry.ModelChoice`).
@@ -194,8 +203,10 @@ def build(model, bicycle, tyres=None, compliances=None):
     ``compliances``: :class:`~bikemass.models.flexible.Compliances` for the ``flexible`` member
     (:func:`bikemass.fe.flexible.compliances`; required); an infinitely stiff one (``None``)
     holds its coordinate at zero; an error for a model without the member.
+    ``arms``: :class:`~bikemass.models.arms.Arms` for the ``arms`` member (required; an error for a
+    model without it).
     """
-    return linear_model(model, values(model, bicycle, tyres, compliances), held_coordinates(model, compliances))
+    return linear_model(model, values(model, bicycle, tyres, compliances, arms), held_coordinates(model, compliances))
 
 
 def held_coordinates(model, compliances):

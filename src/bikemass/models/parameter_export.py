@@ -81,13 +81,14 @@ def meijaard_yaml(params, speed=1.0, rider_included=False):
 
 
 def member_document(choice, params, lean=None, compliances=None, tyres=None, stiffness=None, rider_included=False,
-                    source=""):
+                    source="", arms=None):
     """Every parameter a model of the family uses, as one parameter file (plain data) that every command
     reads back as the same model: the set the model takes (the 26 benchmark names, SI; for a model
     with ``rider-lean`` the ``MooreRiderLean2012`` set of the rider split at the hips), ``model:`` (the
     member combination's name), and each member's block (:data:`~bikemass.bicycle.parameter_sets.MEMBER_KEYS`):
     ``flexible:`` the frame's and the fork's compliances (axis, stiffness N m/rad, modal inertia),
-    ``tyre:`` the tyre file's form, ``frame_stiffness:`` the Whipple model's quasi-static S (N m/rad).
+    ``tyre:`` the tyre file's form, ``arms:`` the arms' stiffness (N m/rad) and damping (N m s/rad) about
+    the steer axis, ``frame_stiffness:`` the Whipple model's quasi-static S (N m/rad).
 
     ``choice`` is a :class:`~bikemass.models.registry.ModelChoice`; ``source`` says what made the
     compliances (a material), written beside them."""
@@ -109,6 +110,8 @@ def member_document(choice, params, lean=None, compliances=None, tyres=None, sti
                            **({"twisting_coefficient": f"{t.twisting_coefficient!r} m/rad"}
                               if t.twisting_coefficient else {})}
                        for w, t in (("front", tyres.front), ("rear", tyres.rear))}
+    if choice.has("arms") and arms is not None:
+        doc["arms"] = arms.to_dict()
     if not choice.members and stiffness is not None:
         doc["frame_stiffness"] = [[float(x) for x in row] for row in stiffness]
     return doc
@@ -117,5 +120,6 @@ def member_document(choice, params, lean=None, compliances=None, tyres=None, sti
 def member_units():
     """The units of :func:`member_document`'s keys beside the benchmark parameters' (SI)."""
     from .compliance import Compliance          # lazy: numpy; the text formats above do not need it
+    from .arms import Arms                      # lazy: loads the config reader (numpy), as Compliance does
     return {**{k: u for k, u in Compliance.units().items() if u}, "relaxation_length": "m",
-            "frame_stiffness": "N m/rad"}
+            "frame_stiffness": "N m/rad", **Arms.units()}

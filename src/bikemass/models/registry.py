@@ -6,7 +6,7 @@ from ..core.errors import InputError, short
 
 BASE = "whipple"
 """The Whipple bicycle of Meijaard et al. (2007): every member extends it."""
-MEMBERS = ("rider-lean", "tyre", "flexible")
+MEMBERS = ("rider-lean", "tyre", "flexible", "arms")
 """Every member of the family, in the canonical order of a combination's name."""
 
 

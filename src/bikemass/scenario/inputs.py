@@ -40,11 +40,13 @@ from ..mass.inertia import combine
 from ..mass.materials import Material, load_materials
 from ..models.flexible import Compliances, compliances_from_node
 from ..models.lean import RiderLeanParameters
+from ..models.arms import arms_from_node
 from ..models.tyres import tyres_from_node
 from ..models.parameters import NAMES, BenchmarkParameters
 from ..models.plausibility import front_load_problem, warn
 from ..rider import Rider, _read_document, poses_dir
 from ..rider.chain_file import bicycle_contacts
+from ..rider.hands import forearms_on_handlebars
 from ..rider.lean_split import rider_lean_parameters
 from ..rider.seating import SeatedRider
 from . import catalog
@@ -299,7 +301,7 @@ class Inputs:
     def file_members(self):
         """What a parameter file written by ``bikemass params --model M`` carries beside its set
         (:data:`~bikemass.bicycle.parameter_sets.MEMBER_KEYS`): ``{"model": str, "flexible":
-        Compliances, "tyre": Tyres, "frame_stiffness": 2x2 S (N m/rad)}``, each key only when
+        Compliances, "tyre": Tyres, "arms": Arms, "frame_stiffness": 2x2 S (N m/rad)}``, each key only when
         present; ``{}`` for any other bicycle."""
         if "_file_members" not in self.__dict__:
             node, bike = None, self.bike
@@ -316,6 +318,8 @@ class Inputs:
                     found["flexible"] = compliances_from_node(node["flexible"])
                 if node.has("tyre"):
                     found["tyre"] = tyres_from_node(node["tyre"])
+                if node.has("arms"):
+                    found["arms"] = arms_from_node(node["arms"])
                 if node.has("frame_stiffness"):
                     found["frame_stiffness"] = catalog.stiffness_matrix(node["frame_stiffness"].matrix(
                         "stiffness", (2, 2)))
@@ -520,9 +524,18 @@ class Inputs:
             return None if rider is None else seated_rider(bicycle, rider, self.allow_off_contact)
         return _lru(self._cache("seated"), (bike_changes, rider_changes), build)
 
-    def parameters(self, bike_changes=(), rider_changes=()):
+    def held(self, bike_changes=(), rider_changes=()):
+        """The seated rider (:meth:`seated`) with the forearms on the handlebars (the arms member's
+        ``forearms: handlebars``: :func:`bikemass.rider.hands.forearms_on_handlebars`), or ``None``."""
+        def build():
+            rider = self.seated(bike_changes, rider_changes)
+            return None if rider is None else forearms_on_handlebars(rider, self.bicycle(bike_changes))
+        return _lru(self._cache("held"), (bike_changes, rider_changes), build)
+
+    def parameters(self, bike_changes=(), rider_changes=(), forearms_held=False):
         """Benchmark parameters of the bicycle and rider with their changes (before parameter
-        changes): what ``bm.parameters`` gives for the changed files."""
+        changes): what ``bm.parameters`` gives for the changed files; ``forearms_held``: the rider's
+        forearms on the front frame (:meth:`held`)."""
         if self.lean_set is not None:
             if bike_changes or rider_changes:
                 key = (bike_changes or rider_changes)[0][0]
@@ -534,7 +547,7 @@ class Inputs:
             bicycle = self.bicycle(bike_changes)
             if bike_changes or rider_changes:
                 refuse_second_rider(bicycle, self.posed_rider(rider_changes))
-            rider = self.seated(bike_changes, rider_changes)
+            rider = (self.held if forearms_held else self.seated)(bike_changes, rider_changes)
             if rider is None and bicycle.published is not None:
                 return bicycle_parameters(bicycle, None, self.combine, self.method)
             bodies = _lru(self._cache("bodies"), bike_changes, lambda: self._bicycle_bodies(bicycle))
@@ -544,12 +557,13 @@ class Inputs:
                 if problem:
                     warn(problem)
             return params
-        return _lru(self._cache("params"), (bike_changes, rider_changes), build)
+        return _lru(self._cache("params"), (bike_changes, rider_changes, forearms_held), build)
 
-    def lean(self, bike_changes=(), rider_changes=()):
+    def lean(self, bike_changes=(), rider_changes=(), forearms_held=False):
         """The leaning rider's :class:`~bikemass.models.lean.RiderLeanParameters` of the changed
         bicycle and rider: the seated rider split at the hips (:mod:`bikemass.rider.lean_split`),
-        or the bicycle's own ``MooreRiderLean2012`` set."""
+        or the bicycle's own ``MooreRiderLean2012`` set; ``forearms_held``: the forearms on the front
+        frame (:meth:`held`), not leaning with the upper body."""
         if self.lean_set is not None:
             self.parameters(bike_changes, rider_changes)           # refuses changes of the set's own
             return self.lean_set
@@ -558,12 +572,12 @@ class Inputs:
                              "rider-lean model (its split rider is combined with the parallel-axis theorem)")
 
         def build():
-            rider = self.seated(bike_changes, rider_changes)
+            rider = (self.held if forearms_held else self.seated)(bike_changes, rider_changes)
             if rider is None:
                 raise InputError("rider", "(none)", "a rider for the rider-lean model to split at the hips "
                                  "(--rider POSE), or a MooreRiderLean2012 parameter set as the bicycle")
             return rider_lean_parameters(self.bicycle(bike_changes), rider, self.method)
-        return _lru(self._cache("lean"), (bike_changes, rider_changes), build)
+        return _lru(self._cache("lean"), (bike_changes, rider_changes, forearms_held), build)
 
     def _bicycle_bodies(self, bicycle):
         """``bicycle.bodies(method)`` with each part's mass properties (its mesh) computed once per

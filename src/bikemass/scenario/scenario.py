@@ -41,6 +41,7 @@ import numpy as np
 from ..core.choices import RIGID, Combine, Method, check
 from ..core.errors import InputError, short
 from ..core.frozen import readonly, short_repr
+from ..models.arms import Arms, as_arms
 from ..models.family import build as build_member, dynamic_derivatives, generated, held_coordinates, linear_model, \
     values as member_values
 from ..models.flexible import Compliances
@@ -78,6 +79,8 @@ class Built:
         The frame's twist and the fork's bending (``flexible``).
     tyres : Tyres or None
         The tyres (``tyre``).
+    arms : Arms or None
+        The rider's arms about the steer axis (``arms``).
 
     Examples
     --------
@@ -94,12 +97,13 @@ class Built:
     lean: RiderLeanParameters | None = None
     compliances: Compliances | None = None
     tyres: Tyres | None = None
+    arms: Arms | None = None
 
     def values(self):
         """``{name: float}`` of the parameters the model was generated from (the 26 benchmark names
         of the set the model takes, and its members'): what :func:`bikemass.models.family.linear_model`
         takes."""
-        return member_values(self.choice, self.lean or self.parameters, self.tyres, self.compliances)
+        return member_values(self.choice, self.lean or self.parameters, self.tyres, self.compliances, self.arms)
 
     def with_values(self, values):
         """The model of the same member at other parameter ``values`` (``{name: float}``, as
@@ -153,6 +157,11 @@ class Scenario:
         Use a rider pose as written even off the bicycle's contacts (the thesis's riders).
     origin : str
         What errors about changes name as their source (a sweep's spec file, ``--inputs``, ...).
+    arms
+        For the ``arms`` member: a :class:`~bikemass.models.arms.Arms`, an arms YAML file or a mapping
+        in its form (``stiffness`` N m/rad, ``damping`` N m s/rad about the steer axis; ``forearms:
+        handlebars`` puts the seated rider's forearms on the front frame); ``None``: a parameter file's
+        ``arms:`` block, else zero (no published default; warned).  Refused without the member.
 
     Raises
     ------
@@ -180,6 +189,7 @@ class Scenario:
     tyres: object = None
     allow_off_contact: bool = False
     origin: str = field(default="changes", compare=False)
+    arms: object = None
 
     def __post_init__(self):
         object.__setattr__(self, "model", model_of(self.bicycle, self.model))   # None: the bicycle's own member
@@ -193,6 +203,12 @@ class Scenario:
                              f"{self.model.name} has none")
         if self.tyres is not None and not isinstance(self.tyres, (Tyres, str, os.PathLike, Mapping)):
             as_tyres(self.tyres)                               # names what it takes
+        if self.arms is not None and not self.model.has("arms"):
+            raise InputError("arms", short(self.arms), f"a model with the arms member (e.g. "
+                             f"{parse_model('+'.join((*self.model.members, 'arms'))).name}) for arms; the model "
+                             f"{self.model.name} has none")
+        if self.arms is not None and not isinstance(self.arms, (Arms, str, os.PathLike, Mapping)):
+            as_arms(self.arms)                                 # names what it takes
         self._refuse_stiffness(self.stiffness)
 
     def _refuse_stiffness(self, choice):
@@ -234,7 +250,7 @@ class Scenario:
         """The current value of input ``key`` (SI; :func:`~bikemass.scenario.inputs.get_path`); a
         benchmark name's in the set the model takes (for ``rider-lean``, without the upper body)."""
         if key in NAMES and self.model.has("rider-lean"):
-            return float(getattr(self.inputs.lean().bicycle, key))
+            return float(getattr(self.inputs.lean(forearms_held=self._held()).bicycle, key))
         return get_path(self.inputs, key)
 
     def file_unit(self, key):
@@ -264,7 +280,7 @@ class Scenario:
             raise InputError(self.inputs._lean_source, "parameterization", "a Whipple parameter set (benchmark or "
                              f"principal) for the model {self.model.name}; a MooreRiderLean2012 set is for the "
                              "rider-lean model (--model rider-lean, bm.Scenario(FILE, model='rider-lean'))")
-        p = self.inputs.parameters(bike, rider)
+        p = self.inputs.parameters(bike, rider, self._held())
         if params:
             if self.model.has("rider-lean"):
                 return self._lean(bike, rider, params).rigid()
@@ -278,7 +294,7 @@ class Scenario:
         return self.inputs.frame_stiffness(self.stiffness if which is None else which, bike)
 
     def _lean(self, bike, rider, params):
-        lean = self.inputs.lean(bike, rider)
+        lean = self.inputs.lean(bike, rider, self._held())
         if params:
             lean = lean.replace(bicycle=check_parameters(dataclasses.replace(lean.bicycle, **dict(params)), self.origin))
         return lean
@@ -287,6 +303,23 @@ class Scenario:
         if self.model.has("tyre") and self.tyres is None and "tyre" in self.inputs.file_members:
             return self.inputs.file_members["tyre"]           # a parameter file's tyres (params --model)
         return as_tyres(self.tyres) if self.model.has("tyre") else None
+
+    def _arms(self):
+        if not self.model.has("arms"):
+            return None
+        if self.arms is None and "arms" in self.inputs.file_members:
+            return self.inputs.file_members["arms"]           # a parameter file's arms (params --model)
+        return as_arms(self.arms)
+
+    def _held(self):
+        """Whether the arms member holds the rider's forearms on the handlebars (``forearms: handlebars``)."""
+        if not self.model.has("arms") or self.rider in (None, "none"):
+            return False          # no seated rider to move (a parameter file's set has its forearms where they were)
+        found = self.__dict__.get("_forearms")
+        if found is None:
+            found = as_arms(self.arms).forearms if self.arms is not None else "pose"
+            object.__setattr__(self, "_forearms", found)
+        return found == "handlebars"
 
     def build(self, changes=None):
         """:class:`Built` of the scenario with ``changes`` (``{key: value}``, keys as in
@@ -305,8 +338,9 @@ class Scenario:
             return Built(p, None if S is None else readonly(S), whipple.whipple_model(p, S), self.model)
         lean = self._lean(bike, rider, params) if self.model.has("rider-lean") else None
         flexible = self.inputs.compliances(choice, bike) if self.model.has("flexible") else None
-        tyres = self._tyres()
-        return Built(p, None, build_member(self.model, lean or p, tyres, flexible), self.model, lean, flexible, tyres)
+        tyres, arms = self._tyres(), self._arms()
+        return Built(p, None, build_member(self.model, lean or p, tyres, flexible, arms), self.model, lean, flexible,
+                     tyres, arms)
 
     def replace(self, **changes):
         """A copy with some fields changed (a new scenario: its own caches)."""

@@ -1,14 +1,16 @@
 """The members of the model family that the derivation knows, in their canonical order."""
 
+from .arms import Arms
 from .flexible import Flexible
 from .rider_lean import RiderLean
 from .tyre import Tyre
 
-MEMBERS = {"rider-lean": RiderLean, "tyre": Tyre, "flexible": Flexible}
+MEMBERS = {"rider-lean": RiderLean, "tyre": Tyre, "flexible": Flexible, "arms": Arms}
 """Member name -> its :class:`~bikemass.models.derive.bicycle.Member` class, in canonical order."""
 
-COMBINATIONS = ((), ("rider-lean",), ("tyre",), ("rider-lean", "tyre"), ("flexible",), ("rider-lean", "flexible"),
-                ("tyre", "flexible"), ("rider-lean", "tyre", "flexible"))
+_WITHOUT_ARMS = ((), ("rider-lean",), ("tyre",), ("rider-lean", "tyre"), ("flexible",), ("rider-lean", "flexible"),
+                 ("tyre", "flexible"), ("rider-lean", "tyre", "flexible"))
+COMBINATIONS = (*_WITHOUT_ARMS, *((*c, "arms") for c in _WITHOUT_ARMS))
 """The member combinations the package ships (``()`` is the Whipple bicycle)."""
 
 

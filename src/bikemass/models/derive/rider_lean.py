@@ -32,6 +32,7 @@ class RiderLean(Member):
         bike.dynamic.append(Coordinate(rho, u_rho, "lean-angle", "lean-rate", "rad", "lean"))
         C = bike.frames["C"]
         G = C.orientnew("G", "Axis", (rho, C.x))
+        bike.frames["G"] = G                                   # the upper body (the arms member holds to it)
         hip = bike.points["Rc"].locatenew("J", (p["zhip"] + bike.p("rR")) * C.z)
         Uo = hip.locatenew("Uo", p["xU"] * G.x + (p["zU"] - p["zhip"]) * G.z)
         bike.body("upper body", p["mU"], Uo, G, inertia(G, p["IUxx"], p["IUyy"], p["IUzz"], p["IUxz"]))
