@@ -42,12 +42,6 @@ def characteristic_of(M, C, K):
     return _det2_poly(M, C, K)
 
 
-def _quartic_eigenvectors(mechanics, speeds, s):
-    """Unit state eigenvectors (n, 4, 4), column i for eigenvalue ``s[:, i]``."""
-    v = np.asarray(speeds, dtype=float)
-    return quartic_vectors(mechanics.M, mechanics.damping(v), mechanics.stiffness(v), s)
-
-
 def quartic_vectors(M, C, K, s):
     """Unit state eigenvectors (..., 4, 4), column i for eigenvalue ``s[..., i]``, of stacked 2x2 ``M``
     (broadcast), ``C`` and ``K`` (..., 2, 2) with roots ``s`` (..., 4)."""
@@ -65,8 +59,16 @@ def quartic_vectors(M, C, K, s):
     delta = np.where(row1, p00, -p10)
     zero = (phi == 0) & (delta == 0)
     phi = np.where(zero, 1.0, phi)
-    x = np.stack([phi, delta, s * phi, s * delta], axis=-2)
-    return x / np.linalg.norm(x, axis=-2, keepdims=True)
+    parts = (phi, delta, s * phi, s * delta)
+    # |x| as numpy's norm makes it (the same rounding: conj(x) x, the rows summed in order), then each row
+    # scaled into its place: no stacked copy divided again (x / |x| is x times 1 / |x| in numpy's complex
+    # arithmetic, so the result is the same to the bit)
+    square = [(x.conj() * x).real for x in parts]
+    inverse = 1 / np.sqrt(((square[0] + square[1]) + square[2]) + square[3])
+    out = np.empty(s.shape[:-1] + (4, s.shape[-1]), dtype=complex)
+    for r, x in enumerate(parts):
+        np.multiply(x, inverse, out=out[..., r, :])
+    return out
 
 
 @dataclass(frozen=True, eq=False)
@@ -83,8 +85,10 @@ def eigen_sweep(model, speeds):
     """:class:`EigenSweep` of ``model``'s dynamic states at every speed of ``speeds`` (m/s)."""
     v = np.atleast_1d(np.asarray(speeds, dtype=float))
     if has_quartic_path(model):
-        s = quartic_roots(characteristic_coefficients(model.mechanics, v))
-        return EigenSweep(v, s, _quartic_eigenvectors(model.mechanics, v, s))
+        mech = model.mechanics
+        C, K = mech.damping(v), mech.stiffness(v)          # once, for the roots and the vectors
+        s = quartic_roots(_det2_poly(np.broadcast_to(mech.M, v.shape + (2, 2)), C, K))
+        return EigenSweep(v, s, quartic_vectors(mech.M, C, K, s))
     values, vectors = np.linalg.eig(model.dynamic_matrix(v))
     values = np.where(values.imag == 0, values.real + 0j, values)
     return EigenSweep(v, values.astype(complex), vectors.astype(complex))

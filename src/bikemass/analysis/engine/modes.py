@@ -14,12 +14,12 @@ import numpy as np
 
 from ...core.results import Result, quantity
 from ...core.tables import Table, complex_columns
-from ...core.frozen import short_repr
+from ...core.frozen import freeze, short_repr
 from .eigen import (characteristic_of, damping_ratio, eigen_sweep, has_quartic_path, natural_frequency,
                     quartic_vectors)
 from .quartic import quartic_roots
 from .naming import mode_names, settle_splits, split_rank, standstill_labels
-from .tracking import reorder, track
+from .tracking import track
 from ...core.errors import InputError, short
 from ...core.limits import MAX_SPEED
 
@@ -107,17 +107,19 @@ def follow_modes(model, speeds):
     v = check_speeds(speeds)
     lead = np.linspace(0.0, v[0], int(np.ceil(v[0] / START_STEP)) + 1)[:-1]
     sweep = eigen_sweep(model, np.concatenate([lead, v]))
-    values, vectors = reorder(sweep.eigenvalues, sweep.eigenvectors, track(sweep.eigenvalues, sweep.eigenvectors))
-    labels = standstill_labels(values[0], vectors[0], dict(model.families), [s.name for s in model.dynamic_states])
-    order = settle_splits(values, labels)
-    values = np.take_along_axis(values, order, axis=1)
-    vectors = np.take_along_axis(vectors, order[:, None, :], axis=2)
+    order = track(sweep.eigenvalues, sweep.eigenvectors)
+    values = np.take_along_axis(sweep.eigenvalues, order, axis=1)
+    labels = standstill_labels(values[0], sweep.eigenvectors[0][:, order[0]], dict(model.families),
+                               [s.name for s in model.dynamic_states])
     ordered = split_rank(labels)
     columns = [labels.index(label) for label in ordered]
-    return Modes(speeds=v, labels=tuple(ordered), eigenvalues=values[len(lead):, columns],
-                 eigenvectors=vectors[len(lead):, :, columns])
-
-
+    # one gather of the sweep's arrays: the tracked order, then the splits settled, then the labels' order
+    order = np.take_along_axis(order, settle_splits(values, labels), axis=1)[len(lead):, columns]
+    values = np.take_along_axis(sweep.eigenvalues[len(lead):], order, axis=1)
+    vectors = np.take_along_axis(sweep.eigenvectors[len(lead):], order[:, None, :], axis=2)
+    values.setflags(write=False)                 # made here: read-only as they are, no frozen copy
+    vectors.setflags(write=False)
+    return Modes.frozen(freeze(v), tuple(ordered), values, vectors)
 
 
 def follow_many(models, speeds):

@@ -7,7 +7,7 @@ import numpy as np
 from ...core.display import brief
 from ...core.results import Result, quantity
 from ...core.tables import Table
-from ...core.frozen import freeze, short_repr
+from ...core.frozen import FrozenMap, freeze, short_repr
 from .critical import critical_speeds
 from .crossings import OSCILLATORY, REAL, Crossing, Eigenvalues, circle_speeds
 from .modes import follow_modes
@@ -277,14 +277,22 @@ def analyse(model, speeds=None, marginal=MARGINAL_THRESHOLD, stiffness=None):
     for criterion, r in limits.items():
         exact = (critical.stable if r is None else
                  interval_ranges(lo, hi, boundaries[criterion], lambda x, r=r: bool(np.all(margin(at(x), r) < 0))))
-        ranges[criterion] = {"exact": exact, "grid": grid_ranges(v, is_stable(modes.eigenvalues, r).all(axis=1))}
+        stable = is_stable(modes.eigenvalues, r)            # (n, m): each root on the grid, once
+        ranges[criterion] = FrozenMap({"exact": _pairs(exact), "grid": _pairs(grid_ranges(v, stable.all(axis=1)))})
         inside = _inside_values(lo, hi, boundaries[criterion], modes, tracked)
         for c, label in enumerate(modes.labels):
-            mode_ranges[label][criterion] = {
-                "exact": _joined([(a, b) for a, b, values in inside if margin(values[c], r) < 0]),
-                "grid": grid_ranges(v, is_stable(modes.eigenvalues[:, c], r))}
-    return StabilityResult(model, modes, float(marginal), crossings, ranges, mode_ranges, stiffness,
-                           critical.unstable_at_start)
+            mode_ranges[label][criterion] = FrozenMap({
+                "exact": _pairs(_joined([(a, b) for a, b, values in inside if margin(values[c], r) < 0])),
+                "grid": _pairs(grid_ranges(v, stable[:, c]))})
+    # every field immutable as built (tuples, read-only maps): no second freezing pass over the ranges
+    return StabilityResult.frozen(model, modes, float(marginal), crossings, FrozenMap(ranges),
+                                  FrozenMap({k: FrozenMap(r) for k, r in mode_ranges.items()}), freeze(stiffness),
+                                  critical.unstable_at_start)
+
+
+def _pairs(intervals):
+    """``((start, stop), ...)`` of ``[[start, stop], ...]`` (what :func:`freeze` makes of them)."""
+    return tuple(tuple(x) for x in intervals)
 
 
 INSIDE = 1e-6
