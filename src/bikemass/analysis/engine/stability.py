@@ -7,7 +7,7 @@ import numpy as np
 from ...core.display import brief
 from ...core.results import Result, quantity
 from ...core.tables import Table
-from ...core.frozen import FrozenMap, freeze, short_repr
+from ...core.frozen import FrozenMap, LazyMap, freeze, short_repr
 from .critical import critical_speeds
 from .crossings import OSCILLATORY, REAL, Crossing, Eigenvalues, circle_speeds
 from .modes import follow_modes
@@ -271,23 +271,39 @@ def analyse(model, speeds=None, marginal=MARGINAL_THRESHOLD, stiffness=None):
     critical = critical_speeds(model, hi, lo, tracked)
     crossings = critical.crossings
     axis = [c.speed for c in crossings]
-    limits = {"strict": None, "marginal": marginal}
-    boundaries = {"strict": axis, "marginal": sorted([*axis, *circle_speeds(model, marginal, lo, hi, at)])}
-    ranges, mode_ranges = {}, {label: {} for label in modes.labels}
-    for criterion, r in limits.items():
-        exact = (critical.stable if r is None else
-                 interval_ranges(lo, hi, boundaries[criterion], lambda x, r=r: bool(np.all(margin(at(x), r) < 0))))
-        stable = is_stable(modes.eigenvalues, r)            # (n, m): each root on the grid, once
-        ranges[criterion] = FrozenMap({"exact": _pairs(exact), "grid": _pairs(grid_ranges(v, stable.all(axis=1)))})
-        inside = _inside_values(lo, hi, boundaries[criterion], modes, tracked)
-        for c, label in enumerate(modes.labels):
-            mode_ranges[label][criterion] = FrozenMap({
-                "exact": _pairs(_joined([(a, b) for a, b, values in inside if margin(values[c], r) < 0])),
-                "grid": _pairs(grid_ranges(v, stable[:, c]))})
-    # every field immutable as built (tuples, read-only maps): no second freezing pass over the ranges
-    return StabilityResult.frozen(model, modes, float(marginal), crossings, FrozenMap(ranges),
-                                  FrozenMap({k: FrozenMap(r) for k, r in mode_ranges.items()}), freeze(stiffness),
-                                  critical.unstable_at_start)
+    memo = {}
+
+    def boundaries(criterion):           # the marginal criterion's circle speeds: only when first asked for
+        if criterion not in memo:
+            memo[criterion] = axis if criterion == "strict" else \
+                sorted([*axis, *circle_speeds(model, marginal, lo, hi, at)])
+        return memo[criterion]
+
+    def stable(r):                       # (n, m): each root on the grid stable under the criterion r
+        return is_stable(modes.eigenvalues, r)
+
+    def marginal_ranges():
+        exact = interval_ranges(lo, hi, boundaries("marginal"), lambda x: bool(np.all(margin(at(x), marginal) < 0)))
+        return {"exact": _pairs(exact), "grid": _pairs(grid_ranges(v, stable(marginal).all(axis=1)))}
+
+    def each_mode():
+        out = {label: {} for label in modes.labels}
+        for criterion, r in (("strict", None), ("marginal", marginal)):
+            mask = stable(r)
+            inside = _inside_values(lo, hi, boundaries(criterion), modes, tracked)
+            for c, label in enumerate(modes.labels):
+                out[label][criterion] = FrozenMap({
+                    "exact": _pairs(_joined([(a, b) for a, b, values in inside if margin(values[c], r) < 0])),
+                    "grid": _pairs(grid_ranges(v, mask[:, c]))})
+        return {label: FrozenMap(r) for label, r in out.items()}
+
+    # the strict ranges now; the marginal ones (the circle speeds: a polynomial eigenvalue problem) and each
+    # mode's own when first read (LazyMap: the same values, computed once); every field immutable as built
+    ranges = FrozenMap({"strict": FrozenMap({"exact": _pairs(critical.stable),
+                                             "grid": _pairs(grid_ranges(v, stable(None).all(axis=1)))}),
+                        "marginal": LazyMap(marginal_ranges)})
+    return StabilityResult.frozen(model, modes, float(marginal), crossings, ranges, LazyMap(each_mode),
+                                  freeze(stiffness), critical.unstable_at_start)
 
 
 def _pairs(intervals):

@@ -44,6 +44,24 @@ def assignments(costs):
     k, m = costs.shape[0], costs.shape[-1]
     if k == 0:
         return np.zeros((0, m), dtype=int)
+    # where every row's least cost is in a column of its own and strictly below the rest of the row, that
+    # choice is the one optimal assignment (any other pays more in some row and less in none): taken at
+    # once; only the other steps (roots that meet or cross) go to the exact search below
+    best = np.argmin(costs, axis=2)                                              # (k, m)
+    least = np.take_along_axis(costs, best[:, :, None], axis=2)
+    strict = (np.count_nonzero(costs <= least, axis=2) == 1).all(axis=1)
+    distinct = (np.sort(best, axis=1) == np.arange(m)).all(axis=1)
+    hard = np.flatnonzero(~(strict & distinct))
+    if len(hard) < k:
+        if len(hard):
+            best[hard] = _searched(costs[hard])
+        return best
+    return _searched(costs)
+
+
+def _searched(costs):
+    """:func:`assignments` by the exact search: every permutation, or scipy's solver."""
+    k, m = costs.shape[0], costs.shape[-1]
     if m <= BRUTE_FORCE_MAX:
         perms = _permutations(m)                                      # (p, m)
         totals = costs[:, np.arange(m)[None, :], perms].sum(axis=-1)  # (k, p)
