@@ -108,15 +108,17 @@ def follow_modes(model, speeds):
     lead = np.linspace(0.0, v[0], int(np.ceil(v[0] / START_STEP)) + 1)[:-1]
     sweep = eigen_sweep(model, np.concatenate([lead, v]))
     order = track(sweep.eigenvalues, sweep.eigenvectors)
-    values = np.take_along_axis(sweep.eigenvalues, order, axis=1)
+    rows = np.arange(len(order))[:, None]
+    values = sweep.eigenvalues[rows, order]
     labels = standstill_labels(values[0], sweep.eigenvectors[0][:, order[0]], dict(model.families),
                                [s.name for s in model.dynamic_states])
     ordered = split_rank(labels)
     columns = [labels.index(label) for label in ordered]
     # one gather of the sweep's arrays: the tracked order, then the splits settled, then the labels' order
-    order = np.take_along_axis(order, settle_splits(values, labels), axis=1)[len(lead):, columns]
-    values = np.take_along_axis(sweep.eigenvalues[len(lead):], order, axis=1)
-    vectors = np.take_along_axis(sweep.eigenvectors[len(lead):], order[:, None, :], axis=2)
+    order = order[rows, settle_splits(values, labels)][len(lead):, columns]
+    rows = rows[len(lead):]
+    values = sweep.eigenvalues[rows, order]
+    vectors = sweep.eigenvectors[rows, :, order].transpose(0, 2, 1)
     values.setflags(write=False)                 # made here: read-only as they are, no frozen copy
     vectors.setflags(write=False)
     return Modes.frozen(freeze(v), tuple(ordered), values, vectors)

@@ -48,8 +48,7 @@ def assignments(costs):
     # choice is the one optimal assignment (any other pays more in some row and less in none): taken at
     # once; only the other steps (roots that meet or cross) go to the exact search below
     best = np.argmin(costs, axis=2)                                              # (k, m)
-    least = np.take_along_axis(costs, best[:, :, None], axis=2)
-    strict = (np.count_nonzero(costs <= least, axis=2) == 1).all(axis=1)
+    strict = (costs <= costs.min(axis=2)[:, :, None]).sum(axis=(1, 2)) == m     # each row's least once
     distinct = (np.sort(best, axis=1) == np.arange(m)).all(axis=1)
     hard = np.flatnonzero(~(strict & distinct))
     if len(hard) < k:
@@ -137,14 +136,15 @@ def track(values, vectors):
     steps = assignments(costs)
     for k in np.flatnonzero(_breaks(steps, part[:-1], part[1:]).any(axis=1)):
         steps[k] = _repaired(steps[k], costs[k], part[k], part[k + 1])
-    # row i (speed k) -> column steps[k, i] (speed k + 1); order[k + 1] = steps[k] o ... o steps[0], the
-    # prefix compositions by doubling (log2(n) vector steps instead of a Python loop over the speeds)
-    prefix = steps.copy()
-    d = 1
-    while d < len(prefix):
-        prefix[d:] = prefix[d:][np.arange(len(prefix) - d)[:, None], prefix[:-d]]
-        d *= 2
-    return np.concatenate([np.arange(m)[None, :], prefix]) if len(prefix) else np.arange(m)[None, :].repeat(n, 0)
+    # row i (speed k) -> column steps[k, i] (speed k + 1); order[k + 1] = steps[k] o ... o steps[0]: constant
+    # across the steps that keep every column (nearly all of them), composed at the few others
+    order = np.empty((n, m), dtype=int)
+    current, start = np.arange(m), 0
+    for k in np.flatnonzero((steps != np.arange(m)).any(axis=1)):
+        order[start:k + 1] = current
+        current, start = steps[k][current], k + 1
+    order[start:] = current
+    return order
 
 
 def reorder(values, vectors, order):
@@ -155,7 +155,8 @@ def reorder(values, vectors, order):
 
 def partners(values):
     """Index (n, m) of each root's complex-conjugate partner; a real root is its own partner."""
-    d = np.abs(values[:, :, None] - values[:, None, :].conj())
+    d = values[:, :, None] - values[:, None, :].conj()
+    d = d.real * d.real + d.imag * d.imag                 # squared distances: the same nearest
     m = values.shape[1]
     d[:, np.arange(m), np.arange(m)] = np.inf
     return np.where(values.imag == 0, np.arange(m), np.argmin(d, axis=2))
