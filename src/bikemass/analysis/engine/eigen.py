@@ -91,7 +91,7 @@ def eigen_sweep(model, speeds):
         return EigenSweep(v, s, quartic_vectors(mech.M, C, K, s))
     values, vectors = np.linalg.eig(model.dynamic_matrix(v))
     values = np.where(values.imag == 0, values.real + 0j, values)
-    return EigenSweep(v, values.astype(complex), vectors.astype(complex))
+    return EigenSweep(v, values.astype(complex, copy=False), vectors.astype(complex, copy=False))
 
 
 def natural_frequency(eigenvalues):
