@@ -45,16 +45,16 @@ def characteristic_of(M, C, K):
 def quartic_vectors(M, C, K, s):
     """Unit state eigenvectors (..., 4, 4), column i for eigenvalue ``s[..., i]``, of stacked 2x2 ``M``
     (broadcast), ``C`` and ``K`` (..., 2, 2) with roots ``s`` (..., 4)."""
-    M = np.asarray(M)
-    C, K = C[..., None, :, :], K[..., None, :, :]
-    if M.ndim > 2:
-        M = M[..., None, :, :]
+    def entries(X):                               # (..., 2, 2) -> (..., 4, 1): 00, 01, 10, 11
+        X = np.asarray(X)
+        return X.reshape(X.shape[:-2] + (4, 1))
 
-    def P(i, j):                                  # entry (i, j) of M s^2 + C(v) s + K(v)
-        return (s * M[..., i, j] + C[..., i, j]) * s + K[..., i, j]
-
-    p00, p01, p10, p11 = P(0, 0), P(0, 1), P(1, 0), P(1, 1)
-    row1 = np.abs(p00) + np.abs(p01) >= np.abs(p10) + np.abs(p11)   # null vector from the larger row
+    # the four entries of M s^2 + C(v) s + K(v) at every root at once (each element as entry by entry)
+    z = s[..., None, :]
+    P = (z * entries(M) + entries(C)) * z + entries(K)
+    p00, p01, p10, p11 = P[..., 0, :], P[..., 1, :], P[..., 2, :], P[..., 3, :]
+    size = np.abs(P)
+    row1 = size[..., 0, :] + size[..., 1, :] >= size[..., 2, :] + size[..., 3, :]   # null vector from the larger row
     phi = np.where(row1, -p01, p11)
     delta = np.where(row1, p00, -p10)
     zero = (phi == 0) & (delta == 0)
