@@ -82,9 +82,11 @@ class StabilityResult(Result):
     ranges : mapping
         ``{"strict"|"marginal": {"exact"|"grid": ((start, stop), ...)}}`` (m/s) where every mode
         is stable; ``exact`` ends are boundary speeds, ``grid`` ends the first and last stable
-        grid speeds.
+        grid speeds.  The marginal ranges are computed when first read (their boundary speeds are a
+        polynomial eigenvalue problem of their own), then kept.
     mode_ranges : mapping
-        ``{label: {criterion: {"exact"|"grid": ((start, stop), ...)}}}`` (m/s) of each mode.
+        ``{label: {criterion: {"exact"|"grid": ((start, stop), ...)}}}`` (m/s) of each mode, computed
+        when first read, then kept.
     stiffness : numpy.ndarray of shape (2, 2) or None
         The rear frame's stiffness S (N m/rad) of a quasi-static flexible frame; ``None``: rigid.
     unstable_at_start : tuple of StartInstability
