@@ -7,8 +7,9 @@ Rows (median of the rounds, process CPU time, so that other processes' load coun
 
 * one Whipple configuration's exact critical speeds (``whipple_critical_speeds``: the scalar fast
   path, from the parameters) / one 4 x 4 ``numpy.linalg.eigvals`` (target <= 5);
-* ``bm.stability(p)`` (the whole analysis on the 601-speed grid) / BicycleParameters' ``Bicycle.eig``
-  at the same 601 speeds (target <= 0.1);
+* ``bm.stability(p)`` (the whole analysis on the 601-speed grid; the marginal and per-mode ranges are
+  made when first read) / BicycleParameters' ``Bicycle.eig`` at the same 601 speeds (target <= 0.1);
+  and the same with those ranges read (``ranges["marginal"]``, ``mode_ranges``), no target;
 * ``bm.sensitivity(p)`` (26 exact derivatives of both speeds) / BicycleParameters' central differences:
   for each of the 26 parameters, ``Meijaard2007Model.calc_eigen`` at the 601 speeds on either side of a
   relative step of 1e-6 and the speeds where the largest real part changes sign, interpolated on the
@@ -136,6 +137,12 @@ def main(rounds=15):
     eig = bicycle_eig(p, speeds)
     ours, peer = alternately(lambda: bm.stability(p), eig, rounds, 4, 1)
     rows.append(("bm.stability(p), 601 speeds", ours, "BicycleParameters Bicycle.eig", peer, 0.1))
+
+    def every_range():
+        result = bm.stability(p)
+        return result.ranges["marginal"]["exact"], result.mode_ranges["capsize"]
+    ours, peer = alternately(every_range, eig, rounds, 4, 1)
+    rows.append(("bm.stability(p), every range read", ours, "BicycleParameters Bicycle.eig", peer, None))
 
     peer_run = peer_sensitivity(p, speeds)
     ours, peer = alternately(lambda: bm.sensitivity(p), peer_run, max(3, rounds // 5), 50, 1)

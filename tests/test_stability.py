@@ -317,3 +317,43 @@ def test_weave_ranges_in_json_are_where_both_weave_roots_are_stable():
     strict = doc["modes"]["weave"]["strict"]
     assert strict["exact"][0][0] == pytest.approx(4.29238253634110, abs=1e-9)
     assert strict["grid"] == [[4.3, 30.0]]
+
+
+def test_tracking_of_a_richer_model_is_scipys_optimal_assignment():
+    """Issue 37: the tracking builds the full cost matrices only where a step may move a root to another
+    column; every step of a six-root model (the Jamis + Relaxed with the leaning rider, on the thesis
+    grid) is still scipy's optimal assignment of the full costs (to 1e-12 in total cost)."""
+    from bikemass.scenario.scenario import Scenario
+    m = Scenario("jamis", "relaxed", model="rider-lean").build().model
+    sweep = eigen_sweep(m, speed_grid())
+    values, vectors = sweep.eigenvalues, sweep.eigenvectors
+    costs = step_costs(values, vectors)
+    order = track(values, vectors)
+    rows = np.arange(values.shape[1])
+    for k in range(len(values) - 1):
+        step = np.empty(len(rows), dtype=int)
+        step[order[k]] = order[k + 1]                      # root i at speed k -> step[i] at k + 1
+        best = costs[k][rows, linear_sum_assignment(costs[k])[1]].sum()
+        assert costs[k][rows, step].sum() == pytest.approx(best, abs=1e-12)
+
+
+def test_marginal_and_mode_ranges_are_made_when_first_read():
+    """Issue 37: the marginal ranges and each mode's ranges are computed on first reading (a LazyMap),
+    read-only, and a pickled result holds them as plain read-only maps; the marginal grid range of the
+    benchmark is checked against the grid eigenvalues themselves (every root stable or slower than 2
+    rad/s)."""
+    import pickle
+    from bikemass.core.frozen import FrozenMap, LazyMap
+    result = analyse(whipple_model(BENCHMARK), speed_grid(), 2.0)
+    lazy = result.ranges["marginal"]
+    assert isinstance(lazy, LazyMap) and lazy._data is None and result.mode_ranges._data is None
+    E = result.eigenvalues
+    mask = np.all((E.real < -1e-10) | (np.abs(E) < 2.0), axis=1)
+    v = result.speeds
+    first = np.flatnonzero(mask)
+    assert lazy["grid"][0] == (v[first[0]], v[first[-1]]) and np.all(mask[first[0]:first[-1] + 1])
+    with pytest.raises(AttributeError):
+        lazy.x = 1
+    copy = pickle.loads(pickle.dumps(result))
+    assert type(copy.mode_ranges) is FrozenMap and dict(copy.mode_ranges["capsize"]) == dict(result.mode_ranges["capsize"])
+    assert copy.ranges["marginal"] == lazy

@@ -33,6 +33,42 @@ class FrozenMap(Mapping):
         return f"FrozenMap({self._data!r})"
 
 
+class LazyMap(FrozenMap):
+    """A :class:`FrozenMap` whose items are made by ``make()`` (a mapping) when first read, then kept:
+    the expensive part of a result that many callers never read (a stability result's marginal and
+    per-mode ranges) costs nothing until it is.  ``make`` must be pure (two threads reading at once
+    may both call it; either result is the same).  Pickles as the FrozenMap of its items."""
+
+    __slots__ = ("_make",)
+
+    def __init__(self, make):
+        object.__setattr__(self, "_data", None)
+        object.__setattr__(self, "_make", make)
+
+    def _items(self):
+        data = self._data
+        if data is None:
+            data = dict(self._make())
+            object.__setattr__(self, "_data", data)
+            object.__setattr__(self, "_make", None)          # what it held is no longer needed
+        return data
+
+    def __getitem__(self, key):
+        return self._items()[key]
+
+    def __iter__(self):
+        return iter(self._items())
+
+    def __len__(self):
+        return len(self._items())
+
+    def __reduce__(self):
+        return FrozenMap, (self._items(),)
+
+    def __repr__(self):
+        return f"FrozenMap({self._items()!r})"
+
+
 def readonly(values, dtype=None):
     """A read-only copy of ``values`` as an array (``None`` stays ``None``)."""
     if values is None:

@@ -56,8 +56,10 @@ def multiplicative_coefficients(coefficients):
     d = len(coefficients) - 1
     n = coefficients.shape[-1]
     m = n * (n - 1) // 2
+    P = np.asarray(coefficients)
+    every = multiplicative_compound(P[:, None], P[None, :])       # (d + 1, d + 1, m, m): every pair at once
     out = np.zeros((2 * d + 1, m, m))
-    for k in range(d + 1):
+    for k in range(d + 1):                                         # summed in the same order as pair by pair
         for j in range(d + 1):
-            out[k + j] += multiplicative_compound(coefficients[k], coefficients[j])
+            out[k + j] += every[k, j]
     return out

@@ -42,31 +42,33 @@ def characteristic_of(M, C, K):
     return _det2_poly(M, C, K)
 
 
-def _quartic_eigenvectors(mechanics, speeds, s):
-    """Unit state eigenvectors (n, 4, 4), column i for eigenvalue ``s[:, i]``."""
-    v = np.asarray(speeds, dtype=float)
-    return quartic_vectors(mechanics.M, mechanics.damping(v), mechanics.stiffness(v), s)
-
-
 def quartic_vectors(M, C, K, s):
     """Unit state eigenvectors (..., 4, 4), column i for eigenvalue ``s[..., i]``, of stacked 2x2 ``M``
     (broadcast), ``C`` and ``K`` (..., 2, 2) with roots ``s`` (..., 4)."""
-    M = np.asarray(M)
-    C, K = C[..., None, :, :], K[..., None, :, :]
-    if M.ndim > 2:
-        M = M[..., None, :, :]
+    def entries(X):                               # (..., 2, 2) -> (..., 4, 1): 00, 01, 10, 11
+        X = np.asarray(X)
+        return X.reshape(X.shape[:-2] + (4, 1))
 
-    def P(i, j):                                  # entry (i, j) of M s^2 + C(v) s + K(v)
-        return (s * M[..., i, j] + C[..., i, j]) * s + K[..., i, j]
-
-    p00, p01, p10, p11 = P(0, 0), P(0, 1), P(1, 0), P(1, 1)
-    row1 = np.abs(p00) + np.abs(p01) >= np.abs(p10) + np.abs(p11)   # null vector from the larger row
+    # the four entries of M s^2 + C(v) s + K(v) at every root at once (each element as entry by entry)
+    z = s[..., None, :]
+    P = (z * entries(M) + entries(C)) * z + entries(K)
+    p00, p01, p10, p11 = P[..., 0, :], P[..., 1, :], P[..., 2, :], P[..., 3, :]
+    size = np.abs(P)
+    row1 = size[..., 0, :] + size[..., 1, :] >= size[..., 2, :] + size[..., 3, :]   # null vector from the larger row
     phi = np.where(row1, -p01, p11)
     delta = np.where(row1, p00, -p10)
     zero = (phi == 0) & (delta == 0)
     phi = np.where(zero, 1.0, phi)
-    x = np.stack([phi, delta, s * phi, s * delta], axis=-2)
-    return x / np.linalg.norm(x, axis=-2, keepdims=True)
+    parts = (phi, delta, s * phi, s * delta)
+    # |x| as numpy's norm makes it (the same rounding: conj(x) x, the rows summed in order), then each row
+    # scaled into its place: no stacked copy divided again (x / |x| is x times 1 / |x| in numpy's complex
+    # arithmetic, so the result is the same to the bit)
+    square = [(x.conj() * x).real for x in parts]
+    inverse = 1 / np.sqrt(((square[0] + square[1]) + square[2]) + square[3])
+    out = np.empty(s.shape[:-1] + (4, s.shape[-1]), dtype=complex)
+    for r, x in enumerate(parts):
+        np.multiply(x, inverse, out=out[..., r, :])
+    return out
 
 
 @dataclass(frozen=True, eq=False)
@@ -83,11 +85,13 @@ def eigen_sweep(model, speeds):
     """:class:`EigenSweep` of ``model``'s dynamic states at every speed of ``speeds`` (m/s)."""
     v = np.atleast_1d(np.asarray(speeds, dtype=float))
     if has_quartic_path(model):
-        s = quartic_roots(characteristic_coefficients(model.mechanics, v))
-        return EigenSweep(v, s, _quartic_eigenvectors(model.mechanics, v, s))
+        mech = model.mechanics
+        C, K = mech.damping(v), mech.stiffness(v)          # once, for the roots and the vectors
+        s = quartic_roots(_det2_poly(np.broadcast_to(mech.M, v.shape + (2, 2)), C, K))
+        return EigenSweep(v, s, quartic_vectors(mech.M, C, K, s))
     values, vectors = np.linalg.eig(model.dynamic_matrix(v))
     values = np.where(values.imag == 0, values.real + 0j, values)
-    return EigenSweep(v, values.astype(complex), vectors.astype(complex))
+    return EigenSweep(v, values.astype(complex, copy=False), vectors.astype(complex, copy=False))
 
 
 def natural_frequency(eigenvalues):

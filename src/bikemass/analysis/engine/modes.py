@@ -16,12 +16,12 @@ import numpy as np
 
 from ...core.results import Result, quantity
 from ...core.tables import Table, complex_columns
-from ...core.frozen import short_repr
+from ...core.frozen import freeze, short_repr
 from .eigen import (characteristic_of, damping_ratio, eigen_sweep, has_quartic_path, natural_frequency,
                     quartic_vectors)
 from .quartic import quartic_roots
 from .naming import REFERENCE_SPEED, mode_names, settle_splits, split_rank, standstill_labels
-from .tracking import reorder, track
+from .tracking import track
 from ...core.errors import InputError, short
 from ...core.limits import MAX_SPEED
 
@@ -129,18 +129,22 @@ def follow_modes(model, speeds):
     families = dict(model.families)
     grid, keep, at = naming_grid(v, REFERENCE_SPEED if len(families) > 1 else None)
     sweep = eigen_sweep(model, grid)
-    values, vectors = reorder(sweep.eigenvalues, sweep.eigenvectors, track(sweep.eigenvalues, sweep.eigenvectors))
-    reference = None if at is None else (values[at], vectors[at])
-    labels = standstill_labels(values[0], vectors[0], families, [s.name for s in model.dynamic_states], reference)
-    order = settle_splits(values, labels)
-    values = np.take_along_axis(values, order, axis=1)
-    vectors = np.take_along_axis(vectors, order[:, None, :], axis=2)
+    order = track(sweep.eigenvalues, sweep.eigenvectors)
+    rows = np.arange(len(order))[:, None]
+    values = sweep.eigenvalues[rows, order]
+    reference = None if at is None else (values[at], sweep.eigenvectors[at][:, order[at]])
+    labels = standstill_labels(values[0], sweep.eigenvectors[0][:, order[0]], families,
+                               [s.name for s in model.dynamic_states], reference)
     ordered = split_rank(labels)
     columns = [labels.index(label) for label in ordered]
-    return Modes(speeds=v, labels=tuple(ordered), eigenvalues=values[keep][:, columns],
-                 eigenvectors=vectors[keep][:, :, columns])
-
-
+    # one gather of the sweep's arrays: the tracked order, then the splits settled, then the labels' order
+    order = order[rows, settle_splits(values, labels)][keep][:, columns]
+    rows = rows[keep]
+    values = sweep.eigenvalues[rows, order]
+    vectors = sweep.eigenvectors[rows, :, order].transpose(0, 2, 1)
+    values.setflags(write=False)                 # made here: read-only as they are, no frozen copy
+    vectors.setflags(write=False)
+    return Modes.frozen(freeze(v), tuple(ordered), values, vectors)
 
 
 def follow_many(models, speeds):

@@ -29,7 +29,12 @@ def _ferrari(b, c, d, e):
     r = e - b * d / 4 + b * b * c / 16 - 3 * b ** 4 / 256
     # resolvent m^3 + p m^2 + (p^2/4 - r) m - q^2/8 = 0, shifted m = t - p/3
     m = _cubic_roots(-p * p / 12 - r + 0j, -p ** 3 / 108 + p * r / 3 - q * q / 8 + 0j) - p[:, None] / 3
-    m = m[np.arange(len(m)), np.argmax(np.abs(m), axis=1)]      # a non-zero root if any
+    size = np.abs(m)                                            # a non-zero root if any: the largest
+    if np.isnan(size).any():
+        pick = np.argmax(size, axis=1)
+    else:                                                       # the first of equals, as argmax, column by column
+        pick = np.where(size[:, 2] > np.maximum(size[:, 0], size[:, 1]), 2, (size[:, 1] > size[:, 0]).astype(int))
+    m = m[np.arange(len(m)), pick]
     s = np.sqrt(2 * m)
     with np.errstate(divide="ignore", invalid="ignore"):
         h = np.where(s == 0, 0, q / (2 * s))

@@ -7,7 +7,7 @@ import numpy as np
 from ...core.display import brief
 from ...core.results import Result, quantity
 from ...core.tables import Table
-from ...core.frozen import freeze, short_repr
+from ...core.frozen import FrozenMap, LazyMap, freeze, short_repr
 from .critical import critical_speeds
 from .crossings import OSCILLATORY, REAL, Crossing, Eigenvalues, circle_speeds
 from .modes import follow_modes
@@ -82,9 +82,11 @@ class StabilityResult(Result):
     ranges : mapping
         ``{"strict"|"marginal": {"exact"|"grid": ((start, stop), ...)}}`` (m/s) where every mode
         is stable; ``exact`` ends are boundary speeds, ``grid`` ends the first and last stable
-        grid speeds.
+        grid speeds.  The marginal ranges are computed when first read (their boundary speeds are a
+        polynomial eigenvalue problem of their own), then kept.
     mode_ranges : mapping
-        ``{label: {criterion: {"exact"|"grid": ((start, stop), ...)}}}`` (m/s) of each mode.
+        ``{label: {criterion: {"exact"|"grid": ((start, stop), ...)}}}`` (m/s) of each mode, computed
+        when first read, then kept.
     stiffness : numpy.ndarray of shape (2, 2) or None
         The rear frame's stiffness S (N m/rad) of a quasi-static flexible frame; ``None``: rigid.
     unstable_at_start : tuple of StartInstability
@@ -271,20 +273,53 @@ def analyse(model, speeds=None, marginal=MARGINAL_THRESHOLD, stiffness=None):
     critical = critical_speeds(model, hi, lo, tracked)
     crossings = critical.crossings
     axis = [c.speed for c in crossings]
-    limits = {"strict": None, "marginal": marginal}
-    boundaries = {"strict": axis, "marginal": sorted([*axis, *circle_speeds(model, marginal, lo, hi, at)])}
-    ranges, mode_ranges = {}, {label: {} for label in modes.labels}
-    for criterion, r in limits.items():
-        exact = (critical.stable if r is None else
-                 interval_ranges(lo, hi, boundaries[criterion], lambda x, r=r: bool(np.all(margin(at(x), r) < 0))))
-        ranges[criterion] = {"exact": exact, "grid": grid_ranges(v, is_stable(modes.eigenvalues, r).all(axis=1))}
-        inside = _inside_values(lo, hi, boundaries[criterion], modes, tracked)
-        for c, label in enumerate(modes.labels):
-            mode_ranges[label][criterion] = {
-                "exact": _joined([(a, b) for a, b, values in inside if margin(values[c], r) < 0]),
-                "grid": grid_ranges(v, is_stable(modes.eigenvalues[:, c], r))}
-    return StabilityResult(model, modes, float(marginal), crossings, ranges, mode_ranges, stiffness,
-                           critical.unstable_at_start)
+    memo = {}
+
+    def boundaries(criterion):           # the marginal criterion's circle speeds: only when first asked for
+        if criterion not in memo:
+            memo[criterion] = axis if criterion == "strict" else \
+                sorted([*axis, *circle_speeds(model, marginal, lo, hi, at)])
+        return memo[criterion]
+
+    def stable(r):                       # (n, m): each root on the grid stable under the criterion r
+        return is_stable(modes.eigenvalues, r)
+
+    def marginal_ranges():
+        exact = interval_ranges(lo, hi, boundaries("marginal"), lambda x: bool(np.all(margin(at(x), marginal) < 0)))
+        return {"exact": _pairs(exact), "grid": _pairs(grid_ranges(v, _every(stable(marginal))))}
+
+    def each_mode():
+        out = {label: {} for label in modes.labels}
+        for criterion, r in (("strict", None), ("marginal", marginal)):
+            mask = stable(r)
+            inside = _inside_values(lo, hi, boundaries(criterion), modes, tracked)
+            for c, label in enumerate(modes.labels):
+                out[label][criterion] = FrozenMap({
+                    "exact": _pairs(_joined([(a, b) for a, b, values in inside if margin(values[c], r) < 0])),
+                    "grid": _pairs(grid_ranges(v, mask[:, c]))})
+        return {label: FrozenMap(r) for label, r in out.items()}
+
+    # the strict ranges now; the marginal ones (the circle speeds: a polynomial eigenvalue problem) and each
+    # mode's own when first read (LazyMap: the same values, computed once); every field immutable as built
+    ranges = FrozenMap({"strict": FrozenMap({"exact": _pairs(critical.stable),
+                                             "grid": _pairs(grid_ranges(v, _every(stable(None))))}),
+                        "marginal": LazyMap(marginal_ranges)})
+    return StabilityResult.frozen(model, modes, float(marginal), crossings, ranges, LazyMap(each_mode),
+                                  freeze(stiffness), critical.unstable_at_start)
+
+
+def _every(mask):
+    """``mask.all(axis=1)`` of a boolean (n, m) with a handful of columns (one ``&`` per column: numpy's
+    reduction over a short axis costs more per row)."""
+    out = mask[:, 0]
+    for j in range(1, mask.shape[1]):
+        out = out & mask[:, j]
+    return out
+
+
+def _pairs(intervals):
+    """``((start, stop), ...)`` of ``[[start, stop], ...]`` (what :func:`freeze` makes of them)."""
+    return tuple(tuple(x) for x in intervals)
 
 
 INSIDE = 1e-6

@@ -44,6 +44,23 @@ def assignments(costs):
     k, m = costs.shape[0], costs.shape[-1]
     if k == 0:
         return np.zeros((0, m), dtype=int)
+    # where every row's least cost is in a column of its own and strictly below the rest of the row, that
+    # choice is the one optimal assignment (any other pays more in some row and less in none): taken at
+    # once; only the other steps (roots that meet or cross) go to the exact search below
+    best = np.argmin(costs, axis=2)                                              # (k, m)
+    strict = (costs <= costs.min(axis=2)[:, :, None]).sum(axis=(1, 2)) == m     # each row's least once
+    distinct = (np.sort(best, axis=1) == np.arange(m)).all(axis=1)
+    hard = np.flatnonzero(~(strict & distinct))
+    if len(hard) < k:
+        if len(hard):
+            best[hard] = _searched(costs[hard])
+        return best
+    return _searched(costs)
+
+
+def _searched(costs):
+    """:func:`assignments` by the exact search: every permutation, or scipy's solver."""
+    k, m = costs.shape[0], costs.shape[-1]
     if m <= BRUTE_FORCE_MAX:
         perms = _permutations(m)                                      # (p, m)
         totals = costs[:, np.arange(m)[None, :], perms].sum(axis=-1)  # (k, p)
@@ -62,15 +79,86 @@ def _permutations(m):
     return out
 
 
+def _least(x):
+    """``x.min(axis=-1)`` for a short last axis (a handful of roots): one elementwise minimum per column
+    (a reduction over a short axis costs numpy far more per row)."""
+    out = x[..., 0]
+    for j in range(1, x.shape[-1]):
+        out = np.minimum(out, x[..., j])
+    return out
+
+
+def _first_least(x):
+    """``x.argmin(axis=-1)`` for a short last axis without NaN: the first column of the least value."""
+    best, where = x[..., 0], np.zeros(x.shape[:-1], dtype=int)
+    for j in range(1, x.shape[-1]):
+        better = x[..., j] < best
+        best = np.where(better, x[..., j], best)
+        where = np.where(better, j, where)
+    return where
+
+
+def _largest(x):
+    """``x.max(axis=-1)`` for a short last axis (as :func:`_least`)."""
+    out = x[..., 0]
+    for j in range(1, x.shape[-1]):
+        out = np.maximum(out, x[..., j])
+    return out
+
+
+def _any(mask):
+    """``mask.any(axis=-1)`` for a short last axis (as :func:`_least`)."""
+    out = mask[..., 0]
+    for j in range(1, mask.shape[-1]):
+        out = out | mask[..., j]
+    return out
+
+
+def _scale(a, b):
+    """The larger of the largest root moduli at two speeds (rows of ``a`` and ``b``), at least 1 1/s."""
+    return np.maximum(np.maximum(_largest(np.abs(b)), 1.0), np.maximum(_largest(np.abs(a)), 1.0))
+
+
 def step_costs(values, vectors):
     """Assignment costs (n - 1, m, m): row i = root i at speed k, column j = root j at speed k + 1."""
-    dist = np.abs(values[1:, None, :] - values[:-1, :, None])
-    scale = np.maximum(np.abs(values).max(axis=1), 1.0)
-    scale = np.maximum(scale[1:], scale[:-1])[:, None, None]
-    mac = np.abs(np.matmul(np.swapaxes(vectors[:-1], 1, 2).conj(), vectors[1:])) ** 2     # x_i^H x_j
-    sign = np.sign(values.imag)
-    flip = (sign[:-1, :, None] * sign[1:, None, :]) < 0
-    return dist / scale + (1.0 - mac) + HALF_PLANE_PENALTY * flip
+    return _costs(values[:-1], values[1:], vectors[:-1], vectors[1:])
+
+
+def _costs(a, b, x, y):
+    """The costs (k, m, m) from the roots ``a`` (k, m) with vectors ``x`` (k, N, m) to ``b`` with ``y``:
+    each step of :func:`step_costs` on its own (the same arithmetic, step by step)."""
+    dist = np.abs(b[:, None, :] - a[:, :, None])
+    scale = _scale(a, b)
+    mac = np.abs(np.matmul(np.swapaxes(x, 1, 2).conj(), y)) ** 2     # x_i^H y_j
+    flip = (np.sign(a.imag)[:, :, None] * np.sign(b.imag)[:, None, :]) < 0
+    return dist / scale[:, None, None] + (1.0 - mac) + HALF_PLANE_PENALTY * flip
+
+
+CERTAIN = 1e-9
+"""Margin by which a root's cost to its own column must beat every other column's least possible cost
+for a step to be taken as keeping every column without its full cost matrix (:func:`_kept`); far above
+the rounding of the two ways the overlap is computed (1e-15)."""
+
+
+def _kept(values, vectors):
+    """Boolean (n - 1,): the steps whose one optimal assignment is every root to its own column, decided
+    without the overlaps of different roots: the overlap term ``1 - MAC`` is between 0 and 1, so a
+    root's cost to another column is at least its distance and half-plane terms; where its own column's
+    full cost is below that for every root (by :data:`CERTAIN`), the row minima form the identity and
+    nothing else is optimal (as :func:`assignments` would find on the full matrices)."""
+    a, b = values[:-1], values[1:]
+    scale = _scale(a, b)
+    lower = np.abs(b[:, None, :] - a[:, :, None]) / scale[:, None, None] + \
+        HALF_PLANE_PENALTY * ((np.sign(a.imag)[:, :, None] * np.sign(b.imag)[:, None, :]) < 0)
+    own = 0                                                     # x_i^H y_i, (n - 1, m): state by state
+    for r in range(vectors.shape[1]):
+        own = own + vectors[:-1, r].conj() * vectors[1:, r]
+    own_mac = own.real ** 2 + own.imag ** 2
+    m = values.shape[1]
+    diagonal = np.arange(m)
+    own = lower[:, diagonal, diagonal] + (1.0 - own_mac)
+    lower[:, diagonal, diagonal] = np.inf
+    return ~_any(~(own + CERTAIN < _least(lower)))          # NaN: not kept
 
 
 def broken_pairs(step, before, after):
@@ -113,20 +201,26 @@ def _repaired(step, cost, before, after):
 def track(values, vectors):
     """Column order (n, m): ``order[k, i]`` is the column, at speed ``k``, of the root that starts
     as column ``i`` at the first speed."""
-    costs = step_costs(values, vectors)
     part = partners(values)
     n, m = values.shape
-    steps = assignments(costs)
-    for k in np.flatnonzero(_breaks(steps, part[:-1], part[1:]).any(axis=1)):
-        steps[k] = _repaired(steps[k], costs[k], part[k], part[k + 1])
-    # row i (speed k) -> column steps[k, i] (speed k + 1); order[k + 1] = steps[k] o ... o steps[0], the
-    # prefix compositions by doubling (log2(n) vector steps instead of a Python loop over the speeds)
-    prefix = steps.copy()
-    d = 1
-    while d < len(prefix):
-        prefix[d:] = prefix[d:][np.arange(len(prefix) - d)[:, None], prefix[:-d]]
-        d *= 2
-    return np.concatenate([np.arange(m)[None, :], prefix]) if len(prefix) else np.arange(m)[None, :].repeat(n, 0)
+    # the full cost matrices (the eigenvector overlaps of every pair of roots) only where a step may do
+    # anything but keep every column: roots that meet, cross or trade places
+    steps = np.broadcast_to(np.arange(m), (max(n - 1, 0), m)).copy()
+    hard = np.flatnonzero(~_kept(values, vectors)) if n > 1 else np.zeros(0, dtype=int)
+    if len(hard):
+        steps[hard] = assignments(_costs(values[hard], values[hard + 1], vectors[hard], vectors[hard + 1]))
+    for k in np.flatnonzero(_any(_breaks(steps, part[:-1], part[1:]))):
+        cost = _costs(values[k:k + 1], values[k + 1:k + 2], vectors[k:k + 1], vectors[k + 1:k + 2])[0]
+        steps[k] = _repaired(steps[k], cost, part[k], part[k + 1])
+    # row i (speed k) -> column steps[k, i] (speed k + 1); order[k + 1] = steps[k] o ... o steps[0]: constant
+    # across the steps that keep every column (nearly all of them), composed at the few others
+    order = np.empty((n, m), dtype=int)
+    current, start = np.arange(m), 0
+    for k in np.flatnonzero(_any(steps != np.arange(m))):
+        order[start:k + 1] = current
+        current, start = steps[k][current], k + 1
+    order[start:] = current
+    return order
 
 
 def reorder(values, vectors, order):
@@ -137,7 +231,9 @@ def reorder(values, vectors, order):
 
 def partners(values):
     """Index (n, m) of each root's complex-conjugate partner; a real root is its own partner."""
-    d = np.abs(values[:, :, None] - values[:, None, :].conj())
+    d = values[:, :, None] - values[:, None, :].conj()
+    d = d.real * d.real + d.imag * d.imag                 # squared distances: the same nearest
     m = values.shape[1]
     d[:, np.arange(m), np.arange(m)] = np.inf
-    return np.where(values.imag == 0, np.arange(m), np.argmin(d, axis=2))
+    nearest = np.argmin(d, axis=2) if np.isnan(d).any() else _first_least(d)
+    return np.where(values.imag == 0, np.arange(m), nearest)
