@@ -12,6 +12,12 @@ apart; the eigenvector term decides where roots cross (and, at ``v = 0``, betwee
 mirror ``-l``).  Where a pair splits into two real roots both partners continue equally well:
 naming settles which is which (:mod:`.naming`).
 
+Most steps keep every root in its column, and that is certain without the overlaps of different
+roots: ``1 - MAC`` lies in [0, 1], so a root's cost to another column is at least its distance and
+half-plane terms; where its own column's full cost is below that for every root, the identity is
+the one optimum.  Only the other steps (roots that meet, cross or trade places: a tenth or fewer on
+the thesis grid) get their full cost matrices (:func:`_kept`); the assignments are the same.
+
 Roots of a real matrix move in complex-conjugate pairs: while a pair stays complex its members'
 images must be partners again; a pair may only split into two real roots, and real roots only
 merge with each other.  The costs are symmetric under conjugation, so the optimum mostly keeps
