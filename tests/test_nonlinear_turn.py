@@ -12,6 +12,7 @@ linear model's limit and the nonlinear simulator.
   held), the lean and steer stay put for 0.5 s to 1e-7 rad.
 """
 
+import json
 import math
 
 import numpy as np
@@ -93,3 +94,22 @@ def test_bad_input_is_refused(meijaard):
         bm.hands_free_turns(meijaard, [0.0, 0.1])
     with pytest.raises(InputError):
         bm.steady_turn(meijaard, 5.0, steer=math.pi)
+
+
+def test_the_hands_free_family_ends_at_a_static_equilibrium_and_says_so(meijaard, capsys):
+    """Basu-Mandal et al. (2007): the handlebar-forward family ends in a static equilibrium (speed 0,
+    frame upright) with the front wheel steered far round. Followed up to it, the speed falls towards 0
+    and the lean with it; beyond it there is no circle: NaN rows, one warning, and null (strict JSON) on
+    the command line."""
+    from bikemass.cli.main import main
+    from bikemass.core.errors import BikemassWarning
+    steers = np.linspace(0.9, 1.5, 7)
+    with pytest.warns(BikemassWarning, match="none found at"):
+        family = bm.hands_free_turns(meijaard, steers)
+    found = ~np.isnan(family.speed)
+    assert found[:4].all() and not found[-1]
+    assert np.all(np.diff(family.speed[found]) < 0) and np.all(np.diff(family.roll[found]) < 0)
+    assert family.speed[found][-1] < 0.3 and abs(family.roll[found][-1]) < 0.02
+    assert main(["turn", "benchmark", "--hands-free", "--steers", "1.3:1.5:3", "--format", "json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["speed"][0] > 0 and doc["speed"][-1] is None

@@ -21,13 +21,14 @@ smooth residual) starts from the linear model's steady turn (``(g K0 + v^2 K2) [
 
 import math
 import numbers
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
 
 from ...core.display import Display
 from ...core.real import finite_real
-from ...core.errors import InputError, short, wrong_type
+from ...core.errors import BikemassWarning, InputError, short, wrong_type
 from ...core.frozen import readonly, short_repr
 from ...core.limits import MAX_SPEED
 from ...models.canonical import canonical_matrices
@@ -291,7 +292,7 @@ def hands_free_turns(parameters: BenchmarkParameters, steers: "np.typing.ArrayLi
     Returns
     -------
     HandsFreeTurns
-        Speed, lean, radius and pitch per steer angle (NaN where none was found).
+        Speed, lean, radius and pitch per steer angle (NaN where none was found, with a warning).
 
     Raises
     ------
@@ -345,4 +346,10 @@ def hands_free_turns(parameters: BenchmarkParameters, steers: "np.typing.ArrayLi
         roll, v = guess
         yaw_rate, pitch = _yaw_rate(bike, roll, delta, v)
         out[i] = roll, v, v / yaw_rate, pitch
+    missing = values[np.isnan(out[:, 1])]
+    if len(missing):
+        warnings.warn(f"hands-free circles: none found at {len(missing)} of {len(values)} steer angles (smallest "
+                      f"in size {float(missing[np.argmin(np.abs(missing))]):.4g} rad; their rows are NaN): the family "
+                      "ends where its speed falls to 0, a static equilibrium (Basu-Mandal et al. 2007), or the "
+                      "continuation lost it", BikemassWarning, stacklevel=2)
     return HandsFreeTurns(values, out[:, 1], out[:, 0], out[:, 2], out[:, 3], v0)
