@@ -182,13 +182,13 @@ def with_units(obj, extra=None):
     return {**obj, "units": units_of(obj, extra)}
 
 
-def _strict_json(data):
+def strict_json(data):
     """Plain ``data`` with every NaN or infinite float as ``None``: JSON has no such numbers (``null``
     is "no value", as a NaN of a result means: e.g. no hands-free circle at that steer angle)."""
     if isinstance(data, dict):
-        return {k: _strict_json(v) for k, v in data.items()}
+        return {k: strict_json(v) for k, v in data.items()}
     if isinstance(data, list):
-        return [_strict_json(v) for v in data]
+        return [strict_json(v) for v in data]
     if isinstance(data, float) and not math.isfinite(data):
         return None
     return data
@@ -201,7 +201,7 @@ def dumps(obj, fmt):
     if caught and fmt == "json" and isinstance(data, dict):
         data = {**data, "warnings": warning_lines(caught)}
     if fmt == "json":
-        return json.dumps(_strict_json(data), indent=2, allow_nan=False) + "\n"
+        return json.dumps(strict_json(data), indent=2, allow_nan=False) + "\n"
     if fmt == "yaml":
         return yaml.safe_dump(data, sort_keys=False)
     raise ValueError(f"unknown format {fmt!r}")

@@ -16,7 +16,7 @@ from flask import Response, current_app, jsonify, request
 from ..analysis.eigen_table import eig_table
 from ..core.errors import InputError
 from ..core.gate import read_text
-from ..core.output import with_units, written
+from ..core.output import strict_json, with_units, written
 from ..core.paths import resolve
 from ..core.plain import plain
 from ..models.parameter_export import format_parameters
@@ -89,8 +89,8 @@ def register_routes(server, engine):
 
     def with_warnings(route, document, compute, state):
         dumps = current_app.json.dumps
-        text = engine.answer(compute, state, key=(route, state),
-                             render=lambda value, lines: dumps({**document(value), "warnings": lines}))
+        text = engine.answer(compute, state, key=(route, state),      # strict JSON: a NaN is null
+                             render=lambda value, lines: dumps(strict_json(plain({**document(value), "warnings": lines}))))
         return Response(text, mimetype="application/json")
 
     @server.route("/api/stability")
