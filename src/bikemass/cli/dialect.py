@@ -29,7 +29,7 @@ from ..core.choices import RIGID, Combine, Format, Method
 from ..core.errors import InputError
 from .figure_options import add_figure_options, figure_options, write_figure
 from ..core.limits import MAX_SPEEDS
-from ..models.registry import BASE, parse_model
+from ..models.registry import BASE, SPECS, model_help, parse_model
 
 TABULAR = (Format.TABLE.value, Format.CSV.value, Format.JSON.value, Format.YAML.value)
 """The formats of every command's data (``params`` adds ``bicycleparameters``)."""
@@ -156,14 +156,7 @@ def stiffness_label(stiffness):
     return f"frame stiffness {stiffness}"
 
 
-MODEL_HELP = (
-    "the linear model: whipple (default: Meijaard et al. 2007; with --stiffness other than infinite, the "
-    "thesis's quasi-static flexible rear frame), rider-lean (the rider's upper body leans at the hips "
-    "against a spring and damper; needs --rider, or a MooreRiderLean2012 parameter file as BIKE), tyre "
-    "(tyres that slip, --tyres FILE), flexible (the rear frame twists and the fork bends, stiffness and "
-    "inertia from the beam models of the tubes in the --stiffness material; infinite: rigid), arms (the "
-    "hands on the grips: a spring and damper about the steer axis between the bars and the upper body, "
-    "--arms FILE), or members joined by + (e.g. rider-lean+tyre); see docs/models.md")
+MODEL_HELP = f"the linear model: {model_help()}; see docs/models.md"
 
 
 def model_choice(text):
@@ -205,14 +198,12 @@ def scenario(args, rider=None, stiffness=None, bike=None, origin=None):
     # lazy: the library loads numpy; bikemass --help must not
     from ..scenario.scenario import Scenario
 
-    if getattr(args, "tyres", None) and not parse_model(args.model).has("tyre"):
-        raise InputError("--tyres", args.tyres, f"a --model with the tyre member (e.g. --model "
-                         f"{parse_model(args.model + '+tyre' if args.model != BASE else 'tyre').name}); "
-                         f"--model {args.model} has no tyres")
-    if getattr(args, "arms", None) and not parse_model(args.model).has("arms"):
-        raise InputError("--arms", args.arms, f"a --model with the arms member (e.g. --model "
-                         f"{parse_model(args.model + '+arms' if args.model != BASE else 'arms').name}); "
-                         f"--model {args.model} has no arms")
+    for spec in SPECS:                                    # a member's file only with the member
+        given = getattr(args, spec.option_key, None) if spec.option_key else None
+        if given and not parse_model(args.model).has(spec.name):
+            wanted = parse_model(f"{args.model}+{spec.name}" if args.model != BASE else spec.name).name
+            raise InputError(spec.option, given, f"a --model with the {spec.name} member (e.g. --model {wanted}); "
+                             f"--model {args.model} has no {spec.name} member")
     options = {k: getattr(args, k) for k in ("combine", "method", "allow_off_contact", "model", "tyres", "arms")
                if getattr(args, k, None) is not None}
     if not isinstance(options.get("method"), str) or options["method"] not in Method.values():

@@ -6,8 +6,44 @@ from ..core.errors import InputError, short
 
 BASE = "whipple"
 """The Whipple bicycle of Meijaard et al. (2007): every member extends it."""
-MEMBERS = ("rider-lean", "tyre", "flexible", "arms")
-"""Every member of the family, in the canonical order of a combination's name."""
+
+
+@dataclass(frozen=True)
+class MemberSpec:
+    """What the shells say about a member: its ``name`` (as ``--model`` writes it), ``summary`` (what it
+    adds, a phrase), ``needs`` (what a scenario must give it, a phrase; empty when nothing) and
+    ``option`` (the command-line option of its parameter file, ``None`` without one, with ``option_key``
+    the scenario's keyword it fills)."""
+
+    name: str
+    summary: str
+    needs: str = ""
+    option: str | None = None
+    option_key: str | None = None
+
+
+SPECS = (
+    MemberSpec("rider-lean", "the rider's upper body leans at the hips against a spring and damper",
+               "--rider, or a MooreRiderLean2012 parameter file as BIKE"),
+    MemberSpec("tyre", "tyres that slip", "", "--tyres", "tyres"),
+    MemberSpec("flexible", "the rear frame twists and the fork bends, stiffness and inertia from the beam models "
+               "of the tubes in the --stiffness material (infinite: rigid)"),
+    MemberSpec("arms", "the hands on the grips: a spring and damper about the steer axis between the bars and the "
+               "upper body", "", "--arms", "arms"),
+)
+"""Every member of the family, in the canonical order of a combination's name: the one place the
+command line's help, its option checks and the web page's note take the members from."""
+MEMBERS = tuple(spec.name for spec in SPECS)
+"""Every member's name, in the canonical order of a combination's name."""
+
+
+def model_help():
+    """One paragraph naming the Whipple bicycle and every member, with what each adds and needs."""
+    parts = [f"{s.name} ({s.summary}" + (f"; needs {s.needs}" if s.needs else "")
+             + (f"; {s.option} FILE" if s.option else "") + ")" for s in SPECS]
+    return (f"{BASE} (default: Meijaard et al. 2007; with --stiffness other than infinite, the thesis's "
+            f"quasi-static flexible rear frame), {', '.join(parts)}, or members joined by + "
+            f"(e.g. {SPECS[0].name}+{SPECS[1].name})")
 
 
 @dataclass(frozen=True)

@@ -16,7 +16,7 @@ from ..bicycle.derived_chart import ANGLES, CHART_ORDER, derived_chart
 from ..core.errors import InputError
 from ..core.paths import available, frames_dir
 from ..models.parameters import DESCRIPTIONS, NAMES
-from ..models.registry import BASE
+from ..models.registry import BASE, SPECS
 from ..plots.figure import figure_bytes
 from ..plots.side_view import plot_side_view
 from ..plots.stability import plot_eigenvalues
@@ -75,9 +75,8 @@ def _number_or_text(value):
     return (isinstance(value, (int, float)) and not isinstance(value, bool)) or _text(100)(value)
 
 
-MODEL_NOTE = ("whipple: Meijaard et al. (2007); rider-lean: the upper body leans at the hips (needs a rider); "
-              "tyre: tyres that slip; flexible: the frame twists and the fork bends (in the stiffness's material); "
-              "docs/models.md")
+MODEL_NOTE = "; ".join([f"{BASE}: Meijaard et al. (2007)"]
+                       + [f"{spec.name}: {spec.summary}" for spec in SPECS] + ["docs/models.md"])
 """The line under the model selector."""
 
 
