@@ -113,8 +113,8 @@ def complement(ranges, lo, hi):
 def wobble_mode(result, speed=SPEED):
     """``(label, eigenvalue)`` of the wobble at ``speed`` (on the result's grid): of the tracked
     oscillations of the compliances' family, the slowest whose shape (the coordinates' part of its
-    eigenvector) is largest in steer; ``None`` if there is none (the others are the fork's own
-    bending vibration)."""
+    eigenvector) is largest in steer; else (with the tyres, whose states share the shape) the
+    oscillation the engine labels ``wobble 1``/``wobble 2``; ``None`` if there is neither."""
     speeds = result.speeds
     k = np.flatnonzero(np.isclose(speeds, speed, rtol=0.0, atol=1e-9))
     if not len(k):
@@ -130,6 +130,13 @@ def wobble_mode(result, speed=SPEED):
         shape = np.abs(result.modes.eigenvectors[k, coordinates, c])
         if names[coordinates[int(np.argmax(shape))]] == STEER and (best is None or value.imag < best[1].imag):
             best = (label, complex(value))
+    if best is None:
+        # with the tyres the wobble is the oscillation the engine labels by what moves at its reference
+        # speed (engine.naming.wobble_columns), whose shape the tyres' states share
+        for c, label in enumerate(result.labels):
+            value = result.eigenvalues[k, c]
+            if label in ("wobble 1", "wobble 2") and value.imag > 0:
+                best = (label, complex(value))
     return best
 
 
