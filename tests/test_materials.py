@@ -59,3 +59,16 @@ def test_every_material_is_offered_and_sourced():
     for m in {m.key: m for m in load_materials().values()}.values():
         assert m.name in listed
         assert f"`{m.key}`" in fe, m.key
+
+
+def test_the_json_says_what_was_used(capsys):
+    """A material on a bicycle's tubes is labelled as such in the JSON as in the title: not a frame."""
+    import json
+
+    from bikemass.cli.main import main
+    assert main(["stability", "jamis", "--stiffness", "carbon", "--speeds", "0:10:0.5", "--format", "json"]) == 0
+    frame = json.loads(capsys.readouterr().out)["frame"]
+    assert frame == f"{load_materials()['carbon'].name} on the bicycle's tube sections"
+    assert "laminate" in frame and "carbon frame" not in frame
+    assert main(["stability", "benchmark", "--format", "json"]) == 0
+    assert json.loads(capsys.readouterr().out)["frame"] == "rigid frame"
