@@ -219,3 +219,57 @@ def test_figure_shows_the_table(study, table):
         drawn = sorted(round(y, 9) for line in ax.get_lines() if line.get_linestyle() == "-" for y in line.get_ydata())
         expected = sorted(round(float(r["wobble at 8 m/s (Hz)"]), 9) for r in table if r["bicycle"] == bike)
         assert drawn == expected
+
+
+def test_damped_wobble_against_the_model_built_directly(study, direct):
+    """The damped table (compliance, tyres and the arms at their zero defaults) against ``tyre+flexible``
+    built directly (the arms' zeros are the model without them): the table's wobble is a root of that
+    model at 8 m/s, and followed by hand (nearest root, plain numpy) down and up the grid its first
+    onset is where its real part changes sign (Brent's method)."""
+    _, parameters, compliance = direct
+    rows = read_csv(study[0] / "damped_wobble.csv")
+    assert len(rows) == len({(r["bicycle"], r["rider"], r["material"]) for r in rows}) == 2 * 5 * 3
+    for row in rows:
+        bike, rider, material = NAMES[row["bicycle"]], NAMES[row["rider"]], NAMES[row["material"]]
+        model = build("tyre+flexible", parameters(bike, rider), compliances=compliance(bike, material))
+        target = float(row["wobble growth at 8 m/s (1/s)"]) + 2j * np.pi * float(row["wobble at 8 m/s (Hz)"])
+        at8 = np.linalg.eigvals(model.dynamic_matrix(8.0))
+        assert np.min(np.abs(at8 - target)) < 1e-8 * abs(target), row
+        A = np.einsum("nk,kij->nij", GRID[:, None] ** np.arange(len(model.dynamic_coefficients)),
+                      np.asarray(model.dynamic_coefficients))
+        every = np.linalg.eigvals(A)
+        roots = np.empty(len(GRID), complex)
+        roots[K8] = at8[np.argmin(np.abs(at8 - target))]
+        for order in (range(K8 - 1, -1, -1), range(K8 + 1, len(GRID))):
+            previous = roots[K8]
+            for i in order:
+                previous = roots[i] = every[i][np.argmin(np.abs(every[i] - previous))]
+        growing = roots[1:].real > 0
+        start = number(row["wobble onset (m/s)"])
+        if start is None:
+            assert not growing.any(), row
+        else:
+            i = int(np.flatnonzero(growing)[0]) + 1
+            speed = brentq(nearest_real_part(model, roots[i]), GRID[i - 1], GRID[i], xtol=1e-12)
+            assert start == pytest.approx(speed, abs=1e-7), row
+
+
+def test_damped_model_with_zero_arms_is_the_model_without_them(direct):
+    """Contract test: the study's damped model (the arms at their zero defaults) has the eigenvalues of
+    ``tyre+flexible`` (the arms add no coordinate)."""
+    _, parameters, compliance = direct
+    params, flex = parameters("jamis", "relaxed"), compliance("jamis", "steel")
+    with_arms = flexible.damped_model(params, flex, "relaxed")
+    without = build("tyre+flexible", params, compliances=flex)
+    for v in (0.5, 4.0, 8.0):
+        a = np.sort_complex(np.linalg.eigvals(with_arms.dynamic_matrix(v)))
+        b = np.sort_complex(np.linalg.eigvals(without.dynamic_matrix(v)))
+        assert np.allclose(a, b, rtol=1e-10, atol=1e-9)
+
+
+def test_damped_findings_count_the_table(study):
+    report = (study[0] / "report.md").read_text()
+    rows = read_csv(study[0] / "damped_wobble.csv")
+    unstable = sum(r["wobble onset (m/s)"] != "" for r in rows)
+    assert "## The wobble with damping and the arms" in report and "(CSV: `damped_wobble.csv`)" in report
+    assert f"in {unstable} of {len(rows)} bicycle x rider x material combinations" in report

@@ -10,9 +10,12 @@ from .sizes import add_size_option, every_size
 
 def _common(parser):
     dialect.add_bike(parser, "shipped bicycle name or bicycle YAML file")
-    parser.add_argument("--material", metavar="M", default=None,
-                        help="steel, titanium, aluminum or a one-material YAML file "
-                             "(default: the frame's own materials); geometry is unchanged")
+    action = parser.add_argument("--material", metavar="M", default=None,
+                                 help="steel, titanium, aluminum, carbon or a one-material YAML file "
+                                      "(default: the frame's own materials); geometry is unchanged")
+    dialect.late_help(action, lambda: f"a material: {dialect.materials_or_note()} (frames/materials.yaml; "
+                      "sources in docs/fe.md), or a one-material YAML file (default: the frame's own "
+                      "materials); the geometry is unchanged: the bicycle's tube sections take its properties")
     parser.add_argument("--beam", choices=Beam.values(), default=Beam.TIMOSHENKO.value,
                         help="beam theory (default timoshenko: shear deformation + rotary inertia)")
     dialect.add_output(parser)

@@ -146,7 +146,9 @@ def run_stability(args):
 
     def render(fmt):
         if fmt in ("json", "yaml"):
-            return dialect.result_document(result.to_dict(), result.units(), fmt)
+            # the frame as the title names it: a material is a property on the bicycle's own tube sections
+            return dialect.result_document({"frame": _stiffness_name(args.stiffness), **result.to_dict()},
+                                           result.units(), fmt)
         if fmt == "csv":
             return ranges_csv(result)
         return stability_text(result, _title(args))

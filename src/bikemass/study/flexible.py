@@ -12,10 +12,15 @@ is unstable, and the weave and capsize speeds beside those of the rigid frame an
 spring.  And the rider: the leaning rider (``rider-lean``, the upper body on a hip spring and
 damper) against the rigid rider, rigid frame, by the weave speed.
 
+And once more with the damping and the arms (:data:`DAMPED_MODEL`): the published wobble models'
+structure, compliance plus tyres, with every published default (the steering bearings' measured
+damping, force-only tyres) and the rider's arms at their published values (none could be read: zero,
+so the model without them; docs/models.md, "The rider's arms").
+
 The compliances are computed once per bicycle and material (:func:`compliances_of`).
 """
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -25,6 +30,7 @@ from ..analysis.engine.naming import family
 from ..analysis.engine.speeds import speed_grid
 from ..analysis.engine.stability import WOBBLE, analyse
 from ..fe.flexible import compliances
+from ..models.arms import NO_ARMS
 from ..models.family import build
 from ..models.lean import LeanJoint
 from ..models.whipple import whipple_model
@@ -41,6 +47,8 @@ POSES = RIDERS[1:]
 SPEED = 8.0
 """Speed (m/s) at which the wobble's frequency and growth rate are stated (docs/models-flexible.md)."""
 STEER = "steer-angle"
+DAMPED_MODEL = "tyre+flexible+arms"
+"""The model of the study's damped wobble: compliance, tyres and the arms with their defaults."""
 
 
 @dataclass(frozen=True)
@@ -88,10 +96,13 @@ class Lean:
 
 @dataclass(frozen=True)
 class FlexibleResults:
-    """``wobble[(bike, rider, material)]``: :class:`Wobble`; ``lean[(bike, rider)]``: :class:`Lean`."""
+    """``wobble[(bike, rider, material)]``: :class:`Wobble`; ``lean[(bike, rider)]``: :class:`Lean`;
+    ``damped[(bike, rider, material)]``: :class:`Wobble` of :data:`DAMPED_MODEL` (hands on the bars;
+    the no-hands rider without the arms member)."""
 
     wobble: dict
     lean: dict
+    damped: dict = field(default_factory=dict)
 
 
 def _pairs(ranges):
@@ -113,8 +124,8 @@ def complement(ranges, lo, hi):
 def wobble_mode(result, speed=SPEED):
     """``(label, eigenvalue)`` of the wobble at ``speed`` (on the result's grid): of the tracked
     oscillations of the compliances' family, the slowest whose shape (the coordinates' part of its
-    eigenvector) is largest in steer; ``None`` if there is none (the others are the fork's own
-    bending vibration)."""
+    eigenvector) is largest in steer; else (with the tyres, whose states share the shape) the
+    oscillation the engine labels ``wobble 1``/``wobble 2``; ``None`` if there is neither."""
     speeds = result.speeds
     k = np.flatnonzero(np.isclose(speeds, speed, rtol=0.0, atol=1e-9))
     if not len(k):
@@ -130,6 +141,13 @@ def wobble_mode(result, speed=SPEED):
         shape = np.abs(result.modes.eigenvectors[k, coordinates, c])
         if names[coordinates[int(np.argmax(shape))]] == STEER and (best is None or value.imag < best[1].imag):
             best = (label, complex(value))
+    if best is None:
+        # with the tyres the wobble is the oscillation the engine labels by what moves at its reference
+        # speed (engine.naming.wobble_columns), whose shape the tyres' states share
+        for c, label in enumerate(result.labels):
+            value = result.eigenvalues[k, c]
+            if label in ("wobble 1", "wobble 2") and value.imag > 0:
+                best = (label, complex(value))
     return best
 
 
@@ -171,19 +189,29 @@ def compliances_of(inputs, bicycles=BICYCLES, materials=MATERIALS):
     return {(b, m): compliances(inputs.bicycle(b), inputs.material(m)) for b in bicycles for m in materials}
 
 
+def damped_model(params, compliances, rider):
+    """:data:`DAMPED_MODEL` of a parameter set and compliances, the arms at their default
+    (:data:`~bikemass.models.arms.NO_ARMS`: no published value; the table's notes say so); the
+    no-hands rider (hands off the bars) without the arms member."""
+    if rider == "no-hands":
+        return build(DAMPED_MODEL.replace("+arms", ""), params, compliances=compliances)
+    return build(DAMPED_MODEL, params, compliances=compliances, arms=NO_ARMS)
+
+
 def flexible_results(inputs, bicycles=BICYCLES, riders=POSES, materials=MATERIALS):
     """:class:`FlexibleResults` of every bicycle, rider and material (the geometry run's inputs)."""
     flexible = compliances_of(inputs, bicycles, materials)
-    wobbles, leans = {}, {}
+    wobbles, leans, damped = {}, {}, {}
     for bike in bicycles:
         for rider in riders:
             params = inputs.parameters(GEOMETRY, Configuration(bike, rider, "infinite"))
             for material in materials:
                 wobbles[bike, rider, material] = wobble(build("flexible", params,
                                                               compliances=flexible[bike, material]))
+                damped[bike, rider, material] = wobble(damped_model(params, flexible[bike, material], rider))
             leans[bike, rider] = lean(rider_lean_parameters(inputs.bicycle(bike), inputs.rider(rider, bike),
                                                             METHOD))
-    return FlexibleResults(wobbles, leans)
+    return FlexibleResults(wobbles, leans, damped)
 
 
 def spring_speeds(geometry, bike, rider, stiffness):
@@ -237,6 +265,71 @@ def flexible_table(results, speeds):
                         "bearings (0.34 N m s/rad, measured). Wobble: the "
                         "steer-dominated oscillation of the compliances' family. Weave and capsize: the first "
                         "crossing on 0..30 m/s; '-': none.",))
+
+
+def damped_table(results):
+    """The damped wobble's table: per bicycle, rider and material the wobble of :data:`DAMPED_MODEL`
+    (frequency and growth at :data:`SPEED`, onset: the lowest speed it is unstable from, the speeds it
+    is unstable at) beside the onset without the tyres' (the ``flexible`` table's), and the damped
+    model's stable speeds."""
+    rows = []
+    for (bike, rider, material), w in results.damped.items():
+        plain = results.wobble.get((bike, rider, material))
+        rows.append([THESIS_NAMES[bike], THESIS_NAMES[rider], THESIS_NAMES[material], w.frequency, w.growth,
+                     w.unstable[0][0] if w.unstable else None, _ranges(w.unstable),
+                     plain.unstable[0][0] if plain is not None and plain.unstable else None, _ranges(w.stable)])
+    headers = ("bicycle", "rider", "material", f"wobble at {SPEED:g} m/s (Hz)",
+               f"wobble growth at {SPEED:g} m/s (1/s)", "wobble onset (m/s)", "wobble unstable (m/s)",
+               "onset without tyres (m/s)", "stable (m/s)")
+    return Table("damped_wobble", "The wobble with the damping and the arms: compliance, tyres and the arms with "
+                 "every published default", headers, rows, {i: "{:.2f}" for i in (3, 4, 5, 7)},
+                 notes=("The tyre+flexible+arms model (docs/models.md) of the geometry bicycles and riders: the "
+                        "rear frame's twist and the fork's bending (beam models of the tubes, in each material), "
+                        "tyres that slip (the default force-only tyres, no tyre moments: none has a published "
+                        "default), the steering bearings' measured damping (0.34 N m s/rad, Moore 2012) and no "
+                        "structural damping (no published loss factor for a bicycle frame). The arms: no "
+                        "published stiffness or damping about the steer axis could be read, so both are 0 (the "
+                        "model without them) and the forearms' mass stays where the pose puts it (the thesis's "
+                        "riders, placed as it placed them, do not hold the grips to 1 mm); the no-hands rider has "
+                        "no arms member. Wobble: the oscillation the engine names wobble by what moves at "
+                        f"{SPEED:g} m/s. Onset: the lowest speed of 0..30 m/s it is unstable from; '-': none.",))
+
+
+def damped_findings(results):
+    """Sentences on the damped wobble (:func:`damped_table`): how many combinations it is unstable in,
+    its onsets per bicycle, and what a stiffer material does to its frequency and onset."""
+    damped = results.damped
+    if not damped:
+        return []
+    lines = []
+    unstable = [k for k, w in damped.items() if w.unstable]
+    lines.append(f"With the damping and the arms at their published defaults the wobble is unstable somewhere on "
+                 f"0..30 m/s in {len(unstable)} of {len(damped)} bicycle x rider x material combinations.")
+    for bike in dict.fromkeys(k[0] for k in damped):
+        onsets = [w.unstable[0][0] for k, w in damped.items() if k[0] == bike and w.unstable]
+        frequencies = [w.frequency for k, w in damped.items() if k[0] == bike and w.frequency is not None]
+        where = (f"its onset lies at {min(onsets):.2f}..{max(onsets):.2f} m/s"
+                 + (" (below 2 m/s in every case)" if max(onsets) < 2.0 else "") if onsets else
+                 "it is damped at every speed")
+        band = f"{min(frequencies):.2f}..{max(frequencies):.2f} Hz" if frequencies else "no wobble named"
+        lines.append(f"{THESIS_NAMES[bike]}: the wobble is {band} at {SPEED:g} m/s; {where}.")
+    materials = list(dict.fromkeys(k[2] for k in damped))
+    if len(materials) > 1:
+        stiff, soft = materials[0], materials[1]
+        higher = lower_onset = pairs = 0
+        for (bike, rider, material), w in damped.items():
+            other = damped.get((bike, rider, soft))
+            if material != stiff or other is None or w.frequency is None or other.frequency is None:
+                continue
+            pairs += 1
+            higher += w.frequency > other.frequency
+            a = w.unstable[0][0] if w.unstable else np.inf
+            b = other.unstable[0][0] if other.unstable else np.inf
+            lower_onset += a < b
+        lines.append(f"{THESIS_NAMES[stiff]} against {THESIS_NAMES[soft]}: the stiffer frame and fork raises the "
+                     f"wobble's frequency in {higher} of {pairs} bicycle x rider pairs and lowers its onset in "
+                     f"{lower_onset}.")
+    return lines
 
 
 def lean_table(results):

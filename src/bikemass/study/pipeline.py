@@ -10,7 +10,8 @@ from . import corrections, figures
 from .body_tables import bicycle_table, rider_table
 from .configurations import BICYCLES, Configuration, configurations
 from .explain import explain
-from .flexible import FlexibleResults, flexible_results, flexible_table, lean_table, quasi_static_speeds
+from .flexible import (FlexibleResults, damped_table, flexible_results, flexible_table, lean_table,
+                       quasi_static_speeds)
 from .frame_tables import modes_table, stiffness_table
 from .frames import FRAMES, MATERIALS, frame_results
 from .handling import handled, handling_result
@@ -211,7 +212,7 @@ def flexible_tables(results):
     if results.flexible is None:
         return []
     return [flexible_table(results.flexible, quasi_static_speeds(results.flexible, results.runs["geometry"])),
-            lean_table(results.flexible)]
+            lean_table(results.flexible), damped_table(results.flexible)]
 
 
 def _pose_jobs(inputs, folder):

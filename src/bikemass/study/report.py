@@ -4,7 +4,7 @@ from .runs import RUNS
 from .stability_tables import CHAPTER4, CHAPTER5, TOLERANCE, compare, title
 from .handling import handling_findings
 from .handling import handling_table
-from .flexible import flexible_findings, flexible_table, lean_table, quasi_static_speeds
+from .flexible import damped_findings, damped_table, flexible_findings, flexible_table, lean_table, quasi_static_speeds
 from .reference import wobble_bands
 
 LEGEND = (f"Each cell: our value (m/s, first or last speed of the stable run on the 0..30 m/s grid, or "
@@ -131,7 +131,7 @@ def render(results):
             "`pose_<pose>.png` (the poses on the Jamis), `handling_<bike>.png` (the rider in the loop: HQM "
             "peak against speed of every position, beside the self-stable speeds), `flexible.png` (the frame and "
             "fork flexing with their inertia: the wobble, the critical speeds beside the thesis's spring's, the "
-            "leaning rider's weave speed); `handling.csv`, `flexible_wobble.csv`, `rider_lean_weave.csv`.\n"]
+            "leaning rider's weave speed); `handling.csv`, `flexible_wobble.csv`, `rider_lean_weave.csv`, `damped_wobble.csv`.\n"]
     return "\n".join(out)
 
 
@@ -182,7 +182,21 @@ def _flexible_section(r):
             "geometry run's bicycles and riders. The wobble is the steer-dominated oscillation this brings. Beside it, "
             "the leaning rider (the `rider-lean` model): the upper body on a hip spring and damper.\n",
             *[f"* {line}" for line in flexible_lines(r)], "",
-            _table_section(flexible_table(r.flexible, speeds)), _table_section(lean_table(r.flexible))]
+            _table_section(flexible_table(r.flexible, speeds)), _table_section(lean_table(r.flexible)),
+            *_damped_section(r)]
+
+
+def _damped_section(r):
+    """The thesis's question again with the damping and the arms (:func:`~bikemass.study.flexible.damped_table`)."""
+    if not r.flexible.damped:
+        return []
+    return ["## The wobble with damping and the arms\n",
+            "The question once more, with the published wobble models' structure (compliance plus tyres) and every "
+            "published default: the steering bearings' measured damping, force-only tyres, and the rider's arms "
+            "(docs/models.md). For every bicycle, rider position and material: the wobble's frequency and its "
+            "onset speed.\n",
+            *[f"* {line}" for line in damped_findings(r.flexible)], "",
+            _table_section(damped_table(r.flexible))]
 
 
 def _contact_section(contacts):
