@@ -216,7 +216,7 @@ def count_of(spec):
     return spec.n
 
 
-STIFFNESS_CHOICES = "infinite, steel, titanium, aluminum or a file"
+STIFFNESS_CHOICES = "infinite, a material of frames/materials.yaml (steel, titanium, aluminum, carbon) or a file"
 
 
 VARY_TAKES = ("one of the 26 benchmark parameter names (c, lam, ...), stiffness, or a dotted path into the "
