@@ -144,16 +144,10 @@ def material_list():
 
 
 def stiffness_label(stiffness):
-    """What a stiffness choice is, for a title: ``rigid frame``, ``<material> on the bicycle's tube
-    sections`` (a material is a property, not a frame), or the file's name."""
-    if stiffness in (RIGID, "rigid", None):
-        return "rigid frame"
+    """What a stiffness choice is, for a title (:func:`bikemass.mass.materials.frame_label`)."""
     # lazy: the library loads numpy; bikemass --help must not
-    from ..mass.materials import load_materials
-    material = load_materials().get(stiffness)
-    if material is not None:
-        return f"{material.name} on the bicycle's tube sections"
-    return f"frame stiffness {stiffness}"
+    from ..mass.materials import frame_label
+    return frame_label(stiffness)
 
 
 MODEL_HELP = f"the linear model: {model_help()}; see docs/models.md"

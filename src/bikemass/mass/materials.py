@@ -61,3 +61,16 @@ def read_materials(root):
         for alias in node.get("aliases", []).elements():
             table[alias.string()] = mat
     return table
+
+
+def frame_label(stiffness):
+    """What a stiffness choice is, in words for a title or a document: ``rigid frame``, ``<material> on
+    the bicycle's tube sections`` (a material is a property of the tubes, not a frame) for a
+    :class:`Material` or a material's key, else ``frame stiffness <the choice>`` (a file)."""
+    if stiffness is None or (isinstance(stiffness, str) and stiffness in ("infinite", "rigid")):
+        return "rigid frame"
+    material = stiffness if isinstance(stiffness, Material) else load_materials().get(stiffness)
+    if material is not None:
+        return f"{material.name} on the bicycle's tube sections"
+    return f"frame stiffness {stiffness}"
+

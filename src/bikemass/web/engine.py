@@ -41,7 +41,7 @@ from ..bicycle.loader import bicycle_sizes
 from ..bicycle.loader import _is_parameter_text
 from ..core.config import load_yaml
 from ..core.paths import frames_dir, resolve
-from ..mass.materials import load_materials
+from ..mass.materials import frame_label, load_materials
 from ..core.gate import read_text
 from ..scenario.catalog import load_bicycle
 from ..scenario.catalog import load_rider
@@ -84,6 +84,8 @@ class Evaluation:
     parameters: BenchmarkParameters
     stiffness: object
     stability: object
+    frame: str = "rigid frame"
+    """What the frame is, as ``bikemass stability``'s title and JSON say (:func:`~bikemass.mass.materials.frame_label`)."""
 
 
 def _recorded(function, maxsize):
@@ -435,7 +437,8 @@ class Engine:
         """:class:`Evaluation` of ``state`` over ``speeds`` (default grid)."""
 
         built = self.state_built(state)
-        return Evaluation(self.parameters(state), built.stiffness, stability(built, speeds=speeds))
+        frame = frame_label(self.stiffness_choice(state.bicycle_key, state.stiffness))
+        return Evaluation(self.parameters(state), built.stiffness, stability(built, speeds=speeds), frame)
 
 
 def body_pose(key):
