@@ -18,6 +18,8 @@ row, the numbers a sweep's row holds: the first crossing of the weave, the first
    product of that column: zero exactly where two roots sum to zero, a pair on the imaginary
    axis); ``a_0 = det(-A)`` is zero where a real root passes through zero.  A sign change of
    ``a_0`` or ``H_(n-1)`` between two grid speeds brackets a crossing.
+   A grid speed where ``|a_0|`` or ``|H_(n-1)|`` dips without a sign change is searched (golden
+   section on the polynomial) for a pair of crossings hidden inside two grid steps.
 3. **Refinement** of each bracket: the Illinois method on the polynomial (``a_0`` or ``H_(n-1)``),
    then Newton's method on the matrices themselves, to the engine's accuracy: ``det A(v) = 0``
    for a real crossing; ``det(i w I - A(v)) = 0`` in ``(v, w)`` for a pair (the log-derivative
@@ -28,46 +30,48 @@ row, the numbers a sweep's row holds: the first crossing of the weave, the first
    there) give the stable ranges.
 5. **Naming a pair.**  The engine names a crossing by the tracked mode it continues; a batch does
    not follow modes, so it names only what is unambiguous: a pair slower than
-   :data:`WEAVE_MAX_FREQUENCY` with at least :data:`WEAVE_SHARE` of its participation factors
+   :data:`WEAVE_MAX_FREQUENCY` (3 Hz) with at least :data:`WEAVE_SHARE` of its participation factors
    ``|x_k y_k|`` (right and left null vectors of ``i w I - A(v)``: the diagonal of its inverse near
    the root) on the bicycle's states is the weave.  Any other pair before a row's first weave
    crossing leaves the row undecided (the wobble crosses at 5-9 Hz, and a weave crossing at high
    speed may reach 5 Hz: only the modes followed from standstill tell them apart there).
 
 A row is **decided** only when every step is clean: every Routh array finite, every refinement
-converged, no grid speed where ``|a_0|`` or ``|H_(n-1)|`` dips towards zero without a sign change
-(two crossings inside one grid step), every pair up to the first weave crossing named.  The
+converged, no dip of ``|a_0|`` or ``|H_(n-1)|`` whose least value is too near zero to tell whether
+it crosses (:data:`AMBIGUOUS`), every pair up to the first weave crossing named.  The
 caller takes every other row through the engine (:func:`critical_speeds`), the reference this
 path is tested against (tests/test_sweep_members.py: rows equal to 1e-9 m/s).
 """
 
 import numpy as np
 
-from .naming import BICYCLE
+from .naming import BICYCLE, WOBBLE_MIN_FREQUENCY
 
 GRID_STEP = 0.25
 """Speed step (m/s) of the grid on which crossings are bracketed."""
-WEAVE_MAX_FREQUENCY = 2 * np.pi * 2.0
-"""Highest frequency (rad/s, 2 Hz) of a crossing pair the batch names the weave; the wobble band begins
-at :data:`~bikemass.analysis.engine.naming.WOBBLE_MIN_FREQUENCY` (3 Hz).  Measured with the engine's
+WEAVE_MAX_FREQUENCY = WOBBLE_MIN_FREQUENCY
+"""Highest frequency (rad/s, 3 Hz) of a crossing pair the batch names the weave: the engine names no pair
+below it wobble (:data:`~bikemass.analysis.engine.naming.WOBBLE_MIN_FREQUENCY`).  Measured with the engine's
 names (tests/test_sweep_members.py): first weave crossings of the tyre, rider-lean and rider-lean+tyre
 models of perturbed benchmark and Jamis sets at 0.2-1.4 Hz, wobble crossings at 5.2-8.8 Hz."""
 WEAVE_SHARE = 0.4
 """Least share of a crossing pair's participation on the bicycle's states for the batch to name it the
 weave (measured: 0.48-0.95 at the weave crossings of those models)."""
-NEWTON_TOL = 1e-13
-"""Relative step (of ``1 + v``) at which Newton's method has converged."""
+FINAL_STEP = 1e-8
+"""A Newton step smaller than this (relative to ``1 + v``) is the last: Newton's method converges
+quadratically, so the speed after it is exact to rounding (about 1e-16 relative), and the matrix is
+not evaluated at the root itself, where it is singular."""
 
 
 def balance_rows(P):
     """``D^-1 P[k] D`` for each row (B, d + 1, n, n): a diagonal similarity per row (powers of 2,
-    a few sweeps of Osborne's iteration on ``sum_k |P[k]|``) that evens out the scales of the
+    two sweeps of Osborne's iteration on ``sum_k |P[k]|``) that evens out the scales of the
     states; every eigenvalue at every speed is unchanged."""
     S = np.abs(P).sum(axis=1)                                  # (B, n, n)
     B, n = S.shape[0], S.shape[-1]
     d = np.ones((B, n))
     off = ~np.eye(n, dtype=bool)
-    for _ in range(6):
+    for _ in range(2):
         for i in range(n):
             T = S * d[:, None, :] / d[:, :, None]
             c = np.sum(np.where(off[:, i], T[:, :, i], 0.0), axis=1)
@@ -80,27 +84,29 @@ def balance_rows(P):
 
 def characteristic(P):
     """Coefficients ``a`` (B, n + 1, n d + 1) of ``det(s I - A(v)) = sum_j sum_i a[:, j, i] s**j v**i``
-    for ``A(v) = sum_k v**k P[:, k]`` (Faddeev-LeVerrier on matrix polynomials)."""
+    for ``A(v) = sum_k v**k P[:, k]`` (Faddeev-LeVerrier on matrix polynomials: ``M_1 = I``,
+    ``a_(n-k) = -tr(A M_k) / k``, ``M_(k+1) = A M_k + a_(n-k) I``).  ``M_k`` is held wide, its
+    coefficients of ``v**0 .. v**deg`` side by side (B, n, (deg + 1) n), so that each ``P[:, i] M_k``
+    is one batched matrix product."""
     B, d1, n, _ = P.shape
     d = d1 - 1
     a = np.zeros((B, n + 1, n * d + 1))
     a[:, n, 0] = 1.0
-    eye = np.eye(n)
-    M = np.zeros((B, 1, n, n))                             # M_0 = 0
+    Ps = [np.ascontiguousarray(P[:, i]) for i in range(d1)]
+    W = np.broadcast_to(np.eye(n), (B, n, n))              # M_1 = I, degree 0 in v
     for k in range(1, n + 1):
-        # M_k = A M_(k-1) + a_(n-k+1) I   (degree (k - 1) d in v)
-        deg = (k - 1) * d
-        new = np.zeros((B, deg + 1, n, n))
-        if k > 1:
-            for i in range(d1):
-                new[:, i:i + M.shape[1]] += P[:, i:i + 1] @ M
-        new += a[:, n - k + 1, :deg + 1, None, None] * eye
-        M = new
-        # a_(n-k) = -tr(A M_k) / k   (degree k d)
-        tr = np.zeros((B, k * d + 1))
-        for i in range(d1):
-            tr[:, i:i + deg + 1] += np.einsum("bpq,bkqp->bk", P[:, i], M)
-        a[:, n - k, :k * d + 1] = -tr / k
+        deg = W.shape[2] // n - 1
+        AW = np.empty((B, n, (deg + d + 1) * n))
+        np.matmul(Ps[0], W, out=AW[:, :, :(deg + 1) * n])
+        AW[:, :, (deg + 1) * n:] = 0.0
+        for i in range(1, d1):
+            AW[:, :, i * n:(i + deg + 1) * n] += Ps[i] @ W
+        blocks = AW.reshape(B, n, deg + d + 1, n)            # [b, row, power of v, column]
+        a[:, n - k, :deg + d + 1] = -np.trace(blocks, axis1=1, axis2=3) / k
+        if k < n:
+            for j in range(n):
+                blocks[:, j, :, j] += a[:, n - k, :deg + d + 1]
+            W = AW
     return a
 
 
@@ -160,33 +166,36 @@ def _derivative(P, v):
 
 def _solve(A, D):
     """``A^-1 D`` of stacked matrices (``D`` None: ``A^-1``), ``nan`` in the rows where ``A`` is singular
-    (numpy refuses the whole stack for one singular matrix)."""
+    (numpy refuses a whole stack for one singular matrix: the stack is halved until the singular rows
+    are alone)."""
     with np.errstate(all="ignore"):
         try:
             return np.linalg.inv(A) if D is None else np.linalg.solve(A, D)
         except np.linalg.LinAlgError:
-            out = np.full(np.broadcast_shapes(A.shape, A.shape if D is None else D.shape), np.nan, dtype=A.dtype)
-            for i in range(len(A)):
-                try:
-                    out[i] = np.linalg.inv(A[i]) if D is None else np.linalg.solve(A[i], D[i])
-                except np.linalg.LinAlgError:
-                    pass
-            return out
+            if len(A) == 1:
+                return np.full(A.shape if D is None else D.shape, np.nan, dtype=A.dtype)
+    half = len(A) // 2
+    return np.concatenate([_solve(A[:half], None if D is None else D[:half]),
+                           _solve(A[half:], None if D is None else D[half:])])
 
 
-def _illinois(f, a, b, fa, fb, iterations=40, tol=1e-9):
-    """Roots of ``f`` (vectorised) in brackets ``[a, b]`` with ``fa``, ``fb`` of opposite signs."""
+def _illinois(f, a, b, fa, fb, iterations=30, tol=1e-7):
+    """Roots of ``f(rows, x)`` (vectorised over brackets) in brackets ``[a, b]`` with ``fa``, ``fb`` of
+    opposite signs, to ``tol (1 + |x|)``: each iteration evaluates only the brackets still open."""
+    a, b, fa, fb = a.copy(), b.copy(), fa.copy(), fb.copy()
+    active = np.arange(len(a))
     for _ in range(iterations):
+        A, B, FA, FB = a[active], b[active], fa[active], fb[active]
         with np.errstate(all="ignore"):
-            x = np.where(fb != fa, b - fb * (b - a) / (fb - fa), 0.5 * (a + b))
-        x = np.where((x > np.minimum(a, b)) & (x < np.maximum(a, b)), x, 0.5 * (a + b))
-        fx = f(x)
-        same = np.signbit(fx) == np.signbit(fb)
+            x = np.where(FB != FA, B - FB * (B - A) / (FB - FA), 0.5 * (A + B))
+        x = np.where((x > np.minimum(A, B)) & (x < np.maximum(A, B)), x, 0.5 * (A + B))
+        fx = f(active, x)
+        same = np.signbit(fx) == np.signbit(FB)
         # Illinois: halve the retained end's value when the same end is kept twice
-        fa = np.where(same, fa * 0.5, fb)
-        a = np.where(same, a, b)
-        b, fb = x, fx
-        if np.all(np.abs(b - a) <= tol * (1 + np.abs(b))):
+        fa[active], a[active] = np.where(same, FA * 0.5, FB), np.where(same, A, B)
+        b[active], fb[active] = x, fx
+        active = active[(np.abs(x - a[active]) > tol * (1 + np.abs(x))) & (fx != 0)]
+        if not len(active):
             break
     return b
 
@@ -206,7 +215,7 @@ def _newton_real(P, v, steps=4):
         good = np.isfinite(step)
         v[rows] = np.where(good, x - step, x)
         # no step: A(x) singular to working precision (x is the root) or a derivative of zero (a double root)
-        done[rows] = ~good | (np.abs(step) <= 1e-11 * (1 + np.abs(x)))
+        done[rows] = ~good | (np.abs(step) <= FINAL_STEP * (1 + np.abs(x)))
         stuck[rows] = ~good & (g == 0)
     return v, done & ~stuck & np.isfinite(v)
 
@@ -231,7 +240,8 @@ def _newton_pair(P, v, w, steps=6):
         v[rows], w[rows] = np.where(good, x + dv, x), np.where(good, y + dw, y)
         # no step: i w I - A(v) singular to working precision, (v, w) is the root
         singular = ~np.all(np.isfinite(X.reshape(len(rows), -1)), axis=1)
-        done[rows] = (good & (np.abs(dv) <= 1e-11 * (1 + np.abs(x))) & (np.abs(dw) <= 1e-9 * (1 + np.abs(y)))) | singular
+        done[rows] = (good & (np.abs(dv) <= FINAL_STEP * (1 + np.abs(x))) & (np.abs(dw) <= FINAL_STEP * (1 + np.abs(y)))) \
+            | singular
     return v, w, done & np.isfinite(v) & np.isfinite(w)
 
 
@@ -273,7 +283,7 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
     >>> model = bm.Scenario("benchmark", model="tyre").build().model
     >>> out = batch_critical_speeds(np.asarray(model.dynamic_coefficients)[None], model.families, 30.0)
     >>> bool(out["decided"][0]), round(float(out["weave_speed"][0]), 4)
-    (True, 4.3004)
+    (True, 4.3123)
     """
     P = np.asarray(P, dtype=float)
     B, n = P.shape[0], P.shape[-1]
@@ -289,33 +299,36 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
     count_steps = max(2, int(np.ceil(hi / step)))
     grid = np.linspace(0.0, hi, count_steps + 1)
     grid[0] = min(1e-6 * (1 + hi), 0.5 * grid[1])
-    V = np.broadcast_to(grid, (B, len(grid)))
-    c = at_speeds(a, V)                                  # (B, G, n + 1)
+    powers = grid[:, None] ** np.arange(a.shape[2])             # (G, D + 1): the grid as one matrix product
+    c = np.swapaxes(a @ powers.T, 1, 2)                         # (B, G, n + 1)
     _, H, _ = routh(c)
     a0 = c[..., 0]
     decided &= np.all(np.isfinite(H), axis=1) & np.all(np.isfinite(a0), axis=1)
-    crossings = []                                   # (row, speed, kind, w, share) of each refined crossing
+    crossings = []                                   # (rows, speeds, kinds) of the refined crossings
+    functions = {"real": lambda rows, x: at_speeds(a[rows], x)[..., 0],
+                 "pair": lambda rows, x: routh(at_speeds(a[rows], x))[1]}
     for kind, f in (("real", a0), ("pair", H)):
-        decided &= ~_dips(f)
         sign = np.signbit(f)
         rows, cells = np.nonzero(sign[:, 1:] != sign[:, :-1])
-        if kind == "real":
-            decided[rows[(f[rows, cells] == 0) | (f[rows, cells + 1] == 0)]] = False
-        keep = decided[rows]
-        rows, cells = rows[keep], cells[keep]
-        if not len(rows):
-            continue
+        decided[rows[(f[rows, cells] == 0) | (f[rows, cells + 1] == 0)]] = False
         lo, hi_ = grid[cells], grid[cells + 1]
         flo, fhi = f[rows, cells], f[rows, cells + 1]
+        extra = _split_dips(f, grid, functions[kind], decided)
+        if extra is not None:
+            rows, lo, hi_, flo, fhi = (np.concatenate([x, y]) for x, y in zip((rows, lo, hi_, flo, fhi), extra))
+        keep = decided[rows]
+        rows, lo, hi_, flo, fhi = rows[keep], lo[keep], hi_[keep], flo[keep], fhi[keep]
+        if not len(rows):
+            continue
         arow = a[rows]
         if kind == "real":
-            x = _illinois(lambda x: at_speeds(arow, x)[..., 0], lo, hi_, flo, fhi)
+            x = _illinois(lambda i, x: at_speeds(arow[i], x)[..., 0], lo, hi_, flo, fhi)
             x, ok = _newton_real(Pb[rows], x)
             ok &= (x > lo - 1e-6) & (x < hi_ + 1e-6)
             decided[rows[~ok]] = False
-            crossings += [(r, s, 0, 0.0) for r, s in zip(rows[ok].tolist(), x[ok].tolist())]
+            crossings.append((rows[ok], x[ok], np.zeros(int(ok.sum()), dtype=int)))
         else:
-            x = _illinois(lambda x: routh(at_speeds(arow, x))[1], lo, hi_, flo, fhi)
+            x = _illinois(lambda i, x: routh(at_speeds(arow[i], x))[1], lo, hi_, flo, fhi)
             _, _, w2 = routh(at_speeds(arow, x))
             real_pair = w2 <= 0
             rows, x, w2, lo, hi_ = rows[~real_pair], x[~real_pair], w2[~real_pair], lo[~real_pair], hi_[~real_pair]
@@ -326,73 +339,109 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
             decided[rows[~ok]] = False
             share = _share(Pb[rows], v, w, bicycle)
             name = np.where((w < WEAVE_MAX_FREQUENCY) & (share >= WEAVE_SHARE), 1, 3)    # 3: not named
-            crossings += [(r, s, k, ww) for r, s, k, ww, good in
-                          zip(rows.tolist(), v.tolist(), name.tolist(), w.tolist(), ok.tolist()) if good]
+            crossings.append((rows[ok], v[ok], name[ok]))
     _assemble(out, decided, crossings, a, hi, B)
     out["decided"] = decided
     return out
 
 
-def _dips(f):
-    """Rows (B,) where ``|f|`` on the grid has a local minimum whose parabola through it and its two
-    neighbours reaches zero without ``f`` changing sign there: two crossings inside a grid step may
-    hide in it."""
-    s = np.where(np.signbit(f), -1.0, 1.0)
+GOLDEN = 0.5 * (3 - np.sqrt(5))
+DIP = 0.5
+"""A grid speed where ``|f|`` is a local minimum below DIP times its larger neighbour, without a sign
+change around it, is searched for a hidden pair of crossings."""
+AMBIGUOUS = 1e-9
+"""A dip's least ``|f|`` below this fraction of its neighbours' leaves the row undecided (a crossing
+that only touches, or two too close to tell apart in the polynomial's rounding)."""
+
+
+def _split_dips(f, grid, function, decided, iterations=48):
+    """The brackets ``(rows, lo, hi, flo, fhi)`` of pairs of crossings hidden between grid speeds:
+    at every dip of ``|f|`` (:data:`DIP`) the least ``s f`` (``s`` the sign around it) is found by a
+    golden-section search of ``function(rows, speeds)`` on the two grid steps around it; where it is
+    of the other sign the dip holds two crossings, one on each side of it.  Rows whose dip's least
+    value is too close to zero to tell (:data:`AMBIGUOUS`) are marked undecided.  ``None`` if no dip."""
     g = np.abs(f)
     left, mid, right = g[:, :-2], g[:, 1:-1], g[:, 2:]
-    same = (s[:, :-2] == s[:, 1:-1]) & (s[:, 1:-1] == s[:, 2:])
-    local = same & (mid <= left) & (mid <= right)
-    curv = left + right - 2 * mid
-    with np.errstate(all="ignore"):
-        lowest = mid - (right - left) ** 2 / (8 * curv)
-    suspect = local & ((curv <= 0) | (lowest <= 0.05 * mid) | ~np.isfinite(lowest))
-    # a dip down to a tiny fraction of the curve's scale without a sign change
-    return np.any(suspect & (mid < 0.2 * np.maximum(left, right)), axis=1)
+    sign = np.signbit(f)
+    same = (sign[:, :-2] == sign[:, 1:-1]) & (sign[:, 1:-1] == sign[:, 2:])
+    rows, k = np.nonzero(same & (mid <= left) & (mid <= right) & (mid < DIP * np.maximum(left, right)))
+    if not len(rows):
+        return None
+    s = np.where(sign[rows, k + 1], -1.0, 1.0)
+    a, b = grid[k], grid[k + 2]
+    x1, x2 = a + GOLDEN * (b - a), b - GOLDEN * (b - a)
+    f1, f2 = s * function(rows, x1), s * function(rows, x2)
+    for _ in range(iterations):
+        lower = f1 < f2
+        b = np.where(lower, x2, b)
+        a = np.where(lower, a, x1)
+        x1, x2 = np.where(lower, a + GOLDEN * (b - a), x2), np.where(lower, x1, b - GOLDEN * (b - a))
+        new = s * function(rows, np.where(lower, x1, x2))
+        f1, f2 = np.where(lower, new, f2), np.where(lower, f1, new)
+    x = np.where(f1 < f2, x1, x2)
+    least = np.minimum(f1, f2)
+    scale = np.maximum(left[rows, k], right[rows, k])
+    unclear = np.abs(least) <= AMBIGUOUS * scale
+    decided[rows[unclear]] = False
+    two = (least < 0) & ~unclear
+    rows, k, x, s, least = rows[two], k[two], x[two], s[two], least[two]
+    fx = s * least
+    return (np.concatenate([rows, rows]), np.concatenate([grid[k], x]), np.concatenate([x, grid[k + 2]]),
+            np.concatenate([f[rows, k], fx]), np.concatenate([fx, f[rows, k + 2]]))
 
 
 def _assemble(out, decided, crossings, a, hi, B):
-    """Fill ``out``'s rows from their refined crossings: counts at the midpoints give the stable ranges."""
-    by_row = {}
-    for r, s, k, w in crossings:
-        by_row.setdefault(r, []).append((s, k))
-    rows = np.flatnonzero(decided)
-    width = 1 + max((len(by_row.get(r, ())) for r in rows.tolist()), default=0)
-    ends = np.full((len(rows), width + 1), hi)
+    """Fill ``out``'s decided rows from their refined crossings ``[(rows, speeds, kinds)]`` (kind 0
+    real, 1 the weave, 3 a pair not named): the first weave and real crossings, and the first stable
+    range from Routh counts at the midpoints between crossings (as the engine counts there)."""
+    if crossings:
+        rows, speeds, kinds = (np.concatenate(x) for x in zip(*crossings))
+    else:
+        rows, speeds, kinds = np.empty(0, dtype=int), np.empty(0), np.empty(0, dtype=int)
+    keep = decided[rows]
+    rows, speeds, kinds = rows[keep], speeds[keep], kinds[keep]
+    order = np.lexsort((speeds, rows))
+    rows, speeds, kinds = rows[order], speeds[order], kinds[order]
+    starts = np.searchsorted(rows, np.arange(B))
+    rank = np.arange(len(rows)) - starts[rows]                   # each crossing's place in its row
+    # the first pair of a row that is the weave or not named: a row whose first such pair is not named is undecided
+    pairs = kinds != 0
+    first_pair = np.full(B, len(rows))
+    np.minimum.at(first_pair, rows[pairs], np.flatnonzero(pairs))
+    has_pair = first_pair < len(rows)
+    which = np.flatnonzero(has_pair)
+    unnamed = kinds[first_pair[which]] == 3
+    decided[which[unnamed]] = False
+    named = which[~unnamed]
+    out["weave_speed"][named] = speeds[first_pair[named]]
+    first_real = np.full(B, len(rows))
+    np.minimum.at(first_real, rows[~pairs], np.flatnonzero(~pairs))
+    real = np.flatnonzero(first_real < len(rows))
+    out["capsize_speed"][real] = speeds[first_real[real]]
+    # ends of the intervals between crossings, lo = 0 and hi, and the count of unstable roots inside each
+    width = 1 + (int(np.max(rank)) + 1 if len(rank) else 0)
+    ends = np.full((B, width + 1), float(hi))
     ends[:, 0] = 0.0
-    for i, r in enumerate(rows.tolist()):
-        found = sorted(by_row.get(r, ()))
-        for j, (s, k) in enumerate(found):
-            ends[i, j + 1] = s
-        first = next(((s, k) for s, k in found if k in (1, 3)), None)     # the first pair not named other
-        if first is not None and first[1] == 3:
-            decided[r] = False                      # a pair before the first weave that could not be named
-            continue
-        if first is not None:
-            out["weave_speed"][r] = first[0]
-        capsize = [s for s, k in found if k == 0]
-        if capsize:
-            out["capsize_speed"][r] = capsize[0]
+    ends[rows, rank + 1] = speeds
     mids = 0.5 * (ends[:, 1:] + ends[:, :-1])
-    count, _, _ = routh(at_speeds(a[rows], mids))
+    live = np.flatnonzero(decided)
+    count = np.full((B, width), -1)
+    if len(live):
+        count[live] = routh(at_speeds(a[live], mids[live]))[0]
     empty = ends[:, 1:] <= ends[:, :-1]
-    for i, r in enumerate(rows.tolist()):
-        if not decided[r]:
-            continue
-        if np.any((count[i] < 0) & ~empty[i]):
-            decided[r] = False
-            continue
-        span = None
-        for j in range(width):
-            if empty[i, j]:
-                continue
-            if count[i, j] == 0:
-                if span is None:
-                    span = [ends[i, j], ends[i, j + 1]]
-                elif span[1] == ends[i, j]:
-                    span[1] = ends[i, j + 1]
-                else:
-                    break
-            elif span is not None:
-                break
-        if span is not None:
-            out["stable_from"][r], out["stable_to"][r] = span
+    decided &= ~np.any((count < 0) & ~empty, axis=1)
+    stable = (count == 0) & ~empty
+    # the first stable interval, merged with the stable ones that follow it without a gap
+    has = stable.any(axis=1) & decided
+    first = np.argmax(stable, axis=1)
+    idx = np.arange(width)[None, :]
+    after = idx >= first[:, None]
+    # an interval ends the range at the first later interval that is neither stable nor empty
+    stop_mask = after & ~stable & ~empty
+    last = np.where(stop_mask.any(axis=1), np.argmax(stop_mask, axis=1), width)
+    # the range's end: the end of the last stable interval before ``last``
+    covered = after & (idx < last[:, None]) & stable
+    end_at = width - 1 - np.argmax(covered[:, ::-1], axis=1)
+    r = np.flatnonzero(has)
+    out["stable_from"][r] = ends[r, first[r]]
+    out["stable_to"][r] = ends[r, end_at[r] + 1]
