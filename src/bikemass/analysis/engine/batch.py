@@ -47,7 +47,7 @@ import numpy as np
 
 from .naming import BICYCLE, WOBBLE_MIN_FREQUENCY
 
-GRID_STEP = 0.25
+GRID_STEP = 0.5
 """Speed step (m/s) of the grid on which crossings are bracketed."""
 WEAVE_MAX_FREQUENCY = WOBBLE_MIN_FREQUENCY
 """Highest frequency (rad/s, 3 Hz) of a crossing pair the batch names the weave: the engine names no pair
@@ -221,10 +221,13 @@ def _newton_real(P, v, steps=4):
 
 
 def _newton_pair(P, v, w, steps=6):
-    """``(v, w, converged)``: Newton's method on ``det(i w I - A(v)) = 0`` in ``(v, w)`` (log-derivatives)."""
+    """``(v, w, converged, diagonal)``: Newton's method on ``det(i w I - A(v)) = 0`` in ``(v, w)``
+    (log-derivatives), and ``|diag((i w I - A(v))^-1)|`` (K, n) at each row's last iterate, next to the
+    root: proportional to the participation factors ``|x_k y_k|`` of the pair (``nan`` where not found)."""
     v, w = v.copy(), w.copy()
     eye = np.eye(P.shape[-1])
     done = np.zeros(len(v), dtype=bool)
+    diagonal = np.full((len(v), P.shape[-1]), np.nan)
     for _ in range(steps):
         rows = np.flatnonzero(~done)
         if not len(rows):
@@ -237,22 +240,26 @@ def _newton_pair(P, v, w, steps=6):
             det = gv.real * gw.imag - gv.imag * gw.real               # gv dv + gw dw = -1, dv and dw real
             dv, dw = -gw.imag / det, gv.imag / det
         good = np.isfinite(dv) & np.isfinite(dw)
+        diagonal[rows] = np.abs(np.diagonal(X, axis1=1, axis2=2))
         v[rows], w[rows] = np.where(good, x + dv, x), np.where(good, y + dw, y)
         # no step: i w I - A(v) singular to working precision, (v, w) is the root
         singular = ~np.all(np.isfinite(X.reshape(len(rows), -1)), axis=1)
         done[rows] = (good & (np.abs(dv) <= FINAL_STEP * (1 + np.abs(x))) & (np.abs(dw) <= FINAL_STEP * (1 + np.abs(y)))) \
             | singular
-    return v, w, done & np.isfinite(v) & np.isfinite(w)
+    return v, w, done & np.isfinite(v) & np.isfinite(w), diagonal
 
 
-def _share(P, v, w, bicycle):
+def _share(P, v, w, bicycle, diagonal):
     """The participation of the bicycle's states (indices ``bicycle``) in the pair ``i w`` of ``A(v)``:
-    ``|x_k y_k|`` summed, from the diagonal of ``(i w' I - A(v))^-1`` just off the root."""
-    n = P.shape[-1]
-    M = 1j * (w * (1 + 1e-7))[:, None, None] * np.eye(n) - _matrix(P, v)
-    X = _solve(M, None)
-    p = np.abs(np.diagonal(X, axis1=1, axis2=2))
-    return p[:, list(bicycle)].sum(axis=1) / p.sum(axis=1)
+    ``|x_k y_k|`` summed, from the diagonal of ``(i w I - A(v))^-1`` next to the root (Newton's last
+    iterate's, or where that was singular, at ``w (1 + 1e-7)``)."""
+    again = ~np.all(np.isfinite(diagonal), axis=1)
+    if again.any():
+        n = P.shape[-1]
+        M = 1j * (w[again] * (1 + 1e-7))[:, None, None] * np.eye(n) - _matrix(P[again], v[again])
+        diagonal = diagonal.copy()
+        diagonal[again] = np.abs(np.diagonal(_solve(M, None), axis1=1, axis2=2))
+    return diagonal[:, list(bicycle)].sum(axis=1) / diagonal.sum(axis=1)
 
 
 def batch_critical_speeds(P, families, hi, step=GRID_STEP):
@@ -334,10 +341,10 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
             rows, x, w2, lo, hi_ = rows[~real_pair], x[~real_pair], w2[~real_pair], lo[~real_pair], hi_[~real_pair]
             if not len(rows):
                 continue
-            v, w, ok = _newton_pair(Pb[rows], x, np.sqrt(w2))
+            v, w, ok, diagonal = _newton_pair(Pb[rows], x, np.sqrt(w2))
             ok &= (v > lo - 1e-6) & (v < hi_ + 1e-6) & (w > 0)
             decided[rows[~ok]] = False
-            share = _share(Pb[rows], v, w, bicycle)
+            share = _share(Pb[rows], v, w, bicycle, diagonal)
             name = np.where((w < WEAVE_MAX_FREQUENCY) & (share >= WEAVE_SHARE), 1, 3)    # 3: not named
             crossings.append((rows[ok], v[ok], name[ok]))
     _assemble(out, decided, crossings, a, hi, B)
