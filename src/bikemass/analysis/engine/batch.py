@@ -27,7 +27,9 @@ row, the numbers a sweep's row holds: the first crossing of the weave, the first
    Routh's auxiliary polynomial.  A bracket of ``H_(n-1)`` whose auxiliary ``w**2`` is negative
    is a real pair ``l, -l`` (no root on the axis) and is dropped, as the engine drops it.
 4. **Counts between crossings** (Routh's array at each midpoint, as the engine counts eigenvalues
-   there) give the stable ranges.
+   there) give the stable ranges.  Only the crossings that can change a row's numbers are refined:
+   each kind's first, and every one before the grid's first stable run ends (the rest, a wobble at
+   25 m/s, when the first weave crossing is among those refined).
 5. **Naming a pair.**  The engine names a crossing by the tracked mode it continues; a batch does
    not follow modes, so it names only what is unambiguous: a pair slower than
    :data:`WEAVE_MAX_FREQUENCY` (3 Hz) with at least :data:`WEAVE_SHARE` of its participation factors
@@ -262,6 +264,26 @@ def _share(P, v, w, bicycle, diagonal):
     return diagonal[:, list(bicycle)].sum(axis=1) / diagonal.sum(axis=1)
 
 
+def _pairs(a, Pb, rows, lo, hi, flo, fhi, bicycle, decided):
+    """``(rows, speeds, kinds)`` of the pair crossings in brackets ``[lo, hi]`` of ``H_(n-1)`` (kind 1 the
+    weave, 3 not named; a bracket of a real pair ``l, -l`` dropped); rows whose refinement fails are
+    marked undecided."""
+    if not len(rows):
+        return rows, lo, np.zeros(0, dtype=int)
+    x = _illinois(lambda i, x: routh(at_speeds(a[rows[i]], x))[1], lo, hi, flo, fhi)
+    _, _, w2 = routh(at_speeds(a[rows], x))
+    pair = w2 > 0
+    rows, x, w2, lo, hi = rows[pair], x[pair], w2[pair], lo[pair], hi[pair]
+    if not len(rows):
+        return rows, lo, np.zeros(0, dtype=int)
+    v, w, ok, diagonal = _newton_pair(Pb[rows], x, np.sqrt(w2))
+    ok &= (v > lo - 1e-6) & (v < hi + 1e-6) & (w > 0)
+    decided[rows[~ok]] = False
+    share = _share(Pb[rows], v, w, bicycle, diagonal)
+    name = np.where((w < WEAVE_MAX_FREQUENCY) & (share >= WEAVE_SHARE), 1, 3)    # 3: not named
+    return rows[ok], v[ok], name[ok]
+
+
 def batch_critical_speeds(P, families, hi, step=GRID_STEP):
     """The critical speeds of B configurations at once (see the module docstring).
 
@@ -308,45 +330,58 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
     grid[0] = min(1e-6 * (1 + hi), 0.5 * grid[1])
     powers = grid[:, None] ** np.arange(a.shape[2])             # (G, D + 1): the grid as one matrix product
     c = np.swapaxes(a @ powers.T, 1, 2)                         # (B, G, n + 1)
-    _, H, _ = routh(c)
+    count, H, _ = routh(c)
     a0 = c[..., 0]
     decided &= np.all(np.isfinite(H), axis=1) & np.all(np.isfinite(a0), axis=1)
+    # the grid's first stable run [z, e): a crossing in a cell at or after e changes none of the row's
+    # numbers once its first weave and real crossings are found (where no grid speed is stable, every one may)
+    stable = count == 0
+    z = np.where(stable.any(axis=1), np.argmax(stable, axis=1), len(grid))
+    after = ~stable & (np.arange(len(grid))[None, :] > z[:, None])
+    e = np.where(after.any(axis=1), np.argmax(after, axis=1), len(grid))
     crossings = []                                   # (rows, speeds, kinds) of the refined crossings
     functions = {"real": lambda rows, x: at_speeds(a[rows], x)[..., 0],
                  "pair": lambda rows, x: routh(at_speeds(a[rows], x))[1]}
+    skipped = np.zeros(B, dtype=bool)
     for kind, f in (("real", a0), ("pair", H)):
         sign = np.signbit(f)
         rows, cells = np.nonzero(sign[:, 1:] != sign[:, :-1])
         decided[rows[(f[rows, cells] == 0) | (f[rows, cells + 1] == 0)]] = False
         lo, hi_ = grid[cells], grid[cells + 1]
         flo, fhi = f[rows, cells], f[rows, cells + 1]
+        first = np.r_[True, rows[1:] != rows[:-1]]             # each row's first bracket of this kind
+        later = ~first & (cells + 1 > e[rows])
         extra = _split_dips(f, grid, functions[kind], decided)
         if extra is not None:
             rows, lo, hi_, flo, fhi = (np.concatenate([x, y]) for x, y in zip((rows, lo, hi_, flo, fhi), extra))
+            dipped = np.zeros(B, dtype=bool)
+            dipped[extra[0]] = True
+            later = np.r_[later, np.zeros(len(extra[0]), dtype=bool)] & ~dipped[rows]     # such a row: every one
         keep = decided[rows]
-        rows, lo, hi_, flo, fhi = rows[keep], lo[keep], hi_[keep], flo[keep], fhi[keep]
-        if not len(rows):
-            continue
-        arow = a[rows]
+        rows, lo, hi_, flo, fhi, later = rows[keep], lo[keep], hi_[keep], flo[keep], fhi[keep], later[keep]
         if kind == "real":
-            x = _illinois(lambda i, x: at_speeds(arow[i], x)[..., 0], lo, hi_, flo, fhi)
-            x, ok = _newton_real(Pb[rows], x)
-            ok &= (x > lo - 1e-6) & (x < hi_ + 1e-6)
-            decided[rows[~ok]] = False
-            crossings.append((rows[ok], x[ok], np.zeros(int(ok.sum()), dtype=int)))
-        else:
-            x = _illinois(lambda i, x: routh(at_speeds(arow[i], x))[1], lo, hi_, flo, fhi)
-            _, _, w2 = routh(at_speeds(arow, x))
-            real_pair = w2 <= 0
-            rows, x, w2, lo, hi_ = rows[~real_pair], x[~real_pair], w2[~real_pair], lo[~real_pair], hi_[~real_pair]
-            if not len(rows):
-                continue
-            v, w, ok, diagonal = _newton_pair(Pb[rows], x, np.sqrt(w2))
-            ok &= (v > lo - 1e-6) & (v < hi_ + 1e-6) & (w > 0)
-            decided[rows[~ok]] = False
-            share = _share(Pb[rows], v, w, bicycle, diagonal)
-            name = np.where((w < WEAVE_MAX_FREQUENCY) & (share >= WEAVE_SHARE), 1, 3)    # 3: not named
-            crossings.append((rows[ok], v[ok], name[ok]))
+            skipped[rows[later]] = True
+            now = ~later
+            x = _illinois(lambda i, x: at_speeds(a[rows[now][i]], x)[..., 0], lo[now], hi_[now], flo[now], fhi[now])
+            x, ok = _newton_real(Pb[rows[now]], x)
+            ok &= (x > lo[now] - 1e-6) & (x < hi_[now] + 1e-6)
+            decided[rows[now][~ok]] = False
+            crossings.append((rows[now][ok], x[ok], np.zeros(int(ok.sum()), dtype=int)))
+            continue
+        found = _pairs(a, Pb, rows[~later], lo[~later], hi_[~later], flo[~later], fhi[~later], bicycle, decided)
+        crossings.append(found)
+        # a row whose first weave is not among the pairs refined has the rest refined too
+        named = np.zeros(B, dtype=bool)
+        named[found[0][found[2] != 0]] = True
+        again = later & ~named[rows]
+        skipped[rows[later & ~again]] = True
+        if again.any():
+            crossings.append(_pairs(a, Pb, rows[again], lo[again], hi_[again], flo[again], fhi[again], bicycle,
+                                    decided))
+    # a row with crossings left out gets the grid speed e as an end (no crossing): the count between its last
+    # crossing and e is that of the grid speed e, not stable, so the first stable range ends where it does
+    rows = np.flatnonzero(skipped & (e < len(grid)))
+    crossings.append((rows, grid[e[rows]], np.full(len(rows), -1)))
     _assemble(out, decided, crossings, a, hi, B)
     out["decided"] = decided
     return out
@@ -399,7 +434,7 @@ def _split_dips(f, grid, function, decided, iterations=48):
 
 def _assemble(out, decided, crossings, a, hi, B):
     """Fill ``out``'s decided rows from their refined crossings ``[(rows, speeds, kinds)]`` (kind 0
-    real, 1 the weave, 3 a pair not named): the first weave and real crossings, and the first stable
+    real, 1 the weave, 3 a pair not named, -1 an end of an interval that is no crossing): the first weave and real crossings, and the first stable
     range from Routh counts at the midpoints between crossings (as the engine counts there)."""
     if crossings:
         rows, speeds, kinds = (np.concatenate(x) for x in zip(*crossings))
@@ -412,7 +447,7 @@ def _assemble(out, decided, crossings, a, hi, B):
     starts = np.searchsorted(rows, np.arange(B))
     rank = np.arange(len(rows)) - starts[rows]                   # each crossing's place in its row
     # the first pair of a row that is the weave or not named: a row whose first such pair is not named is undecided
-    pairs = kinds != 0
+    pairs = (kinds == 1) | (kinds == 3)                          # kind -1: an end that is no crossing
     first_pair = np.full(B, len(rows))
     np.minimum.at(first_pair, rows[pairs], np.flatnonzero(pairs))
     has_pair = first_pair < len(rows)
@@ -422,7 +457,7 @@ def _assemble(out, decided, crossings, a, hi, B):
     named = which[~unnamed]
     out["weave_speed"][named] = speeds[first_pair[named]]
     first_real = np.full(B, len(rows))
-    np.minimum.at(first_real, rows[~pairs], np.flatnonzero(~pairs))
+    np.minimum.at(first_real, rows[kinds == 0], np.flatnonzero(kinds == 0))
     real = np.flatnonzero(first_real < len(rows))
     out["capsize_speed"][real] = speeds[first_real[real]]
     # ends of the intervals between crossings, lo = 0 and hi, and the count of unstable roots inside each
