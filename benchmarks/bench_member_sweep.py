@@ -56,14 +56,17 @@ def marginal(folder, model, small, large, repeat):
 
 
 def counting_reference():
-    """Wrap the member path's reference so that its calls (undecided rows) are counted."""
-    calls = [0]
+    """Wrap the member path's reference so that its calls (undecided rows) are counted: ``[calls, CPU s]``."""
+    calls = [0, 0.0]
     original = members_module.evaluate_member_batch
 
     def counted(scenario, changes, count, max_speed, reference):
         def ref(config):
+            start = time.process_time()
+            row = reference(config)
             calls[0] += 1
-            return reference(config)
+            calls[1] += time.process_time() - start
+            return row
         return original(scenario, changes, count, max_speed, ref)
     members_module.evaluate_member_batch = counted
     return calls
@@ -83,7 +86,9 @@ def main():
         member, count = marginal(folder, args.model, (20, 25), (41, 100), args.repeat)
         one_run = calls[0] / args.repeat
         print(f"{args.model}: {member:.2f} us of CPU a configuration (marginal, {count[0]:,} -> {count[1]:,}); "
-              f"{one_run:.0f} of {count[0] + count[1]:,} rows a run through the engine")
+              f"{one_run:.0f} of {count[0] + count[1]:,} rows a run through the engine, "
+              f"{1e3 * calls[1] / max(calls[0], 1):.1f} ms each ({1e6 * calls[1] / args.repeat / sum(count):.1f} us "
+              f"a configuration on average)")
         print(f"ratio {args.model} / whipple: {member / whipple:.2f} (issue 32: at most 10)")
         if args.before:
             evaluate_module.evaluate_member_columns = _one_by_one

@@ -34,9 +34,12 @@ row, the numbers a sweep's row holds: the first crossing of the weave, the first
    not follow modes, so it names only what is unambiguous: a pair slower than
    :data:`WEAVE_MAX_FREQUENCY` (3 Hz) with at least :data:`WEAVE_SHARE` of its participation factors
    ``|x_k y_k|`` (right and left null vectors of ``i w I - A(v)``: the diagonal of its inverse near
-   the root) on the bicycle's states is the weave.  Any other pair before a row's first weave
-   crossing leaves the row undecided (the wobble crosses at 5-9 Hz, and a weave crossing at high
-   speed may reach 5 Hz: only the modes followed from standstill tell them apart there).
+   the root) on the bicycle's states is the weave; so is a faster pair with that share that is the
+   slowest oscillation of ``A(v)`` there while a faster one lies in the wobble band (the weave is the
+   slower of the two wherever both oscillate: the eigenvalues of ``A(v)`` at that one speed).  Any
+   other pair before a row's first weave crossing leaves the row undecided (the wobble crosses at
+   3.7-9 Hz, and a weave crossing at high speed may reach 5 Hz: only the modes followed from
+   standstill tell them apart there).
 
 A row is **decided** only when every step is clean: every Routh array finite, every refinement
 converged, no dip of ``|a_0|`` or ``|H_(n-1)|`` whose least value is too near zero to tell whether
@@ -47,7 +50,7 @@ path is tested against (tests/test_sweep_members.py: rows equal to 1e-9 m/s).
 
 import numpy as np
 
-from .naming import BICYCLE, WOBBLE_MIN_FREQUENCY
+from .naming import BICYCLE, WOBBLE_MAX_FREQUENCY, WOBBLE_MIN_FREQUENCY
 
 GRID_STEP = 0.5
 """Speed step (m/s) of the grid on which crossings are bracketed."""
@@ -281,7 +284,24 @@ def _pairs(a, Pb, rows, lo, hi, flo, fhi, bicycle, decided):
     decided[rows[~ok]] = False
     share = _share(Pb[rows], v, w, bicycle, diagonal)
     name = np.where((w < WEAVE_MAX_FREQUENCY) & (share >= WEAVE_SHARE), 1, 3)    # 3: not named
+    fast = np.flatnonzero((name == 3) & ok & (share >= WEAVE_SHARE))
+    if len(fast):
+        name[fast[_slowest_of_two(Pb[rows[fast]], v[fast], w[fast])]] = 1
     return rows[ok], v[ok], name[ok]
+
+
+def _slowest_of_two(P, v, w):
+    """Whether the pair ``i w`` on the axis at ``v`` is the slowest oscillation of ``A(v)`` while a faster
+    one lies in the wobble band (:data:`~bikemass.analysis.engine.naming.WOBBLE_MIN_FREQUENCY` to
+    :data:`~bikemass.analysis.engine.naming.WOBBLE_MAX_FREQUENCY`): then the weave, which is slower than
+    the wobble wherever both oscillate, is the pair itself (K,) bool."""
+    roots = np.linalg.eigvals(_matrix(P, v))
+    upper = roots.imag > 1e-6 * (1 + np.abs(roots))
+    own = np.abs(roots - 1j * w[:, None]) <= 1e-6 * (1 + w[:, None])
+    others = upper & ~own
+    slowest = ~np.any(others & (roots.imag <= w[:, None]), axis=1) & (own.sum(axis=1) == 1)
+    band = others & (roots.imag >= WOBBLE_MIN_FREQUENCY) & (roots.imag <= WOBBLE_MAX_FREQUENCY)
+    return slowest & band.any(axis=1)
 
 
 def batch_critical_speeds(P, families, hi, step=GRID_STEP):
