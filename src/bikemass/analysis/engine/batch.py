@@ -267,7 +267,15 @@ def _share(P, v, w, bicycle, diagonal):
     return diagonal[:, list(bicycle)].sum(axis=1) / diagonal.sum(axis=1)
 
 
-def _pairs(a, Pb, rows, lo, hi, flo, fhi, bicycle, decided):
+def _at_start(lo, v, ok, start):
+    """Brackets of the grid's first cell (from ``start``) whose crossing is at the first grid speed or
+    below it, or not found: the roots of an undamped model at standstill (on the axis at ``v = 0``,
+    their real parts growing with ``v``), whose signs at the first grid speed are rounding.  The engine
+    puts such a root at the span's start, where it is no crossing; so does the batch."""
+    return (lo == start) & (~ok | (v <= 2 * start))
+
+
+def _pairs(a, Pb, rows, lo, hi, flo, fhi, bicycle, decided, start):
     """``(rows, speeds, kinds)`` of the pair crossings in brackets ``[lo, hi]`` of ``H_(n-1)`` (kind 1 the
     weave, 3 not named; a bracket of a real pair ``l, -l`` dropped); rows whose refinement fails are
     marked undecided."""
@@ -281,7 +289,9 @@ def _pairs(a, Pb, rows, lo, hi, flo, fhi, bicycle, decided):
         return rows, lo, np.zeros(0, dtype=int)
     v, w, ok, diagonal = _newton_pair(Pb[rows], x, np.sqrt(w2))
     ok &= (v > lo - 1e-6) & (v < hi + 1e-6) & (w > 0)
-    decided[rows[~ok]] = False
+    at_start = _at_start(lo, v, ok, start)
+    decided[rows[~ok & ~at_start]] = False
+    ok &= ~at_start
     share = _share(Pb[rows], v, w, bicycle, diagonal)
     name = np.where((w < WEAVE_MAX_FREQUENCY) & (share >= WEAVE_SHARE), 1, 3)    # 3: not named
     fast = np.flatnonzero((name == 3) & ok & (share >= WEAVE_SHARE))
@@ -385,10 +395,13 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
             x = _illinois(lambda i, x: at_speeds(a[rows[now][i]], x)[..., 0], lo[now], hi_[now], flo[now], fhi[now])
             x, ok = _newton_real(Pb[rows[now]], x)
             ok &= (x > lo[now] - 1e-6) & (x < hi_[now] + 1e-6)
-            decided[rows[now][~ok]] = False
+            at_start = _at_start(lo[now], x, ok, grid[0])
+            decided[rows[now][~ok & ~at_start]] = False
+            ok &= ~at_start
             crossings.append((rows[now][ok], x[ok], np.zeros(int(ok.sum()), dtype=int)))
             continue
-        found = _pairs(a, Pb, rows[~later], lo[~later], hi_[~later], flo[~later], fhi[~later], bicycle, decided)
+        found = _pairs(a, Pb, rows[~later], lo[~later], hi_[~later], flo[~later], fhi[~later], bicycle, decided,
+                       grid[0])
         crossings.append(found)
         # a row whose first weave is not among the pairs refined has the rest refined too
         named = np.zeros(B, dtype=bool)
@@ -397,7 +410,7 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
         skipped[rows[later & ~again]] = True
         if again.any():
             crossings.append(_pairs(a, Pb, rows[again], lo[again], hi_[again], flo[again], fhi[again], bicycle,
-                                    decided))
+                                    decided, grid[0]))
     # a row with crossings left out gets the grid speed e as an end (no crossing): the count between its last
     # crossing and e is that of the grid speed e, not stable, so the first stable range ends where it does
     rows = np.flatnonzero(skipped & (e < len(grid)))
