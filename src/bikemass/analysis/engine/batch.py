@@ -447,6 +447,8 @@ def _split_dips(f, grid, function, decided, iterations=48):
     x1, x2 = a + GOLDEN * (b - a), b - GOLDEN * (b - a)
     f1, f2 = s * function(rows, x1), s * function(rows, x2)
     for _ in range(iterations):
+        if np.all((np.minimum(f1, f2) < 0) | (b - a <= 1e-9 * (1 + b))):
+            break                                   # every dip crosses, or is found to 1e-9
         lower = f1 < f2
         b = np.where(lower, x2, b)
         a = np.where(lower, a, x1)
