@@ -83,7 +83,7 @@ def main():
         whipple, _ = marginal(folder, "whipple", (100, 100), (200, 500), args.repeat)
         print(f"whipple: {whipple:.2f} us of CPU a configuration (marginal, 10,000 -> 100,000)")
         calls = counting_reference()
-        member, count = marginal(folder, args.model, (20, 25), (41, 100), args.repeat)
+        member, count = marginal(folder, args.model, (40, 50), (100, 200), args.repeat)
         one_run = calls[0] / args.repeat
         print(f"{args.model}: {member:.2f} us of CPU a configuration (marginal, {count[0]:,} -> {count[1]:,}); "
               f"{one_run:.0f} of {count[0] + count[1]:,} rows a run through the engine, "
