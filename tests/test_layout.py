@@ -268,6 +268,8 @@ INVERSES = {
     "bikemass.analysis.engine.polynomial": "a speed polynomial made monic after a Moebius shift: no state matrix",
     "bikemass.analysis.engine.crossings": "the quasi-steady fast states of a state matrix whose roots are 1e8 apart "
                                           "(separated_eigenvalues), to verify its crossings",
+    "bikemass.analysis.engine.batch": "Newton's method on det A(v) and det(i w I - A(v)) (log-derivatives: "
+                                      "traces of their inverses) and participation factors: no state matrix",
     "bikemass.analysis.sensitivity": "left eigenvectors (eigenvalue derivatives)",
     "bikemass.analysis.uncertainty": "left eigenvectors (eigenvalue derivatives)",
     "bikemass.analysis.handling.mode_shapes": "the kinematic states of an eigenvector",

@@ -5,8 +5,9 @@ A chunk is an index range of the spec's configurations; the worker makes the con
 itself (:meth:`~bikemass.sweep.spec.SweepSpec.columns`), so a task carries the spec and two
 numbers whatever its size.  Configurations that change only benchmark parameters (and the
 stiffness choice) are evaluated as arrays (:mod:`bikemass.sweep.vectorised`); any other, one
-by one (:func:`evaluate`, the reference the array path is tested against); the array path is
-the Whipple model's (rigid or with the quasi-static frame), the other members go one by one.
+by one (:func:`evaluate`, the reference the array paths are tested against): the Whipple model's
+(rigid or with the quasi-static frame) by :mod:`bikemass.sweep.vectorised`, a model with members by
+:mod:`bikemass.sweep.members` (the rows its batch does not decide one by one).
 
 The :class:`~bikemass.scenario.scenario.Scenario` (parsed YAML, built bicycles, riders,
 stiffnesses and models) lives as long as the process and is shared by every chunk of the same
@@ -23,6 +24,8 @@ import numpy as np
 from ..analysis.engine.critical import critical_speeds
 from ..core.errors import InputError
 from ..core.threads import one_blas_thread
+from ..models.parameters import NAMES
+from .members import evaluate_member_columns
 from .table import NUMBERS, OUTPUTS, Outcomes, chunk_text
 from .vectorised import evaluate_columns, takes
 
@@ -95,6 +98,9 @@ def evaluate_outcomes(scenario, spec, columns, count):
     if takes(spec.keys) and not scenario.model.members:     # parameters and stiffness: SI, no unit
         return evaluate_columns(scenario, columns, count, spec.max_speed,
                                 lambda c: evaluate(scenario, c, spec.max_speed))
+    if all(k in NAMES for k in spec.keys):                   # benchmark parameters of a model with members
+        return evaluate_member_columns(scenario, columns, count, spec.max_speed,
+                                       lambda c: evaluate(scenario, c, spec.max_speed))
     # a bare value takes the unit the file writes there (docs/analysis.md), a value with a unit keeps it
     units = {k: u for k in spec.keys if (u := spec.units.get(k) or _bare_unit(scenario, k))}
     rows = [evaluate(scenario, _with_units({k: columns[k][i] for k in spec.keys}, units), spec.max_speed)

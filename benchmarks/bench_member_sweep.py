@@ -1,0 +1,110 @@
+"""A member model's parameter-level sweep against the Whipple bicycle's: marginal cost per configuration.
+
+Run by hand:  python benchmarks/bench_member_sweep.py [--model tyre] [--before] [--repeat 3]
+
+Both sweeps go through ``bm.sweep`` (spec to ``results.csv`` and Parquet, in this process) over the
+benchmark's trail ``c`` x steer-axis tilt ``lam`` (issue 32's must-show).  The marginal cost of a
+configuration is the difference of two sweeps' CPU times over the difference of their sizes (the
+fixed costs of a sweep, its folder, its scenario and the tables' headers, cancel); the best of
+``--repeat`` runs of each size is taken, the sizes run interleaved.  Printed: each model's marginal
+cost (us of CPU a configuration), the ratio member / Whipple (issue 32: at most 10), and how many of
+the member sweep's rows went through the engine (the batch path's undecided rows).
+
+``--before``: also the member sweep the way it ran before the batch path (every configuration one
+by one through the engine, ``bikemass.sweep.evaluate.evaluate``), on a smaller grid.
+"""
+
+import argparse
+import os
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+import bikemass as bm
+from bikemass.sweep import evaluate as evaluate_module
+from bikemass.sweep import members as members_module
+
+
+def spec(folder, name, model, nc, nlam):
+    """A c x lam grid spec of the benchmark with ``model`` (nc x nlam configurations)."""
+    path = Path(folder) / f"{name}.yaml"
+    lines = ["bike: benchmark", f"model: {model}", "vary:",
+             f"  c: {{from: 0.0, to: 0.2, num: {nc}}}", f"  lam: {{from: 0.1, to: 0.5, num: {nlam}}}"]
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def cpu_of(path, out):
+    """CPU seconds of one ``bm.sweep`` of ``path`` into a fresh folder ``out``."""
+    start = time.process_time()
+    bm.sweep(path, out, restart=True)
+    return time.process_time() - start
+
+
+def marginal(folder, model, small, large, repeat):
+    """``(us per configuration, rows)``: the marginal CPU cost of a ``model`` sweep between grids
+    ``small`` and ``large`` ((nc, nlam) each)."""
+    paths = [spec(folder, f"{model}-{nc}x{nl}", model, nc, nl) for nc, nl in (small, large)]
+    best = [float("inf"), float("inf")]
+    for _ in range(repeat):
+        for k, path in enumerate(paths):
+            best[k] = min(best[k], cpu_of(path, Path(folder) / f"out-{path.stem}"))
+    count = [nc * nl for nc, nl in (small, large)]
+    return 1e6 * (best[1] - best[0]) / (count[1] - count[0]), count
+
+
+def counting_reference():
+    """Wrap the member path's reference so that its calls (undecided rows) are counted: ``[calls, CPU s]``."""
+    calls = [0, 0.0]
+    original = members_module.evaluate_member_batch
+
+    def counted(scenario, changes, count, max_speed, reference):
+        def ref(config):
+            start = time.process_time()
+            row = reference(config)
+            calls[0] += 1
+            calls[1] += time.process_time() - start
+            return row
+        return original(scenario, changes, count, max_speed, ref)
+    members_module.evaluate_member_batch = counted
+    return calls
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--model", default="tyre")
+    parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--before", action="store_true", help="also the one-by-one route of before")
+    args = parser.parse_args()
+    print(f"load average {os.getloadavg()[0]:.2f}")
+    with tempfile.TemporaryDirectory() as folder:
+        whipple, _ = marginal(folder, "whipple", (100, 100), (200, 500), args.repeat)
+        print(f"whipple: {whipple:.2f} us of CPU a configuration (marginal, 10,000 -> 100,000)")
+        calls = counting_reference()
+        member, count = marginal(folder, args.model, (40, 50), (100, 200), args.repeat)
+        one_run = calls[0] / args.repeat
+        print(f"{args.model}: {member:.2f} us of CPU a configuration (marginal, {count[0]:,} -> {count[1]:,}); "
+              f"{one_run:.0f} of {count[0] + count[1]:,} rows a run through the engine, "
+              f"{1e3 * calls[1] / max(calls[0], 1):.1f} ms each ({1e6 * calls[1] / args.repeat / sum(count):.1f} us "
+              f"a configuration on average)")
+        print(f"ratio {args.model} / whipple: {member / whipple:.2f} (issue 32: at most 10)")
+        if args.before:
+            evaluate_module.evaluate_member_columns = _one_by_one
+            before, count = marginal(folder, args.model, (5, 10), (10, 20), 1)
+            print(f"{args.model} one by one (before): {before:.0f} us of CPU a configuration "
+                  f"({count[0]} -> {count[1]}); ratio {before / whipple:.0f} to whipple, "
+                  f"{before / member:.0f} to the batch path")
+
+
+def _one_by_one(scenario, changes, count, max_speed, reference):
+    """The route before the batch path: every configuration through the engine."""
+    rows = [reference({k: v[i] for k, v in changes.items()}) for i in range(count)]
+    values = {k: np.array([np.nan if r[k] is None else r[k] for r in rows], dtype=float)
+              for k in evaluate_module.NUMBERS}
+    return evaluate_module.Outcomes(values, [r["error"] for r in rows])
+
+
+if __name__ == "__main__":
+    main()
