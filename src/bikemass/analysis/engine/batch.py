@@ -392,7 +392,7 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
         if kind == "real":
             skipped[rows[later]] = True
             now = ~later
-            x = _illinois(lambda i, x: at_speeds(a[rows[now][i]], x)[..., 0], lo[now], hi_[now], flo[now], fhi[now])
+            x = _illinois(lambda i, x, rows=rows, now=now: at_speeds(a[rows[now][i]], x)[..., 0], lo[now], hi_[now], flo[now], fhi[now])
             x, ok = _newton_real(Pb[rows[now]], x)
             ok &= (x > lo[now] - 1e-6) & (x < hi_[now] + 1e-6)
             at_start = _at_start(lo[now], x, ok, grid[0])
