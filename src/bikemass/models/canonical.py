@@ -15,6 +15,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..core.display import Display
+from ..core.frozen import freeze
 
 
 @dataclass(frozen=True, repr=False)
@@ -27,10 +28,14 @@ class CanonicalMatrices(Display):
     K2: np.ndarray
     g: float
 
+    def __post_init__(self):
+        for name in ("M", "C1", "K0", "K2"):           # read-only arrays (copied only when writable)
+            object.__setattr__(self, name, freeze(np.asarray(getattr(self, name))))
+
     @property
     def gK0(self):
-        """Static (gravity) stiffness ``g K0`` in N m/rad."""
-        return self.g * self.K0
+        """Static (gravity) stiffness ``g K0`` in N m/rad (read-only)."""
+        return _readonly(self.g * self.K0)
 
     def stiffness(self, v):
         """``g K0 + v**2 K2`` for speeds ``v`` (array -> shape (n, 2, 2))."""
@@ -108,9 +113,15 @@ def _sin_cos(x):
 def _matrix(rows):
     """A 2x2 matrix from entries that may be arrays of one shape (B,): shape (2, 2) or (B, 2, 2)."""
     if all(type(x) is float for row in rows for x in row):
-        return np.array(rows)
+        return _readonly(np.array(rows))
     entries = np.broadcast_arrays(*(np.asarray(x) for row in rows for x in row))
-    return np.stack(entries, axis=-1).reshape(*entries[0].shape, 2, 2)
+    return _readonly(np.stack(entries, axis=-1).reshape(*entries[0].shape, 2, 2))
+
+
+def _readonly(a):
+    """``a`` (a new array nobody else holds) made read-only in place, without a copy."""
+    a.setflags(write=False)
+    return a
 
 
 def _spin_momentum(spin_inertia, radius):

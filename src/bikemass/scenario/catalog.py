@@ -16,6 +16,7 @@ from ..bicycle.derived_chart import derived_chart
 from ..core.choices import RIGID, Beam, Combine, Procedure, Source, check
 from ..core.config import load_yaml
 from ..core.errors import BikemassWarning, InputError
+from ..core.frozen import readonly
 from ..core.paths import closest_name
 from ..mass.materials import Material, load_materials
 from ..models.plausibility import check_stiffness, warn_stiffness
@@ -112,7 +113,7 @@ def stiffness(bicycle: BicycleLike, which: "str | os.PathLike | Material | Array
     Returns
     -------
     numpy.ndarray of shape (2, 2), or None
-        S in N m/rad (rows and columns: roll, steer), ``None`` for a rigid frame.
+        S in N m/rad (rows and columns: roll, steer), ``None`` for a rigid frame; read-only.
 
     Raises
     ------
@@ -138,7 +139,7 @@ def stiffness(bicycle: BicycleLike, which: "str | os.PathLike | Material | Array
     if which is None or (isinstance(which, str) and which in (RIGID, "rigid")):
         return None
     if not isinstance(which, (str, os.PathLike, Material)):
-        return stiffness_matrix(which)
+        return readonly(stiffness_matrix(which))
     materials = load_materials()
     if isinstance(which, Material):
         return _material_stiffness(load_bicycle(bicycle), which, source, procedure, beam)
@@ -152,7 +153,7 @@ def stiffness(bicycle: BicycleLike, which: "str | os.PathLike | Material | Array
                                               f"a YAML file with S{closest_name(path, [RIGID, *names])}")
     node = load_yaml(path)
     node.check_keys(required=("S",), optional=("units", "source", "name"))
-    return check_stiffness(node["S"])
+    return readonly(check_stiffness(node["S"]))
 
 
 def _material_stiffness(model, material, source, procedure, beam):
@@ -165,7 +166,7 @@ def _material_stiffness(model, material, source, procedure, beam):
                   Source.PUBLISHED: f"a published stiffness for {material.key}",
                   Source.COMPUTED: "a rear-frame structure for the beam model"}[source]
         raise InputError(model.source, "stiffness", wanted)
-    return S
+    return readonly(S)
 
 
 def _positive_definite(S):
