@@ -21,7 +21,7 @@ to rounding there too.  Elasticities are
 ``(p / v*) d v* / d p`` (per cent change of the speed per per cent change of the parameter).
 """
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -38,6 +38,7 @@ from .model import STEP, STIFFNESS_ENTRIES, values_of
 from .engine.critical import critical_speeds
 from .results import _stiffness
 from ..core.display import Display
+from ..core.frozen import freeze, frozen_fields, thaw
 from ..core.limits import MAX_SPEED
 from ..core.real import finite_real
 from ..core.errors import InputError, short
@@ -76,14 +77,18 @@ def speed_derivatives(model, dA, speed, kind, frequency):
 
 @dataclass(frozen=True, repr=False)
 class Sensitivity(Display):
-    """Critical speeds (m/s, ``None`` if none) and their derivatives ``{name: (m/s) per unit}``."""
+    """Critical speeds (m/s, ``None`` if none) and their derivatives ``{name: (m/s) per unit}``
+    (read-only mappings)."""
 
-    params: dict
+    params: Mapping
     weave_speed: float | None
     capsize_speed: float | None
-    d_weave_speed: dict
-    d_capsize_speed: dict
-    d_stiffness: dict | None = None      # {speed key: {S entry: (m/s) per N m/rad}}, rigid frame: None
+    d_weave_speed: Mapping
+    d_capsize_speed: Mapping
+    d_stiffness: Mapping | None = None      # {speed key: {S entry: (m/s) per N m/rad}}, rigid frame: None
+
+    def __post_init__(self):
+        frozen_fields(self, "params", "d_weave_speed", "d_capsize_speed", "d_stiffness")
 
     def display_rows(self):
         """The two speeds and their three largest elasticities (Jupyter's table, ``repr``)."""
@@ -131,11 +136,11 @@ class Sensitivity(Display):
 
     def to_dict(self):
         out = {"weave_speed": self.weave_speed, "capsize_speed": self.capsize_speed,
-               "d_weave_speed": self.d_weave_speed, "d_capsize_speed": self.d_capsize_speed,
+               "d_weave_speed": thaw(self.d_weave_speed), "d_capsize_speed": thaw(self.d_capsize_speed),
                "elasticity_weave_speed": self.elasticities("weave_speed"),
                "elasticity_capsize_speed": self.elasticities("capsize_speed")}
         if self.d_stiffness is not None:
-            out["d_stiffness"] = self.d_stiffness
+            out["d_stiffness"] = thaw(self.d_stiffness)
         return out
 
 
@@ -368,7 +373,7 @@ GEOMETRY_STEP = 1e-4
 
 
 def geometry_sensitivity(scenario: Scenario, keys: "str | Sequence[str]", result: Sensitivity | None = None,
-                         step: float = GEOMETRY_STEP) -> dict:
+                         step: float = GEOMETRY_STEP) -> Mapping:
     """Derivatives of the weave and capsize speeds with respect to geometry-level inputs.
 
     Chain rule: ``dv/dx = sum_p (dv/dp)(dp/dx) + sum_S (dv/dS)(dS/dx)``.  ``dv/dp`` and ``dv/dS``
@@ -394,8 +399,8 @@ def geometry_sensitivity(scenario: Scenario, keys: "str | Sequence[str]", result
 
     Returns
     -------
-    dict
-        ``{key: {"value", "step", "weave_speed", "capsize_speed", "difference_check"}}``: the
+    Mapping
+        Read-only ``{key: {"value", "step", "weave_speed", "capsize_speed", "difference_check"}}``: the
         input's value and step in SI (m, kg, rad, ... whatever unit its file writes it in);
         ``weave_speed`` and ``capsize_speed`` the derivatives of those speeds, and
         ``difference_check``, in m/s per SI unit.
@@ -446,7 +451,7 @@ def geometry_sensitivity(scenario: Scenario, keys: "str | Sequence[str]", result
         out[key] = {"value": x, "step": h, **estimates[0],
                     "difference_check": max((abs(estimates[0][k] - estimates[1][k])
                                              for k in SPEEDS if estimates[0][k] is not None), default=None)}
-    return out
+    return freeze(out)
 
 
 def _all_member_derivatives(built, result):

@@ -34,6 +34,7 @@ from numpy.typing import ArrayLike
 
 from ..core.tables import Table
 from ..core.display import Display
+from ..core.frozen import frozen_fields, thaw
 from ..core.real import finite_real
 from ..core.errors import InputError
 from ..core.keywords import renamed_keywords
@@ -155,14 +156,18 @@ def matrices_of(model, g):
 
 @dataclass(frozen=True, repr=False)
 class Propagation(Display):
-    """Nominal values and standard deviations; ``linear`` and (if sampled) ``montecarlo`` results."""
+    """Nominal values and standard deviations; ``linear`` and (if sampled) ``montecarlo`` results
+    (read-only mappings of read-only arrays)."""
 
-    matrices: dict          # {M|C1|K0|K2: {"nominal": 2x2, "std": 2x2}} (method's std)
-    speeds: dict            # {weave_speed|capsize_speed: {"nominal", "std", ...}}
-    eigen: dict             # {"speeds": [...], "modes": {label: {"nominal": complex (n,), "std_re", "std_im"}}}
-    inputs: dict            # {key: {"distribution", "std"}}
+    matrices: Mapping          # {M|C1|K0|K2: {"nominal": 2x2, "std": 2x2}} (method's std)
+    speeds: Mapping            # {weave_speed|capsize_speed: {"nominal", "std", ...}}
+    eigen: Mapping             # {"speeds": [...], "modes": {label: {"nominal": complex (n,), "std_re", "std_im"}}}
+    inputs: Mapping            # {key: {"distribution", "std"}}
     method: str
-    samples: object = None  # Monte Carlo draws: {"weave_speed": array, "capsize_speed": array} or None
+    samples: object = None     # Monte Carlo draws: {"weave_speed": array, "capsize_speed": array} or None
+
+    def __post_init__(self):
+        frozen_fields(self, "matrices", "speeds", "eigen", "inputs", "samples")
 
     def display_rows(self):
         """The method, the inputs' spreads and each critical speed's nominal value and std (Jupyter's
@@ -203,8 +208,8 @@ class Propagation(Display):
                     "std_im": m["std_im"], **({"re_q025": m["re_q025"], "re_q975": m["re_q975"]}
                                               if "re_q025" in m else {})}
             for label, m in self.eigen["modes"].items()}}
-        return {"method": self.method, "inputs": self.inputs, "matrices": self.matrices,
-                **self.speeds, "eigenvalues": eig}
+        return {"method": self.method, "inputs": thaw(self.inputs), "matrices": thaw(self.matrices),
+                **thaw(self.speeds), "eigenvalues": eig}
 
 
 def linear_derivatives(params, S, dirs, speeds):

@@ -15,6 +15,7 @@ import scipy.linalg
 import scipy.sparse.linalg as spla
 
 from ..core.display import Display, brief
+from ..core.frozen import frozen_fields
 from ..core.tables import Table
 from ..core.threads import one_blas_thread
 from .assembly import assemble
@@ -34,6 +35,9 @@ class Modes(Display):
     shapes: np.ndarray
     mesh: FrameMesh
     bc: str
+
+    def __post_init__(self):
+        frozen_fields(self, "frequencies_hz", "shapes")
 
     def display_rows(self):
         """The frequencies (Hz), the boundary condition and the model's size (Jupyter's table, ``repr``)."""

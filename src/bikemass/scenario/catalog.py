@@ -7,6 +7,7 @@ source (``<mapping>`` for Python values), the key and what was expected.
 
 import os
 import warnings
+from collections.abc import Mapping
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -16,7 +17,7 @@ from ..bicycle.derived_chart import derived_chart
 from ..core.choices import RIGID, Beam, Combine, Procedure, Source, check
 from ..core.config import load_yaml
 from ..core.errors import BikemassWarning, InputError
-from ..core.frozen import readonly
+from ..core.frozen import freeze, readonly
 from ..core.paths import closest_name
 from ..mass.materials import Material, load_materials
 from ..models.plausibility import check_stiffness, warn_stiffness
@@ -186,7 +187,7 @@ def stiffness_matrix(values):
     return S
 
 
-def geometry_chart(bicycle: BicycleLike, size: str | None = None) -> dict:
+def geometry_chart(bicycle: BicycleLike, size: str | None = None) -> Mapping:
     """The derived geometry chart of a bicycle: what a manufacturer's chart lists.
 
     Parameters
@@ -198,8 +199,8 @@ def geometry_chart(bicycle: BicycleLike, size: str | None = None) -> dict:
 
     Returns
     -------
-    dict
-        ``{name: value}`` in :data:`~bikemass.bicycle.derived_chart.CHART_ORDER`: lengths in m
+    Mapping
+        Read-only ``{name: value}`` in :data:`~bikemass.bicycle.derived_chart.CHART_ORDER`: lengths in m
         (``wheelbase``, ``trail``, ``stack``, ``reach``, ...), angles in deg
         (``head_tube_angle``, ``seat_tube_angle``).
 
@@ -219,4 +220,4 @@ def geometry_chart(bicycle: BicycleLike, size: str | None = None) -> dict:
     >>> print(f"stack {chart['stack']:.3f} m, reach {chart['reach']:.3f} m, trail {chart['trail']:.4f} m")
     stack 0.590 m, reach 0.388 m, trail 0.0628 m
     """
-    return derived_chart(load_bicycle(bicycle, size=size))
+    return freeze(derived_chart(load_bicycle(bicycle, size=size)))
