@@ -223,6 +223,20 @@ def test_a_built_scenario_holds_nothing_mutable(model):
     assert not found, "\n".join(f"{where}: {what}" for where, what in found[:40])
 
 
+def test_an_estimate_is_typed_and_its_old_dict_access_warns():
+    """A propagation's critical speeds are :class:`~bikemass.analysis.uncertainty.Estimate` values
+    (nominal, std in m/s, declared once); the dict access of 0.2 still reads them for one release,
+    with a DeprecationWarning."""
+    u = bm.uncertainty("benchmark", {"c": 0.001}, speeds=np.arange(1.0, 4.0))
+    w = u.speeds["weave_speed"]
+    assert type(w).__name__ == "Estimate" and w.units()["nominal"] == w.units()["std"] == "m/s"
+    with pytest.warns(DeprecationWarning, match=r"read \.std"):
+        assert w["std"] == w.std
+    with pytest.warns(DeprecationWarning):
+        assert w.get("q025", "absent") == "absent"        # a linear estimate has no quantiles
+    assert u.to_dict()["weave_speed"] == {"nominal": w.nominal, "std": w.std}
+
+
 def test_the_walker_finds_what_it_looks_for():
     @dataclasses.dataclass
     class Loose:

@@ -260,8 +260,8 @@ def uncertainty_table(result, title):
                        rows, floatfmt="{:.6g}"))
     rows = []
     for name, s in result.speeds.items():
-        rows.append([name.replace("_", " "), s["nominal"], s["std"]]
-                    + ([s["linear_std"], s["mean"], s["q025"], s["q975"], s["fraction_without"]] if mc else []))
+        rows.append([name.replace("_", " "), s.nominal, s.std]
+                    + ([s.linear_std, s.mean, s.q025, s.q975, s.fraction_without] if mc else []))
     heads = ["critical speed (m/s)", "nominal", "std" + (" (MC)" if mc else "")]
     if mc:
         heads += ["std (linear)", "MC mean", "MC 2.5 %", "MC 97.5 %", "none found"]
@@ -277,7 +277,7 @@ def uncertainty_csv(result):
     rows = [[f"{name}[{i},{j}]", UNCERTAINTY_UNITS[name], m["nominal"][i, j], m["std"][i, j]]
             + ([m["linear_std"][i, j], None, None, None, None] if mc else [])
             for name, m in result.matrices.items() for i in range(2) for j in range(2)]
-    rows += [[name, "m/s", s["nominal"], s["std"]] + [s.get(k) for k in extra] for name, s in result.speeds.items()]
+    rows += [[name, "m/s", s.nominal, s.std] + [getattr(s, k) for k in extra] for name, s in result.speeds.items()]
     return dialect.csv_text(["quantity", "unit", "nominal", "std", *extra], rows)
 
 

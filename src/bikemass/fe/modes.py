@@ -50,6 +50,11 @@ class Modes(Display):
         columns = {"mode": np.arange(1, len(self.frequencies_hz) + 1), "frequency": self.frequencies_hz}
         return {"modes": Table(columns, {"frequency": "Hz"}, {"bc": self.bc})}
 
+    @staticmethod
+    def units():
+        """The ``units`` block of :meth:`to_dict`."""
+        return {"frequencies": "Hz"}
+
     def to_dict(self):
         """``{"frequencies": [Hz, ...]}`` (the unit goes in the document's ``units`` block)."""
         return {"frequencies": [float(f) for f in self.frequencies_hz]}
