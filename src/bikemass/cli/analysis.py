@@ -231,16 +231,23 @@ def run_uncertainty(args):
             return uncertainty_table(result, _title(args))
         if fmt == "csv":
             return uncertainty_csv(result)
-        return dialect.result_document(result.to_dict(), UNCERTAINTY_UNITS, fmt)
+        return dialect.result_document(result.to_dict(), uncertainty_units(), fmt)
     dialect.emit(args, render)
     if args.plot:
         dialect.save_plot(args, uncertainty_figure(result, _title(args), options.size), options)
     return 0
 
 
-UNCERTAINTY_UNITS = {"M": "kg m^2", "C1": "kg m^2 (per m/s)", "K0": "kg m (times g: N m/rad)",
-                     "K2": "kg (times v^2: N m/rad)", "weave_speed": "m/s", "capsize_speed": "m/s",
-                     "eigenvalues": "1/s"}
+def uncertainty_units():
+    """The units block of ``uncertainty``'s JSON/YAML: the matrices' as
+    :class:`~bikemass.models.canonical.CanonicalMatrices` declares them, the critical speeds' as
+    :class:`~bikemass.analysis.uncertainty.Estimate` does, the eigenvalues' in 1/s."""
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..analysis.uncertainty import Estimate
+    from ..models.canonical import CanonicalMatrices
+    speed = Estimate.field_units()["nominal"]
+    return {**{k: u for k, u in CanonicalMatrices.field_units().items() if k != "g"},
+            "weave_speed": speed, "capsize_speed": speed, "eigenvalues": "1/s"}
 
 
 def uncertainty_table(result, title):
@@ -274,7 +281,8 @@ def uncertainty_csv(result):
     montecarlo, the linear std, mean, 2.5 % and 97.5 % quantiles and the fraction without)."""
     mc = result.method == "montecarlo"
     extra = ["linear_std", "mean", "q025", "q975", "fraction_without"] if mc else []
-    rows = [[f"{name}[{i},{j}]", UNCERTAINTY_UNITS[name], m["nominal"][i, j], m["std"][i, j]]
+    units = uncertainty_units()
+    rows = [[f"{name}[{i},{j}]", units[name], m["nominal"][i, j], m["std"][i, j]]
             + ([m["linear_std"][i, j], None, None, None, None] if mc else [])
             for name, m in result.matrices.items() for i in range(2) for j in range(2)]
     rows += [[name, "m/s", s.nominal, s.std] + [getattr(s, k) for k in extra] for name, s in result.speeds.items()]

@@ -14,7 +14,8 @@ import numpy as np
 import scipy.linalg
 import scipy.sparse.linalg as spla
 
-from ..core.display import Display, brief
+from ..core.display import brief
+from ..core.results import Result, quantity
 from ..core.frozen import frozen_fields
 from ..core.tables import Table
 from ..core.threads import one_blas_thread
@@ -28,11 +29,12 @@ DENSE_LIMIT = 400
 
 
 @dataclass(frozen=True, repr=False)
-class Modes(Display):
-    """Natural frequencies (Hz, ascending) and mass-normalised shapes (n_dof, n) on all DOF."""
+class Modes(Result):
+    """Natural frequencies (Hz, ascending) and mass-normalised shapes (n_dof, n) on all DOF
+    (read-only arrays)."""
 
-    frequencies_hz: np.ndarray
-    shapes: np.ndarray
+    frequencies_hz: np.ndarray = quantity("Hz", "natural frequencies, ascending")
+    shapes: np.ndarray                  # mass-normalised (phi^T M phi = 1), a column per mode
     mesh: FrameMesh
     bc: str
 

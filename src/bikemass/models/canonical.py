@@ -14,19 +14,19 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..core.display import Display
+from ..core.results import Result, quantity
 from ..core.frozen import freeze
 
 
 @dataclass(frozen=True, repr=False)
-class CanonicalMatrices(Display):
-    """``M, C1, K0, K2`` (2x2 arrays) and gravity ``g`` (m/s^2) of one bicycle."""
+class CanonicalMatrices(Result):
+    """``M, C1, K0, K2`` (2x2 read-only arrays) and gravity ``g`` (m/s^2) of one bicycle."""
 
-    M: np.ndarray
-    C1: np.ndarray
-    K0: np.ndarray
-    K2: np.ndarray
-    g: float
+    M: np.ndarray = quantity("kg m^2", "mass matrix")
+    C1: np.ndarray = quantity("kg m^2 (per m/s)", "velocity-dependent damping-like matrix (times v)")
+    K0: np.ndarray = quantity("kg m (times g: N m/rad)", "gravity-dependent stiffness matrix (times g)")
+    K2: np.ndarray = quantity("kg (times v^2: N m/rad)", "velocity-dependent stiffness matrix (times v^2)")
+    g: float = quantity("m/s^2", "gravity")
 
     def __post_init__(self):
         for name in ("M", "C1", "K0", "K2"):           # read-only arrays (copied only when writable)
