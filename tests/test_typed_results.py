@@ -245,8 +245,7 @@ NOT_RESULTS = {
         "analysis.handling.transfer.TransferFunction", "analysis.handling.frequency.FrequencyResponse",
         "analysis.handling.time_response.TimeResponse", "analysis.nonlinear.response.NonlinearResponse",
         "analysis.handling.mode_shapes.ModeShapes", "analysis.handling.survey.HandlingResult",
-        "analysis.handling.lane_change.LaneChange", "analysis.nonlinear.turn.SteadyTurn",
-        "analysis.nonlinear.turn.HandsFreeTurns")},
+        "analysis.handling.lane_change.LaneChange")},
 }
 """Types (module under ``bikemass`` and name) returned by facade functions that are not
 :class:`~bikemass.core.results.Result` s, with why."""
