@@ -238,14 +238,19 @@ NOT_RESULTS = {
     # the value itself: a read-only array or a read-only mapping
     "numpy.ndarray": "bm.stiffness, bm.frame_stiffness, bm.speeds: a read-only array",
     "core.frozen.FrozenMap": "bm.geometry_chart, bm.geometry_sensitivity: a read-only mapping",
-    # results still to become Result subclasses (units declared per field): the remaining work
-    **{name: "not yet a Result (issue 32 item 3)" for name in (
-        "scenario.posing.PosedRider",
-        "analysis.sensitivity.Sensitivity", "analysis.uncertainty.Propagation",
+    # results still to become Result subclasses: the remaining work of issue 32 item 3
+    "scenario.posing.PosedRider": "not yet a Result: a pose's document, rider, bicycle and solution",
+    "analysis.uncertainty.Propagation": "not yet a Result: mappings of mixed units (matrices, eigenvalue bands); "
+                                        "its critical speeds are Estimate Results",
+    **{name: "not yet a Result: a field named units (each signal's, from the model) clashes with Result.units()"
+       for name in ("analysis.handling.time_response.TimeResponse", "analysis.handling.lane_change.LaneChange",
+                    "analysis.nonlinear.response.NonlinearResponse")},
+    **{name: "not yet a Result: units that depend on the signals chosen (input_unit, output_unit, the model's "
+             "coordinates)" for name in (
         "analysis.handling.transfer.TransferFunction", "analysis.handling.frequency.FrequencyResponse",
-        "analysis.handling.time_response.TimeResponse", "analysis.nonlinear.response.NonlinearResponse",
-        "analysis.handling.mode_shapes.ModeShapes", "analysis.handling.survey.HandlingResult",
-        "analysis.handling.lane_change.LaneChange")},
+        "analysis.handling.mode_shapes.ModeShapes")},
+    "analysis.handling.survey.HandlingResult": "not yet a Result: its gains' units are the Gains table's "
+                                               "(analysis/handling/gains.py UNITS), not declared per field",
 }
 """Types (module under ``bikemass`` and name) returned by facade functions that are not
 :class:`~bikemass.core.results.Result` s, with why."""

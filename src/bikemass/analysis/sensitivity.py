@@ -37,7 +37,7 @@ from .engine.crossings import OSCILLATORY, REAL
 from .model import STEP, STIFFNESS_ENTRIES, values_of
 from .engine.critical import critical_speeds
 from .results import _stiffness
-from ..core.display import Display
+from ..core.results import Result, quantity
 from ..core.frozen import freeze, frozen_fields, thaw
 from ..core.limits import MAX_SPEED
 from ..core.real import finite_real
@@ -75,20 +75,29 @@ def speed_derivatives(model, dA, speed, kind, frequency):
     return {name: float(-dlam(d).real / dv) for name, d in dA.items()}
 
 
+PER_PARAMETER = "m/s per unit of each parameter (SI, angles rad)"
+"""The unit of a derivative of a critical speed by each of several parameters."""
+
+
 @dataclass(frozen=True, repr=False)
-class Sensitivity(Display):
+class Sensitivity(Result):
     """Critical speeds (m/s, ``None`` if none) and their derivatives ``{name: (m/s) per unit}``
-    (read-only mappings)."""
+    (read-only mappings); ``params`` the values differentiated by (SI, each in its own unit)."""
 
     params: Mapping
-    weave_speed: float | None
-    capsize_speed: float | None
-    d_weave_speed: Mapping
-    d_capsize_speed: Mapping
-    d_stiffness: Mapping | None = None      # {speed key: {S entry: (m/s) per N m/rad}}, rigid frame: None
+    weave_speed: float | None = quantity("m/s", "the weave speed (None: none)")
+    capsize_speed: float | None = quantity("m/s", "the capsize speed (None: none)")
+    d_weave_speed: Mapping = quantity(PER_PARAMETER, "{name: derivative of the weave speed}")
+    d_capsize_speed: Mapping = quantity(PER_PARAMETER, "{name: derivative of the capsize speed}")
+    d_stiffness: Mapping | None = quantity("m/s per N m/rad", "{speed key: {S entry: derivative}}; rigid: None",
+                                           default=None)
 
     def __post_init__(self):
         frozen_fields(self, "params", "d_weave_speed", "d_capsize_speed", "d_stiffness")
+
+    def units(self):
+        """The ``units`` block of :meth:`to_dict`: the fields' declared units and the elasticities'."""
+        return {**self.field_units(), "elasticity_weave_speed": "1", "elasticity_capsize_speed": "1"}
 
     def display_rows(self):
         """The two speeds and their three largest elasticities (Jupyter's table, ``repr``)."""

@@ -11,14 +11,11 @@ from .options import whole
 
 PLOT_FORMAT = "png"
 """The sweep's figure format unless ``--plot-format`` gives one."""
-SPEED_UNITS = {"weave_speed": "m/s", "capsize_speed": "m/s",
-               "d_weave_speed": "m/s per unit of each parameter (SI, angles rad)",
-               "d_capsize_speed": "m/s per unit of each parameter (SI, angles rad)",
-               "elasticity_weave_speed": "1", "elasticity_capsize_speed": "1",
-               "d_stiffness": "m/s per N m/rad", "inputs": "value: SI (m, kg, rad, ...); "
-               "weave_speed, capsize_speed: m/s per SI unit of the input"}
-"""The units block of ``sensitivity``'s JSON/YAML, one entry per top-level key (the parameter
-names inside the derivative mappings are not quantities of their own units there)."""
+INPUTS_UNIT = "value: SI (m, kg, rad, ...); weave_speed, capsize_speed: m/s per SI unit of the input"
+"""The unit of ``sensitivity``'s ``inputs`` (:func:`~bikemass.analysis.sensitivity.geometry_sensitivity`);
+the rest of its units block is what :class:`~bikemass.analysis.sensitivity.Sensitivity` declares,
+one entry per top-level key (the parameter names inside the derivative mappings are not
+quantities of their own units there)."""
 
 
 def register(sub):
@@ -139,7 +136,8 @@ def run_sensitivity(args):
         doc = result.to_dict()
         if geometry:
             doc["inputs"] = geometry
-        return dumps({**doc, "units": {k: u for k, u in SPEED_UNITS.items() if k in doc}}, fmt)
+        declared = {**result.units(), "inputs": INPUTS_UNIT}
+        return dumps({**doc, "units": {k: u for k, u in declared.items() if k in doc}}, fmt)
     dialect.emit(args, render)
     if args.plot:
         dialect.save_plot(args, sensitivity_figure(result, _title(args), options.size), options)
