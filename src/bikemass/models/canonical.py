@@ -30,7 +30,9 @@ class CanonicalMatrices(Result):
 
     def __post_init__(self):
         for name in ("M", "C1", "K0", "K2"):           # read-only arrays (copied only when writable)
-            object.__setattr__(self, name, freeze(np.asarray(getattr(self, name))))
+            a = getattr(self, name)
+            if type(a) is not np.ndarray or a.flags.writeable:
+                object.__setattr__(self, name, freeze(np.asarray(a)))
 
     @property
     def gK0(self):
