@@ -186,8 +186,8 @@ def test_member_uncertainty_is_first_order_in_the_spread():
     x = scenario.value(key)
     h = 1e-4 * abs(x)
     (wa, _), (wb, _) = crossings(scenario, {key: x + h}), crossings(scenario, {key: x - h})
-    assert result.speeds["weave_speed"]["nominal"] == pytest.approx(crossings(scenario)[0], abs=1e-9)
-    assert result.speeds["weave_speed"]["std"] == pytest.approx(abs(wa - wb) / (2 * h) * sigma, rel=1e-4)
+    assert result.speeds["weave_speed"].nominal == pytest.approx(crossings(scenario)[0], abs=1e-9)
+    assert result.speeds["weave_speed"].std == pytest.approx(abs(wa - wb) / (2 * h) * sigma, rel=1e-4)
     assert result.matrices == {}                        # the 2x2 matrices are the Whipple model's
 
 

@@ -109,6 +109,6 @@ def test_old_keywords_still_work_with_a_deprecation_warning():
     assert old.weave_speed == pytest.approx(new.weave_speed, abs=0) and old.d_stiffness is not None
     with pytest.warns(DeprecationWarning, match=r"uncertainty\(bike=...\) is deprecated; use bicycle="):
         spread = bm.uncertainty(bike="benchmark", spreads={"c": 0.001})
-    assert spread.speeds["weave_speed"]["nominal"] == pytest.approx(4.2923825363411040, abs=1e-9)  # Meijaard 2007
+    assert spread.speeds["weave_speed"].nominal == pytest.approx(4.2923825363411040, abs=1e-9)  # Meijaard 2007
     with pytest.raises(TypeError, match="both S= and stiffness="):
         bm.sensitivity(p, S=S, stiffness=S)

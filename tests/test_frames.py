@@ -126,7 +126,7 @@ def test_contract_analysis_frames_hold_their_results():
     assert len(flexible) == 6 and flexible.attrs["units"]["derivative"] == "m/s per N m/rad"
     u = bm.uncertainty("benchmark", {"c": 0.005, "mB": 1.0})
     frame = u.to_frame().set_index("output")
-    assert frame.loc["weave_speed", "std"] == u.speeds["weave_speed"]["std"]
+    assert frame.loc["weave_speed", "std"] == u.speeds["weave_speed"].std
     bands = u.to_frame("eigenvalues")
     np.testing.assert_array_equal(bands["capsize std real"], u.eigen["modes"]["capsize"]["std_re"])
     frame = P.to_frame().set_index("name")

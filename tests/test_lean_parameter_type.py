@@ -104,7 +104,7 @@ def test_sensitivity_uncertainty_and_scenario_take_the_leaning_rider(lean, peer)
     fd = (peer_weave_speed(moved[0], weave) - peer_weave_speed(moved[1], weave)) / (2 * h)
     assert s.d_weave_speed["mH"] == pytest.approx(fd, rel=1e-6)
     u = bm.uncertainty(lean, {"c": 0.001})
-    assert u.speeds["weave_speed"]["nominal"] == pytest.approx(weave, rel=RTOL, abs=0)
+    assert u.speeds["weave_speed"].nominal == pytest.approx(weave, rel=RTOL, abs=0)
     assert bm.Scenario(lean).build().model.name == "rider-lean"
     assert bm.Scenario(lean, model="whipple").model.name == "whipple"
 

@@ -16,6 +16,8 @@ import bikemass
 from bikemass.cli.main import main
 from bikemass.core.output import (SIGNIFICANT, ZERO, as_shown, as_written, csv_text, dumps, formatted, table,
                                   with_units)
+from bikemass.core.results import declared_units
+from bikemass.mass.inertia import MassProperties
 
 NOISE = 3e-17
 """Rounding noise of a zero computed from numbers of order 1 (a few units of 2**-53)."""
@@ -33,7 +35,7 @@ def test_zero_threshold_applies_to_quantities_of_the_listed_units_only():
 def test_documents_write_zero_by_their_units_block():
     doc = with_units({"com": np.array([0.33, NOISE, -1.2]), "inertia": np.diag([12.5, 12.7, 2.3]) + NOISE,
                       "weave_speed": {"placement": NOISE}, "d_speed": {"torso.angle": -NOISE}},
-                     {"weave_speed": "m/s", "d_speed": "m/s per kg m^2"})
+                     {**declared_units(MassProperties), "weave_speed": "m/s", "d_speed": "m/s per kg m^2"})
     for fmt, load in (("json", json.loads), ("yaml", __import__("yaml").safe_load)):
         back = load(dumps(doc, fmt))
         assert back["com"] == [0.33, 0.0, -1.2]

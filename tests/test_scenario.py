@@ -177,10 +177,10 @@ def test_built_values_and_matrices_are_inputs_too():
     by_name = bm.uncertainty("benchmark", {"mB": 0.5}, stiffness=S)
     built = bm.uncertainty(bm.load_bicycle("benchmark"), {"mB": 0.5}, stiffness=np.array(S))
     for key in ("weave_speed", "capsize_speed"):
-        assert built.speeds[key]["nominal"] == pytest.approx(by_name.speeds[key]["nominal"], abs=1e-12)
-        assert built.speeds[key]["std"] == pytest.approx(by_name.speeds[key]["std"], rel=1e-12)
+        assert built.speeds[key].nominal == pytest.approx(by_name.speeds[key].nominal, abs=1e-12)
+        assert built.speeds[key].std == pytest.approx(by_name.speeds[key].std, rel=1e-12)
     flexible = bm.stability(bm.parameters("benchmark"), stiffness=np.array(S))
-    assert by_name.speeds["weave_speed"]["nominal"] == pytest.approx(flexible.weave_speeds[0], abs=1e-9)
+    assert by_name.speeds["weave_speed"].nominal == pytest.approx(flexible.weave_speeds[0], abs=1e-9)
     with pytest.raises(bm.InputError, match="a bicycle was given built, not as YAML|parameter names"):
         Scenario(bm.load_bicycle("benchmark")).build({"geometry.trail": 0.1})
 

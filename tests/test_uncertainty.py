@@ -70,9 +70,9 @@ def test_montecarlo_agrees_with_linear_for_small_spreads():
     mc = propagate(model, spreads, "montecarlo", samples=300, seed=7, speeds=np.linspace(0, 8, 9))
     for name in ("weave_speed", "capsize_speed"):
         s = mc.speeds[name]
-        assert s["std"] == pytest.approx(s["linear_std"], rel=0.14)
-        assert abs(s["mean"] - s["nominal"]) < (3 / np.sqrt(300) + 0.05) * s["linear_std"]
-        assert s["fraction_without"] == 0
+        assert s.std == pytest.approx(s.linear_std, rel=0.14)
+        assert abs(s.mean - s.nominal) < (3 / np.sqrt(300) + 0.05) * s.linear_std
+        assert s.fraction_without == 0
     for m in ("M", "C1", "K2"):
         np.testing.assert_allclose(mc.matrices[m]["std"], mc.matrices[m]["linear_std"], rtol=0.14, atol=1e-12)
 

@@ -22,6 +22,7 @@ from ..core.errors import InputTypeError
 from ..scenario.catalog import stiffness_matrix
 from ..core.errors import InputError, short
 from ..core.real import finite_real
+from ..core.frozen import readonly
 from ..core.limits import MAX_SPEEDS
 from .engine.speeds import speed_range, speed_values
 from ..models.arms import as_arms
@@ -138,7 +139,7 @@ def speeds(start: float = 0.0, stop: float = 30.0, step: float = 0.05, max_speed
     >>> len(bm.speeds())                              # the thesis's 0..30 m/s in 0.05 m/s
     601
     """
-    return speed_range(start, stop, step, max_speeds)
+    return readonly(speed_range(start, stop, step, max_speeds))
 
 
 def linear_model(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Built | LinearModel",

@@ -21,7 +21,7 @@ to rounding there too.  Elasticities are
 ``(p / v*) d v* / d p`` (per cent change of the speed per per cent change of the parameter).
 """
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -37,7 +37,8 @@ from .engine.crossings import OSCILLATORY, REAL
 from .model import STEP, STIFFNESS_ENTRIES, values_of
 from .engine.critical import critical_speeds
 from .results import _stiffness
-from ..core.display import Display
+from ..core.results import Result, quantity
+from ..core.frozen import freeze, frozen_fields, thaw
 from ..core.limits import MAX_SPEED
 from ..core.real import finite_real
 from ..core.errors import InputError, short
@@ -74,16 +75,29 @@ def speed_derivatives(model, dA, speed, kind, frequency):
     return {name: float(-dlam(d).real / dv) for name, d in dA.items()}
 
 
-@dataclass(frozen=True, repr=False)
-class Sensitivity(Display):
-    """Critical speeds (m/s, ``None`` if none) and their derivatives ``{name: (m/s) per unit}``."""
+PER_PARAMETER = "m/s per unit of each parameter (SI, angles rad)"
+"""The unit of a derivative of a critical speed by each of several parameters."""
 
-    params: dict
-    weave_speed: float | None
-    capsize_speed: float | None
-    d_weave_speed: dict
-    d_capsize_speed: dict
-    d_stiffness: dict | None = None      # {speed key: {S entry: (m/s) per N m/rad}}, rigid frame: None
+
+@dataclass(frozen=True, repr=False)
+class Sensitivity(Result):
+    """Critical speeds (m/s, ``None`` if none) and their derivatives ``{name: (m/s) per unit}``
+    (read-only mappings); ``params`` the values differentiated by (SI, each in its own unit)."""
+
+    params: Mapping
+    weave_speed: float | None = quantity("m/s", "the weave speed (None: none)")
+    capsize_speed: float | None = quantity("m/s", "the capsize speed (None: none)")
+    d_weave_speed: Mapping = quantity(PER_PARAMETER, "{name: derivative of the weave speed}")
+    d_capsize_speed: Mapping = quantity(PER_PARAMETER, "{name: derivative of the capsize speed}")
+    d_stiffness: Mapping | None = quantity("m/s per N m/rad", "{speed key: {S entry: derivative}}; rigid: None",
+                                           default=None)
+
+    def __post_init__(self):
+        frozen_fields(self, "params", "d_weave_speed", "d_capsize_speed", "d_stiffness")
+
+    def units(self):
+        """The ``units`` block of :meth:`to_dict`: the fields' declared units and the elasticities'."""
+        return {**self.field_units(), "elasticity_weave_speed": "1", "elasticity_capsize_speed": "1"}
 
     def display_rows(self):
         """The two speeds and their three largest elasticities (Jupyter's table, ``repr``)."""
@@ -131,11 +145,11 @@ class Sensitivity(Display):
 
     def to_dict(self):
         out = {"weave_speed": self.weave_speed, "capsize_speed": self.capsize_speed,
-               "d_weave_speed": self.d_weave_speed, "d_capsize_speed": self.d_capsize_speed,
+               "d_weave_speed": thaw(self.d_weave_speed), "d_capsize_speed": thaw(self.d_capsize_speed),
                "elasticity_weave_speed": self.elasticities("weave_speed"),
                "elasticity_capsize_speed": self.elasticities("capsize_speed")}
         if self.d_stiffness is not None:
-            out["d_stiffness"] = self.d_stiffness
+            out["d_stiffness"] = thaw(self.d_stiffness)
         return out
 
 
@@ -368,7 +382,7 @@ GEOMETRY_STEP = 1e-4
 
 
 def geometry_sensitivity(scenario: Scenario, keys: "str | Sequence[str]", result: Sensitivity | None = None,
-                         step: float = GEOMETRY_STEP) -> dict:
+                         step: float = GEOMETRY_STEP) -> Mapping:
     """Derivatives of the weave and capsize speeds with respect to geometry-level inputs.
 
     Chain rule: ``dv/dx = sum_p (dv/dp)(dp/dx) + sum_S (dv/dS)(dS/dx)``.  ``dv/dp`` and ``dv/dS``
@@ -394,8 +408,8 @@ def geometry_sensitivity(scenario: Scenario, keys: "str | Sequence[str]", result
 
     Returns
     -------
-    dict
-        ``{key: {"value", "step", "weave_speed", "capsize_speed", "difference_check"}}``: the
+    Mapping
+        Read-only ``{key: {"value", "step", "weave_speed", "capsize_speed", "difference_check"}}``: the
         input's value and step in SI (m, kg, rad, ... whatever unit its file writes it in);
         ``weave_speed`` and ``capsize_speed`` the derivatives of those speeds, and
         ``difference_check``, in m/s per SI unit.
@@ -446,7 +460,7 @@ def geometry_sensitivity(scenario: Scenario, keys: "str | Sequence[str]", result
         out[key] = {"value": x, "step": h, **estimates[0],
                     "difference_check": max((abs(estimates[0][k] - estimates[1][k])
                                              for k in SPEEDS if estimates[0][k] is not None), default=None)}
-    return out
+    return freeze(out)
 
 
 def _all_member_derivatives(built, result):

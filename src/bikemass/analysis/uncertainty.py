@@ -26,14 +26,17 @@ eigenvalues grows without bound, and a critical speed that some samples do not h
 """
 
 import os
+import warnings
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 from numpy.typing import ArrayLike
 
 from ..core.tables import Table
 from ..core.display import Display
+from ..core.results import Result, quantity
+from ..core.frozen import frozen_fields, thaw
 from ..core.real import finite_real
 from ..core.errors import InputError
 from ..core.keywords import renamed_keywords
@@ -153,16 +156,70 @@ def matrices_of(model, g):
     return {"M": mech.M, "C1": mech.C[1], "K0": mech.K[0] / g, "K2": mech.K[2]}
 
 
+@dataclass(frozen=True)
+class Estimate(Result):
+    """A critical speed's estimate: its ``nominal`` value and standard deviation ``std`` (m/s;
+    ``None`` where the nominal bicycle has no such speed) and, from Monte Carlo draws, the linear
+    std, the draws' mean and 2.5 % / 97.5 % quantiles (m/s) and the fraction of draws without it.
+
+    Dict access (``estimate["std"]``, ``estimate.get("q025")``), what a propagation's ``speeds``
+    held before 0.3, still works for one release with a :class:`DeprecationWarning`."""
+
+    nominal: float | None = quantity("m/s", "the nominal bicycle's critical speed", default=None)
+    std: float | None = quantity("m/s", "standard deviation (the method's)", default=None)
+    linear_std: float | None = quantity("m/s", "Monte Carlo: the linear propagation's std", default=None)
+    mean: float | None = quantity("m/s", "Monte Carlo: the draws' mean", default=None)
+    q025: float | None = quantity("m/s", "Monte Carlo: 2.5 % quantile", default=None)
+    q975: float | None = quantity("m/s", "Monte Carlo: 97.5 % quantile", default=None)
+    fraction_without: float | None = quantity("", "Monte Carlo: fraction of draws without it", default=None)
+
+    @property
+    def sampled(self):
+        """True for a Monte Carlo estimate."""
+        return self.fraction_without is not None
+
+    def to_dict(self):
+        """``{"nominal", "std"}`` and, from Monte Carlo, ``linear_std, mean, q025, q975, fraction_without``."""
+        keys = [f.name for f in fields(self)] if self.sampled else ["nominal", "std"]
+        return {k: getattr(self, k) for k in keys}
+
+    def _old_access(self, key):
+        warnings.warn(f"Estimate[{key!r}]: an estimate is a typed value now; read .{key} (dict access goes "
+                      "in the next release)", DeprecationWarning, stacklevel=3)
+
+    def __getitem__(self, key):
+        self._old_access(key)
+        if key not in self.to_dict():
+            raise KeyError(key)
+        return getattr(self, key)
+
+    def get(self, key, default=None):
+        """Deprecated dict access: ``getattr(estimate, key)``, ``default`` for a key it lacks."""
+        self._old_access(key)
+        return getattr(self, key) if key in self.to_dict() else default
+
+    def __contains__(self, key):
+        return key in self.to_dict()
+
+    def __iter__(self):
+        self._old_access("...")
+        return iter(self.to_dict())
+
+
 @dataclass(frozen=True, repr=False)
 class Propagation(Display):
-    """Nominal values and standard deviations; ``linear`` and (if sampled) ``montecarlo`` results."""
+    """Nominal values and standard deviations; ``linear`` and (if sampled) ``montecarlo`` results
+    (read-only mappings of read-only arrays)."""
 
-    matrices: dict          # {M|C1|K0|K2: {"nominal": 2x2, "std": 2x2}} (method's std)
-    speeds: dict            # {weave_speed|capsize_speed: {"nominal", "std", ...}}
-    eigen: dict             # {"speeds": [...], "modes": {label: {"nominal": complex (n,), "std_re", "std_im"}}}
-    inputs: dict            # {key: {"distribution", "std"}}
+    matrices: Mapping          # {M|C1|K0|K2: {"nominal": 2x2, "std": 2x2}} (method's std)
+    speeds: Mapping            # {weave_speed|capsize_speed: Estimate}
+    eigen: Mapping             # {"speeds": [...], "modes": {label: {"nominal": complex (n,), "std_re", "std_im"}}}
+    inputs: Mapping            # {key: {"distribution", "std"}}
     method: str
-    samples: object = None  # Monte Carlo draws: {"weave_speed": array, "capsize_speed": array} or None
+    samples: object = None     # Monte Carlo draws: {"weave_speed": array, "capsize_speed": array} or None
+
+    def __post_init__(self):
+        frozen_fields(self, "matrices", "speeds", "eigen", "inputs", "samples")
 
     def display_rows(self):
         """The method, the inputs' spreads and each critical speed's nominal value and std (Jupyter's
@@ -170,7 +227,7 @@ class Propagation(Display):
         rows = [("method", self.method, ""),
                 ("inputs", ", ".join(f"{k} +- {v['std']:.3g}" for k, v in self.inputs.items()), "SI")]
         for key, value in self.speeds.items():
-            nominal, std = value.get("nominal"), value.get("std")
+            nominal, std = value.nominal, value.std
             shown = "none" if nominal is None else f"{nominal:.6g}" + ("" if std is None else f" +- {std:.3g}")
             rows.append((key, shown, "m/s"))
         return rows
@@ -183,8 +240,8 @@ class Propagation(Display):
         2.5 % and 97.5 % quantiles of the real part). The method and the inputs' spreads are the
         frames' ``attrs``."""
         names = list(self.speeds)
-        keys = list(dict.fromkeys(k for v in self.speeds.values() for k in v))
-        columns = {"output": names, **{k: [self.speeds[n].get(k) for n in names] for k in keys}}
+        keys = list(dict.fromkeys(k for v in self.speeds.values() for k in v.to_dict()))
+        columns = {"output": names, **{k: [getattr(self.speeds[n], k) for n in names] for k in keys}}
         units = {k: "1" if k == "fraction_without" else "m/s" for k in keys}
         attrs = {"method": self.method, "inputs": {k: dict(v) for k, v in self.inputs.items()}}
         bands, band_units = {"speed": np.asarray(self.eigen["speeds"], dtype=float)}, {"speed": "m/s"}
@@ -203,8 +260,8 @@ class Propagation(Display):
                     "std_im": m["std_im"], **({"re_q025": m["re_q025"], "re_q975": m["re_q975"]}
                                               if "re_q025" in m else {})}
             for label, m in self.eigen["modes"].items()}}
-        return {"method": self.method, "inputs": self.inputs, "matrices": self.matrices,
-                **self.speeds, "eigenvalues": eig}
+        return {"method": self.method, "inputs": thaw(self.inputs), "matrices": thaw(self.matrices),
+                **{k: v.to_dict() for k, v in self.speeds.items()}, "eigenvalues": eig}
 
 
 def linear_derivatives(params, S, dirs, speeds):
@@ -291,8 +348,8 @@ def propagate(scenario, spreads, method="linear", samples=1000, seed=0, speeds=N
     matrices = {m: {"nominal": np.real(nominal[m]), "std": rss(lambda d, m=m: d["matrices"][m])} for m in nominal}
     speed_out = {}
     for name, c in crossings.items():
-        speed_out[name] = {"nominal": None if c is None else c.speed,
-                           "std": None if c is None else float(rss(lambda d, name=name: d[name]))}
+        speed_out[name] = Estimate(None if c is None else c.speed,
+                                   None if c is None else float(rss(lambda d, name=name: d[name])))
     eig_modes = {label: {"nominal": modes.eigenvalues[:, i],
                          "std_re": rss(lambda d, i=i: d["eig"][:, i].real),
                          "std_im": rss(lambda d, i=i: d["eig"][:, i].imag)}
@@ -400,11 +457,11 @@ def uncertainty(bicycle: "str | os.PathLike | RiderLeanParameters | Scenario",
     --------
     >>> import bikemass as bm
     >>> u = bm.uncertainty("benchmark", {"c": 0.005, "mB": 1.0})
-    >>> w = u.speeds["weave_speed"]
-    >>> print(f"weave {w['nominal']:.4f} +- {w['std']:.4f} m/s")
+    >>> w = u.speeds["weave_speed"]                   # an Estimate: nominal and std in m/s
+    >>> print(f"weave {w.nominal:.4f} +- {w.std:.4f} m/s")
     weave 4.2924 +- 0.0594 m/s
     >>> mc = bm.uncertainty("benchmark", {"c": 0.005, "mB": 1.0}, method="montecarlo", samples=200, seed=1)
-    >>> print(f"Monte Carlo: +- {mc.speeds['weave_speed']['std']:.2f} m/s from {len(mc.samples['weave_speed'])} draws")
+    >>> print(f"Monte Carlo: +- {mc.speeds['weave_speed'].std:.2f} m/s from {len(mc.samples['weave_speed'])} draws")
     Monte Carlo: +- 0.06 m/s from 200 draws
 
     A measured bicycle brings its own (here the Browser's 40 measurements):
@@ -413,7 +470,7 @@ def uncertainty(bicycle: "str | os.PathLike | RiderLeanParameters | Scenario",
     >>> with warnings.catch_warnings():
     ...     warnings.simplefilter("ignore", bm.BikemassWarning)     # its IByy, as measured
     ...     u = bm.uncertainty("browser-measured")
-    >>> print(len(u.inputs), f"weave +- {u.speeds['weave_speed']['std']:.4f} m/s")
+    >>> print(len(u.inputs), f"weave +- {u.speeds['weave_speed'].std:.4f} m/s")
     40 weave +- 0.0453 m/s
     """
     if spreads is not None and not isinstance(spreads, dict):
@@ -462,12 +519,12 @@ def _montecarlo(scenario, spreads, n, seed, speeds, matrices, speed_out, eig_mod
         a = np.array(crit[name])
         ok = a[np.isfinite(a)]
         samples[name] = a
-        speed_out[name] = {"nominal": speed_out[name]["nominal"], "linear_std": speed_out[name]["std"],
-                           "std": float(ok.std(ddof=1)) if ok.size > 1 else None,
-                           "mean": float(ok.mean()) if ok.size else None,
-                           "q025": float(np.quantile(ok, 0.025)) if ok.size else None,
-                           "q975": float(np.quantile(ok, 0.975)) if ok.size else None,
-                           "fraction_without": float(1 - ok.size / n)}
+        speed_out[name] = Estimate(nominal=speed_out[name].nominal, linear_std=speed_out[name].std,
+                                   std=float(ok.std(ddof=1)) if ok.size > 1 else None,
+                                   mean=float(ok.mean()) if ok.size else None,
+                                   q025=float(np.quantile(ok, 0.025)) if ok.size else None,
+                                   q975=float(np.quantile(ok, 0.975)) if ok.size else None,
+                                   fraction_without=float(1 - ok.size / n))
     reals = np.array(reals)                                  # (n, speeds, 4)
     for i, label in enumerate(eig_modes):
         eig_modes[label] = {**eig_modes[label], "re_q025": np.quantile(reals[:, :, i], 0.025, axis=0),
@@ -506,11 +563,11 @@ def uncertainty_figure(result, title="", size=None):
         if result.samples is not None and np.isfinite(result.samples[name]).any():
             a = result.samples[name]
             axes[1].hist(a[np.isfinite(a)], bins=40, color=colour, alpha=0.5, label=name.replace("_", " "))
-        elif s["nominal"] is not None:
-            axes[1].axvspan(s["nominal"] - 2 * s["std"], s["nominal"] + 2 * s["std"], color=colour,
+        elif s.nominal is not None:
+            axes[1].axvspan(s.nominal - 2 * s.std, s.nominal + 2 * s.std, color=colour,
                             alpha=0.3, label=f"{name.replace('_', ' ')} +-2 std")
-        if s["nominal"] is not None:
-            axes[1].axvline(s["nominal"], color=colour)
+        if s.nominal is not None:
+            axes[1].axvline(s.nominal, color=colour)
     axes[1].set_xlabel("critical speed (m/s)")
     axes[1].legend(fontsize=8)
     if title:

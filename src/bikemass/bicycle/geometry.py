@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.convention import steer_axis, steer_axis_tilt
+from ..core.frozen import readonly
 
 STEER_AXIS_TOLERANCE = 0.002
 """How far (m) a head-tube keypoint may sit from the steer axis of wheelbase/trail/head angle."""
@@ -61,16 +62,18 @@ class Geometry:
 
     @property
     def rear_axle(self):
-        return np.array([0.0, 0.0, -self.rear_wheel_radius])
+        """The rear axle (0, 0, -rR) in m, read-only."""
+        return readonly([0.0, 0.0, -self.rear_wheel_radius])
 
     @property
     def front_axle(self):
-        return np.array([self.wheelbase, 0.0, -self.front_wheel_radius])
+        """The front axle (w, 0, -rF) in m, read-only."""
+        return readonly([self.wheelbase, 0.0, -self.front_wheel_radius])
 
     @property
     def steer_ground_point(self):
         """Where the steer axis meets the ground, (w + c, 0, 0)."""
-        return np.array([self.wheelbase + self.trail, 0.0, 0.0])
+        return readonly([self.wheelbase + self.trail, 0.0, 0.0])
 
     def fork_offset(self):
         """Perpendicular distance of the front axle ahead of the steer axis (m)."""

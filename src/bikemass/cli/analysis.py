@@ -11,14 +11,11 @@ from .options import whole
 
 PLOT_FORMAT = "png"
 """The sweep's figure format unless ``--plot-format`` gives one."""
-SPEED_UNITS = {"weave_speed": "m/s", "capsize_speed": "m/s",
-               "d_weave_speed": "m/s per unit of each parameter (SI, angles rad)",
-               "d_capsize_speed": "m/s per unit of each parameter (SI, angles rad)",
-               "elasticity_weave_speed": "1", "elasticity_capsize_speed": "1",
-               "d_stiffness": "m/s per N m/rad", "inputs": "value: SI (m, kg, rad, ...); "
-               "weave_speed, capsize_speed: m/s per SI unit of the input"}
-"""The units block of ``sensitivity``'s JSON/YAML, one entry per top-level key (the parameter
-names inside the derivative mappings are not quantities of their own units there)."""
+INPUTS_UNIT = "value: SI (m, kg, rad, ...); weave_speed, capsize_speed: m/s per SI unit of the input"
+"""The unit of ``sensitivity``'s ``inputs`` (:func:`~bikemass.analysis.sensitivity.geometry_sensitivity`);
+the rest of its units block is what :class:`~bikemass.analysis.sensitivity.Sensitivity` declares,
+one entry per top-level key (the parameter names inside the derivative mappings are not
+quantities of their own units there)."""
 
 
 def register(sub):
@@ -139,7 +136,8 @@ def run_sensitivity(args):
         doc = result.to_dict()
         if geometry:
             doc["inputs"] = geometry
-        return dumps({**doc, "units": {k: u for k, u in SPEED_UNITS.items() if k in doc}}, fmt)
+        declared = {**result.units(), "inputs": INPUTS_UNIT}
+        return dumps({**doc, "units": {k: u for k, u in declared.items() if k in doc}}, fmt)
     dialect.emit(args, render)
     if args.plot:
         dialect.save_plot(args, sensitivity_figure(result, _title(args), options.size), options)
@@ -231,16 +229,23 @@ def run_uncertainty(args):
             return uncertainty_table(result, _title(args))
         if fmt == "csv":
             return uncertainty_csv(result)
-        return dialect.result_document(result.to_dict(), UNCERTAINTY_UNITS, fmt)
+        return dialect.result_document(result.to_dict(), uncertainty_units(), fmt)
     dialect.emit(args, render)
     if args.plot:
         dialect.save_plot(args, uncertainty_figure(result, _title(args), options.size), options)
     return 0
 
 
-UNCERTAINTY_UNITS = {"M": "kg m^2", "C1": "kg m^2 (per m/s)", "K0": "kg m (times g: N m/rad)",
-                     "K2": "kg (times v^2: N m/rad)", "weave_speed": "m/s", "capsize_speed": "m/s",
-                     "eigenvalues": "1/s"}
+def uncertainty_units():
+    """The units block of ``uncertainty``'s JSON/YAML: the matrices' as
+    :class:`~bikemass.models.canonical.CanonicalMatrices` declares them, the critical speeds' as
+    :class:`~bikemass.analysis.uncertainty.Estimate` does, the eigenvalues' in 1/s."""
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..analysis.uncertainty import Estimate
+    from ..models.canonical import CanonicalMatrices
+    speed = Estimate.field_units()["nominal"]
+    return {**{k: u for k, u in CanonicalMatrices.field_units().items() if k != "g"},
+            "weave_speed": speed, "capsize_speed": speed, "eigenvalues": "1/s"}
 
 
 def uncertainty_table(result, title):
@@ -260,8 +265,8 @@ def uncertainty_table(result, title):
                        rows, floatfmt="{:.6g}"))
     rows = []
     for name, s in result.speeds.items():
-        rows.append([name.replace("_", " "), s["nominal"], s["std"]]
-                    + ([s["linear_std"], s["mean"], s["q025"], s["q975"], s["fraction_without"]] if mc else []))
+        rows.append([name.replace("_", " "), s.nominal, s.std]
+                    + ([s.linear_std, s.mean, s.q025, s.q975, s.fraction_without] if mc else []))
     heads = ["critical speed (m/s)", "nominal", "std" + (" (MC)" if mc else "")]
     if mc:
         heads += ["std (linear)", "MC mean", "MC 2.5 %", "MC 97.5 %", "none found"]
@@ -274,10 +279,11 @@ def uncertainty_csv(result):
     montecarlo, the linear std, mean, 2.5 % and 97.5 % quantiles and the fraction without)."""
     mc = result.method == "montecarlo"
     extra = ["linear_std", "mean", "q025", "q975", "fraction_without"] if mc else []
-    rows = [[f"{name}[{i},{j}]", UNCERTAINTY_UNITS[name], m["nominal"][i, j], m["std"][i, j]]
+    units = uncertainty_units()
+    rows = [[f"{name}[{i},{j}]", units[name], m["nominal"][i, j], m["std"][i, j]]
             + ([m["linear_std"][i, j], None, None, None, None] if mc else [])
             for name, m in result.matrices.items() for i in range(2) for j in range(2)]
-    rows += [[name, "m/s", s["nominal"], s["std"]] + [s.get(k) for k in extra] for name, s in result.speeds.items()]
+    rows += [[name, "m/s", s.nominal, s.std] + [getattr(s, k) for k in extra] for name, s in result.speeds.items()]
     return dialect.csv_text(["quantity", "unit", "nominal", "std", *extra], rows)
 
 

@@ -306,13 +306,14 @@ def result_document(data, units, fmt):
     return dumps(with_declared_units(data, units), fmt)
 
 
-def document(data, fmt, extra_units=None):
-    """``data`` as JSON or YAML text with its ``units`` block (the benchmark parameters' included;
-    for a document that is not a typed result: a result declares its own, :func:`result_document`)."""
+def document(data, fmt, units=None):
+    """``data`` as JSON or YAML text with its ``units`` block: the benchmark parameters' and the
+    declared ``units`` (``{key: unit}`` from the types that made ``data``; a typed result
+    declares its own, :func:`result_document`), none guessed from a key's name."""
     # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import dumps, with_units
     from ..models.parameters import parameter_units
-    return dumps(with_units(data, {**parameter_units(), **(extra_units or {})}), fmt)
+    return dumps(with_units(data, {**parameter_units(), **(units or {})}), fmt)
 
 
 def csv_text(headers, rows):

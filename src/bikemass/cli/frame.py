@@ -63,7 +63,10 @@ def run_stiffness(args):
 
     def render(fmt):
         if fmt in ("json", "yaml"):
-            return dialect.document({"procedure": args.procedure, "S": S}, fmt)
+            # lazy: the engine loads numpy, as the frame's model has already; S's unit as a result declares it
+            from ..analysis.engine.stability import StabilityResult
+            return dialect.document({"procedure": args.procedure, "S": S}, fmt,
+                                    {"S": StabilityResult.field_units()["stiffness"]})
         rows = [["roll", *S[0]], ["steer", *S[1]]]
         if fmt == "csv":
             return dialect.csv_text(["S (N m/rad)", "roll", "steer"], rows)
@@ -96,7 +99,7 @@ def run_modes(args):
 
     def render(fmt):
         if fmt in ("json", "yaml"):
-            return dialect.document({"support": args.bc, **modes.to_dict()}, fmt)
+            return dialect.document({"support": args.bc, **modes.to_dict()}, fmt, modes.units())
         rows = [[i + 1, f] for i, f in enumerate(modes.frequencies_hz)]
         if fmt == "csv":
             return dialect.csv_text(["mode", "frequency (Hz)"], rows)

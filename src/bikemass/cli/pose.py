@@ -110,7 +110,9 @@ def _pose_text(args, posed, fmt):
         angles = solution.pose.angles
         return dialect.csv_text(["joint", "angle (deg)", "solved"],
                                 [[j, angles[j], j in solution.free] for j in angles])
-    text = dialect.document(posed.document, fmt)
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..rider.pose import POSE_UNITS
+    text = dialect.document(posed.document, fmt, POSE_UNITS)
     if fmt == "json":
         return text
     header = "".join(f"# {line}\n" for line in (
@@ -123,8 +125,9 @@ def _pose_text(args, posed, fmt):
 
 
 FIT_UNITS = {"plane_gaps": "m", "fit_rms": "m", "fit_max": "m", "chain_gap": "m", "weave_speed": "m/s",
-             "capsize_speed": "m/s", "com_change": "m", "inertia_change": "kg m^2"}
-"""Units of the ``pose-fit`` JSON/YAML keys (besides the shared ones: hip_joints, angles)."""
+             "capsize_speed": "m/s", "com_change": "m", "inertia_change": "kg m^2", "hip_joints": "m",
+             "angles": "deg"}
+"""Units of the keys of a ``pose-fit`` record (:func:`_fit_record`)."""
 
 
 def run_fit(args):

@@ -69,6 +69,15 @@ def _seated(args):
     return seated.rider, seated
 
 
+def rider_units():
+    """Units of :func:`rider_document`'s keys: a :class:`~bikemass.mass.inertia.MassProperties`'
+    declared ones and the contacts' residual (m)."""
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..core.results import declared_units
+    from ..mass.inertia import MassProperties
+    return {**declared_units(MassProperties), "residual": "m"}
+
+
 def rider_document(rider, props, seated, method, segments):
     """``{pose, mass, com, inertia}`` + ``segments: {name: {mass, com, inertia}}`` (if ``segments``)
     + ``contacts: {name: {residual}}`` (m, if seated on a bicycle)."""
@@ -105,22 +114,22 @@ def _rider_text(args, rider, props, seated, fmt):
     from ..core.output import table
 
     if fmt in ("json", "yaml"):
-        return dialect.document(rider_document(rider, props, seated, args.method, args.segments), fmt)
+        return dialect.document(rider_document(rider, props, seated, args.method, args.segments), fmt, rider_units())
     rows = [[name, body.replace("_frame", ""), mp.mass, *mp.com,
              *(mp.inertia[i, j] for i, j in ((0, 0), (1, 1), (2, 2), (0, 2)))]
             for name, body, mp in rider.breakdown(args.method)]
     if fmt == "csv":                                                    # every digit
-        I = props.inertia
-        total = ["total", "", props.mass, *props.com, I[0, 0], I[1, 1], I[2, 2], I[0, 2]]
+        J = props.inertia
+        total = ["total", "", props.mass, *props.com, J[0, 0], J[1, 1], J[2, 2], J[0, 2]]
         return dialect.csv_text(SEGMENT_HEADERS[:6] + [f"{h} (kg m^2)" for h in SEGMENT_HEADERS[6:]],
                                 rows + [total])
-    I = props.inertia
+    J = props.inertia
     lines = [f"Rider {rider.name!r} (pose {rider.pose}; method {args.method}, overlap {args.overlap}"
              f"{', as printed' if args.as_printed else ''})",
              f"mass     {props.mass:.3f} kg",
              "com      [" + ", ".join(f"{_clean(v):.4f}" for v in props.com) + "] m",
              "inertia  about the com, kg m^2 (tensor products):"]
-    lines += ["         [" + ", ".join(f"{_clean(v):9.4f}" for v in row) + "]" for row in I]
+    lines += ["         [" + ", ".join(f"{_clean(v):9.4f}" for v in row) + "]" for row in J]
     text = ("\n".join(lines) + "\n\n"
             "Per segment (centre of mass in the benchmark frame; inertia about the segment's own com):\n"
             + table(SEGMENT_HEADERS, [r[:2] + [_clean(v) for v in r[2:]] for r in rows], floatfmt="{:.4f}"))
@@ -149,7 +158,7 @@ def _comparison_text(poses, props, published, fmt):
 
     if fmt in ("json", "yaml"):
         return dialect.document({"riders": {p: {"bikemass": props[p].to_dict(), "thesis": published[p].to_dict()}
-                                            for p in poses}}, fmt)
+                                            for p in poses}}, fmt, rider_units())
     rows = []
     for p in poses:
         for label, get in TABLE_3_4_ROWS:
@@ -167,7 +176,7 @@ def _riders_text(poses, props, fmt):
     from ..core.output import table
 
     if fmt in ("json", "yaml"):
-        return dialect.document({"riders": {p: {"pose": p, **props[p].to_dict()} for p in poses}}, fmt)
+        return dialect.document({"riders": {p: {"pose": p, **props[p].to_dict()} for p in poses}}, fmt, rider_units())
     if fmt == "csv":
         return dialect.csv_text(["quantity", *poses], [[label, *(get(props[p]) for p in poses)]
                                                        for label, get in TABLE_3_4_ROWS])

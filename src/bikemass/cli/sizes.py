@@ -53,8 +53,9 @@ def every_size(run, many=True):
             import yaml
             load = json.loads if fmt == "json" else yaml.safe_load
             documents = {size: load(out) for size, out in outputs.items()}
+            declared = {k: u for d in documents.values() for k, u in d.get("units", {}).items()}
             text = document({size: {k: v for k, v in d.items() if k != "units"} for size, d in documents.items()},
-                            fmt)
+                            fmt, declared)
         else:
             text = "\n".join(f"size {size}\n{out}" for size, out in outputs.items())
         if getattr(args, "output", None):

@@ -218,10 +218,14 @@ def _models(args):
     return tuple(names)
 
 
+RUN_UNITS = {"weave_speeds": "m/s", "capsize_speeds": "m/s", "stable_speeds": "m/s"}
+"""Units of the keys of a comparison run (the critical speeds and stable ranges of a stability result)."""
+
+
 def comparison_text(runs, fmt):
     """The weave and capsize speeds and strictly stable ranges of every rider x stiffness (x model)."""
     if fmt in ("json", "yaml"):
-        return dialect.document({"runs": runs}, fmt)
+        return dialect.document({"runs": runs}, fmt, RUN_UNITS)
     model = ["model"] if runs and "model" in runs[0] else []
     rows = [[r["rider"], *(r[k] for k in model), r["stiffness"], _speeds(r["weave_speeds"]),
              _speeds(r["capsize_speeds"]), _ranges(r["stable_speeds"], "{:.4f}")] for r in runs]

@@ -5,11 +5,13 @@ mapping (or a list) together with its file and key path and offers typed
 getters, so every loader reports bad input the same way (:class:`InputError`).
 """
 
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from .errors import InputError, short
+from .frozen import freeze, thaw
 from .gate import load_data
 from .units import DIMENSIONS, UnitError, convert
 
@@ -27,6 +29,26 @@ def load_yaml(path):
     if not isinstance(data, dict):
         node.fail("a YAML mapping at the top level")
     return node
+
+
+@dataclass(frozen=True, eq=False)
+class FrozenNode:
+    """A :class:`Node` kept inside a result (a rider's pose document): its ``value`` deep-frozen
+    (read-only mappings, tuples), its ``source`` and ``key``; :meth:`thaw` gives a working
+    :class:`Node` of plain data again."""
+
+    value: object
+    source: object
+    key: str | None
+
+    @classmethod
+    def of(cls, node):
+        """The frozen copy of ``node`` (a FrozenNode is returned as it is)."""
+        return node if isinstance(node, cls) else cls(freeze(node.value), node.source, node.key)
+
+    def thaw(self):
+        """A :class:`Node` over a plain (mutable) copy of the value."""
+        return Node(thaw(self.value), self.source, self.key)
 
 
 class Node:

@@ -94,6 +94,16 @@ def freeze(value):
     return value
 
 
+def thaw(value):
+    """A plain mutable copy of what :func:`freeze` made: mappings as dicts, tuples and lists as
+    lists (as YAML reads them), arrays and everything else as they are."""
+    if isinstance(value, Mapping):
+        return {k: thaw(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [thaw(v) for v in value]
+    return value
+
+
 def frozen_fields(obj, *names):
     """In ``__post_init__`` of a frozen dataclass: make the fields ``names`` immutable."""
     for name in names:

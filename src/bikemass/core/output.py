@@ -156,30 +156,20 @@ def csv_text(headers, rows):
     return buffer.getvalue()
 
 
-UNITS = {
-    "mass": "kg", "com": "m", "inertia": "kg m^2",
-    "S": "N m/rad", "frequencies": "Hz",
-    "speeds": "m/s", "speed": "m/s", "weave_speeds": "m/s", "capsize_speeds": "m/s", "caster_speeds": "m/s",
-    "exact": "m/s", "grid": "m/s", "stable_speeds": "m/s",
-    "eigenvalues": "1/s (pairs: real, imaginary)", "marginal_threshold": "rad/s",
-    "location": "m", "angle": "deg", "angles": "deg", "hip_joints": "m", "residuals": "m", "gaps": "m",
-    "residual": "m",
-}
-"""The SI unit of every key that holds a quantity in a JSON/YAML document bikemass writes (a
-document holding the 26 benchmark parameters passes their units as ``extra``:
-:func:`bikemass.models.parameters.parameter_units`)."""
+def units_of(obj, units):
+    """``{key: unit}`` of every key of ``obj`` (at any depth) that ``units`` declares, in order of
+    appearance: ``units`` comes from the types that made the document (a result's
+    :meth:`~bikemass.core.results.Result.units`, :func:`~bikemass.core.results.declared_units`, the
+    benchmark parameters' :func:`~bikemass.models.parameters.parameter_units`); no unit is guessed
+    from a key's name."""
+    return {k: units[k] for k in document_keys(obj) if k in units}
 
 
-def units_of(obj, extra=None):
-    """``{key: unit}`` for every key of ``obj`` (at any depth) with a unit, in order of appearance."""
-    table = {**UNITS, **(extra or {})}
-    return {k: table[k] for k in document_keys(obj) if k in table}
-
-
-def with_units(obj, extra=None):
-    """The document ``obj`` (a mapping) with a top-level ``units`` block: the one rule by which
-    every JSON/YAML output states its units (keys never carry unit suffixes)."""
-    return {**obj, "units": units_of(obj, extra)}
+def with_units(obj, units):
+    """The document ``obj`` (a mapping) with a top-level ``units`` block of the keys it holds that
+    ``units`` declares (:func:`units_of`): the one rule by which every JSON/YAML output states its
+    units (keys never carry unit suffixes)."""
+    return {**obj, "units": units_of(obj, units)}
 
 
 def strict_json(data):

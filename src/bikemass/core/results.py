@@ -28,6 +28,13 @@ def quantity(unit, doc="", default=MISSING):
     return field(metadata={UNIT: unit, "doc": doc}, **kwargs)
 
 
+def declared_units(cls):
+    """``{field: unit}`` of the fields of the dataclass ``cls`` (or of an instance) declared with
+    :func:`quantity`: a result's, or any typed value's that declares its units (a
+    :class:`~bikemass.mass.inertia.MassProperties`)."""
+    return {f.name: f.metadata[UNIT] for f in fields(cls) if UNIT in f.metadata}
+
+
 def _plain(value):
     if isinstance(value, Result):
         return value.to_dict()
@@ -75,7 +82,7 @@ class Result(Display):
     @classmethod
     def field_units(cls):
         """``{field: unit}`` of the fields declared with :func:`quantity`."""
-        return {f.name: f.metadata[UNIT] for f in fields(cls) if UNIT in f.metadata}
+        return declared_units(cls)
 
     def to_dict(self):
         """Plain data (lists, floats, strings) of every field, nested results included."""

@@ -11,6 +11,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..core.errors import InputError
+from ..core.frozen import frozen_fields
 from ..mass.materials import load_materials
 from .properties import beam_properties
 
@@ -29,6 +30,9 @@ class FrameMesh:
     keypoint_nodes: dict
     """``{keypoint name: node index}``."""
     structure: object
+
+    def __post_init__(self):           # read-only arrays and mappings (a mode result holds the mesh)
+        frozen_fields(self, "nodes", "elements", "tube_index", "properties", "keypoint_nodes")
 
     @property
     def n_dof(self):

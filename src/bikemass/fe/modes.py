@@ -14,7 +14,9 @@ import numpy as np
 import scipy.linalg
 import scipy.sparse.linalg as spla
 
-from ..core.display import Display, brief
+from ..core.display import brief
+from ..core.results import Result, quantity
+from ..core.frozen import frozen_fields
 from ..core.tables import Table
 from ..core.threads import one_blas_thread
 from .assembly import assemble
@@ -27,13 +29,17 @@ DENSE_LIMIT = 400
 
 
 @dataclass(frozen=True, repr=False)
-class Modes(Display):
-    """Natural frequencies (Hz, ascending) and mass-normalised shapes (n_dof, n) on all DOF."""
+class Modes(Result):
+    """Natural frequencies (Hz, ascending) and mass-normalised shapes (n_dof, n) on all DOF
+    (read-only arrays)."""
 
-    frequencies_hz: np.ndarray
-    shapes: np.ndarray
+    frequencies_hz: np.ndarray = quantity("Hz", "natural frequencies, ascending")
+    shapes: np.ndarray                  # mass-normalised (phi^T M phi = 1), a column per mode
     mesh: FrameMesh
     bc: str
+
+    def __post_init__(self):
+        frozen_fields(self, "frequencies_hz", "shapes")
 
     def display_rows(self):
         """The frequencies (Hz), the boundary condition and the model's size (Jupyter's table, ``repr``)."""
@@ -45,6 +51,11 @@ class Modes(Display):
         boundary condition is the frame's ``attrs``."""
         columns = {"mode": np.arange(1, len(self.frequencies_hz) + 1), "frequency": self.frequencies_hz}
         return {"modes": Table(columns, {"frequency": "Hz"}, {"bc": self.bc})}
+
+    @staticmethod
+    def units():
+        """The ``units`` block of :meth:`to_dict`."""
+        return {"frequencies": "Hz"}
 
     def to_dict(self):
         """``{"frequencies": [Hz, ...]}`` (the unit goes in the document's ``units`` block)."""

@@ -9,6 +9,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core.results import quantity
+
 
 def _frozen(a, shape):
     a = np.array(a, dtype=float).reshape(shape)
@@ -26,9 +28,9 @@ def point_inertia(mass, offset):
 class MassProperties:
     """Immutable mass, centre of mass and central inertia tensor (SI, benchmark frame)."""
 
-    mass: float
-    com: np.ndarray
-    inertia: np.ndarray
+    mass: float = quantity("kg", "total mass")
+    com: np.ndarray = quantity("m", "centre of mass (x, y, z), benchmark frame")
+    inertia: np.ndarray = quantity("kg m^2", "3x3 inertia tensor about the centre of mass")
 
     def __post_init__(self):
         object.__setattr__(self, "mass", float(self.mass))
@@ -79,9 +81,9 @@ class MassProperties:
         return {"mass": self.mass, "com": self.com.tolist(), "inertia": self.inertia.tolist()}
 
     def __repr__(self):
-        I = self.inertia
+        J = self.inertia
         return (f"MassProperties(mass={self.mass:.6g} kg, com={np.round(self.com, 6).tolist()} m, "
-                f"Ixx={I[0, 0]:.6g}, Iyy={I[1, 1]:.6g}, Izz={I[2, 2]:.6g}, Ixz={I[0, 2]:.6g} kg m^2)")
+                f"Ixx={J[0, 0]:.6g}, Iyy={J[1, 1]:.6g}, Izz={J[2, 2]:.6g}, Ixz={J[0, 2]:.6g} kg m^2)")
 
 
 def _with_density(mesh, density):

@@ -140,6 +140,7 @@ class _Annular(Solid):
         return m
 
 
+@dataclass(frozen=True, init=False)   # frozen like its base: no attribute can be set
 class Cylinder(_Annular):
     """Solid cylinder of ``diameter`` and ``length`` (m), from its top face centre along +z."""
 
@@ -150,6 +151,7 @@ class Cylinder(_Annular):
         super().__init__(diameter / 2, 0.0, length)
 
 
+@dataclass(frozen=True, init=False)   # frozen like its base: no attribute can be set
 class RoundTube(_Annular):
     """Hollow round tube: ``outer_diameter``, ``wall``, ``length`` (m), along +z."""
 
@@ -160,6 +162,7 @@ class RoundTube(_Annular):
         super().__init__(outer_diameter / 2, outer_diameter / 2 - wall, length)
 
 
+@dataclass(frozen=True, init=False)   # frozen like its base: no attribute can be set
 class Hoop(_Annular):
     """Annular disc (wheel hoop): ``inner_diameter`` (0 = full disc), ``outer_diameter``,
     ``thickness`` (m) along z, centred on its origin (the hub centre)."""

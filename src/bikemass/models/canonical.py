@@ -14,23 +14,30 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..core.display import Display
+from ..core.results import Result, quantity
+from ..core.frozen import freeze
 
 
 @dataclass(frozen=True, repr=False)
-class CanonicalMatrices(Display):
-    """``M, C1, K0, K2`` (2x2 arrays) and gravity ``g`` (m/s^2) of one bicycle."""
+class CanonicalMatrices(Result):
+    """``M, C1, K0, K2`` (2x2 read-only arrays) and gravity ``g`` (m/s^2) of one bicycle."""
 
-    M: np.ndarray
-    C1: np.ndarray
-    K0: np.ndarray
-    K2: np.ndarray
-    g: float
+    M: np.ndarray = quantity("kg m^2", "mass matrix")
+    C1: np.ndarray = quantity("kg m^2 (per m/s)", "velocity-dependent damping-like matrix (times v)")
+    K0: np.ndarray = quantity("kg m (times g: N m/rad)", "gravity-dependent stiffness matrix (times g)")
+    K2: np.ndarray = quantity("kg (times v^2: N m/rad)", "velocity-dependent stiffness matrix (times v^2)")
+    g: float = quantity("m/s^2", "gravity")
+
+    def __post_init__(self):
+        for name in ("M", "C1", "K0", "K2"):           # read-only arrays (copied only when writable)
+            a = getattr(self, name)
+            if type(a) is not np.ndarray or a.flags.writeable:
+                object.__setattr__(self, name, freeze(np.asarray(a)))
 
     @property
     def gK0(self):
-        """Static (gravity) stiffness ``g K0`` in N m/rad."""
-        return self.g * self.K0
+        """Static (gravity) stiffness ``g K0`` in N m/rad (read-only)."""
+        return _readonly(self.g * self.K0)
 
     def stiffness(self, v):
         """``g K0 + v**2 K2`` for speeds ``v`` (array -> shape (n, 2, 2))."""
@@ -108,9 +115,15 @@ def _sin_cos(x):
 def _matrix(rows):
     """A 2x2 matrix from entries that may be arrays of one shape (B,): shape (2, 2) or (B, 2, 2)."""
     if all(type(x) is float for row in rows for x in row):
-        return np.array(rows)
+        return _readonly(np.array(rows))
     entries = np.broadcast_arrays(*(np.asarray(x) for row in rows for x in row))
-    return np.stack(entries, axis=-1).reshape(*entries[0].shape, 2, 2)
+    return _readonly(np.stack(entries, axis=-1).reshape(*entries[0].shape, 2, 2))
+
+
+def _readonly(a):
+    """``a`` (a new array nobody else holds) made read-only in place, without a copy."""
+    a.setflags(write=False)
+    return a
 
 
 def _spin_momentum(spin_inertia, radius):

@@ -9,7 +9,7 @@ for the file format.
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..core.config import Node, load_yaml
+from ..core.config import FrozenNode, Node, load_yaml
 from ..core.errors import InputError
 from ..core.gate import plain_input
 from ..core.paths import available, bodies_dir, resolve
@@ -39,7 +39,8 @@ def shipped_poses() -> list[str]:
 class Rider:
     """A posed rider: ``pose`` as asked for, display ``name``, and its ``parts`` (tuple of Part);
     ``spec`` = (pose node, as_printed) it was read from, which lets a bicycle re-seat it
-    (:mod:`bikemass.rider.seating`), or None.
+    (:mod:`bikemass.rider.seating`), or None; the node is kept as a read-only
+    :class:`~bikemass.core.config.FrozenNode` (its ``thaw()`` gives a working Node).
 
     A chain-form pose without ``bike:`` (a person with a posture rule: hands on a grip, a torso
     lean, the saddle) has no parts until a bicycle seats it: :attr:`needs_bicycle` is True and
@@ -68,6 +69,9 @@ class Rider:
 
     def __post_init__(self):
         object.__setattr__(self, "parts", tuple(self.parts))
+        if self.spec is not None:
+            node, as_printed = self.spec
+            object.__setattr__(self, "spec", (FrozenNode.of(node), as_printed))
 
     @property
     def needs_bicycle(self) -> bool:

@@ -19,12 +19,14 @@ head far end at the neck, upper arm at the shoulder, lower arm at the elbow (upp
 arm far end), thigh at the hip joint, lower leg at the knee (thigh far end).
 """
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 
 from ..core.config import load_yaml
+from ..core.frozen import FrozenMap, LazyMap, freeze, frozen_fields
 from ..core.convention import thesis_segment_axis, thesis_segment_rotation
 from .anthropometry import load_anthropometry
 
@@ -66,6 +68,9 @@ class ChainBody:
     on the crank axis or pedal than its far end (:data:`FEET`; a yeadon body's
     ``bicycleparameters``)."""
     leg_length: float | None = None
+
+    def __post_init__(self):
+        frozen_fields(self, "lengths", "neck", "shoulder", "hip", "feet")
     """Floor-to-crotch length (m) kept when the lower leg's chain length is another placement's."""
 
     @property
@@ -126,9 +131,15 @@ class ChainPose:
 
     body: ChainBody
     root: np.ndarray
-    angles: dict = field(default_factory=dict)
-    _points: dict = field(default_factory=dict, init=False, repr=False)
-    """:meth:`points` of each side, once computed (a solver's residual asks for several points of one pose)."""
+    angles: Mapping = field(default_factory=FrozenMap)
+    _points: Mapping = field(default_factory=FrozenMap, init=False, repr=False)
+    """:meth:`points` of each side, computed when first read (a solver's residual asks for several
+    points of one pose)."""
+
+    def __post_init__(self):
+        frozen_fields(self, "root", "angles")
+        object.__setattr__(self, "_points", FrozenMap(
+            {side: LazyMap(lambda side=side: freeze(self._compute_points(side))) for side in ("right", "left")}))
 
     def angle(self, joint, side="right"):
         """Joint angle (deg); ``side='left'`` gives ``hip_left``/``knee_left`` when set."""
@@ -151,10 +162,9 @@ class ChainPose:
 
     def points(self, side="right"):
         """Named points (m, benchmark frame) of the right limbs, or the left legs' with ``side``
-        (computed once per side; the arrays are shared, do not change them)."""
-        if side not in self._points:
-            self._points[side] = self._compute_points(side)
-        return self._points[side]
+        (a read-only mapping of read-only arrays, computed once per side)."""
+        points = self._points.get(side)
+        return freeze(self._compute_points(side)) if points is None else points
 
     def _compute_points(self, side):
         a, L, b = self.segment_angles(side), self.body.lengths, self.body

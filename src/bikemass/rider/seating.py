@@ -125,7 +125,8 @@ def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, toleran
                            (f"{pose.name}: contacts with {bicycle.name} not checked (a Rider built "
                             "from parts carries no body to seat; pass its pose instead)",))
     if isinstance(pose, Rider):
-        (node, as_printed), source, pose = pose.spec, pose.spec[0].source, pose.pose
+        (frozen, as_printed), source, pose = pose.spec, pose.spec[0].source, pose.pose
+        node = frozen.thaw()
     elif isinstance(pose, Node):
         node, source = pose, pose.source
         pose = node.value.get("name", str(source)) if isinstance(node.value, dict) else str(source)

@@ -10,6 +10,7 @@ symmetric and both feet sit on the crank axis (the pedals' midpoint, where the t
 puts them), with a crank angle each foot is on its own pedal.
 """
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -17,6 +18,7 @@ from scipy.optimize import least_squares
 
 from ..core.convention import thesis_segment_axis
 from ..core.errors import InputError
+from ..core.frozen import frozen_fields
 from .chain import JOINTS, ChainPose
 
 REACH_TOLERANCE = 1e-3
@@ -48,15 +50,21 @@ class Target:
     point_name: str = ""
     side: str = "right"
 
+    def __post_init__(self):
+        frozen_fields(self, "target")
+
 
 @dataclass(frozen=True, eq=False)
 class Solution:
     """A solved :class:`ChainPose`, the contacts' residual distances (m, x-z) and the free joints."""
 
     pose: ChainPose
-    residuals: dict
+    residuals: Mapping
     free: tuple
     targets: tuple
+
+    def __post_init__(self):
+        frozen_fields(self, "residuals", "free", "targets")
 
     def check_reachable(self, tolerance=REACH_TOLERANCE):
         """Raise :class:`InputError` naming the worst contact missed by more than ``tolerance`` (m)."""

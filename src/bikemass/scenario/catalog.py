@@ -7,6 +7,7 @@ source (``<mapping>`` for Python values), the key and what was expected.
 
 import os
 import warnings
+from collections.abc import Mapping
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -16,6 +17,7 @@ from ..bicycle.derived_chart import derived_chart
 from ..core.choices import RIGID, Beam, Combine, Procedure, Source, check
 from ..core.config import load_yaml
 from ..core.errors import BikemassWarning, InputError
+from ..core.frozen import freeze, readonly
 from ..core.paths import closest_name
 from ..mass.materials import Material, load_materials
 from ..models.plausibility import check_stiffness, warn_stiffness
@@ -112,7 +114,7 @@ def stiffness(bicycle: BicycleLike, which: "str | os.PathLike | Material | Array
     Returns
     -------
     numpy.ndarray of shape (2, 2), or None
-        S in N m/rad (rows and columns: roll, steer), ``None`` for a rigid frame.
+        S in N m/rad (rows and columns: roll, steer), ``None`` for a rigid frame; read-only.
 
     Raises
     ------
@@ -138,7 +140,7 @@ def stiffness(bicycle: BicycleLike, which: "str | os.PathLike | Material | Array
     if which is None or (isinstance(which, str) and which in (RIGID, "rigid")):
         return None
     if not isinstance(which, (str, os.PathLike, Material)):
-        return stiffness_matrix(which)
+        return readonly(stiffness_matrix(which))
     materials = load_materials()
     if isinstance(which, Material):
         return _material_stiffness(load_bicycle(bicycle), which, source, procedure, beam)
@@ -152,7 +154,7 @@ def stiffness(bicycle: BicycleLike, which: "str | os.PathLike | Material | Array
                                               f"a YAML file with S{closest_name(path, [RIGID, *names])}")
     node = load_yaml(path)
     node.check_keys(required=("S",), optional=("units", "source", "name"))
-    return check_stiffness(node["S"])
+    return readonly(check_stiffness(node["S"]))
 
 
 def _material_stiffness(model, material, source, procedure, beam):
@@ -165,7 +167,7 @@ def _material_stiffness(model, material, source, procedure, beam):
                   Source.PUBLISHED: f"a published stiffness for {material.key}",
                   Source.COMPUTED: "a rear-frame structure for the beam model"}[source]
         raise InputError(model.source, "stiffness", wanted)
-    return S
+    return readonly(S)
 
 
 def _positive_definite(S):
@@ -185,7 +187,7 @@ def stiffness_matrix(values):
     return S
 
 
-def geometry_chart(bicycle: BicycleLike, size: str | None = None) -> dict:
+def geometry_chart(bicycle: BicycleLike, size: str | None = None) -> Mapping:
     """The derived geometry chart of a bicycle: what a manufacturer's chart lists.
 
     Parameters
@@ -197,8 +199,8 @@ def geometry_chart(bicycle: BicycleLike, size: str | None = None) -> dict:
 
     Returns
     -------
-    dict
-        ``{name: value}`` in :data:`~bikemass.bicycle.derived_chart.CHART_ORDER`: lengths in m
+    Mapping
+        Read-only ``{name: value}`` in :data:`~bikemass.bicycle.derived_chart.CHART_ORDER`: lengths in m
         (``wheelbase``, ``trail``, ``stack``, ``reach``, ...), angles in deg
         (``head_tube_angle``, ``seat_tube_angle``).
 
@@ -218,4 +220,4 @@ def geometry_chart(bicycle: BicycleLike, size: str | None = None) -> dict:
     >>> print(f"stack {chart['stack']:.3f} m, reach {chart['reach']:.3f} m, trail {chart['trail']:.4f} m")
     stack 0.590 m, reach 0.388 m, trail 0.0628 m
     """
-    return derived_chart(load_bicycle(bicycle, size=size))
+    return freeze(derived_chart(load_bicycle(bicycle, size=size)))

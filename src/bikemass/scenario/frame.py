@@ -9,6 +9,7 @@ import numpy as np
 
 from ..core.choices import Beam, Procedure, Support, check
 from ..core.errors import InputError
+from ..core.frozen import readonly
 from ..fe.defaults import DEFAULT_ELEMENT_SIZE, MAX_ELEMENTS
 from ..fe.model import element_count, resolve_material
 from ..mass.materials import Material
@@ -84,7 +85,7 @@ def frame_stiffness(bicycle: BicycleLike, material: "str | Material | None" = No
     Returns
     -------
     numpy.ndarray of shape (2, 2)
-        S in N m/rad on (roll, steer) at the bottom head-tube keypoint, dropouts clamped.
+        S in N m/rad on (roll, steer) at the bottom head-tube keypoint, dropouts clamped; read-only.
 
     Raises
     ------
@@ -112,7 +113,7 @@ def frame_stiffness(bicycle: BicycleLike, material: "str | Material | None" = No
     procedure, beam = check(Procedure, procedure), check(Beam, beam)
     structure, material = frame_structure(bicycle), _material(material)
     try:
-        return equivalent_stiffness(structure, material, procedure.value, timoshenko=beam is Beam.TIMOSHENKO)
+        return readonly(equivalent_stiffness(structure, material, procedure.value, timoshenko=beam is Beam.TIMOSHENKO))
     except ValueError as exc:           # a structure its dropouts do not hold
         raise InputError(getattr(bicycle, "source", str(bicycle)), "structure", str(exc)) from None
 

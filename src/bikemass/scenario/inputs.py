@@ -336,7 +336,7 @@ class Inputs:
         if isinstance(rider, Rider):
             if rider.spec is not None:
                 node, _ = rider.spec
-                source, doc = str(node.source), copy.deepcopy(node.value)
+                source, doc = str(node.source), node.thaw().value
         elif isinstance(rider, Mapping):
             source, doc = MAPPING, plain_input(rider, MAPPING)
         elif isinstance(rider, (str, os.PathLike)) and rider != "none":

@@ -37,7 +37,8 @@ DOWNLOADS = {
 
 def stability_document(evaluation):
     """The ``bikemass stability --format json`` document of an :class:`~.engine.Evaluation`."""
-    return written(with_units(plain({"frame": evaluation.frame, **evaluation.stability.to_dict()}), parameter_units()))
+    return written(with_units(plain({"frame": evaluation.frame, **evaluation.stability.to_dict()}),
+                              evaluation.stability.units()))
 
 
 def parameters_document(params):

@@ -49,13 +49,13 @@ class Modes(Result):
 
     @property
     def natural_frequency(self):
-        """``|l|`` in rad/s, shape (n, m)."""
-        return natural_frequency(self.eigenvalues)
+        """``|l|`` in rad/s, shape (n, m), read-only."""
+        return freeze(natural_frequency(self.eigenvalues))
 
     @property
     def damping_ratio(self):
-        """``-Re(l) / |l|`` (dimensionless), shape (n, m)."""
-        return damping_ratio(self.eigenvalues)
+        """``-Re(l) / |l|`` (dimensionless), shape (n, m), read-only."""
+        return freeze(damping_ratio(self.eigenvalues))
 
     def names(self):
         """What each root is at every speed (array (n, m) of str, columns as ``labels``): ``weave``

@@ -26,7 +26,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...core.display import Display
+from ...core.results import Result, quantity
 from ...core.real import finite_real
 from ...core.errors import BikemassWarning, InputError, short, wrong_type
 from ...core.frozen import readonly, short_repr
@@ -43,7 +43,7 @@ TOLERANCE = 1e-9
 
 
 @dataclass(frozen=True, repr=False)
-class SteadyTurn:
+class SteadyTurn(Result):
     """One steady turn of the nonlinear Whipple bicycle.
 
     Attributes
@@ -69,25 +69,24 @@ class SteadyTurn:
     lean 0.2444 rad, steer 0.1037 rad, torque -0.1469 N m
     """
 
-    speed: float
-    radius: float
-    roll: float
-    steer: float
-    pitch: float
-    steer_torque: float
-    yaw_rate: float
-    linear_roll: float
-    linear_steer: float
-    linear_steer_torque: float
+    speed: float = quantity("m/s", "forward speed of the rear contact")
+    radius: float = quantity("m", "radius of the rear contact's circle, positive turning right")
+    roll: float = quantity("rad", "lean, right positive")
+    steer: float = quantity("rad", "steer angle")
+    pitch: float = quantity("rad", "the rear frame's pitch")
+    steer_torque: float = quantity("N m", "the rider's steer torque that holds the turn")
+    yaw_rate: float = quantity("rad/s", "turning rate")
+    linear_roll: float = quantity("rad", "the linear model's lean at the same speed and radius")
+    linear_steer: float = quantity("rad", "the linear model's steer angle")
+    linear_steer_torque: float = quantity("N m", "the linear model's steer torque")
 
     def to_dict(self):
         """Plain ``{name: float}`` (SI; angles in rad)."""
         return {k: float(getattr(self, k)) for k in self.__dataclass_fields__}
 
     def unit_block(self):
-        """The unit of each key of :meth:`to_dict`."""
-        return {"speed": "m/s", "radius": "m", "roll": "rad", "steer": "rad", "pitch": "rad", "steer_torque": "N m",
-                "yaw_rate": "rad/s", "linear_roll": "rad", "linear_steer": "rad", "linear_steer_torque": "N m"}
+        """The unit of each key of :meth:`to_dict`: its fields' declared units (:meth:`units`)."""
+        return self.units()
 
     def __repr__(self):
         return short_repr(self, ("speed", f"{self.speed:g} m/s"), ("radius", f"{self.radius:.4g} m"),
@@ -96,7 +95,7 @@ class SteadyTurn:
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class HandsFreeTurns(Display):
+class HandsFreeTurns(Result):
     """The hands-free steady turns (no steer torque) of the nonlinear Whipple bicycle, one per
     steer angle.
 
@@ -118,12 +117,12 @@ class HandsFreeTurns(Display):
     6.0243 m/s; 6.0212 m/s at 0.01 rad of steer
     """
 
-    steer: np.ndarray
-    speed: np.ndarray
-    roll: np.ndarray
-    radius: np.ndarray
-    pitch: np.ndarray
-    capsize_speed: float
+    steer: np.ndarray = quantity("rad", "steer angles the family is computed at")
+    speed: np.ndarray = quantity("m/s", "forward speed of each turn (NaN: no circle found)")
+    roll: np.ndarray = quantity("rad", "lean of each turn")
+    radius: np.ndarray = quantity("m", "radius of the rear contact's circle")
+    pitch: np.ndarray = quantity("rad", "the rear frame's pitch")
+    capsize_speed: float = quantity("m/s", "the linear model's det(g K0 + v^2 K2) = 0 speed")
 
     def __post_init__(self):
         for name in ("steer", "speed", "roll", "radius", "pitch"):
@@ -135,8 +134,8 @@ class HandsFreeTurns(Display):
                 "roll": self.roll.tolist(), "radius": self.radius.tolist(), "pitch": self.pitch.tolist()}
 
     def unit_block(self):
-        """The unit of each key of :meth:`to_dict`."""
-        return {"capsize_speed": "m/s", "steer": "rad", "speed": "m/s", "roll": "rad", "radius": "m", "pitch": "rad"}
+        """The unit of each key of :meth:`to_dict`: its fields' declared units (:meth:`units`)."""
+        return self.units()
 
     def __repr__(self):
         return short_repr(self, ("turns", len(self.steer)), ("capsize_speed", f"{self.capsize_speed:.4f} m/s"))
