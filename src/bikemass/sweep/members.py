@@ -26,7 +26,7 @@ from ..models.family import state_coefficients
 from ..models.parameters import NAMES
 from ..models.plausibility import refused_parameters
 from .table import NUMBERS, Outcomes
-from .vectorised import SPEEDS, _real_column
+from .vectorised import SPEEDS, _real_column, completed
 
 MASSES = ("mR", "mB", "mH", "mF")
 """The masses whose sum is a row's ``total_mass``, in the reference's order."""
@@ -116,10 +116,4 @@ def evaluate_member_batch(scenario, changes, count, max_speed, reference):
                       getattr(p, m) + (columns[m] - base[m]) if m in columns else getattr(p, m) for m in MASSES]
             total = masses[0] + masses[1] + masses[2] + masses[3]          # the reference's order
             values["total_mass"][usable] = np.broadcast_to(total, (count,))[usable]
-    errors = [None] * count
-    for i in np.flatnonzero(~usable).tolist():
-        row = reference({k: v[i] for k, v in changes.items()})
-        errors[i] = row["error"]
-        for k in NUMBERS:
-            values[k][i] = np.nan if row[k] is None else row[k]
-    return Outcomes(values, errors)
+    return completed(values, usable, changes, reference)

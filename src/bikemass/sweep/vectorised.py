@@ -166,7 +166,13 @@ def evaluate_batch(model, changes, count, max_speed, reference):
             values[k][rows[done]] = speeds[k]
     total = columns["mR"] + columns["mB"] + columns["mH"] + columns["mF"]    # the reference's order
     values["total_mass"][usable] = np.broadcast_to(total, (count,))[usable]
-    errors = [None] * count
+    return completed(values, usable, changes, reference)
+
+
+def completed(values, usable, changes, reference):
+    """:class:`Outcomes` of a chunk: ``values`` (``{column: array}``) where ``usable``, and every other
+    row evaluated by ``reference`` (the one-by-one route: its numbers, or its error message)."""
+    errors = [None] * len(usable)
     for i in np.flatnonzero(~usable).tolist():
         row = reference({k: v[i] for k, v in changes.items()})
         errors[i] = row["error"]
