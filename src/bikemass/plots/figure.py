@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 from matplotlib import figure, rc_context
 from matplotlib.backend_bases import FigureCanvasBase
+from matplotlib.layout_engine import ConstrainedLayoutEngine
 from matplotlib.backends.backend_agg import FigureCanvasAgg, RendererAgg
 from PIL import Image
 
@@ -227,19 +228,87 @@ def figure_bytes(fig, fmt="png", dpi=DPI):
     if fmt not in ("pdf", "svg", "svgz", "eps", "ps") and width * height * dpi * dpi > MAX_PIXELS:
         raise InputError("dpi", dpi, f"a figure of at most {MAX_PIXELS} pixels ({width:g} x {height:g} in at "
                          f"{dpi:g} dpi is {width * height * dpi * dpi:.3g})")
-    buffer = BytesIO()
     with RENDERING, rc_context(VECTOR_TEXT):
         _fit_titles(fig, _kept_renderer)
         if fmt == "png":
-            canvas = fig.canvas
-            _KeptRendererCanvas(fig)               # attaches itself to fig for this drawing
-            try:
-                fig.savefig(buffer, format="rgba", dpi=dpi)
-            finally:
-                fig.set_canvas(canvas)             # the caller's canvas back (drawn later without the lock)
-        else:
-            fig.savefig(buffer, format=fmt, dpi=dpi)
-    return _png(buffer.getvalue(), fig, dpi) if fmt == "png" else buffer.getvalue()
+            return _png(_rgba(fig, dpi)[0], fig, dpi)
+        buffer = BytesIO()
+        fig.savefig(buffer, format=fmt, dpi=dpi)
+    return buffer.getvalue()
+
+
+def _rgba(fig, dpi, measure=None):
+    """``(pixels, measured)``: ``fig`` drawn at ``dpi`` by a :class:`_KeptRendererCanvas` (RGBA
+    bytes) and ``measure(fig, renderer)`` called after its last draw (None without ``measure``)."""
+    canvas, buffer, measured = fig.canvas, BytesIO(), []
+    kept = _KeptRendererCanvas(fig)                # attaches itself to fig for this drawing
+    cid = kept.mpl_connect("draw_event", lambda event: measured.append(measure(fig, event.renderer))) if measure else None
+    try:
+        fig.savefig(buffer, format="rgba", dpi=dpi)
+    finally:
+        if cid is not None:
+            kept.mpl_disconnect(cid)               # the callbacks live on the figure
+        fig.set_canvas(canvas)                     # the caller's canvas back (drawn later without the lock)
+    return buffer.getvalue(), (measured[-1] if measured else None)
+
+
+LAYOUT_TOLERANCE = 0.5
+"""Pixels an axes' decorations may reach past the room fixed margins leave them (:func:`png_bytes`)."""
+
+
+def _decorations(fig, renderer):
+    """Per axes of ``fig``: how far (pixels: left, bottom, right, top) its labels, ticks, legend
+    and texts reach past its box, as constrained layout measures them."""
+    out = []
+    for ax in fig.axes:
+        tight, box = ax.get_tightbbox(renderer, for_layout_only=True), ax.bbox
+        out.append((0.0,) * 4 if tight is None else
+                   (box.x0 - tight.x0, box.y0 - tight.y0, tight.x1 - box.x1, tight.y1 - box.y1))
+    return tuple(out)
+
+
+def _plain(fig):
+    """Whether ``fig`` is laid out by constrained layout and holds only subplots (no suptitle,
+    figure texts or legends, colorbars or insets): what a kept layout can place."""
+    return (isinstance(fig.get_layout_engine(), ConstrainedLayoutEngine) and not fig.legends and not fig.texts
+            and getattr(fig, "_suptitle", None) is None and getattr(fig, "_supxlabel", None) is None
+            and getattr(fig, "_supylabel", None) is None
+            and all(ax.get_subplotspec() is not None and not hasattr(ax, "_colorbar") for ax in fig.axes))
+
+
+def png_bytes(fig, dpi=DPI, margins=None):
+    """``fig`` as PNG bytes, as :func:`figure_bytes`; with ``margins``, at a layout fixed in advance.
+
+    Constrained layout measures every label of a figure in a drawing pass of its own before the
+    figure is drawn (a fifth to a third of drawing a study figure). With ``margins`` = (left,
+    bottom, right, top) in inches, a figure of one subplot (no suptitle, figure legend or text)
+    is drawn once with its axes that far from the figure's edges, and its labels, ticks, legend
+    and texts measured as they are drawn; if they reach into the padding constrained layout keeps
+    at an edge (``w_pad``, ``h_pad``) or past it, the figure is laid out by constrained layout and
+    drawn again. So every figure fits as constrained layout would fit it, and figures of one kind
+    given the same margins have their axes at the same place."""
+    width, height = fig.get_size_inches()
+    if width * height * dpi * dpi > MAX_PIXELS:
+        return figure_bytes(fig, "png", dpi)      # the error, as figure_bytes words it
+    with RENDERING, rc_context(VECTOR_TEXT):
+        _fit_titles(fig, _kept_renderer)
+        engine = fig.get_layout_engine()
+        if margins is not None and len(fig.axes) == 1 and _plain(fig):
+            left, bottom, right, top = margins
+            fig.set_layout_engine(None)
+            if fig.get_layout_engine() is None and left + right < width and bottom + top < height:
+                fig.axes[0].set_position([left / width, bottom / height, 1 - (left + right) / width,
+                                          1 - (bottom + top) / height])
+                rgba, (reach,) = _rgba(fig, dpi, _decorations)
+                pads = engine.get()
+                room = [(m - pads["w_pad" if i % 2 == 0 else "h_pad"]) * dpi + LAYOUT_TOLERANCE
+                        for i, m in enumerate(margins)]
+                if all(r <= space for r, space in zip(reach, room)):
+                    return _png(rgba, fig, dpi)
+            fig.set_layout_engine(engine)          # labels wider than the margins: laid out for themselves
+            fig.axes[0].set_in_layout(True)        # (set_position took the axes out of the layout)
+        rgba, _ = _rgba(fig, dpi)
+    return _png(rgba, fig, dpi)
 
 
 def _png(rgba, fig, dpi):
