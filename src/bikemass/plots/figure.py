@@ -286,7 +286,31 @@ def png_bytes(fig, dpi=DPI, margins=None):
     and texts measured as they are drawn; if they reach into the padding constrained layout keeps
     at an edge (``w_pad``, ``h_pad``) or past it, the figure is laid out by constrained layout and
     drawn again. So every figure fits as constrained layout would fit it, and figures of one kind
-    given the same margins have their axes at the same place."""
+    given the same margins have their axes at the same place.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+        The figure (laid out by constrained layout, as :func:`new_figure` makes them).
+    dpi : float
+        Resolution (dots per inch).
+    margins : tuple of float, optional
+        (left, bottom, right, top) in inches from the figure's edges to its axes; ``None``:
+        constrained layout.
+
+    Returns
+    -------
+    bytes
+        The PNG file's content.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> from bikemass.plots.figure import png_bytes
+    >>> fig = bm.plot_eigenvalues(bm.eigenvalues(bm.parameters("benchmark")))
+    >>> png_bytes(fig, 100, margins=(0.8, 0.6, 2.0, 0.4))[:8]
+    b'\\x89PNG\\r\\n\\x1a\\n'
+    """
     width, height = fig.get_size_inches()
     if width * height * dpi * dpi > MAX_PIXELS:
         return figure_bytes(fig, "png", dpi)      # the error, as figure_bytes words it
