@@ -262,3 +262,40 @@ def test_every_figure_of_a_long_named_bicycle_keeps_its_text_inside(tmp_path, lo
     png = tmp_path / "figure.png"
     assert main([a.format(bike=long_named) for a in argv] + ["--plot", str(png), "--quiet"]) == 0
     assert _edges_blank(png)
+
+
+def _eigenvalue_figure():
+    """The benchmark's eigenvalue figure as the study draws it (legend beside the axes)."""
+    from bikemass.plots.stability import CriticalSpeeds, eigenvalue_figure
+    p = bm.parameters("benchmark")
+    return eigenvalue_figure(bm.eigenvalues(p), CriticalSpeeds(), "Benchmark bicycle")
+
+
+def _left_spine_column(pixels):
+    """The first column where most rows of the image's middle third are dark: the axes' left spine."""
+    rows = pixels[pixels.shape[0] // 3: 2 * pixels.shape[0] // 3, :, :3].mean(axis=2)
+    return int(np.argmax((rows < 0.3).mean(axis=0) > 0.9))
+
+
+def test_fixed_margins_place_the_axes_where_asked(tmp_path):
+    """png_bytes with margins that hold the labels: the axes' left spine at the left margin
+    (0.9 in at 100 dpi: column 90, within 1 px), nothing cut at the edges."""
+    from bikemass.plots.figure import png_bytes
+    path = tmp_path / "fixed.png"
+    path.write_bytes(png_bytes(_eigenvalue_figure(), 100, margins=(0.9, 0.6, 2.6, 0.4)))
+    pixels = matplotlib.image.imread(str(path))
+    assert abs(_left_spine_column(pixels) - 90) <= 1
+    assert _edges_blank(path)
+
+
+def test_margins_too_small_for_the_labels_fall_back_to_constrained_layout(tmp_path):
+    """png_bytes with margins the legend does not fit in (0.2 in on the right): the figure is laid
+    out by constrained layout instead: the same spine column as figure_bytes (within 1 px), no ink
+    cut at the edges."""
+    from bikemass.plots.figure import png_bytes
+    fixed, free = tmp_path / "fixed.png", tmp_path / "free.png"
+    fixed.write_bytes(png_bytes(_eigenvalue_figure(), 100, margins=(0.9, 0.6, 0.2, 0.4)))
+    free.write_bytes(figure_bytes(_eigenvalue_figure(), "png", 100))
+    columns = [_left_spine_column(matplotlib.image.imread(str(p))) for p in (fixed, free)]
+    assert abs(columns[0] - columns[1]) <= 1 and abs(columns[0] - 90) > 3
+    assert _edges_blank(fixed)

@@ -215,7 +215,7 @@ def test_a_number_among_stiffness_choices_is_refused(tmp_path, capsys):
 
 def test_chunk_sizes():
     """Default: 20 chunks in this process; on Dask equal chunks, one per worker thread for
-    parameter-only sweeps and 4 otherwise, never more than 2000 configurations; the spec's
+    parameter-only sweeps and 12 otherwise, never more than 2000 configurations; the spec's
     chunk wins; missing ranges are cut at that size."""
     from bikemass.sweep.layout import Kept, missing_ranges, split
     from bikemass.sweep.run import chunk_size
@@ -223,7 +223,7 @@ def test_chunk_sizes():
     from bikemass.sweep.vectorised import takes
     assert chunk_size(2050) == 103 and chunk_size(2050, 2, fixed=50) == 50
     assert chunk_size(2000, 0, cheap=True) == 100                    # a cluster with no worker yet
-    assert chunk_size(2050, 2) == 257 and chunk_size(2050, 1) == 513 and chunk_size(3, 8) == 1
+    assert chunk_size(2050, 2) == 86 and chunk_size(2050, 1) == 171 and chunk_size(3, 8) == 1   # 12 rounds
     assert chunk_size(2050, 2, cheap=True) == 1025 and chunk_size(2050, 1, cheap=True) == 2050
     assert chunk_size(10 ** 6, 2, cheap=True) == 100_000 and chunk_size(10 ** 7, None, cheap=True) == 100_000
     assert chunk_size(10 ** 6, 2) == 2000 and chunk_size(10 ** 6 + 1, 2) == 1993

@@ -16,6 +16,7 @@ A job is ``(function, *arguments, path, title)``; ``function(*arguments, title)`
 the Figure.
 """
 
+from ..core.output import write_atomic
 from ..rider import THESIS_POSES
 from .configurations import BICYCLES, THESIS_NAMES, configurations
 from .handling import stable_speeds
@@ -124,10 +125,16 @@ def job_path(job):
     return job[-2]
 
 
+MARGINS = {"draw_eigenvalues": (0.68, 0.48, 2.04, 0.24), "draw_critical": (0.78, 0.48, 1.39, 0.24)}
+"""Margins (inches: left, bottom, right, top) of the figures drawn at a fixed layout
+(:func:`~bikemass.plots.figure.png_bytes`): room for the labels and legends of most of the study's
+figures of the kind (the others are laid out for themselves)."""
+
+
 def run_job(job):
-    """Draw one figure and save it (PNG); returns the path."""
+    """Draw one figure and save it (PNG, at its kind's fixed layout where it fits); returns the path."""
     # lazy: plots/ loads matplotlib (slower to import than numpy); study --no-figures runs without it
-    from ..plots.figure import save_figure
+    from ..plots.figure import png_bytes
     function, *args, path, title = job
-    save_figure(function(*args, title), path)
+    write_atomic(path, png_bytes(function(*args, title), margins=MARGINS.get(function.__name__)))
     return path

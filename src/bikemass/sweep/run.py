@@ -23,7 +23,7 @@ bookkeeping), :data:`TASKS_PER_WORKER` rounds for costly ones (evening out the l
 :data:`IN_FLIGHT` tasks per worker thread submitted at a time.  In this process,
 :data:`SERIAL_CHUNKS` chunks (the progress bar's steps).
 
-``--workers N`` with a small sweep: the first chunk is computed here, and if the rest would
+``--workers N`` with a small sweep: its first rows are computed here (:data:`PROBE_SECONDS`), and if the rest would
 take less than :data:`WORKER_START` seconds in this process the whole sweep stays here (the
 result's ``notes`` say so): starting a local cluster and importing bikemass in its workers
 costs more than such a sweep.
@@ -61,7 +61,10 @@ from .vectorised import takes
 DaskClient = Any
 """A ``distributed.Client`` (Dask's, an optional dependency: not imported to annotate)."""
 
-TASKS_PER_WORKER = 4
+TASKS_PER_WORKER = 12
+"""Rounds of chunks per worker thread for costly configurations: a worker that finishes its last
+chunk first waits for the others' last, about half a chunk (with 4 rounds, a 16th of a 2-worker
+sweep's work: 3 s of a 50 s sweep; with 12, a 48th); a task costs the cluster milliseconds."""
 SERIAL_CHUNKS = 20
 MAX_CHUNK = 2000
 MAX_ARRAY_CHUNK = 100_000
@@ -69,6 +72,12 @@ MAX_ARRAY_CHUNK = 100_000
 the peak (the stacked matrices and the chunk's text), and 0.2-0.5 s of work."""
 IN_FLIGHT = 4
 """Tasks per worker thread handed to the scheduler at a time; the next go out as chunks finish."""
+PROBE_STEPS = 10
+PROBE_SECONDS = 0.5
+"""``--workers N``: the rows computed here to judge a sweep's size come in chunks of a
+:data:`PROBE_STEPS`-th of a serial chunk, until :data:`PROBE_SECONDS` have passed (or one serial
+chunk is done): a long sweep hands all but about half a second of its work to the workers
+(a whole serial chunk, a 20th of the sweep, kept both workers waiting: 3 s of a 60 s sweep)."""
 WORKER_START = 3.0
 """Seconds that starting ``--workers`` costs before the first chunk is computed there (a
 2-worker LocalCluster and bikemass imported in each: 2.5-3 s on the 2-core machine of
@@ -416,10 +425,18 @@ class _Gathering:
         except (InputError, ValueError):
             pass                                      # every row says why
         size = chunk_size(self.missing_count(), None, self.spec.chunk, cheap=takes(self.spec.keys))
-        first = Chunk(*split(missing, size)[0])
-        began = time.perf_counter()
-        self.add(finish_chunk(self.spec, first))
-        rest = (time.perf_counter() - began) / first.size * self.missing_count()
+        step = size if self.spec.chunk else max(1, -(-size // PROBE_STEPS))
+        done, seconds, began = [], [], time.perf_counter()
+        while missing and sum(done) < size and (not seconds or time.perf_counter() - began < PROBE_SECONDS):
+            chunk, start = Chunk(*split(missing, step)[0]), time.perf_counter()
+            self.add(finish_chunk(self.spec, chunk))
+            done.append(chunk.size)
+            seconds.append(time.perf_counter() - start)
+            missing = self.missing()
+        if not missing:
+            return None
+        warm = slice(1, None) if len(done) > 1 else slice(None)      # the first chunk pays the caches' warm-up
+        rest = sum(seconds[warm]) / sum(done[warm]) * self.missing_count()
         if rest >= WORKER_START:
             return workers
         self.notes.append(f"ran in this process, not on {workers} worker{'s' * (workers > 1)}: the rest of these "
