@@ -38,7 +38,7 @@ PNG_COMPRESSION = 1
 """zlib level of the PNG files written (Pillow's ``compress_level``): an opaque figure is
 written as RGB at level 1, about as small as matplotlib's RGBA at its level 6 and three times
 faster to encode (16 against 48 ms for a 1050 x 690 eigenvalue figure here)."""
-RENDERERS = {}
+RENDERERS: dict[tuple, object] = {}
 """``{(width px, height px, dpi): RendererAgg}``: the Agg renderers raster figures are drawn with,
 one per canvas size and kept (at most :data:`MAX_RENDERERS`), used only while :data:`RENDERING` is
 held. matplotlib keys its caches of text measures and parsed mathtext on the renderer, and makes a
