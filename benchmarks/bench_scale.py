@@ -51,8 +51,8 @@ LONG = """bike: jamis
 rider: relaxed
 stiffness: steel
 vary:
-  sections.seat_stay.wall: {from: 0.025, to: 0.065, num: 60}
-  sections.chain_stay.wall: {from: 0.03, to: 0.05, num: 45}
+  sections.seat_stay.wall: {from: 0.025, to: 0.065, num: 120}
+  sections.chain_stay.wall: {from: 0.03, to: 0.05, num: 50}
 """
 
 
@@ -216,7 +216,7 @@ def workers_section(repeat):
 def long_section(repeat):
     print(f"engines, a sweep of more than a minute here (Jamis walls, steel: beam FE per configuration); {load()}")
     with tempfile.TemporaryDirectory() as tmp:
-        engines(LONG, "long.yaml", tmp, "2,700 walls")
+        engines(LONG, "long.yaml", tmp, "6,000 walls")
 
 
 SECTIONS = {"parameter": parameter_section, "grid": grid_section, "geometry": geometry_section,
