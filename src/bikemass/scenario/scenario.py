@@ -49,7 +49,7 @@ from ..models.lean import RiderLeanParameters
 from ..models.linear import LinearModel
 from ..models.parameters import NAMES, BenchmarkParameters
 from ..models.plausibility import check_parameters
-from ..models.registry import ModelChoice, model_of, parse_model
+from ..models.registry import SPECS, ModelChoice, model_of, parse_model
 from ..models.tyres import Tyres, as_tyres
 from ..models import whipple
 from .loading import BicycleLike, RiderLike
@@ -197,16 +197,14 @@ class Scenario:
         object.__setattr__(self, "method", check(Method, self.method).value)
         if not isinstance(self.allow_off_contact, bool):
             raise InputError("allow_off_contact", short(self.allow_off_contact), "True or False")
-        if self.tyres is not None and not self.model.has("tyre"):
-            raise InputError("tyres", short(self.tyres), f"a model with the tyre member (e.g. "
-                             f"{parse_model('+'.join((*self.model.members, 'tyre'))).name}) for tyres; the model "
-                             f"{self.model.name} has none")
+        for spec in SPECS:                                     # a member's parameters only with the member
+            given = getattr(self, spec.option_key) if spec.option_key else None
+            if given is not None and not self.model.has(spec.name):
+                raise InputError(spec.option_key, short(given), f"a model with the {spec.name} member (e.g. "
+                                 f"{parse_model('+'.join((*self.model.members, spec.name))).name}) for "
+                                 f"{spec.option_key}; the model {self.model.name} has none")
         if self.tyres is not None and not isinstance(self.tyres, (Tyres, str, os.PathLike, Mapping)):
             as_tyres(self.tyres)                               # names what it takes
-        if self.arms is not None and not self.model.has("arms"):
-            raise InputError("arms", short(self.arms), f"a model with the arms member (e.g. "
-                             f"{parse_model('+'.join((*self.model.members, 'arms'))).name}) for arms; the model "
-                             f"{self.model.name} has none")
         if self.arms is not None and not isinstance(self.arms, (Arms, str, os.PathLike, Mapping)):
             as_arms(self.arms)                                 # names what it takes
         self._refuse_stiffness(self.stiffness)
