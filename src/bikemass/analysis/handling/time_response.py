@@ -27,13 +27,13 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from ...core.choices import closest
-from ...core.display import Display
 from ...core.errors import BikemassWarning, InputError, short, wrong_type
-from ...core.frozen import FrozenMap, readonly, short_repr
+from ...core.frozen import short_repr
 from ...core.real import finite_real
 from ...core.tables import Table
 from .discrete import hold_matrices, sample_times
 from ..nonlinear.response import NonlinearResponse
+from ..sampled import SampledResponse
 from .plant import System, check_speed, input_index, linear_model
 
 if TYPE_CHECKING:                          # the annotations' names only
@@ -97,7 +97,7 @@ def applied_inputs(model, inputs):
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class TimeResponse(Display):
+class TimeResponse(SampledResponse):
     """The states of a linear model against time.
 
     Attributes
@@ -114,37 +114,10 @@ class TimeResponse(Display):
         ``{input name: (kind, size)}`` that was applied (steps in N m, impulses in N m s).
     """
 
-    speed: float
-    time: np.ndarray
-    names: tuple
-    units: tuple
-    values: np.ndarray
-    inputs: Mapping
-
-    def __post_init__(self):
-        object.__setattr__(self, "time", readonly(self.time, float))
-        object.__setattr__(self, "values", readonly(self.values, float))
-        object.__setattr__(self, "inputs", FrozenMap(self.inputs))
-
-    def __getitem__(self, name):
-        """The samples (n,) of the state ``name``."""
-        if name not in self.names:
-            raise KeyError(f"no state {name!r} (states: {', '.join(self.names)})")
-        return self.values[:, self.names.index(name)]
-
-    @property
-    def states(self):
-        """``{name: samples}`` of every state (read-only arrays)."""
-        return FrozenMap({name: self[name] for name in self.names})
-
     def to_dict(self):
         """Plain data: speed, time (s) and states (``{name: samples}`` in their units)."""
         return {"speed": self.speed, "time": self.time.tolist(),
                 "states": {name: self[name].tolist() for name in self.names}}
-
-    def unit_block(self):
-        """The unit of each key of :meth:`to_dict` that holds a quantity."""
-        return {"speed": "m/s", "time": "s", **dict(zip(self.names, self.units))}
 
     def tables(self):
         """``{"states": Table}``: one row per sample, ``time`` (s) and every state in its unit. The
@@ -154,10 +127,7 @@ class TimeResponse(Display):
         return {"states": Table(columns, {"time": "s", **dict(zip(self.names, self.units))}, attrs)}
 
     def __repr__(self):
-        t = self.time
-        applied = ", ".join(f"{k}={kind}:{size:g}" for k, (kind, size) in self.inputs.items()) or "none"
-        return short_repr(self, ("speed", f"{self.speed:g} m/s"), ("time", f"0..{t[-1]:g} s x {len(t)}"),
-                          ("states", len(self.names)), ("inputs", applied))
+        return short_repr(self, *self._repr_fields())
 
 
 def simulate(system: System, speed: float, initial: "Mapping[str, float] | None" = None,

@@ -2,13 +2,10 @@
 nonlinear=True)`` returns), apart from the simulator so that the linear ``simulate`` can name it
 without loading the nonlinear model."""
 
-from collections.abc import Mapping
 from dataclasses import dataclass
 
-import numpy as np
-
-from ...core.display import Display
-from ...core.frozen import FrozenMap, readonly, short_repr
+from ...core.frozen import short_repr
+from ..sampled import SampledResponse
 
 NAMES = ("roll-angle", "steer-angle", "roll-rate", "steer-rate", "heading", "lateral", "forward-speed",
          "pitch-angle", "x", "energy")
@@ -18,7 +15,7 @@ UNITS = ("rad", "rad", "rad/s", "rad/s", "rad", "m", "m/s", "rad", "m", "J")
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class NonlinearResponse(Display):
+class NonlinearResponse(SampledResponse):
     """The nonlinear bicycle's motion against time.
 
     Attributes
@@ -52,44 +49,15 @@ class NonlinearResponse(Display):
     True
     """
 
-    speed: float
-    time: np.ndarray
-    names: tuple
-    units: tuple
-    values: np.ndarray
-    inputs: Mapping
     stopped: str = ""
-
-    def __post_init__(self):
-        object.__setattr__(self, "time", readonly(self.time, float))
-        object.__setattr__(self, "values", readonly(self.values, float))
-        object.__setattr__(self, "inputs", FrozenMap(self.inputs))
-
-    def __getitem__(self, name):
-        """The samples (n,) of the output ``name``."""
-        if name not in self.names:
-            raise KeyError(f"no state {name!r} (states: {', '.join(self.names)})")
-        return self.values[:, self.names.index(name)]
-
-    @property
-    def states(self):
-        """``{name: samples}`` of every output (read-only arrays)."""
-        return FrozenMap({name: self[name] for name in self.names})
 
     def to_dict(self):
         """Plain data: speed, time (s), states (``{name: samples}``), the model and why it stopped."""
         return {"model": "nonlinear whipple", "speed": self.speed, "time": self.time.tolist(),
                 "states": {name: self[name].tolist() for name in self.names}, "stopped": self.stopped}
 
-    def unit_block(self):
-        """The unit of each key of :meth:`to_dict` that holds a quantity."""
-        return {"speed": "m/s", "time": "s", **dict(zip(self.names, self.units))}
-
     def __repr__(self):
-        t = self.time
-        applied = ", ".join(f"{k}={kind}:{size:g}" for k, (kind, size) in self.inputs.items()) or "none"
-        fields = [("speed", f"{self.speed:g} m/s"), ("time", f"0..{t[-1]:g} s x {len(t)}"),
-                  ("states", len(self.names)), ("inputs", applied)]
+        fields = self._repr_fields()
         if self.stopped:
             fields.append(("stopped", self.stopped))
         return short_repr(self, *fields)
