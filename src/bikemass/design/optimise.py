@@ -229,11 +229,14 @@ def _search(spec, problem, progress, start_time):
     if spec.sense == "target":
         scale = abs(spec.target) or 1.0
 
-    def objective(u):
-        m = raw(u)
+    def scaled(m):
+        """The search's objective (minimised, scaled) of the metric's value ``m``."""
         if spec.sense == "target":
             return ((m - spec.target) / scale) ** 2
         return (-m if spec.sense == "maximise" else m) / scale
+
+    def objective(u):
+        return scaled(raw(u))
 
     def objective_gradient(u):
         x = x_of(u)
@@ -337,8 +340,8 @@ def _search(spec, problem, progress, start_time):
         u = np.clip(res.x[:n], 0.0, 1.0)
         v = violation(u)
         runs.append((v > FEASIBLE, v, float(objective(u)), u, bool(res.success), str(res.message)))
-    best_built = min(((e.violation > FEASIBLE, e.violation, objective((np.array(e.variables) - lo) / span), e)
-                      for e in history), key=lambda r: r[:3])
+    best_built = min(((e.violation > FEASIBLE, e.violation, scaled(e.objective), e) for e in history),
+                     key=lambda r: r[:3])       # from the values recorded, no design built again
     best_run = min(runs, key=lambda r: r[:3])
     if not best_built[0] and (best_run[0] or best_built[2] < best_run[2] - IMPROVEMENT):
         # a feasible design built on the way beats every end point clearly
