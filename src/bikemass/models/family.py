@@ -17,7 +17,7 @@ from .arms import Arms
 from .flexible import Compliances
 from .parameters import NAMES, BenchmarkParameters
 from .lean import RiderLeanParameters
-from .linear import LinearModel, SecondOrder, state_form
+from .linear import LinearModel, SecondOrder, polynomial, state_form
 from .registry import module_name, parse_model
 from .signals import signal
 from .tyres import DEFAULT_TYRES, Tyres
@@ -99,14 +99,10 @@ class _Layout:
 def linear_model(model, values, held=()):
     """The :class:`~bikemass.models.linear.LinearModel` of ``model`` at ``values`` (``{name: float}``);
     the coordinates named in ``held`` (e.g. ``"frame-twist"``) are held at zero."""
-    code = generated(model)
-    E, A_terms, B_terms = coefficients(model, values)
+    code, E, A_terms, B_terms = _descriptor(model, values, held)
     if E.ndim != 2:
         raise ValueError(f"model {code.NAME!r}: one value per parameter expected (use state_coefficients "
                          f"for arrays)")
-    if held:
-        code = _Layout(code, tuple(held))
-        E, A_terms, B_terms = code.reduce(E, A_terms, B_terms)
     A, B = _state_form(code, E, A_terms, B_terms)
     states = tuple(signal(n, u) for n, u in code.STATES)
     inputs = tuple(signal(n, u) for n, u in code.INPUTS)
@@ -126,22 +122,29 @@ def dynamic_derivatives(model, values, names, speed, step, held=()):
     :func:`linear_model` builds it at ``values``, ``held`` coordinates held) with respect to each
     parameter of ``names``, by the complex step ``i * step`` through the generated code: exact to
     rounding, no difference step to choose.  The parameters are stepped in one batch."""
-    code = generated(model)
     count = len(names)
     batch = {name: np.full(count, float(values[name])) for name in parameter_names(model)}
     for i, name in enumerate(names):
         stepped = batch[name].astype(complex)
         stepped[i] += 1j * step
         batch[name] = stepped
-    E, A_terms, B_terms = coefficients(model, batch)
+    code, E, A_terms, B_terms = _descriptor(model, batch, held)
+    A, _ = _state_form(code, E, A_terms, B_terms)
+    n = code.N_DYNAMIC
+    # (speeds..., names, n, n) -> (names, speeds..., n, n)
+    dynamic = np.moveaxis(polynomial(np.moveaxis(A[:, :, :n, :n], 1, 0), speed), -3, 0)
+    return {name: dynamic[i].imag / step for i, name in enumerate(names)}
+
+
+def _descriptor(model, values, held=()):
+    """``(code, E, A, B)``: the generated module of ``model`` (its layout with the ``held`` coordinates
+    removed) and its descriptor coefficients at ``values``."""
+    code = generated(model)
+    E, A_terms, B_terms = coefficients(model, values)
     if held:
         code = _Layout(code, tuple(held))
         E, A_terms, B_terms = code.reduce(E, A_terms, B_terms)
-    A, _ = _state_form(code, E, A_terms, B_terms)
-    n = code.N_DYNAMIC
-    powers = np.asarray(speed, dtype=float)[..., None] ** np.arange(A.shape[1])
-    dynamic = np.einsum("...k,bkij->b...ij", powers, A[:, :, :n, :n])
-    return {name: dynamic[i].imag / step for i, name in enumerate(names)}
+    return code, E, A_terms, B_terms
 
 
 def values(model, bicycle, tyres=None, compliances=None, arms=None):
