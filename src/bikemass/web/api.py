@@ -91,7 +91,7 @@ def register_routes(server, engine):
     def with_warnings(route, document, compute, state):
         dumps = current_app.json.dumps
         text = engine.answer(compute, state, key=(route, state),      # strict JSON: a NaN is null
-                             render=lambda value, lines: dumps(strict_json(plain({**document(value), "warnings": lines}))))
+                             render=lambda value, lines: dumps(strict_json({**document(value), "warnings": lines})))
         return Response(text, mimetype="application/json")
 
     @server.route("/api/stability")
