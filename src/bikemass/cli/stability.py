@@ -94,10 +94,6 @@ def _rider_name(rider):
     return "no rider" if rider == "none" else rider
 
 
-def _stiffness_name(stiffness):
-    return dialect.stiffness_label(stiffness)
-
-
 def _combine(combine):
     return "rider added as the thesis did" if combine == "thesis" else "rider added with the parallel-axis theorem"
 
@@ -106,7 +102,7 @@ def _title(args):
     thesis = " (rider added as the thesis did)" if args.rider != "none" and args.combine == "thesis" else ""
     model = "" if getattr(args, "model", "whipple") == "whipple" else f", model {args.model}"
     control = f", control {args.control}" if getattr(args, "control", None) else ""
-    return f"{dialect.bike_name(args.bike)}, {_rider_name(args.rider)}, {_stiffness_name(args.stiffness)}{model}{control}{thesis}"
+    return f"{dialect.bike_name(args.bike)}, {_rider_name(args.rider)}, {dialect.stiffness_label(args.stiffness)}{model}{control}{thesis}"
 
 
 def run_eig(args):
@@ -147,7 +143,7 @@ def run_stability(args):
     def render(fmt):
         if fmt in ("json", "yaml"):
             # the frame as the title names it: a material is a property on the bicycle's own tube sections
-            return dialect.result_document({"frame": _stiffness_name(args.stiffness), **result.to_dict()},
+            return dialect.result_document({"frame": dialect.stiffness_label(args.stiffness), **result.to_dict()},
                                            result.units(), fmt)
         if fmt == "csv":
             return ranges_csv(result)
@@ -187,7 +183,7 @@ def run_compare(args):
             row = _rider_name(rider) if not models else f"{_rider_name(rider)}, {model}"
             for stiffness in stiffnesses:
                 result = stability(_built(each, rider, stiffness), speeds=speeds, max_speeds=args.max_speeds)
-                results.setdefault(row, {})[_stiffness_name(stiffness)] = result
+                results.setdefault(row, {})[dialect.stiffness_label(stiffness)] = result
                 runs.append({"rider": rider, **({"model": model} if models else {}), "stiffness": stiffness,
                              "weave_speeds": list(result.weave_speeds), "capsize_speeds": list(result.capsize_speeds),
                              "stable_speeds": [list(r) for r in result.stable_speeds]})
