@@ -8,7 +8,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.display import Display
+from ..core.errors import InputError, short, wrong_type
 from ..core.frozen import FrozenMap, readonly
+
+KINDS = ("step", "impulse")
+"""The kinds of input a simulation applies: a step (N m) or an impulse (N m s)."""
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -50,3 +54,21 @@ class SampledResponse(Display):
         applied = ", ".join(f"{k}={kind}:{size:g}" for k, (kind, size) in self.inputs.items()) or "none"
         return [("speed", f"{self.speed:g} m/s"), ("time", f"0..{t[-1]:g} s x {len(t)}"),
                 ("states", len(self.names)), ("inputs", applied)]
+
+
+def checked_inputs(inputs, check_name, number):
+    """``{input name: (kind, size)}`` of a simulation's ``inputs``, each ``(kind, size)`` with kind one
+    of :data:`KINDS`: ``check_name(name)`` refuses a name the model has no input of, ``number(size,
+    name, kind)`` checks the size and returns it (InputError for either, one line)."""
+    if inputs is None:
+        return {}
+    if not isinstance(inputs, Mapping):
+        raise wrong_type("inputs", inputs, "inputs are a mapping {input name: (kind, size)}")
+    out = {}
+    for name, spec in inputs.items():
+        check_name(name)
+        if not (isinstance(spec, (tuple, list)) and len(spec) == 2 and spec[0] in KINDS):
+            raise InputError("inputs", short(name), f"(kind, size) with kind one of {', '.join(KINDS)}, "
+                             f"got {short(spec)}")
+        out[name] = (spec[0], number(spec[1], name, spec[0]))
+    return out

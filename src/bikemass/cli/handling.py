@@ -411,7 +411,7 @@ def _initial(args):
 
 def _inputs(args):
     # lazy: the library loads numpy; bikemass --help must not
-    from ..analysis.handling.time_response import KINDS
+    from ..analysis.sampled import KINDS
     # lazy: the library loads numpy; bikemass --help must not
     from ..core.choices import closest
     # lazy: the library loads numpy; bikemass --help must not

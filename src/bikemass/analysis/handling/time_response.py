@@ -33,14 +33,13 @@ from ...core.real import finite_real
 from ...core.tables import Table
 from .discrete import hold_matrices, sample_times
 from ..nonlinear.response import NonlinearResponse
-from ..sampled import SampledResponse
+from ..sampled import SampledResponse, checked_inputs
 from .plant import System, check_speed, input_index, linear_model
 
 if TYPE_CHECKING:                          # the annotations' names only
     from numpy.typing import ArrayLike
 
 
-KINDS = ("step", "impulse")
 """How an input is applied."""
 
 DEFAULT_DURATION = 5.0
@@ -82,18 +81,8 @@ def initial_state(model, initial):
 
 def applied_inputs(model, inputs):
     """``{input name: (kind, size)}`` checked: kind ``step`` (N m) or ``impulse`` (N m s)."""
-    if inputs is None:
-        return {}
-    if not isinstance(inputs, Mapping):
-        raise wrong_type("inputs", inputs, "inputs are a mapping {input name: (kind, size)}")
-    out = {}
-    for name, spec in inputs.items():
-        input_index(model, name)
-        if not (isinstance(spec, (tuple, list)) and len(spec) == 2 and spec[0] in KINDS):
-            raise InputError("inputs", short(name), f"(kind, size) with kind one of {', '.join(KINDS)}, "
-                             f"got {short(spec)}")
-        out[name] = (spec[0], _number(spec[1], "inputs", name, "N m" if spec[0] == "step" else "N m s"))
-    return out
+    return checked_inputs(inputs, lambda name: input_index(model, name),
+                          lambda size, name, kind: _number(size, "inputs", name, "N m" if kind == "step" else "N m s"))
 
 
 @dataclass(frozen=True, eq=False, repr=False)

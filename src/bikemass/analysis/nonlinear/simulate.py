@@ -28,6 +28,7 @@ from ...core.limits import MAX_SPEED
 from ...models.nonlinear import ConstraintError, NonlinearWhipple
 from ...models.parameters import BenchmarkParameters
 from ..handling.discrete import sample_times
+from ..sampled import checked_inputs
 from .response import NAMES, UNITS, NonlinearResponse  # noqa: F401 (NAMES, UNITS: the outputs, defined with the result)
 
 FALL_ROLL = math.radians(60.0)
@@ -41,7 +42,6 @@ become singular there)."""
 INITIAL = ("roll-angle", "steer-angle", "roll-rate", "steer-rate", "heading", "lateral")
 """The states an initial condition may set (the forward speed is the ``speed`` argument)."""
 INPUTS = ("roll-torque", "steer-torque")
-KINDS = ("step", "impulse")
 RTOL = 1e-10
 """The integrator's relative tolerance."""
 ATOL = 1e-9
@@ -71,19 +71,10 @@ def _initial(initial):
 
 
 def _inputs(inputs):
-    if inputs is None:
-        return {}
-    if not isinstance(inputs, Mapping):
-        raise wrong_type("inputs", inputs, "inputs are a mapping {input name: (kind, size)}")
-    out = {}
-    for name, spec in inputs.items():
+    def known(name):
         if name not in INPUTS:
             raise InputError("input", short(name), f"one of {', '.join(INPUTS)}{closest(name, INPUTS)}")
-        if not (isinstance(spec, (tuple, list)) and len(spec) == 2 and spec[0] in KINDS):
-            raise InputError("inputs", short(name), f"(kind, size) with kind one of {', '.join(KINDS)}, "
-                             f"got {short(spec)}")
-        out[name] = (spec[0], _number(spec[1], "inputs", name))
-    return out
+    return checked_inputs(inputs, known, lambda size, name, kind: _number(size, "inputs", name))
 
 
 def _fallen(bike, state):
