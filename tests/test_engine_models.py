@@ -32,7 +32,7 @@ from bikemass.analysis.uncertainty import first_crossings
 from bikemass.fe.flexible import compliances
 from bikemass.models.family import build
 from bikemass.models.parameters import NAMES
-from bikemass.models.tyres import Tyre, Tyres
+from bikemass.models.members.tyre.parameters import Tyre, Tyres
 from bikemass.models.whipple import whipple_model
 from bikemass.scenario.scenario import Scenario, parameters
 from bikemass.sweep.evaluate import evaluate

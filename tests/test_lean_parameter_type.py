@@ -1,5 +1,5 @@
 """A parameter set's type selects its model: every facade function given a
-:class:`~bikemass.models.lean.RiderLeanParameters` (read from BicycleParameters' own
+:class:`~bikemass.models.members.rider_lean.parameters.RiderLeanParameters` (read from BicycleParameters' own
 ``MooreRiderLean2012`` file) analyses the leaning rider, checked against BicycleParameters'
 ``MooreRiderLean2012Model`` (Moore's own derivation, the peer); naming ``model="whipple"`` still gives
 the rider held rigid, checked against the peer's Whipple model of the merged set."""

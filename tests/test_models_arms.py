@@ -29,7 +29,7 @@ import yaml
 import bikemass as bm
 from bikemass.cli.main import main
 from bikemass.core.errors import BikemassWarning, InputError
-from bikemass.models.arms import Arms, as_arms
+from bikemass.models.members.arms.parameters import Arms, as_arms
 from bikemass.models.family import build, generated
 
 SPEEDS = (0.5, 2.0, 4.0, 6.0, 9.0)

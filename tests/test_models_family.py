@@ -7,7 +7,7 @@ import pytest
 from bikemass.scenario.scenario import parameters
 from bikemass.core.errors import InputError
 from bikemass.models.family import build, coefficients, linear_model, state_coefficients, values
-from bikemass.models.flexible import Compliances
+from bikemass.models.members.flexible.parameters import Compliances
 from bikemass.models.registry import ModelChoice, parse_model
 from bikemass.models.whipple import whipple_model
 from test_stability import TABLE_3_13, TABLE_4_1

@@ -1,5 +1,5 @@
 """The flexible member: the Whipple bicycle with a twisting rear frame and a bending fork
-(bikemass.models.derive.flexible, bikemass.models.flexible).  Checked against
+(bikemass.models.members.flexible.derivation, bikemass.models.members.flexible.parameters).  Checked against
 
 * Meijaard et al. (2007)'s published matrices (the roll-steer block, any compliance);
 * an independent numerical Kane linearisation in plain numpy (tests/flexible_reference.py: exact
@@ -26,10 +26,10 @@ from bikemass.models.compliance import DAMPING_RATIO, Compliance
 from bikemass.models.family import build, linear_model, state_coefficients, values
 from bikemass.models.family import values as family_values      # a test below names its eigenvalues values
 from bikemass.fe.flexible import compliances
-from bikemass.models.flexible import COORDINATES, STEER_DAMPING, Compliances
-from bikemass.models.lean import LeanJoint
+from bikemass.models.members.flexible.parameters import COORDINATES, STEER_DAMPING, Compliances
+from bikemass.models.members.rider_lean.parameters import LeanJoint
 from bikemass.rider.lean_split import rider_lean_parameters
-from bikemass.models.tyres import TRAIL_TYRES, Tyre, Tyres
+from bikemass.models.members.tyre.parameters import TRAIL_TYRES, Tyre, Tyres
 from bikemass.models.whipple import whipple_model
 from bikemass.models.canonical import canonical_matrices
 

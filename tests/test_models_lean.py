@@ -12,7 +12,7 @@ from bikemass.bicycle import bicycle_parameters
 from bikemass.scenario.catalog import load_bicycle, seated_rider
 from bikemass.core.errors import InputError
 from bikemass.models.family import build
-from bikemass.models.lean import LeanJoint
+from bikemass.models.members.rider_lean.parameters import LeanJoint
 from bikemass.rider.lean_split import hip_axis_z, rider_lean_parameters
 from bikemass.models.moore2012 import NAMES, from_moore_values, moore_yaml, to_moore_values
 
@@ -209,7 +209,7 @@ def test_a_values_mapping_gives_the_model_in_one_call():
 
 
 def test_joint_and_upper_body_refuse_nonsense():
-    from bikemass.models.lean import UpperBody
+    from bikemass.models.members.rider_lean.parameters import UpperBody
     with pytest.raises(InputError, match="lean joint: damping: a non-negative number"):
         LeanJoint(stiffness=128.0, damping=-1.0)
     with pytest.raises(InputError, match="upper body: mass: a positive number"):

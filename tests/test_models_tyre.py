@@ -10,7 +10,7 @@ from scipy.optimize import brentq
 from bikemass.scenario.scenario import parameters
 from bikemass.core.errors import InputError
 from bikemass.models.family import build, coefficients, values
-from bikemass.models.tyres import (DEFAULT_TYRE, DEFAULT_TYRES, MEASURED_TRAIL, TRAIL_TYRE, TRAIL_TYRES, Tyre, Tyres,
+from bikemass.models.members.tyre.parameters import (DEFAULT_TYRE, DEFAULT_TYRES, MEASURED_TRAIL, TRAIL_TYRE, TRAIL_TYRES, Tyre, Tyres,
                                    load_tyres, tyres_from_mapping)
 
 BENCHMARK = parameters("benchmark")

@@ -61,7 +61,7 @@ _API = {
     "read_measured_data": "bicycle.measured", "MeasuredData": "bicycle.measured",
     "benchmark_from_measured": "bicycle.measured", "load_measured": "bicycle.measured",
     "load_parameter_set": "bicycle.parameter_sets", "ParameterSetFile": "bicycle.parameter_sets",
-    "RiderLeanParameters": "models.lean",
+    "RiderLeanParameters": "models.members.rider_lean.parameters",
     "optimise": "design.optimise", "OptimiseResult": "design.optimise", "plot_optimisation": "design.figures",
     "Control": "models.control", "load_control": "models.control", "ScheduledModel": "models.control",
 }

@@ -25,13 +25,13 @@ from ..core.real import finite_real
 from ..core.frozen import readonly
 from ..core.limits import MAX_SPEEDS
 from .engine.speeds import speed_range, speed_values
-from ..models.arms import as_arms
+from ..models.members.arms.parameters import as_arms
 from ..models.control import Control, ScheduledModel, close_loop
 from ..models.family import build as build_member
-from ..models.lean import RiderLeanParameters
+from ..models.members.rider_lean.parameters import RiderLeanParameters
 from ..models.linear import LinearModel
 from ..models.registry import model_of, parse_model
-from ..models.tyres import Tyres, as_tyres
+from ..models.members.tyre.parameters import Tyres, as_tyres
 from ..models.whipple import whipple_model
 from ..scenario.scenario import Built, Scenario
 from .engine.modes import Modes, follow_modes
@@ -167,7 +167,7 @@ def linear_model(params: "BenchmarkParameters | RiderLeanParameters | Scenario |
         models (a Scenario).
     tyres : Tyres, str or Mapping, optional
         The ``tyre`` member's tyres (a tyre file or a mapping in its form; default
-        :data:`~bikemass.models.tyres.DEFAULT_TYRES`).
+        :data:`~bikemass.models.members.tyre.parameters.DEFAULT_TYRES`).
     control : Control, str or Mapping, optional
         A linear feedback added to the inputs, ``u = K(v) y``, each gain scheduled in speed (a
         :class:`~bikemass.models.control.Control`, a control file or a mapping in its form:

@@ -43,7 +43,7 @@ from ..core.limits import MAX_SPEED
 from ..core.real import finite_real
 from ..core.errors import InputError, short
 from ..core.keywords import renamed_keywords
-from ..models.lean import RiderLeanParameters
+from ..models.members.rider_lean.parameters import RiderLeanParameters
 from ..models.parameters import BenchmarkParameters
 from ..models.plausibility import check_parameters
 from ..core.errors import wrong_type

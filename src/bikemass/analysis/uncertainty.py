@@ -42,7 +42,7 @@ from ..core.errors import InputError
 from ..core.keywords import renamed_keywords
 from ..core.limits import MAX_SPEEDS
 from ..core.units import UnitError, dimension_of, split_quantity, to_si
-from ..models.lean import RiderLeanParameters
+from ..models.members.rider_lean.parameters import RiderLeanParameters
 from ..models.parameters import NAMES
 from ..plots.stability import mode_colours
 from ..scenario.scenario import Scenario

@@ -17,7 +17,7 @@ parameterizations are read:
   benchmark set (:func:`principal_to_benchmark`);
 * ``MooreRiderLean2012`` (Moore 2012): the Whipple model with a rider's upper body ``G``
   leaning on the rear frame; converted exactly to the rider-lean model's
-  :class:`~bikemass.models.lean.RiderLeanParameters`
+  :class:`~bikemass.models.members.rider_lean.parameters.RiderLeanParameters`
   (:func:`~bikemass.models.moore2012.from_moore_values`), its named values kept as read in
   :attr:`ParameterSetFile.values`.
 

@@ -6,7 +6,7 @@ import numpy as np
 
 from ..core.errors import InputError
 from ..mass.materials import Material
-from ..models.flexible import STEER_DAMPING, Compliances
+from ..models.members.flexible.parameters import STEER_DAMPING, Compliances
 from .fork import fork_bending, fork_structure
 from .model import resolve_material
 from .stiffness import head_tube_axis

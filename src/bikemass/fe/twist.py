@@ -15,7 +15,7 @@ Ritz vector ``phi``.  From it:
   benchmark origin): the modal linear momentum ``L = r_y' M phi`` (kg m/rad), its moment about the
   origin ``J_k = r_k' M phi`` (kg m^2/rad) and the modal mass ``m = phi' M phi`` (kg m^2/rad^2).  These
   four numbers are all the linear equations of motion need of a deformation field that rides on a
-  moving body (Kane's method: :mod:`bikemass.models.derive.flexible`).
+  moving body (Kane's method: :mod:`bikemass.models.members.flexible.derivation`).
 
 :func:`frame_twist` does this for the rear frame (dropouts clamped, the load through the head-tube
 bearings); :mod:`bikemass.fe.fork` for the fork.

@@ -13,14 +13,14 @@ import numpy as np
 
 from ..core.errors import InputError
 from ..core.frozen import readonly
-from .arms import Arms
-from .flexible import Compliances
+from .members.arms.parameters import Arms
+from .members.flexible.parameters import Compliances
 from .parameters import NAMES, BenchmarkParameters
-from .lean import RiderLeanParameters
+from .members.rider_lean.parameters import RiderLeanParameters
 from .linear import LinearModel, SecondOrder, polynomial, state_form
 from .registry import module_name, parse_model
 from .signals import signal
-from .tyres import DEFAULT_TYRES, Tyres
+from .members.tyre.parameters import DEFAULT_TYRES, Tyres
 
 
 @lru_cache(maxsize=None)
@@ -180,7 +180,7 @@ def values(model, bicycle, tyres=None, compliances=None, arms=None):
     if choice.has("arms"):
         if not isinstance(arms, Arms):
             raise InputError("arms", choice.name, "the arms member needs the arms' stiffness and damping (Arms: "
-                             "bikemass.models.arms.as_arms)")
+                             "bikemass.models.members.arms.parameters.as_arms)")
         out.update(arms.values())
     elif arms is not None:
         raise InputError("arms", choice.name, f"no arms for the model {choice.name} (add the arms member: "
@@ -199,14 +199,14 @@ def build(model, bicycle, tyres=None, compliances=None, arms=None):
     :class:`~bikemass.models.registry.ModelChoice`).
 
     ``bicycle``: :class:`~bikemass.models.parameters.BenchmarkParameters`, or
-    :class:`~bikemass.models.lean.RiderLeanParameters` (needed by ``rider-lean``; a model without
-    it holds the upper body rigid: :meth:`~bikemass.models.lean.RiderLeanParameters.rigid`).
-    ``tyres``: :class:`~bikemass.models.tyres.Tyres` for the ``tyre`` member (default
-    :data:`~bikemass.models.tyres.DEFAULT_TYRES`); an error for a model without tyres.
-    ``compliances``: :class:`~bikemass.models.flexible.Compliances` for the ``flexible`` member
+    :class:`~bikemass.models.members.rider_lean.parameters.RiderLeanParameters` (needed by ``rider-lean``; a model without
+    it holds the upper body rigid: :meth:`~bikemass.models.members.rider_lean.parameters.RiderLeanParameters.rigid`).
+    ``tyres``: :class:`~bikemass.models.members.tyre.parameters.Tyres` for the ``tyre`` member (default
+    :data:`~bikemass.models.members.tyre.parameters.DEFAULT_TYRES`); an error for a model without tyres.
+    ``compliances``: :class:`~bikemass.models.members.flexible.parameters.Compliances` for the ``flexible`` member
     (:func:`bikemass.fe.flexible.compliances`; required); an infinitely stiff one (``None``)
     holds its coordinate at zero; an error for a model without the member.
-    ``arms``: :class:`~bikemass.models.arms.Arms` for the ``arms`` member (required; an error for a
+    ``arms``: :class:`~bikemass.models.members.arms.parameters.Arms` for the ``arms`` member (required; an error for a
     model without it).
     """
     return linear_model(model, values(model, bicycle, tyres, compliances, arms), held_coordinates(model, compliances))

@@ -21,7 +21,7 @@ import yaml
 from ..core.errors import InputError
 from .parameters import BenchmarkParameters
 from .family import build
-from .lean import LeanJoint, RiderLeanParameters, UpperBody
+from .members.rider_lean.parameters import LeanJoint, RiderLeanParameters, UpperBody
 
 PARAMETERIZATION = "MooreRiderLean2012"
 """The name BicycleParameters gives the set (``ParameterSet.parameterization``)."""
@@ -83,7 +83,7 @@ def _steer_tilt(d1, d2, d3, rr, rf):
 
 
 def from_moore_values(values, source="values") -> RiderLeanParameters:
-    """:class:`~bikemass.models.lean.RiderLeanParameters` of a ``MooreRiderLean2012`` values mapping
+    """:class:`~bikemass.models.members.rider_lean.parameters.RiderLeanParameters` of a ``MooreRiderLean2012`` values mapping
     (``{name: float}``, the ``values:`` of BicycleParameters' YAML; ``v`` may be left out: the model does
     not need it); :class:`~bikemass.core.errors.InputError` naming ``source`` and the key otherwise."""
     if not hasattr(values, "keys"):

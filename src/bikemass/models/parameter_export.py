@@ -120,6 +120,6 @@ def member_document(choice, params, lean=None, compliances=None, tyres=None, sti
 def member_units():
     """The units of :func:`member_document`'s keys beside the benchmark parameters' (SI)."""
     from .compliance import Compliance          # lazy: numpy; the text formats above do not need it
-    from .arms import Arms                      # lazy: loads the config reader (numpy), as Compliance does
+    from .members.arms.parameters import Arms                      # lazy: loads the config reader (numpy), as Compliance does
     return {**{k: u for k, u in Compliance.units().items() if u}, "relaxation_length": "m",
             "frame_stiffness": "N m/rad", **Arms.units()}

@@ -83,7 +83,7 @@ def parse_model(text, source="model"):
 def model_of(params, model=None, source="model"):
     """The :class:`ModelChoice` to build from the parameter set ``params``: ``model`` when given, else
     the one its type declares (a class attribute ``MODEL``: ``"rider-lean"`` for
-    :class:`~bikemass.models.lean.RiderLeanParameters`), else the Whipple bicycle."""
+    :class:`~bikemass.models.members.rider_lean.parameters.RiderLeanParameters`), else the Whipple bicycle."""
     if model is not None:
         return parse_model(model, source)
     return parse_model(getattr(type(params), "MODEL", BASE), source)

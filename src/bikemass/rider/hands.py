@@ -1,6 +1,6 @@
 """The rider's forearms with the hands on the grips: moved from the rear frame to the front frame.
 
-The ``arms`` member's option ``forearms: handlebars`` (:class:`~bikemass.models.arms.Arms`) lumps each
+The ``arms`` member's option ``forearms: handlebars`` (:class:`~bikemass.models.members.arms.parameters.Arms`) lumps each
 forearm (``lower_arm_*``, hand included) with the handlebars, the body its hand holds, and leaves the
 upper arms with the torso: the thesis's lumped arms (Williams 2015, Sec. 6.2), an approximation of the
 linkage between shoulders and grips (Moore 2012 and Schwab et al. 2012 model that linkage's inertia in

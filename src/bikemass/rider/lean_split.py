@@ -17,7 +17,7 @@ from ..core.errors import InputError
 from ..mass.parts import body_properties
 from ..models.plausibility import warn_rider
 from . import Rider
-from ..models.lean import LeanJoint, RiderLeanParameters, UpperBody
+from ..models.members.rider_lean.parameters import LeanJoint, RiderLeanParameters, UpperBody
 
 UPPER_BODY = ("head", "torso", "upper_arm", "lower_arm")
 """Segment kinds that lean with the upper body (when they move with the rear frame)."""
@@ -48,7 +48,7 @@ def hip_axis_z(rider):
 
 
 def rider_lean_parameters(bicycle, rider, method="mesh", joint=LeanJoint()):
-    """:class:`~bikemass.models.lean.RiderLeanParameters` of ``bicycle`` (a
+    """:class:`~bikemass.models.members.rider_lean.parameters.RiderLeanParameters` of ``bicycle`` (a
     :class:`~bikemass.bicycle.Bicycle`) with the seated ``rider`` (a :class:`~bikemass.rider.Rider`)
     split at the hips (see the module docstring); ``method`` of the mass properties (``mesh`` or
     ``exact``); ``joint`` the hip joint's stiffness and damping."""

@@ -38,10 +38,10 @@ from ..core.paths import frames_dir, resolve
 from ..core.units import DIMENSIONS, dimension_of, to_si
 from ..mass.inertia import combine
 from ..mass.materials import Material, load_materials
-from ..models.flexible import Compliances, compliances_from_node
-from ..models.lean import RiderLeanParameters
-from ..models.arms import arms_from_node
-from ..models.tyres import tyres_from_node
+from ..models.members.flexible.parameters import Compliances, compliances_from_node
+from ..models.members.rider_lean.parameters import RiderLeanParameters
+from ..models.members.arms.parameters import arms_from_node
+from ..models.members.tyre.parameters import tyres_from_node
 from ..models.parameters import NAMES, BenchmarkParameters
 from ..models.plausibility import front_load_problem, warn
 from ..rider import Rider, _read_document, poses_dir
@@ -279,7 +279,7 @@ class Inputs:
 
     @property
     def lean_set(self):
-        """The :class:`~bikemass.models.lean.RiderLeanParameters` of a bicycle given as a
+        """The :class:`~bikemass.models.members.rider_lean.parameters.RiderLeanParameters` of a bicycle given as a
         ``MooreRiderLean2012`` parameter set (BicycleParameters' YAML) or as the value itself, else ``None``."""
         if "_lean_set" not in self.__dict__:
             self._lean_set, self._lean_source = None, None
@@ -560,7 +560,7 @@ class Inputs:
         return _lru(self._cache("params"), (bike_changes, rider_changes, forearms_held), build)
 
     def lean(self, bike_changes=(), rider_changes=(), forearms_held=False):
-        """The leaning rider's :class:`~bikemass.models.lean.RiderLeanParameters` of the changed
+        """The leaning rider's :class:`~bikemass.models.members.rider_lean.parameters.RiderLeanParameters` of the changed
         bicycle and rider: the seated rider split at the hips (:mod:`bikemass.rider.lean_split`),
         or the bicycle's own ``MooreRiderLean2012`` set; ``forearms_held``: the forearms on the front
         frame (:meth:`held`), not leaning with the upper body."""
@@ -620,7 +620,7 @@ class Inputs:
         return _lru(self._cache("stiffness"), (key, bike_changes), build)
 
     def compliances(self, which, bike_changes=()):
-        """The flexible model's :class:`~bikemass.models.flexible.Compliances` for stiffness choice
+        """The flexible model's :class:`~bikemass.models.members.flexible.parameters.Compliances` for stiffness choice
         ``which``: a material (every frame and fork tube in it, :func:`bikemass.fe.flexible.compliances`)
         or ``infinite`` (both held rigid)."""
         which, key = _stiffness_key(which)

@@ -20,9 +20,9 @@ The model choice (``model=``, ``--model``; :mod:`bikemass.models.registry`):
   ``infinite`` adds the thesis's quasi-static flexible rear frame (Williams 2015, Eq. 3.27-3.30);
 * ``rider-lean``: the rider's upper body leans at the hips (:mod:`bikemass.rider.lean_split`);
   the bicycle may instead be BicycleParameters' ``MooreRiderLean2012`` parameter set, or a
-  :class:`~bikemass.models.lean.RiderLeanParameters` (whose default model this is);
-* ``tyre``: tyres that slip (``tyres``: a :class:`~bikemass.models.tyres.Tyres`, a tyre file or a
-  mapping; default :data:`~bikemass.models.tyres.DEFAULT_TYRES`);
+  :class:`~bikemass.models.members.rider_lean.parameters.RiderLeanParameters` (whose default model this is);
+* ``tyre``: tyres that slip (``tyres``: a :class:`~bikemass.models.members.tyre.parameters.Tyres`, a tyre file or a
+  mapping; default :data:`~bikemass.models.members.tyre.parameters.DEFAULT_TYRES`);
 * ``flexible``: the rear frame's twist and the fork's bending with their inertia, from the beam
   models in the stiffness choice's material (``infinite``: both rigid, the rigid model back);
 * members joined by ``+`` (``rider-lean+tyre+flexible``).
@@ -41,16 +41,16 @@ import numpy as np
 from ..core.choices import RIGID, Combine, Method, check
 from ..core.errors import InputError, short
 from ..core.frozen import readonly, short_repr
-from ..models.arms import Arms, as_arms
+from ..models.members.arms.parameters import Arms, as_arms
 from ..models.family import build as build_member, dynamic_derivatives, generated, held_coordinates, linear_model, \
     values as member_values
-from ..models.flexible import Compliances
-from ..models.lean import RiderLeanParameters
+from ..models.members.flexible.parameters import Compliances
+from ..models.members.rider_lean.parameters import RiderLeanParameters
 from ..models.linear import LinearModel
 from ..models.parameters import NAMES, BenchmarkParameters
 from ..models.plausibility import check_parameters
 from ..models.registry import SPECS, ModelChoice, model_of, parse_model
-from ..models.tyres import Tyres, as_tyres
+from ..models.members.tyre.parameters import Tyres, as_tyres
 from ..models import whipple
 from .loading import BicycleLike, RiderLike
 from .inputs import Inputs, _lru, file_unit, get_path, split_changes
@@ -149,16 +149,16 @@ class Scenario:
     model : str or ModelChoice, optional
         ``"whipple"``, ``"rider-lean"``, ``"tyre"``, ``"flexible"`` or members joined by ``+``.
         Default: ``"whipple"``, or ``"rider-lean"`` for a bicycle given as
-        :class:`~bikemass.models.lean.RiderLeanParameters` (the parameter set's own member).
+        :class:`~bikemass.models.members.rider_lean.parameters.RiderLeanParameters` (the parameter set's own member).
     tyres
-        For the ``tyre`` member: a :class:`~bikemass.models.tyres.Tyres`, a tyre YAML file or a
+        For the ``tyre`` member: a :class:`~bikemass.models.members.tyre.parameters.Tyres`, a tyre YAML file or a
         mapping in its form; ``None``: the defaults.  Refused without the member.
     allow_off_contact : bool
         Use a rider pose as written even off the bicycle's contacts (the thesis's riders).
     origin : str
         What errors about changes name as their source (a sweep's spec file, ``--inputs``, ...).
     arms
-        For the ``arms`` member: a :class:`~bikemass.models.arms.Arms`, an arms YAML file or a mapping
+        For the ``arms`` member: a :class:`~bikemass.models.members.arms.parameters.Arms`, an arms YAML file or a mapping
         in its form (``stiffness`` N m/rad, ``damping`` N m s/rad about the steer axis; ``forearms:
         handlebars`` puts the seated rider's forearms on the front frame); ``None``: a parameter file's
         ``arms:`` block, else zero (no published default; warned).  Refused without the member.

@@ -30,9 +30,9 @@ from ..analysis.engine.naming import family
 from ..analysis.engine.speeds import speed_grid
 from ..analysis.engine.stability import WOBBLE, analyse
 from ..fe.flexible import compliances
-from ..models.arms import NO_ARMS
+from ..models.members.arms.parameters import NO_ARMS
 from ..models.family import build
-from ..models.lean import LeanJoint
+from ..models.members.rider_lean.parameters import LeanJoint
 from ..models.whipple import whipple_model
 from ..rider.lean_split import rider_lean_parameters
 from .configurations import RIDERS, THESIS_NAMES, Configuration
@@ -177,7 +177,7 @@ def whipple_speeds(model):
 
 
 def lean(parameters):
-    """:class:`Lean` of :class:`~bikemass.models.lean.RiderLeanParameters` (rigid frame)."""
+    """:class:`Lean` of :class:`~bikemass.models.members.rider_lean.parameters.RiderLeanParameters` (rigid frame)."""
     result = analyse(build("rider-lean", parameters))
     weave = tuple(c.speed for c in result.mode_crossings("weave 1") if c.kind == OSCILLATORY)
     capsize = tuple(c.speed for c in result.mode_crossings("capsize") if c.kind == REAL)
@@ -191,7 +191,7 @@ def compliances_of(inputs, bicycles=BICYCLES, materials=MATERIALS):
 
 def damped_model(params, compliances, rider):
     """:data:`DAMPED_MODEL` of a parameter set and compliances, the arms at their default
-    (:data:`~bikemass.models.arms.NO_ARMS`: no published value; the table's notes say so); the
+    (:data:`~bikemass.models.members.arms.parameters.NO_ARMS`: no published value; the table's notes say so); the
     no-hands rider (hands off the bars) without the arms member."""
     if rider == "no-hands":
         return build(DAMPED_MODEL.replace("+arms", ""), params, compliances=compliances)

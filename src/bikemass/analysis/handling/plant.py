@@ -6,7 +6,7 @@ Whipple bicycle, a flexible frame, a leaning rider, ...), a
 :class:`~bikemass.scenario.scenario.Scenario` (built with its own ``model``) or a
 :class:`~bikemass.models.parameters.BenchmarkParameters` set, which is the Whipple bicycle of
 :func:`~bikemass.models.whipple.whipple_model` (with the rear-frame stiffness S, N m/rad, when
-one is given), or a :class:`~bikemass.models.lean.RiderLeanParameters` set, which is the leaning
+one is given), or a :class:`~bikemass.models.members.rider_lean.parameters.RiderLeanParameters` set, which is the leaning
 rider's model (both through :func:`bikemass.analysis.results.built_model`, as ``bm.stability``).  Bad arguments raise :class:`~bikemass.core.errors.InputError` naming the argument and
 the choices.
 """
@@ -19,7 +19,7 @@ from ...core.errors import InputError, short, wrong_type
 from ...core.limits import MAX_SPEED
 from ..results import built_model
 from ...models.linear import LinearModel
-from ...models.lean import RiderLeanParameters
+from ...models.members.rider_lean.parameters import RiderLeanParameters
 from ...models.parameters import BenchmarkParameters
 from ...scenario.scenario import Built, Scenario
 

@@ -1,9 +1,9 @@
 """The members of the model family that the derivation knows, in their canonical order."""
 
-from .arms import Arms
-from .flexible import Flexible
-from .rider_lean import RiderLean
-from .tyre import Tyre
+from ..members.arms.derivation import Arms
+from ..members.flexible.derivation import Flexible
+from ..members.rider_lean.derivation import RiderLean
+from ..members.tyre.derivation import Tyre
 
 MEMBERS = {"rider-lean": RiderLean, "tyre": Tyre, "flexible": Flexible, "arms": Arms}
 """Member name -> its :class:`~bikemass.models.derive.bicycle.Member` class, in canonical order."""

@@ -9,7 +9,7 @@ model of BicycleParameters' ``MooreRiderLean2012Model``), parameterised like the
 centre of mass and inertia (about its centre of mass, benchmark axes) when upright.
 """
 
-from .bicycle import Coordinate, Member, inertia
+from ...derive.bicycle import Coordinate, Member, inertia
 
 PARAMETERS = (
     ("mU", "kg", "upper body mass"), ("xU", "m", "upper body CoM x"), ("zU", "m", "upper body CoM z"),

@@ -17,8 +17,8 @@ Any combination with the member takes them the same way (``"tyre+flexible"``, ``
 from dataclasses import dataclass, fields, replace
 
 
-from ..core.errors import InputError
-from .compliance import Compliance, compliance_from_node
+from ....core.errors import InputError
+from ...compliance import Compliance, compliance_from_node
 
 COORDINATES = {"frame": "frame-twist", "fork": "fork-bending"}
 """Each compliance's coordinate (the state's name in the linear model)."""

@@ -24,10 +24,10 @@ import os
 from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
 
-from ..core.config import Node, load_yaml
-from ..core.errors import InputError
-from ..core.gate import plain_input
-from .plausibility import warn
+from ....core.config import Node, load_yaml
+from ....core.errors import InputError
+from ....core.gate import plain_input
+from ...plausibility import warn
 
 KEYS = ("cornering_coefficient", "camber_coefficient", "relaxation_length")
 RELAXATION_RANGE = (1e-3, 10.0)

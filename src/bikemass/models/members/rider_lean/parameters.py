@@ -21,9 +21,9 @@ from typing import ClassVar
 
 import numpy as np
 
-from ..core.errors import InputError
-from ..mass.inertia import MassProperties, combine
-from .parameters import NAMES, BenchmarkParameters
+from ....core.errors import InputError
+from ....mass.inertia import MassProperties, combine
+from ...parameters import NAMES, BenchmarkParameters
 
 
 def unit(symbol, description):

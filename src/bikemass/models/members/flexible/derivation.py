@@ -10,7 +10,7 @@ the plane of symmetry against a torsional spring, and the tubes that deform carr
   line through ``(xf, 0, zf)`` with direction ``(nfx, 0, nfz)``; the front wheel turns on K's axle.
   Spring ``kf``.
 * **Damping**: a viscous damper in parallel with each spring (``cr``, ``cf``, N m s/rad: the structural
-  damping, :meth:`bikemass.models.flexible.Compliances.values` converts a damping ratio), and one in the
+  damping, :meth:`bikemass.models.members.flexible.parameters.Compliances.values` converts a damping ratio), and one in the
   steering bearing, ``cs`` (N m s/rad) between the front frame and the head frame D about the steer axis.
 
 The tubes' inertia is their Ritz field's (:mod:`bikemass.fe.twist`): the modal momentum ``L``, its
@@ -23,13 +23,13 @@ w_r`` for the others (``a``, ``alpha``, ``v_r``, ``w_r`` the body's; to first or
 (Jz/L, 0, -Jx/L)`` that moves sideways by ``dt theta = (m/L) theta`` in the parent's axes, beside the
 same mass, negative, fixed in the parent: the tubes' rigid mass is already in the parent's benchmark
 parameters.  The particle's four numbers are the member's parameters (so that tubes without inertia,
-``mt = 0``, divide by nothing); :meth:`bikemass.models.flexible.Compliances.values` converts.
+``mt = 0``, divide by nothing); :meth:`bikemass.models.members.flexible.parameters.Compliances.values` converts.
 """
 
 import sympy as sm
 import sympy.physics.mechanics as me
 
-from .bicycle import Coordinate, Member, inertia
+from ...derive.bicycle import Coordinate, Member, inertia
 
 PARAMETERS = {
     "r": (("xr", "m", "frame twist axis, x of a point"), ("zr", "m", "frame twist axis, z of a point"),

@@ -16,7 +16,7 @@ segments, or the forearms on the front frame with ``forearms: handlebars``: :mod
 the derivation adds only the joint's stiffness and damping.
 """
 
-from .bicycle import Member
+from ...derive.bicycle import Member
 
 PARAMETERS = (("k_arms", "N m/rad", "arms' stiffness about the steer axis"),
               ("c_arms", "N m s/rad", "arms' damping about the steer axis"))

@@ -28,7 +28,7 @@ The knife-edge wheel of the Whipple bicycle is the limit ``C_alpha -> infinity``
 rate and lateral velocity are free speeds of the model.
 """
 
-from .bicycle import ExtraState, Member, rolling_forward
+from ...derive.bicycle import ExtraState, Member, rolling_forward
 
 PARAMETERS = {
     "rear": (("CaR", "1/rad", "rear cornering coefficient"), ("CgR", "1/rad", "rear camber coefficient"),

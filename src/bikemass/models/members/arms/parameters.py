@@ -20,10 +20,10 @@ import os
 from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
 
-from ..core.config import Node, load_yaml
-from ..core.errors import InputError
-from ..core.gate import plain_input
-from .plausibility import warn
+from ....core.config import Node, load_yaml
+from ....core.errors import InputError
+from ....core.gate import plain_input
+from ...plausibility import warn
 
 KEYS = ("stiffness", "damping")
 """An arms file's numbers (both optional, 0 when not given)."""
@@ -41,7 +41,7 @@ class Arms:
 
     Examples
     --------
-    >>> from bikemass.models.arms import Arms
+    >>> from bikemass.models.members.arms.parameters import Arms
     >>> Arms(stiffness=10.0, damping=1.5).values()
     {'k_arms': 10.0, 'c_arms': 1.5}
     """

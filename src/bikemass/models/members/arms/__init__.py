@@ -1,0 +1,1 @@
+"""The arms member of the model family."""

@@ -1,0 +1,1 @@
+"""The flexible member of the model family."""

@@ -1,0 +1,1 @@
+"""The rider_lean member of the model family."""

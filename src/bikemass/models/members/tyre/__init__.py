@@ -1,0 +1,1 @@
+"""The tyre member of the model family."""
