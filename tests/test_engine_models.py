@@ -79,7 +79,7 @@ def stiff_tyres(cornering):
     and no camber: the knife-edge wheel as the coefficient grows (1e5 /rad and 1e-5 m are
     tests/test_models_tyre.py's very stiff tyres)."""
     tyre = Tyre(cornering_coefficient=cornering, camber_coefficient=0.0, relaxation_length=1.0 / cornering)
-    return build("tyre", BENCHMARK, Tyres(tyre, tyre))
+    return build("tyre", BENCHMARK, tyres=Tyres(tyre, tyre))
 
 
 def test_very_stiff_tyres_give_meijaards_critical_speeds():

@@ -150,8 +150,10 @@ def test_arms_are_refused_without_the_member_and_checked():
         Arms(stiffness=-1.0)
     with pytest.raises(InputError, match="damping"):
         as_arms({"damping": "-2 N m s/rad"})
-    with pytest.raises(InputError, match="the arms member needs"):
-        build("arms", bm.parameters("benchmark"))
+    with pytest.raises(InputError, match="no arms parameters for the model tyre"):
+        build("tyre", bm.parameters("benchmark"), arms=ARMS)
+    with pytest.warns(BikemassWarning, match="no published default"):    # the family's builder: the same default
+        assert build("arms", bm.parameters("benchmark")).name == "arms"
     assert as_arms({"stiffness": "1 N m/deg", "damping": 2}).stiffness == pytest.approx(180 / math.pi, rel=1e-15)
 
 

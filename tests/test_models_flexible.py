@@ -175,7 +175,7 @@ def test_combinations_in_the_other_members_limits(jamis, speed):
     for model, rigid_params, tyres, rtol in (("tyre+flexible", lean.rigid(), Tyres(stiff, stiff), 1e-3),
                                               ("rider-lean+flexible", lean, None, 1e-5),
                                               ("rider-lean+tyre+flexible", lean, Tyres(stiff, stiff), 1e-3)):
-        roots = np.linalg.eigvals(build(model, rigid_params, tyres, compliances=flexible).dynamic_matrix(speed))
+        roots = np.linalg.eigvals(build(model, rigid_params, tyres=tyres, compliances=flexible).dynamic_matrix(speed))
         for z in expected:
             assert np.min(np.abs(roots - z)) <= rtol * abs(z), (model, z)
 
@@ -345,7 +345,7 @@ def trail_tracks():
     steel and titanium."""
     bike = bm.load_bicycle("jamis")
     params = bm.parameters(bike, bm.load_rider("relaxed"))
-    return {material: _wobble_track(build("tyre+flexible", params, TRAIL_TYRES, compliances(bike, material)))
+    return {material: _wobble_track(build("tyre+flexible", params, tyres=TRAIL_TYRES, compliances=compliances(bike, material)))
             for material in ("steel", "titanium")}
 
 

@@ -23,7 +23,7 @@ def test_very_stiff_tyres_give_back_the_whipple_eigenvalues_to_1e_3(camber):
     small beside the cornering one (0 or the tangent rule's 1 /rad): a stiff tyre slips by
     C_gamma / C_alpha times its camber, so 1e4 /rad would leave a slip of 0.1 gamma (docs/models.md)."""
     stiff = Tyre(cornering_coefficient=1e5, camber_coefficient=camber, relaxation_length=1e-5)
-    tyres, whipple = build("tyre", BENCHMARK, Tyres(stiff, stiff)), build("whipple", BENCHMARK)
+    tyres, whipple = build("tyre", BENCHMARK, tyres=Tyres(stiff, stiff)), build("whipple", BENCHMARK)
     for v in SPEEDS:
         mine = np.linalg.eigvals(tyres.dynamic_matrix(v))
         for z in np.linalg.eigvals(whipple.dynamic_matrix(v)):
@@ -54,8 +54,8 @@ def test_slip_and_camber_equal_a_hand_derivation(v):
             "front": {"lateral-velocity": 1.0, "yaw-rate": p.w, "steer-rate": -p.c * cl, "steer-angle": -v * cl}}
     camber = {"rear": {"roll-angle": 1.0}, "front": {"roll-angle": 1.0, "steer-angle": sl}}
     sigma = 0.2
-    no_camber = build("tyre", p, Tyres(*[Tyre(12.0, 0.0, sigma)] * 2))
-    with_camber = build("tyre", p, Tyres(*[Tyre(12.0, 0.7, sigma)] * 2))
+    no_camber = build("tyre", p, tyres=Tyres(*[Tyre(12.0, 0.0, sigma)] * 2))
+    with_camber = build("tyre", p, tyres=Tyres(*[Tyre(12.0, 0.7, sigma)] * 2))
     for wheel in ("rear", "front"):
         force = f"{wheel}-lateral-force"
         a, b = _row(no_camber, force, v), _row(with_camber, force, v)
@@ -74,7 +74,7 @@ def test_a_steady_turn_obeys_newtons_second_law(v):
     """Held in a steady turn by a steer torque, every mass centre accelerates by v r toward the
     centre: the tyre forces sum to m v r and their moment about the rear contact is sum(m x) v r,
     so each tyre carries v r / g of its static load."""
-    model = build("tyre", BENCHMARK, DEFAULT_TYRES)
+    model = build("tyre", BENCHMARK, tyres=DEFAULT_TYRES)
     n = model.n_dynamic
     A, B = model.dynamic_matrix(v), model.input_matrix(v)[:n]
     x = np.linalg.solve(A, -B[:, model.input_index("steer-torque")])
@@ -125,12 +125,12 @@ def test_contract_docs_models_md_prints_the_tyre_models_speeds():
     default = _critical(build("tyre", BENCHMARK))
     assert docs["default (11.46 /rad, 0.573 /rad, 0.175 m)"] == pytest.approx(default, abs=5e-5)
     no_camber = replace(DEFAULT_TYRE, camber_coefficient=0.0)
-    weave, capsize = _critical(build("tyre", BENCHMARK, Tyres(no_camber, no_camber)))
+    weave, capsize = _critical(build("tyre", BENCHMARK, tyres=Tyres(no_camber, no_camber)))
     assert docs["default without camber thrust"] == pytest.approx((weave, capsize), abs=5e-5)
     assert capsize == pytest.approx(whipple[1], abs=1e-8)    # equal slip at both wheels: a Whipple turn
     for sigma in (1e-6, 0.3):                                  # a steady turn: no delay acts
         relaxed = replace(DEFAULT_TYRE, relaxation_length=sigma)
-        assert _critical(build("tyre", BENCHMARK, Tyres(relaxed, relaxed)))[1] == pytest.approx(default[1], abs=1e-8)
+        assert _critical(build("tyre", BENCHMARK, tyres=Tyres(relaxed, relaxed)))[1] == pytest.approx(default[1], abs=1e-8)
 
 
 def test_the_default_tyres_are_the_delft_labs_values_from_dressels_measurements():
@@ -216,7 +216,7 @@ def test_tyre_moments_equal_their_closed_form_generalised_forces():
     trail = {"rear": 0.013, "front": 0.021}
     twist = {"rear": 0.017, "front": 0.011}
     E0, A0, B0 = _descriptor(base)
-    model = build("tyre", p, Tyres(base, base))
+    model = build("tyre", p, tyres=Tyres(base, base))
     names = model.state_names
     t = Tyres(replace(base, pneumatic_trail=trail["front"], twisting_coefficient=twist["front"]),
               replace(base, pneumatic_trail=trail["rear"], twisting_coefficient=twist["rear"]))
@@ -317,8 +317,8 @@ def test_the_measured_trail_without_twisting_torque_leaves_the_benchmark_no_stab
     """With the measured trail and no twisting torque the benchmark bicycle on the default tyres has no stable
     speed: a real root is unstable at every speed from about 3 m/s (counted with numpy's eigenvalues on a
     0.5 m/s grid), where the force-only tyres leave it stable between its weave and capsize speeds (4.3-6.0 m/s)."""
-    trail = build("tyre", BENCHMARK, TRAIL_TYRES)
-    plain = build("tyre", BENCHMARK, DEFAULT_TYRES)
+    trail = build("tyre", BENCHMARK, tyres=TRAIL_TYRES)
+    plain = build("tyre", BENCHMARK, tyres=DEFAULT_TYRES)
     for v in np.arange(3.5, 10.01, 0.5):
         values = np.linalg.eigvals(trail.dynamic_matrix(v))
         assert np.any((values.imag == 0) & (values.real > 0.5)), v

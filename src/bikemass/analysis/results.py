@@ -25,13 +25,12 @@ from ..core.real import finite_real
 from ..core.frozen import readonly
 from ..core.limits import MAX_SPEEDS
 from .engine.speeds import speed_range, speed_values
-from ..models.members.arms.parameters import as_arms
 from ..models.control import Control, ScheduledModel, close_loop
 from ..models.family import build as build_member
 from ..models.members.rider_lean.parameters import RiderLeanParameters
 from ..models.linear import LinearModel
-from ..models.registry import model_of, parse_model
-from ..models.members.tyre.parameters import Tyres, as_tyres
+from ..models.members.spec import Source
+from ..models.registry import BASE, BY_NAME, by_keyword, model_of
 from ..models.whipple import whipple_model
 from ..scenario.scenario import Built, Scenario
 from .engine.modes import Modes, follow_modes
@@ -144,8 +143,8 @@ def speeds(start: float = 0.0, stop: float = 30.0, step: float = 0.05, max_speed
 
 def linear_model(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Built | LinearModel",
                  stiffness: "ArrayLike | None" = None, model: "str | None" = None,
-                 tyres: "Tyres | str | Mapping | None" = None,
-                 control: "Control | str | Mapping | None" = None) -> "LinearModel | ScheduledModel":
+                 control: "Control | str | Mapping | None" = None,
+                 **members: object) -> "LinearModel | ScheduledModel":
     """The linear model of a parameter set or a scenario (a
     :class:`~bikemass.models.linear.LinearModel` is returned as it is).
 
@@ -165,13 +164,16 @@ def linear_model(params: "BenchmarkParameters | RiderLeanParameters | Scenario |
         RiderLeanParameters holds the upper body rigid.  ``rider-lean`` needs the rider split at
         the hips (a Scenario with a rider, or RiderLeanParameters); ``flexible`` the bicycle's beam
         models (a Scenario).
-    tyres : Tyres, str or Mapping, optional
-        The ``tyre`` member's tyres (a tyre file or a mapping in its form; default
-        :data:`~bikemass.models.members.tyre.parameters.DEFAULT_TYRES`).
     control : Control, str or Mapping, optional
         A linear feedback added to the inputs, ``u = K(v) y``, each gain scheduled in speed (a
         :class:`~bikemass.models.control.Control`, a control file or a mapping in its form:
         :mod:`bikemass.models.control`); the closed loop is returned.
+    **members
+        A member's parameters by the keyword it declares (:mod:`bikemass.models.members`), e.g.
+        ``tyres=`` for the ``tyre`` member (a :class:`~bikemass.models.members.tyre.parameters.Tyres`,
+        a tyre file or a mapping in its form; default
+        :data:`~bikemass.models.members.tyre.parameters.DEFAULT_TYRES`), ``arms=`` for the ``arms``
+        member; refused for a model without the member.
 
     Returns
     -------
@@ -205,66 +207,60 @@ def linear_model(params: "BenchmarkParameters | RiderLeanParameters | Scenario |
     >>> model.state_matrix([5.0]).shape                 # A(v) at one speed: (speeds, 6, 6)
     (1, 6, 6)
     """
-    return built_model(params, stiffness, model, tyres, control)[0]
+    return built_model(params, stiffness, model, control, members)[0]
 
 
-def built_model(params, stiffness=None, model=None, tyres=None, control=None):
+def built_model(params, stiffness=None, model=None, control=None, members=None):
     """``(LinearModel, S or None)`` of :func:`linear_model`'s arguments: the model (the closed loop
-    with ``control``) and the quasi-static rear-frame stiffness (N m/rad) it holds."""
+    with ``control``) and the quasi-static rear-frame stiffness (N m/rad) it holds.  ``members``:
+    ``{keyword: parameters}`` of members (``{"tyres": ...}``)."""
+    members = {k: v for k, v in (members or {}).items() if v is not None}
     if control is not None:
-        linear, S = built_model(params, stiffness, model, tyres)
+        linear, S = built_model(params, stiffness, model, None, members)
         return close_loop(linear, control), S
-    if isinstance(params, ScheduledModel):
-        given = {k: v for k, v in (("stiffness", stiffness), ("model", model), ("tyres", tyres)) if v is not None}
+    given = {k: v for k, v in (("stiffness", stiffness), ("model", model), *members.items()) if v is not None}
+    if isinstance(params, (ScheduledModel, LinearModel, Built)):
         if given:
-            raise InputError(next(iter(given)), "(argument)", "none with a closed loop (it is built in)")
-        return params, None
-    given = {k: v for k, v in (("stiffness", stiffness), ("model", model), ("tyres", tyres)) if v is not None}
-    if isinstance(params, (LinearModel, Built)):
-        if given:
-            what = "a LinearModel" if isinstance(params, LinearModel) else "a built scenario"
+            what = {ScheduledModel: "a closed loop", LinearModel: "a LinearModel"}.get(type(params), "a built scenario")
             raise InputError(next(iter(given)), "(argument)", f"none with {what} (it is built in; give it to "
                              "the Scenario)")
-        return (params, None) if isinstance(params, LinearModel) else (params.model, params.stiffness)
+        return (params.model, params.stiffness) if isinstance(params, Built) else (params, None)
     if isinstance(params, Scenario):
         built = (params.replace(**given) if given else params).build()
         return built.model, built.stiffness
     choice = model_of(params, model)          # the parameter set's own member unless a model is named
-    if tyres is not None and not choice.has("tyre"):
-        raise InputError("tyres", short(tyres), f"a model with the tyre member (e.g. "
-                         f"{parse_model('+'.join((*choice.members, 'tyre'))).name}) for tyres; the model "
-                         f"{choice.name} has none")
-    if isinstance(params, RiderLeanParameters) and not choice.has("rider-lean"):
-        params = params.rigid()
-    if not isinstance(params, (BenchmarkParameters, RiderLeanParameters)):
+    named = by_keyword(members, "members")
+    for name, value in named.items():
+        if not choice.has(name):
+            key = BY_NAME[name].keyword or name
+            raise InputError(key, short(value), f"a model with the {name} member (e.g. "
+                             f"{choice.with_member(name).name}) for {key}; the model {choice.name} has none")
+    if not isinstance(params, BenchmarkParameters) and getattr(type(params), "MODEL", BASE) == BASE:
         raise wrong_type("params", params, "params must be BenchmarkParameters (bm.parameters), a Scenario or a "
                          "LinearModel")
     if not choice.members:
         S = _stiffness(stiffness)
-        return whipple_model(check_parameters(params, "params"), S), S
+        subject = params if isinstance(params, BenchmarkParameters) else params.rigid()
+        return whipple_model(check_parameters(subject, "params"), S), S
     if _stiffness(stiffness) is not None:
         rigid = " (or model='whipple': the rider held rigid)" if model is None else ""
         raise InputError("stiffness", "(matrix)", f"none with the model {choice.name}{rigid}: a 2x2 S is the "
                          "whipple model's quasi-static spring (the flexible member takes a material: "
                          "bm.Scenario(bike, rider, stiffness=material, model=...))")
-    if choice.has("flexible"):
-        raise InputError("model", choice.name, "a Scenario for the flexible member (its compliances come from the "
-                         "bicycle's beam models): bm.stability(bm.Scenario(bike, rider, stiffness='steel', "
-                         f"model={choice.name!r}))")
-    if choice.has("rider-lean") and not isinstance(params, RiderLeanParameters):
-        raise InputError("model", choice.name, "the rider split at the hips for rider-lean: a Scenario with a "
-                         f"rider (bm.Scenario(bike, rider, model={choice.name!r})) or RiderLeanParameters")
+    for spec in choice.specs:
+        if spec.source is Source.BEAM_MODELS:
+            raise InputError("model", choice.name, f"a Scenario for the {spec.name} member (its parameters come "
+                             "from the bicycle's beam models): bm.stability(bm.Scenario(bike, rider, "
+                             f"stiffness='steel', model={choice.name!r}))")
     if isinstance(params, BenchmarkParameters):
         check_parameters(params, "params")
-    arms = as_arms() if choice.has("arms") else None         # zero, warned; other values: a Scenario's arms=
-    return build_member(choice, params, as_tyres(tyres) if choice.has("tyre") else tyres, arms=arms), None
+    return build_member(choice, params, members=named), None
 
 
 def eigenvalues(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Built | LinearModel",
                 stiffness: "ArrayLike | None" = None, speeds: "ArrayLike | None" = None,
                 max_speeds: int = MAX_SPEEDS, model: "str | None" = None,
-                tyres: "Tyres | str | Mapping | None" = None,
-                control: "Control | str | Mapping | None" = None) -> Modes:
+                control: "Control | str | Mapping | None" = None, **members: object) -> Modes:
     """Eigenvalues over speed, followed across speed and named.
 
     Parameters
@@ -278,8 +274,8 @@ def eigenvalues(params: "BenchmarkParameters | RiderLeanParameters | Scenario | 
     max_speeds : int
         Most speeds taken (default 100000, as the command line's ``--max-speeds``); more is an
         InputError before any work.
-    model, tyres : str or Tyres, optional
-        The model of the family and the ``tyre`` member's tyres, as for :func:`linear_model`.
+    model : str, optional
+        The model of the family, as for :func:`linear_model`.
     control : Control, str or Mapping, optional
         A feedback scheduled in speed (:mod:`bikemass.models.control`): the closed loop's modes.
 
@@ -310,14 +306,13 @@ def eigenvalues(params: "BenchmarkParameters | RiderLeanParameters | Scenario | 
     >>> print(f"{weave.real:.9f} +- {abs(weave.imag):.8f}i 1/s")
     -0.775341882 +- 4.46486771i 1/s
     """
-    return follow_modes(linear_model(params, stiffness, model, tyres, control), speed_values(speeds, max_speeds))
+    return follow_modes(linear_model(params, stiffness, model, control, **members), speed_values(speeds, max_speeds))
 
 
 def stability(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Built | LinearModel",
               stiffness: "ArrayLike | None" = None, speeds: "ArrayLike | None" = None,
               marginal: float = DEFAULT_MARGINAL, max_speeds: int = MAX_SPEEDS, model: "str | None" = None,
-              tyres: "Tyres | str | Mapping | None" = None,
-              control: "Control | str | Mapping | None" = None) -> StabilityResult:
+              control: "Control | str | Mapping | None" = None, **members: object) -> StabilityResult:
     """Eigenvalues, critical speeds and stable speed ranges of a bicycle.
 
     Parameters
@@ -336,13 +331,15 @@ def stability(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Bu
     max_speeds : int
         Most speeds taken (default 100000, as the command line's ``--max-speeds``); more is an
         InputError before any work.
-    model, tyres
-        The member of the model family and its tyres, as for :func:`linear_model`.
+    model : str, optional
+        The member of the model family, as for :func:`linear_model`.
     control : Control, str or Mapping, optional
         A linear feedback ``u = K(v) y`` added to the inputs, each gain scheduled in speed (a
         :class:`~bikemass.models.control.Control`, a control file or a mapping in its form:
         :mod:`bikemass.models.control`): the closed loop is analysed, its critical speeds exact
         on every interval of the schedules.
+    **members
+        A member's parameters by its keyword (``tyres=``, ``arms=``), as for :func:`linear_model`.
 
     Returns
     -------
@@ -393,5 +390,5 @@ def stability(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Bu
     if not finite_real(marginal) or not 0 < marginal <= MAX_MARGINAL:
         raise InputError("marginal", short(marginal), f"a modulus in rad/s above 0 and at most {MAX_MARGINAL:g} "
                          "(as the command line's --marginal)")
-    linear, S = built_model(params, stiffness, model, tyres, control)
+    linear, S = built_model(params, stiffness, model, control, members)
     return analyse(linear, speed_values(speeds, max_speeds), marginal, S)

@@ -391,7 +391,7 @@ def uncertainty(bicycle: "str | os.PathLike | RiderLeanParameters | Scenario",
                 spreads: "Mapping[str, float | Spread] | None" = None,
                 rider: "str | None" = None, stiffness: str = "infinite", combine: str = "exact",
                 method: str = "linear", samples: int = 1000, seed: int = 0, speeds: "ArrayLike | None" = None,
-                max_speeds: int = MAX_SPEEDS, model: "str | None" = None, tyres: "str | Mapping | None" = None) -> Propagation:
+                max_speeds: int = MAX_SPEEDS, model: "str | None" = None, **members: object) -> Propagation:
     """The spread of the canonical matrices, eigenvalues and critical speeds from spreads of the inputs.
 
     ``linear``: first-order propagation, ``std(y) = sqrt(sum_i (dy/dx_i std_i)^2)``, with exact
@@ -433,8 +433,9 @@ def uncertainty(bicycle: "str | os.PathLike | RiderLeanParameters | Scenario",
         The member of the model family (``"whipple"``, ``"rider-lean"``, ``"tyre"``, ``"flexible"``
         or members joined by ``+``); default the bicycle's own (``"rider-lean"`` for
         RiderLeanParameters, else ``"whipple"``).
-    tyres : str or Mapping, optional
-        The ``tyre`` member's tyre file or mapping (default: the published defaults).
+    **members
+        A member's parameters by its keyword (``tyres=`` a tyre file or mapping; default: the published
+        defaults), as for :class:`~bikemass.scenario.scenario.Scenario`.
 
     Returns
     -------
@@ -476,7 +477,7 @@ def uncertainty(bicycle: "str | os.PathLike | RiderLeanParameters | Scenario",
     if spreads is not None and not isinstance(spreads, dict):
         raise InputError("spreads", "(argument)", f"a mapping of input key -> std or Spread, got {type(spreads).__name__}")
     scenario = bicycle if isinstance(bicycle, Scenario) else Scenario(bicycle, rider, stiffness, combine, model=model,
-                                                                 tyres=tyres)
+                                                                 member_inputs=members)
     if spreads is None:
         spreads = scenario.measurement_std or scenario.file_std
         if not spreads:

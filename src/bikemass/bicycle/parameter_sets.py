@@ -39,6 +39,7 @@ from ..core.errors import InputError, short
 from ..mass.inertia import MassProperties, combine
 from .parameter_text import (AXISYMMETRIC, LATERAL, SPLIT_BODIES, ParameterFileWarning, ParameterText,
                              _parse_value, printed_resolution, body_names, measured_parameters)
+from ..models.registry import MEMBERS
 from ..models.parameters import NAMES, SPEED_KEY, BenchmarkParameters, check_units, dimension, sign_rule
 from ..models.moore2012 import NAMES as MOORE_NAMES, PARAMETERIZATION as MOORE_PARAMETERIZATION, from_moore_values
 from ..models.plausibility import check_parameter_file
@@ -51,10 +52,10 @@ BENCHMARK, PRINCIPAL, RIDER_LEAN = "benchmark", "principal", MOORE_PARAMETERIZAT
 PARAMETERIZATIONS = {"benchmark": BENCHMARK, "Meijaard2007": BENCHMARK, "principal": PRINCIPAL,
                      "Moore2019": PRINCIPAL, "MooreRiderLean2012": RIDER_LEAN}
 """``parameterization:`` as BicycleParameters' files and its ``to_yaml`` write it -> bikemass's name."""
-MEMBER_KEYS = ("model", "flexible", "tyre", "arms", "frame_stiffness")
+MEMBER_KEYS = ("model", *MEMBERS, "frame_stiffness")
 """Blocks a parameter file may carry beside its parameter set: what ``bikemass params --model M``
-writes so that every command reads back the same model (the model it was written for, the
-flexible member's compliances, the tyres, the rider's arms, the Whipple model's quasi-static S in N m/rad); read by
+writes so that every command reads back the same model (the model it was written for, each member's
+parameters under its name, the Whipple model's quasi-static S in N m/rad); read by
 :mod:`bikemass.scenario.inputs`."""
 SET_KEYS = ("parameterization", "values", "parameters", "rider", "description", "name", "source", "units",
             "uncertainty", *MEMBER_KEYS)

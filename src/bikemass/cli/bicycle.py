@@ -103,6 +103,24 @@ def _seated(args):
     return bicycle, catalog.seated_rider(bicycle, args.rider, args.allow_off_contact)
 
 
+def bicycleparameters_writer(choice):
+    """How ``--format bicycleparameters-yaml`` writes the model ``choice``: ``None`` for the Whipple
+    bicycle's own set, ``(member, write)`` for a model of one member that writes its own BicycleParameters
+    set (its ``bicycleparameters_yaml`` hook), ``False`` for a model BicycleParameters has no set for."""
+    if not choice.members:
+        return None
+    write = choice.specs[0].hook("bicycleparameters_yaml") if len(choice.specs) == 1 else None
+    return (choice.specs[0], write) if write is not None else False
+
+
+def bicycleparameters_models():
+    """The ``--model`` values BicycleParameters has a parameter set for (the Whipple bicycle's, and each
+    member's that writes one), for a message."""
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..models.registry import BASE, SPECS
+    return " or ".join((BASE, *(s.name for s in SPECS if s.hook("bicycleparameters_yaml") is not None)))
+
+
 def run_params(args):
     # lazy: the library loads numpy; bikemass --help must not
     from ..models.parameter_export import format_parameters
@@ -113,18 +131,18 @@ def run_params(args):
     if args.compare and fmt.startswith("bicycleparameters"):
         raise InputError("--format", fmt, "table, csv, json or yaml with --compare")
     scenario = dialect.scenario(args)
-    if fmt == "bicycleparameters-yaml" and args.model not in ("whipple", "rider-lean"):
-        raise InputError("--format", fmt, f"--model whipple (Meijaard2007) or rider-lean (MooreRiderLean2012): "
-                         f"BicycleParameters has no parameter set for --model {args.model}")
+    writer = bicycleparameters_writer(scenario.model)
+    if fmt == "bicycleparameters-yaml" and writer is False:
+        raise InputError("--format", fmt, f"--model {bicycleparameters_models()}: BicycleParameters has no "
+                         f"parameter set for --model {args.model}")
     params = scenario.parameters()
     if args.compare:
         reference = scenario.replace(bicycle=args.compare).parameters()
         dialect.emit(args, lambda f: comparison(params, reference, args.bike, args.compare, f))
-    elif fmt == "bicycleparameters-yaml" and args.model == "rider-lean":
-        # lazy: the library loads numpy; bikemass --help must not
-        from ..models.moore2012 import moore_yaml
-        lean = scenario.build().lean
-        dialect.emit(args, lambda f: moore_yaml(lean))
+    elif fmt == "bicycleparameters-yaml" and writer is not None:
+        spec, write = writer
+        typed = scenario.build().members[spec.name]
+        dialect.emit(args, lambda f: write(typed))
     else:
         title = f"{dialect.bike_name(args.bike)} with rider {args.rider} (combine {args.combine})"
         included = (args.rider not in (None, "none") or scenario.inputs.lean_set is not None
@@ -136,9 +154,8 @@ def run_params(args):
             # lazy: the library loads numpy; bikemass --help must not
             from ..models.parameter_export import member_document, member_units
             built = scenario.build()
-            data = member_document(built.choice, params, built.lean, built.compliances, built.tyres,
-                                   built.stiffness, included, args.stiffness, built.arms)
-            dialect.emit(args, lambda f: dialect.document(data, f, member_units()))
+            data = member_document(built.choice, params, built.members, built.stiffness, included, args.stiffness)
+            dialect.emit(args, lambda f: dialect.document(data, f, member_units(built.choice)))
         else:
             dialect.emit(args, lambda f: format_parameters(params, f, title, included, std))
     return 0

@@ -15,7 +15,7 @@
   (:func:`bikemass.core.output.with_units`).
 
 Arguments shared by several commands (BIKE, ``--rider``, ``--combine``, ``--stiffness``,
-``--model``, ``--tyres``, ``--speeds``, ``--method``) are defined here once, and
+``--model`` and the members' options, ``--speeds``, ``--method``) are defined here once, and
 :func:`scenario` makes the one :class:`~bikemass.scenario.scenario.Scenario` of a command's
 arguments.  Only the standard library, :mod:`bikemass.core.choices` and the model family's names
 (:mod:`bikemass.models.registry`) are imported, so ``bikemass --help`` stays fast.
@@ -162,16 +162,11 @@ def model_choice(text):
 
 
 def add_model(p):
-    """``--model``, ``--tyres`` and ``--arms``."""
+    """``--model`` and each member's parameter file option (``--tyres``, ``--arms``: the members declare them)."""
     p.add_argument("--model", type=model_choice, default=BASE, metavar="MODEL", help=MODEL_HELP)
-    p.add_argument("--tyres", metavar="FILE",
-                   help="tyre file for the tyre member: front: and rear: each with cornering_coefficient and "
-                        "camber_coefficient (1/rad or 1/deg) and relaxation_length (m); default: measured "
-                        "bicycle tyres (Dressel 2013; docs/models.md)")
-    p.add_argument("--arms", metavar="FILE",
-                   help="arms file for the arms member: stiffness (N m/rad) and damping (N m s/rad) about the "
-                        "steer axis, forearms: pose or handlebars (their mass with the front frame); default 0, "
-                        "0, pose, warned: no published measurement was at hand (docs/models.md, The rider's arms)")
+    for spec in SPECS:
+        if spec.option:
+            p.add_argument(spec.option, dest=spec.keyword, metavar="FILE", help=spec.option_help)
 
 
 def add_control(p):
@@ -192,19 +187,22 @@ def scenario(args, rider=None, stiffness=None, bike=None, origin=None):
     # lazy: the library loads numpy; bikemass --help must not
     from ..scenario.scenario import Scenario
 
+    members = {}
     for spec in SPECS:                                    # a member's file only with the member
-        given = getattr(args, spec.option_key, None) if spec.option_key else None
+        given = getattr(args, spec.keyword, None) if spec.option else None
         if given and not parse_model(args.model).has(spec.name):
-            wanted = parse_model(f"{args.model}+{spec.name}" if args.model != BASE else spec.name).name
+            wanted = parse_model(args.model).with_member(spec.name).name
             raise InputError(spec.option, given, f"a --model with the {spec.name} member (e.g. --model {wanted}); "
                              f"--model {args.model} has no {spec.name} member")
-    options = {k: getattr(args, k) for k in ("combine", "method", "allow_off_contact", "model", "tyres", "arms")
+        if given is not None:
+            members[spec.keyword] = given
+    options = {k: getattr(args, k) for k in ("combine", "method", "allow_off_contact", "model")
                if getattr(args, k, None) is not None}
     if not isinstance(options.get("method"), str) or options["method"] not in Method.values():
         options.pop("method", None)                       # uncertainty's --method is its own
     bike = args.bike if bike is None else bike
     return Scenario(bike, rider or getattr(args, "rider", None), stiffness or getattr(args, "stiffness", RIGID),
-                    origin=origin or bike, **options)
+                    origin=origin or bike, member_inputs=members, **options)
 
 
 def bike_name(bike):

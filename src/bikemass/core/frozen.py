@@ -29,6 +29,9 @@ class FrozenMap(Mapping):
     def __reduce__(self):
         return FrozenMap, (self._data,)
 
+    def __hash__(self):
+        return hash(frozenset(self._data.items()))
+
     def __repr__(self):
         return f"FrozenMap({self._data!r})"
 

@@ -20,7 +20,8 @@ seed: 0                         # optional: the screening's (scrambled Sobol) se
 
 A bound or target with a unit is converted to SI; a bare number is SI for a benchmark parameter
 (its ``lam`` in radians) and for a metric, and in the unit the file writes there for a dotted path
-(the sweep's rule).  Paths (``bike``, ``rider``, ``stiffness``, ``tyres``) are relative to the spec.
+(the sweep's rule).  Paths (``bike``, ``rider``, ``stiffness``, a member's file such as ``tyres``) are relative
+to the spec.
 """
 
 from dataclasses import dataclass
@@ -31,12 +32,12 @@ from ..core.limits import MAX_SPEED
 from ..core.paths import near_spec, near_spec_file
 from ..core.units import DIMENSIONS, UnitError, dimension_of, split_quantity
 from ..models.parameters import NAMES, dimension
-from ..models.registry import BASE, spec_model
+from ..models.registry import BASE, KEYWORDS, spec_members, spec_model
 from ..scenario.scenario import Scenario
 from ..core.choices import Tuning
 from .metrics import HANDLING, STABILITY_MARGIN, catalogue
 
-TOP_KEYS = ("bike", "rider", "stiffness", "combine", "model", "tyres", "max_speed", "speed", "tuning", "variables",
+TOP_KEYS = ("bike", "rider", "stiffness", "combine", "model", *KEYWORDS, "max_speed", "speed", "tuning", "variables",
             "maximise",
             "minimise", "target", "constraints", "starts", "seed", "name", "description")
 SENSES = ("maximise", "minimise", "target")
@@ -84,7 +85,8 @@ class OptimiseSpec:
     stiffness: str = "infinite"
     combine: str = "exact"
     model: str = BASE
-    tyres: str = None
+    members: tuple = ()
+    """``((keyword, path), ...)``: the members' files (``tyres``, as ``--tyres``)."""
     max_speed: float = 30.0
     starts: int = 2
     seed: int = 0
@@ -93,8 +95,8 @@ class OptimiseSpec:
 
     def scenario(self):
         """The :class:`~bikemass.scenario.scenario.Scenario` every design changes."""
-        return Scenario(self.bike, self.rider, self.stiffness, self.combine, model=self.model, tyres=self.tyres,
-                        origin=self.source)
+        return Scenario(self.bike, self.rider, self.stiffness, self.combine, model=self.model,
+                        member_inputs=dict(self.members), origin=self.source)
 
     @property
     def all_constraints(self):
@@ -192,7 +194,7 @@ def read_spec(path):
         rider=near_spec(path, node["rider"].string()) if node.has("rider") else "none",
         stiffness=near_spec_file(path, node["stiffness"].string()) if node.has("stiffness") else "infinite",
         combine=node["combine"].string(("exact", "thesis")) if node.has("combine") else "exact",
-        model=model, tyres=near_spec(path, node["tyres"].string()) if node.has("tyres") else None,
+        model=model, members=spec_members(node, lambda text: near_spec(path, text)),
         max_speed=float(max_speed), variables=(), sense=sense, objective=objective, target=target)
     scenario = spec.scenario()
     variables = node["variables"]

@@ -13,14 +13,10 @@ import numpy as np
 
 from ..core.errors import InputError
 from ..core.frozen import readonly
-from .members.arms.parameters import Arms
-from .members.flexible.parameters import Compliances
-from .parameters import NAMES, BenchmarkParameters
-from .members.rider_lean.parameters import RiderLeanParameters
 from .linear import LinearModel, SecondOrder, polynomial, state_form
-from .registry import module_name, parse_model
+from .parameters import NAMES, BenchmarkParameters
+from .registry import BASE, by_keyword, module_name, parse_model
 from .signals import signal
-from .members.tyre.parameters import DEFAULT_TYRES, Tyres
 
 
 @lru_cache(maxsize=None)
@@ -33,8 +29,15 @@ def generated(model):
 
 
 def parameter_names(model):
-    """The names of the parameters that the code of ``model`` takes, in order."""
-    return tuple(name for name, _, _ in generated(model).PARAMETERS)
+    """The names of the parameters that the code of ``model`` takes, in order (the generated code's, then
+    those of the members without a derivation)."""
+    return tuple(name for name, _, _ in parameters_of(model))
+
+
+def parameters_of(model):
+    """``(name, unit, description)`` of every parameter of ``model`` (:func:`parameter_names`)."""
+    extra = tuple(p for spec in parse_model(model).specs if not spec.derived for p in spec.runtime().PARAMETERS)
+    return (*generated(model).PARAMETERS, *extra)
 
 
 def coefficients(model, values):
@@ -42,12 +45,15 @@ def coefficients(model, values):
     ``values`` (``{name: float or array}``, every name of :func:`parameter_names`; arrays broadcast,
     their shape leads the results)."""
     code = generated(model)
-    try:
-        args = [values[name] for name, _, _ in code.PARAMETERS]
-    except KeyError:
-        missing = [name for name, _, _ in code.PARAMETERS if name not in values]
-        raise ValueError(f"model {code.NAME!r}: parameters missing: {', '.join(missing)}") from None
-    return code.coefficients(*(x if type(x) is float else _number(x) for x in args))
+    missing = [name for name in parameter_names(model) if name not in values]
+    if missing:
+        raise ValueError(f"model {parse_model(model).name!r}: parameters missing: {', '.join(missing)}")
+    E, A, B = code.coefficients(*(x if type(x) is float else _number(values[name]) for name, _, _ in code.PARAMETERS
+                                  for x in (values[name],)))
+    for spec in parse_model(model).specs:                 # the members that change the combination's equations
+        if not spec.derived:
+            E, A, B = spec.runtime().transform({n: values[n] for n, _, _ in spec.runtime().PARAMETERS}, code, E, A, B)
+    return E, A, B
 
 
 def _number(x):
@@ -112,7 +118,7 @@ def linear_model(model, values, held=()):
         q, dq = slice(0, n), slice(n, 2 * n)
         mechanics = SecondOrder(states[:n], readonly(E[dq, dq]), readonly(-A_terms[:, dq, dq]),
                                 readonly(-A_terms[:, dq, q]), readonly(B_terms[0, dq]))
-    return LinearModel(code.NAME, states, code.N_DYNAMIC, inputs, readonly(A), readonly(B), mechanics,
+    return LinearModel(parse_model(model).name, states, code.N_DYNAMIC, inputs, readonly(A), readonly(B), mechanics,
                        code.FAMILIES)
 
 
@@ -147,71 +153,65 @@ def _descriptor(model, values, held=()):
     return code, E, A_terms, B_terms
 
 
-def values(model, bicycle, tyres=None, compliances=None, arms=None):
-    """The ``{name: float}`` of ``model`` from typed parameters (see :func:`build`)."""
+def typed_members(model, subject, members=None):
+    """``(BenchmarkParameters, {member name: typed parameters})`` of ``model``: the rigid set and each member's
+    parameters, from ``members`` (``{member name: given}``, each given as its member's ``coerce`` takes it:
+    the typed value, a file, a mapping, or ``None`` for its default) and from ``subject``, a parameter set
+    (:class:`~bikemass.models.parameters.BenchmarkParameters`, or one of a member's own types, e.g.
+    :class:`~bikemass.models.members.rider_lean.parameters.RiderLeanParameters`: that member's parameters,
+    held rigid for a model without it)."""
     choice = parse_model(model)
-    if choice.has("rider-lean"):
-        if not isinstance(bicycle, RiderLeanParameters):
-            raise InputError("model", choice.name, "the rider-lean model needs the rider split at the hips "
-                             "(RiderLeanParameters: rider_lean_parameters(bicycle, rider) or from_moore_values)")
-        out = bicycle.values()
-    elif isinstance(bicycle, RiderLeanParameters):
-        out = bicycle.rigid().to_dict()
-    elif isinstance(bicycle, BenchmarkParameters):
-        out = {name: getattr(bicycle, name) for name in NAMES}
-    else:
-        raise InputError("model", choice.name, f"benchmark or rider-lean parameters, not {type(bicycle).__name__}")
-    if choice.has("tyre"):
-        tyres = DEFAULT_TYRES if tyres is None else tyres
-        if not isinstance(tyres, Tyres):
-            raise InputError("tyres", choice.name, f"Tyres (front, rear), not {type(tyres).__name__}")
-        out.update(tyres.values())
-    elif tyres is not None:
-        raise InputError("tyres", choice.name, f"no tyres for the model {choice.name} (add the tyre member: "
-                         f"{_with(choice, 'tyre')})")
-    if choice.has("flexible"):
-        if not isinstance(compliances, Compliances):
-            raise InputError("compliances", choice.name, "the flexible model needs the frame's and the fork's "
-                             "compliances (Compliances: bikemass.fe.flexible.compliances(bicycle, material))")
-        out.update(compliances.values(out))
-    elif compliances is not None:
-        raise InputError("compliances", choice.name, f"no compliances for the model {choice.name} (add the "
-                         f"flexible member: {_with(choice, 'flexible')})")
-    if choice.has("arms"):
-        if not isinstance(arms, Arms):
-            raise InputError("arms", choice.name, "the arms member needs the arms' stiffness and damping (Arms: "
-                             "bikemass.models.members.arms.parameters.as_arms)")
-        out.update(arms.values())
-    elif arms is not None:
-        raise InputError("arms", choice.name, f"no arms for the model {choice.name} (add the arms member: "
-                         f"{_with(choice, 'arms')})")
+    members = {k: v for k, v in (members or {}).items() if v is not None}
+    own = getattr(type(subject), "MODEL", BASE)
+    if own != BASE:
+        if choice.has(own):
+            members.setdefault(own, subject)
+        subject = subject.rigid()
+    if not isinstance(subject, BenchmarkParameters):
+        raise InputError("model", choice.name, f"benchmark parameters or a member's parameter set, not "
+                         f"{type(subject).__name__}")
+    for name in members:
+        if not choice.has(name):
+            raise InputError(name, choice.name, f"no {name} parameters for the model {choice.name} (add the "
+                             f"{name} member: {choice.with_member(name).name})")
+    return subject, {spec.name: spec.runtime().coerce(members.get(spec.name), spec.keyword or spec.name)
+                     for spec in choice.specs}
+
+
+def values(model, subject, *, members=None, **keywords):
+    """The ``{name: float}`` of ``model`` from typed parameters (see :func:`build`)."""
+    rigid, typed = typed_members(model, subject, {**(members or {}), **by_keyword(keywords)})
+    return _values(model, rigid, typed)
+
+
+def _values(model, rigid, typed):
+    out = {name: getattr(rigid, name) for name in NAMES}
+    for spec in parse_model(model).specs:
+        out.update(spec.runtime().values(typed[spec.name], out))
     return out
 
 
-def _with(choice, member):
-    """The name of ``choice`` with ``member`` added."""
-    return parse_model("+".join((*choice.members, member))).name
-
-
-def build(model, bicycle, tyres=None, compliances=None, arms=None):
+def build(model, subject, *, members=None, **keywords):
     """The :class:`~bikemass.models.linear.LinearModel` of ``model`` (``"whipple"``, ``"rider-lean"``,
     ``"tyre"``, ``"flexible"`` or members joined by ``+``, or a
     :class:`~bikemass.models.registry.ModelChoice`).
 
-    ``bicycle``: :class:`~bikemass.models.parameters.BenchmarkParameters`, or
-    :class:`~bikemass.models.members.rider_lean.parameters.RiderLeanParameters` (needed by ``rider-lean``; a model without
-    it holds the upper body rigid: :meth:`~bikemass.models.members.rider_lean.parameters.RiderLeanParameters.rigid`).
-    ``tyres``: :class:`~bikemass.models.members.tyre.parameters.Tyres` for the ``tyre`` member (default
-    :data:`~bikemass.models.members.tyre.parameters.DEFAULT_TYRES`); an error for a model without tyres.
-    ``compliances``: :class:`~bikemass.models.members.flexible.parameters.Compliances` for the ``flexible`` member
-    (:func:`bikemass.fe.flexible.compliances`; required); an infinitely stiff one (``None``)
-    holds its coordinate at zero; an error for a model without the member.
-    ``arms``: :class:`~bikemass.models.members.arms.parameters.Arms` for the ``arms`` member (required; an error for a
-    model without it).
+    ``subject``: :class:`~bikemass.models.parameters.BenchmarkParameters`, or a member's own parameter set
+    (:class:`~bikemass.models.members.rider_lean.parameters.RiderLeanParameters`: needed by ``rider-lean``;
+    a model without that member holds the upper body rigid).  ``members``: ``{member name: parameters}``
+    (:mod:`bikemass.models.members`: e.g. ``{"tyre": Tyres(...)}``; a member left out takes its default,
+    or says what it needs); parameters for a member the model does not have are an error.  ``keywords``: the
+    same by a member's keyword or attribute (``tyres=``, ``compliances=``, ``arms=``).
     """
-    return linear_model(model, values(model, bicycle, tyres, compliances, arms), held_coordinates(model, compliances))
+    rigid, typed = typed_members(model, subject, {**(members or {}), **by_keyword(keywords)})
+    return linear_model(model, _values(model, rigid, typed), _held(model, typed))
 
 
-def held_coordinates(model, compliances):
-    """The coordinates ``model`` holds at zero: the infinitely stiff ones of its ``compliances``."""
-    return compliances.held if parse_model(model).has("flexible") and isinstance(compliances, Compliances) else ()
+def _held(model, typed):
+    return tuple(c for spec in parse_model(model).specs for c in spec.hook("held", lambda t: ())(typed[spec.name]))
+
+
+def held_coordinates(model, members):
+    """The coordinates ``model`` holds at zero with the members' typed parameters ``members``
+    (``{member name: typed}``): e.g. the infinitely stiff ones of the flexible member's compliances."""
+    return _held(model, {spec.name: members.get(spec.name) for spec in parse_model(model).specs})

@@ -21,6 +21,7 @@ import yaml
 from ..core.errors import InputError
 from .parameters import BenchmarkParameters
 from .family import build
+from .registry import model_of
 from .members.rider_lean.parameters import LeanJoint, RiderLeanParameters, UpperBody
 
 PARAMETERIZATION = "MooreRiderLean2012"
@@ -129,8 +130,9 @@ def from_moore_values(values, source="values") -> RiderLeanParameters:
     return RiderLeanParameters(bicycle, upper, LeanJoint(stiffness=p["k9"], damping=p["c9"]))
 
 
-def moore_linear_model(values, model="rider-lean", tyres=None, source="values"):
-    """The :class:`~bikemass.models.linear.LinearModel` of ``model`` (default ``rider-lean``; any
-    combination, see :func:`~bikemass.models.family.build`) from a ``MooreRiderLean2012`` values
-    mapping (see :func:`from_moore_values`)."""
-    return build(model, from_moore_values(values, source), tyres)
+def moore_linear_model(values, model=None, tyres=None, source="values"):
+    """The :class:`~bikemass.models.linear.LinearModel` of ``model`` (default the set's own member, the
+    leaning rider; any combination, see :func:`~bikemass.models.family.build`) from a
+    ``MooreRiderLean2012`` values mapping (see :func:`from_moore_values`)."""
+    subject = from_moore_values(values, source)
+    return build(model_of(subject, model), subject, tyres=tyres)

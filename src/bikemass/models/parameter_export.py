@@ -80,46 +80,41 @@ def meijaard_yaml(params, speed=1.0, rider_included=False):
     return yaml.safe_dump(data, sort_keys=True)
 
 
-def member_document(choice, params, lean=None, compliances=None, tyres=None, stiffness=None, rider_included=False,
-                    source="", arms=None):
+def member_document(choice, params, members=None, stiffness=None, rider_included=False, source=""):
     """Every parameter a model of the family uses, as one parameter file (plain data) that every command
-    reads back as the same model: the set the model takes (the 26 benchmark names, SI; for a model
-    with ``rider-lean`` the ``MooreRiderLean2012`` set of the rider split at the hips), ``model:`` (the
-    member combination's name), and each member's block (:data:`~bikemass.bicycle.parameter_sets.MEMBER_KEYS`):
-    ``flexible:`` the frame's and the fork's compliances (axis, stiffness N m/rad, modal inertia),
-    ``tyre:`` the tyre file's form, ``arms:`` the arms' stiffness (N m/rad) and damping (N m s/rad) about
-    the steer axis, ``frame_stiffness:`` the Whipple model's quasi-static S (N m/rad).
+    reads back as the same model: the set the model takes (the 26 benchmark names, SI; a member that writes
+    its own set, the leaning rider's ``MooreRiderLean2012`` form, replaces it), ``model:`` (the member
+    combination's name), each member's block under its name (its ``write_block``: for the flexible frame
+    the compliances, for the tyres the tyre file's form, for the arms their stiffness and damping), and
+    ``frame_stiffness:`` the Whipple model's quasi-static S (N m/rad).
 
-    ``choice`` is a :class:`~bikemass.models.registry.ModelChoice`; ``source`` says what made the
-    compliances (a material), written beside them."""
-    from .moore2012 import PARAMETERIZATION, to_moore_values          # lazy: only a rider-lean file needs it
-    if choice.has("rider-lean"):
-        doc = {"description": "", "parameterization": PARAMETERIZATION, "parameters": "", "rider": None,
-               "values": to_moore_values(lean)}
-    else:
+    ``choice`` is a :class:`~bikemass.models.registry.ModelChoice`; ``members`` ``{member name: typed
+    parameters}`` (:attr:`bikemass.scenario.scenario.Built.members`); ``source`` says what made a member's
+    parameters that take the stiffness choice (a material), written beside them."""
+    members = members or {}
+    doc = None
+    for spec in choice.specs:
+        write_set = spec.hook("write_set")
+        if write_set is not None and members.get(spec.name) is not None:
+            doc = write_set(members[spec.name])
+    if doc is None:
         doc = {**params.to_dict(), **({"rider_included": True} if rider_included else {})}
     doc["model"] = choice.name
-    if choice.has("flexible") and compliances is not None:
-        doc["flexible"] = {**compliances.to_dict(), **({"source": str(source)} if source else {})}
-    if choice.has("tyre") and tyres is not None:
-        doc["tyre"] = {w: {"cornering_coefficient": f"{t.cornering_coefficient!r} 1/rad",
-                           "camber_coefficient": f"{t.camber_coefficient!r} 1/rad",
-                           "relaxation_length": t.relaxation_length,
-                           # the moments only when a tyre has them (a force-only tyre's file as before)
-                           **({"pneumatic_trail": f"{t.pneumatic_trail!r} m"} if t.pneumatic_trail else {}),
-                           **({"twisting_coefficient": f"{t.twisting_coefficient!r} m/rad"}
-                              if t.twisting_coefficient else {})}
-                       for w, t in (("front", tyres.front), ("rear", tyres.rear))}
-    if choice.has("arms") and arms is not None:
-        doc["arms"] = arms.to_dict()
+    for spec in choice.specs:
+        write = spec.hook("write_block")
+        if write is not None and members.get(spec.name) is not None:
+            doc[spec.name] = {**write(members[spec.name]),
+                              **({"source": str(source)} if source and spec.takes_stiffness else {})}
     if not choice.members and stiffness is not None:
         doc["frame_stiffness"] = [[float(x) for x in row] for row in stiffness]
     return doc
 
 
-def member_units():
+def member_units(choice):
     """The units of :func:`member_document`'s keys beside the benchmark parameters' (SI)."""
-    from .compliance import Compliance          # lazy: numpy; the text formats above do not need it
-    from .members.arms.parameters import Arms                      # lazy: loads the config reader (numpy), as Compliance does
-    return {**{k: u for k, u in Compliance.units().items() if u}, "relaxation_length": "m",
-            "frame_stiffness": "N m/rad", **Arms.units()}
+    out = {"frame_stiffness": "N m/rad"}
+    for spec in choice.specs:
+        units = spec.hook("units")
+        if units is not None:
+            out.update(units())
+    return out

@@ -3,38 +3,39 @@
 from dataclasses import dataclass
 
 from ..core.errors import InputError, short
+from .members import MEMBERS as MEMBERS_DECLARED
 
 BASE = "whipple"
 """The Whipple bicycle of Meijaard et al. (2007): every member extends it."""
 
 
-@dataclass(frozen=True)
-class MemberSpec:
-    """What the shells say about a member: its ``name`` (as ``--model`` writes it), ``summary`` (what it
-    adds, a phrase), ``needs`` (what a scenario must give it, a phrase; empty when nothing) and
-    ``option`` (the command-line option of its parameter file, ``None`` without one, with ``option_key``
-    the scenario's keyword it fills)."""
-
-    name: str
-    summary: str
-    needs: str = ""
-    option: str | None = None
-    option_key: str | None = None
-
-
-SPECS = (
-    MemberSpec("rider-lean", "the rider's upper body leans at the hips against a spring and damper",
-               "--rider, or a MooreRiderLean2012 parameter file as BIKE"),
-    MemberSpec("tyre", "tyres that slip", "", "--tyres", "tyres"),
-    MemberSpec("flexible", "the rear frame twists and the fork bends, stiffness and inertia from the beam models "
-               "of the tubes in the --stiffness material (infinite: rigid)"),
-    MemberSpec("arms", "the hands on the grips: a spring and damper about the steer axis between the bars and the "
-               "upper body", "", "--arms", "arms"),
-)
-"""Every member of the family, in the canonical order of a combination's name: the one place the
-command line's help, its option checks and the web page's note take the members from."""
+SPECS = MEMBERS_DECLARED
+"""Every member's :class:`~bikemass.models.members.spec.Member`, in the canonical order of a combination's
+name (:data:`bikemass.models.members.PACKAGES`): the one place the command line's options and help, the
+scenario, the sweeps, the exports and the web page take the members from."""
 MEMBERS = tuple(spec.name for spec in SPECS)
 """Every member's name, in the canonical order of a combination's name."""
+BY_NAME = {spec.name: spec for spec in SPECS}
+"""Member name -> its :class:`~bikemass.models.members.spec.Member`."""
+KEYWORDS = tuple(spec.keyword for spec in SPECS if spec.keyword)
+"""The members' keywords (``tyres``, ``arms``): a scenario's, an analysis's, a spec's top-level keys."""
+BY_KEYWORD = {key: spec for spec in SPECS for key in (spec.keyword, spec.attribute) if key}
+"""A member's keyword or built attribute (``tyres``, ``compliances``) -> its
+:class:`~bikemass.models.members.spec.Member`."""
+
+
+def by_keyword(given, source="members"):
+    """``{member name: value}`` of ``{keyword: value}`` (each key a member's name, its keyword or its
+    attribute: ``tyres``, ``compliances``); ``None`` values left out; InputError for an unknown key."""
+    out = {}
+    for key, value in given.items():
+        spec = BY_NAME.get(key) or BY_KEYWORD.get(key)
+        if spec is None:
+            known = sorted({k for s in SPECS for k in (s.name, s.keyword, s.attribute) if k})
+            raise InputError(source, key, f"a member's parameters by its name or keyword: {', '.join(known)}")
+        if value is not None:
+            out[spec.name] = value
+    return out
 
 
 def model_help():
@@ -60,6 +61,15 @@ class ModelChoice:
     def has(self, member):
         """Whether ``member`` is on."""
         return member in self.members
+
+    @property
+    def specs(self):
+        """The :class:`~bikemass.models.members.spec.Member` of each member on, in canonical order."""
+        return tuple(BY_NAME[m] for m in self.members)
+
+    def with_member(self, member):
+        """The combination with ``member`` added (its canonical name: what an error suggests)."""
+        return parse_model("+".join((*self.members, member)))
 
 
 def parse_model(text, source="model"):
@@ -90,8 +100,16 @@ def model_of(params, model=None, source="model"):
 
 
 def module_name(members):
-    """The generated module of a combination: ``whipple``, ``rider_lean``, ``tyre``, ``rider_lean_tyre``."""
-    return "_".join(m.replace("-", "_") for m in members) or BASE
+    """The generated module of a combination: ``whipple``, ``rider_lean``, ``tyre``, ``rider_lean_tyre`` (the
+    derived members only: one without a derivation changes the equations of the combination it joins)."""
+    return "_".join(m.replace("-", "_") for m in members if BY_NAME[m].derived) or BASE
+
+
+def spec_members(node, near):
+    """``((keyword, path), ...)``: the members' files a spec's top-level config
+    :class:`~bikemass.core.config.Node` names under their keywords (``tyres: tyres.yaml``), each path made
+    relative to the spec by ``near(text)``."""
+    return tuple((key, near(node[key].string())) for key in KEYWORDS if node.has(key))
 
 
 def spec_model(node):

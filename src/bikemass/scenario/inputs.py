@@ -38,11 +38,10 @@ from ..core.paths import frames_dir, resolve
 from ..core.units import DIMENSIONS, dimension_of, to_si
 from ..mass.inertia import combine
 from ..mass.materials import Material, load_materials
-from ..models.members.flexible.parameters import Compliances, compliances_from_node
+from ..models.members.flexible.parameters import Compliances
 from ..models.members.rider_lean.parameters import RiderLeanParameters
-from ..models.members.arms.parameters import arms_from_node
-from ..models.members.tyre.parameters import tyres_from_node
 from ..models.parameters import NAMES, BenchmarkParameters
+from ..models.registry import SPECS
 from ..models.plausibility import front_load_problem, warn
 from ..rider import Rider, _read_document, poses_dir
 from ..rider.chain_file import bicycle_contacts
@@ -300,8 +299,8 @@ class Inputs:
     @property
     def file_members(self):
         """What a parameter file written by ``bikemass params --model M`` carries beside its set
-        (:data:`~bikemass.bicycle.parameter_sets.MEMBER_KEYS`): ``{"model": str, "flexible":
-        Compliances, "tyre": Tyres, "arms": Arms, "frame_stiffness": 2x2 S (N m/rad)}``, each key only when
+        (:data:`~bikemass.bicycle.parameter_sets.MEMBER_KEYS`): ``{"model": str, <member name>: its typed
+        parameters (its ``read_block``), "frame_stiffness": 2x2 S (N m/rad)}``, each key only when
         present; ``{}`` for any other bicycle."""
         if "_file_members" not in self.__dict__:
             node, bike = None, self.bike
@@ -314,12 +313,10 @@ class Inputs:
             if node is not None and kind_of(node) is not None:
                 if node.has("model"):
                     found["model"] = node["model"].string()
-                if node.has("flexible"):
-                    found["flexible"] = compliances_from_node(node["flexible"])
-                if node.has("tyre"):
-                    found["tyre"] = tyres_from_node(node["tyre"])
-                if node.has("arms"):
-                    found["arms"] = arms_from_node(node["arms"])
+                for spec in SPECS:                       # each member's block, under its name
+                    read = spec.hook("read_block")
+                    if read is not None and node.has(spec.name):
+                        found[spec.name] = read(node[spec.name])
                 if node.has("frame_stiffness"):
                     found["frame_stiffness"] = catalog.stiffness_matrix(node["frame_stiffness"].matrix(
                         "stiffness", (2, 2)))
@@ -626,8 +623,9 @@ class Inputs:
         which, key = _stiffness_key(which)
 
         def build():
-            if _rigid(which) and "flexible" in self.file_members:
-                return self.file_members["flexible"]     # a parameter file's compliances (params --model)
+            for spec in SPECS:                       # a parameter file's compliances (params --model)
+                if _rigid(which) and spec.takes_stiffness and spec.name in self.file_members:
+                    return self.file_members[spec.name]
             if which is None or (isinstance(which, str) and which in (RIGID, "rigid")):
                 return Compliances()
             if not (self._is_material(which) or _material_file(which)):

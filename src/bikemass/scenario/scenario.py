@@ -40,17 +40,14 @@ import numpy as np
 
 from ..core.choices import RIGID, Combine, Method, check
 from ..core.errors import InputError, short
-from ..core.frozen import readonly, short_repr
-from ..models.members.arms.parameters import Arms, as_arms
+from ..core.frozen import FrozenMap, readonly, short_repr
 from ..models.family import build as build_member, dynamic_derivatives, generated, held_coordinates, linear_model, \
     values as member_values
-from ..models.members.flexible.parameters import Compliances
-from ..models.members.rider_lean.parameters import RiderLeanParameters
 from ..models.linear import LinearModel
+from ..models.members.spec import Source
 from ..models.parameters import NAMES, BenchmarkParameters
 from ..models.plausibility import check_parameters
-from ..models.registry import SPECS, ModelChoice, model_of, parse_model
-from ..models.members.tyre.parameters import Tyres, as_tyres
+from ..models.registry import BY_KEYWORD, BY_NAME, SPECS, ModelChoice, by_keyword, model_of, parse_model
 from ..models import whipple
 from .loading import BicycleLike, RiderLike
 from .inputs import Inputs, _lru, file_unit, get_path, split_changes
@@ -67,20 +64,17 @@ class Built:
         ``bikemass params`` prints; SI).
     stiffness : numpy.ndarray (2, 2) or None
         The rear frame's quasi-static stiffness S (N m/rad, read-only) of the ``whipple`` model;
-        ``None`` for a rigid frame and for every other member (the ``flexible`` member takes
-        :attr:`compliances` instead).
+        ``None`` for a rigid frame and for every other member (a member that takes the stiffness
+        choice, the flexible frame, holds its own parameters instead).
     model : LinearModel
         The chosen model.
     choice : ModelChoice
         Which member of the family it is.
-    lean : RiderLeanParameters or None
-        The rider split at the hips (``rider-lean``).
-    compliances : Compliances or None
-        The frame's twist and the fork's bending (``flexible``).
-    tyres : Tyres or None
-        The tyres (``tyre``).
-    arms : Arms or None
-        The rider's arms about the steer axis (``arms``).
+    members : FrozenMap
+        ``{member name: its typed parameters}`` for each member of :attr:`choice`
+        (:mod:`bikemass.models.members`).  Each is also an attribute by the name its member declares:
+        ``lean`` (the rider split at the hips), ``compliances`` (the frame's twist and the fork's
+        bending), ``tyres``, ``arms``; ``None`` for a member the model does not have.
 
     Examples
     --------
@@ -88,33 +82,38 @@ class Built:
     >>> built = bm.Scenario("benchmark").build()
     >>> print(built.model.name, built.stiffness, f"w = {built.parameters.w} m")
     whipple None w = 1.02 m
+    >>> print(bm.Scenario("benchmark", model="tyre").build().tyres.front.relaxation_length, "m")
+    0.175 m
     """
 
     parameters: BenchmarkParameters
     stiffness: np.ndarray | None
     model: LinearModel
     choice: ModelChoice = ModelChoice()
-    lean: RiderLeanParameters | None = None
-    compliances: Compliances | None = None
-    tyres: Tyres | None = None
-    arms: Arms | None = None
+    members: FrozenMap = FrozenMap({})
+
+    def __getattr__(self, name):
+        spec = BY_KEYWORD.get(name)
+        if spec is None or name != spec.attribute:
+            raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+        return self.members.get(spec.name)
 
     def values(self):
         """``{name: float}`` of the parameters the model was generated from (the 26 benchmark names
         of the set the model takes, and its members'): what :func:`bikemass.models.family.linear_model`
         takes."""
-        return member_values(self.choice, self.lean or self.parameters, self.tyres, self.compliances, self.arms)
+        return member_values(self.choice, self.parameters, members=dict(self.members))
 
     def with_values(self, values):
         """The model of the same member at other parameter ``values`` (``{name: float}``, as
         :meth:`values`), the same coordinates held."""
-        return linear_model(self.choice, values, held_coordinates(self.choice, self.compliances))
+        return linear_model(self.choice, values, held_coordinates(self.choice, self.members))
 
     def derivatives(self, speed, names, step):
         """``{name: dA/dp}``: the dynamic block of the model's ``A(speed)`` differentiated with respect to
         each parameter of ``names`` (as :meth:`values` names them) by the complex step ``i * step``."""
         return dynamic_derivatives(self.choice, self.values(), tuple(names), speed, step,
-                                   held_coordinates(self.choice, self.compliances))
+                                   held_coordinates(self.choice, self.members))
 
     def __repr__(self):
         return short_repr(self, ("model", repr(self.model.name)), ("stiffness", self.stiffness is not None))
@@ -124,7 +123,7 @@ def _rigid(choice):
     return choice is None or (isinstance(choice, str) and choice in (RIGID, "rigid"))
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, init=False)
 class Scenario:
     """What to build: a bicycle, a rider, a frame stiffness and a model (see the module docstring).
 
@@ -150,18 +149,24 @@ class Scenario:
         ``"whipple"``, ``"rider-lean"``, ``"tyre"``, ``"flexible"`` or members joined by ``+``.
         Default: ``"whipple"``, or ``"rider-lean"`` for a bicycle given as
         :class:`~bikemass.models.members.rider_lean.parameters.RiderLeanParameters` (the parameter set's own member).
-    tyres
-        For the ``tyre`` member: a :class:`~bikemass.models.members.tyre.parameters.Tyres`, a tyre YAML file or a
-        mapping in its form; ``None``: the defaults.  Refused without the member.
+    member_inputs : Mapping, optional
+        ``{member name: its parameters}`` for members that take parameters from the scenario's user
+        (:mod:`bikemass.models.members`); the same as the keywords below.
     allow_off_contact : bool
         Use a rider pose as written even off the bicycle's contacts (the thesis's riders).
     origin : str
         What errors about changes name as their source (a sweep's spec file, ``--inputs``, ...).
-    arms
-        For the ``arms`` member: a :class:`~bikemass.models.members.arms.parameters.Arms`, an arms YAML file or a mapping
-        in its form (``stiffness`` N m/rad, ``damping`` N m s/rad about the steer axis; ``forearms:
-        handlebars`` puts the seated rider's forearms on the front frame); ``None``: a parameter file's
-        ``arms:`` block, else zero (no published default; warned).  Refused without the member.
+    **keywords
+        A member's parameters by the keyword it declares (``Member.keyword``), refused without the member:
+
+        ``tyres`` (the ``tyre`` member): a :class:`~bikemass.models.members.tyre.parameters.Tyres`, a
+        tyre YAML file or a mapping in its form; ``None``: a parameter file's ``tyre:`` block, else the
+        defaults.
+
+        ``arms`` (the ``arms`` member): a :class:`~bikemass.models.members.arms.parameters.Arms`, an arms
+        YAML file or a mapping in its form (``stiffness`` N m/rad, ``damping`` N m s/rad about the steer
+        axis; ``forearms: handlebars`` puts the seated rider's forearms on the front frame); ``None``: a
+        parameter file's ``arms:`` block, else zero (no published default; warned).
 
     Raises
     ------
@@ -186,42 +191,58 @@ class Scenario:
     combine: str = Combine.EXACT.value
     method: str = Method.MESH.value
     model: "ModelChoice | str | None" = None
-    tyres: object = None
+    member_inputs: FrozenMap = FrozenMap({})
     allow_off_contact: bool = False
     origin: str = field(default="changes", compare=False)
-    arms: object = None
 
-    def __post_init__(self):
-        object.__setattr__(self, "model", model_of(self.bicycle, self.model))   # None: the bicycle's own member
-        object.__setattr__(self, "combine", check(Combine, self.combine).value)
-        object.__setattr__(self, "method", check(Method, self.method).value)
+    def __init__(self, bicycle: object, rider: object = None, stiffness: object = RIGID,
+                 combine: str = Combine.EXACT.value, method: str = Method.MESH.value,
+                 model: "ModelChoice | str | None" = None, member_inputs: "Mapping | None" = None,
+                 allow_off_contact: bool = False, origin: str = "changes", **keywords: object):
+        set_ = object.__setattr__
+        for name, value in (("bicycle", bicycle), ("rider", rider), ("stiffness", stiffness), ("combine", combine),
+                            ("method", method), ("allow_off_contact", allow_off_contact), ("origin", origin)):
+            set_(self, name, value)
+        choice = model_of(bicycle, model)                       # None: the bicycle's own member
+        set_(self, "model", choice)
+        set_(self, "member_inputs", FrozenMap(by_keyword({**(member_inputs or {}), **keywords}, "Scenario")))
+        set_(self, "combine", check(Combine, self.combine).value)
+        set_(self, "method", check(Method, self.method).value)
         if not isinstance(self.allow_off_contact, bool):
             raise InputError("allow_off_contact", short(self.allow_off_contact), "True or False")
-        for spec in SPECS:                                     # a member's parameters only with the member
-            given = getattr(self, spec.option_key) if spec.option_key else None
-            if given is not None and not self.model.has(spec.name):
-                raise InputError(spec.option_key, short(given), f"a model with the {spec.name} member (e.g. "
-                                 f"{parse_model('+'.join((*self.model.members, spec.name))).name}) for "
-                                 f"{spec.option_key}; the model {self.model.name} has none")
-        if self.tyres is not None and not isinstance(self.tyres, (Tyres, str, os.PathLike, Mapping)):
-            as_tyres(self.tyres)                               # names what it takes
-        if self.arms is not None and not isinstance(self.arms, (Arms, str, os.PathLike, Mapping)):
-            as_arms(self.arms)                                 # names what it takes
+        for name, given in self.member_inputs.items():         # a member's parameters only with the member
+            if not choice.has(name):
+                key = BY_NAME[name].keyword or name
+                raise InputError(key, short(given), f"a model with the {name} member (e.g. "
+                                 f"{choice.with_member(name).name}) for {key}; the model {choice.name} has none")
+            spec = BY_NAME[name]
+            if spec.source is not Source.OPTION:
+                raise InputError(spec.keyword or name, short(given), f"nothing: the {name} member takes its "
+                                 "parameters from the scenario's bicycle and rider")
+            if not isinstance(given, (str, os.PathLike, Mapping)):
+                spec.runtime().coerce(given, spec.keyword or name)      # a typed value, or names what it takes
         self._refuse_stiffness(self.stiffness)
+
+    def __getattr__(self, name):
+        spec = BY_KEYWORD.get(name)
+        if spec is None or name != spec.keyword:
+            raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+        return self.member_inputs.get(spec.name)
 
     def _refuse_stiffness(self, choice):
         """A frame stiffness other than rigid needs the Whipple model (its quasi-static spring) or
         the flexible member (whose beam models take a material)."""
-        if self.model.members and not self.model.has("flexible") and not _rigid(choice):
+        if self.model.members and _stiffness_member(self.model) is None and not _rigid(choice):
+            member = next(spec.name for spec in SPECS if spec.takes_stiffness)
             raise InputError("stiffness", short(choice), f"infinite with the model {self.model.name} (a flexible "
-                             f"frame: the flexible member, e.g. {self.model.name}+flexible, whose beam models take "
-                             "a material; or --model whipple for the thesis's quasi-static spring)")
+                             f"frame: the {member} member, e.g. {self.model.with_member(member).name}, whose beam "
+                             "models take a material; or --model whipple for the thesis's quasi-static spring)")
 
     def check_stiffness(self, choice):
         """InputError unless this scenario's model takes stiffness choice ``choice`` on its bicycle
         (the Whipple model's S, or the flexible member's compliances, is made and cached)."""
         self._refuse_stiffness(choice)
-        if self.model.has("flexible"):
+        if _stiffness_member(self.model) is not None:
             self.inputs.compliances(choice)
         elif not self.model.members:
             self.inputs.frame_stiffness(choice)
@@ -247,7 +268,7 @@ class Scenario:
     def value(self, key):
         """The current value of input ``key`` (SI; :func:`~bikemass.scenario.inputs.get_path`); a
         benchmark name's in the set the model takes (for ``rider-lean``, without the upper body)."""
-        if key in NAMES and self.model.has("rider-lean"):
+        if key in NAMES and _split_member(self.model) is not None:
             return float(getattr(self.inputs.lean(forearms_held=self._held()).bicycle, key))
         return get_path(self.inputs, key)
 
@@ -274,13 +295,14 @@ class Scenario:
         """The benchmark parameter set (:attr:`Built.parameters`) with ``changes``, without building
         the model."""
         bike, rider, params, _ = split_changes(changes or {})
-        if self.inputs.lean_set is not None and not self.model.has("rider-lean"):
+        if self.inputs.lean_set is not None and _split_member(self.model) is None:
+            member = next(spec.name for spec in SPECS if spec.source is Source.RIDER_SPLIT)
             raise InputError(self.inputs._lean_source, "parameterization", "a Whipple parameter set (benchmark or "
                              f"principal) for the model {self.model.name}; a MooreRiderLean2012 set is for the "
-                             "rider-lean model (--model rider-lean, bm.Scenario(FILE, model='rider-lean'))")
+                             f"{member} model (--model {member}, bm.Scenario(FILE, model={member!r}))")
         p = self.inputs.parameters(bike, rider, self._held())
         if params:
-            if self.model.has("rider-lean"):
+            if _split_member(self.model) is not None:
                 return self._lean(bike, rider, params).rigid()
             p = check_parameters(dataclasses.replace(p, **dict(params)), self.origin)
         return p
@@ -297,27 +319,27 @@ class Scenario:
             lean = lean.replace(bicycle=check_parameters(dataclasses.replace(lean.bicycle, **dict(params)), self.origin))
         return lean
 
-    def _tyres(self):
-        if self.model.has("tyre") and self.tyres is None and "tyre" in self.inputs.file_members:
-            return self.inputs.file_members["tyre"]           # a parameter file's tyres (params --model)
-        return as_tyres(self.tyres) if self.model.has("tyre") else None
-
-    def _arms(self):
-        if not self.model.has("arms"):
-            return None
-        if self.arms is None and "arms" in self.inputs.file_members:
-            return self.inputs.file_members["arms"]           # a parameter file's arms (params --model)
-        return as_arms(self.arms)
+    def _option(self, spec):
+        """The typed parameters of member ``spec`` whose source is its keyword: the scenario's, else a
+        parameter file's block, else its default."""
+        given = self.member_inputs.get(spec.name)
+        if given is None and spec.name in self.inputs.file_members:
+            return self.inputs.file_members[spec.name]        # a parameter file's block (params --model)
+        return spec.runtime().coerce(given, spec.keyword or spec.name)
 
     def _held(self):
-        """Whether the arms member holds the rider's forearms on the handlebars (``forearms: handlebars``)."""
-        if not self.model.has("arms") or self.rider in (None, "none"):
+        """Whether a member holds the rider's forearms on the handlebars (the arms' ``forearms: handlebars``)."""
+        if self.rider in (None, "none"):
             return False          # no seated rider to move (a parameter file's set has its forearms where they were)
         found = self.__dict__.get("_forearms")
         if found is None:
-            found = as_arms(self.arms).forearms if self.arms is not None else "pose"
+            found = False
+            for spec in self.model.specs:
+                hook, given = spec.hook("forearms_held"), self.member_inputs.get(spec.name)
+                if hook is not None and given is not None:
+                    found = found or hook(spec.runtime().coerce(given, spec.keyword or spec.name))
             object.__setattr__(self, "_forearms", found)
-        return found == "handlebars"
+        return found
 
     def build(self, changes=None):
         """:class:`Built` of the scenario with ``changes`` (``{key: value}``, keys as in
@@ -334,15 +356,36 @@ class Scenario:
         if not self.model.members:
             S = self.inputs.frame_stiffness(choice, bike)
             return Built(p, None if S is None else readonly(S), whipple.whipple_model(p, S), self.model)
-        lean = self._lean(bike, rider, params) if self.model.has("rider-lean") else None
-        flexible = self.inputs.compliances(choice, bike) if self.model.has("flexible") else None
-        tyres, arms = self._tyres(), self._arms()
-        return Built(p, None, build_member(self.model, lean or p, tyres, flexible, arms), self.model, lean, flexible,
-                     tyres, arms)
+        typed = {}
+        for spec in self.model.specs:
+            if spec.source is Source.RIDER_SPLIT:
+                typed[spec.name] = self._lean(bike, rider, params)
+            elif spec.source is Source.BEAM_MODELS:
+                typed[spec.name] = self.inputs.compliances(choice, bike)
+            else:
+                typed[spec.name] = self._option(spec)
+        return Built(p, None, build_member(self.model, p, members=typed), self.model, FrozenMap(typed))
 
     def replace(self, **changes):
-        """A copy with some fields changed (a new scenario: its own caches)."""
-        return Scenario(**{**{f.name: getattr(self, f.name) for f in fields(self)}, **changes})
+        """A copy with some fields changed (a new scenario: its own caches); a member's keyword (``tyres=``)
+        replaces that member's parameters."""
+        keywords = by_keyword({k: v for k, v in changes.items() if k in BY_KEYWORD}, "replace")
+        rest = {k: v for k, v in changes.items() if k not in BY_KEYWORD}
+        inputs = {**self.member_inputs, **keywords}
+        for key, value in changes.items():                 # tyres=None removes the tyres given
+            if key in BY_KEYWORD and value is None:
+                inputs.pop(BY_KEYWORD[key].name, None)
+        return Scenario(**{**{f.name: getattr(self, f.name) for f in fields(self)}, "member_inputs": inputs, **rest})
+
+
+def _stiffness_member(choice):
+    """The member of ``choice`` that takes the stiffness choice (a material), or None."""
+    return next((spec for spec in choice.specs if spec.takes_stiffness), None)
+
+
+def _split_member(choice):
+    """The member of ``choice`` whose parameters are the rider split at the hips, or None."""
+    return next((spec for spec in choice.specs if spec.source is Source.RIDER_SPLIT), None)
 
 
 def _hashable(choice):

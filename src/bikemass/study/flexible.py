@@ -30,7 +30,11 @@ from ..analysis.engine.naming import family
 from ..analysis.engine.speeds import speed_grid
 from ..analysis.engine.stability import WOBBLE, analyse
 from ..fe.flexible import compliances
+from ..models.members.arms import MEMBER as ARMS
 from ..models.members.arms.parameters import NO_ARMS
+from ..models.members.flexible import MEMBER as FLEXIBLE
+from ..models.members.tyre import MEMBER as TYRE
+from ..models.registry import model_of, parse_model
 from ..models.family import build
 from ..models.members.rider_lean.parameters import LeanJoint
 from ..models.whipple import whipple_model
@@ -47,8 +51,12 @@ POSES = RIDERS[1:]
 SPEED = 8.0
 """Speed (m/s) at which the wobble's frequency and growth rate are stated (docs/models-flexible.md)."""
 STEER = "steer-angle"
-DAMPED_MODEL = "tyre+flexible+arms"
+FLEXIBLE_MODEL = parse_model(FLEXIBLE.name)
+"""The model of the study's wobble: the flexible frame and fork."""
+DAMPED_MODEL = parse_model("+".join((TYRE.name, FLEXIBLE.name, ARMS.name)))
 """The model of the study's damped wobble: compliance, tyres and the arms with their defaults."""
+NO_HANDS_MODEL = parse_model("+".join((TYRE.name, FLEXIBLE.name)))
+"""The damped model of the no-hands rider: without the arms."""
 
 
 @dataclass(frozen=True)
@@ -178,7 +186,7 @@ def whipple_speeds(model):
 
 def lean(parameters):
     """:class:`Lean` of :class:`~bikemass.models.members.rider_lean.parameters.RiderLeanParameters` (rigid frame)."""
-    result = analyse(build("rider-lean", parameters))
+    result = analyse(build(model_of(parameters), parameters))
     weave = tuple(c.speed for c in result.mode_crossings("weave 1") if c.kind == OSCILLATORY)
     capsize = tuple(c.speed for c in result.mode_crossings("capsize") if c.kind == REAL)
     return Lean(weave, capsize, _pairs(result.stable_speeds), *whipple_speeds(build("whipple", parameters)))
@@ -194,7 +202,7 @@ def damped_model(params, compliances, rider):
     (:data:`~bikemass.models.members.arms.parameters.NO_ARMS`: no published value; the table's notes say so); the
     no-hands rider (hands off the bars) without the arms member."""
     if rider == "no-hands":
-        return build(DAMPED_MODEL.replace("+arms", ""), params, compliances=compliances)
+        return build(NO_HANDS_MODEL, params, compliances=compliances)
     return build(DAMPED_MODEL, params, compliances=compliances, arms=NO_ARMS)
 
 
@@ -206,7 +214,7 @@ def flexible_results(inputs, bicycles=BICYCLES, riders=POSES, materials=MATERIAL
         for rider in riders:
             params = inputs.parameters(GEOMETRY, Configuration(bike, rider, "infinite"))
             for material in materials:
-                wobbles[bike, rider, material] = wobble(build("flexible", params,
+                wobbles[bike, rider, material] = wobble(build(FLEXIBLE_MODEL, params,
                                                               compliances=flexible[bike, material]))
                 damped[bike, rider, material] = wobble(damped_model(params, flexible[bike, material], rider))
             leans[bike, rider] = lean(rider_lean_parameters(inputs.bicycle(bike), inputs.rider(rider, bike),

@@ -12,7 +12,7 @@ from .configurations import THESIS_NAMES
 
 BAND_COLOURS = ("#dbe9f6", "#f6e3cf")
 MODELS = {"rigid": ("0.55", "rigid frame"), "spring": ("tab:blue", "thesis's spring"),
-          "flexible": ("tab:orange", "flexible frame and fork")}
+          "beams": ("tab:orange", "flexible frame and fork")}
 """Colour and legend of each model's critical speeds."""
 MARKERS = (("o", "weave"), ("s", "capsize"))
 
@@ -50,7 +50,7 @@ def _speeds(ax, results, speeds, bike, riders, materials, colours, hi):
             ax.plot([a, b], [y, y], color="tab:red", lw=5, alpha=0.35, solid_capstyle="butt")
         w = results.wobble[bike, r, m]
         marks = {"rigid": speeds[bike, r, "infinite"][:2], "spring": speeds[bike, r, m][:2],
-                 "flexible": (w.weave_speeds, w.capsize_speeds)}
+                 "beams": (w.weave_speeds, w.capsize_speeds)}
         for model, found in marks.items():
             for (marker, _), crossing in zip(MARKERS, found):
                 ax.plot(crossing[:1], [y] * len(crossing[:1]), marker, color=MODELS[model][0], mec="k", mew=0.5,

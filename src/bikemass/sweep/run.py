@@ -156,7 +156,7 @@ def code_digest():
 def input_contents(spec):
     """``{resolved path: SHA-256}`` of every file the sweep's configurations are made from: those
     building its base configuration reads (the bicycle and what it builds on, the rider and its
-    pose, the tyres, the arms, the stiffness file), and every file the spec names (a varied stiffness
+    pose, the members' files, the stiffness file), and every file the spec names (a varied stiffness
     file, ...), found next to the spec."""
     with record_contents() as read:
         scenario = spec.scenario()
@@ -164,7 +164,7 @@ def input_contents(spec):
             scenario.build()
         except (InputError, ValueError, ArithmeticError):
             pass                                    # the rows will say why; the files read so far count
-        names = [spec.bike, spec.rider, spec.stiffness, spec.tyres, spec.arms]
+        names = [spec.bike, spec.rider, spec.stiffness, *(path for _, path in spec.members)]
         names += [x for v in spec.variables if v.values is not None for x in v.values if isinstance(x, str)]
         for name in names:
             if isinstance(name, str) and Path(name).is_file():

@@ -6,8 +6,7 @@ rider: none                # optional, as --rider
 stiffness: infinite        # optional, as --stiffness
 combine: exact             # optional
 model: whipple             # optional, as --model (rider-lean, tyre, flexible, members joined by +)
-tyres: tyres.yaml          # optional, as --tyres (a model with the tyre member)
-arms: arms.yaml            # optional, as --arms (a model with the arms member)
+tyres: tyres.yaml          # optional, as --tyres (a model with the tyre member; each member's option)
 max_speed: 30              # optional: critical speeds on (0, max_speed] m/s
 vary:                      # key -> list of values, or {from, to, num}
   c: {from: 0.0, to: 0.2, num: 41}
@@ -40,11 +39,11 @@ from ..core.limits import MAX_SPEED
 from ..core.paths import near_spec, near_spec_file
 from ..core.units import DIMENSIONS, UnitError, dimension_of, split_quantity
 from ..models.parameters import NAMES, dimension
-from ..models.registry import BASE, spec_model
+from ..models.registry import BASE, KEYWORDS, spec_members, spec_model
 from ..scenario.scenario import Scenario
 
 SAMPLE_METHODS = ("grid", "lhs", "sobol")
-TOP_KEYS = ("bike", "rider", "stiffness", "combine", "model", "tyres", "arms", "max_speed", "vary", "sample",
+TOP_KEYS = ("bike", "rider", "stiffness", "combine", "model", *KEYWORDS, "max_speed", "vary", "sample",
             "global_sensitivity", "chunk", "name", "description")
 MAX_CONFIGURATIONS = 10 ** 8
 """Most configurations in one grid, checked before any is made.  No process holds a row per
@@ -109,18 +108,17 @@ class SweepSpec:
     global_sensitivity: bool
     chunk: int = None
     model: str = BASE
-    tyres: str = None
+    members: tuple = ()
+    """``((keyword, path), ...)``: the members' files (``tyres``, as ``--tyres``)."""
     inputs: str = None
     """A digest of the input files' contents (:func:`bikemass.sweep.run.run_sweep` sets it): a
     process that computes chunks reuses its scenario, and the files read into it, only for the
     same contents."""
-    arms: str = None
-    """The arms file of a model with the arms member (as ``--arms``), or None."""
 
     def scenario(self):
         """The :class:`~bikemass.scenario.scenario.Scenario` every configuration changes."""
-        return Scenario(self.bike, self.rider, self.stiffness, self.combine, model=self.model, tyres=self.tyres,
-                        origin=self.source, arms=self.arms)
+        return Scenario(self.bike, self.rider, self.stiffness, self.combine, model=self.model,
+                        member_inputs=dict(self.members), origin=self.source)
 
     @property
     def keys(self):
@@ -187,10 +185,8 @@ class SweepSpec:
         doc = {k: getattr(self, k) for k in ("bike", "rider", "stiffness", "combine", "max_speed", "method", "n",
                                             "seed", "global_sensitivity")}
         doc["variables"] = [v.__dict__ for v in self.variables]
-        if self.model != BASE or self.tyres is not None:        # the model joins the hash (older sweeps resume)
-            doc.update(model=self.model, tyres=self.tyres)
-        if self.arms is not None:
-            doc.update(arms=self.arms)
+        if self.model != BASE or self.members:         # the model joins the hash (older Whipple sweeps resume)
+            doc.update(model=self.model, **dict(self.members))
         return hashlib.sha256(json.dumps(doc, sort_keys=True, default=str).encode()).hexdigest()[:16]
 
 
@@ -222,7 +218,7 @@ STIFFNESS_CHOICES = "infinite, a material of frames/materials.yaml (steel, titan
 VARY_TAKES = ("one of the 26 benchmark parameter names (c, lam, ...), stiffness, or a dotted path into the "
               "bicycle or pose YAML (chart.stack, rider.chain.torso_lean, ...)")
 """What a key under ``vary:`` may be, for messages."""
-SET_ONCE = ("bike", "rider", "combine", "model", "tyres", "arms", "max_speed")
+SET_ONCE = ("bike", "rider", "combine", "model", *KEYWORDS, "max_speed")
 """Spec keys that hold one value for the whole sweep (one sweep per model, per bicycle, ...)."""
 
 
@@ -345,8 +341,7 @@ def read_spec(path: "str | os.PathLike") -> "SweepSpec":
         combine=node["combine"].string(("exact", "thesis")) if node.has("combine") else "exact",
         max_speed=float(max_speed), variables=variables, method=method, n=n, seed=seed,
         global_sensitivity=gsa, chunk=None if chunk is None else int(chunk),
-        model=spec_model(node), tyres=near_spec(path, node["tyres"].string()) if node.has("tyres") else None,
-        arms=near_spec(path, node["arms"].string()) if node.has("arms") else None)
+        model=spec_model(node), members=spec_members(node, lambda text: near_spec(path, text)))
     grid = method == "grid" and not gsa
     limit = MAX_CONFIGURATIONS if grid else MAX_SAMPLES
     if count_of(spec) > limit:

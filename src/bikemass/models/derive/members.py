@@ -1,19 +1,18 @@
-"""The members of the model family that the derivation knows, in their canonical order."""
+"""The members of the model family that the derivation knows: the registered members with a derivation
+(:mod:`bikemass.models.members`), in their canonical order."""
 
-from ..members.arms.derivation import Arms
-from ..members.flexible.derivation import Flexible
-from ..members.rider_lean.derivation import RiderLean
-from ..members.tyre.derivation import Tyre
+from itertools import combinations
 
-MEMBERS = {"rider-lean": RiderLean, "tyre": Tyre, "flexible": Flexible, "arms": Arms}
-"""Member name -> its :class:`~bikemass.models.derive.bicycle.Member` class, in canonical order."""
+from ..registry import SPECS
 
-_WITHOUT_ARMS = ((), ("rider-lean",), ("tyre",), ("rider-lean", "tyre"), ("flexible",), ("rider-lean", "flexible"),
-                 ("tyre", "flexible"), ("rider-lean", "tyre", "flexible"))
-COMBINATIONS = (*_WITHOUT_ARMS, *((*c, "arms") for c in _WITHOUT_ARMS))
-"""The member combinations the package ships (``()`` is the Whipple bicycle)."""
+DERIVED = tuple(spec.name for spec in SPECS if spec.derived)
+"""The names of the members with a derivation, in canonical order."""
+
+COMBINATIONS = tuple(c for n in range(len(DERIVED) + 1) for c in combinations(DERIVED, n))
+"""The member combinations the package ships (``()`` is the Whipple bicycle): every combination of the
+members with a derivation (a member without one changes the equations of whichever it joins)."""
 
 
 def members(names):
-    """New member objects for ``names`` (canonical order)."""
-    return [MEMBERS[n]() for n in MEMBERS if n in names]
+    """New derivation objects for the derived members of ``names`` (canonical order)."""
+    return [spec.derivation()() for spec in SPECS if spec.derived and spec.name in names]

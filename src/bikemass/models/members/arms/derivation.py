@@ -37,3 +37,7 @@ class Arms(Member):
         torque = -(k * angle + c * rate) * S.z
         bike.loads += [(E, torque), (upper, -torque)]
         return frame
+
+
+DERIVATION = Arms
+"""The derivation hook of this member (:meth:`bikemass.models.members.spec.Member.derivation`)."""

@@ -114,3 +114,7 @@ class Flexible(Member):
         none = inertia(parent, 0, 0, 0)
         bike.body(f"{name} tubes, modal", mass, moving, parent, none)
         bike.body(f"{name} tubes, rigid copy", -mass, fixed, parent, none)
+
+
+DERIVATION = Flexible
+"""The derivation hook of this member (:meth:`bikemass.models.members.spec.Member.derivation`)."""

@@ -149,5 +149,3 @@ def compliances_from_node(node):
     if node.has("steer_damping"):
         out["steer_damping"] = node["steer_damping"].number("damping", nonnegative=True)
     return Compliances(**out)
-
-

@@ -38,3 +38,7 @@ class RiderLean(Member):
         bike.body("upper body", p["mU"], Uo, G, inertia(G, p["IUxx"], p["IUyy"], p["IUzz"], p["IUxz"]))
         torque = bike.input("lean-torque", "N m") - p["klean"] * rho - p["clean"] * u_rho
         bike.loads += [(G, torque * C.x), (C, -torque * C.x)]
+
+
+DERIVATION = RiderLean
+"""The derivation hook of this member (:meth:`bikemass.models.members.spec.Member.derivation`)."""

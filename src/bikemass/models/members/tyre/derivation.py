@@ -94,3 +94,7 @@ class Tyre(Member):
             out.append(ExtraState(f"{wheel.name}-lateral-force", "N", "tyre", force, sigma,
                                   n * (Cg * v * gq - Ca * sq), n * (Cg * v * gu - Ca * su), -v))
         return out
+
+
+DERIVATION = Tyre
+"""The derivation hook of this member (:meth:`bikemass.models.members.spec.Member.derivation`)."""

@@ -1,0 +1,36 @@
+"""The tyre member's run-time protocol (:mod:`bikemass.models.members.spec`): how the family takes
+its typed parameters."""
+
+from .parameters import as_tyres, tyres_from_node
+
+
+def coerce(given, source="tyres"):
+    """:func:`as_tyres`: the default tyres without ``given``."""
+    return as_tyres(given, source)
+
+
+def values(typed, base):
+    """The generated code's tyre parameters (:meth:`Tyres.values`)."""
+    return typed.values()
+
+
+def read_block(node):
+    """The ``tyre:`` block of a parameter file (:func:`tyres_from_node`)."""
+    return tyres_from_node(node)
+
+
+def write_block(typed):
+    """The ``tyre:`` block of a parameter file, in the tyre file's form (coefficients in 1/rad, lengths in m;
+    the moments only where a tyre has them)."""
+    def one(t):
+        return {"cornering_coefficient": f"{t.cornering_coefficient!r} 1/rad",
+                "camber_coefficient": f"{t.camber_coefficient!r} 1/rad",
+                "relaxation_length": t.relaxation_length,
+                **({"pneumatic_trail": f"{t.pneumatic_trail!r} m"} if t.pneumatic_trail else {}),
+                **({"twisting_coefficient": f"{t.twisting_coefficient!r} m/rad"} if t.twisting_coefficient else {})}
+    return {"front": one(typed.front), "rear": one(typed.rear)}
+
+
+def units():
+    """Units of the ``tyre:`` block's plain values."""
+    return {"relaxation_length": "m"}
