@@ -448,7 +448,7 @@ def body_pose(key):
     the body from height, mass and sex, hands on the grip, solved on whichever bicycle it meets."""
     _, height, mass, sex, hands = key
     return {"name": f"{sex}, {height:g} m, {mass:g} kg, hands on the {hands}",
-            "body": {"height": float(height), "mass": float(mass), "sex": sex},     # SI: bare m and kg
+            "body": {"height": Quantity(height, "m"), "mass": Quantity(mass, "kg"), "sex": sex},
             "chain": {"hands": hands}}
 
 
