@@ -228,8 +228,8 @@ class ChainPose:
         (a name or a body mapping); the segments in ``front`` move with the front frame.
 
         Angles are :class:`~bikemass.core.units.Quantity` values in deg (a file writer writes them as
-        text with every digit, so the file's joints stay joined); bikemass reads the parts from the
-        pose itself (:func:`~bikemass.rider.pose.pose_parts`), not from this document."""
+        text with every digit, so the file's joints stay joined).  A solved pose's parts come from
+        the pose itself (:func:`~bikemass.rider.pose.pose_parts`), not from this document."""
         right, left = self.placements()
         segments = {}
         for seg, (location, angle) in right.items():

@@ -43,7 +43,9 @@ class PosedRider:
     crank : float or None
         The crank angle (deg), ``None`` for symmetric legs.
     document : Mapping
-        The pose in the placement form (what ``bikemass pose -o`` writes; read-only).
+        The pose in the placement form (read-only; its angles and crank typed,
+        :class:`~bikemass.core.units.Quantity` in deg, which ``bikemass pose -o`` writes as
+        ``"<number> deg"``).
     gaps : Mapping
         ``{joint: gap (m)}`` between the joined segment ends (zero to rounding).
 
