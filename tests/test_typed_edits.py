@@ -44,9 +44,10 @@ ALLOWED = {
 
 
 def _unit_text(node):
-    """A string constant ``" <unit>"`` (a unit of :data:`DIMENSIONS`)."""
-    return (isinstance(node, ast.Constant) and isinstance(node.value, str) and node.value.startswith(" ")
-            and node.value[1:] != "" and dimension_of(node.value[1:]) is not None)
+    """A string constant ``" <unit>"`` or ``"<unit>"`` (a unit of :data:`DIMENSIONS`; the reader takes
+    ``"72deg"`` as it takes ``"72 deg"``)."""
+    return (isinstance(node, ast.Constant) and isinstance(node.value, str) and node.value.strip() != ""
+            and node.value == node.value.rstrip() and dimension_of(node.value.lstrip()) is not None)
 
 
 def _unit_expression(node):
@@ -114,8 +115,8 @@ def test_the_scanner_finds_each_form_it_forbids():
     sample = '\n'.join([
         'a = f"{x!r} rad"', 'b = f"{x} m"', 'c = f"{x!r} {unit}"', "d = f\"{x!r} {'deg' if k else 'm'}\"",
         'e = repr(x) + " deg"', 'f = "{!r} mm".format(x)', 'g = "%r kg" % x',
-        'h = f"{x:.1f} deg"', 'i = f"got {x!r} m"', 'j = f"{label} {part}"', 'k = ", ".join(s) + " m/s"'])
-    assert [line for line, _ in number_with_unit_texts(sample)] == [1, 2, 3, 4, 5, 6, 7]
+        'h = f"{x:.1f} deg"', 'l = f"{x!r}deg"', 'i = f"got {x!r} m"', 'j = f"{label} {part}"', 'k = ", ".join(s) + " m/s"'])
+    assert [line for line, _ in number_with_unit_texts(sample)] == [1, 2, 3, 4, 5, 6, 7, 9]
 
 
 def test_a_quantity_reads_as_its_text_does():
