@@ -122,7 +122,8 @@ def test_the_scanner_finds_each_form_it_forbids():
 def test_a_quantity_reads_as_its_text_does():
     """``convert`` of a Quantity equals ``convert`` of its ``"<number> <unit>"`` text bit for bit (the
     same arithmetic), for every unit of every dimension, on seeded random numbers; a Quantity of
-    another dimension is refused as its text is, and ``file_form`` writes the text."""
+    another dimension is refused as its text is, and ``file_form`` writes the text (its repr too, so
+    that a message naming a bad value reads as it did when the value was text)."""
     rng = np.random.default_rng(32)
     for dimension, (si, table) in DIMENSIONS.items():
         for unit in table:
@@ -133,6 +134,7 @@ def test_a_quantity_reads_as_its_text_does():
                 for target in (si, unit):
                     assert convert(q, dimension, target) == convert(f"{float(x)!r} {unit}", dimension, target)
                 assert file_form({"v": [q]}) == {"v": [f"{float(x)!r} {unit}"]}
+    assert repr(Quantity(500.0, "kg")) == "'500.0 kg'"        # an error message names it as a file's text
     with pytest.raises(UnitError, match="a length"):
         convert(Quantity(72.0, "deg"), "length", "m")
     with pytest.raises(UnitError):

@@ -103,6 +103,11 @@ class Quantity:
         """The dimension of :attr:`unit` (``"length"``, ``"angle"``, ...)."""
         return dimension_of(self.unit)
 
+    def __repr__(self):
+        """The text a file would hold, quoted: an error message names the value as it names one read
+        from a file (``got '500.0 kg'``)."""
+        return repr(self.text)
+
     @property
     def text(self):
         """``"<number> <unit>"`` with every digit: how a file writes it (a file writer's form only)."""
