@@ -11,6 +11,7 @@ from bikemass.bicycle import bicycle_parameters, load_bicycle
 from bikemass.bicycle.derived_chart import derived_chart
 from bikemass.cli.main import main
 from bikemass.core.errors import InputError
+from bikemass.core.plain import file_form
 from printed import number_after
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -214,7 +215,7 @@ def test_draw_shows_the_chart_dimensions(tmp_path):
 
 def _chart_bicycle(tmp_path, chart, name="bike.yaml"):
     path = tmp_path / name
-    path.write_text(yaml.safe_dump({"name": "round trip", "chart": chart}))
+    path.write_text(yaml.safe_dump(file_form({"name": "round trip", "chart": chart})))
     return load_bicycle(str(path))
 
 

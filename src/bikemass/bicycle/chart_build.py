@@ -15,6 +15,7 @@ import numpy as np
 from ..core.config import Node, load_yaml
 from ..core.gate import note_read
 from ..core.paths import frames_dir
+from ..core.units import Quantity
 from ..models.plausibility import warn
 from .chart import check_redundant, construct, read_chart, tyre_change_note
 
@@ -155,7 +156,7 @@ def expand_chart(node):
     mapping = {
         "name": node["name"].value,
         "geometry": {"wheelbase": float(values["wheelbase"]), "trail": float(values["trail"]),
-                     "head_angle": f"{chart.head_tube_angle!r} rad", "rear_wheel_radius": chart.wheel_radius,
+                     "head_angle": Quantity(chart.head_tube_angle, "rad"), "rear_wheel_radius": chart.wheel_radius,
                      "front_wheel_radius": chart.wheel_radius, "fork_offset": chart.fork_offset},
         "keypoints": kp,
         "material": material,

@@ -10,6 +10,8 @@ the tube ``top_tube``.  Values that need a point the bicycle lacks are ``None``
 
 import numpy as np
 
+from ..core.units import Quantity
+
 CHART_ORDER = ("wheelbase", "front_center", "trail", "mechanical_trail", "wheel_flop", "stack", "reach",
                "head_tube_angle", "seat_tube_angle", "head_tube_length", "seat_tube_length",
                "top_tube_length", "chainstay_length", "bb_drop", "bb_height", "standover", "fork_offset",
@@ -82,12 +84,15 @@ def derived_chart(bicycle):
 
 
 def chart_mapping(chart):
-    """A ``chart:`` mapping (values with units) that rebuilds the frame of ``derived_chart`` output."""
+    """A ``chart:`` mapping that rebuilds the frame of ``derived_chart`` output: its values typed
+    with their units (:class:`~bikemass.core.units.Quantity`, m and deg), read as they are by
+    ``bm.load_bicycle({"name": ..., "chart": ...})`` and written as ``"<number> <unit>"`` text by
+    :func:`~bikemass.core.plain.file_form` for a file."""
     keys = ("stack", "reach", "head_tube_angle", "seat_tube_angle", "head_tube_length", "seat_tube_length",
             "chainstay_length", "bb_drop", "fork_offset")
     missing = [k for k in keys if chart[k] is None]
     if missing:
         raise ValueError(f"the bicycle has no {', '.join(missing)} (no frame keypoints)")
-    out = {k: f"{chart[k]!r} {'deg' if k in ANGLES else 'm'}" for k in keys}
-    out["wheel_radius"] = f"{chart['rear_wheel_radius']!r} m"
+    out = {k: Quantity(chart[k], "deg" if k in ANGLES else "m") for k in keys}
+    out["wheel_radius"] = Quantity(chart["rear_wheel_radius"], "m")
     return out

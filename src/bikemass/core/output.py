@@ -26,7 +26,7 @@ import yaml
 
 from .errors import InputError, short
 from .gate import was_read
-from .plain import document_keys, plain
+from .plain import document_keys, file_form
 from .stopping import deferred
 
 _WARNINGS = contextvars.ContextVar("bikemass_warnings", default=None)
@@ -123,9 +123,10 @@ def _written_data(obj, units, unit=None):
 
 
 def written(document):
-    """A document as bikemass writes it: plain data (:func:`plain`) with :data:`ZERO` applied
-    to every number under a key of its top-level ``units`` block."""
-    data = plain(document)
+    """A document as bikemass writes it: plain data (:func:`~bikemass.core.plain.plain`) with :data:`ZERO` applied
+    to every number under a key of its top-level ``units`` block (a
+    :class:`~bikemass.core.units.Quantity` as its text, :func:`~bikemass.core.plain.file_form`)."""
+    data = file_form(document)
     if isinstance(data, dict) and isinstance(data.get("units"), dict):
         data = _written_data(data, data["units"])
     return data

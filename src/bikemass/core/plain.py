@@ -1,10 +1,13 @@
 """Plain Python data from values holding numpy scalars and arrays: what JSON and YAML can hold
 (:mod:`bikemass.core.output` writes it; :func:`bikemass.core.gate.plain_input` checks Python
-input with it as it checks a file)."""
+input with it as it checks a file).  A :class:`~bikemass.core.units.Quantity` stays one (a reader
+takes it as it is); :func:`file_form` writes it as its text for a file."""
 
 from collections.abc import Mapping
 
 import numpy as np
+
+from .units import Quantity
 
 
 def plain(obj):
@@ -35,3 +38,25 @@ def document_keys(obj):
                 walk(v)
     walk(obj)
     return found.keys()
+
+
+def file_form(obj):
+    """:func:`plain` data as a file writes it: every :class:`~bikemass.core.units.Quantity` as its
+    ``"<number> <unit>"`` text (the one place a typed value becomes text; nothing reads it back).
+
+    Examples
+    --------
+    >>> from bikemass.core.plain import file_form
+    >>> from bikemass.core.units import Quantity
+    >>> file_form({"head_tube_angle": Quantity(72.5, "deg"), "stack": 0.585})
+    {'head_tube_angle': '72.5 deg', 'stack': 0.585}
+    """
+    data = plain(obj)
+
+    def text(value):
+        if isinstance(value, dict):
+            return {k: text(v) for k, v in value.items()}
+        if isinstance(value, list):
+            return [text(v) for v in value]
+        return value.text if isinstance(value, Quantity) else value
+    return text(data)

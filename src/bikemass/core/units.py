@@ -16,10 +16,17 @@ The rule for bare numbers (one rule, every YAML format):
   The one exception is a format whose definition fixes the unit: the benchmark
   parameter set of Meijaard et al. (2007), whose ``lam`` is radians (as
   BicycleParameters writes it); its reader passes ``bare_unit="rad"``.
+
+Inside bikemass a value with a unit travels as a :class:`Quantity` (a number and its unit), never
+as text: a design change (a chart's head angle, a solved pose's joint angle, a swept value in
+the spec's unit) is put into a document as a Quantity, read by the same :func:`convert` as
+``"<number> <unit>"`` text (so with the same arithmetic) and written out as that text only by a
+file writer (:func:`bikemass.core.plain.plain`).
 """
 
 import math
 import re
+from dataclasses import dataclass
 
 INCH = 0.0254
 """One inch in metres."""
@@ -60,6 +67,51 @@ _UNIT_DIMENSION = {unit: dim for dim, (_, table) in DIMENSIONS.items() for unit 
 
 class UnitError(ValueError):
     """A value that is not a number of the expected dimension; the message says what was expected."""
+
+
+@dataclass(frozen=True)
+class Quantity:
+    """A number with its unit (one of :data:`DIMENSIONS`'), typed: what ``"<number> <unit>"`` says
+    in a file, without the text.  :func:`convert` reads it exactly as it reads that text.
+
+    Parameters
+    ----------
+    value : float
+        The number, in ``unit``.
+    unit : str
+        Its unit (``"m"``, ``"deg"``, ``"rad"``, ``"mm"``, ...).
+
+    Examples
+    --------
+    >>> from bikemass.core.units import Quantity, convert
+    >>> convert(Quantity(72.0, "deg"), "angle", "deg")
+    72.0
+    >>> Quantity(0.045, "m").text
+    '0.045 m'
+    """
+
+    value: float
+    unit: str
+
+    def __post_init__(self):
+        if dimension_of(self.unit) is None:
+            raise UnitError(f"a known unit, got {self.unit!r}")
+        object.__setattr__(self, "value", float(self.value))
+
+    @property
+    def dimension(self):
+        """The dimension of :attr:`unit` (``"length"``, ``"angle"``, ...)."""
+        return dimension_of(self.unit)
+
+    def __repr__(self):
+        """The text a file would hold, quoted: an error message names the value as it names one read
+        from a file (``got '500.0 kg'``)."""
+        return repr(self.text)
+
+    @property
+    def text(self):
+        """``"<number> <unit>"`` with every digit: how a file writes it (a file writer's form only)."""
+        return f"{self.value!r} {self.unit}"
 
 
 def dimension_of(unit):
@@ -116,7 +168,9 @@ def convert(value, dimension, unit, *, bare_unit=None):
 
 
 def _split(value, dimension):
-    """(number, unit string) of a YAML value."""
+    """(number, unit string) of a YAML value or a :class:`Quantity`."""
+    if isinstance(value, Quantity):
+        return value.value, value.unit
     if isinstance(value, bool) or not isinstance(value, (int, float, str)):
         raise UnitError(f"{describe(dimension)}, got {type(value).__name__} {_short(value)}")
     if isinstance(value, (int, float)):

@@ -30,7 +30,7 @@ from ..core.config import load_yaml
 from ..core.errors import InputError
 from ..core.limits import MAX_SPEED
 from ..core.paths import near_spec, near_spec_file
-from ..core.units import DIMENSIONS, UnitError, dimension_of, split_quantity
+from ..core.units import DIMENSIONS, Quantity, UnitError, dimension_of, split_quantity
 from ..models.parameters import NAMES, dimension
 from ..models.registry import BASE, KEYWORDS, spec_members, spec_model
 from ..scenario.scenario import Scenario
@@ -49,7 +49,8 @@ MAX_STARTS = 50
 @dataclass(frozen=True)
 class DesignVariable:
     """One design variable: ``key`` (as a sweep's), bounds ``low < high`` in SI, and the SI ``unit``
-    its value is written with when it reaches a YAML document (``None``: a bare SI number)."""
+    its value carries when it reaches a document (a :class:`~bikemass.core.units.Quantity`; ``None``:
+    a bare SI number)."""
 
     key: str
     low: float
@@ -58,7 +59,7 @@ class DesignVariable:
 
     def change(self, value):
         """The scenario change that sets this variable to ``value`` (SI)."""
-        return value if self.unit is None else f"{value!r} {self.unit}"
+        return value if self.unit is None else Quantity(value, self.unit)
 
 
 @dataclass(frozen=True)

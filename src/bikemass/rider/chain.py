@@ -28,6 +28,7 @@ import numpy as np
 from ..core.config import load_yaml
 from ..core.frozen import FrozenMap, LazyMap, freeze, frozen_fields
 from ..core.convention import thesis_segment_axis, thesis_segment_rotation
+from ..core.units import Quantity
 from .anthropometry import load_anthropometry
 
 CHAIN_SEGMENTS = ("head", "torso", "upper_arm", "lower_arm", "thigh", "lower_leg")
@@ -117,8 +118,9 @@ def _numbers(v):
 
 
 def _degrees(angle):
-    """An angle in degrees as a pose file writes it (every digit, with its unit)."""
-    return f"{float(angle) + 0.0!r} deg"
+    """An angle in degrees as a pose document holds it: typed, with its unit (a file writer writes
+    it as ``"<x> deg"`` with every digit, :func:`~bikemass.core.plain.file_form`)."""
+    return Quantity(float(angle) + 0.0, "deg")
 
 
 def _midplane(p):
@@ -225,7 +227,9 @@ class ChainPose:
         """The pose as a placement-form pose document (docs/riders.md); ``body`` names the anthropometry
         (a name or a body mapping); the segments in ``front`` move with the front frame.
 
-        Numbers are written in full (YAML floats round-trip exactly), so the file's joints stay joined."""
+        Angles are :class:`~bikemass.core.units.Quantity` values in deg (a file writer writes them as
+        text with every digit, so the file's joints stay joined).  A solved pose's parts come from
+        the pose itself (:func:`~bikemass.rider.pose.pose_parts`), not from this document."""
         right, left = self.placements()
         segments = {}
         for seg, (location, angle) in right.items():

@@ -20,12 +20,11 @@ import warnings
 from pathlib import Path
 
 from ..bicycle import Bicycle, load_bicycle
-from ..core.config import Node
 from ..core.errors import BikemassWarning, InputError, shown
 from .body import chain_of, load_body
 from .chain import CHAIN_SEGMENTS, FEET, JOINTS
 from .fit import standover_clearance, standover_height
-from .pose import angle_deg, read_pose
+from .pose import angle_deg, pose_parts
 from ..core.paths import within_reach
 
 CHAIN_KEYS = ("hands", "crank", "front", "feet", *JOINTS)
@@ -153,6 +152,4 @@ def read_chain_pose(node, bicycle=None):
     for line in solution.pose.warnings():
         warnings.warn(f"{node.source}: {line}", BikemassWarning, stacklevel=2)
     name = node.get("name", str(node.source)).string()
-    document = solution.pose.placement_form(name, body.label, front)
-    _, parts = read_pose(Node(document, node.source, None))
-    return name, parts, solution, bicycle
+    return name, pose_parts(solution.pose, body.anthropometry, front, node.source), solution, bicycle

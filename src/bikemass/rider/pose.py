@@ -24,6 +24,7 @@ tensor products) is a lumped body and needs no anthropometry.
 
 import numpy as np
 
+from ..core.errors import InputError
 from ..mass.inertia import MassProperties
 from ..mass.parts import Part
 from ..mass.placement import Placement
@@ -37,6 +38,8 @@ FRAMES = {"rear": "rear_frame", "front": "front_frame"}
 PLACED_KEYS = ("location", "angle")
 LUMPED_KEYS = ("mass", "com", "inertia")
 MIRROR_Y = np.diag([1.0, -1.0, 1.0])
+UNPAIRED = ("head", "torso")
+"""Segments of a chain pose that are single (every other one is a mirrored pair)."""
 
 
 def read_pose(node, as_printed=False):
@@ -112,19 +115,87 @@ def _placed_parts(seg, segment, as_printed):
         seg.fail(f"mirror: {str(segment.pair).lower()} ({segment.name} is {what} in the anthropometry)",
                  "mirror")
     frame = _frame(seg)
-    placement = Placement.thesis_segment(values["location"], values["angle"])
     if not mirror:
         if seg.has("left"):
             seg.fail("no left: placement (only a mirrored pair has a left copy)", "left")
-        return [Part(segment.name, segment.solid, segment.mass, placement, frame)]
+        return _parts(segment, values["location"], values["angle"], frame, False)
     y = values["location"][1]
     if y == 0:
         seg.fail("a nonzero y for a mirrored pair (the copies sit at +y and -y)", "location")
-    other = Placement(MIRROR_Y @ placement.rotation @ MIRROR_Y, MIRROR_Y @ placement.translation)
-    if seg.has("left"):
-        other = _left_placement(seg["left"], y)
+    left = _left_placement(seg["left"], y) if seg.has("left") else None
+    return _parts(segment, values["location"], values["angle"], frame, True, left)
+
+
+def _parts(segment, location, angle, frame, mirror, left=None):
+    """The part of body ``segment`` at ``location`` (m) and ``angle`` (deg), or with ``mirror`` the
+    pair: its -y copy the mirror image or the ``left`` placement."""
+    placement = Placement.thesis_segment(location, angle)
+    if not mirror:
+        return [Part(segment.name, segment.solid, segment.mass, placement, frame)]
+    other = left if left is not None else Placement(MIRROR_Y @ placement.rotation @ MIRROR_Y,
+                                                    MIRROR_Y @ placement.translation)
     return [Part(f"{segment.name}_{'right' if p.translation[1] > 0 else 'left'}",
                  segment.solid, segment.mass, p, frame) for p in (placement, other)]
+
+
+def pose_parts(pose, anthropometry, front=(), source=None):
+    """The parts of ``anthropometry`` placed by the solved chain ``pose`` (a
+    :class:`~bikemass.rider.chain.ChainPose`), the segments in ``front`` on the front frame: the
+    parts :func:`read_pose` makes of the pose's placement form (``pose.placement_form``), from the
+    typed placements rather than from the document read back.
+
+    Parameters
+    ----------
+    pose : ChainPose
+        A solved pose (``Solution.pose``); its placements are in m and deg.
+    anthropometry : Anthropometry
+        The body's segments (``load_body(...).anthropometry``): one for each placed segment.
+    front : sequence of str
+        Segments that move with the front frame (hands on the bars).
+    source : str or Path, optional
+        Named by an error (a segment the body lacks, a body segment left unplaced).
+
+    Returns
+    -------
+    tuple of Part
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> from bikemass.rider.body import load_body
+    >>> from bikemass.rider.pose import pose_parts
+    >>> from bikemass.core.config import Node
+    >>> posed = bm.pose_rider("jamis", hands="hoods")
+    >>> body = load_body(Node("thesis_rider", "body", "body")).anthropometry
+    >>> [p.name for p in pose_parts(posed.solution.pose, body)][:3]
+    ['head', 'torso', 'upper_arm_right']
+    """
+    right, left = pose.placements()
+    parts = []
+    for name, (location, angle) in right.items():
+        where = f"segments.{name}"
+        if name not in anthropometry.segments:
+            raise InputError(source, where, f"a segment of the anthropometry ({', '.join(anthropometry.segments)})")
+        segment = anthropometry.segments[name]
+        mirror = name not in UNPAIRED
+        if mirror != segment.pair:
+            raise InputError(source, where + ".mirror", f"a {'pair' if mirror else 'single segment'} in the "
+                             f"anthropometry ({segment.name} is {'not ' if mirror else ''}one)")
+        location = np.array([float(x) + 0.0 for x in location])
+        if mirror and location[1] == 0:
+            raise InputError(source, where + ".location", "a nonzero y for a mirrored pair (the copies sit at "
+                             "+y and -y)")
+        other = None
+        if name in left:
+            other = Placement.thesis_segment(np.array([float(x) + 0.0 for x in left[name][0]]),
+                                             float(left[name][1]) + 0.0)
+        parts += _parts(segment, location, float(angle) + 0.0, FRAMES["front" if name in front else "rear"],
+                        mirror, other)
+    missing = [k for k in anthropometry.segments if k not in right]
+    if missing:
+        raise InputError(source, "segments", f"a placement for every segment of the body (missing: "
+                         f"{', '.join(missing)})")
+    return tuple(parts)
 
 
 def _left_placement(node, y):

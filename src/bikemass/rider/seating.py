@@ -38,7 +38,7 @@ from ..core.paths import resolve
 from . import Rider, poses_dir
 from .body import load_body
 from .chain_file import bicycle_contacts, chain_settings, feet_body, read_chain_pose, solve_chain
-from .pose import read_pose
+from .pose import pose_parts, read_pose
 from .fit import fit_warnings
 
 CONTACT_TOLERANCE = 1e-3
@@ -179,9 +179,7 @@ def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, toleran
         front = front or tuple(s for s, seg in node["segments"].items()
                                if isinstance(seg.value, dict) and seg.value.get("frame") == "front")
         name = node.get("name", str(source)).string()
-        document = solution.pose.placement_form(name, body.label, front)
-        _, parts = read_pose(Node(document, source, None))
-        rider = Rider(str(pose), name, parts)
+        rider = Rider(str(pose), name, pose_parts(solution.pose, body.anthropometry, front, source))
         return _checked(pose, rider, bicycle, chain, hands, "solved", solution, False, tolerance, posture)
     return _checked(pose, rider, bicycle, chain, hands, "as written", None, allow_off_contact, tolerance,
                     node)

@@ -35,7 +35,8 @@ from ..core.config import Node, load_yaml
 from ..core.errors import InputError, short
 from ..core.gate import MAPPING, plain_input
 from ..core.paths import frames_dir, resolve
-from ..core.units import DIMENSIONS, dimension_of, to_si
+from ..core.plain import file_form
+from ..core.units import DIMENSIONS, Quantity, dimension_of, to_si
 from ..mass.inertia import combine
 from ..mass.materials import Material, load_materials
 from ..models.members.flexible.parameters import Compliances
@@ -104,21 +105,23 @@ def set_path(document, path, value, source, origin="spec", size_index=None):
     """Set dotted ``path`` in the nested mapping ``document`` (in place) to ``value``; in a size
     run (a list with one value per size) only the element ``size_index``.
 
-    A ``"<number> <unit>"`` string is written as it is.  A number is in SI (m, kg, rad, ...):
-    where the file writes a unit there (``"0.040 in"``, or a chart's ``units:`` block) it is
-    written with the SI unit of that quantity (``"0.0011 m"``); a bare number stays bare (the
-    file's bare numbers are SI already)."""
+    A ``"<number> <unit>"`` string or a :class:`~bikemass.core.units.Quantity` is set as it is.  A
+    number is in SI (m, kg, rad, ...): where the file writes a unit there (``"0.040 in"``, or a
+    chart's ``units:`` block) it is set as a Quantity in the SI unit of that quantity (typed, no
+    text); a bare number stays bare (the file's bare numbers are SI already)."""
     container, slot = _walk(document, path, source, origin, parent=True)
     if size_index is not None and isinstance(container[slot], list):
         container, slot = container[slot], size_index
     unit = _file_unit(document, path, container[slot])
-    if unit and not isinstance(value, str):
-        value = f"{float(value)!r} {DIMENSIONS[dimension_of(unit)][0]}"
+    if unit and not isinstance(value, (str, Quantity)):
+        value = Quantity(float(value), DIMENSIONS[dimension_of(unit)][0])
     container[slot] = value
 
 
 def _unit(value):
-    """The unit of a ``"<number> <unit>"`` YAML value, else None."""
+    """The unit of a ``"<number> <unit>"`` YAML value or of a Quantity, else None."""
+    if isinstance(value, Quantity):
+        return value.unit
     parts = value.split() if isinstance(value, str) else ()
     return parts[1] if len(parts) == 2 and dimension_of(parts[1]) is not None else None
 
@@ -131,7 +134,7 @@ def _file_unit(document, path, value):
     bare chart value the chart's ``units:`` block (angles for the head and seat tube angles,
     else lengths), else None (a bare number in SI)."""
     own = _unit(value)
-    if own is not None or isinstance(value, str):
+    if own is not None or isinstance(value, (str, Quantity)):
         return own
     steps = path.split(".")
     chart = document.get(CHART_KEY) if isinstance(document, dict) else None
@@ -179,7 +182,7 @@ def get_path(model, key):
     document, path, value = _located(model, key)
     unit = _file_unit(document, path, value)
     try:
-        number = float(value.split()[0] if _unit(value) else value)
+        number = value.value if isinstance(value, Quantity) else float(value.split()[0] if _unit(value) else value)
     except (TypeError, ValueError, AttributeError):
         raise InputError(model.origin, key, f"a number at that path, got {value!r}") from None
     return to_si(number, dimension_of(unit), bare_unit=unit) if unit else number
@@ -412,7 +415,8 @@ class Inputs:
     def bicycle_document(self, changes=()):
         """The bicycle's YAML document with dotted-path ``changes`` (``((path, value), ...)``), one size of
         a size run picked and its chart ready to change (:meth:`_changeable_chart`): the document
-        :meth:`bicycle` builds the changed bicycle from, what a changed design is written as."""
+        :meth:`bicycle` builds the changed bicycle from, what a changed design is written as (its
+        typed values as text: :func:`~bikemass.core.plain.file_form`, for a file)."""
         self._read()
         if self._measured is not None or self._fixed is not None or self.lean_set is not None:
             raise InputError(self.origin, "bike", "a bicycle YAML or chart to write a changed design as (this "
@@ -420,7 +424,7 @@ class Inputs:
         chart = any(path.split(".")[0] == CHART_KEY for path, _ in changes)
         doc = self._document(self._changeable_chart() if chart else self._bike_doc, changes, self._bike_source,
                              self._size_index)
-        return select_size(Node(doc, self._bike_source, ""), self._size).value
+        return file_form(select_size(Node(doc, self._bike_source, ""), self._size).value)
 
     def measurements(self, key=MEASURED_PREFIX):
         """The :class:`~bikemass.bicycle.measured.MeasuredData` ``nominal`` values of a bicycle computed
@@ -468,7 +472,7 @@ class Inputs:
                 built = self.bicycle(()).chart
                 for key in STAND_INS:
                     if chart.get(key) is None and built is not None:
-                        chart[key] = f"{float(getattr(built, key))!r} m"
+                        chart[key] = Quantity(float(getattr(built, key)), "m")
                 for key in CHECKED_KEYS:
                     chart.pop(key, None)
                 chart.pop("tolerances", None)

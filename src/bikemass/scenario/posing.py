@@ -13,11 +13,12 @@ from ..core.choices import Grip, check
 from ..core.config import Node
 from ..core.errors import BikemassWarning, InputError, short, wrong_type
 from ..core.frozen import freeze, short_repr
+from ..core.units import Quantity
 from ..rider import Rider
 from ..rider.body import chain_of, load_body
 from ..rider.chain import BALL, FEET, JOINTS, joint_gaps
 from ..rider.chain_file import bicycle_contacts, default_hands
-from ..rider.pose import read_pose
+from ..rider.pose import pose_parts
 from .loading import BicycleLike, load_bicycle
 
 DEFAULT_BODY = "thesis_rider"
@@ -42,7 +43,9 @@ class PosedRider:
     crank : float or None
         The crank angle (deg), ``None`` for symmetric legs.
     document : Mapping
-        The pose in the placement form (what ``bikemass pose -o`` writes; read-only).
+        The pose in the placement form (read-only; its angles and crank typed,
+        :class:`~bikemass.core.units.Quantity` in deg, which ``bikemass pose -o`` writes as
+        ``"<number> deg"``).
     gaps : Mapping
         ``{joint: gap (m)}`` between the joined segment ends (zero to rounding).
 
@@ -175,10 +178,10 @@ def pose_rider(bicycle: BicycleLike, body: "str | Mapping" = DEFAULT_BODY, hands
     name = name or f"{hands} on {bicycle if isinstance(bicycle, str) else model.name}"
     document = solution.pose.placement_form(name, loaded.label)
     if feet != BALL:         # read again, the contacts are checked with the same point on the crank axis
-        document["posture"] = {"hands": hands, "feet": feet, **({"crank": f"{crank!r} deg"} if crank is not None
-                                                                else {})}
+        document["posture"] = {"hands": hands, "feet": feet, **({"crank": Quantity(crank, "deg")}
+                                                                if crank is not None else {})}
     node = Node(document, name, None)
-    _, parts = read_pose(node)
+    parts = pose_parts(solution.pose, loaded.anthropometry, (), name)
     # a body named or given inline can be read again from the document: bicycles re-check it
     spec = (node, False) if isinstance(body, Mapping) or not str(body).endswith((".yaml", ".yml")) else None
     right, _ = solution.pose.placements()

@@ -19,7 +19,8 @@ from ..rider.pose import angle_deg
 from ..rider import poses_dir
 from ..rider.solve import fit_to_placements
 from ..rider import Rider
-from ..rider.pose import read_pose
+from ..rider.pose import pose_parts
+from ..rider.body import load_body
 from ..analysis.engine.stability import analyse
 from ..rider.seating import SeatedRider
 from ..scenario.scenario import Scenario
@@ -47,8 +48,8 @@ def closest_chain_pose(pose):
 
 
 def _rider_of(chain, body_name, source):
-    name, parts = read_pose(Node(chain.placement_form("closest chain pose", body_name), source, None))
-    return Rider("chain", name, parts)
+    body = load_body(Node(body_name, source, "body")).anthropometry
+    return Rider("chain", "closest chain pose", pose_parts(chain, body, (), source))
 
 
 def _speeds(bike, rider, combine, method):

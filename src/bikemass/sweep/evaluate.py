@@ -24,6 +24,7 @@ import numpy as np
 from ..analysis.engine.critical import critical_speeds
 from ..core.errors import InputError
 from ..core.threads import one_blas_thread
+from ..core.units import Quantity
 from ..models.parameters import NAMES
 from .members import evaluate_member_columns
 from .table import NUMBERS, OUTPUTS, Outcomes, chunk_text
@@ -89,8 +90,10 @@ def evaluate(scenario, changes, max_speed):
 
 
 def _with_units(changes, units):
-    """A configuration's values as the model reads them: ``"<number> <unit>"`` for a value with a unit."""
-    return {k: f"{float(v)!r} {units[k]}" if k in units and not isinstance(v, str) else v for k, v in changes.items()}
+    """A configuration's values as the model reads them: a :class:`~bikemass.core.units.Quantity` for a
+    value with a unit (typed: read as ``"<number> <unit>"`` would be, no text made and parsed)."""
+    return {k: Quantity(float(v), units[k]) if k in units and not isinstance(v, str) else v
+            for k, v in changes.items()}
 
 
 def evaluate_outcomes(scenario, spec, columns, count):

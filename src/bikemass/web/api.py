@@ -18,7 +18,7 @@ from ..core.errors import InputError
 from ..core.gate import read_text
 from ..core.output import strict_json, with_units, written
 from ..core.paths import resolve
-from ..core.plain import plain
+from ..core.plain import file_form, plain
 from ..models.parameter_export import format_parameters
 from ..models.parameters import parameter_units
 from ..rider import poses_dir
@@ -70,7 +70,7 @@ def download(engine, filename, state):
     else:
         rider = engine.rider(state.rider_key)
         if isinstance(rider, dict):
-            return yaml.safe_dump(rider, sort_keys=False).encode(), mime
+            return yaml.safe_dump(file_form(rider), sort_keys=False).encode(), mime
         if rider is None:
             raise InputError("URL", "rider", "a rider (this configuration has none)")
         text = read_text(resolve(rider.pose, poses_dir(), "pose"))

@@ -43,6 +43,8 @@ from ..core.config import load_yaml
 from ..core.paths import frames_dir, resolve
 from ..mass.materials import frame_label, load_materials
 from ..core.gate import read_text
+from ..core.plain import file_form
+from ..core.units import Quantity
 from ..scenario.catalog import load_bicycle
 from ..scenario.catalog import load_rider
 from ..scenario.catalog import seated_rider
@@ -333,7 +335,7 @@ class Engine:
             if state.chart or self.sizes(state.bike):
                 with self._reaching(state.bike):
                     mapping = edited_chart(self.source(state.bike), dict(state.chart), state.size or None)
-                return yaml.safe_dump(mapping, sort_keys=False)
+                return yaml.safe_dump(file_form(mapping), sort_keys=False)
             source = self.bicycle(state.bicycle_key).source
             with self._reaching(state.bike):
                 return read_text(source)
@@ -446,13 +448,14 @@ def body_pose(key):
     the body from height, mass and sex, hands on the grip, solved on whichever bicycle it meets."""
     _, height, mass, sex, hands = key
     return {"name": f"{sex}, {height:g} m, {mass:g} kg, hands on the {hands}",
-            "body": {"height": f"{height!r} m", "mass": f"{mass!r} kg", "sex": sex},
+            "body": {"height": Quantity(height, "m"), "mass": Quantity(mass, "kg"), "sex": sex},
             "chain": {"hands": hands}}
 
 
 def edited_chart(source, edits, size=None):
     """The mapping of chart bicycle ``source`` (one ``size`` of a size run) with ``edits``
-    (``{key: mm or deg}``) typed over its chart; the published redundant values (wheelbase,
+    (``{key: mm or deg}``) typed over its chart (as :class:`~bikemass.core.units.Quantity` values: a
+    file writer writes them as text, :func:`~bikemass.core.plain.file_form`); the published redundant values (wheelbase,
     trail, ...) are dropped, since they describe the unedited frame."""
 
     path = resolve(source, frames_dir(), "bicycle")
@@ -469,7 +472,7 @@ def edited_chart(source, edits, size=None):
     mapping = copy.deepcopy(node.mapping())
     chart = {k: v for k, v in mapping["chart"].items() if k not in CHECKED_KEYS or not edits}
     for key, value in edits.items():
-        chart[key] = f"{value!r} {'deg' if key in CHART_ANGLES else 'mm'}"
+        chart[key] = Quantity(value, "deg" if key in CHART_ANGLES else "mm")
     mapping["chart"] = chart
     mapping.setdefault("name", path.stem)
     return mapping
