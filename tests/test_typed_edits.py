@@ -30,15 +30,6 @@ ALLOWED = {
     ("core/units.py", "f'{self.value!r} {self.unit}'"):
         "Quantity.text: the one rendering of a typed value as file text (core.plain.file_form, used only "
         "by file writers); nothing in src parses it back",
-    ("models/parameter_export.py", "f'{t.cornering_coefficient!r} 1/rad'"):
-        "bikemass params --format yaml|json: a tyre block written for a file people read (an angle "
-        "coefficient needs its unit there); read back only from the file a user gives",
-    ("models/parameter_export.py", "f'{t.camber_coefficient!r} 1/rad'"):
-        "bikemass params export, as above",
-    ("models/parameter_export.py", "f'{t.pneumatic_trail!r} m'"):
-        "bikemass params export, as above",
-    ("models/parameter_export.py", "f'{t.twisting_coefficient!r} m/rad'"):
-        "bikemass params export, as above",
 }
 """(file under src/bikemass, the expression) -> why it may write a number with its unit as text."""
 

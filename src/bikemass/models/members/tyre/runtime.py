@@ -1,6 +1,7 @@
 """The tyre member's run-time protocol (:mod:`bikemass.models.members.spec`): how the family takes
 its typed parameters."""
 
+from ....core.units import Quantity
 from .parameters import as_tyres, tyres_from_node
 
 
@@ -20,14 +21,15 @@ def read_block(node):
 
 
 def write_block(typed):
-    """The ``tyre:`` block of a parameter file, in the tyre file's form (coefficients in 1/rad, lengths in m;
-    the moments only where a tyre has them)."""
+    """The ``tyre:`` block of a parameter file, in the tyre file's form (coefficients in 1/rad, lengths in m,
+    typed: a file writer renders them with their units; the moments only where a tyre has them)."""
     def one(t):
-        return {"cornering_coefficient": f"{t.cornering_coefficient!r} 1/rad",
-                "camber_coefficient": f"{t.camber_coefficient!r} 1/rad",
+        return {"cornering_coefficient": Quantity(t.cornering_coefficient, "1/rad"),
+                "camber_coefficient": Quantity(t.camber_coefficient, "1/rad"),
                 "relaxation_length": t.relaxation_length,
-                **({"pneumatic_trail": f"{t.pneumatic_trail!r} m"} if t.pneumatic_trail else {}),
-                **({"twisting_coefficient": f"{t.twisting_coefficient!r} m/rad"} if t.twisting_coefficient else {})}
+                **({"pneumatic_trail": Quantity(t.pneumatic_trail, "m")} if t.pneumatic_trail else {}),
+                **({"twisting_coefficient": Quantity(t.twisting_coefficient, "m/rad")} if t.twisting_coefficient
+                   else {})}
     return {"front": one(typed.front), "rear": one(typed.rear)}
 
 
