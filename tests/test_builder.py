@@ -165,7 +165,7 @@ def test_member_sensitivity_equals_a_central_difference_of_stability(model, ride
     (1e-9 m/s) and its derivatives a central difference of them (the trail and the rear frame's mass
     of the set the model takes)."""
     scenario = bm.Scenario("jamis", rider, model=model)
-    result = bm.sensitivity(scenario, vmax=15.0)
+    result = bm.sensitivity(scenario, max_speed=15.0)
     weave, capsize = crossings(scenario)
     assert result.weave_speed == pytest.approx(weave, abs=1e-9)
     assert result.capsize_speed == pytest.approx(capsize, abs=1e-9)

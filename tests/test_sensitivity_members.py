@@ -37,7 +37,7 @@ def test_member_speed_derivatives_equal_a_difference_of_stability(model, bike, r
     """Issue 32: every member's sensitivity equals a high-precision difference of ``bm.stability`` to
     1e-7 relative (plus 1e-9 m/s per unit of the parameter for derivatives near zero)."""
     scenario = bm.Scenario(bike, rider, stiffness, model=model)
-    result = bm.sensitivity(scenario, vmax=15.0)
+    result = bm.sensitivity(scenario, max_speed=15.0)
     for name in NAMES:
         weave, capsize = richardson(scenario, name, scenario.value(name))
         assert result.d_weave_speed[name] == pytest.approx(weave, rel=1e-7, abs=1e-9), (name, "weave")

@@ -23,6 +23,7 @@ from ..scenario.catalog import stiffness_matrix
 from ..core.errors import InputError, short
 from ..core.real import finite_real
 from ..core.frozen import readonly
+from ..core.keywords import renamed_keywords
 from ..core.limits import MAX_SPEEDS
 from .engine.speeds import speed_range, speed_values
 from ..models.control import Control, ScheduledModel, close_loop
@@ -141,7 +142,8 @@ def speeds(start: float = 0.0, stop: float = 30.0, step: float = 0.05, max_speed
     return readonly(speed_range(start, stop, step, max_speeds))
 
 
-def linear_model(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Built | LinearModel",
+@renamed_keywords(params="system")
+def linear_model(system: "BenchmarkParameters | RiderLeanParameters | Scenario | Built | LinearModel",
                  stiffness: "ArrayLike | None" = None, model: "str | None" = None,
                  control: "Control | str | Mapping | None" = None,
                  **members: object) -> "LinearModel | ScheduledModel":
@@ -150,7 +152,7 @@ def linear_model(params: "BenchmarkParameters | RiderLeanParameters | Scenario |
 
     Parameters
     ----------
-    params : BenchmarkParameters, RiderLeanParameters, Scenario, Built or LinearModel
+    system : BenchmarkParameters, RiderLeanParameters, Scenario, Built or LinearModel
         From :func:`bikemass.parameters` (SI), the leaning rider's parameters, a
         :class:`~bikemass.scenario.scenario.Scenario` (built with its own model unless ``model``,
         ``tyres`` or ``stiffness`` say otherwise), a scenario built, or a model.
@@ -190,7 +192,7 @@ def linear_model(params: "BenchmarkParameters | RiderLeanParameters | Scenario |
         Parameters the model is not defined for, a bad S, an unknown model, or an argument given
         with a LinearModel or a built scenario.
     InputTypeError
-        ``params`` of another type.
+        ``system`` of another type.
 
     See Also
     --------
@@ -207,7 +209,7 @@ def linear_model(params: "BenchmarkParameters | RiderLeanParameters | Scenario |
     >>> model.state_matrix([5.0]).shape                 # A(v) at one speed: (speeds, 6, 6)
     (1, 6, 6)
     """
-    return built_model(params, stiffness, model, control, members)[0]
+    return built_model(system, stiffness, model, control, members)[0]
 
 
 def built_model(params, stiffness=None, model=None, control=None, members=None):
@@ -257,7 +259,8 @@ def built_model(params, stiffness=None, model=None, control=None, members=None):
     return build_member(choice, params, members=named), None
 
 
-def eigenvalues(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Built | LinearModel",
+@renamed_keywords(params="system")
+def eigenvalues(system: "BenchmarkParameters | RiderLeanParameters | Scenario | Built | LinearModel",
                 stiffness: "ArrayLike | None" = None, speeds: "ArrayLike | None" = None,
                 max_speeds: int = MAX_SPEEDS, model: "str | None" = None,
                 control: "Control | str | Mapping | None" = None, **members: object) -> Modes:
@@ -265,7 +268,7 @@ def eigenvalues(params: "BenchmarkParameters | RiderLeanParameters | Scenario | 
 
     Parameters
     ----------
-    params : BenchmarkParameters, RiderLeanParameters, Scenario, Built or LinearModel
+    system : BenchmarkParameters, RiderLeanParameters, Scenario, Built or LinearModel
         As for :func:`linear_model`.
     stiffness : array_like of shape (2, 2), optional
         Rear-frame stiffness S (N m/rad); ``None`` = rigid.
@@ -306,10 +309,11 @@ def eigenvalues(params: "BenchmarkParameters | RiderLeanParameters | Scenario | 
     >>> print(f"{weave.real:.9f} +- {abs(weave.imag):.8f}i 1/s")
     -0.775341882 +- 4.46486771i 1/s
     """
-    return follow_modes(linear_model(params, stiffness, model, control, **members), speed_values(speeds, max_speeds))
+    return follow_modes(linear_model(system, stiffness, model, control, **members), speed_values(speeds, max_speeds))
 
 
-def stability(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Built | LinearModel",
+@renamed_keywords(params="system")
+def stability(system: "BenchmarkParameters | RiderLeanParameters | Scenario | Built | LinearModel",
               stiffness: "ArrayLike | None" = None, speeds: "ArrayLike | None" = None,
               marginal: float = DEFAULT_MARGINAL, max_speeds: int = MAX_SPEEDS, model: "str | None" = None,
               control: "Control | str | Mapping | None" = None, **members: object) -> StabilityResult:
@@ -317,7 +321,7 @@ def stability(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Bu
 
     Parameters
     ----------
-    params : BenchmarkParameters, RiderLeanParameters, Scenario, Built or LinearModel
+    system : BenchmarkParameters, RiderLeanParameters, Scenario, Built or LinearModel
         From :func:`bikemass.parameters`, a :class:`~bikemass.scenario.scenario.Scenario`, or any
         model of the family (see :func:`linear_model`).
     stiffness : array_like of shape (2, 2), optional
@@ -390,5 +394,5 @@ def stability(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Bu
     if not finite_real(marginal) or not 0 < marginal <= MAX_MARGINAL:
         raise InputError("marginal", short(marginal), f"a modulus in rad/s above 0 and at most {MAX_MARGINAL:g} "
                          "(as the command line's --marginal)")
-    linear, S = built_model(params, stiffness, model, control, members)
+    linear, S = built_model(system, stiffness, model, control, members)
     return analyse(linear, speed_values(speeds, max_speeds), marginal, S)

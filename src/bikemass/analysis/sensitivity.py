@@ -153,18 +153,18 @@ class Sensitivity(Result):
         return out
 
 
-@renamed_keywords(S="stiffness")
-def sensitivity(params: "BenchmarkParameters | RiderLeanParameters | Scenario | Built", stiffness: "ArrayLike | None" = None,
-                vmax: float = 30.0, names: "Sequence[str]" = NAMES) -> Sensitivity:
+@renamed_keywords(S="stiffness", params="system", vmax="max_speed")
+def sensitivity(system: "BenchmarkParameters | RiderLeanParameters | Scenario | Built", stiffness: "ArrayLike | None" = None,
+                max_speed: float = 30.0, names: "Sequence[str]" = NAMES) -> Sensitivity:
     """Exact derivatives of the weave and capsize speeds with respect to each benchmark parameter.
 
-    The first crossing of each kind on ``(0, vmax]`` and its derivative by the implicit function
+    The first crossing of each kind on ``(0, max_speed]`` and its derivative by the implicit function
     theorem on the crossing eigenvalue (left and right eigenvectors), with the matrices'
     derivatives by the complex step: exact to rounding, no finite differences.
 
     Parameters
     ----------
-    params : BenchmarkParameters, RiderLeanParameters, Scenario or Built
+    system : BenchmarkParameters, RiderLeanParameters, Scenario or Built
         A benchmark set (the Whipple model, with rear-frame stiffness ``stiffness``), a leaning
         rider's set (the ``rider-lean`` model; its 26 benchmark names are those of the bicycle
         without the upper body), or a :class:`~bikemass.scenario.scenario.Scenario` (built) of any
@@ -173,7 +173,7 @@ def sensitivity(params: "BenchmarkParameters | RiderLeanParameters | Scenario | 
         Rear-frame stiffness S (N m/rad) of a benchmark set; ``None`` = rigid, and ``None`` with a
         scenario (it has its own). With S the derivatives with respect to its entries are given
         too. (``S=`` is the deprecated old name.)
-    vmax : float
+    max_speed : float
         Highest speed searched (m/s), positive and finite.
     names : sequence of str
         The parameters to differentiate by (default all 26, :data:`~bikemass.PARAMETER_NAMES`).
@@ -190,7 +190,7 @@ def sensitivity(params: "BenchmarkParameters | RiderLeanParameters | Scenario | 
     ------
     InputError
         Parameters the model is not defined for, an S that is not symmetric positive definite, a
-        ``vmax`` that is not a positive finite speed, or ``names`` not among the 26.
+        ``max_speed`` that is not a positive finite speed, or ``names`` not among the 26.
 
     See Also
     --------
@@ -215,18 +215,18 @@ def sensitivity(params: "BenchmarkParameters | RiderLeanParameters | Scenario | 
     >>> print(f"{(weave(p.c + h) - weave(p.c - h)) / (2 * h):+.4f} (m/s)/m")
     +11.4800 (m/s)/m
     """
-    if isinstance(params, RiderLeanParameters):
-        params = Scenario(params)                 # its own member: the leaning rider
-    if isinstance(params, (Scenario, Built)):
+    if isinstance(system, RiderLeanParameters):
+        system = Scenario(system)                 # its own member: the leaning rider
+    if isinstance(system, (Scenario, Built)):
         if stiffness is not None:
             raise InputError("stiffness", "(matrix)", "none with a scenario (its stiffness choice is built in)")
-        built = params.build() if isinstance(params, Scenario) else params
+        built = system.build() if isinstance(system, Scenario) else system
         if built.choice.members:
-            _checked(built.parameters, None, vmax, names)
-            return _member_sensitivity(built, vmax, tuple(names))
-        params, stiffness = built.parameters, built.stiffness
-    params, S, names = _checked(params, stiffness, vmax, names)
-    return _whipple_sensitivity(params, S, vmax, names)
+            _checked(built.parameters, None, max_speed, names)
+            return _member_sensitivity(built, max_speed, tuple(names))
+        system, stiffness = built.parameters, built.stiffness
+    system, S, names = _checked(system, stiffness, max_speed, names)
+    return _whipple_sensitivity(system, S, max_speed, names)
 
 
 def _whipple_sensitivity(params, S, vmax, names):

@@ -123,7 +123,7 @@ def run_sensitivity(args):
     if keys and not 0 < args.step < 0.1:
         raise InputError("--step", args.step, "a relative step between 0 and 0.1")
     scenario = dialect.scenario(args, origin="--inputs")
-    result = sensitivity(scenario, vmax=args.max_speed)
+    result = sensitivity(scenario, max_speed=args.max_speed)
     geometry = geometry_sensitivity(scenario, keys, result, args.step) if keys else {}
 
     def render(fmt):

@@ -27,6 +27,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core.results import Result, quantity
+from ...scenario.scenario import Built, Scenario
+from ...core.keywords import renamed_keywords
 from ...core.real import finite_real
 from ...core.errors import BikemassWarning, InputError, short, wrong_type
 from ...core.frozen import readonly, short_repr
@@ -141,6 +143,18 @@ class HandsFreeTurns(Result):
         return short_repr(self, ("turns", len(self.steer)), ("capsize_speed", f"{self.capsize_speed:.4f} m/s"))
 
 
+def _benchmark_set(system) -> BenchmarkParameters:
+    """The benchmark parameter set of ``system``: a parameter set, a Scenario (the Whipple bicycle's set of
+    its bicycle and rider) or a built scenario; anything else an InputTypeError."""
+    if isinstance(system, Scenario):
+        system = system.parameters()
+    elif isinstance(system, Built):
+        system = system.parameters
+    if not isinstance(system, BenchmarkParameters):
+        raise wrong_type("system", system, "a benchmark parameter set, a Scenario or a built scenario")
+    return system
+
+
 def _speed(value):
     if isinstance(value, bool) or not isinstance(value, numbers.Real) or not finite_real(value) \
             or not 0 < value <= MAX_SPEED:
@@ -181,13 +195,14 @@ def _root(function, guess, what):
     return solution.x
 
 
-def steady_turn(parameters: BenchmarkParameters, speed: float, radius: "float | None" = None,
+@renamed_keywords(parameters="system")
+def steady_turn(system: "BenchmarkParameters | Scenario | Built", speed: float, radius: "float | None" = None,
                 steer: "float | None" = None) -> SteadyTurn:
     """The nonlinear bicycle's steady turn at ``speed`` on a circle of ``radius`` or at ``steer``.
 
     Parameters
     ----------
-    parameters : BenchmarkParameters
+    system : BenchmarkParameters, Scenario or Built
         The bicycle and rider.
     speed : float
         Forward speed of the rear contact (m/s), above zero.
@@ -219,13 +234,12 @@ def steady_turn(parameters: BenchmarkParameters, speed: float, radius: "float | 
     >>> print(f"radius {turn.radius:.3f} m, lean {turn.roll:.4f} rad (linear {turn.linear_roll:.4f})")
     radius 21.281 m, lean 0.1187 rad (linear 0.1199)
     """
-    if not isinstance(parameters, BenchmarkParameters):
-        raise wrong_type("parameters", parameters, "a benchmark parameter set")
+    params = _benchmark_set(system)
     v = _speed(speed)
     if (radius is None) == (steer is None):
         raise InputError("steady_turn", "radius/steer", "exactly one of a radius (m) and a steer angle (rad)")
-    bike = NonlinearWhipple(parameters)
-    p = parameters
+    bike = NonlinearWhipple(params)
+    p = params
 
     def roll_force(roll, delta):
         return bike.steady_forces(_state(roll, delta, v))[1]
@@ -276,13 +290,14 @@ def capsize_speed(parameters):
     return math.sqrt(min(positive)) if positive else math.nan
 
 
-def hands_free_turns(parameters: BenchmarkParameters, steers: "np.typing.ArrayLike") -> HandsFreeTurns:
+@renamed_keywords(parameters="system")
+def hands_free_turns(system: "BenchmarkParameters | Scenario | Built", steers: "np.typing.ArrayLike") -> HandsFreeTurns:
     """The steady turns that need no steer torque, one per steer angle: a family that starts, at
     zero steer, at the linear model's capsize speed.
 
     Parameters
     ----------
-    parameters : BenchmarkParameters
+    system : BenchmarkParameters, Scenario or Built
         The bicycle and rider.
     steers : array_like (n,)
         Steer angles (rad), each nonzero and below pi/2 in size; the family is followed from small
@@ -309,14 +324,13 @@ def hands_free_turns(parameters: BenchmarkParameters, steers: "np.typing.ArrayLi
     >>> [f"{v:.3f}" for v in family.speed]
     ['5.692', '4.783']
     """
-    if not isinstance(parameters, BenchmarkParameters):
-        raise wrong_type("parameters", parameters, "a benchmark parameter set")
+    params = _benchmark_set(system)
     values = np.atleast_1d(np.asarray(steers, dtype=float)) if not isinstance(steers, str) else None
     if values is None or values.ndim != 1 or len(values) == 0 or not np.all(np.isfinite(values)) \
             or np.any(values == 0) or np.any(np.abs(values) >= math.pi / 2):
         raise InputError("steers", short(steers), "steer angles in rad, nonzero and below pi/2 in size")
-    bike = NonlinearWhipple(parameters)
-    v0 = capsize_speed(parameters)
+    bike = NonlinearWhipple(params)
+    v0 = capsize_speed(params)
     out = np.full((len(values), 4), np.nan)
     guess, previous = None, 0.0
 
@@ -334,7 +348,7 @@ def hands_free_turns(parameters: BenchmarkParameters, steers: "np.typing.ArrayLi
             if guess is None or np.sign(delta) != np.sign(previous):
                 v = v0 if math.isfinite(v0) else 5.0
                 start = math.copysign(min(abs(delta), CONTINUATION_STEP), delta)
-                guess, previous = circle(start, [_linear(parameters, v, start)[0], v]), start
+                guess, previous = circle(start, [_linear(params, v, start)[0], v]), start
             steps = max(1, math.ceil(abs(delta - previous) / CONTINUATION_STEP))
             for between in np.linspace(previous, delta, steps + 1)[1:]:
                 guess = circle(float(between), guess)
