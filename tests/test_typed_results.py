@@ -245,9 +245,6 @@ NOT_RESULTS = {
     "scenario.posing.PosedRider": "not yet a Result: a pose's document, rider, bicycle and solution",
     "analysis.uncertainty.Propagation": "not yet a Result: mappings of mixed units (matrices, eigenvalue bands); "
                                         "its critical speeds are Estimate Results",
-    **{name: "not yet a Result: a field named units (each signal's, from the model) clashes with Result.units()"
-       for name in ("analysis.handling.time_response.TimeResponse", "analysis.handling.lane_change.LaneChange",
-                    "analysis.nonlinear.response.NonlinearResponse")},
     **{name: "not yet a Result: units that depend on the signals chosen (input_unit, output_unit, the model's "
              "coordinates)" for name in (
         "analysis.handling.transfer.TransferFunction", "analysis.handling.frequency.FrequencyResponse",
@@ -313,3 +310,23 @@ def test_the_walker_finds_what_it_looks_for():
     frozen = np.zeros(2)
     frozen.setflags(write=False)
     assert mutable_parts(Tight(frozen)) == []
+
+
+def test_a_renamed_units_field_still_reads_with_a_warning_and_units_is_the_block(meijaard_benchmark):
+    """A time response's ``units`` field (each state's unit) is ``signal_units`` in 0.3: ``units()``
+    is its units block as on every result (speed in m/s, time in s, each state in the model's unit),
+    and ``units`` read as the old tuple still works for one release, with a DeprecationWarning."""
+    r = bm.simulate(meijaard_benchmark, 4.6, initial={"roll-rate": 0.5}, duration=0.1)
+    assert r.signal_units == ("rad", "rad", "rad/s", "rad/s", "rad", "m")     # the Whipple model's states
+    block = r.units()
+    assert block["speed"] == "m/s" and block["time"] == "s" and block["roll-rate"] == "rad/s"
+    assert r.document()["units"] == block
+    with pytest.warns(DeprecationWarning, match="signal_units"):
+        assert r.units[2] == "rad/s"
+    with pytest.warns(DeprecationWarning):
+        assert list(r.units) == list(r.signal_units)
+    lane = bm.lane_change(meijaard_benchmark, 5.0)
+    with pytest.warns(DeprecationWarning):
+        assert lane.units["steer-torque"] == "N m"
+    assert lane.units()["steer-torque"] == lane.signal_units["steer-torque"] == "N m"
+    assert lane.model == "linear" and isinstance(lane.model, enum.Enum)

@@ -3,6 +3,7 @@
 input with it as it checks a file)."""
 
 from collections.abc import Mapping
+from enum import Enum
 
 import numpy as np
 
@@ -17,6 +18,8 @@ def plain(obj):
         return plain(obj.tolist())
     if isinstance(obj, np.generic):
         return obj.item()
+    if isinstance(obj, Enum):                   # a string enum (a kind, a direction): its string
+        return obj.value
     return obj
 
 

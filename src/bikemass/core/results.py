@@ -12,8 +12,10 @@ gives plain data for JSON/YAML, and :meth:`Result.units` the ``units`` block of 
 generated from the declarations (nested results contribute their own), never guessed from names.
 """
 
+import warnings
 from dataclasses import MISSING, dataclass, field, fields, is_dataclass
 from collections.abc import Mapping
+from enum import Enum
 
 import numpy as np
 
@@ -50,6 +52,8 @@ def _plain(value):
         return value.item()
     if isinstance(value, complex):
         return [value.real, value.imag]
+    if isinstance(value, Enum):                  # a string enum (a kind, a direction): its string
+        return value.value
     return value
 
 
@@ -110,3 +114,75 @@ def with_declared_units(data, units):
     from a key's name."""
     keys = document_keys(data)
     return {**data, "units": {k: u for k, u in units.items() if k in keys}}
+
+
+class OldUnits:
+    """What ``result.units`` is on a result that had a ``units`` field before 0.3 (each signal's or
+    coordinate's unit, a tuple or a mapping), now renamed: called, the result's ``units`` block
+    (:meth:`Result.units`, as on every result); used as the old field (indexed, iterated, compared,
+    ``.items()``), that field's value, with a :class:`DeprecationWarning` (for one release)."""
+
+    __slots__ = ("_old", "_block", "_new")
+
+    def __init__(self, old, block, new):
+        object.__setattr__(self, "_old", old)
+        object.__setattr__(self, "_block", block)
+        object.__setattr__(self, "_new", new)
+
+    def __setattr__(self, name, value):
+        raise AttributeError("read-only")
+
+    def __call__(self):
+        return self._block()
+
+    def _warn(self):
+        warnings.warn(f"result.units as a field is deprecated: read result.{self._new} (result.units() is the "
+                      "units block of result.to_dict(), as on every result)", DeprecationWarning, stacklevel=3)
+
+    def __getitem__(self, key):
+        self._warn()
+        return self._old[key]
+
+    def __iter__(self):
+        self._warn()
+        return iter(self._old)
+
+    def __len__(self):
+        self._warn()
+        return len(self._old)
+
+    def __contains__(self, key):
+        self._warn()
+        return key in self._old
+
+    def __eq__(self, other):
+        self._warn()
+        return self._old == other
+
+    __hash__ = None
+
+    def __getattr__(self, name):
+        if name.startswith("_"):
+            raise AttributeError(name)
+        self._warn()
+        return getattr(self._old, name)
+
+    def __repr__(self):
+        return repr(self._old)
+
+
+class renamed_units:
+    """The class attribute ``units`` of a :class:`Result` whose ``units`` field was renamed to
+    ``new``: ``result.units()`` is its units block (the class's :meth:`unit_block`), and
+    ``result.units`` read as the old field still gives ``result.<new>`` with a DeprecationWarning
+    (:class:`OldUnits`)."""
+
+    def __init__(self, new):
+        self.new = new
+        self.__doc__ = (f"``units()``: the units block of ``to_dict()``; ``units`` read as a value is the deprecated "
+                        f"old name of ``{new}``.")
+
+    def __get__(self, obj, cls=None):
+        if obj is None:
+            return self
+        return OldUnits(getattr(obj, self.new), obj.unit_block, self.new)

@@ -95,12 +95,13 @@ class TimeResponse(SampledResponse):
         Forward speed (m/s).
     time : numpy.ndarray (n,)
         Samples ``0, dt, ..., T`` (s).
-    names, units : tuple of str
-        The states' names and units, in the model's order.
+    names, signal_units : tuple of str
+        The states' names and units, in the model's order (``units``, the name of ``signal_units``
+        before 0.3, still reads it with a DeprecationWarning; ``units()`` is the units block).
     values : numpy.ndarray (n, N)
         The states at the samples (their units); read-only.
     inputs : mapping
-        ``{input name: (kind, size)}`` that was applied (steps in N m, impulses in N m s).
+        ``{input name: Applied(kind, size)}`` that was applied (steps in N m, impulses in N m s).
     """
 
     def to_dict(self):
@@ -112,8 +113,8 @@ class TimeResponse(SampledResponse):
         """``{"states": Table}``: one row per sample, ``time`` (s) and every state in its unit. The
         speed and the inputs applied are the frame's ``attrs``."""
         columns = {"time": self.time, **{name: self[name] for name in self.names}}
-        attrs = {"speed": self.speed, "inputs": {k: tuple(v) for k, v in self.inputs.items()}}
-        return {"states": Table(columns, {"time": "s", **dict(zip(self.names, self.units))}, attrs)}
+        attrs = {"speed": self.speed, "inputs": {k: (str(kind), size) for k, (kind, size) in self.inputs.items()}}
+        return {"states": Table(columns, {"time": "s", **dict(zip(self.names, self.signal_units))}, attrs)}
 
     def __repr__(self):
         return short_repr(self, *self._repr_fields())
