@@ -245,10 +245,6 @@ NOT_RESULTS = {
     "scenario.posing.PosedRider": "not yet a Result: a pose's document, rider, bicycle and solution",
     "analysis.uncertainty.Propagation": "not yet a Result: mappings of mixed units (matrices, eigenvalue bands); "
                                         "its critical speeds are Estimate Results",
-    **{name: "not yet a Result: units that depend on the signals chosen (input_unit, output_unit, the model's "
-             "coordinates)" for name in (
-        "analysis.handling.transfer.TransferFunction", "analysis.handling.frequency.FrequencyResponse",
-        "analysis.handling.mode_shapes.ModeShapes")},
     "analysis.handling.survey.HandlingResult": "not yet a Result: its gains' units are the Gains table's "
                                                "(analysis/handling/gains.py UNITS), not declared per field",
 }

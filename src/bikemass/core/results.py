@@ -19,7 +19,7 @@ from enum import Enum
 
 import numpy as np
 
-from .display import UNIT, Display
+from .display import UNIT, Display, brief
 from .frozen import freeze
 from .plain import document_keys
 
@@ -28,6 +28,20 @@ def quantity(unit, doc="", default=MISSING):
     """A dataclass field holding a quantity in ``unit`` (SI; ``""`` for dimensionless)."""
     kwargs = {} if default is MISSING else {"default": default}
     return field(metadata={UNIT: unit, "doc": doc}, **kwargs)
+
+
+UNIT_OF = "unit_of"
+"""The field metadata key naming the attribute that holds a field's unit (:func:`quantity_in`)."""
+
+
+def quantity_in(attribute, doc="", default=MISSING):
+    """A dataclass field holding a quantity whose unit depends on the value: the result's string
+    attribute ``attribute`` holds it (a transfer function's gain is in ``gain_unit``, which follows
+    from its signals). Declared once like :func:`quantity`; :meth:`Result.units` and the result's
+    table read the unit from the instance, :func:`declared_units` (of the class) gives the
+    attribute's name."""
+    kwargs = {} if default is MISSING else {"default": default}
+    return field(metadata={UNIT: attribute, UNIT_OF: attribute, "doc": doc}, **kwargs)
 
 
 def declared_units(cls):
@@ -92,9 +106,21 @@ class Result(Display):
         """Plain data (lists, floats, strings) of every field, nested results included."""
         return {f.name: _plain(getattr(self, f.name)) for f in fields(self)}
 
+    def instance_units(self):
+        """``{field: unit}`` of this result's declared quantities, a unit declared by :func:`quantity_in`
+        read from the attribute it names."""
+        return {f.name: getattr(self, f.metadata[UNIT_OF]) if UNIT_OF in f.metadata else f.metadata[UNIT]
+                for f in fields(self) if UNIT in f.metadata}
+
+    def display_rows(self):
+        """``[(name, short value, unit)]`` of every field (:meth:`Display.display_rows`), the units
+        of :meth:`instance_units`."""
+        units = self.instance_units()
+        return [(f.name, brief(getattr(self, f.name)), units.get(f.name, "")) for f in fields(self)]
+
     def units(self):
         """The ``units`` block: ``{key: unit}`` of this result's quantities and its nested results'."""
-        out = dict(self.field_units())
+        out = self.instance_units()
         for f in fields(self):
             value = getattr(self, f.name)
             items = value if isinstance(value, (list, tuple)) else (value,)
