@@ -245,8 +245,6 @@ NOT_RESULTS = {
     "scenario.posing.PosedRider": "not yet a Result: a pose's document, rider, bicycle and solution",
     "analysis.uncertainty.Propagation": "not yet a Result: mappings of mixed units (matrices, eigenvalue bands); "
                                         "its critical speeds are Estimate Results",
-    "analysis.handling.survey.HandlingResult": "not yet a Result: its gains' units are the Gains table's "
-                                               "(analysis/handling/gains.py UNITS), not declared per field",
 }
 """Types (module under ``bikemass`` and name) returned by facade functions that are not
 :class:`~bikemass.core.results.Result` s, with why."""
