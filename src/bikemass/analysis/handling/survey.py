@@ -146,15 +146,16 @@ class HandlingResult(Result):
     """
 
     speeds: np.ndarray = quantity("m/s", "forward speeds")
-    gains: tuple
-    gain_source: tuple
-    closed_loop_stable: np.ndarray
-    max_real: np.ndarray = quantity("1/s", "the largest closed-loop real part")
-    hqm_peak: np.ndarray = quantity("1", "the HQM's peak (dimensionless)")
-    hqm_peak_frequency: np.ndarray = quantity("rad/s", "where the HQM peaks")
-    hqm_frequencies: np.ndarray = quantity("rad/s", "the frequencies of hqm")
-    hqm: np.ndarray = quantity("1", "(n, k) the HQM against frequency at each speed")
-    lateral: str | None
+    gains: tuple = ()
+    gain_source: tuple = ()
+    closed_loop_stable: np.ndarray = quantity("", "whether every closed-loop eigenvalue has a negative real part "
+                                              "(bool)", default=None)
+    max_real: np.ndarray = quantity("1/s", "the largest closed-loop real part", default=None)
+    hqm_peak: np.ndarray = quantity("1", "the HQM's peak (dimensionless)", default=None)
+    hqm_peak_frequency: np.ndarray = quantity("rad/s", "where the HQM peaks", default=None)
+    hqm_frequencies: np.ndarray = quantity("rad/s", "the frequencies of hqm", default=None)
+    hqm: np.ndarray = quantity("1", "(n, k) the HQM against frequency at each speed", default=None)
+    lateral: str | None = None
 
     def __post_init__(self):
         for name in ("speeds", "closed_loop_stable", "max_real", "hqm_peak", "hqm_peak_frequency",
