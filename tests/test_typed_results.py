@@ -243,8 +243,6 @@ NOT_RESULTS = {
     "core.frozen.FrozenMap": "bm.geometry_chart, bm.geometry_sensitivity: a read-only mapping",
     # results still to become Result subclasses: the remaining work of issue 32 item 3
     "scenario.posing.PosedRider": "not yet a Result: a pose's document, rider, bicycle and solution",
-    "analysis.uncertainty.Propagation": "not yet a Result: mappings of mixed units (matrices, eigenvalue bands); "
-                                        "its critical speeds are Estimate Results",
 }
 """Types (module under ``bikemass`` and name) returned by facade functions that are not
 :class:`~bikemass.core.results.Result` s, with why."""

@@ -80,6 +80,10 @@ class Result(Display):
     """Base of every result type: frozen fields, read-only arrays, units per field; in Jupyter a
     compact HTML table of the fields (:class:`~bikemass.core.display.Display`)."""
 
+    # the one-line repr of Display.display_rows for a subclass that says repr=False (without this line the
+    # dataclass decorator would give Result, and so such a subclass, a repr of no fields: "Sensitivity()")
+    __repr__ = Display.short_repr
+
     def __post_init__(self):
         for f in fields(self):
             object.__setattr__(self, f.name, freeze(getattr(self, f.name)))
