@@ -10,8 +10,7 @@ The functions not walked are listed with the reason in ``NOT_WALKED`` (they draw
 files: a matplotlib Figure is mutable by design), and ``NOT_YET`` names results that still hold
 mutable parts (empty now: a result that regains one fails).  ``NOT_RESULTS`` names the types
 returned that are not :class:`~bikemass.core.results.Result` s, each with why: inputs and
-models, plain read-only arrays and mappings, and the results still to convert (the remaining
-work of the issue, kept visible here).
+models, and plain read-only arrays and mappings; every other facade result is a ``Result``.
 """
 
 import dataclasses
@@ -241,8 +240,6 @@ NOT_RESULTS = {
     # the value itself: a read-only array or a read-only mapping
     "numpy.ndarray": "bm.stiffness, bm.frame_stiffness, bm.speeds: a read-only array",
     "core.frozen.FrozenMap": "bm.geometry_chart, bm.geometry_sensitivity: a read-only mapping",
-    # results still to become Result subclasses: the remaining work of issue 32 item 3
-    "scenario.posing.PosedRider": "not yet a Result: a pose's document, rider, bicycle and solution",
 }
 """Types (module under ``bikemass`` and name) returned by facade functions that are not
 :class:`~bikemass.core.results.Result` s, with why."""

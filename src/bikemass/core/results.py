@@ -24,9 +24,11 @@ from .frozen import freeze
 from .plain import document_keys
 
 
-def quantity(unit, doc="", default=MISSING):
+def quantity(unit, doc="", default=MISSING, default_factory=MISSING):
     """A dataclass field holding a quantity in ``unit`` (SI; ``""`` for dimensionless)."""
     kwargs = {} if default is MISSING else {"default": default}
+    if default_factory is not MISSING:
+        kwargs["default_factory"] = default_factory
     return field(metadata={UNIT: unit, "doc": doc}, **kwargs)
 
 
@@ -146,28 +148,29 @@ def with_declared_units(data, units):
     return {**data, "units": {k: u for k, u in units.items() if k in keys}}
 
 
-class OldUnits:
-    """What ``result.units`` is on a result that had a ``units`` field before 0.3 (each signal's or
-    coordinate's unit, a tuple or a mapping), now renamed: called, the result's ``units`` block
-    (:meth:`Result.units`, as on every result); used as the old field (indexed, iterated, compared,
-    ``.items()``), that field's value, with a :class:`DeprecationWarning` (for one release)."""
+class OldField:
+    """What ``result.<old>`` is on a result whose field ``<old>`` was renamed in 0.3 because its name
+    is a method of every result now (``units``, ``document``): called, that method (the units block,
+    the document); used as the old field (indexed, iterated, compared, ``.items()``), the renamed
+    field's value, with a :class:`DeprecationWarning` (for one release)."""
 
-    __slots__ = ("_old", "_block", "_new")
+    __slots__ = ("_old", "_call", "_name", "_new")
 
-    def __init__(self, old, block, new):
+    def __init__(self, old, call, name, new):
         object.__setattr__(self, "_old", old)
-        object.__setattr__(self, "_block", block)
+        object.__setattr__(self, "_call", call)
+        object.__setattr__(self, "_name", name)
         object.__setattr__(self, "_new", new)
 
     def __setattr__(self, name, value):
         raise AttributeError("read-only")
 
     def __call__(self):
-        return self._block()
+        return self._call()
 
     def _warn(self):
-        warnings.warn(f"result.units as a field is deprecated: read result.{self._new} (result.units() is the "
-                      "units block of result.to_dict(), as on every result)", DeprecationWarning, stacklevel=3)
+        warnings.warn(f"result.{self._name} as a field is deprecated: read result.{self._new} (result.{self._name}() "
+                      "is the method every result has)", DeprecationWarning, stacklevel=3)
 
     def __getitem__(self, key):
         self._warn()
@@ -201,18 +204,23 @@ class OldUnits:
         return repr(self._old)
 
 
-class renamed_units:
-    """The class attribute ``units`` of a :class:`Result` whose ``units`` field was renamed to
-    ``new``: ``result.units()`` is its units block (the class's :meth:`unit_block`), and
-    ``result.units`` read as the old field still gives ``result.<new>`` with a DeprecationWarning
-    (:class:`OldUnits`)."""
+class renamed_field:
+    """The class attribute ``old`` (``units``, ``document``) of a :class:`Result` whose field of that
+    name was renamed to ``new``: ``result.<old>()`` runs the result's method ``method`` (what
+    ``<old>()`` does on every result), and ``result.<old>`` read as the old field still gives
+    ``result.<new>`` with a DeprecationWarning (:class:`OldField`)."""
 
-    def __init__(self, new):
-        self.new = new
-        self.__doc__ = (f"``units()``: the units block of ``to_dict()``; ``units`` read as a value is the deprecated "
-                        f"old name of ``{new}``.")
+    def __init__(self, old, new, method):
+        self.old, self.new, self.method = old, new, method
+        self.__doc__ = (f"``{old}()``: as on every result; ``{old}`` read as a value is the deprecated old "
+                        f"name of ``{new}``.")
 
     def __get__(self, obj, cls=None):
         if obj is None:
             return self
-        return OldUnits(getattr(obj, self.new), obj.unit_block, self.new)
+        return OldField(getattr(obj, self.new), getattr(obj, self.method), self.old, self.new)
+
+
+def renamed_units(new):
+    """:class:`renamed_field` ``units`` -> ``new``: ``result.units()`` is the class's ``unit_block()``."""
+    return renamed_field("units", new, "unit_block")
