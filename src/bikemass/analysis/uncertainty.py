@@ -271,6 +271,17 @@ class Propagation(Result):
     samples : mapping or None
         Monte Carlo draws ``{"weave_speed": (n,), "capsize_speed": (n,)}`` (m/s, ``nan`` where a draw
         has none), ``None`` for the linear method.
+
+    See Also
+    --------
+    bikemass.uncertainty : Makes it.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> u = bm.uncertainty("benchmark", {"c": 0.005})
+    >>> print(u.method, sorted(u.matrices), u.units()["M"], u.units()["weave_speed"])
+    linear ['C1', 'K0', 'K2', 'M'] kg m^2 m/s
     """
 
     matrices: Mapping = quantity(MATRICES_UNIT, "{M|C1|K0|K2: {nominal, std, ...}}")

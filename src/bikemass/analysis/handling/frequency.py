@@ -118,6 +118,18 @@ class FrequencyResponse(Result):
         Degrees, unwrapped along the frequencies (the first value in (-180, 180]).
 
     Arrays are read-only; :attr:`values` is ``G(j w)`` itself (complex).
+
+    See Also
+    --------
+    bikemass.frequency_response : Makes it.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> fr = bm.frequency_response(bm.parameters("benchmark"), 5.0, "steer-torque", "roll-angle",
+    ...                            frequencies=[1.0, 10.0])
+    >>> fr.units()["magnitude"], fr.units()["phase"]
+    ('dB (of rad/(N m))', 'deg')
     """
 
     input: str

@@ -140,6 +140,19 @@ class LaneChange(Result):
         ``forward-speed``, m/s); a string enum.
     stopped : str
         Why a nonlinear run ended before the road's end (a fall); empty otherwise.
+
+    See Also
+    --------
+    bikemass.lane_change : Makes it.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> lc = bm.lane_change(bm.parameters("benchmark"), 5.0)
+    >>> print(lc.model, lc.stable, f"road up to {lc.road.max():.1f} m")
+    linear True road up to 2.0 m
+    >>> print(f"steer torque at most {abs(lc.signals['steer-torque']).max():.3f} {lc.signal_units['steer-torque']}")
+    steer torque at most 0.155 N m
     """
 
     speed: float = quantity("m/s", "forward speed")

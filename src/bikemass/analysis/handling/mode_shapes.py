@@ -75,6 +75,19 @@ class ModeShapes(Result):
         kinematic (heading, lateral).
 
     Arrays are read-only; :attr:`amplitude` and :attr:`phase` are ``|shapes|`` and its angle (deg).
+
+    See Also
+    --------
+    bikemass.mode_shapes : Makes it.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> shapes = bm.mode_shapes(bm.parameters("benchmark"), 5.0)
+    >>> shapes.coordinates, shapes.coordinate_units
+    (('roll-angle', 'steer-angle', 'heading', 'lateral'), ('rad', 'rad', 'rad', 'm'))
+    >>> shapes.reference[2], shapes.units()["phase"]
+    ('roll-angle', 'deg')
     """
 
     speed: float = quantity("m/s", "forward speed")

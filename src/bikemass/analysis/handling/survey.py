@@ -143,6 +143,19 @@ class HandlingResult(Result):
         The HQM against frequency at each speed.
     lateral : str
         The lateral position the outer loop feeds back (``front-lateral``, or ``lateral``).
+
+    See Also
+    --------
+    bikemass.handling : Makes it.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> r = bm.handling(bm.parameters("benchmark"), [5.0])
+    >>> r.gain_source, r.levels, r.lateral
+    (('tuned',), (1,), 'front-lateral')
+    >>> r.units()["k_delta"], r.units()["hqm_peak_frequency"]
+    ('N m/rad', 'rad/s')
     """
 
     speeds: np.ndarray = quantity("m/s", "forward speeds")

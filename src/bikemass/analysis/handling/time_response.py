@@ -102,6 +102,19 @@ class TimeResponse(SampledResponse):
         The states at the samples (their units); read-only.
     inputs : mapping
         ``{input name: Applied(kind, size)}`` that was applied (steps in N m, impulses in N m s).
+
+    See Also
+    --------
+    bikemass.simulate : Makes it.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> r = bm.simulate(bm.parameters("benchmark"), 4.6, initial={"roll-rate": 0.5}, duration=1.0)
+    >>> r.names[:2], r.signal_units[:2], r.values.shape
+    (('roll-angle', 'steer-angle'), ('rad', 'rad'), (101, 6))
+    >>> r.units()["time"], r.units()["roll-rate"]        # the units block of r.to_dict()
+    ('s', 'rad/s')
     """
 
     def to_dict(self):

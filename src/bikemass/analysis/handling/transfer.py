@@ -127,6 +127,19 @@ class TransferFunction(Result):
         In 1/s, sorted by real then imaginary part; read-only.
     gain : float
         The leading coefficient, in :attr:`gain_unit`.
+
+    See Also
+    --------
+    bikemass.transfer_function : Makes it.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> tf = bm.transfer_function(bm.parameters("benchmark"), 5.0, "steer-torque", "roll-angle")
+    >>> tf.relative_degree, tf.units()["gain"]
+    (2, 'rad/(N m s^2)')
+    >>> print(f"|G(2j)| = {abs(tf(2j)):.4f} {tf.output_unit}/({tf.input_unit})")
+    |G(2j)| = 0.2109 rad/(N m)
     """
 
     input: str
