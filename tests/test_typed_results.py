@@ -319,3 +319,31 @@ def test_a_renamed_units_field_still_reads_with_a_warning_and_units_is_the_block
         assert lane.units["steer-torque"] == "N m"
     assert lane.units()["steer-torque"] == lane.signal_units["steer-torque"] == "N m"
     assert lane.model == "linear" and isinstance(lane.model, enum.Enum)
+
+
+def test_the_other_renamed_fields_and_the_string_enums(meijaard_benchmark):
+    """A mode shape's ``units`` is ``coordinate_units`` and a posed rider's ``document`` is
+    ``placement`` in 0.3 (the old names read as values warn; called, they are every result's
+    methods); kinds are string enums equal to the old strings, written as those strings."""
+    shapes = bm.mode_shapes(meijaard_benchmark, 5.0)
+    assert shapes.coordinate_units == ("rad", "rad", "rad", "m")        # roll, steer, heading, lateral
+    with pytest.warns(DeprecationWarning, match="coordinate_units"):
+        assert tuple(shapes.units) == shapes.coordinate_units
+    assert shapes.units()["phase"] == "deg" and shapes.units()["speed"] == "m/s"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", bm.BikemassWarning)
+        posed = bm.pose_rider("jamis", hands="drops")
+    with pytest.warns(DeprecationWarning, match="placement"):
+        assert posed.document["name"] == posed.placement["name"]
+    document = posed.document()
+    assert document["hands"] == "drops" and type(document["hands"]) is str
+    assert document["units"]["crank"] == "deg" and document["units"]["gaps"] == "m"
+    assert posed.hands == bm.Grip.DROPS == "drops"
+    r = bm.simulate(meijaard_benchmark, 4.6, inputs={"steer-torque": ("impulse", 0.1)}, duration=0.1)
+    kind, size = r.inputs["steer-torque"]
+    assert kind == "impulse" and isinstance(kind, enum.Enum) and r.inputs["steer-torque"].unit == "N m s"
+    u = bm.uncertainty("benchmark", {"c": 0.001}, speeds=np.arange(1.0, 3.0))
+    assert u.method == "linear" and isinstance(u.method, enum.Enum)
+    assert u.to_dict()["method"] == "linear" and type(u.to_dict()["method"]) is str
+    assert u.to_dict()["inputs"]["c"] == {"distribution": "normal", "std": 0.001}
+    assert type(u.to_dict()["inputs"]["c"]["distribution"]) is str

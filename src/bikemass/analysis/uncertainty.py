@@ -37,6 +37,7 @@ from ..core.tables import Table
 from ..core.choices import Choice
 from ..core.results import Result, quantity
 from ..core.frozen import thaw
+from ..core.plain import plain
 from ..core.real import finite_real
 from ..core.errors import InputError
 from ..core.keywords import renamed_keywords
@@ -340,7 +341,7 @@ class Propagation(Result):
                     "std_im": m["std_im"], **({"re_q025": m["re_q025"], "re_q975": m["re_q975"]}
                                               if "re_q025" in m else {})}
             for label, m in self.eigen["modes"].items()}}
-        return {"method": str(self.method), "inputs": thaw(self.inputs), "matrices": thaw(self.matrices),
+        return {"method": str(self.method), "inputs": plain(self.inputs), "matrices": thaw(self.matrices),
                 **{k: v.to_dict() for k, v in self.speeds.items()}, "eigenvalues": eig}
 
 
