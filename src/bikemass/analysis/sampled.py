@@ -15,7 +15,22 @@ from ..core.results import Result, quantity, renamed_units
 
 
 class Excitation(Choice):
-    """How a simulation applies an input (a member is its string: ``Excitation.STEP == "step"``)."""
+    """How a simulation applies an input (a member is its string: ``Excitation.STEP == "step"``).
+
+    See Also
+    --------
+    bikemass.simulate : Takes ``inputs={name: (kind, size)}``.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> bm.Excitation.values()
+    ('step', 'impulse')
+    >>> r = bm.simulate(bm.parameters("benchmark"), 4.6, inputs={"steer-torque": (bm.Excitation.STEP, 0.5)},
+    ...                 duration=0.5)
+    >>> print(f"steer {r['steer-angle'][-1]:.5f} rad after a 0.5 N m step")
+    steer 0.01203 rad after a 0.5 N m step
+    """
 
     STEP = "step"
     """The input held at its size (N m) from ``t = 0``."""
@@ -29,7 +44,16 @@ KINDS = Excitation.values()
 
 class Applied(NamedTuple):
     """One input a simulation applied: its :class:`Excitation` and size (N m for a step, N m s for an
-    impulse); a tuple, so ``kind, size = applied`` reads it as before."""
+    impulse); a tuple, so ``kind, size = applied`` reads it as before.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> r = bm.simulate(bm.parameters("benchmark"), 4.6, inputs={"steer-torque": ("step", 0.5)}, duration=0.5)
+    >>> applied = r.inputs["steer-torque"]
+    >>> print(applied.kind, applied.size, applied.unit, applied.kind == "step")
+    step 0.5 N m True
+    """
 
     kind: Excitation
     size: float

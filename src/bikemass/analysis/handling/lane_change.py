@@ -58,7 +58,19 @@ PREVIEW = 2.75
 
 
 class Manoeuvre(Choice):
-    """The lane change driven (a member is its string: ``Manoeuvre.DOUBLE == "double"``)."""
+    """The lane change driven (a member is its string: ``Manoeuvre.DOUBLE == "double"``).
+
+    See Also
+    --------
+    bikemass.lane_change : Takes it as ``kind=``.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> once = bm.lane_change(bm.parameters("benchmark"), 5.0, kind=bm.Manoeuvre.SINGLE)
+    >>> print(f"road at the end {once.road[-1]:.1f} m")
+    road at the end 2.0 m
+    """
 
     DOUBLE = "double"
     """Over 2 m at 35-45 m, held to 85 m, back to 0 at 95 m."""
@@ -71,7 +83,15 @@ KINDS = Manoeuvre.values()
 
 
 class Dynamics(Choice):
-    """Which bicycle a lane change ran on (:attr:`LaneChange.model`)."""
+    """Which bicycle a lane change ran on (:attr:`LaneChange.model`).
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> lane = bm.lane_change(bm.parameters("benchmark"), 5.0)
+    >>> lane.model is bm.Dynamics.LINEAR, lane.model == "linear"
+    (True, True)
+    """
 
     LINEAR = "linear"
     """The linear model about the upright run."""
