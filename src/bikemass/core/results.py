@@ -10,6 +10,10 @@ quantity is declared with :func:`quantity`, which records its SI unit::
 Arrays are made read-only and mappings immutable when the result is built; :meth:`Result.to_dict`
 gives plain data for JSON/YAML, and :meth:`Result.units` the ``units`` block of that document,
 generated from the declarations (nested results contribute their own), never guessed from names.
+A quantity whose unit follows from the value (a transfer function's gain, in the unit of its
+signals) is declared with :func:`quantity_in`, naming the attribute that holds its unit. A field
+whose name became one of these methods (``units``, ``document``) was renamed; :class:`renamed_field`
+keeps the old name readable for one release, with a DeprecationWarning.
 """
 
 import warnings
