@@ -12,6 +12,7 @@ from ..core.choices import Choice
 from ..core.errors import InputError, short, wrong_type
 from ..core.frozen import FrozenMap, readonly
 from ..core.results import Result, quantity, renamed_units
+from ..core.tables import Table
 
 
 class Excitation(Choice):
@@ -106,6 +107,14 @@ class SampledResponse(Result):
         """The units block of :meth:`to_dict`: the declared speed's and time's, each signal's."""
         declared = self.field_units()
         return {"speed": declared["speed"], "time": declared["time"], **dict(zip(self.names, self.signal_units))}
+
+    def tables(self):
+        """``{"states": Table}``: one row per sample, ``time`` (s) and every signal in its unit. The
+        speed and the inputs applied are the frame's ``attrs``."""
+        columns = {"time": self.time, **{name: self[name] for name in self.names}}
+        attrs = {"speed": self.speed, "inputs": {k: (str(kind), size) for k, (kind, size) in self.inputs.items()}}
+        return {"states": Table(columns, {"time": self.field_units()["time"], **dict(zip(self.names, self.signal_units))},
+                                attrs)}
 
     def _repr_fields(self):
         """``(name, text)`` pairs of the short repr: speed, time span, signals, inputs."""

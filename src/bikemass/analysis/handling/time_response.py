@@ -30,7 +30,6 @@ from ...core.choices import closest
 from ...core.errors import BikemassWarning, InputError, short, wrong_type
 from ...core.frozen import short_repr
 from ...core.real import finite_real
-from ...core.tables import Table
 from .discrete import hold_matrices, sample_times
 from ..nonlinear.response import NonlinearResponse
 from ..sampled import SampledResponse, checked_inputs
@@ -121,13 +120,6 @@ class TimeResponse(SampledResponse):
         """Plain data: speed, time (s) and states (``{name: samples}`` in their units)."""
         return {"speed": self.speed, "time": self.time.tolist(),
                 "states": {name: self[name].tolist() for name in self.names}}
-
-    def tables(self):
-        """``{"states": Table}``: one row per sample, ``time`` (s) and every state in its unit. The
-        speed and the inputs applied are the frame's ``attrs``."""
-        columns = {"time": self.time, **{name: self[name] for name in self.names}}
-        attrs = {"speed": self.speed, "inputs": {k: (str(kind), size) for k, (kind, size) in self.inputs.items()}}
-        return {"states": Table(columns, {"time": "s", **dict(zip(self.names, self.signal_units))}, attrs)}
 
     def __repr__(self):
         return short_repr(self, *self._repr_fields())
