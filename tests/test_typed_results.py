@@ -231,7 +231,6 @@ NOT_RESULTS = {
     "rider.Rider": "an input: a posed rider's parts",
     "models.parameters.BenchmarkParameters": "the 26 parameters; their units are parameter_units()",
     "models.linear.LinearModel": "a model, not a result",
-    "analysis.state_space.StateSpace": "a model's state-space matrices at one speed",
     "mass.tubes.Structure": "an input: the frame's tubes",
     "models.control.Control": "an input: a controller",
     "bicycle.parameter_sets.ParameterSetFile": "an input file as read",
