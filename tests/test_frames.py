@@ -97,6 +97,10 @@ def test_contract_every_handling_frame_holds_its_result():
     assert list(frame.columns) == ["time", *sim.names]
     np.testing.assert_array_equal(frame[list(sim.names)].to_numpy(), sim.values)
     assert frame.attrs["units"]["lateral"] == "m" and frame.attrs["units"]["time"] == "s"
+    run = bm.simulate(P, 4.6, {"roll-rate": 0.5}, duration=0.5, step=0.1, nonlinear=True)
+    frame = run.to_frame()                       # a nonlinear run's frame too: its ten outputs
+    np.testing.assert_array_equal(frame[list(run.names)].to_numpy(), run.values)
+    assert frame.attrs["units"]["energy"] == "J" and frame.attrs["units"]["forward-speed"] == "m/s"
     shapes = bm.mode_shapes(P, 5.0)
     frame = shapes.to_frame()
     assert len(frame) == len(shapes.labels) * len(shapes.coordinates)

@@ -50,7 +50,7 @@ def test_a_growing_response_stops_with_a_warning_before_it_overflows():
     with pytest.warns(BikemassWarning, match="grows without bound"):
         r = bm.simulate(P, 1.0, {"roll-angle": 0.01}, duration=1000.0, step=0.01)
     assert 2 < r.time[-1] < 1000 and np.all(np.isfinite(r.values))
-    bound = np.array([DIVERGED * LIMITS[s] for s in r.units])
+    bound = np.array([DIVERGED * LIMITS[s] for s in r.signal_units])
     assert np.all(np.abs(r.values) <= bound)
     want = reference(bm.linear_model(P), 1.0, np.array([0.01, 0, 0, 0, 0, 0]), np.zeros(2), r.time[-1:])
     assert np.allclose(r.values[-1], want[0], rtol=1e-8)

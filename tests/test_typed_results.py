@@ -10,8 +10,7 @@ The functions not walked are listed with the reason in ``NOT_WALKED`` (they draw
 files: a matplotlib Figure is mutable by design), and ``NOT_YET`` names results that still hold
 mutable parts (empty now: a result that regains one fails).  ``NOT_RESULTS`` names the types
 returned that are not :class:`~bikemass.core.results.Result` s, each with why: inputs and
-models, plain read-only arrays and mappings, and the results still to convert (the remaining
-work of the issue, kept visible here).
+models, and plain read-only arrays and mappings; every other facade result is a ``Result``.
 """
 
 import dataclasses
@@ -232,7 +231,6 @@ NOT_RESULTS = {
     "rider.Rider": "an input: a posed rider's parts",
     "models.parameters.BenchmarkParameters": "the 26 parameters; their units are parameter_units()",
     "models.linear.LinearModel": "a model, not a result",
-    "analysis.state_space.StateSpace": "a model's state-space matrices at one speed",
     "mass.tubes.Structure": "an input: the frame's tubes",
     "models.control.Control": "an input: a controller",
     "bicycle.parameter_sets.ParameterSetFile": "an input file as read",
@@ -241,19 +239,6 @@ NOT_RESULTS = {
     # the value itself: a read-only array or a read-only mapping
     "numpy.ndarray": "bm.stiffness, bm.frame_stiffness, bm.speeds: a read-only array",
     "core.frozen.FrozenMap": "bm.geometry_chart, bm.geometry_sensitivity: a read-only mapping",
-    # results still to become Result subclasses: the remaining work of issue 32 item 3
-    "scenario.posing.PosedRider": "not yet a Result: a pose's document, rider, bicycle and solution",
-    "analysis.uncertainty.Propagation": "not yet a Result: mappings of mixed units (matrices, eigenvalue bands); "
-                                        "its critical speeds are Estimate Results",
-    **{name: "not yet a Result: a field named units (each signal's, from the model) clashes with Result.units()"
-       for name in ("analysis.handling.time_response.TimeResponse", "analysis.handling.lane_change.LaneChange",
-                    "analysis.nonlinear.response.NonlinearResponse")},
-    **{name: "not yet a Result: units that depend on the signals chosen (input_unit, output_unit, the model's "
-             "coordinates)" for name in (
-        "analysis.handling.transfer.TransferFunction", "analysis.handling.frequency.FrequencyResponse",
-        "analysis.handling.mode_shapes.ModeShapes")},
-    "analysis.handling.survey.HandlingResult": "not yet a Result: its gains' units are the Gains table's "
-                                               "(analysis/handling/gains.py UNITS), not declared per field",
 }
 """Types (module under ``bikemass`` and name) returned by facade functions that are not
 :class:`~bikemass.core.results.Result` s, with why."""
@@ -313,3 +298,51 @@ def test_the_walker_finds_what_it_looks_for():
     frozen = np.zeros(2)
     frozen.setflags(write=False)
     assert mutable_parts(Tight(frozen)) == []
+
+
+def test_a_renamed_units_field_still_reads_with_a_warning_and_units_is_the_block(meijaard_benchmark):
+    """A time response's ``units`` field (each state's unit) is ``signal_units`` in 0.3: ``units()``
+    is its units block as on every result (speed in m/s, time in s, each state in the model's unit),
+    and ``units`` read as the old tuple still works for one release, with a DeprecationWarning."""
+    r = bm.simulate(meijaard_benchmark, 4.6, initial={"roll-rate": 0.5}, duration=0.1)
+    assert r.signal_units == ("rad", "rad", "rad/s", "rad/s", "rad", "m")     # the Whipple model's states
+    block = r.units()
+    assert block["speed"] == "m/s" and block["time"] == "s" and block["roll-rate"] == "rad/s"
+    assert r.document()["units"] == block
+    with pytest.warns(DeprecationWarning, match="signal_units"):
+        assert r.units[2] == "rad/s"
+    with pytest.warns(DeprecationWarning):
+        assert list(r.units) == list(r.signal_units)
+    lane = bm.lane_change(meijaard_benchmark, 5.0)
+    with pytest.warns(DeprecationWarning):
+        assert lane.units["steer-torque"] == "N m"
+    assert lane.units()["steer-torque"] == lane.signal_units["steer-torque"] == "N m"
+    assert lane.model == "linear" and isinstance(lane.model, enum.Enum)
+
+
+def test_the_other_renamed_fields_and_the_string_enums(meijaard_benchmark):
+    """A mode shape's ``units`` is ``coordinate_units`` and a posed rider's ``document`` is
+    ``placement`` in 0.3 (the old names read as values warn; called, they are every result's
+    methods); kinds are string enums equal to the old strings, written as those strings."""
+    shapes = bm.mode_shapes(meijaard_benchmark, 5.0)
+    assert shapes.coordinate_units == ("rad", "rad", "rad", "m")        # roll, steer, heading, lateral
+    with pytest.warns(DeprecationWarning, match="coordinate_units"):
+        assert tuple(shapes.units) == shapes.coordinate_units
+    assert shapes.units()["phase"] == "deg" and shapes.units()["speed"] == "m/s"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", bm.BikemassWarning)
+        posed = bm.pose_rider("jamis", hands="drops")
+    with pytest.warns(DeprecationWarning, match="placement"):
+        assert posed.document["name"] == posed.placement["name"]
+    document = posed.document()
+    assert document["hands"] == "drops" and type(document["hands"]) is str
+    assert document["units"]["crank"] == "deg" and document["units"]["gaps"] == "m"
+    assert posed.hands == bm.Grip.DROPS == "drops"
+    r = bm.simulate(meijaard_benchmark, 4.6, inputs={"steer-torque": ("impulse", 0.1)}, duration=0.1)
+    kind, size = r.inputs["steer-torque"]
+    assert kind == "impulse" and isinstance(kind, enum.Enum) and r.inputs["steer-torque"].unit == "N m s"
+    u = bm.uncertainty("benchmark", {"c": 0.001}, speeds=np.arange(1.0, 3.0))
+    assert u.method == "linear" and isinstance(u.method, enum.Enum)
+    assert u.to_dict()["method"] == "linear" and type(u.to_dict()["method"]) is str
+    assert u.to_dict()["inputs"]["c"] == {"distribution": "normal", "std": 0.001}
+    assert type(u.to_dict()["inputs"]["c"]["distribution"]) is str

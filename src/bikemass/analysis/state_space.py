@@ -15,26 +15,12 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike
 
-from ..core.display import Display
+from ..core.results import Result, declared_units, quantity
 from ..core.frozen import readonly, short_repr
 from ..models.linear import LinearModel
 from ..models.parameters import BenchmarkParameters
 from ..scenario.scenario import Scenario
 from .handling.plant import check_speed, linear_model, output_row
-
-MATRIX_UNITS = {
-    "A": "(row state's unit)/s per (column state's unit)",
-    "B": "(row state's unit)/s per (column input's unit)",
-    "C": "(row output's unit) per (column state's unit)",
-    "D": "(row output's unit) per (column input's unit)",
-    "mechanics_M": "SI (kg m^2 where the coordinates are angles)",
-    "mechanics_C": "SI per (m/s)^k (N m s/rad where the coordinates are angles and the inputs torques)",
-    "mechanics_K": "SI per (m/s)^k (N m/rad where the coordinates are angles and the inputs torques)",
-    "mechanics_F": "(row equation's generalised force) per (column input's unit): 1 for torques on angles",
-    "speed": "m/s",
-}
-"""The ``units`` block of a written state space: each matrix's entries relate the units that its rows'
-and columns' signals name (``state_units``, ``input_units``, ``output_units``)."""
 
 CSV_HEADERS = ("matrix", "power", "row", "column", "value", "row unit", "column unit")
 """The CSV layout: one row per entry of A, B, C, D (power empty) and of the mechanics' matrices
@@ -47,7 +33,7 @@ def rate_unit(unit):
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class StateSpace(Display):
+class StateSpace(Result):
     """``x' = A x + B u``, ``y = C x + D u`` of a linear model at one speed, with names and units.
 
     Attributes
@@ -82,22 +68,29 @@ class StateSpace(Display):
     """
 
     model: str
-    speed: float
-    states: tuple
-    inputs: tuple
-    outputs: tuple
-    state_units: tuple
-    input_units: tuple
-    output_units: tuple
-    A: np.ndarray
-    B: np.ndarray
-    C: np.ndarray
-    D: np.ndarray
+    speed: float = quantity("m/s", "forward speed")
+    states: tuple = ()
+    inputs: tuple = ()
+    outputs: tuple = ()
+    state_units: tuple = ()
+    input_units: tuple = ()
+    output_units: tuple = ()
+    A: np.ndarray = quantity("(row state's unit)/s per (column state's unit)", "(N, N)", default=None)
+    B: np.ndarray = quantity("(row state's unit)/s per (column input's unit)", "(N, m)", default=None)
+    C: np.ndarray = quantity("(row output's unit) per (column state's unit)", "(p, N)", default=None)
+    D: np.ndarray = quantity("(row output's unit) per (column input's unit)", "(p, m)", default=None)
     coordinates: tuple = ()
-    mechanics_M: np.ndarray | None = None
-    mechanics_C: np.ndarray | None = None
-    mechanics_K: np.ndarray | None = None
-    mechanics_F: np.ndarray | None = None
+    mechanics_M: np.ndarray | None = quantity("SI (kg m^2 where the coordinates are angles)", "mass matrix",
+                                              default=None)
+    mechanics_C: np.ndarray | None = quantity(
+        "SI per (m/s)^k (N m s/rad where the coordinates are angles and the inputs torques)",
+        "(d + 1, n, n): the coefficients of v**k of the damping matrix", default=None)
+    mechanics_K: np.ndarray | None = quantity(
+        "SI per (m/s)^k (N m/rad where the coordinates are angles and the inputs torques)",
+        "(d + 1, n, n): the coefficients of v**k of the stiffness matrix", default=None)
+    mechanics_F: np.ndarray | None = quantity(
+        "(row equation's generalised force) per (column input's unit): 1 for torques on angles",
+        "(n, m): how the inputs enter the equations of motion", default=None)
 
     def __post_init__(self):
         for name in ("A", "B", "C", "D", "mechanics_M", "mechanics_C", "mechanics_K", "mechanics_F"):
@@ -121,7 +114,8 @@ class StateSpace(Display):
                 for k, v in self.arrays().items()}
 
     def units(self):
-        """The ``units`` block: the unit of each key of :meth:`to_dict` that holds a quantity."""
+        """The ``units`` block: the declared unit of each key of :meth:`to_dict` that holds a quantity
+        (:data:`MATRIX_UNITS`' order: the matrices, then the speed)."""
         return {k: u for k, u in MATRIX_UNITS.items() if k in self.arrays()}
 
     def to_npz(self):
@@ -171,6 +165,13 @@ class StateSpace(Display):
     def __repr__(self):
         return short_repr(self, ("model", self.model), ("speed", f"{self.speed:g} m/s"),
                           ("states", len(self.states)), ("inputs", len(self.inputs)), ("outputs", len(self.outputs)))
+
+
+MATRIX_UNITS = {k: declared_units(StateSpace)[k] for k in ("A", "B", "C", "D", "mechanics_M", "mechanics_C",
+                                                          "mechanics_K", "mechanics_F", "speed")}
+"""The ``units`` block of a written state space, as :class:`StateSpace`'s fields declare it: each
+matrix's entries relate the units that its rows' and columns' signals name (``state_units``,
+``input_units``, ``output_units``)."""
 
 
 def state_space(system: LinearModel | Scenario | BenchmarkParameters, speed: float,

@@ -34,14 +34,16 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from ..core.tables import Table
-from ..core.display import Display
+from ..core.choices import Choice
 from ..core.results import Result, quantity
-from ..core.frozen import frozen_fields, thaw
+from ..core.frozen import thaw
+from ..core.plain import plain
 from ..core.real import finite_real
 from ..core.errors import InputError
 from ..core.keywords import renamed_keywords
 from ..core.limits import MAX_SPEEDS
 from ..core.units import UnitError, dimension_of, split_quantity, to_si
+from ..models.canonical import CanonicalMatrices
 from ..models.members.rider_lean.parameters import RiderLeanParameters
 from ..models.parameters import NAMES
 from ..plots.stability import mode_colours
@@ -52,16 +54,83 @@ from .engine.speeds import speed_grid, speed_values
 from .model import STEP, model_of, values_of
 from .sensitivity import SPEEDS, speed_derivatives
 
-DISTRIBUTIONS = ("normal", "uniform")
+class Distribution(Choice):
+    """An input's distribution about its nominal value (a member is its string: ``"normal"``).
+
+    See Also
+    --------
+    Spread : Holds one.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> bm.Distribution.values()
+    ('normal', 'uniform')
+    >>> bm.Spread("uniform", 0.005).kind is bm.Distribution.UNIFORM
+    True
+    """
+
+    NORMAL = "normal"
+    """Normal, of standard deviation ``std``."""
+    UNIFORM = "uniform"
+    """Uniform on ``+-half_width``, ``std = half_width / sqrt 3``."""
+
+
+DISTRIBUTIONS = Distribution.values()
+"""The distributions' names: ``("normal", "uniform")``."""
+
+
+class PropagationMethod(Choice):
+    """How :func:`uncertainty` propagates the inputs' spreads (a member is its string).
+
+    See Also
+    --------
+    bikemass.uncertainty : Takes it as ``method=``.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> bm.PropagationMethod.values()
+    ('linear', 'montecarlo')
+    >>> bm.uncertainty("benchmark", {"c": 0.005}, method=bm.PropagationMethod.LINEAR).method == "linear"
+    True
+    """
+
+    LINEAR = "linear"
+    """First order, with exact derivatives."""
+    MONTECARLO = "montecarlo"
+    """Seeded draws of every input, every output recomputed."""
+
+
+METHODS = PropagationMethod.values()
+"""The methods' names: ``("linear", "montecarlo")``."""
 
 
 @dataclass(frozen=True)
 class Spread:
-    """One input's distribution about its nominal value: ``kind`` normal|uniform, ``std`` (SI: m,
-    kg, rad, ... as the input's value)."""
+    """One input's distribution about its nominal value: ``kind`` a :class:`Distribution` (normal or
+    uniform; another kind is kept as given, and refused by :func:`propagate`), ``std`` (SI: m,
+    kg, rad, ... as the input's value).
 
-    kind: str
+    See Also
+    --------
+    bikemass.uncertainty : Takes ``{input key: Spread}``.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> u = bm.uncertainty("benchmark", {"c": bm.Spread("uniform", 0.005)})     # +-8.7 mm, std 5 mm
+    >>> w = u.speeds["weave_speed"]
+    >>> print(f"weave {w.nominal:.4f} +- {w.std:.4f} m/s")
+    weave 4.2924 +- 0.0574 m/s
+    """
+
+    kind: "Distribution | str"
     std: float
+
+    def __post_init__(self):
+        if isinstance(self.kind, str) and self.kind in DISTRIBUTIONS:
+            object.__setattr__(self, "kind", Distribution(self.kind))
 
     def sample(self, rng, n):
         if self.kind == "uniform":
@@ -163,7 +232,19 @@ class Estimate(Result):
     std, the draws' mean and 2.5 % / 97.5 % quantiles (m/s) and the fraction of draws without it.
 
     Dict access (``estimate["std"]``, ``estimate.get("q025")``), what a propagation's ``speeds``
-    held before 0.3, still works for one release with a :class:`DeprecationWarning`."""
+    held before 0.3, still works for one release with a :class:`DeprecationWarning`.
+
+    See Also
+    --------
+    bikemass.uncertainty : Gives one per critical speed.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> w = bm.uncertainty("benchmark", {"c": 0.005}).speeds["weave_speed"]
+    >>> print(f"{w.nominal:.4f} +- {w.std:.4f} {w.units()['std']}", w.sampled)
+    4.2924 +- 0.0574 m/s False
+    """
 
     nominal: float | None = quantity("m/s", "the nominal bicycle's critical speed", default=None)
     std: float | None = quantity("m/s", "standard deviation (the method's)", default=None)
@@ -206,20 +287,71 @@ class Estimate(Result):
         return iter(self.to_dict())
 
 
-@dataclass(frozen=True, repr=False)
-class Propagation(Display):
-    """Nominal values and standard deviations; ``linear`` and (if sampled) ``montecarlo`` results
-    (read-only mappings of read-only arrays)."""
+MATRICES_UNIT = "each matrix's, as CanonicalMatrices declares it"
+"""What :attr:`Propagation.matrices` is declared in: each matrix in its own unit (:func:`propagation_units`)."""
 
-    matrices: Mapping          # {M|C1|K0|K2: {"nominal": 2x2, "std": 2x2}} (method's std)
-    speeds: Mapping            # {weave_speed|capsize_speed: Estimate}
-    eigen: Mapping             # {"speeds": [...], "modes": {label: {"nominal": complex (n,), "std_re", "std_im"}}}
-    inputs: Mapping            # {key: {"distribution", "std"}}
-    method: str
-    samples: object = None     # Monte Carlo draws: {"weave_speed": array, "capsize_speed": array} or None
+
+def propagation_units():
+    """The units block of a :class:`Propagation`'s document: ``{M, C1, K0, K2}`` as
+    :class:`~bikemass.models.canonical.CanonicalMatrices` declares them, ``weave_speed`` and
+    ``capsize_speed`` as :class:`Estimate` declares its values, ``eigenvalues`` as
+    :attr:`Propagation.eigen` is declared (1/s)."""
+    speed = Estimate.field_units()["nominal"]
+    return {**{k: u for k, u in CanonicalMatrices.field_units().items() if k != "g"},
+            "weave_speed": speed, "capsize_speed": speed, "eigenvalues": Propagation.field_units()["eigen"]}
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class Propagation(Result):
+    """Nominal values and standard deviations; ``linear`` and (if sampled) ``montecarlo`` results
+    (read-only mappings of read-only arrays).
+
+    Attributes
+    ----------
+    matrices : mapping
+        ``{M|C1|K0|K2: {"nominal": 2x2, "std": 2x2, ...}}`` (the method's std), each in its unit as
+        :class:`~bikemass.models.canonical.CanonicalMatrices` declares it; empty for a member other
+        than the Whipple bicycle.
+    speeds : mapping
+        ``{weave_speed|capsize_speed: Estimate}`` (m/s, declared by :class:`Estimate`).
+    eigen : mapping
+        ``{"speeds": (n,) m/s, "modes": {label: {"nominal": complex (n,), "std_re", "std_im", ...}}}``, 1/s.
+    inputs : mapping
+        ``{key: {"distribution", "std"}}``: each input's spread, in the input's own SI unit.
+    method : PropagationMethod
+        ``"linear"`` or ``"montecarlo"`` (a string enum).
+    samples : mapping or None
+        Monte Carlo draws ``{"weave_speed": (n,), "capsize_speed": (n,)}`` (m/s, ``nan`` where a draw
+        has none), ``None`` for the linear method.
+
+    See Also
+    --------
+    bikemass.uncertainty : Makes it.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> u = bm.uncertainty("benchmark", {"c": 0.005})
+    >>> print(u.method, sorted(u.matrices), u.units()["M"], u.units()["weave_speed"])
+    linear ['C1', 'K0', 'K2', 'M'] kg m^2 m/s
+    """
+
+    matrices: Mapping = quantity(MATRICES_UNIT, "{M|C1|K0|K2: {nominal, std, ...}}")
+    speeds: Mapping = quantity("m/s", "{weave_speed|capsize_speed: Estimate}")
+    eigen: Mapping = quantity("1/s", "the eigenvalue bands over eigen['speeds'] (m/s)")
+    inputs: Mapping = quantity("SI, each input's own", "{key: {distribution, std}}")
+    method: PropagationMethod = PropagationMethod.LINEAR
+    samples: Mapping | None = quantity("m/s", "Monte Carlo draws of the critical speeds, or None", default=None)
 
     def __post_init__(self):
-        frozen_fields(self, "matrices", "speeds", "eigen", "inputs", "samples")
+        super().__post_init__()
+        object.__setattr__(self, "method", PropagationMethod(self.method))
+
+    def units(self):
+        """The units block of :meth:`to_dict`: the matrices' as
+        :class:`~bikemass.models.canonical.CanonicalMatrices` declares them, the critical speeds' as
+        :class:`Estimate` does, the eigenvalues' as :attr:`eigen` is declared."""
+        return propagation_units()
 
     def display_rows(self):
         """The method, the inputs' spreads and each critical speed's nominal value and std (Jupyter's
@@ -260,7 +392,7 @@ class Propagation(Display):
                     "std_im": m["std_im"], **({"re_q025": m["re_q025"], "re_q975": m["re_q975"]}
                                               if "re_q025" in m else {})}
             for label, m in self.eigen["modes"].items()}}
-        return {"method": self.method, "inputs": thaw(self.inputs), "matrices": thaw(self.matrices),
+        return {"method": str(self.method), "inputs": plain(self.inputs), "matrices": thaw(self.matrices),
                 **{k: v.to_dict() for k, v in self.speeds.items()}, "eigenvalues": eig}
 
 
@@ -377,7 +509,7 @@ def _check_options(spreads, method, samples, seed):
             raise InputError("spreads", key, f"a Spread of kind {' or '.join(DISTRIBUTIONS)}, got {spread!r}")
         if not finite_real(spread.std) or spread.std < 0:
             raise InputError("spreads", key, f"a finite standard deviation >= 0, got {spread.std!r}")
-    if method not in ("linear", "montecarlo"):
+    if method not in METHODS:
         raise InputError("method", method, "linear or montecarlo")
     if method == "montecarlo":
         if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or not 2 <= samples <= MAX_SAMPLES:

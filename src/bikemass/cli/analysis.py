@@ -237,15 +237,11 @@ def run_uncertainty(args):
 
 
 def uncertainty_units():
-    """The units block of ``uncertainty``'s JSON/YAML: the matrices' as
-    :class:`~bikemass.models.canonical.CanonicalMatrices` declares them, the critical speeds' as
-    :class:`~bikemass.analysis.uncertainty.Estimate` does, the eigenvalues' in 1/s."""
+    """The units block of ``uncertainty``'s JSON/YAML: what a
+    :class:`~bikemass.analysis.uncertainty.Propagation` declares (:func:`~bikemass.analysis.uncertainty.propagation_units`)."""
     # lazy: the library loads numpy; bikemass --help must not
-    from ..analysis.uncertainty import Estimate
-    from ..models.canonical import CanonicalMatrices
-    speed = Estimate.field_units()["nominal"]
-    return {**{k: u for k, u in CanonicalMatrices.field_units().items() if k != "g"},
-            "weave_speed": speed, "capsize_speed": speed, "eigenvalues": "1/s"}
+    from ..analysis.uncertainty import propagation_units
+    return propagation_units()
 
 
 def uncertainty_table(result, title):

@@ -465,7 +465,7 @@ def run_simulate(args):
     def render(fmt):
         if fmt in ("json", "yaml"):
             return dialect.result_document(r.to_dict(), r.unit_block(), fmt)
-        headers = ["time (s)", *(f"{n} ({u})" for n, u in zip(r.names, r.units))]
+        headers = ["time (s)", *(f"{n} ({u})" for n, u in zip(r.names, r.signal_units))]
         rows = [[t, *x] for t, x in zip(r.time.tolist(), r.values.tolist())]
         if fmt == "csv":
             return dialect.csv_text(headers, rows)

@@ -112,7 +112,7 @@ def _pose_text(args, posed, fmt):
                                 [[j, angles[j], j in solution.free] for j in angles])
     # lazy: the library loads numpy; bikemass --help must not
     from ..rider.pose import POSE_UNITS
-    text = dialect.document(posed.document, fmt, POSE_UNITS)
+    text = dialect.document(posed.placement, fmt, POSE_UNITS)
     if fmt == "json":
         return text
     header = "".join(f"# {line}\n" for line in (

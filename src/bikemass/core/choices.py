@@ -247,7 +247,7 @@ class Grip(Choice):
     Examples
     --------
     >>> import bikemass as bm
-    >>> bm.pose_rider("jamis", hands=bm.Grip.DROPS).hands
+    >>> str(bm.pose_rider("jamis", hands=bm.Grip.DROPS).hands)
     'drops'
     >>> bm.pose_rider("jamis", hands="drop")
     Traceback (most recent call last):

@@ -4,6 +4,7 @@ input with it as it checks a file).  A :class:`~bikemass.core.units.Quantity` st
 takes it as it is); :func:`file_form` writes it as its text for a file."""
 
 from collections.abc import Mapping
+from enum import Enum
 
 import numpy as np
 
@@ -20,6 +21,8 @@ def plain(obj):
         return plain(obj.tolist())
     if isinstance(obj, np.generic):
         return obj.item()
+    if isinstance(obj, Enum):                   # a string enum (a kind, a direction): its string
+        return obj.value
     return obj
 
 

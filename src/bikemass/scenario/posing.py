@@ -12,13 +12,14 @@ from dataclasses import dataclass
 from ..core.choices import Grip, check
 from ..core.config import Node
 from ..core.errors import BikemassWarning, InputError, short, wrong_type
-from ..core.frozen import freeze, short_repr
+from ..core.frozen import FrozenMap, freeze, short_repr, thaw
+from ..core.results import Result, quantity, renamed_field
 from ..core.units import Quantity
 from ..rider import Rider
 from ..rider.body import chain_of, load_body
 from ..rider.chain import BALL, FEET, JOINTS, joint_gaps
 from ..rider.chain_file import bicycle_contacts, default_hands
-from ..rider.pose import pose_parts
+from ..rider.pose import POSE_UNITS, pose_parts
 from .loading import BicycleLike, load_bicycle
 
 DEFAULT_BODY = "thesis_rider"
@@ -26,7 +27,7 @@ DEFAULT_BODY = "thesis_rider"
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class PosedRider:
+class PosedRider(Result):
     """A chain-posed rider and how it was solved (what :func:`bikemass.pose_rider` returns).
 
     Attributes
@@ -38,14 +39,15 @@ class PosedRider:
     solution : Solution
         Joint angles (``solution.pose.angles``, deg), hip joints (``solution.pose.root``,
         x and z in m), the contacts' residuals (m) and which joints were solved.
-    hands : str
-        The grip used (or ``"none"``).
+    hands : Grip
+        The grip used (or ``"none"``); a string enum.
     crank : float or None
         The crank angle (deg), ``None`` for symmetric legs.
-    document : Mapping
+    placement : Mapping
         The pose in the placement form (read-only; its angles and crank typed,
         :class:`~bikemass.core.units.Quantity` in deg, which ``bikemass pose -o`` writes as
-        ``"<number> deg"``).
+        ``"<number> deg"``).  ``document``, its name before 0.3, still reads it with a
+        DeprecationWarning; ``document()`` is the result's document, as on every result.
     gaps : Mapping
         ``{joint: gap (m)}`` between the joined segment ends (zero to rounding).
 
@@ -63,13 +65,43 @@ class PosedRider:
     >>> params = bm.parameters("jamis", posed.rider)        # a rider like any other
     """
 
-    rider: object
+    rider: Rider
     bicycle: object
     solution: object
-    hands: str
-    crank: object
-    document: object
-    gaps: object
+    hands: "Grip | str"
+    crank: float | None = quantity("deg", "the crank angle; None: symmetric legs", default=None)
+    placement: Mapping = quantity("as POSE_UNITS (location m, angle deg)", "the placement form",
+                                  default_factory=FrozenMap)
+    gaps: Mapping = quantity("m", "{joint: gap} between the joined segment ends", default_factory=FrozenMap)
+
+    document = renamed_field("document", "placement", "_document")
+
+    def __post_init__(self):
+        super().__post_init__()
+        object.__setattr__(self, "hands", Grip(self.hands))
+
+    def to_dict(self):
+        """Plain data: the rider's name, the grip, the crank angle (deg), the joint angles (deg), the
+        hip joints (x, z in m), the contacts' residuals and the joints' gaps (m), and the placement
+        form (``placement``)."""
+        pose = self.solution.pose
+        return {"name": self.rider.name, "hands": str(self.hands), "crank": self.crank,
+                "angles": {k: float(v) for k, v in pose.angles.items()},
+                "hip_joints": [float(x) for x in pose.root],
+                "residuals": {k: float(v) for k, v in self.solution.residuals.items()},
+                "gaps": {k: float(v) for k, v in self.gaps.items()}, "placement": thaw(self.placement)}
+
+    def units(self):
+        """The units block of :meth:`to_dict`: the crank's and the gaps' as declared, the joint
+        angles in deg, hip joints and residuals in m, the placement form's as its file states them
+        (:data:`~bikemass.rider.pose.POSE_UNITS`)."""
+        declared = self.field_units()
+        return {"crank": declared["crank"], "angles": "deg", "hip_joints": "m", "residuals": "m",
+                "gaps": declared["gaps"], **POSE_UNITS}
+
+    def _document(self):
+        """:meth:`Result.document` (``document()``; the name ``document`` was the placement form's)."""
+        return Result.document(self)
 
     def __repr__(self):
         angles = ", ".join(f"{k} {v:.1f}" for k, v in self.solution.pose.angles.items())

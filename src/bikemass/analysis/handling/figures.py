@@ -126,11 +126,11 @@ def plot_time_response(response: TimeResponse, title: str = "", size: "tuple[flo
     """
     if not isinstance(response, TimeResponse):
         raise wrong_type("response", response, "a TimeResponse (bm.simulate)")
-    units = list(dict.fromkeys(response.units))
+    units = list(dict.fromkeys(response.signal_units))
     fig = new_figure(size or TIME_SIZE)
     axes = np.atleast_1d(fig.subplots(len(units), 1, sharex=True))
     for ax, unit in zip(axes, units):
-        for name, u in zip(response.names, response.units):
+        for name, u in zip(response.names, response.signal_units):
             if u == unit:
                 ax.plot(response.time, response[name], label=name)
         ax.set_ylabel(unit)

@@ -12,7 +12,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 import scipy.linalg
 
-from ...core.display import Display
+from ...core.results import Result, quantity, quantity_in
 from ...core.errors import InputError, short
 from ...core.frozen import readonly, short_repr
 from ...core.tables import Table
@@ -91,12 +91,17 @@ def check_frequencies(frequencies):
     return w
 
 
+MAGNITUDE_UNIT = "dB"
+"""The unit of :attr:`FrequencyResponse.magnitude` (of the ratio in its ``ratio_unit``)."""
+PHASE_UNIT = "deg"
+"""The unit of :attr:`FrequencyResponse.phase`."""
+
 DEFAULT_FREQUENCIES = (0.1, 100.0, 1000)
 """``(start, stop, count)`` of the default frequencies (rad/s, logarithmic)."""
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class FrequencyResponse(Display):
+class FrequencyResponse(Result):
     """``G(j w)`` from one input to one output at one speed.
 
     Attributes
@@ -113,19 +118,32 @@ class FrequencyResponse(Display):
         Degrees, unwrapped along the frequencies (the first value in (-180, 180]).
 
     Arrays are read-only; :attr:`values` is ``G(j w)`` itself (complex).
+
+    See Also
+    --------
+    bikemass.frequency_response : Makes it.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> fr = bm.frequency_response(bm.parameters("benchmark"), 5.0, "steer-torque", "roll-angle",
+    ...                            frequencies=[1.0, 10.0])
+    >>> fr.units()["magnitude"], fr.units()["phase"]
+    ('dB (of rad/(N m))', 'deg')
     """
 
     input: str
     output: str
     input_unit: str
     output_unit: str
-    speed: float
-    frequencies: np.ndarray
-    values: np.ndarray
+    speed: float = quantity("m/s", "forward speed")
+    frequencies: np.ndarray = quantity("rad/s", "angular frequencies")
+    values: np.ndarray = quantity_in("ratio_unit", "G(j w), complex, in output_unit/(input_unit)")
 
     def __post_init__(self):
         object.__setattr__(self, "frequencies", readonly(self.frequencies, float))
         object.__setattr__(self, "values", readonly(self.values, complex))
+        object.__setattr__(self, "speed", float(self.speed))
 
     @property
     def magnitude(self):
@@ -149,9 +167,11 @@ class FrequencyResponse(Display):
                 "phase": self.phase.tolist()}
 
     def units(self):
-        """The unit of each key of :meth:`to_dict` that holds a quantity."""
-        return {"speed": "m/s", "frequencies": "rad/s", "magnitude": f"dB (of {self.ratio_unit})",
-                "phase": "deg"}
+        """The units block of :meth:`to_dict`: speed and frequencies as their fields declare, the
+        magnitude in :data:`MAGNITUDE_UNIT` of :attr:`ratio_unit`, the phase in :data:`PHASE_UNIT`."""
+        declared = self.field_units()
+        return {"speed": declared["speed"], "frequencies": declared["frequencies"],
+                "magnitude": f"{MAGNITUDE_UNIT} (of {self.ratio_unit})", "phase": PHASE_UNIT}
 
     def tables(self):
         """``{"response": Table}``: one row per frequency: ``frequency`` (rad/s), ``frequency_hz``
@@ -160,8 +180,8 @@ class FrequencyResponse(Display):
         columns = {"frequency": self.frequencies, "frequency_hz": self.frequencies / (2 * np.pi),
                    "magnitude": self.magnitude, "phase": self.phase, "real": self.values.real,
                    "imaginary": self.values.imag}
-        units = {"frequency": "rad/s", "frequency_hz": "Hz", "magnitude": f"dB (of {self.ratio_unit})",
-                 "phase": "deg", "real": self.ratio_unit, "imaginary": self.ratio_unit}
+        units = {"frequency": "rad/s", "frequency_hz": "Hz", "magnitude": f"{MAGNITUDE_UNIT} (of {self.ratio_unit})",
+                 "phase": PHASE_UNIT, "real": self.ratio_unit, "imaginary": self.ratio_unit}
         return {"response": Table(columns, units, {"input": self.input, "output": self.output, "speed": self.speed})}
 
     def __repr__(self):

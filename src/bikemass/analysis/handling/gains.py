@@ -21,12 +21,10 @@ from dataclasses import astuple, dataclass, fields
 from ...core.errors import InputError, short
 from ...core.real import finite_real
 from ...core.gate import read_text
+from ...core.results import declared_units, quantity
 
 HEADER = ("speed", "kDelta", "kPhiDot", "kPhi", "kPsi", "kY")
 """The header of a gains file."""
-
-UNITS = {"k_delta": "N m/rad", "k_phi_dot": "s", "k_phi": "1/s", "k_psi": "rad/rad", "k_y": "rad/m"}
-"""The unit of each gain."""
 
 MAX_ROWS = 100_000
 """Most rows of a gains file."""
@@ -63,11 +61,11 @@ class Gains:
     (True, True)
     """
 
-    k_delta: float
-    k_phi_dot: float
-    k_phi: float
-    k_psi: float
-    k_y: float
+    k_delta: float = quantity("N m/rad", "steer angle error -> neuromuscular command")
+    k_phi_dot: float = quantity("s", "roll-rate error (rad/s) -> steer command (rad)")
+    k_phi: float = quantity("1/s", "roll error -> roll-rate command")
+    k_psi: float = quantity("rad/rad", "heading error -> roll command")
+    k_y: float = quantity("rad/m", "lateral error -> heading command")
 
     def __post_init__(self):
         for f in fields(self):
@@ -84,6 +82,8 @@ class Gains:
         return {f.name: float(getattr(self, f.name)) for f in fields(self)}
 
 
+UNITS = declared_units(Gains)
+"""The unit of each gain, as :class:`Gains` declares it: ``{"k_delta": "N m/rad", "k_phi_dot": "s", ...}``."""
 NAMES = tuple(f.name for f in fields(Gains))
 """``k_delta, k_phi_dot, k_phi, k_psi, k_y``: the gains in loop order, inner to outer."""
 

@@ -28,12 +28,14 @@ speed.  scipy's DOP853 integrates between the road's kinks (rtol 1e-10, atol 1e-
 
 import math
 import warnings
-from dataclasses import dataclass
+from collections.abc import Mapping
+from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.typing import ArrayLike
 
-from ...core.display import Display
+from ...core.choices import Choice
+from ...core.results import Result, quantity, renamed_units
 from ...core.real import finite_real
 from ...core.errors import BikemassWarning, InputError, short
 from ...core.frozen import FrozenMap, readonly, short_repr
@@ -53,7 +55,48 @@ PATH_FILTER_FREQUENCY = 2.4
 """``F_p``'s natural frequency (rad/s); its damping ratio is 1."""
 PREVIEW = 2.75
 """``tau_p`` (s): how far ahead in time the rider sees the road (steer-torque control)."""
-KINDS = ("double", "single")
+
+
+class Manoeuvre(Choice):
+    """The lane change driven (a member is its string: ``Manoeuvre.DOUBLE == "double"``).
+
+    See Also
+    --------
+    bikemass.lane_change : Takes it as ``kind=``.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> once = bm.lane_change(bm.parameters("benchmark"), 5.0, kind=bm.Manoeuvre.SINGLE)
+    >>> print(f"road at the end {once.road[-1]:.1f} m")
+    road at the end 2.0 m
+    """
+
+    DOUBLE = "double"
+    """Over 2 m at 35-45 m, held to 85 m, back to 0 at 95 m."""
+    SINGLE = "single"
+    """Over 2 m at 35-45 m, held to the road's end."""
+
+
+KINDS = Manoeuvre.values()
+"""The manoeuvres' names: ``("double", "single")``."""
+
+
+class Dynamics(Choice):
+    """Which bicycle a lane change ran on (:attr:`LaneChange.model`).
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> lane = bm.lane_change(bm.parameters("benchmark"), 5.0)
+    >>> lane.model is bm.Dynamics.LINEAR, lane.model == "linear"
+    (True, True)
+    """
+
+    LINEAR = "linear"
+    """The linear model about the upright run."""
+    NONLINEAR = "nonlinear"
+    """The nonlinear Whipple bicycle (:func:`follow_nonlinear`)."""
 
 
 def check_step(step, speed=None):
@@ -91,7 +134,7 @@ def with_path_filter(A, b):
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class LaneChange(Display):
+class LaneChange(Result):
     """The closed loop through a lane change at one speed.
 
     Attributes
@@ -107,32 +150,50 @@ class LaneChange(Display):
     signals : mapping
         ``{name: samples}`` of the bicycle's states, its lateral position fed back and the rider's
         steer torque (rad, rad/s, m, N m); read-only arrays.
-    units : mapping
-        ``{name: unit}`` of :attr:`signals`.
+    signal_units : mapping
+        ``{name: unit}`` of :attr:`signals` (``units``, its name before 0.3, still reads it with a
+        DeprecationWarning; ``units()`` is the units block of :meth:`to_dict`).
     stable : bool
         Whether the closed loop is stable.
-    model : str
+    model : Dynamics
         ``"linear"`` or ``"nonlinear"`` (the nonlinear Whipple bicycle; its signals add
-        ``forward-speed``, m/s).
+        ``forward-speed``, m/s); a string enum.
     stopped : str
         Why a nonlinear run ended before the road's end (a fall); empty otherwise.
+
+    See Also
+    --------
+    bikemass.lane_change : Makes it.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> lc = bm.lane_change(bm.parameters("benchmark"), 5.0)
+    >>> print(lc.model, lc.stable, f"road up to {lc.road.max():.1f} m")
+    linear True road up to 2.0 m
+    >>> print(f"steer torque at most {abs(lc.signals['steer-torque']).max():.3f} {lc.signal_units['steer-torque']}")
+    steer torque at most 0.155 N m
     """
 
-    speed: float
-    time: np.ndarray
-    road: np.ndarray
-    command: np.ndarray
-    signals: FrozenMap
-    units: FrozenMap
-    stable: bool
-    model: str = "linear"
+    speed: float = quantity("m/s", "forward speed")
+    time: np.ndarray = quantity("s", "the samples' times")
+    road: np.ndarray = quantity("m", "the road's lateral offset at the front contact")
+    command: np.ndarray = quantity("m", "the rider's commanded lateral position of the front contact")
+    signals: Mapping = quantity("each signal's (signal_units)", "{name: samples}")
+    signal_units: Mapping = field(default_factory=FrozenMap)
+    stable: bool = False
+    model: Dynamics = Dynamics.LINEAR
     stopped: str = ""
+
+    units = renamed_units("signal_units")
 
     def __post_init__(self):
         for name in ("time", "road", "command"):
             object.__setattr__(self, name, readonly(getattr(self, name), float))
         object.__setattr__(self, "signals", FrozenMap({k: readonly(v, float) for k, v in self.signals.items()}))
-        object.__setattr__(self, "units", FrozenMap(self.units))
+        object.__setattr__(self, "signal_units", FrozenMap(self.signal_units))
+        object.__setattr__(self, "stable", bool(self.stable))
+        object.__setattr__(self, "model", Dynamics(self.model))
 
     @property
     def distance(self):
@@ -142,14 +203,16 @@ class LaneChange(Display):
 
     def to_dict(self):
         """Plain data: speed, time, road, command and every signal."""
-        return {"speed": self.speed, "stable": bool(self.stable), "model": self.model, "stopped": self.stopped,
+        return {"speed": self.speed, "stable": bool(self.stable), "model": str(self.model), "stopped": self.stopped,
                 "time": self.time.tolist(),
                 "road": self.road.tolist(), "command": self.command.tolist(),
                 "signals": {k: v.tolist() for k, v in self.signals.items()}}
 
     def unit_block(self):
-        """The unit of each key of :meth:`to_dict` that holds a quantity."""
-        return {"speed": "m/s", "time": "s", "road": "m", "command": "m", **self.units}
+        """The units block of :meth:`to_dict`: the declared units of speed, time, road and command,
+        each signal's."""
+        declared = self.field_units()
+        return {**{k: declared[k] for k in ("speed", "time", "road", "command")}, **self.signal_units}
 
     def tables(self):
         """``{"signals": Table}``: one row per sample: ``time`` (s), ``road`` and ``command`` (m) and
@@ -171,6 +234,7 @@ def follow_lane_change(closed, lateral_row, names, units, kind="double", step=0.
     """
     if not isinstance(kind, str) or kind not in KINDS:
         raise InputError("kind", short(kind), f"one of {', '.join(KINDS)}")
+    kind = Manoeuvre(kind)
     v = closed.speed
     if not v > 0:
         raise InputError("speed", short(v), "a lane change needs a forward speed above 0 m/s")
@@ -249,6 +313,7 @@ def lane_change(system: System, speed: float, gains: "Gains | ArrayLike | None" 
             raise InputError("stiffness", short(stiffness), "none: the nonlinear model has a rigid frame")
     if not isinstance(kind, str) or kind not in KINDS:
         raise InputError("kind", short(kind), f"one of {', '.join(KINDS)}")
+    kind = Manoeuvre(kind)
     model = linear_model(system, stiffness)
     plant = rider_plant(model, speed)
     check_step(step, plant.speed)
@@ -401,7 +466,8 @@ def follow_nonlinear(parameters, closed, kind="double", step=0.01, scale=1.0):
     if stopped:
         warnings.warn(stopped, BikemassWarning, stacklevel=3)
     return LaneChange(v, t, scale * road(v * (t - PREVIEW), kind), x[:, 12], signals,
-                      dict(zip(NONLINEAR_NAMES, NONLINEAR_UNITS)), stable, model="nonlinear", stopped=stopped)
+                      dict(zip(NONLINEAR_NAMES, NONLINEAR_UNITS)), stable, model=Dynamics.NONLINEAR,
+                      stopped=stopped)
 
 
 def check_parameters(system):

@@ -15,11 +15,19 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike
 
-from ...core.display import Display
+from ...core.results import Result, quantity, renamed_units
 from ...core.frozen import readonly, short_repr
 from ...core.tables import Table
 from ..engine.modes import follow_modes
 from .plant import System, check_speed, linear_model
+
+
+EIGENVALUE_UNIT = "1/s (real, imaginary)"
+"""The unit of an eigenvalue (written as its real and imaginary part)."""
+SHAPE_UNIT = "the coordinate's unit per unit of the mode's reference coordinate"
+"""The unit of a shape's component: per unit of the mode's reference coordinate (its amplitude)."""
+PHASE_UNIT = "deg"
+"""The unit of :attr:`ModeShapes.phase`."""
 
 
 def coordinates(model):
@@ -42,7 +50,7 @@ def full_eigenvector(A, n_dynamic, value, vector):
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class ModeShapes(Display):
+class ModeShapes(Result):
     """The modes of a linear model at one speed, each as the amplitude and phase of its coordinates.
 
     Attributes
@@ -55,8 +63,9 @@ class ModeShapes(Display):
         What each root is at this speed (``weave``, ``weave, real (upper)``, ``capsize``, ...).
     eigenvalues : numpy.ndarray (m,)
         Complex, 1/s.
-    coordinates, units : tuple of str
-        The coordinates shown and their units.
+    coordinates, coordinate_units : tuple of str
+        The coordinates shown and their units (``units``, the name of ``coordinate_units`` before
+        0.3, still reads it with a DeprecationWarning; ``units()`` is the units block of :meth:`to_dict`).
     shapes : numpy.ndarray (m, k)
         Complex components, scaled so the largest mechanical coordinate is 1 (phase 0).
     reference : tuple of str
@@ -66,21 +75,40 @@ class ModeShapes(Display):
         kinematic (heading, lateral).
 
     Arrays are read-only; :attr:`amplitude` and :attr:`phase` are ``|shapes|`` and its angle (deg).
+
+    See Also
+    --------
+    bikemass.mode_shapes : Makes it.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> shapes = bm.mode_shapes(bm.parameters("benchmark"), 5.0)
+    >>> shapes.coordinates, shapes.coordinate_units
+    (('roll-angle', 'steer-angle', 'heading', 'lateral'), ('rad', 'rad', 'rad', 'm'))
+    >>> shapes.reference[2], shapes.units()["phase"]
+    ('roll-angle', 'deg')
     """
 
-    speed: float
-    labels: tuple
-    names: tuple
-    eigenvalues: np.ndarray
-    coordinates: tuple
-    units: tuple
-    shapes: np.ndarray
-    reference: tuple
-    n_mechanical: int
+    speed: float = quantity("m/s", "forward speed")
+    labels: tuple = ()
+    names: tuple = ()
+    eigenvalues: np.ndarray = quantity(EIGENVALUE_UNIT, "each mode's eigenvalue (complex)", default=None)
+    coordinates: tuple = ()
+    coordinate_units: tuple = ()
+    shapes: np.ndarray = quantity(SHAPE_UNIT, "(m, k) complex, the largest mechanical coordinate 1", default=None)
+    reference: tuple = ()
+    n_mechanical: int = 0
+
+    units = renamed_units("coordinate_units")
 
     def __post_init__(self):
         object.__setattr__(self, "eigenvalues", readonly(self.eigenvalues, complex))
         object.__setattr__(self, "shapes", readonly(self.shapes, complex))
+        for name in ("labels", "names", "coordinates", "coordinate_units", "reference"):
+            object.__setattr__(self, name, tuple(getattr(self, name)))
+        object.__setattr__(self, "speed", float(self.speed))
+        object.__setattr__(self, "n_mechanical", int(self.n_mechanical))
 
     @property
     def amplitude(self):
@@ -106,10 +134,10 @@ class ModeShapes(Display):
         z = np.repeat(self.eigenvalues, k)
         columns = {"mode": list(np.repeat(self.labels, k)), "name": list(np.repeat(self.names, k)),
                    "real": z.real, "imaginary": z.imag, "coordinate": list(self.coordinates) * len(self.labels),
-                   "unit": list(self.units) * len(self.labels), "amplitude": self.amplitude.ravel(),
+                   "unit": list(self.coordinate_units) * len(self.labels), "amplitude": self.amplitude.ravel(),
                    "phase": self.phase.ravel()}
         units = {"real": "1/s", "imaginary": "1/s", "amplitude": "coordinate's unit per unit of the reference",
-                 "phase": "deg"}
+                 "phase": PHASE_UNIT}
         return {"shapes": Table(columns, units, {"speed": self.speed})}
 
     def to_dict(self):
@@ -124,10 +152,12 @@ class ModeShapes(Display):
                                                                          self.reference))]}
 
     def unit_block(self):
-        """The unit of each key of :meth:`to_dict` that holds a quantity."""
-        return {"speed": "m/s", "eigenvalue": "1/s (real, imaginary)",
-                "amplitude": "the coordinate's unit per unit of the mode's reference coordinate",
-                "phase": "deg"}
+        """The units block of :meth:`to_dict` (``units()``): the speed's and the eigenvalue's as their
+        fields declare, each shape's amplitude per unit of its reference coordinate, its phase in
+        :data:`PHASE_UNIT`."""
+        declared = self.field_units()
+        return {"speed": declared["speed"], "eigenvalue": declared["eigenvalues"], "amplitude": declared["shapes"],
+                "phase": PHASE_UNIT}
 
     def __repr__(self):
         return short_repr(self, ("speed", f"{self.speed:g} m/s"), ("modes", ", ".join(self.labels)),

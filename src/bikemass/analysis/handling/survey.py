@@ -12,10 +12,10 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from ...core.choices import Tuning, check
-from ...core.display import Display
 from ...core.real import finite_real
 from ...core.errors import BikemassWarning, InputError, short
 from ...core.frozen import readonly, short_repr
+from ...core.results import Result, quantity
 from ...core.tables import Table
 from ...core.limits import MAX_SPEED
 from ...core.threads import one_blas_thread
@@ -115,7 +115,7 @@ def _speed_key(key):
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class HandlingResult(Display):
+class HandlingResult(Result):
     """The rider and bicycle at every speed.
 
     Attributes
@@ -143,23 +143,39 @@ class HandlingResult(Display):
         The HQM against frequency at each speed.
     lateral : str
         The lateral position the outer loop feeds back (``front-lateral``, or ``lateral``).
+
+    See Also
+    --------
+    bikemass.handling : Makes it.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> r = bm.handling(bm.parameters("benchmark"), [5.0])
+    >>> r.gain_source, r.levels, r.lateral
+    (('tuned',), (1,), 'front-lateral')
+    >>> r.units()["k_delta"], r.units()["hqm_peak_frequency"]
+    ('N m/rad', 'rad/s')
     """
 
-    speeds: np.ndarray
-    gains: tuple
-    gain_source: tuple
-    closed_loop_stable: np.ndarray
-    max_real: np.ndarray
-    hqm_peak: np.ndarray
-    hqm_peak_frequency: np.ndarray
-    hqm_frequencies: np.ndarray
-    hqm: np.ndarray
-    lateral: str | None
+    speeds: np.ndarray = quantity("m/s", "forward speeds")
+    gains: tuple = ()
+    gain_source: tuple = ()
+    closed_loop_stable: np.ndarray = quantity("", "whether every closed-loop eigenvalue has a negative real part "
+                                              "(bool)", default=None)
+    max_real: np.ndarray = quantity("1/s", "the largest closed-loop real part", default=None)
+    hqm_peak: np.ndarray = quantity("1", "the HQM's peak (dimensionless)", default=None)
+    hqm_peak_frequency: np.ndarray = quantity("rad/s", "where the HQM peaks", default=None)
+    hqm_frequencies: np.ndarray = quantity("rad/s", "the frequencies of hqm", default=None)
+    hqm: np.ndarray = quantity("1", "(n, k) the HQM against frequency at each speed", default=None)
+    lateral: str | None = None
 
     def __post_init__(self):
         for name in ("speeds", "closed_loop_stable", "max_real", "hqm_peak", "hqm_peak_frequency",
                      "hqm_frequencies", "hqm"):
             object.__setattr__(self, name, readonly(getattr(self, name)))
+        object.__setattr__(self, "gains", tuple(self.gains))
+        object.__setattr__(self, "gain_source", tuple(self.gain_source))
 
     @property
     def graded(self):
@@ -188,11 +204,14 @@ class HandlingResult(Display):
                    "closed_loop_stable": self.closed_loop_stable, "max_real": self.max_real,
                    "hqm_peak": self.hqm_peak, "hqm_peak_frequency": self.hqm_peak_frequency,
                    "level": list(self.levels)}
-        units = {"speed": "m/s", **UNITS, "max_real": "1/s", "hqm_peak": "1", "hqm_peak_frequency": "rad/s"}
+        declared = self.field_units()
+        units = {"speed": declared["speeds"], **UNITS, **{k: declared[k] for k in ("max_real", "hqm_peak",
+                                                                                   "hqm_peak_frequency")}}
         attrs = {"lateral_feedback": self.lateral}
         hqm = {"frequency": self.hqm_frequencies, **{f"{v:g}": row for v, row in zip(self.speeds, self.hqm)}}
         return {"speeds": Table(columns, units, attrs),
-                "hqm": Table(hqm, {"frequency": "rad/s", **{k: "1" for k in hqm if k != "frequency"}},
+                "hqm": Table(hqm, {"frequency": declared["hqm_frequencies"],
+                                   **{k: declared["hqm"] for k in hqm if k != "frequency"}},
                              {**attrs, "columns": "speeds in m/s"})}
 
     def to_dict(self):
@@ -209,10 +228,17 @@ class HandlingResult(Display):
                 "hqm_peak": listed(self.hqm_peak), "hqm_peak_frequency": listed(self.hqm_peak_frequency),
                 "level": list(self.levels), "lateral_feedback": self.lateral}
 
+    def units(self):
+        """The units block of :meth:`to_dict`: the fields' declared units (``max_real`` written as
+        ``closed_loop_max_real``) and each gain's as :class:`~bikemass.analysis.handling.gains.Gains`
+        declares it."""
+        declared = self.field_units()
+        return {"speeds": declared["speeds"], **UNITS, "closed_loop_max_real": declared["max_real"],
+                "hqm_peak": declared["hqm_peak"], "hqm_peak_frequency": declared["hqm_peak_frequency"]}
+
     def unit_block(self):
-        """The unit of each key of :meth:`to_dict` that holds a quantity."""
-        return {"speeds": "m/s", **UNITS, "closed_loop_max_real": "1/s", "hqm_peak": "1",
-                "hqm_peak_frequency": "rad/s"}
+        """:meth:`units` (its name before 0.3)."""
+        return self.units()
 
     def __repr__(self):
         v = self.speeds

@@ -30,7 +30,6 @@ from ...core.choices import closest
 from ...core.errors import BikemassWarning, InputError, short, wrong_type
 from ...core.frozen import short_repr
 from ...core.real import finite_real
-from ...core.tables import Table
 from .discrete import hold_matrices, sample_times
 from ..nonlinear.response import NonlinearResponse
 from ..sampled import SampledResponse, checked_inputs
@@ -95,25 +94,32 @@ class TimeResponse(SampledResponse):
         Forward speed (m/s).
     time : numpy.ndarray (n,)
         Samples ``0, dt, ..., T`` (s).
-    names, units : tuple of str
-        The states' names and units, in the model's order.
+    names, signal_units : tuple of str
+        The states' names and units, in the model's order (``units``, the name of ``signal_units``
+        before 0.3, still reads it with a DeprecationWarning; ``units()`` is the units block).
     values : numpy.ndarray (n, N)
         The states at the samples (their units); read-only.
     inputs : mapping
-        ``{input name: (kind, size)}`` that was applied (steps in N m, impulses in N m s).
+        ``{input name: Applied(kind, size)}`` that was applied (steps in N m, impulses in N m s).
+
+    See Also
+    --------
+    bikemass.simulate : Makes it.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> r = bm.simulate(bm.parameters("benchmark"), 4.6, initial={"roll-rate": 0.5}, duration=1.0)
+    >>> r.names[:2], r.signal_units[:2], r.values.shape
+    (('roll-angle', 'steer-angle'), ('rad', 'rad'), (101, 6))
+    >>> r.units()["time"], r.units()["roll-rate"]        # the units block of r.to_dict()
+    ('s', 'rad/s')
     """
 
     def to_dict(self):
         """Plain data: speed, time (s) and states (``{name: samples}`` in their units)."""
         return {"speed": self.speed, "time": self.time.tolist(),
                 "states": {name: self[name].tolist() for name in self.names}}
-
-    def tables(self):
-        """``{"states": Table}``: one row per sample, ``time`` (s) and every state in its unit. The
-        speed and the inputs applied are the frame's ``attrs``."""
-        columns = {"time": self.time, **{name: self[name] for name in self.names}}
-        attrs = {"speed": self.speed, "inputs": {k: tuple(v) for k, v in self.inputs.items()}}
-        return {"states": Table(columns, {"time": "s", **dict(zip(self.names, self.units))}, attrs)}
 
     def __repr__(self):
         return short_repr(self, *self._repr_fields())

@@ -20,7 +20,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 import scipy.linalg
 
-from ...core.display import Display
+from ...core.results import Result, quantity, quantity_in
 from ...core.frozen import readonly, short_repr
 from ...core.tables import Table
 from .plant import System, linear_model, signal_unit, siso
@@ -112,7 +112,7 @@ def gain_unit(output_unit, input_unit, relative_degree):
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class TransferFunction(Display):
+class TransferFunction(Result):
     """``G(s) = gain * prod(s - z) / prod(s - p)`` from one input to one output at one speed.
 
     Attributes
@@ -127,20 +127,35 @@ class TransferFunction(Display):
         In 1/s, sorted by real then imaginary part; read-only.
     gain : float
         The leading coefficient, in :attr:`gain_unit`.
+
+    See Also
+    --------
+    bikemass.transfer_function : Makes it.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> tf = bm.transfer_function(bm.parameters("benchmark"), 5.0, "steer-torque", "roll-angle")
+    >>> tf.relative_degree, tf.units()["gain"]
+    (2, 'rad/(N m s^2)')
+    >>> print(f"|G(2j)| = {abs(tf(2j)):.4f} {tf.output_unit}/({tf.input_unit})")
+    |G(2j)| = 0.2109 rad/(N m)
     """
 
     input: str
     output: str
     input_unit: str
     output_unit: str
-    speed: float
-    zeros: np.ndarray
-    poles: np.ndarray
-    gain: float
+    speed: float = quantity("m/s", "forward speed")
+    zeros: np.ndarray = quantity(ROOTS_UNIT, "the invariant zeros")
+    poles: np.ndarray = quantity(ROOTS_UNIT, "the poles")
+    gain: float = quantity_in("gain_unit", "the leading coefficient, in output_unit/(input_unit s^r)")
 
     def __post_init__(self):
         object.__setattr__(self, "zeros", readonly(self.zeros, complex))
         object.__setattr__(self, "poles", readonly(self.poles, complex))
+        object.__setattr__(self, "speed", float(self.speed))
+        object.__setattr__(self, "gain", float(self.gain))
 
     @property
     def relative_degree(self):
@@ -163,10 +178,6 @@ class TransferFunction(Display):
         """Plain data: input, output, speed, zeros and poles as ``[real, imaginary]`` pairs, gain."""
         return {"input": self.input, "output": self.output, "speed": self.speed,
                 "zeros": _pairs(self.zeros), "poles": _pairs(self.poles), "gain": self.gain}
-
-    def units(self):
-        """The unit of each key of :meth:`to_dict` that holds a quantity."""
-        return {"speed": "m/s", "zeros": ROOTS_UNIT, "poles": ROOTS_UNIT, "gain": self.gain_unit}
 
     def tables(self):
         """``{"roots": Table}``: one row per zero and pole: ``part`` (``zero``, ``pole``), ``real`` and

@@ -24,12 +24,13 @@ class NonlinearResponse(SampledResponse):
         Initial forward speed of the rear contact (m/s).
     time : numpy.ndarray (n,)
         Samples ``0, dt, ...`` (s): up to the duration, or to the last sample before the run stopped.
-    names, units : tuple of str
-        :data:`NAMES` and :data:`UNITS`.
+    names, signal_units : tuple of str
+        :data:`NAMES` and :data:`UNITS` (``units``, the name of ``signal_units`` before 0.3, still reads
+        it with a DeprecationWarning; ``units()`` is the units block).
     values : numpy.ndarray (n, 10)
         The outputs at the samples (their units); read-only.
     inputs : mapping
-        ``{input name: (kind, size)}`` applied (steps in N m, impulses in N m s).
+        ``{input name: Applied(kind, size)}`` applied (steps in N m, impulses in N m s).
     stopped : str
         Why the run stopped before the duration (one line), or ``""``.
 
