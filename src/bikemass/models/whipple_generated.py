@@ -1,0 +1,185 @@
+"""The Whipple bicycle's ``M, C1, K0, K2`` from the generated model family: the run-time path.
+
+The generated code of the model ``whipple`` (:func:`bikemass.models.family.generated`, written by
+``python -m bikemass.models.derive`` from Kane's method) gives the descriptor form
+``E x' = sum_k v**k A[k] x + ...`` with ``x = [q, q', ...]``; its second-order form (the rows of
+the rates ``q'``) is ``M = E[q', q']``, ``C_k = -A[k][q', q']`` and ``K_k = -A[k][q', q]``
+(:class:`~bikemass.models.linear.SecondOrder`), so the benchmark's matrices are ``C1 = C_1``,
+``g K0 = K_0`` and ``K2 = K_2``.  The code is evaluated at ``g = 1``: ``K_0`` is linear in ``g``
+and ``M``, ``C1``, ``K2`` do not depend on it, so that gives ``K0`` as Meijaard et al. (2007)
+print it (without ``g``), and ``g K0`` is formed as the hand-written matrices form it.
+
+Two things the generated code is not asked directly:
+
+* **point wheels** (radius 0, which the parameter checks allow only without spin inertia: the
+  two-mass-skate bicycle).  The generated code divides by the radii (a wheel's spin rate is
+  ``v / r``).  A point wheel with neither spin inertia nor mass drops out of the equations whatever
+  its radius, so the code is evaluated at a radius of 1 m; a point wheel with mass is a point mass
+  at its contact point, with ``Izz = Ixx`` and no spin: it turns with its frame as if fixed to it,
+  so its mass and inertia are first merged into the rear frame (B) or the front frame (H) by the
+  parallel-axis theorem, then it is a massless point wheel.
+* **one configuration in floats** (the scalar fast path of
+  :mod:`bikemass.analysis.engine.scalar`): the generated function is run with a ``zeros`` that
+  returns a dict, so that its assignments ``E[..., i, j] = ...`` store Python floats and no array is
+  made (about 3 us instead of 7 us for the arrays).  The same trick on arrays gives only the
+  entries a sweep needs, each of the shape of the varied parameters, without the
+  ``(B, 3, 6, 6)`` coefficient arrays.
+
+The hand-written :func:`~bikemass.models.canonical.canonical_entries` (Meijaard et al. 2007,
+Appendix A) is the test oracle of these functions (tests/test_whipple_generated.py: equal to a
+few units of rounding on the benchmark, the thesis's sets, random parameter sets and point wheels,
+and the complex step through both).
+"""
+
+import types
+from functools import lru_cache
+from operator import attrgetter, itemgetter
+
+import numpy as np
+
+from .canonical import CanonicalMatrices
+from .family import generated
+
+
+class _Entries(dict):
+    """What the generated code's ``np.zeros`` returns on this path: a dict of the assigned entries,
+    keyed as the code assigns them (``(Ellipsis, i, j)`` or ``(Ellipsis, k, i, j)``); 0.0 where the
+    code assigns nothing."""
+
+    def __missing__(self, key):
+        return 0.0
+
+
+def _zeros(shape, dtype):
+    return _Entries()
+
+
+_DICT_NUMPY = types.SimpleNamespace(zeros=_zeros)
+
+
+@lru_cache(maxsize=None)
+def _code():
+    """``(floats, arrays, layout, read_E, read_A)``: the generated coefficient function of ``whipple``
+    computing in Python floats (math's cos, sin) and in arrays (numpy's), each writing into dicts;
+    its arguments' layout (a getter of them from a parameter set, their names, the places of ``g``,
+    ``rR`` and ``rF``); readers of the entries of ``M`` (4) from its ``E`` and of ``C_1``, ``K_0``
+    and ``K_2`` (4 each) from its ``A``."""
+    code = generated("whipple")
+    scope = {**vars(code), "np": _DICT_NUMPY}
+
+    def rebound(f):
+        return types.FunctionType(f.__code__, scope, f.__name__, f.__defaults__, f.__closure__)
+
+    names = tuple(name for name, _, _ in code.PARAMETERS)
+    a, b = code.COORDINATES, code.COORDINATES + 1          # the rows of the rates of roll and steer
+    cells = ((a, a), (a, b), (b, a), (b, b))
+    read_E = itemgetter(*((Ellipsis, i, j) for i, j in cells))
+    read_A = itemgetter(*((Ellipsis, 1, i, j) for i, j in cells), *((Ellipsis, k, i, j - a) for k in (0, 2)
+                                                                     for i, j in cells))
+    where = tuple(names.index(name) for name in ("g", "rR", "rF"))
+    return rebound(code._floats), rebound(code._arrays), (attrgetter(*names), names, where), read_E, read_A
+
+
+def _arguments(p, layout):
+    """The generated code's arguments from the parameters ``p`` (any object with the 26 attributes):
+    ``g`` set to 1, point wheels as described in the module docstring; and whether every argument
+    is a Python float."""
+    getter, names, (g, rR, rF) = layout
+    args = list(getter(p))
+    args[g] = 1.0
+    plain = set(map(type, args)) == {float}
+    if plain and args[rR] and args[rF]:
+        return args, True
+    if plain or np.any(np.real(args[rR]) == 0) or np.any(np.real(args[rF]) == 0):
+        values = dict(zip(names, args))
+        for wheel, frame, at in (("R", "B", 0.0), ("F", "H", None)):
+            if np.any(np.real(values[f"r{wheel}"]) == 0):
+                _point_wheel(values, wheel, frame, at)
+        args = [values[name] for name in names]
+    return args, set(map(type, args)) == {float}
+
+
+def _point_wheel(values, wheel, frame, at):
+    """Make the point wheels (radius 0) among the rows of ``values`` massless and of radius 1 m, their
+    mass merged into ``frame`` at the wheel's contact point (x = 0 for the rear, ``w`` for the front;
+    ``at``: that x, or ``None`` for ``w``)."""
+    r, m, Ixx = values[f"r{wheel}"], values[f"m{wheel}"], values[f"I{wheel}xx"]
+    point = np.real(r) == 0
+    x0 = values["w"] if at is None else at
+    mb, xb, zb = values[f"m{frame}"], values[f"x{frame}"], values[f"z{frame}"]
+    with np.errstate(all="ignore"):
+        mass = mb + m
+        x = (mb * xb + m * x0) / mass
+        z = mb * zb / mass                               # the wheel's centre is on the ground
+        merged = {f"m{frame}": mass, f"x{frame}": x, f"z{frame}": z,
+                  f"I{frame}xx": values[f"I{frame}xx"] + Ixx + mb * (zb - z) ** 2 + m * z ** 2,
+                  f"I{frame}zz": values[f"I{frame}zz"] + Ixx + mb * (xb - x) ** 2 + m * (x0 - x) ** 2,
+                  f"I{frame}xz": values[f"I{frame}xz"] - mb * (xb - x) * (zb - z) + m * (x0 - x) * z,
+                  f"m{wheel}": 0 * m, f"I{wheel}xx": 0 * Ixx, f"r{wheel}": 1.0 + (r - np.real(r))}
+    if type(r) is float or np.ndim(point) == 0:
+        if point:
+            values.update(merged)
+        return
+    for key, value in merged.items():
+        values[key] = np.where(point, value, values[key])
+
+
+def second_order_entries(p):
+    """The entries of ``M, C1, K0, K2`` as nested ``((a, b), (c, d))`` rows, from the generated code:
+    the same contract as :func:`~bikemass.models.canonical.canonical_entries` (its oracle).
+
+    Parameters
+    ----------
+    p : BenchmarkParameters
+        Any object with the 26 attributes of :data:`~bikemass.models.parameters.NAMES` (SI): Python
+        floats (one configuration: Python floats out, no array made), arrays of one shape (B,) (a
+        sweep's chunk: entries of shape (B,), or floats where no varied parameter enters), complex
+        values (the complex step: complex entries).
+
+    Returns
+    -------
+    tuple
+        ``(M, C1, K0, K2)``: ``M`` in kg m^2, ``C1`` in kg m^2 (per m/s), ``K0`` in kg m (times g:
+        N m/rad), ``K2`` in kg (times v^2: N m/rad).
+
+    Examples
+    --------
+    >>> from bikemass.models.parameters import benchmark_parameters
+    >>> M, C1, K0, K2 = second_order_entries(benchmark_parameters())
+    >>> round(M[0][0], 10), round(K0[0][1], 10)      # Meijaard et al. (2007), Eq. A19-A20
+    (80.81722, -2.319807917)
+    """
+    floats, arrays, layout, read_E, read_A = _code()
+    args, plain = _arguments(p, layout)
+    E, A, _ = (floats if plain else arrays)((), float, *args)
+    m0, m1, m2, m3 = read_E(E)
+    c0, c1, c2, c3, k0, k1, k2, k3, s0, s1, s2, s3 = read_A(A)
+    M = ((m0, m1), (m2, m3))
+    C1 = ((-c0, -c1), (-c2, -c3))
+    K0 = ((-k0, -k1), (-k2, -k3))
+    K2 = ((-s0, -s1), (-s2, -s3))
+    return M, C1, K0, K2
+
+
+def whipple_matrices(p):
+    """:class:`~bikemass.models.canonical.CanonicalMatrices` (``M, C1, K0, K2`` and ``g``) of a parameter
+    set from the generated code (:func:`second_order_entries`); arrays of one shape (B,) give stacked
+    (B, 2, 2) matrices, complex values complex ones.
+
+    Examples
+    --------
+    >>> from bikemass.models.parameters import benchmark_parameters
+    >>> whipple_matrices(benchmark_parameters()).K2.round(8).tolist()
+    [[0.0, 76.59734589], [0.0, 2.65431524]]
+    """
+    M, C1, K0, K2 = second_order_entries(p)
+    return CanonicalMatrices(M=_matrix(M), C1=_matrix(C1), K0=_matrix(K0), K2=_matrix(K2), g=p.g)
+
+
+def _matrix(rows):
+    """A 2x2 matrix from entries that may be arrays of one shape (B,): shape (2, 2) or (B, 2, 2)."""
+    if all(type(x) is float for row in rows for x in row):
+        return np.array(rows)
+    entries = np.broadcast_arrays(*(np.asarray(x) for row in rows for x in row))
+    return np.stack(entries, axis=-1).reshape(*entries[0].shape, 2, 2)
+
