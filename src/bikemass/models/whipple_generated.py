@@ -38,7 +38,6 @@ from operator import attrgetter, itemgetter
 import numpy as np
 
 from .canonical import CanonicalMatrices
-from .family import generated
 
 
 class _Entries(dict):
@@ -64,6 +63,7 @@ def _code():
     its arguments' layout (a getter of them from a parameter set, their names, the places of ``g``,
     ``rR`` and ``rF``); readers of the entries of ``M`` (4) from its ``E`` and of ``C_1``, ``K_0``
     and ``K_2`` (4 each) from its ``A``."""
+    from .family import generated      # lazy: family imports signals, which imports whipple and so this module
     code = generated("whipple")
     scope = {**vars(code), "np": _DICT_NUMPY}
 
@@ -80,14 +80,18 @@ def _code():
     return rebound(code._floats), rebound(code._arrays), (attrgetter(*names), names, where), read_E, read_A
 
 
+_PLAIN = {float, int}
+"""The types of a configuration computed in Python numbers (ints: a parameter written ``0``)."""
+
+
 def _arguments(p, layout):
     """The generated code's arguments from the parameters ``p`` (any object with the 26 attributes):
     ``g`` set to 1, point wheels as described in the module docstring; and whether every argument
-    is a Python float."""
+    is a Python number."""
     getter, names, (g, rR, rF) = layout
     args = list(getter(p))
     args[g] = 1.0
-    plain = set(map(type, args)) == {float}
+    plain = set(map(type, args)) <= _PLAIN
     if plain and args[rR] and args[rF]:
         return args, True
     if plain or np.any(np.real(args[rR]) == 0) or np.any(np.real(args[rF]) == 0):
@@ -96,7 +100,7 @@ def _arguments(p, layout):
             if np.any(np.real(values[f"r{wheel}"]) == 0):
                 _point_wheel(values, wheel, frame, at)
         args = [values[name] for name in names]
-    return args, set(map(type, args)) == {float}
+    return args, set(map(type, args)) <= _PLAIN
 
 
 def _point_wheel(values, wheel, frame, at):
@@ -179,7 +183,10 @@ def whipple_matrices(p):
 def _matrix(rows):
     """A 2x2 matrix from entries that may be arrays of one shape (B,): shape (2, 2) or (B, 2, 2)."""
     if all(type(x) is float for row in rows for x in row):
-        return np.array(rows)
-    entries = np.broadcast_arrays(*(np.asarray(x) for row in rows for x in row))
-    return np.stack(entries, axis=-1).reshape(*entries[0].shape, 2, 2)
+        a = np.array(rows)
+    else:
+        entries = np.broadcast_arrays(*(np.asarray(x) for row in rows for x in row))
+        a = np.stack(entries, axis=-1).reshape(*entries[0].shape, 2, 2)
+    a.setflags(write=False)                     # a new array nobody else holds: read-only without a copy
+    return a
 

@@ -1,6 +1,6 @@
 """The closed form of :mod:`~bikemass.analysis.engine.closed_form` for one configuration, in plain
-Python floats: no array is made, no model is built (the parameters' canonical matrices go straight
-to the quartic's coefficients), so one configuration's critical speeds cost a few microseconds of
+Python floats: no array is made, no model is built (the parameters' matrices, from the generated
+model family's code in floats, go straight to the quartic's coefficients), so one configuration's critical speeds cost a few microseconds of
 arithmetic plus, when a mode is unstable from the lowest speed, one 4 x 4 eigenvalue problem.
 
 The formulas are closed_form's (see its docstring for the quartic and the two quadratics in
@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 
-from ...models.canonical import canonical_entries
+from ...models.whipple_generated import second_order_entries
 
 _NAN = float("nan")
 
@@ -52,7 +52,7 @@ def static_stiffness(G, S):
 def whipple_pieces(params, stiffness=None):
     """:func:`pieces` of the Whipple bicycle of a parameter set (floats), rigid or with the quasi-static
     rear-frame stiffness ``stiffness`` (2x2, N m/rad), without building its model."""
-    M, C1, K0, K2 = canonical_entries(params)
+    M, C1, K0, K2 = second_order_entries(params)
     g = params.g
     G = tuple(tuple(g * x for x in row) for row in K0)
     if stiffness is not None:
