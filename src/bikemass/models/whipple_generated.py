@@ -18,12 +18,13 @@ Two things the generated code is not asked directly:
   at its contact point, with ``Izz = Ixx`` and no spin: it turns with its frame as if fixed to it,
   so its mass and inertia are first merged into the rear frame (B) or the front frame (H) by the
   parallel-axis theorem, then it is a massless point wheel.
-* **one configuration in floats** (the scalar fast path of
-  :mod:`bikemass.analysis.engine.scalar`): the generated function is run with a ``zeros`` that
-  returns a dict, so that its assignments ``E[..., i, j] = ...`` store Python floats and no array is
-  made (about 3 us instead of 7 us for the arrays).  The same trick on arrays gives only the
-  entries a sweep needs, each of the shape of the varied parameters, without the
-  ``(B, 3, 6, 6)`` coefficient arrays.
+* **only the entries**: the generated function is cut down (its syntax tree, once) to the
+  assignments of the 16 entries of ``M, C1, K0, K2`` and the temporaries they use, returning
+  them; run on Python floats it makes no array (the scalar fast path of
+  :mod:`bikemass.analysis.engine.scalar`: about 2.5 us, against 7 us for the whole descriptor form),
+  on arrays (a sweep's chunk) it makes only the entries, each of the varied parameters' shape,
+  without the ``(B, 3, 6, 6)`` coefficient arrays.  The arithmetic is the generated code's, line
+  for line.
 
 The hand-written :func:`~bikemass.models.canonical.canonical_entries` (Meijaard et al. 2007,
 Appendix A) is the test oracle of these functions (tests/test_whipple_generated.py: equal to a
@@ -31,53 +32,77 @@ few units of rounding on the benchmark, the thesis's sets, random parameter sets
 and the complex step through both).
 """
 
-import types
+import ast
+import inspect
+import math
 from functools import lru_cache
-from operator import attrgetter, itemgetter
+from operator import attrgetter
 
 import numpy as np
 
 from .canonical import CanonicalMatrices
 
 
-class _Entries(dict):
-    """What the generated code's ``np.zeros`` returns on this path: a dict of the assigned entries,
-    keyed as the code assigns them (``(Ellipsis, i, j)`` or ``(Ellipsis, k, i, j)``); 0.0 where the
-    code assigns nothing."""
-
-    def __missing__(self, key):
-        return 0.0
-
-
-def _zeros(shape, dtype):
-    return _Entries()
-
-
-_DICT_NUMPY = types.SimpleNamespace(zeros=_zeros)
+def _entries_function(code):
+    """The source's ``coefficients`` function of the generated module ``code`` cut down to what the
+    second-order form needs: a function of the parameters (in ``code.PARAMETERS``' order) returning
+    the 16 entries ``M`` (4), ``C_1``, ``K_0``, ``K_2`` (4 each, rows first) as the generated code
+    computes them (``C_k = -A[k][q', q']``, ``K_k = -A[k][q', q]``; 0.0 where it assigns nothing),
+    with the temporaries only they use, no array made.  Returned as an ``ast.Module`` defining
+    ``entries`` to be compiled with ``cos`` and ``sin`` in scope (math's or numpy's)."""
+    tree = ast.parse(inspect.getsource(code))
+    make = next(node for node in tree.body if isinstance(node, ast.FunctionDef) and node.name == "_make")
+    inner = next(node for node in make.body if isinstance(node, ast.FunctionDef))
+    n = code.COORDINATES
+    rows = [(n + i, n + j) for i in range(2) for j in range(2)]
+    wanted = [("E", r) for r in rows] + [("A", (1, *r)) for r in rows] + \
+        [("A", (k, r[0], r[1] - n)) for k in (0, 2) for r in rows]
+    slot = {key: k for k, key in enumerate(wanted)}
+    outputs = [ast.Constant(0.0) for _ in wanted]
+    body = []
+    for node in inner.body:
+        if not isinstance(node, ast.Assign):
+            continue
+        (target,) = node.targets
+        if isinstance(target, ast.Name):
+            if target.id not in ("E", "A", "B"):
+                body.append(node)
+            continue
+        index = tuple(e.value for e in target.slice.elts[1:])               # E[..., i, j], A[..., k, i, j]
+        k = slot.get((target.value.id, index))
+        if k is not None:
+            name = f"_out{k}"
+            body.append(ast.Assign([ast.Name(name, ast.Store())], node.value))
+            value = ast.Name(name, ast.Load())
+            outputs[k] = value if target.value.id == "E" else ast.UnaryOp(ast.USub(), value)
+    needed = {x.id for out in outputs for x in ast.walk(out) if isinstance(x, ast.Name)}
+    kept = []
+    for node in reversed(body):                                  # only what the outputs use
+        if node.targets[0].id in needed:
+            kept.append(node)
+            needed |= {x.id for x in ast.walk(node.value) if isinstance(x, ast.Name)}
+    params = [ast.arg(a.arg) for a in inner.args.args[2:]]        # without (shape, dtype)
+    function = ast.FunctionDef("entries", ast.arguments([], params, None, [], [], None, []),
+                               [*reversed(kept), ast.Return(ast.Tuple(outputs, ast.Load()))], [])
+    return ast.fix_missing_locations(ast.Module([function], []))
 
 
 @lru_cache(maxsize=None)
 def _code():
-    """``(floats, arrays, layout, read_E, read_A)``: the generated coefficient function of ``whipple``
-    computing in Python floats (math's cos, sin) and in arrays (numpy's), each writing into dicts;
-    its arguments' layout (a getter of them from a parameter set, their names, the places of ``g``,
-    ``rR`` and ``rF``); readers of the entries of ``M`` (4) from its ``E`` and of ``C_1``, ``K_0``
-    and ``K_2`` (4 each) from its ``A``."""
+    """``(floats, arrays, layout)``: the generated code of ``whipple`` cut to the second-order entries
+    (:func:`_entries_function`), computing in Python floats (math's cos, sin) and in arrays (numpy's),
+    and its arguments' layout (a getter of them from a parameter set, their names, the places of
+    ``g``, ``rR`` and ``rF``)."""
     from .family import generated      # lazy: family imports signals, which imports whipple and so this module
     code = generated("whipple")
-    scope = {**vars(code), "np": _DICT_NUMPY}
-
-    def rebound(f):
-        return types.FunctionType(f.__code__, scope, f.__name__, f.__defaults__, f.__closure__)
-
+    compiled = compile(_entries_function(code), code.__file__, "exec")
+    functions = []
+    for scope in ({"cos": math.cos, "sin": math.sin}, {"cos": np.cos, "sin": np.sin}):
+        exec(compiled, scope)                      # our own generated code, cut down: no outside input
+        functions.append(scope["entries"])
     names = tuple(name for name, _, _ in code.PARAMETERS)
-    a, b = code.COORDINATES, code.COORDINATES + 1          # the rows of the rates of roll and steer
-    cells = ((a, a), (a, b), (b, a), (b, b))
-    read_E = itemgetter(*((Ellipsis, i, j) for i, j in cells))
-    read_A = itemgetter(*((Ellipsis, 1, i, j) for i, j in cells), *((Ellipsis, k, i, j - a) for k in (0, 2)
-                                                                     for i, j in cells))
     where = tuple(names.index(name) for name in ("g", "rR", "rF"))
-    return rebound(code._floats), rebound(code._arrays), (attrgetter(*names), names, where), read_E, read_A
+    return functions[0], functions[1], (attrgetter(*names), names, where)
 
 
 _PLAIN = {float, int}
@@ -153,15 +178,13 @@ def second_order_entries(p):
     >>> round(M[0][0], 10), round(K0[0][1], 10)      # Meijaard et al. (2007), Eq. A19-A20
     (80.81722, -2.319807917)
     """
-    floats, arrays, layout, read_E, read_A = _code()
+    floats, arrays, layout = _code()
     args, plain = _arguments(p, layout)
-    E, A, _ = (floats if plain else arrays)((), float, *args)
-    m0, m1, m2, m3 = read_E(E)
-    c0, c1, c2, c3, k0, k1, k2, k3, s0, s1, s2, s3 = read_A(A)
+    m0, m1, m2, m3, c0, c1, c2, c3, k0, k1, k2, k3, s0, s1, s2, s3 = (floats if plain else arrays)(*args)
     M = ((m0, m1), (m2, m3))
-    C1 = ((-c0, -c1), (-c2, -c3))
-    K0 = ((-k0, -k1), (-k2, -k3))
-    K2 = ((-s0, -s1), (-s2, -s3))
+    C1 = ((c0, c1), (c2, c3))
+    K0 = ((k0, k1), (k2, k3))
+    K2 = ((s0, s1), (s2, s3))
     return M, C1, K0, K2
 
 
