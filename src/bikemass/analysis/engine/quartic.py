@@ -48,22 +48,21 @@ def _ferrari(b, c, d, e):
 
 
 def _aberth(coeffs, z, sweeps):
-    """Polish all roots ``z`` (n, 4) of the polynomials ``coeffs`` (n, 5, highest first)."""
-    k = z.shape[1]
+    """Polish all roots ``z`` (n, 4) of the monic polynomials ``coeffs`` (n, 5, highest first, the first 1)."""
+    a = [c[:, None] for c in coeffs.T[1:]]
     for _ in range(sweeps):
-        p = np.zeros_like(z)
-        dp = np.zeros_like(z)
-        for a in coeffs.T:                      # Horner for p and p'
-            dp = dp * z + p
-            p = p * z + a[:, None]
-        repulsion = np.zeros_like(z)            # sum over j != i of 1 / (z_i - z_j)
+        p = z + a[0]                            # Horner for p and p' (monic: p = 1, p' = 0 to begin)
+        dp = p + z
+        p = p * z + a[1]
+        dp = dp * z + p
+        p = p * z + a[2]
+        dp = dp * z + p
+        p = p * z + a[3]
         with np.errstate(divide="ignore", invalid="ignore"):
-            for i in range(k):
-                for j in range(i + 1, k):
-                    d = z[:, i] - z[:, j]
-                    inv = np.where(d == 0, 0, 1 / d)
-                    repulsion[:, i] += inv
-                    repulsion[:, j] -= inv
+            d = z[:, :, None] - z[:, None, :]   # sum over j != i of 1 / (z_i - z_j): 0 where z_j = z_i
+            inv = 1 / d
+            inv[d == 0] = 0
+            repulsion = inv[:, :, 0] + inv[:, :, 1] + inv[:, :, 2] + inv[:, :, 3]
             w = p / dp
             step = w / (1 - w * repulsion)
         z = np.where(np.isfinite(step), z - step, z)
