@@ -11,11 +11,19 @@ import numpy as np
 _OMEGA = np.exp(2j * np.pi * np.arange(3) / 3)
 
 
+def _cube_root(w):
+    """The principal cube root of complex ``w`` (as ``w ** (1/3)``) from its modulus and argument:
+    numpy's complex power costs ten times as much."""
+    size = np.cbrt(np.abs(w))
+    angle = np.angle(w) / 3
+    return size * np.cos(angle) + 1j * (size * np.sin(angle))
+
+
 def _cubic_roots(p, q):
     """The three roots of ``t**3 + p t + q`` (complex, shape (n, 3))."""
-    d = np.sqrt(q * q / 4 + p ** 3 / 27 + 0j)
+    d = np.sqrt(q * q / 4 + p * p * p / 27 + 0j)
     d = np.where((np.conj(-q / 2) * d).real >= 0, d, -d)   # the larger of -q/2 +- d
-    c = (-q / 2 + d) ** (1 / 3)
+    c = _cube_root(-q / 2 + d)
     c = c[:, None] * _OMEGA
     with np.errstate(divide="ignore", invalid="ignore"):
         t = c - p[:, None] / (3 * c)
@@ -25,10 +33,11 @@ def _cubic_roots(p, q):
 def _ferrari(b, c, d, e):
     """Approximate roots of the monic quartic ``x^4 + b x^3 + c x^2 + d x + e`` (shape (n, 4))."""
     p = c - 3 * b * b / 8
-    q = d - b * c / 2 + b ** 3 / 8
-    r = e - b * d / 4 + b * b * c / 16 - 3 * b ** 4 / 256
+    b2 = b * b                                 # no ** on arrays: numpy's pow costs 50 times a product
+    q = d - b * c / 2 + b2 * b / 8
+    r = e - b * d / 4 + b2 * c / 16 - 3 * (b2 * b2) / 256
     # resolvent m^3 + p m^2 + (p^2/4 - r) m - q^2/8 = 0, shifted m = t - p/3
-    m = _cubic_roots(-p * p / 12 - r + 0j, -p ** 3 / 108 + p * r / 3 - q * q / 8 + 0j) - p[:, None] / 3
+    m = _cubic_roots(-p * p / 12 - r + 0j, -(p * p * p) / 108 + p * r / 3 - q * q / 8 + 0j) - p[:, None] / 3
     size = np.abs(m)                                            # a non-zero root if any: the largest
     if np.isnan(size).any():
         pick = np.argmax(size, axis=1)
@@ -48,21 +57,22 @@ def _ferrari(b, c, d, e):
 
 
 def _aberth(coeffs, z, sweeps):
-    """Polish all roots ``z`` (n, 4) of the monic polynomials ``coeffs`` (n, 5, highest first, the first 1)."""
-    a = [c[:, None] for c in coeffs.T[1:]]
+    """Polish all roots ``z`` (n, 4) of the polynomials ``coeffs`` (n, 5, highest first)."""
+    k = z.shape[1]
     for _ in range(sweeps):
-        p = z + a[0]                            # Horner for p and p' (monic: p = 1, p' = 0 to begin)
-        dp = p + z
-        p = p * z + a[1]
-        dp = dp * z + p
-        p = p * z + a[2]
-        dp = dp * z + p
-        p = p * z + a[3]
+        p = np.zeros_like(z)
+        dp = np.zeros_like(z)
+        for a in coeffs.T:                      # Horner for p and p'
+            dp = dp * z + p
+            p = p * z + a[:, None]
+        repulsion = np.zeros_like(z)            # sum over j != i of 1 / (z_i - z_j)
         with np.errstate(divide="ignore", invalid="ignore"):
-            d = z[:, :, None] - z[:, None, :]   # sum over j != i of 1 / (z_i - z_j): 0 where z_j = z_i
-            inv = 1 / d
-            inv[d == 0] = 0
-            repulsion = inv[:, :, 0] + inv[:, :, 1] + inv[:, :, 2] + inv[:, :, 3]
+            for i in range(k):
+                for j in range(i + 1, k):
+                    d = z[:, i] - z[:, j]
+                    inv = np.where(d == 0, 0, 1 / d)
+                    repulsion[:, i] += inv
+                    repulsion[:, j] -= inv
             w = p / dp
             step = w / (1 - w * repulsion)
         z = np.where(np.isfinite(step), z - step, z)
