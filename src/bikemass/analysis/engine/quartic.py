@@ -56,23 +56,29 @@ def _ferrari(b, c, d, e):
     return np.stack(roots, axis=1) - b[:, None] / 4
 
 
+_FIRST, _SECOND = [0, 0, 0, 1, 1, 2], [1, 2, 3, 2, 3, 3]
+"""The six pairs ``(i, j)``, ``i < j``, of four roots, in the order the repulsion sums them."""
+
+
 def _aberth(coeffs, z, sweeps):
-    """Polish all roots ``z`` (n, 4) of the polynomials ``coeffs`` (n, 5, highest first)."""
-    k = z.shape[1]
+    """Polish all roots ``z`` (n, 4) of the monic polynomials ``coeffs`` (n, 5, highest first, the first 1)."""
+    a = [c[:, None] for c in coeffs.T[1:]]
     for _ in range(sweeps):
-        p = np.zeros_like(z)
-        dp = np.zeros_like(z)
-        for a in coeffs.T:                      # Horner for p and p'
-            dp = dp * z + p
-            p = p * z + a[:, None]
-        repulsion = np.zeros_like(z)            # sum over j != i of 1 / (z_i - z_j)
+        p = z + a[0]                            # Horner for p and p' (monic: p = 1, p' = 0 to begin)
+        dp = p + z
+        p = p * z + a[1]
+        dp = dp * z + p
+        p = p * z + a[2]
+        dp = dp * z + p
+        p = p * z + a[3]
         with np.errstate(divide="ignore", invalid="ignore"):
-            for i in range(k):
-                for j in range(i + 1, k):
-                    d = z[:, i] - z[:, j]
-                    inv = np.where(d == 0, 0, 1 / d)
-                    repulsion[:, i] += inv
-                    repulsion[:, j] -= inv
+            d = z[:, _FIRST] - z[:, _SECOND]    # the six pairs at once; 1 / (z_i - z_j), 0 where they coincide
+            inv = 1 / d
+            inv[d == 0] = 0
+            i01, i02, i03, i12, i13, i23 = inv.T
+            # sum over j != i of 1 / (z_i - z_j), each in the order of the pairs (0 1, 0 2, 0 3, 1 2, 1 3, 2 3)
+            repulsion = np.stack([(i01 + i02) + i03, (-i01 + i12) + i13, (-i02 - i12) + i23, (-i03 - i13) - i23],
+                                 axis=1)
             w = p / dp
             step = w / (1 - w * repulsion)
         z = np.where(np.isfinite(step), z - step, z)
