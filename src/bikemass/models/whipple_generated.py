@@ -153,6 +153,14 @@ def _point_wheel(values, wheel, frame, at):
         values[key] = np.where(point, value, values[key])
 
 
+def flat_entries(p):
+    """The 16 entries of :func:`second_order_entries` as one flat tuple, each matrix row by row:
+    ``M00 M01 M10 M11, C1.., K0.., K2..`` (the scalar fast path's form: no nesting to unpack)."""
+    floats, arrays, layout = _code()
+    args, plain = _arguments(p, layout)
+    return (floats if plain else arrays)(*args)
+
+
 def second_order_entries(p):
     """The entries of ``M, C1, K0, K2`` as nested ``((a, b), (c, d))`` rows, from the generated code:
     the same contract as :func:`~bikemass.models.canonical.canonical_entries` (its oracle).
