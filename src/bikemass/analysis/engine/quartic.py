@@ -20,24 +20,25 @@ def _cube_root(w):
 
 
 def _cubic_roots(p, q):
-    """The three roots of ``t**3 + p t + q`` (complex, shape (n, 3))."""
-    d = np.sqrt(q * q / 4 + p * p * p / 27 + 0j)
-    d = np.where((np.conj(-q / 2) * d).real >= 0, d, -d)   # the larger of -q/2 +- d
-    c = _cube_root(-q / 2 + d)
-    c = c[:, None] * _OMEGA
+    """The three roots of ``t**3 + p t + q`` (complex, shape (n, 3)) for real ``p``, ``q`` (n,)."""
+    half = -q / 2
+    d = np.sqrt(half * half + p * p * p / 27 + 0j)
+    d = np.where(half * d.real >= 0, d, -d)                 # the larger of -q/2 +- d
+    c = _cube_root(half + d)[:, None] * _OMEGA
     with np.errstate(divide="ignore", invalid="ignore"):
         t = c - p[:, None] / (3 * c)
     return np.where(c == 0, 0j, t)
 
 
 def _ferrari(b, c, d, e):
-    """Approximate roots of the monic quartic ``x^4 + b x^3 + c x^2 + d x + e`` (shape (n, 4))."""
-    p = c - 3 * b * b / 8
-    b2 = b * b                                 # no ** on arrays: numpy's pow costs 50 times a product
+    """Approximate roots of the monic quartic ``x^4 + b x^3 + c x^2 + d x + e`` (shape (n, 4)); the
+    resolvent's coefficients in real arithmetic, no ``**`` (numpy's pow costs 50 times a product)."""
+    b2 = b * b
+    p = c - 3 * b2 / 8
     q = d - b * c / 2 + b2 * b / 8
     r = e - b * d / 4 + b2 * c / 16 - 3 * (b2 * b2) / 256
     # resolvent m^3 + p m^2 + (p^2/4 - r) m - q^2/8 = 0, shifted m = t - p/3
-    m = _cubic_roots(-p * p / 12 - r + 0j, -(p * p * p) / 108 + p * r / 3 - q * q / 8 + 0j) - p[:, None] / 3
+    m = _cubic_roots(-p * p / 12 - r, -(p * p * p) / 108 + p * r / 3 - q * q / 8) - p[:, None] / 3
     size = np.abs(m)                                            # a non-zero root if any: the largest
     if np.isnan(size).any():
         pick = np.argmax(size, axis=1)
@@ -47,13 +48,16 @@ def _ferrari(b, c, d, e):
     s = np.sqrt(2 * m)
     with np.errstate(divide="ignore", invalid="ignore"):
         h = np.where(s == 0, 0, q / (2 * s))
-    # y^2 + s y + (p/2 + m - h) = 0  and  y^2 - s y + (p/2 + m + h) = 0
-    roots = []
-    for sign in (1, -1):
-        k = p / 2 + m - sign * h
-        disc = np.sqrt(s * s / 4 - k)
-        roots += [-sign * s / 2 + disc, -sign * s / 2 - disc]
-    return np.stack(roots, axis=1) - b[:, None] / 4
+    # y^2 + s y + (p/2 + m - h) = 0  and  y^2 - s y + (p/2 + m + h) = 0, then x = y - b/4
+    half, base, shift = s / 2, p / 2 + m, b / 4
+    square = half * half
+    out = np.empty(b.shape + (4,), dtype=complex)
+    for k, sign in enumerate((1, -1)):
+        disc = np.sqrt(square - (base - sign * h))
+        centre = -sign * half - shift
+        np.add(centre, disc, out=out[:, 2 * k])
+        np.subtract(centre, disc, out=out[:, 2 * k + 1])
+    return out
 
 
 _FIRST, _SECOND = [0, 0, 0, 1, 1, 2], [1, 2, 3, 2, 3, 3]
