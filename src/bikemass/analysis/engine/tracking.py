@@ -153,12 +153,14 @@ def _kept(values, vectors):
     full cost is below that for every root (by :data:`CERTAIN`), the row minima form the identity and
     nothing else is optimal (as :func:`assignments` would find on the full matrices)."""
     a, b = values[:-1], values[1:]
-    scale = _scale(a, b)
+    largest = np.maximum(_largest(np.abs(values)), 1.0)       # _scale(a, b), each speed's modulus taken once
+    scale = np.maximum(largest[1:], largest[:-1])
     lower = np.empty(a.shape + a.shape[-1:])                   # |b_j - a_i|, row by row: no (k, m, m)
     for i in range(a.shape[1]):                                  # complex temporary (see partners)
         np.abs(b - a[:, i, None], out=lower[:, i])
+    sign = np.sign(values.imag)
     lower = lower / scale[:, None, None] + \
-        HALF_PLANE_PENALTY * ((np.sign(a.imag)[:, :, None] * np.sign(b.imag)[:, None, :]) < 0)
+        HALF_PLANE_PENALTY * ((sign[:-1, :, None] * sign[1:, None, :]) < 0)
     own = 0                                                     # x_i^H y_i, (n - 1, m): state by state
     for r in range(vectors.shape[1]):
         own = own + vectors[:-1, r].conj() * vectors[1:, r]
