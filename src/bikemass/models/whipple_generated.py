@@ -93,8 +93,7 @@ def _code():
     (:func:`_entries_function`), computing in Python floats (math's cos, sin) and in arrays (numpy's),
     and its arguments' layout (a getter of them from a parameter set, their names, the places of
     ``g``, ``rR`` and ``rF``)."""
-    from .family import generated      # lazy: family imports signals, which imports whipple and so this module
-    code = generated("whipple")
+    from .generated import whipple as code      # lazy: its numpy code compiled only when first asked for
     compiled = compile(_entries_function(code), code.__file__, "exec")
     functions = []
     for scope in ({"cos": math.cos, "sin": math.sin}, {"cos": np.cos, "sin": np.sin}):
