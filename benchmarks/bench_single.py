@@ -7,6 +7,9 @@ Rows (median of the rounds, process CPU time, so that other processes' load coun
 
 * one Whipple configuration's exact critical speeds (``whipple_critical_speeds``: the scalar fast
   path, from the parameters) / one 4 x 4 ``numpy.linalg.eigvals`` (target <= 5);
+* its matrices ``M, C1, K0, K2`` in Python floats from the generated model family's code (the run-time
+  path, ``models.whipple_generated``) / from the hand-written closed form of Meijaard et al. (2007),
+  Appendix A (``models.canonical``, kept as the test oracle), no target;
 * ``bm.stability(p)`` (the whole analysis on the 601-speed grid; the marginal and per-mode ranges are
   made when first read) / BicycleParameters' ``Bicycle.eig`` at the same 601 speeds (target <= 0.1);
   and the same with those ranges read (``ranges["marginal"]``, ``mode_ranges``), no target;
@@ -134,6 +137,16 @@ def main(rounds=15):
     ours, floor = alternately(lambda: whipple_critical_speeds(p), lambda: np.linalg.eigvals(A4), rounds, 300, 300)
     rows.append(("one Whipple configuration's critical speeds", ours, "one 4x4 eigvals", floor, 5.0))
 
+    try:                                # the run-time path (issue 32): the generated family's code, in floats
+        from bikemass.models.canonical import canonical_entries
+        from bikemass.models.whipple_generated import second_order_entries
+    except ImportError:                 # before issue 32
+        pass
+    else:
+        ours, oracle = alternately(lambda: second_order_entries(p), lambda: canonical_entries(p), rounds, 1000, 1000)
+        rows.append(("Whipple M, C1, K0, K2 (generated code)", ours, "hand-written closed form (test oracle)", oracle,
+                     None))
+
     eig = bicycle_eig(p, speeds)
     ours, peer = alternately(lambda: bm.stability(p), eig, rounds, 4, 1)
     rows.append(("bm.stability(p), 601 speeds", ours, "BicycleParameters Bicycle.eig", peer, 0.1))
@@ -170,7 +183,8 @@ def main(rounds=15):
 
     for member in ("rider-lean", "tyre", "flexible"):
         built = bm.Scenario("jamis", "relaxed", "steel" if member == "flexible" else None, model=member).build()
-        ours, plain = alternately(lambda: bm.stability(built), plain_loop(built.model, speeds), max(3, rounds // 3),
+        ours, plain = alternately(lambda built=built: bm.stability(built), plain_loop(built.model, speeds),
+                                  max(3, rounds // 3),
                                   2, 2)
         rows.append((f"bm.stability, Jamis + Relaxed, {member}", ours, "601-speed eigvals + brentq loop", plain, 1.0))
 

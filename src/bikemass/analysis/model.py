@@ -1,7 +1,8 @@
 """Exact derivatives of the Whipple model's matrices by the complex step.
 
 Complex parameter values give a complex :class:`~bikemass.models.linear.LinearModel` (the one
-builder, :func:`~bikemass.models.whipple.whipple_model`), so ``f'(p) = Im f(p + i h) / h`` with
+builder, :func:`~bikemass.models.whipple.whipple_model`, whose matrices come from the generated model
+family's code, which takes complex values as they are), so ``f'(p) = Im f(p + i h) / h`` with
 ``h = 1e-30`` differentiates the matrices and the state matrix exactly to rounding: no
 subtraction, no finite-difference step.
 """

@@ -13,7 +13,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from ..models.parameters import BenchmarkParameters
-from ..models.canonical import CanonicalMatrices, canonical_matrices
+from ..models.canonical import CanonicalMatrices
 from ..models.flexible_static import with_frame_stiffness
 from ..models.plausibility import check_parameters
 from ..core.errors import wrong_type
@@ -33,6 +33,7 @@ from ..models.linear import LinearModel
 from ..models.members.spec import Source
 from ..models.registry import BASE, BY_NAME, by_keyword, model_of
 from ..models.whipple import whipple_model
+from ..models.whipple_generated import whipple_matrices
 from ..scenario.scenario import Built, Scenario
 from .engine.modes import Modes, follow_modes
 from .engine.stability import StabilityResult, analyse
@@ -87,7 +88,7 @@ def matrices(params: BenchmarkParameters | CanonicalMatrices,
     if isinstance(params, CanonicalMatrices):
         base = params
     elif isinstance(params, BenchmarkParameters):
-        base = canonical_matrices(check_parameters(params, "params"))
+        base = whipple_matrices(check_parameters(params, "params"))
     else:
         raise wrong_type("params", params, "params must be BenchmarkParameters (bm.parameters) or CanonicalMatrices")
     return with_frame_stiffness(base, _stiffness(stiffness))

@@ -1,5 +1,13 @@
 """Canonical matrices of the linearised Whipple bicycle (Meijaard et al. 2007, Appendix A).
 
+The hand-written formulas of the paper: the TEST ORACLE of the run-time path, which takes the
+matrices from the generated model family's code (:mod:`bikemass.models.whipple_generated`;
+tests/test_whipple_generated.py holds the two equal).  :class:`CanonicalMatrices` (the result type)
+is shared by both.  Run-time users of these formulas that remain: the complex-step batch of
+:mod:`bikemass.analysis.sensitivity` and the steady turn of :mod:`bikemass.analysis.nonlinear.turn`
+(outside this change; the same contract as
+:func:`~bikemass.models.whipple_generated.second_order_entries`, so each is a one-line switch).
+
 Equations of motion about the upright straight run at speed ``v`` (m/s)::
 
     M q'' + v C1 q' + (g K0 + v**2 K2) q = f,     q = [roll phi, steer delta] (rad)

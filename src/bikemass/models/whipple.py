@@ -18,13 +18,17 @@ the Hess, Moore & Hubbard 2012 rider feeds back, Moore 2012 section "Model Descr
 A flexible rear frame (Williams 2015, Eq. 3.27-3.30) replaces ``g K0`` by the static stiffness
 ``g K0 - (g K0)^T (g K0 + S)^-1 g K0`` of the frame's 2x2 stiffness ``S`` (N m/rad) in series with
 gravity; ``M``, ``C1`` and ``K2`` stay.
+
+The matrices come from the generated model family (:mod:`bikemass.models.whipple_generated`: the
+code ``python -m bikemass.models.derive`` writes from Kane's method), the one numerical path of
+every model; the hand-written closed form of :mod:`bikemass.models.canonical` is their test oracle.
 """
 
 import numpy as np
 
 from .flexible_static import static_stiffness
-from .canonical import canonical_matrices
 from .linear import Signal, second_order_model
+from .whipple_generated import whipple_matrices
 
 ROLL_ANGLE = Signal("roll-angle", "rad", "roll angle of the rear frame, positive to the right")
 STEER_ANGLE = Signal("steer-angle", "rad", "steer angle of the front frame, positive to the right")
@@ -62,7 +66,7 @@ def whipple_model(params, stiffness=None):
         inputs roll-torque, steer-torque; the further output front-lateral.  Named ``"whipple"``,
         or ``"whipple+flexible-static"`` with a stiffness.
     """
-    m = canonical_matrices(params)
+    m = whipple_matrices(params)
     gK0 = static_stiffness(params.g * m.K0, stiffness)      # params.g, not m.g: it may be complex
     cl = np.cos(params.lam)
     heading = [np.array([0, 0, 0, params.c * cl / params.w, 0, 0]),

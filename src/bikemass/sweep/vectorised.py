@@ -7,7 +7,7 @@ time: a parameter set, its checks, a :class:`~bikemass.models.linear.LinearModel
 configuration): the varied parameters as (B,) columns and the others as one float each, the checks
 of :func:`~bikemass.models.plausibility.check_parameters` as array tests
 (:func:`~bikemass.models.plausibility.refused_parameters`),
-:func:`~bikemass.models.canonical.canonical_matrices` stacked, the flexible frame's static stiffness
+:func:`~bikemass.models.whipple_generated.whipple_matrices` stacked (the generated family's code), the flexible frame's static stiffness
 ``g K0 - (g K0)^T (g K0 + S)^-1 g K0`` as stacked 2x2 solves, and
 :func:`~bikemass.analysis.engine.closed_form.batch_critical_speeds`.
 
@@ -26,9 +26,9 @@ import numpy as np
 
 from ..analysis.engine.closed_form import batch_critical_speeds, pieces
 from ..core.errors import InputError
-from ..models.canonical import canonical_matrices
 from ..models.parameters import NAMES
 from ..models.plausibility import refused_parameters
+from ..models.whipple_generated import whipple_matrices
 from ..scenario.inputs import STIFFNESS_KEY
 from .table import NUMBERS, Outcomes
 
@@ -85,7 +85,7 @@ def _speeds(columns, S, count, max_speed):
 
 
 def _finite_speeds(columns, S, count, max_speed):
-    m = canonical_matrices(SimpleNamespace(**columns))
+    m = whipple_matrices(SimpleNamespace(**columns))
     shape = (count, 2, 2)
     M, C1, K2 = (np.broadcast_to(x, shape) for x in (m.M, m.C1, m.K2))
     gK0 = np.broadcast_to(columns["g"], (count,))[:, None, None] * np.broadcast_to(m.K0, shape)

@@ -45,16 +45,15 @@ def characteristic_of(M, C, K):
 def quartic_vectors(M, C, K, s):
     """Unit state eigenvectors (..., 4, 4), column i for eigenvalue ``s[..., i]``, of stacked 2x2 ``M``
     (broadcast), ``C`` and ``K`` (..., 2, 2) with roots ``s`` (..., 4)."""
-    def entries(X):                               # (..., 2, 2) -> (..., 4, 1): 00, 01, 10, 11
-        X = np.asarray(X)
-        return X.reshape(X.shape[:-2] + (4, 1))
+    M, C, K = np.asarray(M), np.asarray(C), np.asarray(K)
 
-    # the four entries of M s^2 + C(v) s + K(v) at every root at once (each element as entry by entry)
-    z = s[..., None, :]
-    P = (z * entries(M) + entries(C)) * z + entries(K)
-    p00, p01, p10, p11 = P[..., 0, :], P[..., 1, :], P[..., 2, :], P[..., 3, :]
-    size = np.abs(P)
-    row1 = size[..., 0, :] + size[..., 1, :] >= size[..., 2, :] + size[..., 3, :]   # null vector from the larger row
+    def entry(i, j):                              # (..., 4): entry (i, j) of M s^2 + C(v) s + K(v) at every root
+        return (s * M[..., i, j, None] + C[..., i, j, None]) * s + K[..., i, j, None]
+
+    # entry by entry, each (..., 4): no (..., 4, 4) complex temporaries (on the default grid each would be
+    # over glibc's 128 kB mmap threshold: fresh pages from the kernel for every one)
+    p00, p01, p10, p11 = entry(0, 0), entry(0, 1), entry(1, 0), entry(1, 1)
+    row1 = np.abs(p00) + np.abs(p01) >= np.abs(p10) + np.abs(p11)   # null vector from the larger row
     phi = np.where(row1, -p01, p11)
     delta = np.where(row1, p00, -p10)
     zero = (phi == 0) & (delta == 0)

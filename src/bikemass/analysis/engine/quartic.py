@@ -11,24 +11,34 @@ import numpy as np
 _OMEGA = np.exp(2j * np.pi * np.arange(3) / 3)
 
 
+def _cube_root(w):
+    """The principal cube root of complex ``w`` (as ``w ** (1/3)``) from its modulus and argument:
+    numpy's complex power costs ten times as much."""
+    size = np.cbrt(np.abs(w))
+    angle = np.angle(w) / 3
+    return size * np.cos(angle) + 1j * (size * np.sin(angle))
+
+
 def _cubic_roots(p, q):
-    """The three roots of ``t**3 + p t + q`` (complex, shape (n, 3))."""
-    d = np.sqrt(q * q / 4 + p ** 3 / 27 + 0j)
-    d = np.where((np.conj(-q / 2) * d).real >= 0, d, -d)   # the larger of -q/2 +- d
-    c = (-q / 2 + d) ** (1 / 3)
-    c = c[:, None] * _OMEGA
+    """The three roots of ``t**3 + p t + q`` (complex, shape (n, 3)) for real ``p``, ``q`` (n,)."""
+    half = -q / 2
+    d = np.sqrt(half * half + p * p * p / 27 + 0j)
+    d = np.where(half * d.real >= 0, d, -d)                 # the larger of -q/2 +- d
+    c = _cube_root(half + d)[:, None] * _OMEGA
     with np.errstate(divide="ignore", invalid="ignore"):
         t = c - p[:, None] / (3 * c)
     return np.where(c == 0, 0j, t)
 
 
 def _ferrari(b, c, d, e):
-    """Approximate roots of the monic quartic ``x^4 + b x^3 + c x^2 + d x + e`` (shape (n, 4))."""
-    p = c - 3 * b * b / 8
-    q = d - b * c / 2 + b ** 3 / 8
-    r = e - b * d / 4 + b * b * c / 16 - 3 * b ** 4 / 256
+    """Approximate roots of the monic quartic ``x^4 + b x^3 + c x^2 + d x + e`` (shape (n, 4)); the
+    resolvent's coefficients in real arithmetic, no ``**`` (numpy's pow costs 50 times a product)."""
+    b2 = b * b
+    p = c - 3 * b2 / 8
+    q = d - b * c / 2 + b2 * b / 8
+    r = e - b * d / 4 + b2 * c / 16 - 3 * (b2 * b2) / 256
     # resolvent m^3 + p m^2 + (p^2/4 - r) m - q^2/8 = 0, shifted m = t - p/3
-    m = _cubic_roots(-p * p / 12 - r + 0j, -p ** 3 / 108 + p * r / 3 - q * q / 8 + 0j) - p[:, None] / 3
+    m = _cubic_roots(-p * p / 12 - r, -(p * p * p) / 108 + p * r / 3 - q * q / 8) - p[:, None] / 3
     size = np.abs(m)                                            # a non-zero root if any: the largest
     if np.isnan(size).any():
         pick = np.argmax(size, axis=1)
@@ -38,32 +48,41 @@ def _ferrari(b, c, d, e):
     s = np.sqrt(2 * m)
     with np.errstate(divide="ignore", invalid="ignore"):
         h = np.where(s == 0, 0, q / (2 * s))
-    # y^2 + s y + (p/2 + m - h) = 0  and  y^2 - s y + (p/2 + m + h) = 0
-    roots = []
-    for sign in (1, -1):
-        k = p / 2 + m - sign * h
-        disc = np.sqrt(s * s / 4 - k)
-        roots += [-sign * s / 2 + disc, -sign * s / 2 - disc]
-    return np.stack(roots, axis=1) - b[:, None] / 4
+    # y^2 + s y + (p/2 + m - h) = 0  and  y^2 - s y + (p/2 + m + h) = 0, then x = y - b/4
+    half, base, shift = s / 2, p / 2 + m, b / 4
+    square = half * half
+    out = np.empty(b.shape + (4,), dtype=complex)
+    for k, sign in enumerate((1, -1)):
+        disc = np.sqrt(square - (base - sign * h))
+        centre = -sign * half - shift
+        np.add(centre, disc, out=out[:, 2 * k])
+        np.subtract(centre, disc, out=out[:, 2 * k + 1])
+    return out
+
+
+_FIRST, _SECOND = [0, 0, 0, 1, 1, 2], [1, 2, 3, 2, 3, 3]
+"""The six pairs ``(i, j)``, ``i < j``, of four roots, in the order the repulsion sums them."""
 
 
 def _aberth(coeffs, z, sweeps):
-    """Polish all roots ``z`` (n, 4) of the polynomials ``coeffs`` (n, 5, highest first)."""
-    k = z.shape[1]
+    """Polish all roots ``z`` (n, 4) of the monic polynomials ``coeffs`` (n, 5, highest first, the first 1)."""
+    a = [c[:, None] for c in coeffs.T[1:]]
     for _ in range(sweeps):
-        p = np.zeros_like(z)
-        dp = np.zeros_like(z)
-        for a in coeffs.T:                      # Horner for p and p'
-            dp = dp * z + p
-            p = p * z + a[:, None]
-        repulsion = np.zeros_like(z)            # sum over j != i of 1 / (z_i - z_j)
+        p = z + a[0]                            # Horner for p and p' (monic: p = 1, p' = 0 to begin)
+        dp = p + z
+        p = p * z + a[1]
+        dp = dp * z + p
+        p = p * z + a[2]
+        dp = dp * z + p
+        p = p * z + a[3]
         with np.errstate(divide="ignore", invalid="ignore"):
-            for i in range(k):
-                for j in range(i + 1, k):
-                    d = z[:, i] - z[:, j]
-                    inv = np.where(d == 0, 0, 1 / d)
-                    repulsion[:, i] += inv
-                    repulsion[:, j] -= inv
+            d = z[:, _FIRST] - z[:, _SECOND]    # the six pairs at once; 1 / (z_i - z_j), 0 where they coincide
+            inv = 1 / d
+            inv[d == 0] = 0
+            i01, i02, i03, i12, i13, i23 = inv.T
+            # sum over j != i of 1 / (z_i - z_j), each in the order of the pairs (0 1, 0 2, 0 3, 1 2, 1 3, 2 3)
+            repulsion = np.stack([(i01 + i02) + i03, (-i01 + i12) + i13, (-i02 - i12) + i23, (-i03 - i13) - i23],
+                                 axis=1)
             w = p / dp
             step = w / (1 - w * repulsion)
         z = np.where(np.isfinite(step), z - step, z)

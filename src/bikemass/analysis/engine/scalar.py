@@ -1,6 +1,6 @@
 """The closed form of :mod:`~bikemass.analysis.engine.closed_form` for one configuration, in plain
-Python floats: no array is made, no model is built (the parameters' canonical matrices go straight
-to the quartic's coefficients), so one configuration's critical speeds cost a few microseconds of
+Python floats: no array is made, no model is built (the parameters' matrices, from the generated
+model family's code in floats, go straight to the quartic's coefficients), so one configuration's critical speeds cost a few microseconds of
 arithmetic plus, when a mode is unstable from the lowest speed, one 4 x 4 eigenvalue problem.
 
 The formulas are closed_form's (see its docstring for the quartic and the two quadratics in
@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 
-from ...models.canonical import canonical_entries
+from ...models.whipple_generated import flat_entries
 
 _NAN = float("nan")
 
@@ -52,12 +52,22 @@ def static_stiffness(G, S):
 def whipple_pieces(params, stiffness=None):
     """:func:`pieces` of the Whipple bicycle of a parameter set (floats), rigid or with the quasi-static
     rear-frame stiffness ``stiffness`` (2x2, N m/rad), without building its model."""
-    M, C1, K0, K2 = canonical_entries(params)
+    m00, m01, m10, m11, c00, c01, c10, c11, k00, k01, k10, k11, s00, s01, s10, s11 = flat_entries(params)
     g = params.g
-    G = tuple(tuple(g * x for x in row) for row in K0)
+    g00, g01, g10, g11 = g * k00, g * k01, g * k10, g * k11
     if stiffness is not None:
-        G = static_stiffness(G, np.asarray(stiffness, dtype=float).tolist())
-    return pieces(M, C1, G, K2)
+        (g00, g01), (g10, g11) = static_stiffness(((g00, g01), (g10, g11)),
+                                                  np.asarray(stiffness, dtype=float).tolist())
+    # pieces(M, C1, G, K2) written out (the same products in the same order: _dot, _det)
+    return {"a4": m00 * m11 - m01 * m10,
+            "alpha": m00 * c11 + c00 * m11 - m01 * c10 - c01 * m10,
+            "a20": m00 * g11 + g00 * m11 - m01 * g10 - g01 * m10,
+            "a21": (m00 * s11 + s00 * m11 - m01 * s10 - s01 * m10) + (c00 * c11 - c01 * c10),
+            "beta": c00 * g11 + g00 * c11 - c01 * g10 - g01 * c10,
+            "gamma": c00 * s11 + s00 * c11 - c01 * s10 - s01 * c10,
+            "d0": g00 * g11 - g01 * g10,
+            "d1": g00 * s11 + s00 * g11 - g01 * s10 - s01 * g10,
+            "d2": s00 * s11 - s01 * s10}
 
 
 def quadratic_roots(a, b, c):

@@ -153,9 +153,14 @@ def _kept(values, vectors):
     full cost is below that for every root (by :data:`CERTAIN`), the row minima form the identity and
     nothing else is optimal (as :func:`assignments` would find on the full matrices)."""
     a, b = values[:-1], values[1:]
-    scale = _scale(a, b)
-    lower = np.abs(b[:, None, :] - a[:, :, None]) / scale[:, None, None] + \
-        HALF_PLANE_PENALTY * ((np.sign(a.imag)[:, :, None] * np.sign(b.imag)[:, None, :]) < 0)
+    largest = np.maximum(_largest(np.abs(values)), 1.0)       # _scale(a, b), each speed's modulus taken once
+    scale = np.maximum(largest[1:], largest[:-1])
+    lower = np.empty(a.shape + a.shape[-1:])                   # |b_j - a_i|, row by row: no (k, m, m)
+    for i in range(a.shape[1]):                                  # complex temporary (see partners)
+        np.abs(b - a[:, i, None], out=lower[:, i])
+    sign = np.sign(values.imag)
+    lower = lower / scale[:, None, None] + \
+        HALF_PLANE_PENALTY * ((sign[:-1, :, None] * sign[1:, None, :]) < 0)
     own = 0                                                     # x_i^H y_i, (n - 1, m): state by state
     for r in range(vectors.shape[1]):
         own = own + vectors[:-1, r].conj() * vectors[1:, r]
@@ -237,9 +242,12 @@ def reorder(values, vectors, order):
 
 def partners(values):
     """Index (n, m) of each root's complex-conjugate partner; a real root is its own partner."""
-    d = values[:, :, None] - values[:, None, :].conj()
-    d = d.real * d.real + d.imag * d.imag                 # squared distances: the same nearest
     m = values.shape[1]
+    d = np.empty(values.shape + (m,))                     # squared distances: the same nearest
+    image = values.conj()
+    for i in range(m):                                    # row by row: no (n, m, m) complex temporary, which
+        x = values[:, i, None] - image                    # on the default grid would be over glibc's 128 kB
+        np.add(x.real * x.real, x.imag * x.imag, out=d[:, i])     # mmap threshold (fresh kernel pages)
     d[:, np.arange(m), np.arange(m)] = np.inf
     nearest = np.argmin(d, axis=2) if np.isnan(d).any() else _first_least(d)
     return np.where(values.imag == 0, np.arange(m), nearest)
