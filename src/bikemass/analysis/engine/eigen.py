@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .quartic import quartic_roots
+from .tracking import assignments, track
 
 
 def _det2_poly(a, b, c):
@@ -104,3 +105,124 @@ def damping_ratio(eigenvalues):
     mag = np.abs(eigenvalues)
     with np.errstate(divide="ignore", invalid="ignore"):
         return np.where(mag > 0, -eigenvalues.real / mag, np.nan)
+
+
+CERTAIN_MOVE = 0.25
+"""A step between neighbouring speeds keeps every root on its nearest successor, without eigenvectors,
+when every root moves by less than this fraction of its distance to the nearest other root at either
+speed."""
+
+
+def _plain_values(A):
+    """``numpy.linalg.eigvals`` of the stack ``A`` as complex, a real root with an imaginary part of +0."""
+    values = np.linalg.eigvals(A)
+    if values.dtype.kind != "c":
+        return values.astype(complex)
+    return np.where(values.imag == 0, values.real + 0j, values)
+
+
+def nearest_steps(values, at=None):
+    """``(steps, certain)``: each root's nearest successor at the next speed (n - 1, m) and whether that
+    step is certain (n - 1,): the nearest successors are distinct and every root moves by less than
+    :data:`CERTAIN_MOVE` of its distance to the nearest other root, at either speed.  ``at`` (k,) asks
+    for those steps alone (rows ``at`` to ``at + 1``)."""
+    n, m = values.shape
+    k = np.arange(n - 1) if at is None else np.asarray(at, dtype=int)
+    if not len(k):
+        return np.zeros((0, m), dtype=int), np.zeros(0, dtype=bool)
+    re, im = values.real, values.imag
+    # squared distances (the same nearest, no square roots): row i at speed k -> column j at speed k + 1
+    d = (re[k + 1][:, None, :] - re[k][:, :, None]) ** 2 + (im[k + 1][:, None, :] - im[k][:, :, None]) ** 2
+    steps = np.argmin(d, axis=2)
+    move = np.take_along_axis(d, steps[:, :, None], axis=2)[..., 0]
+    rows = np.unique(np.concatenate([k, k + 1]))
+    apart = (re[rows][:, :, None] - re[rows][:, None, :]) ** 2 + (im[rows][:, :, None] - im[rows][:, None, :]) ** 2
+    apart[:, np.arange(m), np.arange(m)] = np.inf
+    sep = np.empty((n, m))
+    sep[rows] = apart.min(axis=2)                                    # each root's nearest other root
+    room = np.minimum(sep[k], np.take_along_axis(sep[k + 1], steps, axis=1))
+    distinct = (np.sort(steps, axis=1) == np.arange(m)).all(axis=1)
+    certain = distinct & (move < CERTAIN_MOVE ** 2 * room).all(axis=1)
+    return steps, certain
+
+
+@dataclass(frozen=True, eq=False)
+class TrackedSweep:
+    """Eigenvalues (n, m) at speeds (n,) in LAPACK's column order, the tracked order (n, m) (as
+    :func:`~bikemass.analysis.engine.tracking.track` gives it), and the unit eigenvectors (r, N, m) at
+    the rows ``rows`` (r,) where they were needed (columns as ``values``)."""
+
+    speeds: np.ndarray
+    values: np.ndarray
+    order: np.ndarray
+    rows: np.ndarray
+    vectors: np.ndarray
+
+    def vectors_at(self, row):
+        """Unit eigenvectors (N, m) at ``row`` (one of :attr:`rows`), columns as ``values[row]``."""
+        return self.vectors[int(np.searchsorted(self.rows, row))]
+
+
+def tracked_sweep(model, speeds, need=()):
+    """:class:`TrackedSweep` of ``model`` at ``speeds`` (m/s), with eigenvectors at the rows ``need``.
+
+    The same order as :func:`~bikemass.analysis.engine.tracking.track` on :func:`eigen_sweep`, at a
+    fraction of its cost: the eigenvalues at every speed (LAPACK without eigenvectors), each step where
+    the roots stay far apart for their motion (:func:`nearest_steps`: nearly all) taken as its nearest
+    successors, and only the other steps (roots that meet, cross or split) given eigenvectors at both
+    ends and assigned by :func:`~bikemass.analysis.engine.tracking.track`'s costs.  ``None`` where an
+    eigenvalue is not finite (the caller takes :func:`eigen_sweep`)."""
+    v = np.atleast_1d(np.asarray(speeds, dtype=float))
+    A = model.dynamic_matrix(v)
+    values = _plain_values(A)
+    if not np.all(np.isfinite(values)):
+        return None
+    n, m = values.shape
+    done = np.zeros(n, dtype=bool)
+    vectors = np.empty((n, A.shape[-1], m), dtype=complex)
+    steps, certain = nearest_steps(values)
+    todo = np.zeros(n, dtype=bool)
+    todo[np.asarray(need, dtype=int)] = True
+    while True:
+        hard = np.flatnonzero(~certain)
+        todo[hard], todo[hard + 1] = True, True
+        todo &= ~done
+        if not todo.any():
+            break
+        rows = np.flatnonzero(todo)
+        w, X = np.linalg.eig(A[rows])
+        if not (np.all(np.isfinite(w)) and np.all(np.isfinite(X))):
+            return None
+        values[rows] = np.where(w.imag == 0, w.real + 0j, w)       # LAPACK's roots with vectors, there
+        vectors[rows] = X
+        done[rows] = True
+        # the steps into and out of those rows again, on the roots that now stand there
+        again = np.unique(np.concatenate([rows - 1, rows]))
+        again = again[(again >= 0) & (again < n - 1)]
+        steps[again], certain[again] = nearest_steps(values, again)
+        todo[:] = False
+    rows = np.flatnonzero(done)
+    if len(hard):
+        sub = track(values[rows], vectors[rows])                 # consecutive rows: the hard steps
+        at = np.searchsorted(rows, hard)
+        for k, p in zip(hard, at):
+            steps[k][sub[p]] = sub[p + 1]
+    order = np.empty((n, m), dtype=int)
+    current, start = np.arange(m), 0
+    for k in np.flatnonzero((steps != np.arange(m)).any(axis=1)):
+        order[start:k + 1] = current
+        current, start = steps[k][current], k + 1
+    order[start:] = current
+    return TrackedSweep(v, values, order, rows, vectors[rows])
+
+
+def matched_vectors(model, speeds, values):
+    """Unit eigenvectors (n, N, m) of ``model`` at ``speeds`` (m/s) whose column ``c`` belongs to the
+    eigenvalue ``values[:, c]`` (the nearest of LAPACK's at each speed; each once)."""
+    w, X = np.linalg.eig(model.dynamic_matrix(np.asarray(speeds, dtype=float)))
+    d = np.abs(values[:, :, None] - w[:, None, :])                # our column c -> LAPACK's column j
+    pick = np.argmin(d, axis=2)
+    bad = np.flatnonzero(~(np.sort(pick, axis=1) == np.arange(values.shape[1])).all(axis=1))
+    if len(bad):
+        pick[bad] = assignments(d[bad])
+    return np.take_along_axis(X.astype(complex, copy=False), pick[:, None, :], axis=2)
