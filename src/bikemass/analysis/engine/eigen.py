@@ -146,6 +146,101 @@ def nearest_steps(values, at=None):
     return steps, certain
 
 
+FILL_EVERY = 4
+"""Eigenvalues of a long sweep are LAPACK's at every FILL_EVERY-th speed; between them each root is
+continued by Newton's method on the characteristic polynomial (:func:`filled_values`)."""
+FILL_ITERATIONS = 4
+"""Newton steps of the continuation (quadratic convergence from a guess a small fraction of the roots'
+distances away)."""
+FILL_TOL = 1e-12
+"""A continued root is accepted when its last Newton step is below FILL_TOL (1 + |root|) 1/s."""
+FILL_SPREAD = 1e6
+"""Largest ratio of the largest to the smallest root modulus at the LAPACK speeds for which roots are
+continued on the characteristic polynomial (wider: a very stiff tyre; LAPACK at every speed)."""
+
+
+def _poly_from_roots(roots):
+    """Real coefficients (k, m + 1), highest power first, of ``prod (s - r)`` for each row of ``roots``
+    (k, m) (complex roots in conjugate pairs)."""
+    k, m = roots.shape
+    c = np.zeros((k, m + 1), dtype=complex)
+    c[:, 0] = 1.0
+    for j in range(m):
+        c[:, 1:j + 2] = c[:, 1:j + 2] - roots[:, j:j + 1] * c[:, :j + 1]
+    return c.real
+
+
+def _lagrange_weights(x, t, width):
+    """``(windows (q, width) int, weights (q, width))``: for each point ``t`` (q,) the ``width`` nodes of
+    ``x`` (ascending) around it (as centred as the ends allow) and the Lagrange weights that give a
+    polynomial of degree below ``width`` at ``t`` from its values at those nodes (the barycentric
+    form: each window's weights once)."""
+    first = np.clip(np.searchsorted(x, t) - width // 2, 0, len(x) - width)
+    starts, which = np.unique(first, return_inverse=True)
+    xs = x[starts[:, None] + np.arange(width)]                        # (u, width) each window's nodes
+    diff = xs[:, :, None] - xs[:, None, :]
+    diff[:, np.arange(width), np.arange(width)] = 1.0
+    bary = 1.0 / np.prod(diff, axis=2)                                # (u, width)
+    gap = t[:, None] - xs[which]                                      # (q, width), never 0 (t is no node)
+    weights = np.prod(gap, axis=1)[:, None] * bary[which] / gap
+    return first[:, None] + np.arange(width), weights
+
+
+def filled_values(model, v, A):
+    """Eigenvalues (n, m) of the stacked dynamic matrices ``A`` (n, m, m) at speeds ``v`` (m/s), complex
+    (a real root with imaginary part +0), in no particular column order at each speed.
+
+    LAPACK's at every :data:`FILL_EVERY`-th speed (and the last); at the speeds between two of them
+    where every root stays far from the others (:func:`nearest_steps`), each root is continued from the
+    straight line between its values there by Newton's method on the characteristic polynomial
+    ``det(s I - A(v))``.  Its coefficients are polynomials in ``v`` (of degree at most ``d m``, ``A``
+    of degree ``d``), so they are interpolated exactly (to rounding) from their values at the LAPACK
+    speeds nearest ``v`` (those of the roots found there).  A speed where a root does not settle, or
+    the roots' sum misses the trace, takes LAPACK's roots."""
+    n, m = A.shape[0], A.shape[-1]
+    width = m * (len(model.dynamic_coefficients) - 1) + 1
+    nodes = np.unique(np.r_[np.arange(0, n, FILL_EVERY), n - 1])
+    if len(nodes) < width + 1 or n < 2 * FILL_EVERY:
+        return _plain_values(A)
+    at_nodes = _plain_values(A[nodes])
+    size = np.abs(at_nodes)
+    if not (np.all(np.isfinite(at_nodes)) and size.max() <= FILL_SPREAD * max(size.min(), 1e-300)):
+        return _plain_values(A)
+    values = np.empty((n, m), dtype=complex)
+    values[nodes] = at_nodes
+    steps, certain = nearest_steps(at_nodes)
+    between = np.ones(n, dtype=bool)
+    between[nodes] = False
+    cell = np.searchsorted(nodes, np.arange(n), side="right") - 1     # the LAPACK speeds around each speed
+    rows = np.flatnonzero(between & certain[np.minimum(cell, len(certain) - 1)])
+    rest = np.flatnonzero(between & ~certain[np.minimum(cell, len(certain) - 1)])
+    if len(rows):
+        cell = cell[rows]
+        a, b = nodes[cell], nodes[cell + 1]
+        t = ((v[rows] - v[a]) / (v[b] - v[a]))[:, None]
+        start, end = at_nodes[cell], np.take_along_axis(at_nodes[cell + 1], steps[cell], axis=1)
+        s = start + t * (end - start)                                 # (q, m) guesses
+        s = np.where(s.imag == 0, s.real + 0j, s)
+        windows, weights = _lagrange_weights(v[nodes], v[rows], width)
+        c = np.einsum("qw,qwj->qj", weights, _poly_from_roots(at_nodes)[windows])   # (q, m + 1)
+        c = c[:, None, :]
+        for _ in range(FILL_ITERATIONS):
+            p, dp = c[..., 0] + 0j, np.zeros(s.shape, dtype=complex)
+            for j in range(1, m + 1):                                 # Horner: p and p' at once
+                dp = dp * s + p
+                p = p * s + c[..., j]
+            step = p / dp
+            s = s - step
+        ok = np.all(np.abs(step) <= FILL_TOL * (1 + np.abs(s)), axis=1)
+        ok &= np.abs(s.sum(axis=1).real + c[:, 0, 1]) <= 1e-10 * (1 + np.abs(s).sum(axis=1))
+        ok &= np.all(np.isfinite(s), axis=1)
+        values[rows] = np.where(s.imag == 0, s.real + 0j, s)
+        rest = np.union1d(rest, rows[~ok])
+    if len(rest):
+        values[rest] = _plain_values(A[rest])
+    return values
+
+
 @dataclass(frozen=True, eq=False)
 class TrackedSweep:
     """Eigenvalues (n, m) at speeds (n,) in LAPACK's column order, the tracked order (n, m) (as
@@ -174,7 +269,7 @@ def tracked_sweep(model, speeds, need=()):
     eigenvalue is not finite (the caller takes :func:`eigen_sweep`)."""
     v = np.atleast_1d(np.asarray(speeds, dtype=float))
     A = model.dynamic_matrix(v)
-    values = _plain_values(A)
+    values = filled_values(model, v, A)
     if not np.all(np.isfinite(values)):
         return None
     n, m = values.shape
