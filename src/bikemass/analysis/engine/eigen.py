@@ -146,9 +146,12 @@ def nearest_steps(values, at=None):
     return steps, certain
 
 
-FILL_EVERY = 4
+FILL_EVERY = 8
 """Eigenvalues of a long sweep are LAPACK's at every FILL_EVERY-th speed; between them each root is
 continued by Newton's method on the characteristic polynomial (:func:`filled_values`)."""
+FILL_HALVINGS = 2
+"""A cell of LAPACK speeds where the roots come close for their motion is halved (LAPACK at its middle
+speed) up to this many times before LAPACK takes every speed in it."""
 FILL_ITERATIONS = 4
 """Newton steps of the continuation (quadratic convergence from a guess a small fraction of the roots'
 distances away)."""
@@ -196,19 +199,34 @@ def filled_values(model, v, A):
     ``det(s I - A(v))``.  Its coefficients are polynomials in ``v`` (of degree at most ``d m``, ``A``
     of degree ``d``), so they are interpolated exactly (to rounding) from their values at the LAPACK
     speeds nearest ``v`` (those of the roots found there).  A speed where a root does not settle, or
-    the roots' sum misses the trace, takes LAPACK's roots."""
+    the roots' sum misses the trace, takes LAPACK's roots.
+
+    Returns ``(values, candidates)``: ``candidates`` (n - 1, m) is, for each step whose two speeds'
+    roots were continued together, each root's successor (the same column inside a cell, the cell's
+    assignment onto the next LAPACK speed), and -1 in the other rows (to be found by
+    :func:`nearest_steps`); either is checked by :func:`checked_steps`."""
     n, m = A.shape[0], A.shape[-1]
+    candidates = np.full((max(n - 1, 0), m), -1)
     width = m * (len(model.dynamic_coefficients) - 1) + 1
     nodes = np.unique(np.r_[np.arange(0, n, FILL_EVERY), n - 1])
     if len(nodes) < width + 1 or n < 2 * FILL_EVERY:
-        return _plain_values(A)
+        return _plain_values(A), candidates
     at_nodes = _plain_values(A[nodes])
     size = np.abs(at_nodes)
     if not (np.all(np.isfinite(at_nodes)) and size.max() <= FILL_SPREAD * max(size.min(), 1e-300)):
-        return _plain_values(A)
+        return _plain_values(A), candidates
+    steps, certain = nearest_steps(at_nodes)
+    for _ in range(FILL_HALVINGS):            # a cell where roots come close: LAPACK at its middle too
+        wide = np.flatnonzero(~certain & (np.diff(nodes) > 2))
+        if not len(wide):
+            break
+        middle = (nodes[wide] + nodes[wide + 1]) // 2
+        merged = np.argsort(np.r_[nodes, middle], kind="stable")
+        nodes = np.r_[nodes, middle][merged]
+        at_nodes = np.concatenate([at_nodes, _plain_values(A[middle])])[merged]
+        steps, certain = nearest_steps(at_nodes)
     values = np.empty((n, m), dtype=complex)
     values[nodes] = at_nodes
-    steps, certain = nearest_steps(at_nodes)
     between = np.ones(n, dtype=bool)
     between[nodes] = False
     cell = np.searchsorted(nodes, np.arange(n), side="right") - 1     # the LAPACK speeds around each speed
@@ -236,9 +254,42 @@ def filled_values(model, v, A):
         ok &= np.all(np.isfinite(s), axis=1)
         values[rows] = np.where(s.imag == 0, s.real + 0j, s)
         rest = np.union1d(rest, rows[~ok])
+        filled = np.zeros(n, dtype=bool)
+        filled[rows[ok]] = True
+        node = ~between
+        candidates[filled[1:] & (filled[:-1] | node[:-1])] = np.arange(m)      # inside a cell: same column
+        last = np.flatnonzero(filled[:-1] & node[1:])                            # onto the cell's end
+        candidates[last] = steps[np.searchsorted(nodes, last, side="right") - 1]
     if len(rest):
         values[rest] = _plain_values(A[rest])
-    return values
+    return values, candidates
+
+
+def checked_steps(values, candidates):
+    """``(steps, certain)`` as :func:`nearest_steps` gives them, where ``candidates`` (n - 1, m) proposes
+    each root's successor (-1: none): a proposal is certain under the same test (every root moves by
+    less than :data:`CERTAIN_MOVE` of its distance to the nearest other root at either speed: then it
+    is also every root's nearest successor), without the distances to every other root's successor."""
+    n, m = values.shape
+    steps = np.array(candidates)
+    proposed = np.flatnonzero(steps[:, 0] >= 0)
+    certain = np.zeros(max(n - 1, 0), dtype=bool)
+    if len(proposed):
+        re, im = values.real, values.imag
+        rows = np.unique(np.concatenate([proposed, proposed + 1]))
+        apart = (re[rows][:, :, None] - re[rows][:, None, :]) ** 2 + (im[rows][:, :, None] - im[rows][:, None, :]) ** 2
+        apart[:, np.arange(m), np.arange(m)] = np.inf
+        sep = np.empty((n, m))
+        sep[rows] = apart.min(axis=2)
+        k, to = proposed, steps[proposed]
+        nxt = np.take_along_axis(values[k + 1], to, axis=1)
+        move = (nxt.real - re[k]) ** 2 + (nxt.imag - im[k]) ** 2
+        room = np.minimum(sep[k], np.take_along_axis(sep[k + 1], to, axis=1))
+        certain[k] = (move < CERTAIN_MOVE ** 2 * room).all(axis=1)
+    other = np.flatnonzero(~certain)
+    if len(other):
+        steps[other], certain[other] = nearest_steps(values, other)
+    return steps, certain
 
 
 @dataclass(frozen=True, eq=False)
@@ -269,13 +320,13 @@ def tracked_sweep(model, speeds, need=()):
     eigenvalue is not finite (the caller takes :func:`eigen_sweep`)."""
     v = np.atleast_1d(np.asarray(speeds, dtype=float))
     A = model.dynamic_matrix(v)
-    values = filled_values(model, v, A)
+    values, candidates = filled_values(model, v, A)
     if not np.all(np.isfinite(values)):
         return None
     n, m = values.shape
     done = np.zeros(n, dtype=bool)
     vectors = np.empty((n, A.shape[-1], m), dtype=complex)
-    steps, certain = nearest_steps(values)
+    steps, certain = checked_steps(values, candidates)
     todo = np.zeros(n, dtype=bool)
     todo[np.asarray(need, dtype=int)] = True
     while True:
