@@ -121,6 +121,17 @@ def _plain_values(A):
     return np.where(values.imag == 0, values.real + 0j, values)
 
 
+def _nearest_other(values):
+    """Squared distance (k, m) from each root of each row of ``values`` (k, m) to the nearest other root
+    of its row (``inf`` for a single root): one rotation of the columns at a time (numpy reduces a
+    short last axis slowly)."""
+    out = np.full(values.shape, np.inf)
+    for j in range(1, values.shape[1]):
+        d = values - np.roll(values, -j, axis=1)
+        np.minimum(out, d.real * d.real + d.imag * d.imag, out=out)
+    return out
+
+
 def nearest_steps(values, at=None):
     """``(steps, certain)``: each root's nearest successor at the next speed (n - 1, m) and whether that
     step is certain (n - 1,): the nearest successors are distinct and every root moves by less than
@@ -130,16 +141,19 @@ def nearest_steps(values, at=None):
     k = np.arange(n - 1) if at is None else np.asarray(at, dtype=int)
     if not len(k):
         return np.zeros((0, m), dtype=int), np.zeros(0, dtype=bool)
-    re, im = values.real, values.imag
-    # squared distances (the same nearest, no square roots): row i at speed k -> column j at speed k + 1
-    d = (re[k + 1][:, None, :] - re[k][:, :, None]) ** 2 + (im[k + 1][:, None, :] - im[k][:, :, None]) ** 2
-    steps = np.argmin(d, axis=2)
-    move = np.take_along_axis(d, steps[:, :, None], axis=2)[..., 0]
+    a, b = values[k], values[k + 1]
+    # squared distances (the same nearest, no square roots) from each root at speed k to root j at k + 1,
+    # one column j at a time (numpy reduces a short last axis slowly): the first nearest, as argmin
+    move, steps = np.full(a.shape, np.inf), np.zeros(a.shape, dtype=int)
+    for j in range(m):
+        d = a - b[:, j:j + 1]
+        d = d.real * d.real + d.imag * d.imag
+        nearer = d < move
+        move = np.where(nearer, d, move)
+        steps[nearer] = j
     rows = np.unique(np.concatenate([k, k + 1]))
-    apart = (re[rows][:, :, None] - re[rows][:, None, :]) ** 2 + (im[rows][:, :, None] - im[rows][:, None, :]) ** 2
-    apart[:, np.arange(m), np.arange(m)] = np.inf
     sep = np.empty((n, m))
-    sep[rows] = apart.min(axis=2)                                    # each root's nearest other root
+    sep[rows] = _nearest_other(values[rows])
     room = np.minimum(sep[k], np.take_along_axis(sep[k + 1], steps, axis=1))
     distinct = (np.sort(steps, axis=1) == np.arange(m)).all(axis=1)
     certain = distinct & (move < CERTAIN_MOVE ** 2 * room).all(axis=1)
@@ -222,9 +236,17 @@ def filled_values(model, v, A):
             break
         middle = (nodes[wide] + nodes[wide + 1]) // 2
         merged = np.argsort(np.r_[nodes, middle], kind="stable")
+        place = np.empty(len(merged), dtype=int)
+        place[merged] = np.arange(len(merged))
         nodes = np.r_[nodes, middle][merged]
         at_nodes = np.concatenate([at_nodes, _plain_values(A[middle])])[merged]
-        steps, certain = nearest_steps(at_nodes)
+        # the cells not halved keep their steps; the halves' are found
+        kept = np.setdiff1d(np.arange(len(steps)), wide)
+        halves = np.r_[place[wide], place[wide] + 1]
+        new_steps, new_certain = np.empty((len(nodes) - 1, m), dtype=int), np.empty(len(nodes) - 1, dtype=bool)
+        new_steps[place[kept]], new_certain[place[kept]] = steps[kept], certain[kept]
+        new_steps[halves], new_certain[halves] = nearest_steps(at_nodes, halves)
+        steps, certain = new_steps, new_certain
     values = np.empty((n, m), dtype=complex)
     values[nodes] = at_nodes
     between = np.ones(n, dtype=bool)
@@ -277,10 +299,8 @@ def checked_steps(values, candidates):
     if len(proposed):
         re, im = values.real, values.imag
         rows = np.unique(np.concatenate([proposed, proposed + 1]))
-        apart = (re[rows][:, :, None] - re[rows][:, None, :]) ** 2 + (im[rows][:, :, None] - im[rows][:, None, :]) ** 2
-        apart[:, np.arange(m), np.arange(m)] = np.inf
         sep = np.empty((n, m))
-        sep[rows] = apart.min(axis=2)
+        sep[rows] = _nearest_other(values[rows])
         k, to = proposed, steps[proposed]
         nxt = np.take_along_axis(values[k + 1], to, axis=1)
         move = (nxt.real - re[k]) ** 2 + (nxt.imag - im[k]) ** 2
