@@ -126,8 +126,9 @@ def _nearest_other(values):
     of its row (``inf`` for a single root): one rotation of the columns at a time (numpy reduces a
     short last axis slowly)."""
     out = np.full(values.shape, np.inf)
-    for j in range(1, values.shape[1]):
-        d = values - np.roll(values, -j, axis=1)
+    m = values.shape[1]
+    for j in range(1, m):
+        d = values - values[:, (np.arange(m) + j) % m]
         np.minimum(out, d.real * d.real + d.imag * d.imag, out=out)
     return out
 
