@@ -161,7 +161,7 @@ def nearest_steps(values, at=None):
     return steps, certain
 
 
-FILL_EVERY = 8
+FILL_EVERY = 12
 """Eigenvalues of a long sweep are LAPACK's at every FILL_EVERY-th speed; between them each root is
 continued by Newton's method on the characteristic polynomial (:func:`filled_values`)."""
 FILL_HALVINGS = 2
