@@ -90,6 +90,10 @@ class Eigenvalues:
         self.coefficients = self.pieces[0][2]
         self._cache = {}
         self._balanced = {}
+        # per piece, the largest absolute row sum of each coefficient: sum_k S_k |v|^k bounds A(v)'s, and
+        # below SEPARATION no state can be fast (separated_eigenvalues would take LAPACK's roots as they are)
+        self._row_sums = [[float(np.abs(Q).sum(axis=-1).max()) if Q.size else 0.0 for Q in P] if np.all(np.isfinite(P))
+                          else None for _, _, P in self.pieces]
 
     def balanced_piece(self, k):
         """:func:`balanced` of piece ``k``'s coefficients, made once."""
@@ -106,12 +110,17 @@ class Eigenvalues:
         v = float(v)
         out = self._cache.get(v)
         if out is None:
-            P = self.pieces[int(np.searchsorted(self._starts, v, side="right"))][2] if self._starts.size \
-                else self.coefficients
+            k = int(np.searchsorted(self._starts, v, side="right")) if self._starts.size else 0
+            P = self.pieces[k][2]
             A = P[-1]
             for Q in P[-2::-1]:                             # Horner in v
                 A = A * v + Q
-            out = self._cache[v] = separated_eigenvalues(A)
+            sums = self._row_sums[k]
+            if sums is not None and sum(x * abs(v) ** j for j, x in enumerate(sums)) < SEPARATION:
+                out = np.linalg.eigvals(A)                  # what separated_eigenvalues gives: no fast states
+            else:
+                out = separated_eigenvalues(A)
+            self._cache[v] = out
         return out
 
     def spans(self, lo, hi):

@@ -265,11 +265,14 @@ def filled_values(model, v, A):
         windows, weights = _lagrange_weights(v[nodes], v[rows], width)
         c = np.einsum("qw,qwj->qj", weights, _poly_from_roots(at_nodes)[windows])   # (q, m + 1)
         c = c[:, None, :]
+        p, dp = np.empty(s.shape, dtype=complex), np.empty(s.shape, dtype=complex)
         for _ in range(FILL_ITERATIONS):
-            p, dp = c[..., 0] + 0j, np.zeros(s.shape, dtype=complex)
-            for j in range(1, m + 1):                                 # Horner: p and p' at once
-                dp = dp * s + p
-                p = p * s + c[..., j]
+            p[...], dp[...] = c[..., 0], 0.0
+            for j in range(1, m + 1):                                 # Horner: p and p' at once, in place
+                dp *= s
+                dp += p
+                p *= s
+                p += c[..., j]
             step = p / dp
             s = s - step
         ok = np.all(np.abs(step) <= FILL_TOL * (1 + np.abs(s)), axis=1)
