@@ -216,20 +216,22 @@ def filled_values(model, v, A):
     speeds nearest ``v`` (those of the roots found there).  A speed where a root does not settle, or
     the roots' sum misses the trace, takes LAPACK's roots.
 
-    Returns ``(values, candidates)``: ``candidates`` (n - 1, m) is, for each step whose two speeds'
-    roots were continued together, each root's successor (the same column inside a cell, the cell's
-    assignment onto the next LAPACK speed), and -1 in the other rows (to be found by
-    :func:`nearest_steps`); either is checked by :func:`checked_steps`."""
+    Returns ``(values, candidates, proven)``: ``candidates`` (n - 1, m) is, for each step whose two
+    speeds' roots were continued together, each root's successor (the same column inside a cell, the
+    cell's assignment onto the next LAPACK speed), and -1 in the other rows (to be found by
+    :func:`nearest_steps`); ``proven`` (n - 1,) marks the steps whose candidates are certain by a
+    bound (:func:`_proven_cells`); :func:`checked_steps` checks the others."""
     n, m = A.shape[0], A.shape[-1]
     candidates = np.full((max(n - 1, 0), m), -1)
+    proven = np.zeros(max(n - 1, 0), dtype=bool)
     width = m * (len(model.dynamic_coefficients) - 1) + 1
     nodes = np.unique(np.r_[np.arange(0, n, FILL_EVERY), n - 1])
     if len(nodes) < width + 1 or n < 2 * FILL_EVERY:
-        return _plain_values(A), candidates
+        return _plain_values(A), candidates, proven
     at_nodes = _plain_values(A[nodes])
     size = np.abs(at_nodes)
     if not (np.all(np.isfinite(at_nodes)) and size.max() <= FILL_SPREAD * max(size.min(), 1e-300)):
-        return _plain_values(A), candidates
+        return _plain_values(A), candidates, proven
     steps, certain = nearest_steps(at_nodes)
     for _ in range(FILL_HALVINGS):            # a cell where roots come close: LAPACK at its middle too
         wide = np.flatnonzero(~certain & (np.diff(nodes) > 2))
@@ -261,7 +263,7 @@ def filled_values(model, v, A):
         t = ((v[rows] - v[a]) / (v[b] - v[a]))[:, None]
         start, end = at_nodes[cell], np.take_along_axis(at_nodes[cell + 1], steps[cell], axis=1)
         s = start + t * (end - start)                                 # (q, m) guesses
-        s = np.where(s.imag == 0, s.real + 0j, s)
+        s = guess = np.where(s.imag == 0, s.real + 0j, s)
         windows, weights = _lagrange_weights(v[nodes], v[rows], width)
         c = np.einsum("qw,qwj->qj", weights, _poly_from_roots(at_nodes)[windows])   # (q, m + 1)
         c = c[:, None, :]
@@ -286,20 +288,53 @@ def filled_values(model, v, A):
         candidates[filled[1:] & (filled[:-1] | node[:-1])] = np.arange(m)      # inside a cell: same column
         last = np.flatnonzero(filled[:-1] & node[1:])                            # onto the cell's end
         candidates[last] = steps[np.searchsorted(nodes, last, side="right") - 1]
+        proven = _proven_cells(v, nodes, at_nodes, steps, rows, cell, t[:, 0], ok, np.abs(s - guess), proven)
     if len(rest):
         values[rest] = _plain_values(A[rest])
-    return values, candidates
+    return values, candidates, proven
 
 
-def checked_steps(values, candidates):
+def _proven_cells(v, nodes, at_nodes, steps, rows, cell, t, ok, deviation, proven):
+    """``proven`` with every step of each cell of LAPACK speeds set whose continued roots are certain
+    steps of :func:`checked_steps` by a bound, without their distances.
+
+    In a cell whose ends are a certain step (every root moves by ``move_i < R_i / 4``, ``R_i`` its
+    distance to the nearest other root at either end), the straight lines between the roots' ends
+    stay at least ``R_i / 2`` apart; each continued root is at most ``delta`` (the cell's largest
+    distance from its line) off it, so at every speed of the cell the nearest other root is at
+    least ``R_i / 2 - 2 delta`` away, and a root moves by at most ``move_i dt + 2 delta`` per step
+    (``dt`` the cell's largest step as a fraction of it).  Where ``move_i dt + 2.5 delta < R_i / 8``
+    for every root, each step moves every root by less than a quarter of its distance to the
+    nearest other root: the test of :func:`checked_steps` holds."""
+    starts = np.flatnonzero(np.r_[True, cell[1:] != cell[:-1]])
+    which = cell[starts]
+    first = np.zeros(len(rows), dtype=bool)
+    first[starts] = True
+    before = np.where(first, 0.0, np.r_[0.0, t[:-1]])
+    ends = np.r_[starts[1:], len(rows)] - 1
+    dt = np.maximum(np.maximum.reduceat(t - before, starts), 1.0 - t[ends])
+    delta = np.maximum.reduceat(deviation.max(axis=1), starts)
+    settled = np.logical_and.reduceat(ok, starts)
+    sep = _nearest_other(at_nodes)
+    end = np.take_along_axis(at_nodes[which + 1], steps[which], axis=1)
+    move = np.abs(end - at_nodes[which])
+    room = np.sqrt(np.minimum(sep[which], np.take_along_axis(sep[which + 1], steps[which], axis=1)))
+    sure = settled & np.all(move * dt[:, None] + 2.5 * delta[:, None] < room / 8, axis=1)
+    for c in which[sure]:
+        proven[nodes[c]:nodes[c + 1]] = True
+    return proven
+
+
+def checked_steps(values, candidates, proven=None):
     """``(steps, certain)`` as :func:`nearest_steps` gives them, where ``candidates`` (n - 1, m) proposes
-    each root's successor (-1: none): a proposal is certain under the same test (every root moves by
+    each root's successor (-1: none) and ``proven`` marks proposals known to be certain: another is
+    certain under the same test (every root moves by
     less than :data:`CERTAIN_MOVE` of its distance to the nearest other root at either speed: then it
     is also every root's nearest successor), without the distances to every other root's successor."""
     n, m = values.shape
     steps = np.array(candidates)
-    proposed = np.flatnonzero(steps[:, 0] >= 0)
-    certain = np.zeros(max(n - 1, 0), dtype=bool)
+    certain = np.zeros(max(n - 1, 0), dtype=bool) if proven is None else np.array(proven)
+    proposed = np.flatnonzero((steps[:, 0] >= 0) & ~certain)
     if len(proposed):
         re, im = values.real, values.imag
         rows = np.unique(np.concatenate([proposed, proposed + 1]))
@@ -344,13 +379,13 @@ def tracked_sweep(model, speeds, need=()):
     eigenvalue is not finite (the caller takes :func:`eigen_sweep`)."""
     v = np.atleast_1d(np.asarray(speeds, dtype=float))
     A = model.dynamic_matrix(v)
-    values, candidates = filled_values(model, v, A)
+    values, candidates, proven = filled_values(model, v, A)
     if not np.all(np.isfinite(values)):
         return None
     n, m = values.shape
     done = np.zeros(n, dtype=bool)
     vectors = np.empty((n, A.shape[-1], m), dtype=complex)
-    steps, certain = checked_steps(values, candidates)
+    steps, certain = checked_steps(values, candidates, proven)
     todo = np.zeros(n, dtype=bool)
     todo[np.asarray(need, dtype=int)] = True
     while True:
