@@ -204,9 +204,22 @@ def _lagrange_weights(x, t, width):
     return first[:, None] + np.arange(width), weights
 
 
-def filled_values(model, v, A):
-    """Eigenvalues (n, m) of the stacked dynamic matrices ``A`` (n, m, m) at speeds ``v`` (m/s), complex
-    (a real root with imaginary part +0), in no particular column order at each speed.
+class _AtSpeeds:
+    """``model``'s dynamic matrices at the speeds ``v`` (m/s), made for the rows asked for
+    (``at[rows]``): a sweep that asks LAPACK about a sixth of its speeds builds no more of them."""
+
+    def __init__(self, model, v):
+        self.model, self.v = model, v
+        self.shape = (len(v), model.n_dynamic, model.n_dynamic)
+
+    def __getitem__(self, rows):
+        return self.model.dynamic_matrix(self.v[rows])
+
+
+def filled_values(model, v, A=None):
+    """Eigenvalues (n, m) of the stacked dynamic matrices ``A`` (n, m, m; default ``model``'s, made for
+    the speeds that need them) at speeds ``v`` (m/s), complex (a real root with imaginary part +0), in
+    no particular column order at each speed.
 
     LAPACK's at every :data:`FILL_EVERY`-th speed (and the last); at the speeds between two of them
     where every root stays far from the others (:func:`nearest_steps`), each root is continued from the
@@ -221,17 +234,18 @@ def filled_values(model, v, A):
     cell's assignment onto the next LAPACK speed), and -1 in the other rows (to be found by
     :func:`nearest_steps`); ``proven`` (n - 1,) marks the steps whose candidates are certain by a
     bound (:func:`_proven_cells`); :func:`checked_steps` checks the others."""
+    A = _AtSpeeds(model, v) if A is None else A
     n, m = A.shape[0], A.shape[-1]
     candidates = np.full((max(n - 1, 0), m), -1)
     proven = np.zeros(max(n - 1, 0), dtype=bool)
     width = m * (len(model.dynamic_coefficients) - 1) + 1
     nodes = np.unique(np.r_[np.arange(0, n, FILL_EVERY), n - 1])
     if len(nodes) < width + 1 or n < 2 * FILL_EVERY:
-        return _plain_values(A), candidates, proven
+        return _plain_values(A[:]), candidates, proven
     at_nodes = _plain_values(A[nodes])
     size = np.abs(at_nodes)
     if not (np.all(np.isfinite(at_nodes)) and size.max() <= FILL_SPREAD * max(size.min(), 1e-300)):
-        return _plain_values(A), candidates, proven
+        return _plain_values(A[:]), candidates, proven
     steps, certain = nearest_steps(at_nodes)
     for _ in range(FILL_HALVINGS):            # a cell where roots come close: LAPACK at its middle too
         wide = np.flatnonzero(~certain & (np.diff(nodes) > 2))
@@ -378,7 +392,7 @@ def tracked_sweep(model, speeds, need=()):
     ends and assigned by :func:`~bikemass.analysis.engine.tracking.track`'s costs.  ``None`` where an
     eigenvalue is not finite (the caller takes :func:`eigen_sweep`)."""
     v = np.atleast_1d(np.asarray(speeds, dtype=float))
-    A = model.dynamic_matrix(v)
+    A = _AtSpeeds(model, v)
     values, candidates, proven = filled_values(model, v, A)
     if not np.all(np.isfinite(values)):
         return None
