@@ -398,31 +398,19 @@ def tracked_sweep(model, speeds, need=()):
         return None
     n, m = values.shape
     done = np.zeros(n, dtype=bool)
-    vectors = np.empty((n, A.shape[-1], m), dtype=complex)
     steps, certain = checked_steps(values, candidates, proven)
-    todo = np.zeros(n, dtype=bool)
-    todo[np.asarray(need, dtype=int)] = True
-    while True:
-        hard = np.flatnonzero(~certain)
-        todo[hard], todo[hard + 1] = True, True
-        todo &= ~done
-        if not todo.any():
-            break
-        rows = np.flatnonzero(todo)
-        w, X = np.linalg.eig(A[rows])
-        if not (np.all(np.isfinite(w)) and np.all(np.isfinite(X))):
-            return None
-        values[rows] = np.where(w.imag == 0, w.real + 0j, w)       # LAPACK's roots with vectors, there
-        vectors[rows] = X
-        done[rows] = True
-        # the steps into and out of those rows again, on the roots that now stand there
-        again = np.unique(np.concatenate([rows - 1, rows]))
-        again = again[(again >= 0) & (again < n - 1)]
-        steps[again], certain[again] = nearest_steps(values, again)
-        todo[:] = False
+    hard = np.flatnonzero(~certain)
+    done[np.asarray(need, dtype=int)] = True
+    done[hard], done[hard + 1] = True, True
     rows = np.flatnonzero(done)
+    w, X = np.linalg.eig(A[rows])
+    if not (np.all(np.isfinite(w)) and np.all(np.isfinite(X))):
+        return None
+    # each eigenvector put in the column of its root (the roots found without vectors stay: the steps
+    # found on them hold)
+    vectors = np.take_along_axis(X.astype(complex, copy=False), _matched(values[rows], w)[:, None, :], axis=2)
     if len(hard):
-        sub = track(values[rows], vectors[rows])                 # consecutive rows: the hard steps
+        sub = track(values[rows], vectors)                       # consecutive rows: the hard steps
         at = np.searchsorted(rows, hard)
         for k, p in zip(hard, at):
             steps[k][sub[p]] = sub[p + 1]
@@ -432,16 +420,22 @@ def tracked_sweep(model, speeds, need=()):
         order[start:k + 1] = current
         current, start = steps[k][current], k + 1
     order[start:] = current
-    return TrackedSweep(v, values, order, rows, vectors[rows])
+    return TrackedSweep(v, values, order, rows, vectors)
 
 
 def matched_vectors(model, speeds, values):
     """Unit eigenvectors (n, N, m) of ``model`` at ``speeds`` (m/s) whose column ``c`` belongs to the
     eigenvalue ``values[:, c]`` (the nearest of LAPACK's at each speed; each once)."""
     w, X = np.linalg.eig(model.dynamic_matrix(np.asarray(speeds, dtype=float)))
+    return np.take_along_axis(X.astype(complex, copy=False), _matched(values, w)[:, None, :], axis=2)
+
+
+def _matched(values, w):
+    """``pick`` (k, m): for each row, the column of ``w`` (k, m) holding the root of each column of
+    ``values`` (the nearest, each once; the least total distance where nearest ones collide)."""
     d = np.abs(values[:, :, None] - w[:, None, :])                # our column c -> LAPACK's column j
     pick = np.argmin(d, axis=2)
     bad = np.flatnonzero(~(np.sort(pick, axis=1) == np.arange(values.shape[1])).all(axis=1))
     if len(bad):
         pick[bad] = assignments(d[bad])
-    return np.take_along_axis(X.astype(complex, copy=False), pick[:, None, :], axis=2)
+    return pick
