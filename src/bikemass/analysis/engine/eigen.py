@@ -121,12 +121,21 @@ def _plain_values(A):
     return np.where(values.imag == 0, values.real + 0j, values)
 
 
+SMALL = 8192
+"""Below this many distances (rows x roots x roots) they are computed at once; above, one column at a time."""
+
+
 def _nearest_other(values):
     """Squared distance (k, m) from each root of each row of ``values`` (k, m) to the nearest other root
     of its row (``inf`` for a single root): one rotation of the columns at a time (numpy reduces a
     short last axis slowly)."""
+    k, m = values.shape
+    if k * m * m <= SMALL:
+        d = values[:, :, None] - values[:, None, :]
+        d = d.real * d.real + d.imag * d.imag
+        d[:, np.arange(m), np.arange(m)] = np.inf
+        return d.min(axis=2)
     out = np.full(values.shape, np.inf)
-    m = values.shape[1]
     for j in range(1, m):
         d = values - values[:, (np.arange(m) + j) % m]
         np.minimum(out, d.real * d.real + d.imag * d.imag, out=out)
@@ -143,15 +152,21 @@ def nearest_steps(values, at=None):
     if not len(k):
         return np.zeros((0, m), dtype=int), np.zeros(0, dtype=bool)
     a, b = values[k], values[k + 1]
-    # squared distances (the same nearest, no square roots) from each root at speed k to root j at k + 1,
-    # one column j at a time (numpy reduces a short last axis slowly): the first nearest, as argmin
-    move, steps = np.full(a.shape, np.inf), np.zeros(a.shape, dtype=int)
-    for j in range(m):
-        d = a - b[:, j:j + 1]
+    # squared distances (the same nearest, no square roots) from each root at speed k to root j at k + 1:
+    # at once for a few steps, else one column j at a time (numpy reduces a short last axis slowly)
+    if len(k) * m * m <= SMALL:
+        d = b[:, None, :] - a[:, :, None]
         d = d.real * d.real + d.imag * d.imag
-        nearer = d < move
-        move = np.where(nearer, d, move)
-        steps[nearer] = j
+        steps = np.argmin(d, axis=2)
+        move = np.take_along_axis(d, steps[:, :, None], axis=2)[..., 0]
+    else:
+        move, steps = np.full(a.shape, np.inf), np.zeros(a.shape, dtype=int)
+        for j in range(m):
+            d = a - b[:, j:j + 1]
+            d = d.real * d.real + d.imag * d.imag
+            nearer = d < move
+            move = np.where(nearer, d, move)
+            steps[nearer] = j
     rows = np.unique(np.concatenate([k, k + 1]))
     sep = np.empty((n, m))
     sep[rows] = _nearest_other(values[rows])
@@ -334,9 +349,10 @@ def _proven_cells(v, nodes, at_nodes, steps, rows, cell, t, ok, deviation, prove
     move = np.abs(end - at_nodes[which])
     room = np.sqrt(np.minimum(sep[which], np.take_along_axis(sep[which + 1], steps[which], axis=1)))
     sure = settled & np.all(move * dt[:, None] + 2.5 * delta[:, None] < room / 8, axis=1)
-    for c in which[sure]:
-        proven[nodes[c]:nodes[c + 1]] = True
-    return proven
+    edges = np.zeros(len(proven) + 1)
+    np.add.at(edges, nodes[which[sure]], 1.0)
+    np.add.at(edges, nodes[which[sure] + 1], -1.0)
+    return proven | (np.cumsum(edges)[:-1] > 0)
 
 
 def checked_steps(values, candidates, proven=None):
