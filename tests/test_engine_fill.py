@@ -112,3 +112,15 @@ def test_lazy_eigenvectors_are_made_once_and_pickle_as_an_array():
     assert modes.eigenvectors is first and not first.flags.writeable
     back = pickle.loads(pickle.dumps(follow_modes(MODELS[0].values[0], SPEEDS)))
     np.testing.assert_array_equal(back.eigenvectors, first)
+
+
+def test_a_schedule_in_speed_takes_lapacks_roots_at_every_speed():
+    """A closed loop with gains scheduled in speed is a polynomial piecewise (its coefficients are not
+    one polynomial in v to interpolate): LAPACK's roots at every speed, exactly numpy's."""
+    model = bm.linear_model(bm.parameters("benchmark"), model="tyre",
+                            control={"steer-torque": {"roll-rate": {"speeds": [0, 1.5, 4.7], "gains": [0, 12.48, 0]}}})
+    A = model.dynamic_matrix(SPEEDS)
+    values, candidates, _ = filled_values(model, SPEEDS, A)
+    assert np.all(candidates == -1)
+    for k in range(0, len(SPEEDS), 25):
+        assert _same_roots(values[k], np.linalg.eigvals(A[k])) == 0.0

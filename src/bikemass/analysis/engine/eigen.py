@@ -237,6 +237,8 @@ def filled_values(model, v, A=None):
     no particular column order at each speed.
 
     LAPACK's at every :data:`FILL_EVERY`-th speed (and the last); at the speeds between two of them
+    (a model of one polynomial in speed: a closed loop with gains scheduled in speed takes LAPACK's
+    roots at every speed)
     where every root stays far from the others (:func:`nearest_steps`), each root is continued from the
     straight line between its values there by Newton's method on the characteristic polynomial
     ``det(s I - A(v))``.  Its coefficients are polynomials in ``v`` (of degree at most ``d m``, ``A``
@@ -253,9 +255,12 @@ def filled_values(model, v, A=None):
     n, m = A.shape[0], A.shape[-1]
     candidates = np.full((max(n - 1, 0), m), -1)
     proven = np.zeros(max(n - 1, 0), dtype=bool)
-    width = m * (len(model.dynamic_coefficients) - 1) + 1
+    pieces = model.speed_pieces
+    if len(pieces) != 1 or n < 2 * FILL_EVERY:     # gains scheduled in speed: A(v) is a polynomial piecewise
+        return _plain_values(A[:]), candidates, proven
+    width = m * (len(pieces[0][2].dynamic_coefficients) - 1) + 1
     nodes = np.unique(np.r_[np.arange(0, n, FILL_EVERY), n - 1])
-    if len(nodes) < width + 1 or n < 2 * FILL_EVERY:
+    if len(nodes) < width + 1:
         return _plain_values(A[:]), candidates, proven
     at_nodes = _plain_values(A[nodes])
     size = np.abs(at_nodes)
