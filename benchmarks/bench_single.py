@@ -1,7 +1,7 @@
 """One configuration, fast: each row times bikemass beside its peer or floor in this process,
 alternately (a shared machine's load hits both alike), and prints the ratio (issue 37).
 
-Run by hand:  python benchmarks/bench_single.py  [rounds, default 15]
+Run by hand:  python benchmarks/bench_single.py  [rounds, default 15]  [members: only the richer members' rows]
 
 Rows (median of the rounds, process CPU time, so that other processes' load counts less):
 
@@ -124,28 +124,45 @@ def peer_draws(p, speeds, draws):
     return run
 
 
-def main(rounds=15):
+def main(rounds=15, only=None):
     import os
     print(f"one configuration, median of {rounds} alternate rounds (process CPU time); load "
           f"{os.getloadavg()[0]:.1f} on {os.cpu_count()} cores")
-    p = bm.parameters("benchmark")
     speeds = speed_grid()
+    rows = []
+    if only != "members":
+        whipple_rows(rows, rounds, speeds)
+    member_rows(rows, rounds, speeds)
+
+    print(f"{'measure':45s} {'bikemass':>10s}  {'peer / floor':40s} {'':>10s} {'ratio':>8s}  target")
+    for name, a, peer_name, b, target in rows:
+        verdict = "" if target is None else f"<= {target:g} ({'met' if a / b <= target else 'MISSED'})"
+        print(f"{name:45s} {a * 1e3:8.3f}ms  {peer_name:40s} {b * 1e3:8.3f}ms {a / b:8.4f}  {verdict}")
+
+
+def member_rows(rows, rounds, speeds):
+    """The richer members' rows: ``bm.stability`` of a built scenario / the plain loop over its model."""
+    for member in ("rider-lean", "tyre", "flexible"):
+        built = bm.Scenario("jamis", "relaxed", "steel" if member == "flexible" else None, model=member).build()
+        ours, plain = alternately(lambda built=built: bm.stability(built), plain_loop(built.model, speeds),
+                                  max(3, rounds // 3), 2, 2)
+        rows.append((f"bm.stability, Jamis + Relaxed, {member}", ours, "601-speed eigvals + brentq loop", plain, 1.0))
+
+
+def whipple_rows(rows, rounds, speeds):
+    """The Whipple bicycle's rows (one configuration, sensitivity, simulation, Monte Carlo)."""
+    p = bm.parameters("benchmark")
     model = bm.linear_model(p)
     A4 = model.state_matrix(5.0)[:4, :4]
-    rows = []
 
     ours, floor = alternately(lambda: whipple_critical_speeds(p), lambda: np.linalg.eigvals(A4), rounds, 300, 300)
     rows.append(("one Whipple configuration's critical speeds", ours, "one 4x4 eigvals", floor, 5.0))
 
-    try:                                # the run-time path (issue 32): the generated family's code, in floats
-        from bikemass.models.canonical import canonical_entries
-        from bikemass.models.whipple_generated import second_order_entries
-    except ImportError:                 # before issue 32
-        pass
-    else:
-        ours, oracle = alternately(lambda: second_order_entries(p), lambda: canonical_entries(p), rounds, 1000, 1000)
-        rows.append(("Whipple M, C1, K0, K2 (generated code)", ours, "hand-written closed form (test oracle)", oracle,
-                     None))
+    from bikemass.models.canonical import canonical_entries
+    from bikemass.models.whipple_generated import second_order_entries
+    ours, oracle = alternately(lambda: second_order_entries(p), lambda: canonical_entries(p), rounds, 1000, 1000)
+    rows.append(("Whipple M, C1, K0, K2 (generated code)", ours, "hand-written closed form (test oracle)", oracle,
+                 None))
 
     eig = bicycle_eig(p, speeds)
     ours, peer = alternately(lambda: bm.stability(p), eig, rounds, 4, 1)
@@ -181,18 +198,6 @@ def main(rounds=15):
     rows.append(("Monte Carlo, 200 draws (bands on 101 speeds)", ours / draws, "BicycleParameters loop, per draw",
                  peer / draws, None))
 
-    for member in ("rider-lean", "tyre", "flexible"):
-        built = bm.Scenario("jamis", "relaxed", "steel" if member == "flexible" else None, model=member).build()
-        ours, plain = alternately(lambda built=built: bm.stability(built), plain_loop(built.model, speeds),
-                                  max(3, rounds // 3),
-                                  2, 2)
-        rows.append((f"bm.stability, Jamis + Relaxed, {member}", ours, "601-speed eigvals + brentq loop", plain, 1.0))
-
-    print(f"{'measure':45s} {'bikemass':>10s}  {'peer / floor':40s} {'':>10s} {'ratio':>8s}  target")
-    for name, a, peer_name, b, target in rows:
-        verdict = "" if target is None else f"<= {target:g} ({'met' if a / b <= target else 'MISSED'})"
-        print(f"{name:45s} {a * 1e3:8.3f}ms  {peer_name:40s} {b * 1e3:8.3f}ms {a / b:8.4f}  {verdict}")
-
 
 if __name__ == "__main__":
-    main(int(sys.argv[1]) if len(sys.argv) > 1 else 15)
+    main(int(sys.argv[1]) if len(sys.argv) > 1 else 15, sys.argv[2] if len(sys.argv) > 2 else None)

@@ -90,6 +90,10 @@ class Eigenvalues:
         self.coefficients = self.pieces[0][2]
         self._cache = {}
         self._balanced = {}
+        # per piece, the largest absolute row sum of each coefficient: sum_k S_k |v|^k bounds A(v)'s, and
+        # below SEPARATION no state can be fast (separated_eigenvalues would take LAPACK's roots as they are)
+        self._row_sums = [[float(np.abs(Q).sum(axis=-1).max()) if Q.size else 0.0 for Q in P] if np.all(np.isfinite(P))
+                          else None for _, _, P in self.pieces]
 
     def balanced_piece(self, k):
         """:func:`balanced` of piece ``k``'s coefficients, made once."""
@@ -106,12 +110,17 @@ class Eigenvalues:
         v = float(v)
         out = self._cache.get(v)
         if out is None:
-            P = self.pieces[int(np.searchsorted(self._starts, v, side="right"))][2] if self._starts.size \
-                else self.coefficients
+            k = int(np.searchsorted(self._starts, v, side="right")) if self._starts.size else 0
+            P = self.pieces[k][2]
             A = P[-1]
             for Q in P[-2::-1]:                             # Horner in v
                 A = A * v + Q
-            out = self._cache[v] = separated_eigenvalues(A)
+            sums = self._row_sums[k]
+            if sums is not None and sum(x * abs(v) ** j for j, x in enumerate(sums)) < SEPARATION:
+                out = np.linalg.eigvals(A)                  # what separated_eigenvalues gives: no fast states
+            else:
+                out = separated_eigenvalues(A)
+            self._cache[v] = out
         return out
 
     def spans(self, lo, hi):
@@ -220,9 +229,15 @@ def balance_scale(A):
     return scale
 
 
+FAR = 100.0
+"""A candidate whose root, at the slope of the smallest bracket, is over FAR times the largest bracket
+away from the axis cannot change sign in any bracket: the larger ones are not searched."""
+
+
 def _refine(f, v, lo, hi):
     """``v`` moved to the root of ``f`` in the smallest bracket of :data:`BRACKETS` around it where
-    ``f`` changes sign (``v`` itself where none does: a root that touches zero)."""
+    ``f`` changes sign (``v`` itself where none does: a root that touches zero, or a candidate whose
+    root stays far from the axis, :data:`FAR`)."""
     for h in BRACKETS:
         a, b = max(lo, v - h * (1 + v)), min(hi, v + h * (1 + v))
         fa, fb = f(a), f(b)
@@ -231,9 +246,39 @@ def _refine(f, v, lo, hi):
         if fb == 0:
             return b
         if np.sign(fa) != np.sign(fb):
-            from scipy.optimize import brentq      # lazy: only models beyond the closed form refine crossings
-            return brentq(f, a, b, xtol=XTOL, rtol=4 * np.finfo(float).eps)
+            return _bracketed(f, a, b, fa, fb)
+        if h == BRACKETS[0] and b > a and \
+                min(abs(fa), abs(fb)) > FAR * BRACKETS[-1] * (1 + v) * abs(fb - fa) / (b - a):
+            return v
     return v
+
+
+def _bracketed(f, a, b, fa, fb):
+    """The root of ``f`` in ``[a, b]`` (``fa``, ``fb`` of opposite signs) to :data:`XTOL`: regula falsi
+    with the Illinois weighting (on the small brackets of :func:`_refine` ``f`` is a straight line to
+    rounding, so two evaluations settle it), Brent's method if that has not settled in a few steps."""
+    side = 0
+    for _ in range(8):
+        x = b - fb * (b - a) / (fb - fa)
+        if not a <= x <= b:
+            break
+        fx = f(x)
+        if fx == 0 or min(x - a, b - x) <= XTOL:
+            return x
+        if np.sign(fx) == np.sign(fb):
+            b, fb = x, fx
+            if side == 1:
+                fa /= 2
+            side = 1
+        else:
+            a, fa = x, fx
+            if side == -1:
+                fb /= 2
+            side = -1
+        if b - a <= XTOL:
+            return b - fb * (b - a) / (fb - fa)
+    from scipy.optimize import brentq      # lazy: only models beyond the closed form refine crossings
+    return brentq(f, a, b, xtol=XTOL, rtol=4 * np.finfo(float).eps)
 
 
 def _real_crossing(at, v, lo, hi):

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .quartic import quartic_roots
+from .tracking import assignments, track
 
 
 def _det2_poly(a, b, c):
@@ -103,3 +104,358 @@ def damping_ratio(eigenvalues):
     mag = np.abs(eigenvalues)
     with np.errstate(divide="ignore", invalid="ignore"):
         return np.where(mag > 0, -eigenvalues.real / mag, np.nan)
+
+
+CERTAIN_MOVE = 0.25
+"""A step between neighbouring speeds keeps every root on its nearest successor, without eigenvectors,
+when every root moves by less than this fraction of its distance to the nearest other root at either
+speed."""
+
+
+def _plain_values(A):
+    """``numpy.linalg.eigvals`` of the stack ``A`` as complex, a real root with an imaginary part of +0."""
+    values = np.linalg.eigvals(A)
+    if values.dtype.kind != "c":
+        return values.astype(complex)
+    return np.where(values.imag == 0, values.real + 0j, values)
+
+
+SMALL = 8192
+"""Below this many distances (rows x roots x roots) they are computed at once; above, one column at a time."""
+
+
+def _nearest_other(values):
+    """Squared distance (k, m) from each root of each row of ``values`` (k, m) to the nearest other root
+    of its row (``inf`` for a single root): one rotation of the columns at a time (numpy reduces a
+    short last axis slowly)."""
+    k, m = values.shape
+    if k * m * m <= SMALL:
+        d = values[:, :, None] - values[:, None, :]
+        d = d.real * d.real + d.imag * d.imag
+        d[:, np.arange(m), np.arange(m)] = np.inf
+        return d.min(axis=2)
+    out = np.full(values.shape, np.inf)
+    for j in range(1, m):
+        d = values - values[:, (np.arange(m) + j) % m]
+        np.minimum(out, d.real * d.real + d.imag * d.imag, out=out)
+    return out
+
+
+def nearest_steps(values, at=None):
+    """``(steps, certain)``: each root's nearest successor at the next speed (n - 1, m) and whether that
+    step is certain (n - 1,): the nearest successors are distinct and every root moves by less than
+    :data:`CERTAIN_MOVE` of its distance to the nearest other root, at either speed.  ``at`` (k,) asks
+    for those steps alone (rows ``at`` to ``at + 1``)."""
+    n, m = values.shape
+    k = np.arange(n - 1) if at is None else np.asarray(at, dtype=int)
+    if not len(k):
+        return np.zeros((0, m), dtype=int), np.zeros(0, dtype=bool)
+    a, b = values[k], values[k + 1]
+    # squared distances (the same nearest, no square roots) from each root at speed k to root j at k + 1:
+    # at once for a few steps, else one column j at a time (numpy reduces a short last axis slowly)
+    if len(k) * m * m <= SMALL:
+        d = b[:, None, :] - a[:, :, None]
+        d = d.real * d.real + d.imag * d.imag
+        steps = np.argmin(d, axis=2)
+        move = np.take_along_axis(d, steps[:, :, None], axis=2)[..., 0]
+    else:
+        move, steps = np.full(a.shape, np.inf), np.zeros(a.shape, dtype=int)
+        for j in range(m):
+            d = a - b[:, j:j + 1]
+            d = d.real * d.real + d.imag * d.imag
+            nearer = d < move
+            move = np.where(nearer, d, move)
+            steps[nearer] = j
+    rows = np.unique(np.concatenate([k, k + 1]))
+    sep = np.empty((n, m))
+    sep[rows] = _nearest_other(values[rows])
+    room = np.minimum(sep[k], np.take_along_axis(sep[k + 1], steps, axis=1))
+    distinct = (np.sort(steps, axis=1) == np.arange(m)).all(axis=1)
+    certain = distinct & (move < CERTAIN_MOVE ** 2 * room).all(axis=1)
+    return steps, certain
+
+
+FILL_EVERY = 12
+"""Eigenvalues of a long sweep are LAPACK's at every FILL_EVERY-th speed; between them each root is
+continued by Newton's method on the characteristic polynomial (:func:`filled_values`)."""
+FILL_HALVINGS = 2
+"""A cell of LAPACK speeds where the roots come close for their motion is halved (LAPACK at its middle
+speed) up to this many times before LAPACK takes every speed in it."""
+FILL_ITERATIONS = 4
+"""Newton steps of the continuation (quadratic convergence from a guess a small fraction of the roots'
+distances away)."""
+FILL_TOL = 1e-12
+"""A continued root is accepted when its last Newton step is below FILL_TOL (1 + |root|) 1/s."""
+FILL_SPREAD = 1e6
+"""Largest ratio of the largest to the smallest root modulus at the LAPACK speeds for which roots are
+continued on the characteristic polynomial (wider: a very stiff tyre; LAPACK at every speed)."""
+
+
+def _poly_from_roots(roots):
+    """Real coefficients (k, m + 1), highest power first, of ``prod (s - r)`` for each row of ``roots``
+    (k, m) (complex roots in conjugate pairs)."""
+    k, m = roots.shape
+    c = np.zeros((k, m + 1), dtype=complex)
+    c[:, 0] = 1.0
+    for j in range(m):
+        c[:, 1:j + 2] = c[:, 1:j + 2] - roots[:, j:j + 1] * c[:, :j + 1]
+    return c.real
+
+
+def _lagrange_weights(x, t, width):
+    """``(windows (q, width) int, weights (q, width))``: for each point ``t`` (q,) the ``width`` nodes of
+    ``x`` (ascending) around it (as centred as the ends allow) and the Lagrange weights that give a
+    polynomial of degree below ``width`` at ``t`` from its values at those nodes (the barycentric
+    form: each window's weights once)."""
+    first = np.clip(np.searchsorted(x, t) - width // 2, 0, len(x) - width)
+    starts, which = np.unique(first, return_inverse=True)
+    xs = x[starts[:, None] + np.arange(width)]                        # (u, width) each window's nodes
+    diff = xs[:, :, None] - xs[:, None, :]
+    diff[:, np.arange(width), np.arange(width)] = 1.0
+    bary = 1.0 / np.prod(diff, axis=2)                                # (u, width)
+    gap = t[:, None] - xs[which]                                      # (q, width), never 0 (t is no node)
+    weights = np.prod(gap, axis=1)[:, None] * bary[which] / gap
+    return first[:, None] + np.arange(width), weights
+
+
+class _AtSpeeds:
+    """``model``'s dynamic matrices at the speeds ``v`` (m/s), made for the rows asked for
+    (``at[rows]``): a sweep that asks LAPACK about a sixth of its speeds builds no more of them."""
+
+    def __init__(self, model, v):
+        self.model, self.v = model, v
+        self.shape = (len(v), model.n_dynamic, model.n_dynamic)
+
+    def __getitem__(self, rows):
+        return self.model.dynamic_matrix(self.v[rows])
+
+
+def filled_values(model, v, A=None):
+    """Eigenvalues (n, m) of the stacked dynamic matrices ``A`` (n, m, m; default ``model``'s, made for
+    the speeds that need them) at speeds ``v`` (m/s), complex (a real root with imaginary part +0), in
+    no particular column order at each speed.
+
+    LAPACK's at every :data:`FILL_EVERY`-th speed (and the last); at the speeds between two of them
+    (a model of one polynomial in speed: a closed loop with gains scheduled in speed takes LAPACK's
+    roots at every speed)
+    where every root stays far from the others (:func:`nearest_steps`), each root is continued from the
+    straight line between its values there by Newton's method on the characteristic polynomial
+    ``det(s I - A(v))``.  Its coefficients are polynomials in ``v`` (of degree at most ``d m``, ``A``
+    of degree ``d``), so they are interpolated exactly (to rounding) from their values at the LAPACK
+    speeds nearest ``v`` (those of the roots found there).  A speed where a root does not settle, or
+    the roots' sum misses the trace, takes LAPACK's roots.
+
+    Returns ``(values, candidates, proven)``: ``candidates`` (n - 1, m) is, for each step whose two
+    speeds' roots were continued together, each root's successor (the same column inside a cell, the
+    cell's assignment onto the next LAPACK speed), and -1 in the other rows (to be found by
+    :func:`nearest_steps`); ``proven`` (n - 1,) marks the steps whose candidates are certain by a
+    bound (:func:`_proven_cells`); :func:`checked_steps` checks the others."""
+    A = _AtSpeeds(model, v) if A is None else A
+    n, m = A.shape[0], A.shape[-1]
+    candidates = np.full((max(n - 1, 0), m), -1)
+    proven = np.zeros(max(n - 1, 0), dtype=bool)
+    pieces = model.speed_pieces
+    if len(pieces) != 1 or n < 2 * FILL_EVERY:     # gains scheduled in speed: A(v) is a polynomial piecewise
+        return _plain_values(A[:]), candidates, proven
+    width = m * (len(pieces[0][2].dynamic_coefficients) - 1) + 1
+    nodes = np.unique(np.r_[np.arange(0, n, FILL_EVERY), n - 1])
+    if len(nodes) < width + 1:
+        return _plain_values(A[:]), candidates, proven
+    at_nodes = _plain_values(A[nodes])
+    size = np.abs(at_nodes)
+    if not (np.all(np.isfinite(at_nodes)) and size.max() <= FILL_SPREAD * max(size.min(), 1e-300)):
+        return _plain_values(A[:]), candidates, proven
+    steps, certain = nearest_steps(at_nodes)
+    for _ in range(FILL_HALVINGS):            # a cell where roots come close: LAPACK at its middle too
+        wide = np.flatnonzero(~certain & (np.diff(nodes) > 2))
+        if not len(wide):
+            break
+        middle = (nodes[wide] + nodes[wide + 1]) // 2
+        merged = np.argsort(np.r_[nodes, middle], kind="stable")
+        place = np.empty(len(merged), dtype=int)
+        place[merged] = np.arange(len(merged))
+        nodes = np.r_[nodes, middle][merged]
+        at_nodes = np.concatenate([at_nodes, _plain_values(A[middle])])[merged]
+        # the cells not halved keep their steps; the halves' are found
+        kept = np.setdiff1d(np.arange(len(steps)), wide)
+        halves = np.r_[place[wide], place[wide] + 1]
+        new_steps, new_certain = np.empty((len(nodes) - 1, m), dtype=int), np.empty(len(nodes) - 1, dtype=bool)
+        new_steps[place[kept]], new_certain[place[kept]] = steps[kept], certain[kept]
+        new_steps[halves], new_certain[halves] = nearest_steps(at_nodes, halves)
+        steps, certain = new_steps, new_certain
+    values = np.empty((n, m), dtype=complex)
+    values[nodes] = at_nodes
+    between = np.ones(n, dtype=bool)
+    between[nodes] = False
+    cell = np.searchsorted(nodes, np.arange(n), side="right") - 1     # the LAPACK speeds around each speed
+    rows = np.flatnonzero(between & certain[np.minimum(cell, len(certain) - 1)])
+    rest = np.flatnonzero(between & ~certain[np.minimum(cell, len(certain) - 1)])
+    if len(rows):
+        cell = cell[rows]
+        a, b = nodes[cell], nodes[cell + 1]
+        t = ((v[rows] - v[a]) / (v[b] - v[a]))[:, None]
+        start, end = at_nodes[cell], np.take_along_axis(at_nodes[cell + 1], steps[cell], axis=1)
+        s = start + t * (end - start)                                 # (q, m) guesses
+        s = guess = np.where(s.imag == 0, s.real + 0j, s)
+        windows, weights = _lagrange_weights(v[nodes], v[rows], width)
+        c = np.einsum("qw,qwj->qj", weights, _poly_from_roots(at_nodes)[windows])   # (q, m + 1)
+        c = c[:, None, :]
+        p, dp = np.empty(s.shape, dtype=complex), np.empty(s.shape, dtype=complex)
+        for _ in range(FILL_ITERATIONS):
+            p[...], dp[...] = c[..., 0], 0.0
+            for j in range(1, m + 1):                                 # Horner: p and p' at once, in place
+                dp *= s
+                dp += p
+                p *= s
+                p += c[..., j]
+            step = p / dp
+            s = s - step
+        ok = np.all(np.abs(step) <= FILL_TOL * (1 + np.abs(s)), axis=1)
+        ok &= np.abs(s.sum(axis=1).real + c[:, 0, 1]) <= 1e-10 * (1 + np.abs(s).sum(axis=1))
+        ok &= np.all(np.isfinite(s), axis=1)
+        values[rows] = np.where(s.imag == 0, s.real + 0j, s)
+        rest = np.union1d(rest, rows[~ok])
+        filled = np.zeros(n, dtype=bool)
+        filled[rows[ok]] = True
+        node = ~between
+        candidates[filled[1:] & (filled[:-1] | node[:-1])] = np.arange(m)      # inside a cell: same column
+        last = np.flatnonzero(filled[:-1] & node[1:])                            # onto the cell's end
+        candidates[last] = steps[np.searchsorted(nodes, last, side="right") - 1]
+        proven = _proven_cells(v, nodes, at_nodes, steps, rows, cell, t[:, 0], ok, np.abs(s - guess), proven)
+    if len(rest):
+        values[rest] = _plain_values(A[rest])
+    return values, candidates, proven
+
+
+def _proven_cells(v, nodes, at_nodes, steps, rows, cell, t, ok, deviation, proven):
+    """``proven`` with every step of each cell of LAPACK speeds set whose continued roots are certain
+    steps of :func:`checked_steps` by a bound, without their distances.
+
+    In a cell whose ends are a certain step (every root moves by ``move_i < R_i / 4``, ``R_i`` its
+    distance to the nearest other root at either end), the straight lines between the roots' ends
+    stay at least ``R_i / 2`` apart; each continued root is at most ``delta`` (the cell's largest
+    distance from its line) off it, so at every speed of the cell the nearest other root is at
+    least ``R_i / 2 - 2 delta`` away, and a root moves by at most ``move_i dt + 2 delta`` per step
+    (``dt`` the cell's largest step as a fraction of it).  Where ``move_i dt + 2.5 delta < R_i / 8``
+    for every root, each step moves every root by less than a quarter of its distance to the
+    nearest other root: the test of :func:`checked_steps` holds."""
+    starts = np.flatnonzero(np.r_[True, cell[1:] != cell[:-1]])
+    which = cell[starts]
+    first = np.zeros(len(rows), dtype=bool)
+    first[starts] = True
+    before = np.where(first, 0.0, np.r_[0.0, t[:-1]])
+    ends = np.r_[starts[1:], len(rows)] - 1
+    dt = np.maximum(np.maximum.reduceat(t - before, starts), 1.0 - t[ends])
+    delta = np.maximum.reduceat(deviation.max(axis=1), starts)
+    settled = np.logical_and.reduceat(ok, starts)
+    sep = _nearest_other(at_nodes)
+    end = np.take_along_axis(at_nodes[which + 1], steps[which], axis=1)
+    move = np.abs(end - at_nodes[which])
+    room = np.sqrt(np.minimum(sep[which], np.take_along_axis(sep[which + 1], steps[which], axis=1)))
+    sure = settled & np.all(move * dt[:, None] + 2.5 * delta[:, None] < room / 8, axis=1)
+    edges = np.zeros(len(proven) + 1)
+    np.add.at(edges, nodes[which[sure]], 1.0)
+    np.add.at(edges, nodes[which[sure] + 1], -1.0)
+    return proven | (np.cumsum(edges)[:-1] > 0)
+
+
+def checked_steps(values, candidates, proven=None):
+    """``(steps, certain)`` as :func:`nearest_steps` gives them, where ``candidates`` (n - 1, m) proposes
+    each root's successor (-1: none) and ``proven`` marks proposals known to be certain: another is
+    certain under the same test (every root moves by
+    less than :data:`CERTAIN_MOVE` of its distance to the nearest other root at either speed: then it
+    is also every root's nearest successor), without the distances to every other root's successor."""
+    n, m = values.shape
+    steps = np.array(candidates)
+    certain = np.zeros(max(n - 1, 0), dtype=bool) if proven is None else np.array(proven)
+    proposed = np.flatnonzero((steps[:, 0] >= 0) & ~certain)
+    if len(proposed):
+        re, im = values.real, values.imag
+        rows = np.unique(np.concatenate([proposed, proposed + 1]))
+        sep = np.empty((n, m))
+        sep[rows] = _nearest_other(values[rows])
+        k, to = proposed, steps[proposed]
+        nxt = np.take_along_axis(values[k + 1], to, axis=1)
+        move = (nxt.real - re[k]) ** 2 + (nxt.imag - im[k]) ** 2
+        room = np.minimum(sep[k], np.take_along_axis(sep[k + 1], to, axis=1))
+        certain[k] = (move < CERTAIN_MOVE ** 2 * room).all(axis=1)
+    other = np.flatnonzero(~certain)
+    if len(other):
+        steps[other], certain[other] = nearest_steps(values, other)
+    return steps, certain
+
+
+@dataclass(frozen=True, eq=False)
+class TrackedSweep:
+    """Eigenvalues (n, m) at speeds (n,) in LAPACK's column order, the tracked order (n, m) (as
+    :func:`~bikemass.analysis.engine.tracking.track` gives it), and the unit eigenvectors (r, N, m) at
+    the rows ``rows`` (r,) where they were needed (columns as ``values``)."""
+
+    speeds: np.ndarray
+    values: np.ndarray
+    order: np.ndarray
+    rows: np.ndarray
+    vectors: np.ndarray
+
+    def vectors_at(self, row):
+        """Unit eigenvectors (N, m) at ``row`` (one of :attr:`rows`), columns as ``values[row]``."""
+        return self.vectors[int(np.searchsorted(self.rows, row))]
+
+
+def tracked_sweep(model, speeds, need=()):
+    """:class:`TrackedSweep` of ``model`` at ``speeds`` (m/s), with eigenvectors at the rows ``need``.
+
+    The same order as :func:`~bikemass.analysis.engine.tracking.track` on :func:`eigen_sweep`, at a
+    fraction of its cost: the eigenvalues at every speed (LAPACK without eigenvectors), each step where
+    the roots stay far apart for their motion (:func:`nearest_steps`: nearly all) taken as its nearest
+    successors, and only the other steps (roots that meet, cross or split) given eigenvectors at both
+    ends and assigned by :func:`~bikemass.analysis.engine.tracking.track`'s costs.  ``None`` where an
+    eigenvalue is not finite (the caller takes :func:`eigen_sweep`)."""
+    v = np.atleast_1d(np.asarray(speeds, dtype=float))
+    A = _AtSpeeds(model, v)
+    values, candidates, proven = filled_values(model, v, A)
+    if not np.all(np.isfinite(values)):
+        return None
+    n, m = values.shape
+    done = np.zeros(n, dtype=bool)
+    steps, certain = checked_steps(values, candidates, proven)
+    hard = np.flatnonzero(~certain)
+    done[np.asarray(need, dtype=int)] = True
+    done[hard], done[hard + 1] = True, True
+    rows = np.flatnonzero(done)
+    w, X = np.linalg.eig(A[rows])
+    if not (np.all(np.isfinite(w)) and np.all(np.isfinite(X))):
+        return None
+    # each eigenvector put in the column of its root (the roots found without vectors stay: the steps
+    # found on them hold)
+    vectors = np.take_along_axis(X.astype(complex, copy=False), _matched(values[rows], w)[:, None, :], axis=2)
+    if len(hard):
+        sub = track(values[rows], vectors)                       # consecutive rows: the hard steps
+        at = np.searchsorted(rows, hard)
+        for k, p in zip(hard, at):
+            steps[k][sub[p]] = sub[p + 1]
+    order = np.empty((n, m), dtype=int)
+    current, start = np.arange(m), 0
+    for k in np.flatnonzero((steps != np.arange(m)).any(axis=1)):
+        order[start:k + 1] = current
+        current, start = steps[k][current], k + 1
+    order[start:] = current
+    return TrackedSweep(v, values, order, rows, vectors)
+
+
+def matched_vectors(model, speeds, values):
+    """Unit eigenvectors (n, N, m) of ``model`` at ``speeds`` (m/s) whose column ``c`` belongs to the
+    eigenvalue ``values[:, c]`` (the nearest of LAPACK's at each speed; each once)."""
+    w, X = np.linalg.eig(model.dynamic_matrix(np.asarray(speeds, dtype=float)))
+    return np.take_along_axis(X.astype(complex, copy=False), _matched(values, w)[:, None, :], axis=2)
+
+
+def _matched(values, w):
+    """``pick`` (k, m): for each row, the column of ``w`` (k, m) holding the root of each column of
+    ``values`` (the nearest, each once; the least total distance where nearest ones collide)."""
+    d = np.abs(values[:, :, None] - w[:, None, :])                # our column c -> LAPACK's column j
+    pick = np.argmin(d, axis=2)
+    bad = np.flatnonzero(~(np.sort(pick, axis=1) == np.arange(values.shape[1])).all(axis=1))
+    if len(bad):
+        pick[bad] = assignments(d[bad])
+    return pick

@@ -17,8 +17,8 @@ import numpy as np
 from ...core.results import Result, quantity
 from ...core.tables import Table, complex_columns
 from ...core.frozen import freeze, short_repr
-from .eigen import (characteristic_of, damping_ratio, eigen_sweep, has_quartic_path, natural_frequency,
-                    quartic_vectors)
+from .eigen import (characteristic_of, damping_ratio, eigen_sweep, has_quartic_path, matched_vectors,
+                    natural_frequency, quartic_vectors, tracked_sweep)
 from .quartic import quartic_roots
 from .naming import REFERENCE_SPEED, mode_names, settle_splits, split_rank, standstill_labels
 from .tracking import track
@@ -42,6 +42,33 @@ class Modes(Result):
     labels: tuple = ()
     eigenvalues: np.ndarray = quantity("1/s (pairs: real, imaginary)", default=None)
     eigenvectors: np.ndarray = quantity("", default=None)
+
+    def __getattr__(self, name):
+        # the eigenvectors of a sweep that tracked its roots without them at most speeds
+        # (:func:`lazily`): made on first read, then kept (an instance's own attribute)
+        make = self.__dict__.get("_make_vectors") if name == "eigenvectors" else None
+        if make is None:
+            raise AttributeError(name)
+        vectors = make()
+        vectors.setflags(write=False)
+        object.__setattr__(self, "eigenvectors", vectors)
+        object.__setattr__(self, "_make_vectors", None)
+        return vectors
+
+    def __getstate__(self):
+        state = dict(self.__dict__)
+        state["eigenvectors"] = self.eigenvectors
+        state.pop("_make_vectors", None)
+        return state
+
+    @classmethod
+    def lazily(cls, speeds, labels, eigenvalues, make_vectors):
+        """Modes whose :attr:`eigenvectors` are made by ``make_vectors()`` when first read (a
+        read-only array of shape (n, N, m)), then kept; every other field as given (immutable)."""
+        obj = cls.frozen(speeds, labels, eigenvalues, None)
+        del obj.__dict__["eigenvectors"]
+        obj.__dict__["_make_vectors"] = make_vectors
+        return obj
 
     def __getitem__(self, label):
         """Eigenvalues (n,) of mode ``label``."""
@@ -89,6 +116,11 @@ class Modes(Result):
                           for label in self.labels]}
 
 
+# no class attribute for the eigenvectors' default (the generated __init__ keeps its own): an instance
+# made lazily (Modes.lazily) has none of its own until they are read, and __getattr__ makes them then
+del Modes.eigenvectors
+
+
 def check_speeds(speeds):
     """``speeds`` as a 1-D float array; InputError (a ValueError) unless numbers, at least one,
     finite, >= 0, strictly increasing and at most :data:`~bikemass.core.limits.MAX_SPEED`."""
@@ -128,6 +160,10 @@ def follow_modes(model, speeds):
     v = check_speeds(speeds)
     families = dict(model.families)
     grid, keep, at = naming_grid(v, REFERENCE_SPEED if len(families) > 1 else None)
+    if not has_quartic_path(model):
+        fast = _follow_fast(model, v, families, grid, keep, at)
+        if fast is not None:
+            return fast
     sweep = eigen_sweep(model, grid)
     order = track(sweep.eigenvalues, sweep.eigenvectors)
     rows = np.arange(len(order))[:, None]
@@ -145,6 +181,27 @@ def follow_modes(model, speeds):
     values.setflags(write=False)                 # made here: read-only as they are, no frozen copy
     vectors.setflags(write=False)
     return Modes.frozen(freeze(v), tuple(ordered), values, vectors)
+
+
+def _follow_fast(model, v, families, grid, keep, at):
+    """:func:`follow_modes` of a model beyond the quartic path by :func:`~bikemass.analysis.engine.eigen.tracked_sweep`
+    (eigenvectors only where roots meet, at standstill and at the reference speed; the modes'
+    eigenvectors made when first read), ``None`` where that sweep is not finite."""
+    sweep = tracked_sweep(model, grid, [0] if at is None else [0, at])
+    if sweep is None:
+        return None
+    order = sweep.order
+    rows = np.arange(len(order))[:, None]
+    values = sweep.values[rows, order]
+    reference = None if at is None else (values[at], sweep.vectors_at(at)[:, order[at]])
+    labels = standstill_labels(values[0], sweep.vectors_at(0)[:, order[0]], families,
+                               [s.name for s in model.dynamic_states], reference)
+    ordered = split_rank(labels)
+    columns = [labels.index(label) for label in ordered]
+    order = order[rows, settle_splits(values, labels)][keep][:, columns]
+    values = sweep.values[rows[keep], order]
+    values.setflags(write=False)
+    return Modes.lazily(freeze(v), tuple(ordered), values, lambda: matched_vectors(model, v, values))
 
 
 def follow_many(models, speeds):

@@ -161,8 +161,11 @@ def settle_splits(values, labels):
     order = np.tile(np.arange(m), (n, 1))
     ranking = split_rank(labels)
     rank = [ranking.index(label) for label in labels]
-    for i in range(m):
-        for j in range(i + 1, m):
+    # only columns that turn from complex to real somewhere can split from a pair (a swap below trades
+    # two such columns, so the set stays the same)
+    turns = np.flatnonzero(((values[:-1].imag != 0) & (values[1:].imag == 0)).any(axis=0))
+    for i in turns:
+        for j in turns[turns > i]:
             paired = _is_pair(values, i, j)
             real = (values[:, i].imag == 0) & (values[:, j].imag == 0)
             for k in np.flatnonzero(paired[:-1] & real[1:]) + 1:

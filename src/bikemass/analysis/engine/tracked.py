@@ -10,11 +10,11 @@ uncertainty use (:mod:`~bikemass.analysis.engine.critical`).
 
 import numpy as np
 
-from .eigen import eigen_sweep
+from .eigen import eigen_sweep, has_quartic_path, tracked_sweep
 from .modes import follow_modes
 from .naming import WOBBLE, family, is_weave, is_wobble
 from .speeds import DEFAULT_SPEEDS, speed_grid
-from .tracking import assignments, reorder, track
+from .tracking import assignments, track
 
 NAMING_STEP = DEFAULT_SPEEDS[2]
 """Speed step (m/s) of the grid on which modes are followed for naming when no analysis gives one
@@ -60,11 +60,15 @@ class TrackedModes:
                 cell = self._cells[k] = (s[k:k + 2], ends)
                 return cell
             sub = np.linspace(s[k], s[k + 1], self.SUBSTEPS + 1)
-            sweep = eigen_sweep(self.model, sub)
+            fast = None if has_quartic_path(self.model) else tracked_sweep(self.model, sub)
+            if fast is not None:          # eigenvectors only where the roots meet (the same order)
+                raw, order = fast.values, fast.order
+            else:
+                sweep = eigen_sweep(self.model, sub)
+                raw, order = sweep.eigenvalues, track(sweep.eigenvalues, sweep.eigenvectors)
             start = self.modes.eigenvalues[k]
-            first = assignments(np.abs(start[:, None] - sweep.eigenvalues[0][None, :])[None])[0]
-            order = track(sweep.eigenvalues, sweep.eigenvectors)[:, first]
-            values, _ = reorder(sweep.eigenvalues, sweep.eigenvectors, order)
+            first = assignments(np.abs(start[:, None] - raw[0][None, :])[None])[0]
+            values = np.take_along_axis(raw, order[:, first], axis=1)
             cell = self._cells[k] = (sub, values)
         return cell
 
