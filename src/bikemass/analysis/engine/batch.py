@@ -62,6 +62,11 @@ models of perturbed benchmark and Jamis sets at 0.2-1.4 Hz, wobble crossings at 
 WEAVE_SHARE = 0.4
 """Least share of a crossing pair's participation on the bicycle's states for the batch to name it the
 weave (measured: 0.48-0.95 at the weave crossings of those models)."""
+PAIR_TOL = 1e-6
+"""Relative width (of ``1 + v``) to which the Illinois method brackets a pair's crossing before Newton's
+method takes it: ``H_(n-1)``, a product of Routh's column of numbers of 10**30 and more, is rounding
+noise within about 1e-7 m/s of its root (the tyre model's c x lam grid), where the bracket stops
+shrinking; Newton's method from 1e-6 takes as many steps as from 1e-7."""
 FINAL_STEP = 1e-8
 """A Newton step smaller than this (relative to ``1 + v``) is the last: Newton's method converges
 quadratically, so the speed after it is exact to rounding (about 1e-16 relative), and the matrix is
@@ -129,13 +134,16 @@ def _characteristic(P, a):
             W = AW
 
 
-def at_speeds(a, v):
-    """``a_j(v)`` (..., n + 1) of the coefficients ``a`` (B, n + 1, D + 1) at speeds ``v`` (B, ...)."""
-    out = np.zeros(v.shape + (a.shape[1],))
-    vv = v[..., None]
-    shape = (a.shape[0],) + (1,) * (v.ndim - 1) + (a.shape[1],)
-    for i in range(a.shape[2] - 1, -1, -1):
-        out = out * vv + a[:, :, i].reshape(shape)
+def at_speeds(aT, rows, v, j=None):
+    """``a_j(v)`` (n + 1, ...) of rows ``rows`` (K,) at speeds ``v`` (K, ...), the coefficients held as
+    ``aT`` (D + 1, n + 1, B) (powers of ``v`` first, rows last: Horner's steps on contiguous rows); only
+    ``a_j`` (1, ...) if ``j`` is given."""
+    g = aT[:, :, rows] if j is None else aT[:, j:j + 1, rows]
+    shape = g.shape[1:] + (1,) * (v.ndim - 1)
+    out = np.broadcast_to(g[-1].reshape(shape), g.shape[1:2] + v.shape).copy()
+    for i in range(g.shape[0] - 2, -1, -1):
+        out *= v
+        out += g[i].reshape(shape)
     return out
 
 
@@ -195,17 +203,25 @@ def _derivative(P, v):
 
 def _solve(A, D):
     """``A^-1 D`` of stacked matrices (``D`` None: ``A^-1``), ``nan`` in the rows where ``A`` is singular
-    (numpy refuses a whole stack for one singular matrix: the stack is halved until the singular rows
-    are alone)."""
+    (numpy refuses a whole stack for one singular matrix: those rows are found by their determinants,
+    zero exactly where LAPACK's factorisation meets a zero pivot, and the others solved again)."""
     with np.errstate(all="ignore"):
         try:
             return np.linalg.inv(A) if D is None else np.linalg.solve(A, D)
         except np.linalg.LinAlgError:
+            pass
+        out = np.full(A.shape if D is None else D.shape, np.nan, dtype=np.result_type(A, D))
+        det = np.linalg.det(A)
+        good = np.flatnonzero(np.isfinite(det) & (det != 0))
+        if len(good) == len(A):                  # no zero determinant: halve the stack until the row is alone
             if len(A) == 1:
-                return np.full(A.shape if D is None else D.shape, np.nan, dtype=A.dtype)
-    half = len(A) // 2
-    return np.concatenate([_solve(A[:half], None if D is None else D[:half]),
-                           _solve(A[half:], None if D is None else D[half:])])
+                return out
+            half = len(A) // 2
+            return np.concatenate([_solve(A[:half], None if D is None else D[:half]),
+                                   _solve(A[half:], None if D is None else D[half:])])
+        if len(good):
+            out[good] = _solve(A[good], None if D is None else D[good])
+        return out
 
 
 def _illinois(f, a, b, fa, fb, iterations=30, tol=1e-7):
@@ -299,14 +315,14 @@ def _at_start(lo, v, ok, start):
     return (lo == start) & (~ok | (v <= 2 * start))
 
 
-def _pairs(a, Pb, rows, lo, hi, flo, fhi, bicycle, decided, start):
+def _pairs(aT, Pb, rows, lo, hi, flo, fhi, bicycle, decided, start):
     """``(rows, speeds, kinds)`` of the pair crossings in brackets ``[lo, hi]`` of ``H_(n-1)`` (kind 1 the
     weave, 3 not named; a bracket of a real pair ``l, -l`` dropped); rows whose refinement fails are
     marked undecided."""
     if not len(rows):
         return rows, lo, np.zeros(0, dtype=int)
-    x = _illinois(lambda i, x: routh(at_speeds(a[rows[i]], x))[1], lo, hi, flo, fhi)
-    _, _, w2 = routh(at_speeds(a[rows], x))
+    x = _illinois(lambda i, x: routh_rows(at_speeds(aT, rows[i], x))[1], lo, hi, flo, fhi, tol=PAIR_TOL)
+    _, _, w2 = routh_rows(at_speeds(aT, rows, x))
     pair = w2 > 0
     rows, x, w2, lo, hi = rows[pair], x[pair], w2[pair], lo[pair], hi[pair]
     if not len(rows):
@@ -379,6 +395,7 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
     with np.errstate(all="ignore"):
         Pb = balance_rows(np.where(decided[:, None, None, None], P, 0.0))
         a = characteristic(Pb)
+    aT = np.ascontiguousarray(a.transpose(2, 1, 0))            # (D + 1, n + 1, B): see at_speeds
     count_steps = max(2, int(np.ceil(hi / step)))
     grid = np.linspace(0.0, hi, count_steps + 1)
     grid[0] = min(1e-6 * (1 + hi), 0.5 * grid[1])
@@ -396,8 +413,8 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
     after = ~stable & (np.arange(len(grid))[None, :] > z[:, None])
     e = np.where(after.any(axis=1), np.argmax(after, axis=1), len(grid))
     crossings = []                                   # (rows, speeds, kinds) of the refined crossings
-    functions = {"real": lambda rows, x: at_speeds(a[rows], x)[..., 0],
-                 "pair": lambda rows, x: routh(at_speeds(a[rows], x))[1]}
+    functions = {"real": lambda rows, x: at_speeds(aT, rows, x, 0)[0],
+                 "pair": lambda rows, x: routh_rows(at_speeds(aT, rows, x))[1]}
     skipped = np.zeros(B, dtype=bool)
     for kind, f in (("real", a0), ("pair", H)):
         sign = np.signbit(f)
@@ -418,7 +435,7 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
         if kind == "real":
             skipped[rows[later]] = True
             now = ~later
-            x = _illinois(lambda i, x, rows=rows, now=now: at_speeds(a[rows[now][i]], x)[..., 0], lo[now], hi_[now], flo[now], fhi[now])
+            x = _illinois(lambda i, x, rows=rows, now=now: at_speeds(aT, rows[now][i], x, 0)[0], lo[now], hi_[now], flo[now], fhi[now])
             x, ok = _newton_real(Pb[rows[now]], x)
             ok &= (x > lo[now] - 1e-6) & (x < hi_[now] + 1e-6)
             at_start = _at_start(lo[now], x, ok, grid[0])
@@ -426,7 +443,7 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
             ok &= ~at_start
             crossings.append((rows[now][ok], x[ok], np.zeros(int(ok.sum()), dtype=int)))
             continue
-        found = _pairs(a, Pb, rows[~later], lo[~later], hi_[~later], flo[~later], fhi[~later], bicycle, decided,
+        found = _pairs(aT, Pb, rows[~later], lo[~later], hi_[~later], flo[~later], fhi[~later], bicycle, decided,
                        grid[0])
         crossings.append(found)
         # a row whose first weave is not among the pairs refined has the rest refined too
@@ -435,13 +452,13 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
         again = later & ~named[rows]
         skipped[rows[later & ~again]] = True
         if again.any():
-            crossings.append(_pairs(a, Pb, rows[again], lo[again], hi_[again], flo[again], fhi[again], bicycle,
+            crossings.append(_pairs(aT, Pb, rows[again], lo[again], hi_[again], flo[again], fhi[again], bicycle,
                                     decided, grid[0]))
     # a row with crossings left out gets the grid speed e as an end (no crossing): the count between its last
     # crossing and e is that of the grid speed e, not stable, so the first stable range ends where it does
     rows = np.flatnonzero(skipped & (e < len(grid)))
     crossings.append((rows, grid[e[rows]], np.full(len(rows), -1)))
-    _assemble(out, decided, crossings, a, hi, B)
+    _assemble(out, decided, crossings, aT, hi, B)
     out["decided"] = decided
     return out
 
@@ -460,7 +477,11 @@ def _split_dips(f, grid, function, decided, iterations=48):
     at every dip of ``|f|`` (:data:`DIP`) the least ``s f`` (``s`` the sign around it) is found by a
     golden-section search of ``function(rows, speeds)`` on the two grid steps around it; where it is
     of the other sign the dip holds two crossings, one on each side of it.  Rows whose dip's least
-    value is too close to zero to tell (:data:`AMBIGUOUS`) are marked undecided.  ``None`` if no dip."""
+    value is too close to zero to tell (:data:`AMBIGUOUS`) are marked undecided.  ``None`` if no dip.
+
+    A dip's search ends when its least value is of the other sign by more than that margin, when its
+    bracket is 1e-9 m/s wide, or when the four points of its bracket are convex and bound the least
+    value above the margin (:func:`_convex_floor`): each search runs only as long as its own dip needs."""
     g = np.abs(f)
     left, mid, right = g[:, :-2], g[:, 1:-1], g[:, 2:]
     sign = np.signbit(f)
@@ -469,22 +490,34 @@ def _split_dips(f, grid, function, decided, iterations=48):
     if not len(rows):
         return None
     s = np.where(sign[rows, k + 1], -1.0, 1.0)
+    scale = np.maximum(left[rows, k], right[rows, k])
+    margin = AMBIGUOUS * scale
     a, b = grid[k], grid[k + 2]
+    fa, fb = s * f[rows, k], s * f[rows, k + 2]
     x1, x2 = a + GOLDEN * (b - a), b - GOLDEN * (b - a)
     f1, f2 = s * function(rows, x1), s * function(rows, x2)
+    active = np.arange(len(rows))
     for _ in range(iterations):
-        if np.all((np.minimum(f1, f2) < 0) | (b - a <= 1e-9 * (1 + b))):
-            break                                   # every dip crosses, or is found to 1e-9
-        lower = f1 < f2
-        b = np.where(lower, x2, b)
-        a = np.where(lower, a, x1)
-        x1, x2 = np.where(lower, a + GOLDEN * (b - a), x2), np.where(lower, x1, b - GOLDEN * (b - a))
-        new = s * function(rows, np.where(lower, x1, x2))
-        f1, f2 = np.where(lower, new, f2), np.where(lower, f1, new)
+        A, X1, X2, Bb, FA, F1, F2, FB = (y[active] for y in (a, x1, x2, b, fa, f1, f2, fb))
+        least = np.minimum(F1, F2)
+        done = (least < -margin[active]) | (Bb - A <= 1e-9 * (1 + Bb)) | \
+            (_convex_floor(A, X1, X2, Bb, FA, F1, F2, FB) > 2 * margin[active])
+        keep = ~done
+        active = active[keep]
+        if not len(active):
+            break
+        A, X1, X2, Bb, FA, F1, F2, FB = (y[keep] for y in (A, X1, X2, Bb, FA, F1, F2, FB))
+        lower = F1 < F2
+        Bb, FB = np.where(lower, X2, Bb), np.where(lower, F2, FB)
+        A, FA = np.where(lower, A, X1), np.where(lower, FA, F1)
+        X1, X2 = np.where(lower, A + GOLDEN * (Bb - A), X2), np.where(lower, X1, Bb - GOLDEN * (Bb - A))
+        new = s[active] * function(rows[active], np.where(lower, X1, X2))
+        F1, F2 = np.where(lower, new, F2), np.where(lower, F1, new)
+        a[active], x1[active], x2[active], b[active] = A, X1, X2, Bb
+        fa[active], f1[active], f2[active], fb[active] = FA, F1, F2, FB
     x = np.where(f1 < f2, x1, x2)
     least = np.minimum(f1, f2)
-    scale = np.maximum(left[rows, k], right[rows, k])
-    unclear = np.abs(least) <= AMBIGUOUS * scale
+    unclear = np.abs(least) <= margin
     decided[rows[unclear]] = False
     two = (least < 0) & ~unclear
     rows, k, x, s, least = rows[two], k[two], x[two], s[two], least[two]
@@ -493,7 +526,21 @@ def _split_dips(f, grid, function, decided, iterations=48):
             np.concatenate([f[rows, k], fx]), np.concatenate([fx, f[rows, k + 2]]))
 
 
-def _assemble(out, decided, crossings, a, hi, B):
+def _convex_floor(a, x1, x2, b, fa, f1, f2, fb):
+    """A lower bound on ``[a, b]`` of a function with values ``fa, f1, f2, fb`` at ``a < x1 < x2 < b``
+    if it is convex there (``-inf`` where the four values are not): on ``[a, x1]`` and ``[x2, b]`` the
+    function lies above the line through ``x1`` and ``x2``, on ``[x1, x2]`` above the lines through
+    ``a, x1`` and through ``x2, b``, lowest where those two meet."""
+    with np.errstate(all="ignore"):
+        s01, s12, s23 = (f1 - fa) / (x1 - a), (f2 - f1) / (x2 - x1), (fb - f2) / (b - x2)
+        outer = np.minimum(f1 - np.maximum(s12, 0.0) * (x1 - a), f2 + np.minimum(s12, 0.0) * (b - x2))
+        meet = np.clip(np.where(s23 != s01, x1 + (f2 - s23 * (x2 - x1) - f1) / (s01 - s23), x1), x1, x2)
+        inner = np.maximum(f1 + s01 * (meet - x1), f2 + s23 * (meet - x2))
+        floor = np.minimum(outer, inner)
+    return np.where((s01 <= s12) & (s12 <= s23) & np.isfinite(floor), floor, -np.inf)
+
+
+def _assemble(out, decided, crossings, aT, hi, B):
     """Fill ``out``'s decided rows from their refined crossings ``[(rows, speeds, kinds)]`` (kind 0
     real, 1 the weave, 3 a pair not named, -1 an end of an interval that is no crossing): the first weave and real crossings, and the first stable
     range from Routh counts at the midpoints between crossings (as the engine counts there)."""
@@ -530,7 +577,7 @@ def _assemble(out, decided, crossings, a, hi, B):
     live = np.flatnonzero(decided)
     count = np.full((B, width), -1)
     if len(live):
-        count[live] = routh(at_speeds(a[live], mids[live]))[0]
+        count[live] = routh_rows(at_speeds(aT, live, mids[live]))[0]
     empty = ends[:, 1:] <= ends[:, :-1]
     decided &= ~np.any((count < 0) & ~empty, axis=1)
     stable = (count == 0) & ~empty
