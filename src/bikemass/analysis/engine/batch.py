@@ -392,19 +392,26 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
     if not B:
         out["decided"] = decided
         return out
-    with np.errstate(all="ignore"):
-        Pb = balance_rows(np.where(decided[:, None, None, None], P, 0.0))
-        a = characteristic(Pb)
-    aT = np.ascontiguousarray(a.transpose(2, 1, 0))            # (D + 1, n + 1, B): see at_speeds
     count_steps = max(2, int(np.ceil(hi / step)))
     grid = np.linspace(0.0, hi, count_steps + 1)
     grid[0] = min(1e-6 * (1 + hi), 0.5 * grid[1])
-    # the grid as one stacked product of small matrices (B, n + 1, G), seen as (n + 1, B, G): one large
-    # product would start BLAS's threads, whose waiting costs more CPU than the product
+    # the characteristic polynomial and Routh's array on the grid, CHUNK rows at a time (their temporaries
+    # stay in the cache: 2.5 us a row against 6.5 for the grid in one piece); the grid's product as
+    # stacked products of small matrices (one large product starts BLAS's threads, whose waiting costs
+    # more CPU than the product)
+    a = np.zeros((B, n + 1, n * (P.shape[1] - 1) + 1))
     powers = np.ascontiguousarray((grid[:, None] ** np.arange(a.shape[2])).T)       # (D + 1, G)
-    c = np.moveaxis(a @ powers, 1, 0)
-    count, H, _ = routh_rows(c)
-    a0 = c[0]
+    count = np.empty((B, len(grid)), dtype=np.int64)
+    H, a0 = np.empty((B, len(grid))), np.empty((B, len(grid)))
+    with np.errstate(all="ignore"):
+        Pb = balance_rows(np.where(decided[:, None, None, None], P, 0.0))
+        for start in range(0, B, CHUNK):
+            rows = slice(start, start + CHUNK)
+            _characteristic(Pb[rows], a[rows])
+            c = np.ascontiguousarray(np.moveaxis(a[rows] @ powers, 1, 0))         # (n + 1, rows, G)
+            count[rows], H[rows], _ = routh_rows(c)
+            a0[rows] = c[0]
+    aT = np.ascontiguousarray(a.transpose(2, 1, 0))            # (D + 1, n + 1, B): see at_speeds
     decided &= np.all(np.isfinite(H), axis=1) & np.all(np.isfinite(a0), axis=1)
     # the grid's first stable run [z, e): a crossing in a cell at or after e changes none of the row's
     # numbers once its first weave and real crossings are found (where no grid speed is stable, every one may)
