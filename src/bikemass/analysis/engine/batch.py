@@ -62,11 +62,11 @@ models of perturbed benchmark and Jamis sets at 0.2-1.4 Hz, wobble crossings at 
 WEAVE_SHARE = 0.4
 """Least share of a crossing pair's participation on the bicycle's states for the batch to name it the
 weave (measured: 0.48-0.95 at the weave crossings of those models)."""
-PAIR_TOL = 1e-6
-"""Relative width (of ``1 + v``) to which the Illinois method brackets a pair's crossing before Newton's
-method takes it: ``H_(n-1)``, a product of Routh's column of numbers of 10**30 and more, is rounding
-noise within about 1e-7 m/s of its root (the tyre model's c x lam grid), where the bracket stops
-shrinking; Newton's method from 1e-6 takes as many steps as from 1e-7."""
+BRACKET_TOL = 1e-4
+"""Relative width (of ``1 + v``) to which the Illinois method brackets a crossing on the polynomial
+(``a_0`` or ``H_(n-1)``); Newton's method on the polynomial then takes it to within :data:`FINAL_STEP`
+(``H_(n-1)``, a product of Routh's column, is rounding noise within about 1e-7 m/s of its root: the
+characteristic polynomial at ``i w`` is not), and one step of Newton's method on the matrices confirms it."""
 FINAL_STEP = 1e-8
 """A Newton step smaller than this (relative to ``1 + v``) is the last: Newton's method converges
 quadratically, so the speed after it is exact to rounding (about 1e-16 relative), and the matrix is
@@ -145,6 +145,50 @@ def at_speeds(aT, rows, v, j=None):
         out *= v
         out += g[i].reshape(shape)
     return out
+
+
+def _with_slope(aT, rows, v, j=None):
+    """:func:`at_speeds` of speeds ``v`` (K,) and the coefficients' derivatives in ``v``: ``(a_j, da_j/dv)``."""
+    g = aT[:, :, rows] if j is None else aT[:, j:j + 1, rows]
+    c, dc = g[-1].copy(), np.zeros(g.shape[1:])
+    for i in range(g.shape[0] - 2, -1, -1):
+        dc = dc * v + c
+        c = c * v + g[i]
+    return c, dc
+
+
+def _polish_real(aT, rows, v, steps=3):
+    """Newton's method on the polynomial ``a_0(v)`` from ``v`` (K,): the start of :func:`_newton_real`
+    on the matrices, near enough for one step of it (its first step then within :data:`FINAL_STEP`)."""
+    for _ in range(steps):
+        c, dc = _with_slope(aT, rows, v, 0)
+        with np.errstate(all="ignore"):
+            step = c[0] / dc[0]
+        v = np.where(np.isfinite(step), v - step, v)
+    return v
+
+
+def _polish_pair(aT, rows, v, w, steps=3):
+    """Newton's method on the characteristic polynomial ``p(i w; v) = 0`` in ``(v, w)`` (both real) from
+    ``(v, w)`` (K,): the start of :func:`_newton_pair` on the matrices, near enough for one step of it
+    where ``H_(n-1)``'s rounding would leave it 1e-7 away."""
+    n = aT.shape[1] - 1
+    for _ in range(steps):
+        c, dc = _with_slope(aT, rows, v)
+        z = 1j * w
+        p, ps, pv = c[n] + 0j, np.zeros(len(v), dtype=complex), dc[n] + 0j
+        for j in range(n - 1, -1, -1):
+            ps = ps * z + p
+            p = p * z + c[j]
+            pv = pv * z + dc[j]
+        gw = 1j * ps
+        with np.errstate(all="ignore"):
+            det = pv.real * gw.imag - pv.imag * gw.real          # pv dv + gw dw = -p, dv and dw real
+            dv = (p.imag * gw.real - p.real * gw.imag) / det
+            dw = (p.real * pv.imag - p.imag * pv.real) / det
+        good = np.isfinite(dv) & np.isfinite(dw)
+        v, w = np.where(good, v + dv, v), np.where(good, w + dw, w)
+    return v, w
 
 
 def routh(c):
@@ -226,19 +270,24 @@ def _solve(A, D):
 
 def _illinois(f, a, b, fa, fb, iterations=30, tol=1e-7):
     """Roots of ``f(rows, x)`` (vectorised over brackets) in brackets ``[a, b]`` with ``fa``, ``fb`` of
-    opposite signs, to ``tol (1 + |x|)``: each iteration evaluates only the brackets still open."""
+    opposite signs, to ``tol (1 + |x|)``: each iteration evaluates only the brackets still open.  A
+    bracket whose same end is kept three times running is halved instead (the ends' values 10**17
+    apart, ``H_(n-1)`` from standstill to 0.5 m/s: the Illinois method's halving of one value took 60
+    iterations there)."""
     a, b, fa, fb = a.copy(), b.copy(), fa.copy(), fb.copy()
+    kept = np.zeros(len(a), dtype=np.int64)
     active = np.arange(len(a))
     for _ in range(iterations):
         A, B, FA, FB = a[active], b[active], fa[active], fb[active]
         with np.errstate(all="ignore"):
             x = np.where(FB != FA, B - FB * (B - A) / (FB - FA), 0.5 * (A + B))
-        x = np.where((x > np.minimum(A, B)) & (x < np.maximum(A, B)), x, 0.5 * (A + B))
+        x = np.where((x > np.minimum(A, B)) & (x < np.maximum(A, B)) & (kept[active] < 3), x, 0.5 * (A + B))
         fx = f(active, x)
         same = np.signbit(fx) == np.signbit(FB)
         # Illinois: halve the retained end's value when the same end is kept twice
         fa[active], a[active] = np.where(same, FA * 0.5, FB), np.where(same, A, B)
         b[active], fb[active] = x, fx
+        kept[active] = np.where(same, kept[active] + 1, 0)
         active = active[(np.abs(x - a[active]) > tol * (1 + np.abs(x))) & (fx != 0)]
         if not len(active):
             break
@@ -321,13 +370,15 @@ def _pairs(aT, Pb, rows, lo, hi, flo, fhi, bicycle, decided, start):
     marked undecided."""
     if not len(rows):
         return rows, lo, np.zeros(0, dtype=int)
-    x = _illinois(lambda i, x: routh_rows(at_speeds(aT, rows[i], x))[1], lo, hi, flo, fhi, tol=PAIR_TOL)
+    x = _illinois(lambda i, x: routh_rows(at_speeds(aT, rows[i], x))[1], lo, hi, flo, fhi, tol=BRACKET_TOL)
     _, _, w2 = routh_rows(at_speeds(aT, rows, x))
     pair = w2 > 0
     rows, x, w2, lo, hi = rows[pair], x[pair], w2[pair], lo[pair], hi[pair]
     if not len(rows):
         return rows, lo, np.zeros(0, dtype=int)
-    v, w, ok, diagonal = _newton_pair(Pb[rows], x, np.sqrt(w2))
+    v, w = _polish_pair(aT, rows, x, np.sqrt(w2))
+    near = np.isfinite(v) & np.isfinite(w) & (v > lo - 1e-6) & (v < hi + 1e-6) & (w > 0)
+    v, w, ok, diagonal = _newton_pair(Pb[rows], np.where(near, v, x), np.where(near, w, np.sqrt(w2)))
     ok &= (v > lo - 1e-6) & (v < hi + 1e-6) & (w > 0)
     at_start = _at_start(lo, v, ok, start)
     decided[rows[~ok & ~at_start]] = False
@@ -442,8 +493,11 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
         if kind == "real":
             skipped[rows[later]] = True
             now = ~later
-            x = _illinois(lambda i, x, rows=rows, now=now: at_speeds(aT, rows[now][i], x, 0)[0], lo[now], hi_[now], flo[now], fhi[now])
-            x, ok = _newton_real(Pb[rows[now]], x)
+            x = _illinois(lambda i, x, rows=rows, now=now: at_speeds(aT, rows[now][i], x, 0)[0], lo[now], hi_[now], flo[now], fhi[now],
+                          tol=BRACKET_TOL)
+            v = _polish_real(aT, rows[now], x)
+            near = np.isfinite(v) & (v > lo[now] - 1e-6) & (v < hi_[now] + 1e-6)
+            x, ok = _newton_real(Pb[rows[now]], np.where(near, v, x))
             ok &= (x > lo[now] - 1e-6) & (x < hi_[now] + 1e-6)
             at_start = _at_start(lo[now], x, ok, grid[0])
             decided[rows[now][~ok & ~at_start]] = False
