@@ -81,7 +81,9 @@ def balance_rows(P):
     """``D^-1 P[k] D`` for each row (B, d + 1, n, n): a diagonal similarity per row (powers of 2,
     two sweeps of Osborne's iteration on ``sum_k |P[k]|``) that evens out the scales of the
     states; every eigenvalue at every speed is unchanged."""
-    S = np.abs(P).sum(axis=1)                                  # (B, n, n)
+    S = np.abs(P[:, 0])                                        # (B, n, n)
+    for k in range(1, P.shape[1]):
+        S += np.abs(P[:, k])
     B, n = S.shape[0], S.shape[-1]
     S[:, np.arange(n), np.arange(n)] = 0.0                      # off the diagonal only
     St = np.ascontiguousarray(np.swapaxes(S, 1, 2))             # St[:, i] = column i of S
@@ -94,7 +96,7 @@ def balance_rows(P):
             with np.errstate(divide="ignore", invalid="ignore"):
                 f = np.where((c > 0) & (r > 0), np.exp2(np.round(0.5 * np.log2(r / c))), 1.0)
             d[:, i] *= f
-    return P * d[:, None, None, :] / d[:, None, :, None]
+    return P * (d[:, None, :] / d[:, :, None])[:, None]
 
 
 CHUNK = 128
