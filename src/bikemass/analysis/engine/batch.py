@@ -22,7 +22,7 @@ row, the numbers a sweep's row holds: the first crossing of the weave, the first
    section on the polynomial) for a pair of crossings hidden inside two grid steps.
    The search of a dip ends as soon as that dip is decided (:func:`_split_dips`).
 3. **Refinement** of each bracket: the Illinois method on the polynomial (``a_0`` or ``H_(n-1)``)
-   to :data:`BRACKET_TOL`, Newton's method on the polynomial itself (``a_0(v)``, or the
+   to :data:`REAL_TOL` or :data:`PAIR_TOL`, Newton's method on the polynomial itself (``a_0(v)``, or the
    characteristic polynomial at ``s = i w`` in ``(v, w)``, starting from ``w**2`` of Routh's
    auxiliary polynomial), then Newton's method on the matrices themselves, to the engine's
    accuracy: ``det A(v) = 0`` for a real crossing; ``det(i w I - A(v)) = 0`` in ``(v, w)`` for a pair
@@ -66,11 +66,17 @@ models of perturbed benchmark and Jamis sets at 0.2-1.4 Hz, wobble crossings at 
 WEAVE_SHARE = 0.4
 """Least share of a crossing pair's participation on the bicycle's states for the batch to name it the
 weave (measured: 0.48-0.95 at the weave crossings of those models)."""
-BRACKET_TOL = 1e-4
-"""Relative width (of ``1 + v``) to which the Illinois method brackets a crossing on the polynomial
-(``a_0`` or ``H_(n-1)``); Newton's method on the polynomial then takes it to within :data:`FINAL_STEP`
-(``H_(n-1)``, a product of Routh's column, is rounding noise within about 1e-7 m/s of its root: the
-characteristic polynomial at ``i w`` is not), and one step of Newton's method on the matrices confirms it."""
+REAL_TOL = 1e-4
+"""Relative width (of ``1 + v``) to which the Illinois method brackets a real crossing on ``a_0(v)``;
+Newton's method on that polynomial then takes it to within :data:`FINAL_STEP`, and one step of Newton's
+method on the matrices confirms it."""
+PAIR_TOL = 1e-6
+"""Relative width to which the Illinois method brackets a pair's crossing on ``H_(n-1)`` (a product of
+Routh's column: rounding noise within about 1e-7 m/s of its root).  Not wider: ``w**2`` of Routh's
+auxiliary polynomial, the start in ``w``, can be far off (30.9 rad/s for 23.0 at 1.4e-6 m/s from the
+root), and Newton's method on the matrices from a start 1e-4 away then failed on 6 of 300 perturbed
+Jamis sets with the rider-lean+tyre model (a crossing at 18.9 m/s, and one at 29.9 m/s at 0.2 rad/s
+that went to the capsize root instead)."""
 FINAL_STEP = 1e-8
 """A Newton step smaller than this (relative to ``1 + v``) is the last: Newton's method converges
 quadratically, so the speed after it is exact to rounding (about 1e-16 relative), and the matrix is
@@ -377,7 +383,7 @@ def _pairs(aT, Pb, rows, lo, hi, flo, fhi, bicycle, decided, start):
     marked undecided."""
     if not len(rows):
         return rows, lo, np.zeros(0, dtype=int)
-    x = _illinois(lambda i, x: routh_rows(at_speeds(aT, rows[i], x))[1], lo, hi, flo, fhi, tol=BRACKET_TOL)
+    x = _illinois(lambda i, x: routh_rows(at_speeds(aT, rows[i], x))[1], lo, hi, flo, fhi, tol=PAIR_TOL)
     _, _, w2 = routh_rows(at_speeds(aT, rows, x))
     pair = w2 > 0
     rows, x, w2, lo, hi = rows[pair], x[pair], w2[pair], lo[pair], hi[pair]
@@ -501,7 +507,7 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
             skipped[rows[later]] = True
             now = ~later
             x = _illinois(lambda i, x, rows=rows, now=now: at_speeds(aT, rows[now][i], x, 0)[0], lo[now], hi_[now], flo[now], fhi[now],
-                          tol=BRACKET_TOL)
+                          tol=REAL_TOL)
             v = _polish_real(aT, rows[now], x)
             near = np.isfinite(v) & (v > lo[now] - 1e-6) & (v < hi_[now] + 1e-6)
             x, ok = _newton_real(Pb[rows[now]], np.where(near, v, x))
