@@ -147,47 +147,56 @@ def _characteristic(P, a):
             W = AW
 
 
-def at_speeds(aT, rows, v, j=None):
-    """``a_j(v)`` (n + 1, ...) of rows ``rows`` (K,) at speeds ``v`` (K, ...), the coefficients held as
-    ``aT`` (D + 1, n + 1, B) (powers of ``v`` first, rows last: Horner's steps on contiguous rows); only
-    ``a_j`` (1, ...) if ``j`` is given."""
-    g = aT[:, :, rows] if j is None else aT[:, j:j + 1, rows]
-    shape = g.shape[1:] + (1,) * (v.ndim - 1)
-    out = np.broadcast_to(g[-1].reshape(shape), g.shape[1:2] + v.shape).copy()
-    for i in range(g.shape[0] - 2, -1, -1):
-        out *= v
-        out += g[i].reshape(shape)
-    return out
+def _powers(v, degree, slope=False):
+    """``v**i`` (..., degree + 1) of speeds ``v`` (...), or their derivatives ``i v**(i-1)`` if ``slope``."""
+    X = np.empty(v.shape + (degree + 1,))
+    X[..., 0] = 1.0
+    for i in range(1, degree + 1):
+        np.multiply(X[..., i - 1], v, out=X[..., i])
+    if slope:
+        X[..., 1:] = X[..., :-1] * np.arange(1, degree + 1)
+        X[..., 0] = 0.0
+    return X
 
 
-def _with_slope(aT, rows, v, j=None):
+def at_speeds(a, rows, v, j=None):
+    """``a_j(v)`` (n + 1, ...) of rows ``rows`` (K,) of the coefficients ``a`` (B, n + 1, D + 1) at speeds
+    ``v`` (K,) or (K, W): one stacked product of each row's coefficients with the powers of its speeds
+    (half the time of Horner's steps on so few numbers); only ``a_j`` (1, ...) if ``j`` is given."""
+    g = a[rows] if j is None else a[rows, j:j + 1]                        # (K, n + 1, D + 1)
+    X = _powers(v, a.shape[2] - 1)
+    if v.ndim == 1:
+        return np.swapaxes(g @ X[:, :, None], 0, 1)[..., 0]
+    return np.moveaxis(g @ np.swapaxes(X, 1, 2), 1, 0)
+
+
+def _with_slope(a, rows, v, j=None):
     """:func:`at_speeds` of speeds ``v`` (K,) and the coefficients' derivatives in ``v``: ``(a_j, da_j/dv)``."""
-    g = aT[:, :, rows] if j is None else aT[:, j:j + 1, rows]
-    c, dc = g[-1].copy(), np.zeros(g.shape[1:])
-    for i in range(g.shape[0] - 2, -1, -1):
-        dc = dc * v + c
-        c = c * v + g[i]
-    return c, dc
+    g = a[rows] if j is None else a[rows, j:j + 1]
+    D = a.shape[2] - 1
+    X = np.stack([_powers(v, D), _powers(v, D, slope=True)], axis=2)   # (K, D + 1, 2)
+    c = np.moveaxis(g @ X, 1, 0)                                          # (n + 1, K, 2)
+    return c[..., 0], c[..., 1]
 
 
-def _polish_real(aT, rows, v, steps=3):
+def _polish_real(a, rows, v, steps=3):
     """Newton's method on the polynomial ``a_0(v)`` from ``v`` (K,): the start of :func:`_newton_real`
     on the matrices, near enough for one step of it (its first step then within :data:`FINAL_STEP`)."""
     for _ in range(steps):
-        c, dc = _with_slope(aT, rows, v, 0)
+        c, dc = _with_slope(a, rows, v, 0)
         with np.errstate(all="ignore"):
             step = c[0] / dc[0]
         v = np.where(np.isfinite(step), v - step, v)
     return v
 
 
-def _polish_pair(aT, rows, v, w, steps=3):
+def _polish_pair(a, rows, v, w, steps=3):
     """Newton's method on the characteristic polynomial ``p(i w; v) = 0`` in ``(v, w)`` (both real) from
     ``(v, w)`` (K,): the start of :func:`_newton_pair` on the matrices, near enough for one step of it
     where ``H_(n-1)``'s rounding would leave it 1e-7 away."""
-    n = aT.shape[1] - 1
+    n = a.shape[1] - 1
     for _ in range(steps):
-        c, dc = _with_slope(aT, rows, v)
+        c, dc = _with_slope(a, rows, v)
         z = 1j * w
         p, ps, pv = c[n] + 0j, np.zeros(len(v), dtype=complex), dc[n] + 0j
         for j in range(n - 1, -1, -1):
@@ -377,19 +386,19 @@ def _at_start(lo, v, ok, start):
     return (lo == start) & (~ok | (v <= 2 * start))
 
 
-def _pairs(aT, Pb, rows, lo, hi, flo, fhi, bicycle, decided, start):
+def _pairs(a, Pb, rows, lo, hi, flo, fhi, bicycle, decided, start):
     """``(rows, speeds, kinds)`` of the pair crossings in brackets ``[lo, hi]`` of ``H_(n-1)`` (kind 1 the
     weave, 3 not named; a bracket of a real pair ``l, -l`` dropped); rows whose refinement fails are
     marked undecided."""
     if not len(rows):
         return rows, lo, np.zeros(0, dtype=int)
-    x = _illinois(lambda i, x: routh_rows(at_speeds(aT, rows[i], x))[1], lo, hi, flo, fhi, tol=PAIR_TOL)
-    _, _, w2 = routh_rows(at_speeds(aT, rows, x))
+    x = _illinois(lambda i, x: routh_rows(at_speeds(a, rows[i], x))[1], lo, hi, flo, fhi, tol=PAIR_TOL)
+    _, _, w2 = routh_rows(at_speeds(a, rows, x))
     pair = w2 > 0
     rows, x, w2, lo, hi = rows[pair], x[pair], w2[pair], lo[pair], hi[pair]
     if not len(rows):
         return rows, lo, np.zeros(0, dtype=int)
-    v, w = _polish_pair(aT, rows, x, np.sqrt(w2))
+    v, w = _polish_pair(a, rows, x, np.sqrt(w2))
     near = np.isfinite(v) & np.isfinite(w) & (v > lo - 1e-6) & (v < hi + 1e-6) & (w > 0)
     v, w, ok, diagonal = _newton_pair(Pb[rows], np.where(near, v, x), np.where(near, w, np.sqrt(w2)))
     ok &= (v > lo - 1e-6) & (v < hi + 1e-6) & (w > 0)
@@ -475,7 +484,6 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
             c = np.ascontiguousarray(np.moveaxis(a[rows] @ powers, 1, 0))         # (n + 1, rows, G)
             count[rows], H[rows], _ = routh_rows(c)
             a0[rows] = c[0]
-    aT = np.ascontiguousarray(a.transpose(2, 1, 0))            # (D + 1, n + 1, B): see at_speeds
     decided &= np.all(np.isfinite(H), axis=1) & np.all(np.isfinite(a0), axis=1)
     # the grid's first stable run [z, e): a crossing in a cell at or after e changes none of the row's
     # numbers once its first weave and real crossings are found (where no grid speed is stable, every one may)
@@ -484,8 +492,8 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
     after = ~stable & (np.arange(len(grid))[None, :] > z[:, None])
     e = np.where(after.any(axis=1), np.argmax(after, axis=1), len(grid))
     crossings = []                                   # (rows, speeds, kinds) of the refined crossings
-    functions = {"real": lambda rows, x: at_speeds(aT, rows, x, 0)[0],
-                 "pair": lambda rows, x: routh_rows(at_speeds(aT, rows, x))[1]}
+    functions = {"real": lambda rows, x: at_speeds(a, rows, x, 0)[0],
+                 "pair": lambda rows, x: routh_rows(at_speeds(a, rows, x))[1]}
     skipped = np.zeros(B, dtype=bool)
     for kind, f in (("real", a0), ("pair", H)):
         sign = np.signbit(f)
@@ -506,9 +514,9 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
         if kind == "real":
             skipped[rows[later]] = True
             now = ~later
-            x = _illinois(lambda i, x, rows=rows, now=now: at_speeds(aT, rows[now][i], x, 0)[0], lo[now], hi_[now], flo[now], fhi[now],
+            x = _illinois(lambda i, x, rows=rows, now=now: at_speeds(a, rows[now][i], x, 0)[0], lo[now], hi_[now], flo[now], fhi[now],
                           tol=REAL_TOL)
-            v = _polish_real(aT, rows[now], x)
+            v = _polish_real(a, rows[now], x)
             near = np.isfinite(v) & (v > lo[now] - 1e-6) & (v < hi_[now] + 1e-6)
             x, ok = _newton_real(Pb[rows[now]], np.where(near, v, x))
             ok &= (x > lo[now] - 1e-6) & (x < hi_[now] + 1e-6)
@@ -517,7 +525,7 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
             ok &= ~at_start
             crossings.append((rows[now][ok], x[ok], np.zeros(int(ok.sum()), dtype=int)))
             continue
-        found = _pairs(aT, Pb, rows[~later], lo[~later], hi_[~later], flo[~later], fhi[~later], bicycle, decided,
+        found = _pairs(a, Pb, rows[~later], lo[~later], hi_[~later], flo[~later], fhi[~later], bicycle, decided,
                        grid[0])
         crossings.append(found)
         # a row whose first weave is not among the pairs refined has the rest refined too
@@ -526,13 +534,13 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
         again = later & ~named[rows]
         skipped[rows[later & ~again]] = True
         if again.any():
-            crossings.append(_pairs(aT, Pb, rows[again], lo[again], hi_[again], flo[again], fhi[again], bicycle,
+            crossings.append(_pairs(a, Pb, rows[again], lo[again], hi_[again], flo[again], fhi[again], bicycle,
                                     decided, grid[0]))
     # a row with crossings left out gets the grid speed e as an end (no crossing): the count between its last
     # crossing and e is that of the grid speed e, not stable, so the first stable range ends where it does
     rows = np.flatnonzero(skipped & (e < len(grid)))
     crossings.append((rows, grid[e[rows]], np.full(len(rows), -1)))
-    _assemble(out, decided, crossings, aT, hi, B)
+    _assemble(out, decided, crossings, a, hi, B)
     out["decided"] = decided
     return out
 
@@ -614,7 +622,7 @@ def _convex_floor(a, x1, x2, b, fa, f1, f2, fb):
     return np.where((s01 <= s12) & (s12 <= s23) & np.isfinite(floor), floor, -np.inf)
 
 
-def _assemble(out, decided, crossings, aT, hi, B):
+def _assemble(out, decided, crossings, a, hi, B):
     """Fill ``out``'s decided rows from their refined crossings ``[(rows, speeds, kinds)]`` (kind 0
     real, 1 the weave, 3 a pair not named, -1 an end of an interval that is no crossing): the first weave and real crossings, and the first stable
     range from Routh counts at the midpoints between crossings (as the engine counts there)."""
@@ -651,7 +659,7 @@ def _assemble(out, decided, crossings, aT, hi, B):
     live = np.flatnonzero(decided)
     count = np.full((B, width), -1)
     if len(live):
-        count[live] = routh_rows(at_speeds(aT, live, mids[live]))[0]
+        count[live] = routh_rows(at_speeds(a, live, mids[live]))[0]
     empty = ends[:, 1:] <= ends[:, :-1]
     decided &= ~np.any((count < 0) & ~empty, axis=1)
     stable = (count == 0) & ~empty
