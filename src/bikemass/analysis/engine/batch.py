@@ -221,10 +221,11 @@ def routh(c):
     return routh_rows(np.moveaxis(c, -1, 0))
 
 
-def routh_rows(c):
+def routh_rows(c, only_hurwitz=False):
     """:func:`routh` of coefficients held first (n + 1, ...), ascending: each row of Routh's array is
     an (entries, ...) array, and each new row ``a[1:] - (a_0 / b_0) b[1:]`` of the two above it two
-    operations on all its entries at once."""
+    operations on all its entries at once.  ``only_hurwitz``: ``H_(n-1)`` alone (the rows up to the
+    ``s**1`` row, no count: what the Illinois method and a dip's search evaluate)."""
     n = c.shape[0] - 1
     shape = c.shape[1:]
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -234,7 +235,7 @@ def routh_rows(c):
         w2 = np.full(shape, np.nan)
         upper, lower = desc[0::2], desc[1::2]                              # the s**n and s**(n-1) rows
         first[1] = lower[0]
-        for k in range(2, n + 1):
+        for k in range(2, n if only_hurwitz else n + 1):
             new = upper[1:].copy()
             tail = min(len(lower) - 1, len(new))
             if tail:
@@ -243,10 +244,12 @@ def routh_rows(c):
             if k == n - 2:                                                 # the s**2 row: new[0] s**2 + new[1]
                 w2 = new[1] / new[0]
             upper, lower = lower, new
+        hurwitz = np.prod(first[1:n], axis=0)
+        if only_hurwitz:
+            return hurwitz
         sign = np.signbit(first)
         changes = np.count_nonzero(sign[1:] != sign[:-1], axis=0)
         ok = np.all(np.isfinite(first) & (first != 0), axis=0)
-        hurwitz = np.prod(first[1:n], axis=0)
     return np.where(ok, changes, -1), hurwitz, w2
 
 
@@ -392,7 +395,7 @@ def _pairs(a, Pb, rows, lo, hi, flo, fhi, bicycle, decided, start):
     marked undecided."""
     if not len(rows):
         return rows, lo, np.zeros(0, dtype=int)
-    x = _illinois(lambda i, x: routh_rows(at_speeds(a, rows[i], x))[1], lo, hi, flo, fhi, tol=PAIR_TOL)
+    x = _illinois(lambda i, x: routh_rows(at_speeds(a, rows[i], x), True), lo, hi, flo, fhi, tol=PAIR_TOL)
     _, _, w2 = routh_rows(at_speeds(a, rows, x))
     pair = w2 > 0
     rows, x, w2, lo, hi = rows[pair], x[pair], w2[pair], lo[pair], hi[pair]
@@ -493,7 +496,7 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
     e = np.where(after.any(axis=1), np.argmax(after, axis=1), len(grid))
     crossings = []                                   # (rows, speeds, kinds) of the refined crossings
     functions = {"real": lambda rows, x: at_speeds(a, rows, x, 0)[0],
-                 "pair": lambda rows, x: routh_rows(at_speeds(a, rows, x))[1]}
+                 "pair": lambda rows, x: routh_rows(at_speeds(a, rows, x), True)}
     skipped = np.zeros(B, dtype=bool)
     for kind, f in (("real", a0), ("pair", H)):
         sign = np.signbit(f)
