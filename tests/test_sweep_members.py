@@ -48,6 +48,20 @@ def test_characteristic_polynomial_is_numpys_poly_of_the_eigenvalues():
         assert np.allclose(got, want, rtol=1e-9, atol=1e-9 * np.abs(want).max())
 
 
+@pytest.mark.parametrize("n, degree", [(1, 1), (2, 2), (3, 1), (5, 2), (6, 3)])
+def test_characteristic_polynomial_of_random_matrix_polynomials(n, degree):
+    """Seeded random ``A(v) = sum_k v**k P[k]`` of n states and degree 1-3 in v (the recursion's last two
+    coefficients come from traces, not products): numpy's polynomial of the eigenvalues at three speeds
+    (1e-10 relative to the largest coefficient)."""
+    P = np.random.default_rng(n * 10 + degree).standard_normal((4, degree + 1, n, n))
+    a = characteristic(P)
+    for v in (0.3, 1.0, 2.5):
+        A = sum(v ** k * P[:, k] for k in range(degree + 1))
+        want = np.array([np.poly(np.linalg.eigvals(x))[::-1] for x in A]).real
+        got = a @ v ** np.arange(a.shape[2])
+        assert np.all(np.abs(got - want) <= 1e-10 * np.abs(want).max(axis=1, keepdims=True))
+
+
 def test_routh_against_the_roots():
     """Routh's array of seeded random real polynomials of degree 4-8: the count of roots with ``Re > 0``
     against numpy's roots, and ``H_(n-1)`` against Orlando's formula ``(-1)**(n (n-1) / 2) prod_(i<j)
