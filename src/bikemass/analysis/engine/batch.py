@@ -242,11 +242,13 @@ def routh(c):
     return routh_rows(np.moveaxis(c, -1, 0))
 
 
-def routh_rows(c, only_hurwitz=False):
+def routh_rows(c, only_hurwitz=False, stable=False):
     """:func:`routh` of coefficients held first (n + 1, ...), ascending: each row of Routh's array is
     an (entries, ...) array, and each new row ``a[1:] - (a_0 / b_0) b[1:]`` of the two above it two
     operations on all its entries at once.  ``only_hurwitz``: ``H_(n-1)`` alone (the rows up to the
-    ``s**1`` row, no count: what the Illinois method and a dip's search evaluate)."""
+    ``s**1`` row, no count: what the Illinois method and a dip's search evaluate); ``stable``:
+    ``(stable, H_(n-1))``, no roots with ``Re >= 0`` (the whole first column finite and positive) in
+    place of the count (what the grid needs)."""
     n = c.shape[0] - 1
     shape = c.shape[1:]
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -270,6 +272,8 @@ def routh_rows(c, only_hurwitz=False):
         hurwitz = np.prod(first[1:n], axis=0)
         if only_hurwitz:
             return hurwitz
+        if stable:
+            return np.all(first > 0, axis=0) & np.isfinite(first[n]) & np.isfinite(hurwitz), hurwitz
         sign = np.signbit(first)
         changes = np.count_nonzero(sign[1:] != sign[:-1], axis=0)
         ok = np.all(np.isfinite(first) & (first != 0), axis=0)
@@ -500,7 +504,7 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
     # more CPU than the product)
     a = np.zeros((B, n + 1, n * (P.shape[1] - 1) + 1))
     powers = np.ascontiguousarray((grid[:, None] ** np.arange(a.shape[2])).T)       # (D + 1, G)
-    count = np.empty((B, len(grid)), dtype=np.int64)
+    stable = np.empty((B, len(grid)), dtype=bool)
     H, a0 = np.empty((B, len(grid))), np.empty((B, len(grid)))
     with np.errstate(all="ignore"):
         Pb = balance_rows(np.where(decided[:, None, None, None], P, 0.0))
@@ -508,12 +512,11 @@ def batch_critical_speeds(P, families, hi, step=GRID_STEP):
             rows = slice(start, start + CHUNK)
             _characteristic(Pb[rows], a[rows])
             c = np.ascontiguousarray(np.moveaxis(a[rows] @ powers, 1, 0))         # (n + 1, rows, G)
-            count[rows], H[rows], _ = routh_rows(c)
+            stable[rows], H[rows] = routh_rows(c, stable=True)
             a0[rows] = c[0]
     decided &= np.all(np.isfinite(H), axis=1) & np.all(np.isfinite(a0), axis=1)
     # the grid's first stable run [z, e): a crossing in a cell at or after e changes none of the row's
     # numbers once its first weave and real crossings are found (where no grid speed is stable, every one may)
-    stable = count == 0
     z = np.where(stable.any(axis=1), np.argmax(stable, axis=1), len(grid))
     after = ~stable & (np.arange(len(grid))[None, :] > z[:, None])
     e = np.where(after.any(axis=1), np.argmax(after, axis=1), len(grid))
