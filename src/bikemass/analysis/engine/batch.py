@@ -13,8 +13,8 @@ row, the numbers a sweep's row holds: the first crossing of the weave, the first
    after one diagonal similarity per row that evens out the states' scales (the tyres' forces beside
    angles); :data:`CHUNK` rows at a time, with step 2, so that the temporaries stay in the cache.
 2. **Routh's array on a speed grid.**  At every speed of a grid on ``(0, hi]`` the Routh array of
-   the polynomial (elementwise over rows and speeds) gives the number of roots with ``Re > 0``
-   (sign changes of its first column) and the sign of the Hurwitz determinant ``H_(n-1)`` (the
+   the polynomial (elementwise over rows and speeds) tells whether the speed is stable (its first
+   column finite and positive: no root with ``Re >= 0``) and gives the sign of the Hurwitz determinant ``H_(n-1)`` (the
    product of that column: zero exactly where two roots sum to zero, a pair on the imaginary
    axis); ``a_0 = det(-A)`` is zero where a real root passes through zero.  A sign change of
    ``a_0`` or ``H_(n-1)`` between two grid speeds brackets a crossing.
