@@ -11,13 +11,15 @@ limited by the engine's own refinement (Brent's method on eigenvalues' real part
 """
 
 import dataclasses
+import functools
 import os
 
 import numpy as np
 import pytest
 
 import bikemass as bm
-from bikemass.analysis.engine.batch import batch_critical_speeds, characteristic
+from bikemass.analysis.engine.batch import (_convex_floor, _illinois, batch_critical_speeds, characteristic,
+                                            routh)
 from bikemass.sweep.evaluate import evaluate
 from bikemass.sweep.members import evaluate_member_batch
 from bikemass.sweep.table import NUMBERS
@@ -44,6 +46,86 @@ def test_characteristic_polynomial_is_numpys_poly_of_the_eigenvalues():
         want = np.poly(np.linalg.eigvals(A))[::-1]
         got = a @ v ** np.arange(a.shape[1])
         assert np.allclose(got, want, rtol=1e-9, atol=1e-9 * np.abs(want).max())
+
+
+@pytest.mark.parametrize("n, degree", [(1, 1), (2, 2), (3, 1), (5, 2), (6, 3)])
+def test_characteristic_polynomial_of_random_matrix_polynomials(n, degree):
+    """Seeded random ``A(v) = sum_k v**k P[k]`` of n states and degree 1-3 in v (the recursion's last two
+    coefficients come from traces, not products): numpy's polynomial of the eigenvalues at three speeds
+    (1e-10 relative to the largest coefficient)."""
+    P = np.random.default_rng(n * 10 + degree).standard_normal((4, degree + 1, n, n))
+    a = characteristic(P)
+    for v in (0.3, 1.0, 2.5):
+        A = sum(v ** k * P[:, k] for k in range(degree + 1))
+        want = np.array([np.poly(np.linalg.eigvals(x))[::-1] for x in A]).real
+        got = a @ v ** np.arange(a.shape[2])
+        assert np.all(np.abs(got - want) <= 1e-10 * np.abs(want).max(axis=1, keepdims=True))
+
+
+def test_routh_against_the_roots():
+    """Routh's array of seeded random real polynomials of degree 4-8: the count of roots with ``Re > 0``
+    against numpy's roots, and ``H_(n-1)`` against Orlando's formula ``(-1)**(n (n-1) / 2) prod_(i<j)
+    (l_i + l_j)`` of the roots (1e-8 relative); a polynomial with a pair ``+-i w`` on the axis: ``H_(n-1)``
+    zero to rounding and the auxiliary polynomial's ``w**2`` equal to ``w**2`` (1e-9 relative)."""
+    rng = np.random.default_rng(11)
+    for n in range(4, 9):
+        for _ in range(20):
+            pairs = n // 2
+            re = rng.uniform(-2, 1, pairs) * rng.choice([1, 0.01], pairs)
+            z = re + 1j * rng.uniform(0.1, 5, pairs)
+            roots = np.concatenate([z, z.conj()] + ([rng.uniform(-2, 1, 1)] if n % 2 else []))
+            c = np.real(np.poly(roots))[::-1]                     # ascending, monic
+            count, hurwitz, _ = routh(c)
+            assert count == int(np.sum(roots.real > 0))
+            want = (-1) ** (n * (n - 1) // 2) * np.prod([roots[i] + roots[j] for i in range(n) for j in range(i + 1, n)])
+            assert abs(hurwitz - want.real) <= 1e-8 * abs(want)
+        w = 1.7
+        others = np.concatenate([[-0.5 + 2j, -0.5 - 2j, -1.0, -3.0][:n - 2]])
+        c = np.real(np.poly(np.concatenate([[1j * w, -1j * w], others])))[::-1]
+        count, hurwitz, w2 = routh(c)
+        scale = np.prod([abs(x) + abs(y) for x in others for y in others]) * (1 + w) ** (2 * n)
+        assert abs(hurwitz) <= 1e-12 * scale
+        assert w2 == pytest.approx(w * w, rel=1e-9)
+
+
+def _convex(kind, centre, k, low, x):
+    y = x - centre
+    return [k * y ** 2 + low, np.exp(k * y) - k * y + low - 1, k * np.abs(y) ** 1.5 + low][kind]
+
+
+def test_convex_floor_is_below_the_least_value_and_near_it():
+    """The bound a dip's search stops on: for seeded convex functions (parabolas, exponentials, |x|**1.5)
+    sampled at a golden-section bracket's four points, the bound is at most the least value on the
+    bracket (the least of 20,001 samples, itself at least the true one), and it nears that value as the bracket narrows; four points that are not
+    convex give no bound."""
+    rng = np.random.default_rng(5)
+    golden = 0.5 * (3 - np.sqrt(5))
+    for _ in range(200):
+        centre, k, low = rng.uniform(-0.5, 1.5), rng.uniform(0.1, 10), rng.uniform(-1, 1)
+        f = functools.partial(_convex, int(rng.integers(3)), centre, k, low)
+        for width in (1.0, 1e-3):
+            a = np.clip(centre, 0, 1) - width * rng.uniform(0, 1)
+            b = a + width
+            x1, x2 = a + golden * (b - a), b - golden * (b - a)
+            least = min(f(x) for x in np.linspace(a, b, 20001))
+            bound = _convex_floor(*(np.array([x]) for x in (a, x1, x2, b, f(a), f(x1), f(x2), f(b))))[0]
+            assert bound <= least + 1e-12
+            if width < 1e-2:
+                assert least - bound <= 10 * k * width ** 1.5
+    x = np.array([0.0, 0.4, 0.6, 1.0])
+    assert _convex_floor(*(np.array([v]) for v in (*x, 0.0, 1.0, 0.0, 1.0)))[0] == -np.inf
+
+
+def test_illinois_across_values_of_very_different_sizes():
+    """A bracket whose ends' values are 1e17 apart (``H_(n-1)`` from standstill to 0.5 m/s is such): the
+    root of ``(x - r) 10**(40 x)`` found to 1e-7 within the iterations allowed (the plain Illinois method
+    halves one end's value 57 times)."""
+    r = np.array([0.259, 0.01, 0.45])
+    def f(rows, x):
+        return (x - r[rows]) * 10.0 ** (40 * x)
+    lo, hi = np.full(3, 3.1e-5), np.full(3, 0.5)
+    x = _illinois(f, lo, hi, f(np.arange(3), lo), f(np.arange(3), hi), tol=1e-7)
+    assert np.all(np.abs(x - r) <= 2e-7)
 
 
 def test_the_benchmark_tyre_model_as_the_engine_names_it():

@@ -31,8 +31,9 @@ from .vectorised import SPEEDS, _real_column, completed
 MASSES = ("mR", "mB", "mH", "mF")
 """The masses whose sum is a row's ``total_mass``, in the reference's order."""
 BATCH = 1024
-"""Rows whose critical speeds are found together: the batch path's temporaries of 1,024 rows stay in the
-cache (measured on the tyre model: 46 us a row in batches of 1,024, 64 in batches of 8,192, 62 in 256)."""
+"""Rows whose critical speeds are found together (the batch path takes its cache-sized pieces itself):
+measured on the tyre model, 24 us a row in batches of 1,024, 24 in 4,096, 25 in 8,192 and 33 in 256,
+where each batch's fixed cost of some 2 ms begins to show."""
 PROBE_TOL = 1e-12
 """Relative agreement of a probe configuration's values and coefficients with the reference's build."""
 
