@@ -128,5 +128,5 @@ def plot_critical_speeds(results: "Mapping[str, Mapping[str, StabilityResult | C
     ax.plot([], [], "-", lw=4.5, alpha=0.45, color="0.5", label="stable speeds")
     ax.legend(fontsize=7.5, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0, frameon=False)
     if title:
-        ax.set_title(title, fontsize=10)
+        ax.set_title(title, fontsize=10, y=1.0)    # y given: matplotlib skips re-measuring the axes to place it
     return fig

@@ -328,5 +328,5 @@ def eigenvalue_figure(modes, critical, title="", size=None, xlim=None, ylim=None
     ax.legend([handles[i] for i in order], [labels[i] for i in order], fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0, frameon=False)
     ax.grid(alpha=0.25, lw=0.5)
     if title:
-        ax.set_title(title, fontsize=10)
+        ax.set_title(title, fontsize=10, y=1.0)    # y given: matplotlib skips re-measuring the axes to place it
     return fig
