@@ -125,10 +125,11 @@ def job_path(job):
     return job[-2]
 
 
-MARGINS = {"draw_eigenvalues": (0.68, 0.48, 2.04, 0.24), "draw_critical": (0.78, 0.48, 1.39, 0.24)}
+MARGINS = {"draw_eigenvalues": (0.78, 0.48, 2.04, 0.24), "draw_critical": (0.78, 0.48, 1.39, 0.24)}
 """Margins (inches: left, bottom, right, top) of the figures drawn at a fixed layout
 (:func:`~bikemass.plots.figure.png_bytes`): room for the labels and legends of most of the study's
-figures of the kind (the others are laid out for themselves)."""
+figures of the kind (63 of the 73 eigenvalue figures, 5 of the 6 critical-speed figures; the others
+have the side their legend or note needs more room at widened to it and are drawn again)."""
 
 
 def run_job(job):
