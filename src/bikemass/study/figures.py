@@ -58,9 +58,14 @@ def critical_jobs(outcomes, folder, suffix="", run_title="corrected run"):
 def eigenvalue_jobs(outcomes, folder):
     """Jobs drawing each configuration's eigenvalues against speed."""
     return [(draw_eigenvalues, o.modes, critical_speeds(o), folder / f"eig_{c.slug}.png",
-             f"{THESIS_NAMES[c.bike]}, {THESIS_NAMES[c.rider].lower()} rider, {STIFFNESS_NAMES[c.stiffness]}"
+             f"{THESIS_NAMES[c.bike]}, {rider_words(c.rider)}, {STIFFNESS_NAMES[c.stiffness]}"
              if not c.is_benchmark else "Benchmark bicycle (Meijaard et al. 2007)")
             for c, o in outcomes.items()]
+
+
+def rider_words(rider):
+    """A rider in a title: "relaxed rider", "no rider" (not "no rider rider")."""
+    return "no rider" if rider == "none" else f"{THESIS_NAMES[rider].lower()} rider"
 
 
 def pose_jobs(bicycle, riders, folder):
