@@ -16,6 +16,8 @@ A job is ``(function, *arguments, path, title)``; ``function(*arguments, title)`
 the Figure.
 """
 
+import threading
+
 from ..core.output import write_atomic
 from ..rider import THESIS_POSES
 from .configurations import BICYCLES, THESIS_NAMES, configurations
@@ -104,9 +106,37 @@ def draw_critical(results, title):
 
 
 def draw_eigenvalues(modes, critical, title):
+    """The eigenvalue figure, drawn on this process's kept figure (:func:`kept_figure`)."""
     # lazy: plots/ loads matplotlib (slower to import than numpy); study --no-figures runs without it
-    from ..plots.stability import eigenvalue_figure
-    return eigenvalue_figure(modes, critical, title)
+    from ..plots.stability import SIZE, clear_axes, draw_eigenvalues as draw
+    fig = kept_figure("eigenvalues", SIZE)
+    clear_axes(fig.axes[0])
+    draw(fig.axes[0], modes, critical, title)
+    return fig
+
+
+KEPT: dict = {}
+"""``{kind: (Figure, its layout engine)}``: one figure of one axes per kind of figure drawn in this
+process (:func:`kept_figure`), used only while :data:`DRAWING` is held."""
+DRAWING = threading.Lock()
+"""Held by :func:`run_job` from drawing a figure to writing it: a kept figure serves one job at a time."""
+
+
+def kept_figure(kind, size):
+    """The figure of ``kind`` kept in :data:`KEPT` (made at ``size`` inches, one axes, the first
+    time), its layout engine put back (:func:`~bikemass.plots.figure.png_bytes` takes it off to
+    draw at fixed margins). Each of the 73 eigenvalue figures would otherwise make a Figure, its
+    Axes and their ticks anew: a quarter of drawing it."""
+    # lazy: plots/ loads matplotlib (slower to import than numpy); study --no-figures runs without it
+    from ..plots.figure import new_figure
+    if kind not in KEPT:
+        fig = new_figure(size)
+        fig.subplots()
+        KEPT[kind] = fig, fig.get_layout_engine()
+    fig, engine = KEPT[kind]
+    fig.set_layout_engine(engine)
+    fig.axes[0].set_in_layout(True)
+    return fig
 
 
 def draw_handling(results, stable, title):
@@ -142,5 +172,7 @@ def run_job(job):
     # lazy: plots/ loads matplotlib (slower to import than numpy); study --no-figures runs without it
     from ..plots.figure import png_bytes
     function, *args, path, title = job
-    write_atomic(path, png_bytes(function(*args, title), margins=MARGINS.get(function.__name__)))
+    with DRAWING:
+        data = png_bytes(function(*args, title), margins=MARGINS.get(function.__name__))
+    write_atomic(path, data)
     return path
