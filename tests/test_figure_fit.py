@@ -323,3 +323,30 @@ def test_margins_no_figure_fits_fall_back_to_constrained_layout(tmp_path):
     columns = [_left_spine_column(matplotlib.image.imread(str(p))) for p in (fixed, free)]
     assert abs(columns[0] - columns[1]) <= 1
     assert _edges_blank(fixed)
+
+
+@pytest.mark.parametrize("face", ["white", "none"])
+def test_png_bytes_decodes_to_matplotlibs_own_png(face):
+    """png_bytes writes its PNG itself (rows unfiltered, zlib): decoded by Pillow, the pixels
+    (RGB for an opaque figure, RGBA for a transparent one) equal those of matplotlib's own PNG
+    writer (savefig) exactly, and the resolution is the dpi (100, within Pillow's rounding of
+    pixels per metre: 0.01)."""
+    from io import BytesIO
+
+    from PIL import Image
+
+    from bikemass.plots.figure import png_bytes
+
+    def figure():
+        fig = _eigenvalue_figure()
+        fig.set_facecolor(face)
+        return fig
+    ours = Image.open(BytesIO(png_bytes(figure(), 100)))
+    theirs = BytesIO()
+    figure().savefig(theirs, format="png", dpi=100)
+    reference = np.asarray(Image.open(theirs).convert("RGBA"))
+    assert ours.mode == ("RGB" if face == "white" else "RGBA")
+    assert np.array_equal(np.asarray(ours.convert("RGBA")), reference)
+    assert ours.info["dpi"] == pytest.approx((100, 100), abs=0.01)
+    if face == "none":
+        assert np.asarray(ours)[0, 0, 3] == 0

@@ -7,8 +7,10 @@ No pyplot and no ``matplotlib.use``: the caller's backend and open figures are l
 
 import math
 import os
+import struct
 import textwrap
 import threading
+import zlib
 from io import BytesIO
 from pathlib import Path
 
@@ -17,7 +19,6 @@ from matplotlib import figure, rc_context
 from matplotlib.backend_bases import FigureCanvasBase
 from matplotlib.layout_engine import ConstrainedLayoutEngine
 from matplotlib.backends.backend_agg import FigureCanvasAgg, RendererAgg
-from PIL import Image
 
 from ..core.errors import InputError, short, wrong_type
 from ..core.output import write_atomic
@@ -35,9 +36,9 @@ RENDERING = threading.Lock()
 draw and restores them, and matplotlib's mathtext parser is not thread-safe (matplotlib 3.7 fails
 on ``$v$`` drawn in two threads at once), so the web server's callbacks draw one at a time."""
 PNG_COMPRESSION = 1
-"""zlib level of the PNG files written (Pillow's ``compress_level``): an opaque figure is
-written as RGB at level 1, about as small as matplotlib's RGBA at its level 6 and three times
-faster to encode (16 against 48 ms for a 1050 x 690 eigenvalue figure here)."""
+"""zlib level of the PNG files written, their rows unfiltered: an opaque eigenvalue figure (1050 x
+690, written as RGB) in 9 ms and 84 kB here, where Pillow (adaptive row filters) took 17 ms for
+94 kB at its level 1 and matplotlib's own writer (RGBA, level 6) 48 ms."""
 RENDERERS: dict[tuple, object] = {}
 """``{(width px, height px, dpi): RendererAgg}``: the Agg renderers raster figures are drawn with,
 one per canvas size and kept (at most :data:`MAX_RENDERERS`), used only while :data:`RENDERING` is
@@ -370,14 +371,24 @@ def png_bytes(fig, dpi=DPI, margins=None):
 
 def _png(rgba, fig, dpi):
     """PNG of the raw RGBA pixels matplotlib drew of ``fig`` at ``dpi``: RGB where every pixel
-    is opaque (no alpha channel to store), else RGBA; :data:`PNG_COMPRESSION`."""
+    is opaque (no alpha channel to store), else RGBA; no row filter, zlib at
+    :data:`PNG_COMPRESSION`; the resolution in a ``pHYs`` chunk."""
     width, height = _canvas_size(len(rgba) // 4, *(inches * dpi for inches in fig.get_size_inches()))
-    pixels = np.frombuffer(rgba, np.uint8).reshape(height, width, 4)
-    opaque = bool((pixels[:, :, 3] == 255).all())
-    image = Image.fromarray(np.ascontiguousarray(pixels[:, :, :3]) if opaque else pixels)   # RGB or RGBA by shape
-    out = BytesIO()
-    image.save(out, format="png", compress_level=PNG_COMPRESSION, dpi=(dpi, dpi))
-    return out.getvalue()
+    opaque = bool((np.frombuffer(rgba, "<u4") >= 0xFF000000).all())       # alpha, the last byte, 255
+    channels = 3 if opaque else 4
+    rows = np.zeros((height, 1 + width * channels), np.uint8)            # a 0 (no filter) before each row
+    rows[:, 1:].reshape(height, width, channels)[...] = np.frombuffer(rgba, np.uint8).reshape(
+        height, width, 4)[:, :, :channels]
+    per_metre = int(dpi / 0.0254 + 0.5)
+    return b"".join([b"\x89PNG\r\n\x1a\n",
+                     _chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2 if opaque else 6, 0, 0, 0)),
+                     _chunk(b"pHYs", struct.pack(">IIB", per_metre, per_metre, 1)),
+                     _chunk(b"IDAT", zlib.compress(rows, PNG_COMPRESSION)), _chunk(b"IEND", b"")])
+
+
+def _chunk(kind, data):
+    """A PNG chunk: length, type, data, CRC-32 of type and data."""
+    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
 
 
 def _canvas_size(pixels, width, height):
