@@ -350,3 +350,21 @@ def test_png_bytes_decodes_to_matplotlibs_own_png(face):
     assert ours.info["dpi"] == pytest.approx((100, 100), abs=0.01)
     if face == "none":
         assert np.asarray(ours)[0, 0, 3] == 0
+
+
+def test_no_stable_speed_note_overlaps_no_value():
+    """plot_critical_speeds writes "no stable speed" right of a row's marks and values, not over
+    the value written left of a mark near the axis's start (the study's Cargo with the
+    aluminium frame: "no stable speed6.00"): no two texts' boxes (renderer-measured) overlap."""
+    from bikemass.plots.stability import CriticalSpeeds
+    results = {"near the start": {"a": CriticalSpeeds(capsize=(1.2,)), "b": CriticalSpeeds(weave=(9.0,), capsize=(5.0,))},
+               "stable": {"a": CriticalSpeeds(weave=(4.0,), capsize=(8.0,), stable=((4.0, 8.0),))},
+               "nothing": {"a": CriticalSpeeds()}}
+    fig = bm.plot_critical_speeds(results)
+    fig.draw_without_rendering()
+    renderer = RendererAgg(int(fig.bbox.width), int(fig.bbox.height), fig.dpi)
+    texts = fig.axes[0].texts
+    notes = [t for t in texts if t.get_text() == "no stable speed"]
+    assert len(notes) == 3
+    boxes = [t.get_window_extent(renderer) for t in texts]
+    assert not any(a.overlaps(b) for i, a in enumerate(boxes) for b in boxes[i + 1:])
