@@ -317,8 +317,9 @@ def png_bytes(fig, dpi=DPI, margins=None):
     and its pixels looked at: if nothing is drawn within the padding constrained layout keeps at
     each edge (``w_pad``, ``h_pad``), that is the figure. Otherwise its labels, ticks, legend and
     texts are measured (as constrained layout measures them), the margins they need more room at
-    are widened to it (reach plus padding) and the figure drawn again; only if that fails too is
-    it laid out by constrained layout. So every figure fits as constrained layout would fit it,
+    are widened to it (reach plus padding) and the figure drawn again (and once more, measured
+    again, if a text placed at a data point moved outwards as the axes narrowed); only if that
+    fails too is it laid out by constrained layout. So every figure fits as constrained layout would fit it,
     and figures of one kind given the same margins have their axes at the same place where their
     labels fit in them.
 
@@ -355,7 +356,8 @@ def png_bytes(fig, dpi=DPI, margins=None):
             pads = engine.get()
             pads = (pads["w_pad"], pads["h_pad"]) * 2                  # inches: left, bottom, right, top
             fig.set_layout_engine(None)
-            for _ in range(2):                     # the kind's margins, then those the labels need
+            for _ in range(3):                     # the kind's margins, then those the labels need (twice:
+                                                   # a text at a data point moves as the axes narrow)
                 if fig.get_layout_engine() is not None or not _placed(fig, margins):
                     break
                 rgba = _rgba(fig, dpi)
