@@ -105,3 +105,25 @@ def test_figure_count_matches_the_jobs(tmp_path, inputs):
                                        flexible=flexible), inputs, tmp_path)
     assert len(jobs) == figures.figure_count() == 2 * 3 + 73 + 5 + 2 + 1
     assert len({figures.job_path(job) for job in jobs}) == len(jobs)          # every figure has its own file
+
+
+def test_contract_an_eigenvalue_figure_drawn_on_the_kept_figure_is_a_new_figures_pixels(tmp_path, inputs):
+    """Contract test (the code against itself): the study draws its eigenvalue figures on one kept
+    figure per process (figures.kept_figure). A figure drawn there after another configuration's
+    (the Cargo with no rider: a wider legend and an off-scale note, so its right margin widens)
+    has exactly the pixels of the same figure drawn on a new Figure; and its title says "no rider"."""
+    from io import BytesIO
+
+    from PIL import Image
+
+    from bikemass.plots.figure import png_bytes
+    from bikemass.plots.stability import eigenvalue_figure
+    configs = [Configuration("jamis", "relaxed", "infinite"), Configuration("cargo", "none", "steel")]
+    outcomes = {c: evaluate(c, inputs.parameters(CORRECTED, c), None, exact=True) for c in configs}
+    jobs = figures.eigenvalue_jobs(outcomes, tmp_path)
+    assert jobs[1][-1] == "Cargo, no rider, steel frame"
+    margins = figures.MARGINS["draw_eigenvalues"]
+    for job in (jobs[0], jobs[1], jobs[0], jobs[1]):
+        kept = np.asarray(Image.open(figures.run_job(job)))
+        new = np.asarray(Image.open(BytesIO(png_bytes(eigenvalue_figure(*job[1:-2], job[-1]), margins=margins))))
+        assert kept.shape == new.shape == (690, 1050, 3) and (kept == new).all()

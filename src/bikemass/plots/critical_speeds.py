@@ -23,11 +23,29 @@ def series_colours(count):
 
 
 def _write_values(ax, speeds, y, xlim):
-    """Each speed beside its mark: the first to the left, the others to the right."""
+    """Each speed beside its mark: the first to the left, the others to the right; returns the
+    texts written to the right."""
+    right = []
     for k, v in enumerate(speeds):
         if xlim[0] <= v <= xlim[1]:
-            ax.annotate(f"{v:.2f}", (v, y), xytext=(5 if k else -5, 0), textcoords="offset points",
-                        ha="left" if k else "right", va="center", fontsize=6.5)
+            text = ax.annotate(f"{v:.2f}", (v, y), xytext=(5 if k else -5, 0), textcoords="offset points",
+                               ha="left" if k else "right", va="center", fontsize=6.5)
+            if k:
+                right.append(text)
+    return right
+
+
+def _no_stable_speed(ax, y, marks, after, xlim):
+    """The note "no stable speed" on a row: right of its last value written right of a mark
+    (``after``), else right of its last mark inside ``xlim``, else at the axis's left end (never
+    over the value written left of the first mark)."""
+    style = dict(textcoords="offset points", va="center", fontsize=6.5, color="0.4")
+    inside = [v for v in marks if xlim[0] <= v <= xlim[1]]
+    if after:
+        return ax.annotate("no stable speed", (1.0, 0.5), xycoords=after[-1], xytext=(6, 0), **style)
+    if inside:
+        return ax.annotate("no stable speed", (max(inside), y), xytext=(7, 0), **style)
+    return ax.annotate("no stable speed", (xlim[0], y), xytext=(4, 0), **style)
 
 
 def plot_critical_speeds(results: "Mapping[str, Mapping[str, StabilityResult | CriticalSpeeds]]", title: str = "",
@@ -106,11 +124,10 @@ def plot_critical_speeds(results: "Mapping[str, Mapping[str, StabilityResult | C
             for speeds, marker in ((c.weave, WEAVE_MARKER), (c.capsize, CAPSIZE_MARKER)):
                 ax.plot(speeds, [y] * len(speeds), marker, color=colour, markeredgecolor="k", markersize=5,
                         markeredgewidth=0.6, zorder=3, linestyle="none")
-            if values:
-                _write_values(ax, sorted((*c.weave, *c.capsize)) or [v for r in c.stable for v in r], y, xlim)
+            after = (_write_values(ax, sorted((*c.weave, *c.capsize)) or [v for r in c.stable for v in r], y, xlim)
+                     if values else [])
             if not c.stable:
-                ax.annotate("no stable speed", (xlim[0], y), xytext=(4, 0),
-                            textcoords="offset points", va="center", fontsize=6.5, color="0.4")
+                _no_stable_speed(ax, y, (*c.weave, *c.capsize), after, xlim)
     if len(rows) > 1:
         for i in range(len(rows) - 1):
             ax.axhline(i + 0.5, color="0.85", lw=0.6)
@@ -128,5 +145,5 @@ def plot_critical_speeds(results: "Mapping[str, Mapping[str, StabilityResult | C
     ax.plot([], [], "-", lw=4.5, alpha=0.45, color="0.5", label="stable speeds")
     ax.legend(fontsize=7.5, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0, frameon=False)
     if title:
-        ax.set_title(title, fontsize=10)
+        ax.set_title(title, fontsize=10, y=1.0)    # y given: matplotlib skips re-measuring the axes to place it
     return fig

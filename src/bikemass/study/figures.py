@@ -16,6 +16,8 @@ A job is ``(function, *arguments, path, title)``; ``function(*arguments, title)`
 the Figure.
 """
 
+import threading
+
 from ..core.output import write_atomic
 from ..rider import THESIS_POSES
 from .configurations import BICYCLES, THESIS_NAMES, configurations
@@ -58,9 +60,14 @@ def critical_jobs(outcomes, folder, suffix="", run_title="corrected run"):
 def eigenvalue_jobs(outcomes, folder):
     """Jobs drawing each configuration's eigenvalues against speed."""
     return [(draw_eigenvalues, o.modes, critical_speeds(o), folder / f"eig_{c.slug}.png",
-             f"{THESIS_NAMES[c.bike]}, {THESIS_NAMES[c.rider].lower()} rider, {STIFFNESS_NAMES[c.stiffness]}"
+             f"{THESIS_NAMES[c.bike]}, {rider_words(c.rider)}, {STIFFNESS_NAMES[c.stiffness]}"
              if not c.is_benchmark else "Benchmark bicycle (Meijaard et al. 2007)")
             for c, o in outcomes.items()]
+
+
+def rider_words(rider):
+    """A rider in a title: "relaxed rider", "no rider" (not "no rider rider")."""
+    return "no rider" if rider == "none" else f"{THESIS_NAMES[rider].lower()} rider"
 
 
 def pose_jobs(bicycle, riders, folder):
@@ -99,9 +106,37 @@ def draw_critical(results, title):
 
 
 def draw_eigenvalues(modes, critical, title):
+    """The eigenvalue figure, drawn on this process's kept figure (:func:`kept_figure`)."""
     # lazy: plots/ loads matplotlib (slower to import than numpy); study --no-figures runs without it
-    from ..plots.stability import eigenvalue_figure
-    return eigenvalue_figure(modes, critical, title)
+    from ..plots.stability import SIZE, clear_axes, draw_eigenvalues as draw
+    fig = kept_figure("eigenvalues", SIZE)
+    clear_axes(fig.axes[0])
+    draw(fig.axes[0], modes, critical, title)
+    return fig
+
+
+KEPT: dict = {}
+"""``{kind: (Figure, its layout engine)}``: one figure of one axes per kind of figure drawn in this
+process (:func:`kept_figure`), used only while :data:`DRAWING` is held."""
+DRAWING = threading.Lock()
+"""Held by :func:`run_job` from drawing a figure to writing it: a kept figure serves one job at a time."""
+
+
+def kept_figure(kind, size):
+    """The figure of ``kind`` kept in :data:`KEPT` (made at ``size`` inches, one axes, the first
+    time), its layout engine put back (:func:`~bikemass.plots.figure.png_bytes` takes it off to
+    draw at fixed margins). Each of the 73 eigenvalue figures would otherwise make a Figure, its
+    Axes and their ticks anew: a quarter of drawing it."""
+    # lazy: plots/ loads matplotlib (slower to import than numpy); study --no-figures runs without it
+    from ..plots.figure import new_figure
+    if kind not in KEPT:
+        fig = new_figure(size)
+        fig.subplots()
+        KEPT[kind] = fig, fig.get_layout_engine()
+    fig, engine = KEPT[kind]
+    fig.set_layout_engine(engine)
+    fig.axes[0].set_in_layout(True)
+    return fig
 
 
 def draw_handling(results, stable, title):
@@ -125,10 +160,11 @@ def job_path(job):
     return job[-2]
 
 
-MARGINS = {"draw_eigenvalues": (0.68, 0.48, 2.04, 0.24), "draw_critical": (0.78, 0.48, 1.39, 0.24)}
+MARGINS = {"draw_eigenvalues": (0.78, 0.48, 2.04, 0.24), "draw_critical": (0.78, 0.48, 1.39, 0.24)}
 """Margins (inches: left, bottom, right, top) of the figures drawn at a fixed layout
 (:func:`~bikemass.plots.figure.png_bytes`): room for the labels and legends of most of the study's
-figures of the kind (the others are laid out for themselves)."""
+figures of the kind (63 of the 73 eigenvalue figures, 5 of the 6 critical-speed figures; the others
+have the side their legend or note needs more room at widened to it and are drawn again)."""
 
 
 def run_job(job):
@@ -136,5 +172,7 @@ def run_job(job):
     # lazy: plots/ loads matplotlib (slower to import than numpy); study --no-figures runs without it
     from ..plots.figure import png_bytes
     function, *args, path, title = job
-    write_atomic(path, png_bytes(function(*args, title), margins=MARGINS.get(function.__name__)))
+    with DRAWING:
+        data = png_bytes(function(*args, title), margins=MARGINS.get(function.__name__))
+    write_atomic(path, data)
     return path
