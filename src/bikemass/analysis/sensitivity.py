@@ -30,7 +30,7 @@ from numpy.typing import ArrayLike
 from types import SimpleNamespace
 
 from ..core.tables import Table
-from ..models.canonical import canonical_entries
+from ..models.whipple_generated import second_order_entries
 from ..models.parameters import NAMES, parameter_units
 from .engine import closed_form, scalar
 from .engine.crossings import OSCILLATORY, REAL
@@ -273,7 +273,7 @@ def _batch_pieces(columns, S):
     """closed_form.pieces of the Whipple bicycle of ``columns`` (complex arrays (B,) of the 26
     parameters), with stacked rear-frame stiffness ``S`` (B, 2, 2) or None."""
     M, C1, K0, K2 = (np.moveaxis(np.array(np.broadcast_arrays(*[x for row in m for x in row])).reshape(2, 2, -1),
-                                 -1, 0) for m in canonical_entries(SimpleNamespace(**columns)))
+                                 -1, 0) for m in second_order_entries(SimpleNamespace(**columns)))
     G = columns["g"][:, None, None] * K0
     if S is not None:
         G = G - np.swapaxes(G, -1, -2) @ np.linalg.solve(G + S, G)

@@ -3,10 +3,7 @@
 The hand-written formulas of the paper: the TEST ORACLE of the run-time path, which takes the
 matrices from the generated model family's code (:mod:`bikemass.models.whipple_generated`;
 tests/test_whipple_generated.py holds the two equal).  :class:`CanonicalMatrices` (the result type)
-is shared by both.  Run-time users of these formulas that remain: the complex-step batch of
-:mod:`bikemass.analysis.sensitivity` and the steady turn of :mod:`bikemass.analysis.nonlinear.turn`
-(outside this change; the same contract as
-:func:`~bikemass.models.whipple_generated.second_order_entries`, so each is a one-line switch).
+is shared by both; nothing else of this module runs outside the tests.
 
 Equations of motion about the upright straight run at speed ``v`` (m/s)::
 

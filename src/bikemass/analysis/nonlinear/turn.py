@@ -33,7 +33,7 @@ from ...core.real import finite_real
 from ...core.errors import BikemassWarning, InputError, short, wrong_type
 from ...core.frozen import readonly, short_repr
 from ...core.limits import MAX_SPEED
-from ...models.canonical import canonical_matrices
+from ...models.whipple_generated import whipple_matrices
 from ...models.nonlinear import ConstraintError, NonlinearWhipple
 from ...models.parameters import BenchmarkParameters
 
@@ -175,7 +175,7 @@ def _yaw_rate(bike, roll, steer, speed):
 
 def _linear(parameters, speed, steer):
     """The linear model's ``(roll, steer torque)`` at ``steer`` (rad) and ``speed``."""
-    m = canonical_matrices(parameters)
+    m = whipple_matrices(parameters)
     K = m.g * m.K0 + speed ** 2 * m.K2
     roll = -K[0, 1] * steer / K[0, 0]
     return roll, K[1, 0] * roll + K[1, 1] * steer
@@ -279,7 +279,7 @@ def steady_turn(system: "BenchmarkParameters | Scenario | Built", speed: float, 
 def capsize_speed(parameters):
     """The speed (m/s) at which ``det(g K0 + v^2 K2)`` vanishes (the linear capsize speed of a bicycle
     like the benchmark's), or NaN if it does not."""
-    m = canonical_matrices(parameters)
+    m = whipple_matrices(parameters)
     a, b = m.g * m.K0, m.K2
     # det(a + s b) = 0, s = v^2: a quadratic in s
     c2 = b[0, 0] * b[1, 1] - b[0, 1] * b[1, 0]
