@@ -115,12 +115,13 @@ def test_readme_help_and_code_state_one_root_accuracy():
 
 def _exact_speeds(p):
     """Weave and capsize speeds of parameter set ``p`` by mpmath at 40 digits from the characteristic
-    quartic det(M s^2 + v C1 s + g K0 + v^2 K2) of its canonical matrices: the capsize speed where
+    quartic det(M s^2 + v C1 s + g K0 + v^2 K2) of the canonical matrices the analysis takes (from the
+    generated family's code; tests/test_whipple_generated.py holds them to the hand-written formulas): the capsize speed where
     the constant coefficient vanishes (Newton), the weave speed where the real part of the
     oscillatory root pair nearest the imaginary axis changes sign (bisection to 1e-30 m/s)."""
-    from bikemass.models.canonical import canonical_matrices
+    from bikemass.models.whipple_generated import whipple_matrices
     mp.mp.dps = 40
-    c = canonical_matrices(p)
+    c = whipple_matrices(p)
     M, C1, K0, K2 = (mp.matrix([[mp.mpf(float(x)) for x in row] for row in np.asarray(m)])
                      for m in (c.M, c.C1, c.K0, c.K2))
     g = mp.mpf(float(p.g))

@@ -14,6 +14,7 @@ from bikemass.scenario.scenario import parameters as scenario_parameters
 from bikemass.scenario.scenario import Scenario
 from bikemass.analysis.uncertainty import Spread, propagate
 from bikemass.cli.main import main
+import bikemass as bm
 
 BP_DATA = Path(bicycleparameters.__file__).parent / "app-data"
 BROWSER = BP_DATA / "bicycles" / "Browser" / "Parameters" / "BrowserBenchmark.txt"
@@ -144,3 +145,26 @@ def test_uncertainty_speaks_the_dialect(tmp_path, capsys):
     assert main(base + ["-o", str(tmp_path / "u.csv")]) == 0
     assert capsys.readouterr().out == ""
     assert (tmp_path / "u.csv").read_text().startswith("quantity,unit,nominal,std")
+
+
+def test_a_members_matrices_spread_as_a_high_precision_difference_says():
+    """A member's propagation reports its state matrix's coefficients A0, A1, A2 (the dynamic block of
+    A0 + v A1 + v^2 A2); their linear std is |dA/dx| std, checked against a Richardson-extrapolated central
+    difference through the builder (1e-7 relative: the difference's truncation error)."""
+    from bikemass.analysis.uncertainty import coefficients_of
+    scenario = bm.Scenario("benchmark", model="tyre")
+    std = {"c": 0.001, "w": 0.01}
+    for key, sigma in std.items():
+        u = bm.uncertainty(scenario, {key: sigma})
+        x = scenario.value(key)
+
+        def diff(h):
+            a, b = coefficients_of(scenario.build({key: x + h}).model), coefficients_of(scenario.build({key: x - h}).model)
+            return {k: (a[k] - b[k]) / (2 * h) for k in a}
+        coarse, fine = diff(1e-3 * abs(x)), diff(5e-4 * abs(x))
+        for name in ("A0", "A1", "A2"):
+            reference = np.abs((4 * fine[name] - coarse[name]) / 3) * sigma
+            scale = max(np.abs(reference).max(), 1e-300)
+            np.testing.assert_allclose(u.matrices[name]["std"], reference, rtol=0, atol=1e-7 * scale)
+            np.testing.assert_allclose(u.matrices[name]["nominal"], coefficients_of(scenario.build().model)[name],
+                                       rtol=0, atol=0)

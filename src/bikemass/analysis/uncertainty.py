@@ -14,9 +14,11 @@ the 26 benchmark names or a geometry-level key of :mod:`bikemass.scenario.inputs
 
 That is the Whipple model's way (``M``, ``C1``, ``K0``, ``K2`` are its 2x2 matrices).  Any other
 member of the family (a :class:`~bikemass.scenario.scenario.Scenario` with ``model=``) goes through
-the engine: ``linear`` takes each input's ``dA/dx`` (the dynamic block, at every speed) by a central
-difference through the builder, and ``montecarlo`` builds every draw; there is no 2x2 ``matrices``
-block (the model's own coordinates are more than roll and steer).
+the engine: ``linear`` takes each input's ``dA/dx`` (the dynamic block, at every speed) by the complex
+step through the generated code for a parameter of the model's code (exact) or a central difference
+through the builder for a design input, and ``montecarlo`` builds every draw; its ``matrices`` are the
+dynamic block's coefficients ``A0, A1, A2`` of ``A(v) = A0 + v A1 + v**2 A2`` (the model's own
+coordinates are more than roll and steer).
 
 They agree while the outputs are close to linear over a few standard deviations.  They
 cannot agree where an eigenvalue is not differentiable: where two real roots merge into
@@ -225,6 +227,38 @@ def matrices_of(model, g):
     return {"M": mech.M, "C1": mech.C[1], "K0": mech.K[0] / g, "K2": mech.K[2]}
 
 
+STATE_COEFFICIENTS = ("A0", "A1", "A2")
+"""A member's matrices in a propagation: the dynamic block of ``A(v) = A0 + v A1 + v**2 A2``."""
+
+
+def coefficients_of(model):
+    """``{"A0", "A1", "A2"}``: the dynamic block of a model's state matrix, coefficient by power of the speed
+    (zero beyond its degree)."""
+    n = model.n_dynamic
+    A = np.asarray(model.A)[:, :n, :n]
+    return {name: A[k] if k < len(A) else np.zeros((n, n)) for k, name in enumerate(STATE_COEFFICIENTS)}
+
+
+def model_matrices(built):
+    """The matrices a propagation reports for a built scenario: the Whipple bicycle's ``M, C1, K0, K2``, or a
+    member's state-matrix coefficients (:func:`coefficients_of`)."""
+    if built.choice.members:
+        return coefficients_of(built.model)
+    return matrices_of(built.model, built.parameters.g)
+
+
+_COEFFICIENT_SPEEDS = np.array([0.0, 1.0, 2.0])
+"""Speeds (m/s) at which a member's derivative of ``A(v)`` is taken to give its coefficients' (exact for
+the quadratic ``A(v)``: ``dA0 = dA(0)``, ``dA2 = (dA(2) - 2 dA(1) + dA(0)) / 2``, ``dA1 = dA(1) - dA0 - dA2``)."""
+
+
+def _coefficient_derivatives(dA):
+    """``{"A0", "A1", "A2"}`` of a member's ``dA`` at :data:`_COEFFICIENT_SPEEDS`."""
+    a0 = dA[0]
+    a2 = (dA[2] - 2 * dA[1] + dA[0]) / 2
+    return dict(zip(STATE_COEFFICIENTS, (a0, dA[1] - a0 - a2, a2)))
+
+
 @dataclass(frozen=True)
 class Estimate(Result):
     """A critical speed's estimate: its ``nominal`` value and standard deviation ``std`` (m/s;
@@ -287,7 +321,9 @@ class Estimate(Result):
         return iter(self.to_dict())
 
 
-MATRICES_UNIT = "each matrix's, as CanonicalMatrices declares it"
+STATE_UNITS = "SI (each entry's from its row and column states)"
+"""The unit of a member's state-matrix coefficients in a propagation."""
+MATRICES_UNIT = "each matrix's, as CanonicalMatrices declares it (a member's state-matrix coefficients: SI)"
 """What :attr:`Propagation.matrices` is declared in: each matrix in its own unit (:func:`propagation_units`)."""
 
 
@@ -298,7 +334,7 @@ def propagation_units():
     :attr:`Propagation.eigen` is declared (1/s)."""
     speed = Estimate.field_units()["nominal"]
     return {**{k: u for k, u in CanonicalMatrices.field_units().items() if k != "g"},
-            "weave_speed": speed, "capsize_speed": speed, "eigenvalues": Propagation.field_units()["eigen"]}
+            **{k: STATE_UNITS for k in STATE_COEFFICIENTS}, "weave_speed": speed, "capsize_speed": speed, "eigenvalues": Propagation.field_units()["eigen"]}
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -309,7 +345,9 @@ class Propagation(Result):
     Attributes
     ----------
     matrices : mapping
-        ``{M|C1|K0|K2: {"nominal": 2x2, "std": 2x2, ...}}`` (the method's std), each in its unit as
+        ``{M|C1|K0|K2: {"nominal": 2x2, "std": 2x2, ...}}`` (the method's std; for a member other than the
+        Whipple bicycle ``{A0|A1|A2: ...}``, the dynamic block of its state matrix ``A0 + v A1 + v**2 A2``),
+        each in its unit as
         :class:`~bikemass.models.canonical.CanonicalMatrices` declares it; empty for a member other
         than the Whipple bicycle.
     speeds : mapping
@@ -432,7 +470,8 @@ def first_crossings(model, speeds):
 
 
 def member_derivatives(scenario, built, spreads, speeds, step):
-    """As :func:`linear_derivatives`, for a member other than the Whipple bicycle (no matrices)."""
+    """As :func:`linear_derivatives`, for a member other than the Whipple bicycle (its matrices: the state
+    matrix's coefficients, :func:`coefficients_of`)."""
     model0 = built.model
     modes = follow_modes(model0, speeds)
     X = modes.eigenvectors
@@ -441,9 +480,12 @@ def member_derivatives(scenario, built, spreads, speeds, step):
     v = np.asarray(speeds, dtype=float)
     at = {name: np.array([c.speed]) for name, c in crossings.items() if c is not None}
     out = {}
-    for key, dA in member_directions(scenario, spreads, np.concatenate([v, *at.values()]), step).items():
-        d = {"matrices": {}, "eig": np.einsum("nij,njk,nki->ni", Y, dA[:len(v)], X)}
-        ends = dict(zip(at, dA[len(v):]))
+    extra = len(_COEFFICIENT_SPEEDS)
+    for key, dA in member_directions(scenario, spreads, np.concatenate([v, *at.values(), _COEFFICIENT_SPEEDS]),
+                                     step).items():
+        d = {"matrices": _coefficient_derivatives(dA[len(dA) - extra:]),
+             "eig": np.einsum("nij,njk,nki->ni", Y, dA[:len(v)], X)}
+        ends = dict(zip(at, dA[len(v):len(dA) - extra]))
         for name, c in crossings.items():
             d[name] = None if c is None else speed_derivatives(
                 model0, {key: ends[name]}, c.speed, SPEEDS[name], c.frequency)[key]
@@ -468,7 +510,7 @@ def propagate(scenario, spreads, method="linear", samples=1000, seed=0, speeds=N
     sigma = {k: s.std for k, s in spreads.items()}
     if built.choice.members:
         derivs, modes, crossings = member_derivatives(scenario, built, spreads, speeds, step)
-        nominal = {}
+        nominal = coefficients_of(built.model)
     else:
         params, S = built.parameters, built.stiffness
         derivs, modes, crossings = linear_derivatives(params, S, directions(scenario, spreads, step), speeds)
@@ -633,9 +675,8 @@ def _montecarlo(scenario, spreads, n, seed, speeds, matrices, speed_out, eig_mod
         except InputError as exc:            # a draw the model is not defined for: the spread is too wide
             raise InputError(exc.source, exc.key, f"spreads whose Monte Carlo draws stay valid (draw {j + 1} of "
                              f"{n}: {exc.expected})") from None
-        if matrices:                         # the Whipple bicycle's own model: its matrices as built
-            for m, x in matrices_of(built.model, built.parameters.g).items():
-                mats[m].append(np.real(x))
+        for m, x in model_matrices(built).items():      # its matrices as built
+            mats[m].append(np.real(x))
         found = critical_speeds(built.model)
         for name in SPEEDS:
             v = getattr(found, name)

@@ -244,6 +244,12 @@ def uncertainty_units():
     return propagation_units()
 
 
+def _entries(matrix):
+    """``(i, j)`` of every entry of a matrix, row by row (2 x 2 for the Whipple bicycle, a member's more)."""
+    rows, columns = matrix.shape
+    return [(i, j) for i in range(rows) for j in range(columns)]
+
+
 def uncertainty_table(result, title):
     # lazy: the library loads numpy; bikemass --help must not
     from ..core.output import table
@@ -253,10 +259,11 @@ def uncertainty_table(result, title):
     mc = result.method == "montecarlo"
     rows = []
     for name, m in result.matrices.items():
-        for i in range(2):
-            for j in range(2):
-                rows.append([f"{name}[{i},{j}]", m["nominal"][i, j], m["std"][i, j]]
-                            + ([m["linear_std"][i, j]] if mc else []))
+        for i, j in _entries(m["nominal"]):
+            if m["nominal"].shape != (2, 2) and m["nominal"][i, j] == 0 and m["std"][i, j] == 0:
+                continue                  # a member's state matrix: its structural zeros are left out here
+            rows.append([f"{name}[{i},{j}]", m["nominal"][i, j], m["std"][i, j]]
+                        + ([m["linear_std"][i, j]] if mc else []))
     lines.append(table(["matrix entry", "nominal", "std" + (" (MC)" if mc else ""), *(["std (linear)"] if mc else [])],
                        rows, floatfmt="{:.6g}"))
     rows = []
@@ -278,7 +285,7 @@ def uncertainty_csv(result):
     units = uncertainty_units()
     rows = [[f"{name}[{i},{j}]", units[name], m["nominal"][i, j], m["std"][i, j]]
             + ([m["linear_std"][i, j], None, None, None, None] if mc else [])
-            for name, m in result.matrices.items() for i in range(2) for j in range(2)]
+            for name, m in result.matrices.items() for i, j in _entries(m["nominal"])]
     rows += [[name, "m/s", s.nominal, s.std] + [getattr(s, k) for k in extra] for name, s in result.speeds.items()]
     return dialect.csv_text(["quantity", "unit", "nominal", "std", *extra], rows)
 
