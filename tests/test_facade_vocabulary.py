@@ -55,3 +55,18 @@ def test_contract_every_analysis_takes_a_scenario_as_its_subject():
     assert by_scenario.roll == by_set.roll and by_scenario.steer_torque == by_set.steer_torque
     with pytest.raises(TypeError, match="system"):
         bm.steady_turn("benchmark", 5.0, radius=10.0)
+
+
+def test_every_returned_type_is_exported():
+    """Each bikemass class a facade function is annotated to return is a name of the facade itself."""
+    import typing
+    exported = {id(getattr(bm, name)) for name in bm.__all__ if name != "__version__"}
+    missing = []
+    for name in bm.__all__:
+        function = getattr(bm, name, None)
+        if inspect.isfunction(function):
+            returned = typing.get_type_hints(function).get("return")
+            for kind in typing.get_args(returned) or (returned,):
+                if isinstance(kind, type) and kind.__module__.startswith("bikemass") and id(kind) not in exported:
+                    missing.append(f"{name} -> {kind.__module__}.{kind.__name__}")
+    assert missing == []

@@ -28,6 +28,8 @@ __version__ = "0.2.0"
 _API = {
     "load_bicycle": "scenario.loading", "load_rider": "scenario.loading", "parameters": "scenario.scenario",
     "Scenario": "scenario.scenario", "Built": "scenario.scenario",
+    "Modes": "analysis.engine.modes", "CanonicalMatrices": "models.canonical", "Sensitivity": "analysis.sensitivity",
+    "SweepResult": "sweep.result", "Structure": "mass.tubes", "Figure": "plots.figure", "FrameModes": "scenario.frame",
     "stiffness": "scenario.catalog",
     "stability": "analysis.results", "eigenvalues": "analysis.results", "matrices": "analysis.results",
     "speeds": "analysis.results", "linear_model": "analysis.results",
@@ -73,7 +75,7 @@ _API = {
 }
 """Public name -> the module (under ``bikemass``) that defines it."""
 
-_RENAMED = {"PARAMETER_NAMES": "NAMES", "sweep": "run_sweep"}
+_RENAMED = {"PARAMETER_NAMES": "NAMES", "sweep": "run_sweep", "FrameModes": "Modes"}
 
 __all__ = ["__version__", *_API]
 

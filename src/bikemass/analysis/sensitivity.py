@@ -82,7 +82,15 @@ PER_PARAMETER = "m/s per unit of each parameter (SI, angles rad)"
 @dataclass(frozen=True, repr=False)
 class Sensitivity(Result):
     """Critical speeds (m/s, ``None`` if none) and their derivatives ``{name: (m/s) per unit}``
-    (read-only mappings); ``params`` the values differentiated by (SI, each in its own unit)."""
+    (read-only mappings); ``params`` the values differentiated by (SI, each in its own unit).
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> s = bm.sensitivity(bm.parameters("benchmark"))
+    >>> print(type(s).__name__, f"{s.weave_speed:.4f} m/s, d/dc {s.d_weave_speed['c']:.3f}")
+    Sensitivity 4.2924 m/s, d/dc 11.480
+    """
 
     params: Mapping
     weave_speed: float | None = quantity("m/s", "the weave speed (None: none)")

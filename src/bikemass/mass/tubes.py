@@ -42,7 +42,15 @@ class Tube:
 
 @dataclass(frozen=True)
 class Structure:
-    """The rear-frame beam model's topology: structural tubes and support keypoints."""
+    """The rear-frame beam model's topology: structural tubes and support keypoints.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> structure = bm.frame_structure("jamis")
+    >>> print(type(structure).__name__, len(structure.tubes) > 0, structure.dropouts)
+    Structure True ('dropout_left', 'dropout_right')
+    """
 
     tubes: tuple
     dropouts: tuple

@@ -25,7 +25,15 @@ from ..core.frozen import freeze
 
 @dataclass(frozen=True, repr=False)
 class CanonicalMatrices(Result):
-    """``M, C1, K0, K2`` (2x2 read-only arrays) and gravity ``g`` (m/s^2) of one bicycle."""
+    """``M, C1, K0, K2`` (2x2 read-only arrays) and gravity ``g`` (m/s^2) of one bicycle.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> m = bm.matrices(bm.parameters("benchmark"))
+    >>> print(type(m).__name__, m.M.shape, f"{m.M[0, 0]:.6f} {m.units()['M']}")
+    CanonicalMatrices (2, 2) 80.817220 kg m^2
+    """
 
     M: np.ndarray = quantity("kg m^2", "mass matrix")
     C1: np.ndarray = quantity("kg m^2 (per m/s)", "velocity-dependent damping-like matrix (times v)")

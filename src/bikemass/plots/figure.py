@@ -86,6 +86,13 @@ class Figure(figure.Figure):
     IPython knows them only through this class's ``_repr_png_``: the figure drawn by matplotlib's
     Agg canvas at :data:`DISPLAY_DPI`, on demand. Everything else is matplotlib's Figure: save it,
     change its axes, or give it to ``pyplot`` as usual.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> fig = bm.plot_eigenvalues(bm.stability(bm.parameters("benchmark")))
+    >>> print(isinstance(fig, bm.Figure), len(fig.axes) >= 1)
+    True True
     """
 
     def _repr_png_(self):

@@ -19,7 +19,15 @@ from .loading import BicycleLike, load_bicycle
 
 class Modes(Protocol):
     """What :func:`frame_modes` returns, :class:`bikemass.fe.modes.Modes`: a protocol here, so that
-    annotating it does not load the modal solver (scipy.sparse.linalg) with this module."""
+    annotating it does not load the modal solver (scipy.sparse.linalg) with this module.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> modes = bm.frame_modes("jamis", count=2, material="steel")
+    >>> print(type(modes).__name__, len(modes.frequencies_hz))
+    Modes 2
+    """
 
     @property
     def frequencies_hz(self) -> np.ndarray: ...    # (n,) Hz, ascending

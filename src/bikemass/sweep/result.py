@@ -20,6 +20,12 @@ class SweepResult(Sequence, Tabular):
 
     Rows are read back from the chunk files on demand (one chunk kept), so a sweep of any size
     can be returned; :meth:`column` gives one column as an array.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> print(bm.SweepResult.__name__, "column" in dir(bm.SweepResult))
+    SweepResult True
     """
 
     folder: object

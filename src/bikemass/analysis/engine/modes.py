@@ -36,6 +36,13 @@ class Modes(Result):
     Column ``i`` of ``eigenvalues`` (and ``eigenvectors[:, :, i]``) is mode ``labels[i]`` at every
     speed of ``speeds`` (m/s); the states are the model's dynamic states, in its order.  Arrays
     are read-only.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> modes = bm.eigenvalues(bm.parameters("benchmark"), speeds=[0.0, 5.0])
+    >>> print(type(modes).__name__, modes.labels, modes.eigenvalues.shape)
+    Modes ('weave 1', 'weave 2', 'capsize', 'caster') (2, 4)
     """
 
     speeds: np.ndarray = quantity("m/s")
