@@ -188,7 +188,9 @@ def test_member_uncertainty_is_first_order_in_the_spread():
     (wa, _), (wb, _) = crossings(scenario, {key: x + h}), crossings(scenario, {key: x - h})
     assert result.speeds["weave_speed"].nominal == pytest.approx(crossings(scenario)[0], abs=1e-9)
     assert result.speeds["weave_speed"].std == pytest.approx(abs(wa - wb) / (2 * h) * sigma, rel=1e-4)
-    assert result.matrices == {}                        # the 2x2 matrices are the Whipple model's
+    n = scenario.build().model.n_dynamic                  # a member's matrices: its state matrix's coefficients
+    assert sorted(result.matrices) == ["A0", "A1", "A2"]
+    assert all(result.matrices[k]["nominal"].shape == (n, n) for k in result.matrices)
 
 
 def test_a_sweep_row_of_a_member_is_the_member_on_the_changed_parameter_set(tmp_path):

@@ -76,6 +76,19 @@ def summary(name, value):
     return " ".join(doc.split("\n\n")[0].split())
 
 
+def own_members(cls):
+    """``None`` (every documented member) for a class whose public attributes are all bikemass's; for one
+    that carries a library's generated members (a matplotlib Figure's ``set``), the names of bikemass's own
+    public methods and properties only (the library documents its own)."""
+    def ours(member):
+        target = member.fget if isinstance(member, property) else member
+        return getattr(target, "__module__", "bikemass").startswith("bikemass")
+    public = {n: m for n, m in vars(cls).items() if not n.startswith("_") and callable(getattr(m, "fget", m))}
+    if all(ours(m) for m in public.values()):
+        return None
+    return sorted(n for n, m in public.items() if ours(m))
+
+
 def page(name, value):
     """The reST of the reference page of public ``name``."""
     target = f"bikemass.{name}"
@@ -89,7 +102,10 @@ def page(name, value):
     if what == "enum":
         return head + f".. autoclass:: {target}\n   :members:\n   :undoc-members:\n   :member-order: bysource\n"
     if what == "class":
-        return head + f".. autoclass:: {target}\n   :members:\n"
+        own = own_members(value)
+        if own is None:
+            return head + f".. autoclass:: {target}\n   :members:\n"
+        return head + f".. autoclass:: {target}\n" + (f"   :members: {', '.join(own)}\n" if own else "")
     body = "\n".join("   " + line if line else "" for line in attribute_doc(name).splitlines())
     return head + f".. py:data:: {target}\n   :type: {type(value).__name__}\n   :value: {value!r}\n\n{body}\n"
 
