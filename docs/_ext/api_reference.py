@@ -105,7 +105,7 @@ def page(name, value):
         own = own_members(value)
         if own is None:
             return head + f".. autoclass:: {target}\n   :members:\n"
-        return head + f".. autoclass:: {target}\n" + (f"   :members: {', '.join(own)}\n" if own else "")
+        return head + f".. autoclass:: {target}\n" + (f"   :members: {', '.join(own)}\n" if own else "   :no-members:\n")
     body = "\n".join("   " + line if line else "" for line in attribute_doc(name).splitlines())
     return head + f".. py:data:: {target}\n   :type: {type(value).__name__}\n   :value: {value!r}\n\n{body}\n"
 
