@@ -244,11 +244,21 @@ def reorder(values, vectors, order):
             np.take_along_axis(vectors, order[:, None, :], axis=2))
 
 
+SHORT = 512
+"""Up to this many distances (rows x roots x roots) :func:`partners` takes them at once and numpy's
+``argmin`` (the first of equal ones, as :func:`_first_least`)."""
+
+
 def partners(values):
     """Index (n, m) of each root's complex-conjugate partner; a real root is its own partner."""
     m = values.shape[1]
-    d = np.empty(values.shape + (m,))                     # squared distances: the same nearest
     image = values.conj()
+    if values.size * m <= SHORT:                          # a few rows (a sweep's hard steps): at once
+        x = values[:, :, None] - image[:, None, :]
+        d = x.real * x.real + x.imag * x.imag
+        d[:, np.arange(m), np.arange(m)] = np.inf
+        return np.where(values.imag == 0, np.arange(m), np.argmin(d, axis=2))
+    d = np.empty(values.shape + (m,))                     # squared distances: the same nearest
     for i in range(m):                                    # row by row: no (n, m, m) complex temporary, which
         x = values[:, i, None] - image                    # on the default grid would be over glibc's 128 kB
         np.add(x.real * x.real, x.imag * x.imag, out=d[:, i])     # mmap threshold (fresh kernel pages)
