@@ -165,11 +165,12 @@ def _nearest_other(values):
     return out
 
 
-def nearest_steps(values, at=None):
+def nearest_steps(values, at=None, sep=None):
     """``(steps, certain)``: each root's nearest successor at the next speed (n - 1, m) and whether that
     step is certain (n - 1,): the nearest successors are distinct and every root moves by less than
     :data:`CERTAIN_MOVE` of its distance to the nearest other root, at either speed.  ``at`` (k,) asks
-    for those steps alone (rows ``at`` to ``at + 1``)."""
+    for those steps alone (rows ``at`` to ``at + 1``); ``sep`` (n, m), where given, holds the squared
+    distances to the nearest other root (:func:`_nearest_other` of ``values``)."""
     n, m = values.shape
     k = np.arange(n - 1) if at is None else np.asarray(at, dtype=int)
     if not len(k):
@@ -190,9 +191,10 @@ def nearest_steps(values, at=None):
             nearer = d < move
             move = np.where(nearer, d, move)
             steps[nearer] = j
-    rows = np.unique(np.concatenate([k, k + 1]))
-    sep = np.empty((n, m))
-    sep[rows] = _nearest_other(values[rows])
+    if sep is None:
+        rows = np.unique(np.concatenate([k, k + 1]))
+        sep = np.empty((n, m))
+        sep[rows] = _nearest_other(values[rows])
     room = np.minimum(sep[k], np.take_along_axis(sep[k + 1], steps, axis=1))
     distinct = (np.sort(steps, axis=1) == np.arange(m)).all(axis=1)
     certain = distinct & (move < CERTAIN_MOVE ** 2 * room).all(axis=1)
@@ -495,7 +497,7 @@ def _steps_kept(values):
     steps[:] = np.arange(m)
     other = np.flatnonzero(~certain)
     if len(other):
-        steps[other], certain[other] = nearest_steps(values, other)
+        steps[other], certain[other] = nearest_steps(values, other, sep)
     return steps, certain
 
 

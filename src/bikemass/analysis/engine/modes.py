@@ -221,8 +221,10 @@ def _follow_quartic(model, v, families, grid, keep, at):
                                [s.name for s in model.dynamic_states], reference)
     ordered = split_rank(labels)
     columns = [labels.index(label) for label in ordered]
-    order = order[rows, settle_splits(values, labels)][keep][:, columns]
-    values = sweep.values[rows[keep], order]
+    order = order[rows, settle_splits(values, labels)]
+    whole = len(keep) == len(grid)               # speeds from standstill: the naming grid is the grid
+    order = order[:, columns] if whole else order[keep][:, columns]
+    values = sweep.values[rows if whole else rows[keep], order]
     values.setflags(write=False)
     M, C, K = model.mechanics.M, C[keep], K[keep]
     return Modes.lazily(freeze(v), tuple(ordered), values, lambda: quartic_vectors(M, C, K, values))
