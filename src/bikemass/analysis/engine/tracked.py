@@ -36,7 +36,7 @@ class TrackedModes:
 
     def __init__(self, model, modes, at):
         self.model, self.modes, self.at = model, modes, at
-        self._cells, self._guesses = {}, {}
+        self._cells, self._guesses, self._listed = {}, {}, {}
 
     @classmethod
     def up_to(cls, model, lo, top, at):
@@ -96,8 +96,16 @@ class TrackedModes:
         return roots[np.argmin(np.abs(roots - self.guess(v)[column]))]
 
     def column_of(self, v, root):
-        """The column of the mode whose value at ``v`` is nearest ``root``."""
-        return int(np.argmin(np.abs(self.guess(v) - root)))
+        """The column of the mode whose value at ``v`` is nearest ``root`` (the first of equals)."""
+        v = float(v)
+        listed = self._listed.get(v)
+        if listed is None:
+            listed = self._listed[v] = self.guess(v).tolist()
+        root = complex(root)
+        distances = [abs(g - root) for g in listed]        # a handful: plain Python, no numpy calls
+        if all(d == d for d in distances):
+            return distances.index(min(distances))
+        return int(np.argmin(distances))
 
 
 def _far_apart(a, b):
