@@ -52,9 +52,9 @@ def _ferrari(b, c, d, e):
     half, base, shift = s / 2, p / 2 + m, b / 4
     square = half * half
     out = np.empty(b.shape + (4,), dtype=complex)
-    for k, sign in enumerate((1, -1)):
-        disc = np.sqrt(square - (base - sign * h))
-        centre = -sign * half - shift
+    # sign +1 then -1: base -+ h and -+half - shift, the signs applied without a product (exact either way)
+    for k, (inner, centre) in enumerate(((base - h, -half - shift), (base + h, half - shift))):
+        disc = np.sqrt(square - inner)
         np.add(centre, disc, out=out[:, 2 * k])
         np.subtract(centre, disc, out=out[:, 2 * k + 1])
     return out
