@@ -140,6 +140,8 @@ def naming_grid(v, reference=None):
     """``(grid, keep, at)``: the speeds ``v`` (m/s) extended down to standstill, up to ``reference``
     (m/s; ``None``: no reference) or with it inserted, in steps of at most :data:`START_STEP`; the
     indices of ``v`` in the grid and the index of the reference speed (``None`` without one)."""
+    if reference is None and v[0] == 0:          # from standstill, nothing to add: the grid itself
+        return v, np.arange(len(v)), None
     lead = np.linspace(0.0, v[0], int(np.ceil(v[0] / START_STEP)) + 1)[:-1]
     tail = np.empty(0)
     if reference is not None and v[-1] < reference:
