@@ -115,3 +115,19 @@ def test_contract_stability_of_random_variants_is_that_of_the_eigenvector_tracki
                                    rtol=0, atol=1e-12)
         assert fast.ranges["strict"] == slow.ranges["strict"]
         assert dict(fast.mode_ranges) == dict(slow.mode_ranges)
+
+
+@pytest.mark.parametrize("speeds", [[0.0], [5.0], [0.0, 0.05], [2.0, 2.5, 3.0], np.linspace(2.0, 10.0, 161),
+                                    np.linspace(0.0, 30.0, 3001), np.linspace(0.3, 1.2, 50)],
+                         ids=["standstill", "one-speed", "two-speeds", "from-2-coarse", "from-2", "fine", "the-split"])
+@pytest.mark.parametrize("stiffness", [None, np.array([[3000.0, 100.0], [100.0, 2000.0]])], ids=["rigid", "flexible-static"])
+def test_contract_quartic_tracking_on_other_grids_and_the_quasi_static_frame(speeds, stiffness):
+    """Grids that start above standstill (extended down for the naming, the extension dropped), a
+    single speed, a fine grid and one around the weave's split; the rigid and the quasi-static frame."""
+    model = bm.linear_model(bm.parameters("benchmark"), stiffness=stiffness)
+    assert has_quartic_path(model)
+    fast, slow = follow_modes(model, speeds), _followed_by_eigenvectors(model, speeds)
+    assert fast.labels == slow.labels
+    E = slow.eigenvalues
+    assert np.abs(fast.eigenvalues - E).max() <= TOL * (1 + np.abs(E).max())
+    assert np.abs(fast.eigenvectors - slow.eigenvectors).max() <= TOL
