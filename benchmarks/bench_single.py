@@ -1,7 +1,8 @@
 """One configuration, fast: each row times bikemass beside its peer or floor in this process,
 alternately (a shared machine's load hits both alike), and prints the ratio (issue 37).
 
-Run by hand:  python benchmarks/bench_single.py  [rounds, default 15]  [members: only the richer members' rows]
+Run by hand:  python benchmarks/bench_single.py  [rounds, default 15]  [members: only the richer members' rows;
+stability: only ``bm.stability(p)``'s two rows]
 
 Rows (median of the rounds, process CPU time, so that other processes' load counts less):
 
@@ -130,9 +131,12 @@ def main(rounds=15, only=None):
           f"{os.getloadavg()[0]:.1f} on {os.cpu_count()} cores")
     speeds = speed_grid()
     rows = []
-    if only != "members":
-        whipple_rows(rows, rounds, speeds)
-    member_rows(rows, rounds, speeds)
+    if only == "stability":
+        stability_rows(rows, rounds, speeds)
+    else:
+        if only != "members":
+            whipple_rows(rows, rounds, speeds)
+        member_rows(rows, rounds, speeds)
 
     print(f"{'measure':45s} {'bikemass':>10s}  {'peer / floor':40s} {'':>10s} {'ratio':>8s}  target")
     for name, a, peer_name, b, target in rows:
@@ -147,6 +151,20 @@ def member_rows(rows, rounds, speeds):
         ours, plain = alternately(lambda built=built: bm.stability(built), plain_loop(built.model, speeds),
                                   max(3, rounds // 3), 2, 2)
         rows.append((f"bm.stability, Jamis + Relaxed, {member}", ours, "601-speed eigvals + brentq loop", plain, 1.0))
+
+
+def stability_rows(rows, rounds, speeds):
+    """``bm.stability`` of the benchmark bicycle (and with every range read) / BicycleParameters."""
+    p = bm.parameters("benchmark")
+    eig = bicycle_eig(p, speeds)
+    ours, peer = alternately(lambda: bm.stability(p), eig, rounds, 4, 1)
+    rows.append(("bm.stability(p), 601 speeds", ours, "BicycleParameters Bicycle.eig", peer, 0.1))
+
+    def every_range():
+        result = bm.stability(p)
+        return result.ranges["marginal"]["exact"], result.mode_ranges["capsize"]
+    ours, peer = alternately(every_range, eig, rounds, 4, 1)
+    rows.append(("bm.stability(p), every range read", ours, "BicycleParameters Bicycle.eig", peer, None))
 
 
 def whipple_rows(rows, rounds, speeds):
@@ -164,15 +182,7 @@ def whipple_rows(rows, rounds, speeds):
     rows.append(("Whipple M, C1, K0, K2 (generated code)", ours, "hand-written closed form (test oracle)", oracle,
                  None))
 
-    eig = bicycle_eig(p, speeds)
-    ours, peer = alternately(lambda: bm.stability(p), eig, rounds, 4, 1)
-    rows.append(("bm.stability(p), 601 speeds", ours, "BicycleParameters Bicycle.eig", peer, 0.1))
-
-    def every_range():
-        result = bm.stability(p)
-        return result.ranges["marginal"]["exact"], result.mode_ranges["capsize"]
-    ours, peer = alternately(every_range, eig, rounds, 4, 1)
-    rows.append(("bm.stability(p), every range read", ours, "BicycleParameters Bicycle.eig", peer, None))
+    stability_rows(rows, rounds, speeds)
 
     peer_run = peer_sensitivity(p, speeds)
     ours, peer = alternately(lambda: bm.sensitivity(p), peer_run, max(3, rounds // 5), 50, 1)

@@ -124,11 +124,35 @@ SMALL = 8192
 """Below this many distances (rows x roots x roots) they are computed at once; above, one column at a time."""
 
 
+PAIRWISE = 4
+"""Up to this many roots, the distances of a long sweep to the nearest other root are taken pair by pair
+(each pair of roots once, the six of a quartic); beyond, by rotations of the columns."""
+
+_PAIRS = {}
+
+
+def _pairs(m):
+    """``(first, second)``: the pairs ``i < j`` of ``m`` roots (int arrays)."""
+    out = _PAIRS.get(m)
+    if out is None:
+        out = _PAIRS[m] = np.triu_indices(m, 1)
+    return out
+
+
 def _nearest_other(values):
     """Squared distance (k, m) from each root of each row of ``values`` (k, m) to the nearest other root
     of its row (``inf`` for a single root): one rotation of the columns at a time (numpy reduces a
     short last axis slowly)."""
     k, m = values.shape
+    if m <= PAIRWISE and k * m * m > SMALL:
+        first, second = _pairs(m)
+        d = values[:, first] - values[:, second]                     # each pair of roots once
+        d = d.real * d.real + d.imag * d.imag
+        out = np.full(values.shape, np.inf)
+        for i in range(m):                                            # the pairs holding root i
+            for p in np.flatnonzero((first == i) | (second == i)):
+                np.minimum(out[:, i], d[:, p], out=out[:, i])
+        return out
     if k * m * m <= SMALL:
         d = values[:, :, None] - values[:, None, :]
         d = d.real * d.real + d.imag * d.imag
@@ -141,11 +165,12 @@ def _nearest_other(values):
     return out
 
 
-def nearest_steps(values, at=None):
+def nearest_steps(values, at=None, sep=None):
     """``(steps, certain)``: each root's nearest successor at the next speed (n - 1, m) and whether that
     step is certain (n - 1,): the nearest successors are distinct and every root moves by less than
     :data:`CERTAIN_MOVE` of its distance to the nearest other root, at either speed.  ``at`` (k,) asks
-    for those steps alone (rows ``at`` to ``at + 1``)."""
+    for those steps alone (rows ``at`` to ``at + 1``); ``sep`` (n, m), where given, holds the squared
+    distances to the nearest other root (:func:`_nearest_other` of ``values``)."""
     n, m = values.shape
     k = np.arange(n - 1) if at is None else np.asarray(at, dtype=int)
     if not len(k):
@@ -166,9 +191,10 @@ def nearest_steps(values, at=None):
             nearer = d < move
             move = np.where(nearer, d, move)
             steps[nearer] = j
-    rows = np.unique(np.concatenate([k, k + 1]))
-    sep = np.empty((n, m))
-    sep[rows] = _nearest_other(values[rows])
+    if sep is None:
+        rows = np.unique(np.concatenate([k, k + 1]))
+        sep = np.empty((n, m))
+        sep[rows] = _nearest_other(values[rows])
     room = np.minimum(sep[k], np.take_along_axis(sep[k + 1], steps, axis=1))
     distinct = (np.sort(steps, axis=1) == np.arange(m)).all(axis=1)
     certain = distinct & (move < CERTAIN_MOVE ** 2 * room).all(axis=1)
@@ -429,8 +455,18 @@ def tracked_sweep(model, speeds, need=()):
     # each eigenvector put in the column of its root (the roots found without vectors stay: the steps
     # found on them hold)
     vectors = np.take_along_axis(X.astype(complex, copy=False), _matched(values[rows], w)[:, None, :], axis=2)
+    return TrackedSweep(v, values, _composed(steps, hard, rows, values, vectors), rows, vectors)
+
+
+def _composed(steps, hard, rows, values, vectors):
+    """The tracked order (n, m) of the steps (n - 1, m) of a sweep, with the uncertain steps ``hard``
+    assigned by :func:`~bikemass.analysis.engine.tracking.track`'s costs on the eigenvectors
+    ``vectors`` (r, N, m) at ``rows`` (r,; both ends of every hard step among them)."""
+    n, m = values.shape
     if len(hard):
-        sub = track(values[rows], vectors)                       # consecutive rows: the hard steps
+        wanted = np.zeros(n, dtype=bool)
+        wanted[hard] = True                                      # rows[p] hard: rows[p + 1] is its next row
+        sub = track(values[rows], vectors, wanted[rows[:-1]])
         at = np.searchsorted(rows, hard)
         for k, p in zip(hard, at):
             steps[k][sub[p]] = sub[p + 1]
@@ -440,7 +476,57 @@ def tracked_sweep(model, speeds, need=()):
         order[start:k + 1] = current
         current, start = steps[k][current], k + 1
     order[start:] = current
-    return TrackedSweep(v, values, order, rows, vectors)
+    return order
+
+
+def _steps_kept(values):
+    """:func:`nearest_steps` of a whole sweep ``values`` (n, m) whose roots mostly keep their columns
+    (the quartic's closed form): each step that keeps every column with every root moving by less
+    than :data:`CERTAIN_MOVE` of its distance to the nearest other root at either speed is certain
+    as it is (each root's nearest successor is then its own column); only the other steps are
+    searched."""
+    n, m = values.shape
+    d = values[1:] - values[:-1]
+    move = d.real * d.real + d.imag * d.imag
+    sep = _nearest_other(values)
+    room = CERTAIN_MOVE ** 2 * np.minimum(sep[1:], sep[:-1])
+    certain = move[:, 0] < room[:, 0]
+    for j in range(1, m):                          # .all(axis=1), column by column (a short axis)
+        certain &= move[:, j] < room[:, j]
+    steps = np.empty((max(n - 1, 0), m), dtype=int)
+    steps[:] = np.arange(m)
+    other = np.flatnonzero(~certain)
+    if len(other):
+        steps[other], certain[other] = nearest_steps(values, other, sep)
+    return steps, certain
+
+
+def quartic_tracked_sweep(model, speeds, need=()):
+    """``(sweep, C, K)``: :class:`TrackedSweep` of a model on the quartic path
+    (:func:`has_quartic_path`) at ``speeds`` (m/s), with eigenvectors at the rows ``need``, and its
+    damping and stiffness matrices (n, 2, 2) there (for :func:`quartic_vectors` at any other row);
+    ``None`` where a root is not finite (the caller takes :func:`eigen_sweep`).
+
+    The same order as :func:`~bikemass.analysis.engine.tracking.track` on :func:`eigen_sweep`: the
+    quartic's roots at every speed, each step where every root moves by less than
+    :data:`CERTAIN_MOVE` of its distance to the nearest other root (:func:`nearest_steps`: nearly all)
+    taken as its nearest successors, and only the other steps (roots that meet, cross or split)
+    given eigenvectors at both ends and assigned by ``track``'s costs."""
+    v = np.atleast_1d(np.asarray(speeds, dtype=float))
+    mech = model.mechanics
+    C, K = mech.damping(v), mech.stiffness(v)
+    s = quartic_roots(_det2_poly(np.broadcast_to(mech.M, v.shape + (2, 2)), C, K))
+    if not np.all(np.isfinite(s)):
+        return None
+    n = len(v)
+    steps, certain = _steps_kept(s)
+    hard = np.flatnonzero(~certain)
+    done = np.zeros(n, dtype=bool)
+    done[np.asarray(need, dtype=int)] = True
+    done[hard], done[hard + 1] = True, True
+    rows = np.flatnonzero(done)
+    vectors = quartic_vectors(mech.M, C[rows], K[rows], s[rows])
+    return TrackedSweep(v, s, _composed(steps, hard, rows, s, vectors), rows, vectors), C, K
 
 
 def matched_vectors(model, speeds, values):

@@ -18,7 +18,7 @@ from ...core.results import Result, quantity
 from ...core.tables import Table, complex_columns
 from ...core.frozen import freeze, short_repr
 from .eigen import (characteristic_of, damping_ratio, eigen_sweep, has_quartic_path, matched_vectors,
-                    natural_frequency, quartic_vectors, tracked_sweep)
+                    natural_frequency, quartic_tracked_sweep, quartic_vectors, tracked_sweep)
 from .quartic import quartic_roots
 from .naming import REFERENCE_SPEED, mode_names, settle_splits, split_rank, standstill_labels
 from .tracking import track
@@ -147,6 +147,8 @@ def naming_grid(v, reference=None):
     """``(grid, keep, at)``: the speeds ``v`` (m/s) extended down to standstill, up to ``reference``
     (m/s; ``None``: no reference) or with it inserted, in steps of at most :data:`START_STEP`; the
     indices of ``v`` in the grid and the index of the reference speed (``None`` without one)."""
+    if reference is None and v[0] == 0:          # from standstill, nothing to add: the grid itself
+        return v, np.arange(len(v)), None
     lead = np.linspace(0.0, v[0], int(np.ceil(v[0] / START_STEP)) + 1)[:-1]
     tail = np.empty(0)
     if reference is not None and v[-1] < reference:
@@ -167,10 +169,9 @@ def follow_modes(model, speeds):
     v = check_speeds(speeds)
     families = dict(model.families)
     grid, keep, at = naming_grid(v, REFERENCE_SPEED if len(families) > 1 else None)
-    if not has_quartic_path(model):
-        fast = _follow_fast(model, v, families, grid, keep, at)
-        if fast is not None:
-            return fast
+    fast = (_follow_quartic if has_quartic_path(model) else _follow_fast)(model, v, families, grid, keep, at)
+    if fast is not None:
+        return fast
     sweep = eigen_sweep(model, grid)
     order = track(sweep.eigenvalues, sweep.eigenvectors)
     rows = np.arange(len(order))[:, None]
@@ -209,6 +210,33 @@ def _follow_fast(model, v, families, grid, keep, at):
     values = sweep.values[rows[keep], order]
     values.setflags(write=False)
     return Modes.lazily(freeze(v), tuple(ordered), values, lambda: matched_vectors(model, v, values))
+
+
+def _follow_quartic(model, v, families, grid, keep, at):
+    """:func:`follow_modes` of a model on the quartic path by
+    :func:`~bikemass.analysis.engine.eigen.quartic_tracked_sweep` (the roots tracked on eigenvalues,
+    eigenvectors only where roots meet, at standstill and at the reference speed; the modes'
+    eigenvectors made when first read: each the null vector of ``M s^2 + C s + K`` at its root, the
+    same arithmetic as on every row at once), ``None`` where a root is not finite."""
+    tracked = quartic_tracked_sweep(model, grid, [0] if at is None else [0, at])
+    if tracked is None:
+        return None
+    sweep, C, K = tracked
+    order = sweep.order
+    rows = np.arange(len(order))[:, None]
+    values = sweep.values[rows, order]
+    reference = None if at is None else (values[at], sweep.vectors_at(at)[:, order[at]])
+    labels = standstill_labels(values[0], sweep.vectors_at(0)[:, order[0]], families,
+                               [s.name for s in model.dynamic_states], reference)
+    ordered = split_rank(labels)
+    columns = [labels.index(label) for label in ordered]
+    order = order[rows, settle_splits(values, labels)]
+    whole = len(keep) == len(grid)               # speeds from standstill: the naming grid is the grid
+    order = order[:, columns] if whole else order[keep][:, columns]
+    values = sweep.values[rows if whole else rows[keep], order]
+    values.setflags(write=False)
+    M, C, K = model.mechanics.M, C[keep], K[keep]
+    return Modes.lazily(freeze(v), tuple(ordered), values, lambda: quartic_vectors(M, C, K, values))
 
 
 def follow_many(models, speeds):

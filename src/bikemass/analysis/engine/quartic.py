@@ -52,9 +52,9 @@ def _ferrari(b, c, d, e):
     half, base, shift = s / 2, p / 2 + m, b / 4
     square = half * half
     out = np.empty(b.shape + (4,), dtype=complex)
-    for k, sign in enumerate((1, -1)):
-        disc = np.sqrt(square - (base - sign * h))
-        centre = -sign * half - shift
+    # sign +1 then -1: base -+ h and -+half - shift, the signs applied without a product (exact either way)
+    for k, (inner, centre) in enumerate(((base - h, -half - shift), (base + h, half - shift))):
+        disc = np.sqrt(square - inner)
         np.add(centre, disc, out=out[:, 2 * k])
         np.subtract(centre, disc, out=out[:, 2 * k + 1])
     return out
@@ -68,23 +68,41 @@ def _aberth(coeffs, z, sweeps):
     """Polish all roots ``z`` (n, 4) of the monic polynomials ``coeffs`` (n, 5, highest first, the first 1)."""
     a = [c[:, None] for c in coeffs.T[1:]]
     for _ in range(sweeps):
-        p = z + a[0]                            # Horner for p and p' (monic: p = 1, p' = 0 to begin)
+        p = z + a[0]                            # Horner for p and p' (monic: p = 1, p' = 0 to begin), in place
         dp = p + z
-        p = p * z + a[1]
-        dp = dp * z + p
-        p = p * z + a[2]
-        dp = dp * z + p
-        p = p * z + a[3]
+        p *= z
+        p += a[1]
+        dp *= z
+        dp += p
+        p *= z
+        p += a[2]
+        dp *= z
+        dp += p
+        p *= z
+        p += a[3]
         with np.errstate(divide="ignore", invalid="ignore"):
-            d = z[:, _FIRST] - z[:, _SECOND]    # the six pairs at once; 1 / (z_i - z_j), 0 where they coincide
+            columns = z.T                       # the six pairs, one row each; 1 / (z_i - z_j), 0 where they coincide
+            d = np.empty((6, len(z)), dtype=complex)
+            for k, (i, j) in enumerate(zip(_FIRST, _SECOND)):
+                np.subtract(columns[i], columns[j], out=d[k])
             inv = 1 / d
             inv[d == 0] = 0
-            i01, i02, i03, i12, i13, i23 = inv.T
-            # sum over j != i of 1 / (z_i - z_j), each in the order of the pairs (0 1, 0 2, 0 3, 1 2, 1 3, 2 3)
-            repulsion = np.stack([(i01 + i02) + i03, (-i01 + i12) + i13, (-i02 - i12) + i23, (-i03 - i13) - i23],
-                                 axis=1)
+            i01, i02, i03, i12, i13, i23 = inv
+            # sum over j != i of 1 / (z_i - z_j), each in the order of the pairs (0 1, 0 2, 0 3, 1 2, 1 3, 2 3):
+            # (i01 + i02) + i03, (-i01 + i12) + i13, (-i02 - i12) + i23, (-i03 - i13) - i23 (negation is exact:
+            # -a + b is b - a and -a - b is -(a + b), to the bit)
+            repulsion = np.empty((4, len(z)), dtype=complex)
+            np.add(i01, i02, out=repulsion[0])
+            repulsion[0] += i03
+            np.subtract(i12, i01, out=repulsion[1])
+            repulsion[1] += i13
+            np.add(i02, i12, out=repulsion[2])
+            np.subtract(i23, repulsion[2], out=repulsion[2])
+            np.add(i03, i13, out=repulsion[3])
+            repulsion[3] += i23
+            np.negative(repulsion[3], out=repulsion[3])
             w = p / dp
-            step = w / (1 - w * repulsion)
+            step = w / (1 - w * repulsion.T)
         z = np.where(np.isfinite(step), z - step, z)
     return z
 

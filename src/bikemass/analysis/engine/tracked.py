@@ -36,7 +36,7 @@ class TrackedModes:
 
     def __init__(self, model, modes, at):
         self.model, self.modes, self.at = model, modes, at
-        self._cells, self._guesses = {}, {}
+        self._cells, self._guesses, self._listed = {}, {}, {}
 
     @classmethod
     def up_to(cls, model, lo, top, at):
@@ -55,8 +55,7 @@ class TrackedModes:
         if cell is None:
             s, values = self.modes.speeds, self.modes.eigenvalues
             ends = values[k:k + 2]
-            apart = np.where(np.eye(ends.shape[1], dtype=bool), np.inf, np.abs(ends[:, :, None] - ends[:, None, :]))
-            if np.max(np.abs(ends[1] - ends[0])) < 0.25 * np.min(apart):
+            if _far_apart(*ends.tolist()):
                 cell = self._cells[k] = (s[k:k + 2], ends)
                 return cell
             sub = np.linspace(s[k], s[k + 1], self.SUBSTEPS + 1)
@@ -97,8 +96,27 @@ class TrackedModes:
         return roots[np.argmin(np.abs(roots - self.guess(v)[column]))]
 
     def column_of(self, v, root):
-        """The column of the mode whose value at ``v`` is nearest ``root``."""
-        return int(np.argmin(np.abs(self.guess(v) - root)))
+        """The column of the mode whose value at ``v`` is nearest ``root`` (the first of equals)."""
+        v = float(v)
+        listed = self._listed.get(v)
+        if listed is None:
+            listed = self._listed[v] = self.guess(v).tolist()
+        root = complex(root)
+        distances = [abs(g - root) for g in listed]        # a handful: plain Python, no numpy calls
+        if all(d == d for d in distances):
+            return distances.index(min(distances))
+        return int(np.argmin(distances))
+
+
+def _far_apart(a, b):
+    """Whether every root moves from ``a`` to ``b`` (lists of complex, the same modes) by less than a
+    quarter of the smallest distance between two roots at either end (False where any is NaN): plain
+    Python for a handful of roots (numpy's calls cost more than the arithmetic)."""
+    m = len(a)
+    move = max([abs(y - x) for x, y in zip(a, b)], default=0.0)
+    apart = min([abs(r[i] - r[j]) for r in (a, b) for i in range(m) for j in range(m) if i != j],
+                default=float("inf"))
+    return move == move and apart == apart and move < 0.25 * apart
 
 
 def root_name(tracked, speed, root):

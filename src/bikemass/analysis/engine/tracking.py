@@ -209,18 +209,22 @@ def _repaired(step, cost, before, after):
     return best
 
 
-def track(values, vectors):
+def track(values, vectors, only=None):
     """Column order (n, m): ``order[k, i]`` is the column, at speed ``k``, of the root that starts
-    as column ``i`` at the first speed."""
+    as column ``i`` at the first speed.  ``only`` (n - 1,) bool: assign those steps alone, every
+    other step taken as keeping every column (rows of a sweep that are not neighbours)."""
     part = partners(values)
     n, m = values.shape
     # the full cost matrices (the eigenvector overlaps of every pair of roots) only where a step may do
     # anything but keep every column: roots that meet, cross or trade places
     steps = np.broadcast_to(np.arange(m), (max(n - 1, 0), m)).copy()
     hard = np.flatnonzero(~_kept(values, vectors)) if n > 1 else np.zeros(0, dtype=int)
+    if only is not None:
+        hard = hard[np.asarray(only, dtype=bool)[hard]]
     if len(hard):
         steps[hard] = assignments(_costs(values[hard], values[hard + 1], vectors[hard], vectors[hard + 1]))
-    for k in np.flatnonzero(_any(_breaks(steps, part[:-1], part[1:]))):
+    broken = _any(_breaks(steps, part[:-1], part[1:]))
+    for k in np.flatnonzero(broken if only is None else broken & only):
         cost = _costs(values[k:k + 1], values[k + 1:k + 2], vectors[k:k + 1], vectors[k + 1:k + 2])[0]
         steps[k] = _repaired(steps[k], cost, part[k], part[k + 1])
     # row i (speed k) -> column steps[k, i] (speed k + 1); order[k + 1] = steps[k] o ... o steps[0]: constant
@@ -240,11 +244,21 @@ def reorder(values, vectors, order):
             np.take_along_axis(vectors, order[:, None, :], axis=2))
 
 
+SHORT = 512
+"""Up to this many distances (rows x roots x roots) :func:`partners` takes them at once and numpy's
+``argmin`` (the first of equal ones, as :func:`_first_least`)."""
+
+
 def partners(values):
     """Index (n, m) of each root's complex-conjugate partner; a real root is its own partner."""
     m = values.shape[1]
-    d = np.empty(values.shape + (m,))                     # squared distances: the same nearest
     image = values.conj()
+    if values.size * m <= SHORT:                          # a few rows (a sweep's hard steps): at once
+        x = values[:, :, None] - image[:, None, :]
+        d = x.real * x.real + x.imag * x.imag
+        d[:, np.arange(m), np.arange(m)] = np.inf
+        return np.where(values.imag == 0, np.arange(m), np.argmin(d, axis=2))
+    d = np.empty(values.shape + (m,))                     # squared distances: the same nearest
     for i in range(m):                                    # row by row: no (n, m, m) complex temporary, which
         x = values[:, i, None] - image                    # on the default grid would be over glibc's 128 kB
         np.add(x.real * x.real, x.imag * x.imag, out=d[:, i])     # mmap threshold (fresh kernel pages)
