@@ -76,7 +76,7 @@ class SweepResult(Sequence, Tabular):
             return NotImplemented
         return len(self) == len(other) and all(a == b for a, b in zip(self, other))
 
-    __hash__ = None
+    __hash__ = None  # type: ignore[assignment]  # a sequence compared by value is not hashable (as list)
 
     def tables(self):
         """``{"rows": Table}``: one row per configuration, the varied keys (as the spec names them)
