@@ -117,7 +117,7 @@ class Eigenvalues:
                 A = A * v + Q
             sums = self._row_sums[k]
             if sums is not None and sum(x * abs(v) ** j for j, x in enumerate(sums)) < SEPARATION:
-                out = np.linalg.eigvals(A)                  # what separated_eigenvalues gives: no fast states
+                out = eigenvalues_of(A)                     # what separated_eigenvalues gives: no fast states
             else:
                 out = separated_eigenvalues(A)
             self._cache[v] = out
@@ -139,6 +139,21 @@ ROW_GAP = 1e3
 its states into slow and fast ones."""
 
 
+def eigenvalues_of(A):
+    """The eigenvalues (complex) of one real square matrix ``A``: ``numpy.linalg.eigvals`` up to 4 x 4
+    (the Whipple bicycle's path runs without scipy), else LAPACK's ``dgeev`` called directly (the same
+    algorithm; half of numpy's cost on a 6 x 6, which is mostly the call: a crossing's refinement asks
+    for the eigenvalues at a score of single speeds)."""
+    A = np.asarray(A, dtype=float)
+    if len(A) <= 4 or not np.all(np.isfinite(A)):
+        return np.linalg.eigvals(A).astype(complex, copy=False)   # (numpy refuses a matrix that is not finite)
+    from scipy.linalg import lapack                       # lazy: loaded with scipy, which richer models use
+    wr, wi, _, _, info = lapack.dgeev(A, compute_vl=0, compute_vr=0)
+    if info != 0:
+        return np.linalg.eigvals(A).astype(complex, copy=False)
+    return wr + 1j * wi
+
+
 def separated_eigenvalues(A):
     """The eigenvalues of ``A``; where its states split into slow ones and fast ones at least
     :data:`SEPARATION` apart (a tyre of relaxation length 1e-10 m puts roots of -1e11 1/s beside
@@ -147,7 +162,7 @@ def separated_eigenvalues(A):
     every root is about ``1e-16 |A|``: with ``|A|`` of 1e12 the weave's real part is lost in it
     and its crossing could no longer be verified; the reduction's error is of the order of the
     inverse separation instead."""
-    plain = np.linalg.eigvals(A)
+    plain = eigenvalues_of(A)
     n = len(A)
     if n <= 4 or not np.all(np.isfinite(A)):        # the Whipple bicycle's 4 x 4 has no such fast states
         return plain
@@ -169,7 +184,7 @@ def separated_eigenvalues(A):
         reduced = B[np.ix_(slow, slow)] - B[np.ix_(slow, fast)] @ np.linalg.solve(A22, B[np.ix_(fast, slow)])
     except np.linalg.LinAlgError:
         return plain
-    low, high = np.linalg.eigvals(reduced), np.linalg.eigvals(A22)
+    low, high = eigenvalues_of(reduced), eigenvalues_of(A22)
     if not (np.all(np.isfinite(low)) and np.all(np.isfinite(high))) or \
             np.abs(high).min() < SEPARATION * max(np.abs(low).max(), 1.0):
         return plain

@@ -97,6 +97,9 @@ class TrackedModes:
 
     def column_of(self, v, root):
         """The column of the mode whose value at ``v`` is nearest ``root`` (the first of equals)."""
+        near = self.nearest_columns(v, (root,))
+        if near is not None:
+            return near[0]
         v = float(v)
         listed = self._listed.get(v)
         if listed is None:
@@ -106,6 +109,44 @@ class TrackedModes:
         if all(d == d for d in distances):
             return distances.index(min(distances))
         return int(np.argmin(distances))
+
+    def nearest_columns(self, v, roots):
+        """The columns of the modes continued by ``roots`` (complex, at speed ``v``, each column once, in
+        turn), each the mode nearest its root on the straight line across the grid cell holding ``v``,
+        when every one of them is isolated in that cell (:func:`_isolated`: then the fine sub-grid would
+        give the same columns); else ``None``."""
+        s, values = self.modes.speeds, self.modes.eigenvalues
+        if len(s) < 2:
+            return None
+        v = float(v)
+        k = min(max(int(np.searchsorted(s, v)) - 1, 0), len(s) - 2)
+        a, b = values[k].tolist(), values[k + 1].tolist()
+        t = (v - s[k]) / (s[k + 1] - s[k])
+        line = [x + t * (y - x) for x, y in zip(a, b)]
+        taken = []
+        for root in roots:
+            root = complex(root)
+            distances = [abs(g - root) if c not in taken else float("inf") for c, g in enumerate(line)]
+            if not all(d == d for d in distances):
+                return None
+            c = distances.index(min(distances))
+            if not _isolated(a, b, c):
+                return None
+            taken.append(c)
+        return taken
+
+
+def _isolated(a, b, c):
+    """Whether root ``c`` of a grid cell is isolated: it and every other root move from ``a`` to ``b``
+    (lists of complex, the same modes) by less than a quarter of root ``c``'s distance to that root at
+    either end.  Each root then stays within its own quarter across the cell, and the root of ``c`` at
+    any speed inside is nearer the straight line of ``c`` than any other root is (:func:`_far_apart`
+    asks this of every pair at once)."""
+    move_c = abs(b[c] - a[c])
+    for j in range(len(a)):
+        if j != c and not max(move_c, abs(b[j] - a[j])) < 0.25 * min(abs(a[c] - a[j]), abs(b[c] - b[j])):
+            return False
+    return True
 
 
 def _far_apart(a, b):
@@ -129,12 +170,17 @@ def root_name(tracked, speed, root):
     steer-dominated oscillation of at least 3 Hz (:func:`~bikemass.analysis.engine.naming.is_wobble`).
     """
     labels = tracked.labels
-    first = tracked.column_of(speed, root)
+    near = tracked.nearest_columns(speed, (root,) if root.imag == 0 else (root, np.conj(root)))
+    if near is not None:
+        first, second = near[0], near[-1]
+    else:
+        first = tracked.column_of(speed, root)
+        if root.imag != 0:
+            guess = tracked.guess(speed)
+            guess[first] = np.inf
+            second = int(np.argmin(np.abs(guess - np.conj(root))))
     if root.imag == 0:
         return labels[first]
-    guess = tracked.guess(speed)
-    guess[first] = np.inf
-    second = int(np.argmin(np.abs(guess - np.conj(root))))
     a, b = labels[first], labels[second]
     name = family(a) if family(a) == family(b) and a != b else " + ".join(sorted((a, b)))
     if not is_weave(name) and family(name) != WOBBLE and is_wobble(tracked.model, speed, root):
