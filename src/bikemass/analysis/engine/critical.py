@@ -125,14 +125,40 @@ def critical_speeds(model, hi=30.0, lo=0.0, tracked=None):
         return closed_critical_speeds(scalar.model_pieces(model), hi, lo, tracked)
     at = tracked.at if tracked is not None else Eigenvalues(model)
     found = axis_crossings(model, lo, hi, at)
-    count = lambda v: int(np.sum(at(v).real > 0))          # noqa: E731
+    def count(a, b):
+        on_grid = _grid_count(tracked, a, b)
+        return int(np.sum(at(0.5 * (a + b)).real > 0)) if on_grid is None else on_grid
     ends = [lo, *[s for s, _, _ in found], hi]
-    counts = [count(0.5 * (a + b)) if b > a else None for a, b in zip(ends, ends[1:])]
+    counts = [count(a, b) if b > a else None for a, b in zip(ends, ends[1:])]
     start, start_roots = _start_roots(at, lo, ends[1], counts[0]) if hi > lo else (lo, [])
     if tracked is None and (found or start_roots):
         tracked = TrackedModes.up_to(model, lo, max([start, *[s for s, _, _ in found]]), at)
     name = lambda v, root: root_name(tracked, v, root)                         # noqa: E731
     return _assembled(found, counts, ends, lo, hi, start, start_roots, name, tracked)
+
+
+GRID_CLEAR = 1e-8
+"""A grid speed's roots count the unstable ones of the interval holding it when each is at least
+GRID_CLEAR (1 + |root|) 1/s off the axis (the grid's roots are within 1e-10 of it of LAPACK's)."""
+
+
+def _grid_count(tracked, a, b):
+    """The number of roots with ``Re > 0`` between the crossings ``a`` and ``b`` (m/s) read off the
+    tracked modes' grid, at its speed nearest the interval's middle that lies inside it (no crossing
+    between them: every crossing is one of the interval's ends); ``None`` without such a speed, or
+    where a root there is too near the axis to tell its side (the caller takes the eigenvalues at the
+    middle)."""
+    if tracked is None:
+        return None
+    v = tracked.modes.speeds
+    first = int(np.searchsorted(v, a + GRID_CLEAR * (1 + abs(a)), side="right"))
+    last = int(np.searchsorted(v, b - GRID_CLEAR * (1 + abs(b)), side="left")) - 1
+    if first > last:
+        return None
+    roots = tracked.modes.eigenvalues[(first + last) // 2]
+    if not np.all(np.abs(roots.real) > GRID_CLEAR * (1 + np.abs(roots))):
+        return None
+    return int(np.sum(roots.real > 0))
 
 
 def whipple_critical_speeds(params, stiffness=None, hi=30.0, lo=0.0):

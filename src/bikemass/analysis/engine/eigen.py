@@ -175,7 +175,7 @@ def nearest_steps(values, at=None, sep=None):
     k = np.arange(n - 1) if at is None else np.asarray(at, dtype=int)
     if not len(k):
         return np.zeros((0, m), dtype=int), np.zeros(0, dtype=bool)
-    a, b = values[k], values[k + 1]
+    a, b = (values[:-1], values[1:]) if at is None else (values[k], values[k + 1])
     # squared distances (the same nearest, no square roots) from each root at speed k to root j at k + 1:
     # at once for a few steps, else one column j at a time (numpy reduces a short last axis slowly)
     if len(k) * m * m <= SMALL:
@@ -191,7 +191,9 @@ def nearest_steps(values, at=None, sep=None):
             nearer = d < move
             move = np.where(nearer, d, move)
             steps[nearer] = j
-    if sep is None:
+    if sep is None and at is None:
+        sep = _nearest_other(values)
+    elif sep is None:
         rows = np.unique(np.concatenate([k, k + 1]))
         sep = np.empty((n, m))
         sep[rows] = _nearest_other(values[rows])
@@ -242,6 +244,28 @@ def _lagrange_weights(x, t, width):
     gap = t[:, None] - xs[which]                                      # (q, width), never 0 (t is no node)
     weights = np.prod(gap, axis=1)[:, None] * bary[which] / gap
     return first[:, None] + np.arange(width), weights
+
+
+_INTERPOLATION = {}
+"""The interpolation matrices of :func:`interpolation_matrix` last made (a handful: a grid's nodes are
+the same for most models analysed on it)."""
+
+
+def interpolation_matrix(x, t, width):
+    """``W`` (q, len(x)): ``W @ f(x)`` is the polynomial of degree below ``width`` through the values of
+    ``f`` at the nodes ``x`` nearest each point ``t`` (:func:`_lagrange_weights` spread over all the
+    nodes), read-only; memoised on the nodes and points (a pure function of the grid)."""
+    key = (x.tobytes(), t.tobytes(), width)
+    W = _INTERPOLATION.get(key)
+    if W is None:
+        windows, weights = _lagrange_weights(x, t, width)
+        W = np.zeros((len(t), len(x)))
+        np.put_along_axis(W, windows, weights, axis=1)
+        W.setflags(write=False)
+        if len(_INTERPOLATION) >= 8:
+            _INTERPOLATION.pop(next(iter(_INTERPOLATION)))
+        _INTERPOLATION[key] = W
+    return W
 
 
 class _AtSpeeds:
@@ -303,7 +327,9 @@ def filled_values(model, v, A=None):
         nodes = np.r_[nodes, middle][merged]
         at_nodes = np.concatenate([at_nodes, _plain_values(A[middle])])[merged]
         # the cells not halved keep their steps; the halves' are found
-        kept = np.setdiff1d(np.arange(len(steps)), wide)
+        keep = np.ones(len(steps), dtype=bool)
+        keep[wide] = False
+        kept = np.flatnonzero(keep)
         halves = np.r_[place[wide], place[wide] + 1]
         new_steps, new_certain = np.empty((len(nodes) - 1, m), dtype=int), np.empty(len(nodes) - 1, dtype=bool)
         new_steps[place[kept]], new_certain[place[kept]] = steps[kept], certain[kept]
@@ -323,8 +349,7 @@ def filled_values(model, v, A=None):
         start, end = at_nodes[cell], np.take_along_axis(at_nodes[cell + 1], steps[cell], axis=1)
         s = start + t * (end - start)                                 # (q, m) guesses
         s = guess = np.where(s.imag == 0, s.real + 0j, s)
-        windows, weights = _lagrange_weights(v[nodes], v[rows], width)
-        c = np.einsum("qw,qwj->qj", weights, _poly_from_roots(at_nodes)[windows])   # (q, m + 1)
+        c = interpolation_matrix(v[nodes], v[rows], width) @ _poly_from_roots(at_nodes)   # (q, m + 1)
         c = c[:, None, :]
         p, dp = np.empty(s.shape, dtype=complex), np.empty(s.shape, dtype=complex)
         for _ in range(FILL_ITERATIONS):

@@ -88,13 +88,19 @@ def _shifted_roots(Q):
 
 def _qz_roots(Q):
     """Finite roots ``t`` of ``det(sum_k t**k Q[k]) = 0`` by the QZ algorithm on the companion pencil."""
-    from scipy.linalg import eig      # lazy: only for a polynomial ill conditioned at every shift
+    from scipy.linalg import eig, lapack      # lazy: only for a polynomial ill conditioned at every shift
     d, m = len(Q) - 1, Q.shape[-1]
     L0 = np.zeros((d * m, d * m))
     L1 = np.eye(d * m)
     L0[:-m, m:] = np.eye((d - 1) * m)
     L0[-m:] = -np.concatenate(list(Q[:-1]), axis=1)
     L1[-m:, -m:] = Q[-1]
-    alpha, beta = eig(L0, L1, right=False, homogeneous_eigvals=True)
+    # LAPACK's dggev called directly (what scipy.linalg.eig calls, without its checks: a fifth less time on
+    # a 30 x 30 pencil); scipy's own call where it reports a failure (it raises it)
+    alphar, alphai, beta, _, _, _, info = lapack.dggev(L0, L1, compute_vl=0, compute_vr=0)
+    if info == 0 and np.all(np.isfinite(alphar)) and np.all(np.isfinite(alphai)) and np.all(np.isfinite(beta)):
+        alpha = alphar + 1j * alphai
+    else:
+        alpha, beta = eig(L0, L1, right=False, homogeneous_eigvals=True)
     finite = np.abs(beta) > 1e-13 * np.abs(alpha)
     return alpha[finite] / beta[finite]
