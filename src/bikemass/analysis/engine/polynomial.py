@@ -86,15 +86,52 @@ def _shifted_roots(Q):
     return None
 
 
-def _qz_roots(Q):
-    """Finite roots ``t`` of ``det(sum_k t**k Q[k]) = 0`` by the QZ algorithm on the companion pencil."""
-    from scipy.linalg import eig, lapack      # lazy: only for a polynomial ill conditioned at every shift
+TRIM_FROM = 20
+"""Least size of a quadratic's coefficients whose pencil is trimmed (:func:`_pencil`): below it the
+singular values cost more than they save (measured: the 15 x 15 compound of a 6-state model)."""
+
+
+def _low_rank(X):
+    """``(U, Vt)`` with ``X = U @ Vt`` and as few columns of ``U`` as ``X``'s numerical rank (its singular
+    values above ``max(shape) eps`` times the largest, numpy's ``matrix_rank`` rule)."""
+    W, sigma, Vt = np.linalg.svd(X)
+    r = int(np.sum(sigma > sigma[0] * max(X.shape) * np.finfo(float).eps)) if sigma[0] > 0 else 0
+    return W[:, :r] * sigma[:r], Vt[:r]
+
+
+def _pencil(Q):
+    """``(L0, L1)``: a linearisation of ``sum_k t**k Q[k]`` (``L0 z = t L1 z`` exactly where the polynomial
+    is singular).  The companion pencil of size ``d m``; a quadratic whose leading coefficient has rank
+    ``r < m`` (a richer model's ``A(v)`` has ``v**2`` only in the few entries of the speed-squared
+    stiffness, its compound as few) the trimmed pencil of size ``m + r``: with ``Q[2] = U Vt`` and
+    ``w = t Vt x``, ``-Q[0] x = t (Q[1] x + U w)`` and ``w = t Vt x`` (the same determinant, by the Schur
+    complement of the identity block; QZ's cost falls with the cube of the size)."""
     d, m = len(Q) - 1, Q.shape[-1]
+    if d == 2 and m >= TRIM_FROM:
+        U, Vt = _low_rank(Q[2])
+        r = U.shape[1]
+        if r < m:
+            L0 = np.zeros((m + r, m + r))
+            L1 = np.zeros((m + r, m + r))
+            L0[:m, :m] = -Q[0]
+            L0[m:, m:] = np.eye(r)
+            L1[:m, :m] = Q[1]
+            L1[:m, m:] = U
+            L1[m:, :m] = Vt
+            return L0, L1
     L0 = np.zeros((d * m, d * m))
     L1 = np.eye(d * m)
     L0[:-m, m:] = np.eye((d - 1) * m)
     L0[-m:] = -np.concatenate(list(Q[:-1]), axis=1)
     L1[-m:, -m:] = Q[-1]
+    return L0, L1
+
+
+def _qz_roots(Q):
+    """Finite roots ``t`` of ``det(sum_k t**k Q[k]) = 0`` by the QZ algorithm on a linearisation
+    (:func:`_pencil`)."""
+    from scipy.linalg import eig, lapack      # lazy: only for a polynomial ill conditioned at every shift
+    L0, L1 = _pencil(Q)
     # LAPACK's dggev called directly (what scipy.linalg.eig calls, without its checks: a fifth less time on
     # a 30 x 30 pencil); scipy's own call where it reports a failure (it raises it)
     alphar, alphai, beta, _, _, _, info = lapack.dggev(L0, L1, compute_vl=0, compute_vr=0)
