@@ -163,7 +163,9 @@ def model_choice(text):
 
 def add_model(p):
     """``--model`` and each member's parameter file option (``--tyres``, ``--arms``: the members declare them)."""
-    p.add_argument("--model", type=model_choice, default=BASE, metavar="MODEL", help=MODEL_HELP)
+    p.add_argument("--model", type=model_choice, default=None, metavar="MODEL",
+                   help=MODEL_HELP + "; default: the bicycle's own (rider-lean for a MooreRiderLean2012 "
+                                     "parameter set), else whipple")
     for spec in SPECS:
         if spec.option:
             p.add_argument(spec.option, dest=spec.keyword, metavar="FILE", help=spec.option_help)
@@ -177,6 +179,20 @@ def add_control(p):
                         "{roll-rate: {speeds: [0, 1.5, 4.7], gains: [0, 12.5, 0]}}' (gains in SI, linear "
                         "between the speeds, constant outside; u = K(v) y is added to the inputs, so a positive "
                         "roll-rate -> steer-torque gain steers into the fall); docs/stability.md, Closed loops")
+
+
+def resolve_model(args):
+    """``args.model`` made a model's name where ``--model`` was not given: the bicycle's own
+    (:func:`~bikemass.scenario.scenario.own_model`: ``rider-lean`` for a MooreRiderLean2012 set), else
+    the Whipple bicycle's."""
+    if getattr(args, "model", "") is None:
+        bike = getattr(args, "bike", None)
+        if bike is None:
+            args.model = BASE
+        else:
+            # lazy: the library loads numpy; bikemass --help must not
+            from ..scenario.scenario import own_model
+            args.model = own_model(bike).name
 
 
 def scenario(args, rider=None, stiffness=None, bike=None, origin=None):

@@ -10,7 +10,7 @@ import warnings
 from .. import __version__
 from ..core.errors import BikemassWarning, InputError, one_line
 from ..core.stopping import Terminated, stop_on_signals
-from .dialect import LATE_HELP, check_output
+from .dialect import LATE_HELP, check_output, resolve_model
 from .options import check_outputs
 
 COMMAND_MODULES = (
@@ -151,6 +151,7 @@ def _run(args):
         try:
             check_outputs(args)
             check_output(args)
+            resolve_model(args)
             status = args.run(args) or 0
         except InputError as exc:
             return _error(exc)

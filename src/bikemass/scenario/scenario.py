@@ -203,7 +203,7 @@ class Scenario:
         for name, value in (("bicycle", bicycle), ("rider", rider), ("stiffness", stiffness), ("combine", combine),
                             ("method", method), ("allow_off_contact", allow_off_contact), ("origin", origin)):
             set_(self, name, value)
-        choice = model_of(bicycle, model)                       # None: the bicycle's own member
+        choice = model_of(bicycle, model) if model is not None else own_model(bicycle, self)   # None: the bicycle's own
         set_(self, "model", choice)
         set_(self, "member_inputs", FrozenMap(by_keyword({**(member_inputs or {}), **keywords}, "Scenario")))
         set_(self, "combine", check(Combine, self.combine).value)
@@ -381,6 +381,31 @@ class Scenario:
 def _stiffness_member(choice):
     """The member of ``choice`` that takes the stiffness choice (a material), or None."""
     return next((spec for spec in choice.specs if spec.takes_stiffness), None)
+
+
+def own_model(bicycle, scenario=None):
+    """The :class:`~bikemass.models.registry.ModelChoice` a bicycle input selects by its own type when no
+    model is named: the member its parameter set declares (``rider-lean`` for
+    :class:`~bikemass.models.members.rider_lean.parameters.RiderLeanParameters`, and for a file or mapping
+    holding BicycleParameters' ``MooreRiderLean2012`` set), else the Whipple bicycle.  A bicycle input that
+    cannot be read selects the Whipple bicycle here; building the scenario reports what is wrong with it.
+    ``scenario``: the :class:`Scenario` whose inputs read the file (read once, kept), else a fresh one's.
+
+    Examples
+    --------
+    >>> own_model("benchmark").name
+    'whipple'
+    """
+    choice = model_of(bicycle, None)
+    if choice.members or not isinstance(bicycle, (str, os.PathLike, Mapping)):
+        return choice
+    inputs = scenario.inputs if scenario is not None else Inputs(bicycle, None, Combine.EXACT.value,
+                                                                 Method.MESH.value, "changes", False)
+    try:
+        lean = inputs.lean_set
+    except InputError:
+        return choice
+    return choice if lean is None else model_of(lean, None)
 
 
 def _split_member(choice):
