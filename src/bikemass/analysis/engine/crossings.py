@@ -139,16 +139,22 @@ ROW_GAP = 1e3
 its states into slow and fast ones."""
 
 
+_DGEEV = []
+"""LAPACK's ``dgeev`` (scipy's wrapper), found once on first use."""
+
+
 def eigenvalues_of(A):
     """The eigenvalues (complex) of one real square matrix ``A``: ``numpy.linalg.eigvals`` up to 4 x 4
     (the Whipple bicycle's path runs without scipy), else LAPACK's ``dgeev`` called directly (the same
     algorithm; half of numpy's cost on a 6 x 6, which is mostly the call: a crossing's refinement asks
     for the eigenvalues at a score of single speeds)."""
     A = np.asarray(A, dtype=float)
-    if len(A) <= 4 or not np.all(np.isfinite(A)):
+    if len(A) <= 4 or not np.isfinite(A).all():
         return np.linalg.eigvals(A).astype(complex, copy=False)   # (numpy refuses a matrix that is not finite)
-    from scipy.linalg import lapack                       # lazy: loaded with scipy, which richer models use
-    wr, wi, _, _, info = lapack.dgeev(A, compute_vl=0, compute_vr=0)
+    if not _DGEEV:
+        from scipy.linalg import lapack                   # lazy: loaded with scipy, which richer models use
+        _DGEEV.append(lapack.dgeev)
+    wr, wi, _, _, info = _DGEEV[0](A, compute_vl=0, compute_vr=0)
     if info != 0:
         return np.linalg.eigvals(A).astype(complex, copy=False)
     return wr + 1j * wi

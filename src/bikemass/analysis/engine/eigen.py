@@ -350,19 +350,19 @@ def filled_values(model, v, A=None):
         s = start + t * (end - start)                                 # (q, m) guesses
         s = guess = np.where(s.imag == 0, s.real + 0j, s)
         c = interpolation_matrix(v[nodes], v[rows], width) @ _poly_from_roots(at_nodes)   # (q, m + 1)
-        c = c[:, None, :]
+        columns = [c[:, j:j + 1].astype(complex) for j in range(m + 1)]   # (q, 1) each, cast once
         p, dp = np.empty(s.shape, dtype=complex), np.empty(s.shape, dtype=complex)
         for _ in range(FILL_ITERATIONS):
-            p[...], dp[...] = c[..., 0], 0.0
+            p[...], dp[...] = columns[0], 0.0
             for j in range(1, m + 1):                                 # Horner: p and p' at once, in place
                 dp *= s
                 dp += p
                 p *= s
-                p += c[..., j]
+                p += columns[j]
             step = p / dp
             s = s - step
         ok = np.all(np.abs(step) <= FILL_TOL * (1 + np.abs(s)), axis=1)
-        ok &= np.abs(s.sum(axis=1).real + c[:, 0, 1]) <= 1e-10 * (1 + np.abs(s).sum(axis=1))
+        ok &= np.abs(s.sum(axis=1).real + c[:, 1]) <= 1e-10 * (1 + np.abs(s).sum(axis=1))
         ok &= np.all(np.isfinite(s), axis=1)
         values[rows] = np.where(s.imag == 0, s.real + 0j, s)
         rest = np.union1d(rest, rows[~ok])
