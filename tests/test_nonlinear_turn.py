@@ -14,6 +14,7 @@ linear model's limit and the nonlinear simulator.
 
 import json
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -113,3 +114,26 @@ def test_the_hands_free_family_ends_at_a_static_equilibrium_and_says_so(meijaard
     assert main(["turn", "benchmark", "--hands-free", "--steers", "1.3:1.5:3", "--format", "json"]) == 0
     doc = json.loads(capsys.readouterr().out)
     assert doc["speed"][0] > 0 and doc["speed"][-1] is None
+
+
+@pytest.mark.parametrize("system", [
+    pytest.param(lambda: bm.Scenario("jamis", "relaxed", model="rider-lean"), id="rider-lean scenario"),
+    pytest.param(lambda: bm.Scenario("benchmark", model="tyre").build(), id="tyre built"),
+    pytest.param(lambda: bm.Scenario("jamis", "relaxed", "steel"), id="flexible rear frame"),
+    pytest.param(lambda: bm.Scenario("jamis", "relaxed", "steel").build(), id="flexible rear frame built"),
+])
+def test_a_turn_of_another_model_or_a_flexible_frame_is_refused_not_made_rigid(system):
+    """The steady turns are the nonlinear Whipple bicycle's: a scenario of a member or of a flexible frame is
+    refused in one line (before, its benchmark parameters were turned as the rigid Whipple bicycle)."""
+    with pytest.raises(InputError):
+        bm.steady_turn(system(), 5.0, radius=10.0)
+    with pytest.raises(InputError):
+        bm.hands_free_turns(system(), [0.1])
+
+
+def test_the_command_line_refuses_a_turn_of_a_rider_lean_parameter_file(capsys):
+    from bikemass.cli.main import main
+    lean = Path(__file__).parent / "data" / "bicycleparameters" / "to_yaml-MooreRiderLean2012-browserjason.yml"
+    assert main(["turn", str(lean), "--speed", "5", "--radius", "10"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "to_yaml-MooreRiderLean2012-browserjason.yml" in err[0] and "Whipple" in err[0]

@@ -58,7 +58,11 @@ def run_turn(args):
     from ..core.errors import InputError
 
     options = dialect.figure_checked(args)
-    parameters = dialect.scenario(args).build().parameters
+    scenario = dialect.scenario(args)
+    if scenario.model.members:          # a parameter set of another model (a MooreRiderLean2012 file)
+        raise InputError(args.bike, f"model {scenario.model.name}", "a bicycle of the Whipple model: the steady "
+                         "turns are the nonlinear Whipple bicycle's")
+    parameters = scenario.build().parameters
     if args.hands_free:
         result = hands_free_turns(parameters, _steers(args.steers))
         headers = ["steer (rad)", "speed (m/s)", "roll (rad)", "radius (m)", "pitch (rad)"]

@@ -26,6 +26,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ...core.choices import RIGID
 from ...core.results import Result, quantity
 from ...scenario.scenario import Built, Scenario
 from ...core.keywords import renamed_keywords
@@ -36,6 +37,7 @@ from ...core.limits import MAX_SPEED
 from ...models.whipple_generated import whipple_matrices
 from ...models.nonlinear import ConstraintError, NonlinearWhipple
 from ...models.parameters import BenchmarkParameters
+from ...models.registry import BASE
 
 CONTINUATION_STEP = 0.01
 """Largest step in steer angle (rad) when following the hands-free family from one solution to
@@ -145,7 +147,19 @@ class HandsFreeTurns(Result):
 
 def _benchmark_set(system) -> BenchmarkParameters:
     """The benchmark parameter set of ``system``: a parameter set, a Scenario (the Whipple bicycle's set of
-    its bicycle and rider) or a built scenario; anything else an InputTypeError."""
+    its bicycle and rider) or a built scenario; anything else an InputTypeError.  A scenario of another
+    model (a member: its equations are not the nonlinear Whipple bicycle's) or with a flexible frame is
+    refused in one line, never turned as the rigid Whipple bicycle without a word."""
+    if isinstance(system, (Scenario, Built)):
+        choice = system.model if isinstance(system, Scenario) else system.choice
+        if choice.members:
+            raise InputError("model", choice.name, f"{BASE}: the steady turns are the nonlinear Whipple bicycle's "
+                             "(a rigid rider and frame, no tyre model)")
+        flexible = system.stiffness is not None if isinstance(system, Built) else \
+            not (system.stiffness is None or (isinstance(system.stiffness, str) and system.stiffness in (RIGID, "rigid")))
+        if flexible:
+            raise InputError("stiffness", short(system.stiffness if isinstance(system, Scenario) else "S"),
+                             f"{RIGID}: the nonlinear Whipple bicycle's frame is rigid")
     if isinstance(system, Scenario):
         system = system.parameters()
     elif isinstance(system, Built):
