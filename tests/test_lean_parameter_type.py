@@ -9,6 +9,7 @@ import pytest
 from scipy.optimize import brentq
 
 import bikemass as bm
+from bikemass.core.errors import InputError
 
 bp_models = pytest.importorskip("bicycleparameters.models")
 bp_sets = pytest.importorskip("bicycleparameters.parameter_sets")
@@ -146,3 +147,11 @@ def test_the_command_line_takes_a_moore_rider_lean_file_as_its_member(capsys, pe
     # coordinate of this set: held rigid only where asked for by the typed value, model="whipple")
     assert main(["stability", str(BROWSER_JASON), "--model", "whipple"]) == 2
     assert "--model rider-lean" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("model", [None, "rider-lean", "rider-lean+tyre"])
+def test_a_rider_added_to_a_moore_rider_lean_set_is_refused_not_ignored(model):
+    """The set holds its own rider: a rider given beside it was dropped without a word by the leaning-rider
+    model (the header even named it); it is refused in one line, as the other models refuse it."""
+    with pytest.raises(InputError, match="no rider added"):
+        bm.stability(bm.Scenario(BROWSER_JASON, "relaxed", model=model))

@@ -566,6 +566,9 @@ class Inputs:
         or the bicycle's own ``MooreRiderLean2012`` set; ``forearms_held``: the forearms on the front
         frame (:meth:`held`), not leaning with the upper body."""
         if self.lean_set is not None:
+            if self.rider not in (None, "none"):                   # its rider is the set's own: none is added
+                raise InputError(self._lean_source, "rider", "no rider added: a MooreRiderLean2012 set holds its "
+                                 "rider (use --rider none)")
             self.parameters(bike_changes, rider_changes)           # refuses changes of the set's own
             return self.lean_set
         if self.combine != "exact":
