@@ -53,8 +53,8 @@ def _make(folder, spec):
         path = folder / "in.yaml"
         path.write_text(spec["text"])
         return path
-    if "from" in spec:
-        return generators.from_shipped(folder, spec)
+    if "from" in spec:                     # "as": the copy's file name where its suffix matters (.txt)
+        return generators.from_shipped(folder, spec, spec.get("as", "in.yaml"))
     return getattr(generators, spec["make"])(folder, spec)
 
 

@@ -48,6 +48,11 @@ def coefficients(model, values):
     missing = [name for name in parameter_names(model) if name not in values]
     if missing:
         raise ValueError(f"model {parse_model(model).name!r}: parameters missing: {', '.join(missing)}")
+    choice = parse_model(model)
+    for radius in ("rR", "rF"):          # the members' equations divide by the wheel radii (I/r: the spin)
+        if choice.members and np.any(np.real(values[radius]) == 0):
+            raise InputError(radius, "0 m", f"a wheel radius above 0 for the {choice.name} model (a point wheel, "
+                             "the two-mass skate's, is the Whipple model's alone: --model whipple)")
     E, A, B = code.coefficients(*(x if type(x) is float else _number(values[name]) for name, _, _ in code.PARAMETERS
                                   for x in (values[name],)))
     for spec in parse_model(model).specs:                 # the members that change the combination's equations
