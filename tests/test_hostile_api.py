@@ -194,3 +194,9 @@ def test_web_api_refuses_typed_over_parameters_off_the_model():
         for endpoint in ("/api/params", "/api/stability"):
             reply = client.get(f"{endpoint}?bike=benchmark&rider=none&stiffness=infinite&{query}")
             assert reply.status_code == 400 and reply.get_json() == {"error": error}
+
+
+@pytest.mark.parametrize("given", [[1], "tyres.yaml", 5])
+def test_member_inputs_that_are_no_mapping_are_an_input_type_error(given):
+    with pytest.raises(InputTypeError, match="member_inputs"):
+        bm.Scenario("benchmark", model="tyre", member_inputs=given)

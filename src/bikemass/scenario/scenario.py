@@ -39,7 +39,7 @@ from dataclasses import dataclass, field, fields
 import numpy as np
 
 from ..core.choices import RIGID, Combine, Method, check
-from ..core.errors import InputError, short
+from ..core.errors import InputError, short, wrong_type
 from ..core.frozen import FrozenMap, readonly, short_repr
 from ..models.family import build as build_member, dynamic_derivatives, generated, held_coordinates, linear_model, \
     values as member_values
@@ -205,6 +205,9 @@ class Scenario:
             set_(self, name, value)
         choice = model_of(bicycle, model) if model is not None else own_model(bicycle, self)   # None: the bicycle's own
         set_(self, "model", choice)
+        if member_inputs is not None and not isinstance(member_inputs, Mapping):
+            raise wrong_type("member_inputs", member_inputs, "a mapping of a member's name or keyword to its "
+                             "parameters (e.g. {'tyres': 'tyres.yaml'})")
         set_(self, "member_inputs", FrozenMap(by_keyword({**(member_inputs or {}), **keywords}, "Scenario")))
         set_(self, "combine", check(Combine, self.combine).value)
         set_(self, "method", check(Method, self.method).value)
