@@ -137,3 +137,19 @@ def test_the_command_line_refuses_a_turn_of_a_rider_lean_parameter_file(capsys):
     assert main(["turn", str(lean), "--speed", "5", "--radius", "10"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "to_yaml-MooreRiderLean2012-browserjason.yml" in err[0] and "Whipple" in err[0]
+
+
+def test_a_parameter_file_with_a_frame_stiffness_block_is_refused_too(tmp_path, capsys):
+    """A file written by ``params --stiffness steel`` carries its frame_stiffness: its scenario builds a
+    flexible frame, so the steady turns refuse it as they refuse --stiffness steel."""
+    from bikemass.cli.main import main
+    written = tmp_path / "steel.yaml"
+    assert main(["params", "jamis", "--rider", "relaxed", "--stiffness", "steel", "--format", "yaml",
+                 "-o", str(written)]) == 0
+    assert bm.Scenario(str(written)).build().stiffness is not None
+    with pytest.raises(InputError, match="rigid"):
+        bm.steady_turn(bm.Scenario(str(written)), 5.0, radius=20.0)
+    capsys.readouterr()
+    assert main(["turn", str(written), "--speed", "5", "--radius", "20"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "steel.yaml" in err[0]

@@ -62,7 +62,11 @@ def run_turn(args):
     if scenario.model.members:          # a parameter set of another model (a MooreRiderLean2012 file)
         raise InputError(args.bike, f"model {scenario.model.name}", "a bicycle of the Whipple model: the steady "
                          "turns are the nonlinear Whipple bicycle's")
-    parameters = scenario.build().parameters
+    built = scenario.build()
+    if built.stiffness is not None:     # --stiffness, or the file's own frame_stiffness block
+        raise InputError(args.bike, "frame stiffness", "a rigid frame: the steady turns are the nonlinear Whipple "
+                         "bicycle's (--stiffness infinite, and no frame_stiffness block in the file)")
+    parameters = built.parameters
     if args.hands_free:
         result = hands_free_turns(parameters, _steers(args.steers))
         headers = ["steer (rad)", "speed (m/s)", "roll (rad)", "radius (m)", "pitch (rad)"]

@@ -150,19 +150,15 @@ def _benchmark_set(system) -> BenchmarkParameters:
     its bicycle and rider) or a built scenario; anything else an InputTypeError.  A scenario of another
     model (a member: its equations are not the nonlinear Whipple bicycle's) or with a flexible frame is
     refused in one line, never turned as the rigid Whipple bicycle without a word."""
-    if isinstance(system, (Scenario, Built)):
-        choice = system.model if isinstance(system, Scenario) else system.choice
-        if choice.members:
-            raise InputError("model", choice.name, f"{BASE}: the steady turns are the nonlinear Whipple bicycle's "
-                             "(a rigid rider and frame, no tyre model)")
-        flexible = system.stiffness is not None if isinstance(system, Built) else \
-            not (system.stiffness is None or (isinstance(system.stiffness, str) and system.stiffness in (RIGID, "rigid")))
-        if flexible:
-            raise InputError("stiffness", short(system.stiffness if isinstance(system, Scenario) else "S"),
-                             f"{RIGID}: the nonlinear Whipple bicycle's frame is rigid")
     if isinstance(system, Scenario):
-        system = system.parameters()
-    elif isinstance(system, Built):
+        system = system.build()             # what it builds: its model, and its frame (a file's stiffness too)
+    if isinstance(system, Built):
+        if system.choice.members:
+            raise InputError("model", system.choice.name, f"{BASE}: the steady turns are the nonlinear Whipple "
+                             "bicycle's (a rigid rider and frame, no tyre model)")
+        if system.stiffness is not None:
+            raise InputError("stiffness", "a flexible rear frame", f"{RIGID}: the nonlinear Whipple bicycle's frame "
+                             "is rigid")
         system = system.parameters
     if not isinstance(system, BenchmarkParameters):
         raise wrong_type("system", system, "a benchmark parameter set, a Scenario or a built scenario")
