@@ -155,3 +155,22 @@ def test_a_rider_added_to_a_moore_rider_lean_set_is_refused_not_ignored(model):
     model (the header even named it); it is refused in one line, as the other models refuse it."""
     with pytest.raises(InputError, match="no rider added"):
         bm.stability(bm.Scenario(BROWSER_JASON, "relaxed", model=model))
+
+
+def test_a_sweep_and_an_optimisation_of_a_moore_rider_lean_file_take_its_member(tmp_path):
+    """A spec without ``model:`` takes the bicycle's own model, as the command line does: a sweep of the
+    trail over the set equals the stability of the rider-lean scenario built with that trail, and a target
+    weave speed is hit."""
+    import shutil
+    shutil.copy(BROWSER_JASON, tmp_path / "lean.yml")
+    (tmp_path / "sweep.yaml").write_text("bike: lean.yml\nvary:\n  c: [0.05, 0.06]\n")
+    rows = bm.sweep(str(tmp_path / "sweep.yaml"), str(tmp_path / "out"))
+    scenario = bm.Scenario(BROWSER_JASON)
+    for row in rows:
+        expected = bm.stability(scenario.build({"c": row["c"]})).weave_speeds[0]
+        assert row["weave_speed"] == pytest.approx(expected, abs=1e-9)
+    (tmp_path / "opt.yaml").write_text("bike: lean.yml\nvariables:\n  c: {min: 0.04, max: 0.12}\n"
+                                       "target: {weave-speed: 5.0}\n")
+    found = bm.optimise(str(tmp_path / "opt.yaml"))
+    weave = bm.stability(scenario.build({"c": found.variables["c"]})).weave_speeds[0]
+    assert weave == pytest.approx(5.0, abs=1e-6)

@@ -109,7 +109,7 @@ def _options(args):
 
 def _title(args):
     model = "" if args.model == "whipple" else f", model {args.model}"
-    return f"{dialect.bike_name(args.bike)}, rider {args.rider}, stiffness {args.stiffness}{model}"
+    return f"{dialect.bike_name(args.bike)}, rider {args.rider}, {dialect.frame_name(args)}{model}"
 
 
 def run_sensitivity(args):

@@ -149,7 +149,9 @@ def run_params(args):
                     or scenario.inputs.bicycle().rider_included)
         # a measured bicycle's standard deviations belong to its own parameters: not with a rider added
         std = scenario.file_std if args.rider in (None, "none") and args.model == "whipple" else None
-        if fmt in ("yaml", "json") and (args.model != "whipple" or args.stiffness != "infinite"):
+        carried = args.stiffness is None and scenario.frame_label() != dialect.stiffness_label(None)
+        if fmt in ("yaml", "json") and (args.model != "whipple" or args.stiffness not in (None, "infinite", "rigid")
+                                        or carried):
             # every parameter the model uses, members included: a file every command reads back as it
             # lazy: the library loads numpy; bikemass --help must not
             from ..models.parameter_export import member_document, member_units

@@ -25,7 +25,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from ..core.choices import RIGID, Combine, Format, Method
+from ..core.choices import Combine, Format, Method
 from ..core.errors import InputError
 from .figure_options import add_figure_options, figure_options, write_figure
 from ..core.limits import MAX_SPEEDS
@@ -102,12 +102,13 @@ def add_method(p):
 
 def add_stiffness(p, many=False):
     if many:
-        p.add_argument("--stiffnesses", metavar="S", default=RIGID,
+        p.add_argument("--stiffnesses", metavar="S", default=None,
                        help="comma-separated stiffnesses as for stability --stiffness "
-                            "(e.g. infinite,steel,aluminum)")
+                            "(e.g. infinite,steel,aluminum; default: the bicycle's own)")
         return
-    action = p.add_argument("--stiffness", metavar="S", default=RIGID,
-                            help="rear-frame stiffness: infinite (rigid, default), a material (steel, titanium, "
+    action = p.add_argument("--stiffness", metavar="S", default=None,
+                            help="rear-frame stiffness: infinite (rigid; the default, unless BIKE is a parameter "
+                                 "file carrying its own frame stiffness), a material (steel, titanium, "
                                  "aluminum, carbon, ...: the bicycle's published S if it carries one, else the "
                                  "beam model of its own tube sections in that material) or a YAML file with S: "
                                  "[[..], [..]] in N m/rad")
@@ -115,7 +116,8 @@ def add_stiffness(p, many=False):
 
 
 STIFFNESS_HELP = (
-    "rear-frame stiffness: infinite (rigid, default); a material: {materials} (frames/materials.yaml): the "
+    "rear-frame stiffness: infinite (rigid; the default, unless BIKE is a parameter file carrying its own "
+    "frame stiffness, which is then taken); a material: {materials} (frames/materials.yaml): the "
     "bicycle's published S if it carries one, else the beam models of the bicycle's own tube sections with "
     "that material's properties (a steel bicycle's tubes in carbon fibre are not a carbon frame); or a YAML "
     "file with S: [[..], [..]] in N m/rad. With the flexible member a parameter file written by params "
@@ -148,6 +150,20 @@ def stiffness_label(stiffness):
     # lazy: the library loads numpy; bikemass --help must not
     from ..mass.materials import frame_label
     return frame_label(stiffness)
+
+
+def frame_name(args, stiffness=None, rider=None):
+    """The frame of a command's scenario in words for a title: ``stiffness`` (default ``--stiffness``) as
+    :func:`stiffness_label` names it, or with none given the bicycle's own
+    (:meth:`~bikemass.scenario.scenario.Scenario.frame_label`: a parameter file's frame stiffness, else
+    rigid)."""
+    stiffness = getattr(args, "stiffness", None) if stiffness is None else stiffness
+    if stiffness is not None:
+        return stiffness_label(stiffness)
+    try:
+        return scenario(args, rider=rider).frame_label()
+    except InputError:
+        return stiffness_label(None)
 
 
 MODEL_HELP = f"the linear model: {model_help()}; see docs/models.md"
@@ -217,7 +233,7 @@ def scenario(args, rider=None, stiffness=None, bike=None, origin=None):
     if not isinstance(options.get("method"), str) or options["method"] not in Method.values():
         options.pop("method", None)                       # uncertainty's --method is its own
     bike = args.bike if bike is None else bike
-    return Scenario(bike, rider or getattr(args, "rider", None), stiffness or getattr(args, "stiffness", RIGID),
+    return Scenario(bike, rider or getattr(args, "rider", None), stiffness or getattr(args, "stiffness", None),
                     origin=origin or bike, member_inputs=members, **options)
 
 

@@ -195,7 +195,7 @@ def bicycle_model(args):
 
 def _title(args):
     rider = "no rider" if args.rider == "none" else args.rider
-    frame = dialect.stiffness_label(args.stiffness)
+    frame = dialect.frame_name(args)
     model = "" if args.model == "whipple" else f", model {args.model}"
     control = f", control {args.control}" if getattr(args, "control", None) else ""
     return f"{dialect.bike_name(args.bike)}, {rider}, {frame}{model}{control}"
@@ -496,7 +496,8 @@ def _nonlinear_built(args):
                          "Whipple bicycle")
     built = dialect.scenario(args).build()
     if built.stiffness is not None:
-        raise InputError("--nonlinear", f"--stiffness {args.stiffness}", "--stiffness infinite: the nonlinear "
+        given = f"--stiffness {args.stiffness}" if args.stiffness is not None else "the file's frame stiffness"
+        raise InputError("--nonlinear", given, "--stiffness infinite: the nonlinear "
                          "model has a rigid frame")
     return built
 

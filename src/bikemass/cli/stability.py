@@ -102,7 +102,7 @@ def _title(args):
     thesis = " (rider added as the thesis did)" if args.rider != "none" and args.combine == "thesis" else ""
     model = "" if getattr(args, "model", "whipple") == "whipple" else f", model {args.model}"
     control = f", control {args.control}" if getattr(args, "control", None) else ""
-    return f"{dialect.bike_name(args.bike)}, {_rider_name(args.rider)}, {dialect.stiffness_label(args.stiffness)}{model}{control}{thesis}"
+    return f"{dialect.bike_name(args.bike)}, {_rider_name(args.rider)}, {dialect.frame_name(args)}{model}{control}{thesis}"
 
 
 def run_eig(args):
@@ -143,7 +143,7 @@ def run_stability(args):
     def render(fmt):
         if fmt in ("json", "yaml"):
             # the frame as the title names it: a material is a property on the bicycle's own tube sections
-            return dialect.result_document({"frame": dialect.stiffness_label(args.stiffness), **result.to_dict()},
+            return dialect.result_document({"frame": dialect.frame_name(args), **result.to_dict()},
                                            result.units(), fmt)
         if fmt == "csv":
             return ranges_csv(result)
@@ -171,7 +171,7 @@ def run_compare(args):
     options = dialect.figure_checked(args)
     speeds = dialect.parse_speeds(args.speeds, args.max_speeds)
     riders = [r.strip() for r in args.riders.split(",") if r.strip()]
-    stiffnesses = [k.strip() for k in args.stiffnesses.split(",") if k.strip()]
+    stiffnesses = [None] if args.stiffnesses is None else [k.strip() for k in args.stiffnesses.split(",") if k.strip()]
     for option, items in (("--riders", riders), ("--stiffnesses", stiffnesses)):
         if not items:
             raise InputError(option, short(getattr(args, option[2:]), 40), "a comma-separated list of at least one name")
@@ -183,8 +183,12 @@ def run_compare(args):
             row = _rider_name(rider) if not models else f"{_rider_name(rider)}, {model}"
             for stiffness in stiffnesses:
                 result = stability(_built(each, rider, stiffness), speeds=speeds, max_speeds=args.max_speeds)
-                results.setdefault(row, {})[dialect.stiffness_label(stiffness)] = result
-                runs.append({"rider": rider, **({"model": model} if models else {}), "stiffness": stiffness,
+                frame = dialect.frame_name(each, stiffness, rider)
+                results.setdefault(row, {})[frame] = result
+                # no choice given: the bicycle's own, "infinite" unless a parameter file carries its frame's
+                shown = stiffness if stiffness is not None else \
+                    ("infinite" if frame == dialect.stiffness_label(None) else "parameter file")
+                runs.append({"rider": rider, **({"model": model} if models else {}), "stiffness": shown,
                              "weave_speeds": list(result.weave_speeds), "capsize_speeds": list(result.capsize_speeds),
                              "stable_speeds": [list(r) for r in result.stable_speeds]})
     dialect.emit(args, lambda fmt: comparison_text(runs, fmt))

@@ -616,8 +616,9 @@ class Inputs:
         which, key = _stiffness_key(which)
 
         def build():
-            if _rigid(which) and "frame_stiffness" in self.file_members and not bike_changes:
-                return self.file_members["frame_stiffness"]          # the S a parameter file carries
+            if which is None and "frame_stiffness" in self.file_members and not bike_changes:
+                return self.file_members["frame_stiffness"]          # the S a parameter file carries (no choice
+                                                                     # given: the bicycle's own)
             if not self._is_material(which):
                 return catalog.stiffness(self.bike, which)
             return catalog.stiffness(self.bicycle(bike_changes), which, "computed" if bike_changes else "auto")
@@ -631,7 +632,7 @@ class Inputs:
 
         def build():
             for spec in SPECS:                       # a parameter file's compliances (params --model)
-                if _rigid(which) and spec.takes_stiffness and spec.name in self.file_members:
+                if which is None and spec.takes_stiffness and spec.name in self.file_members:
                     return self.file_members[spec.name]
             if which is None or (isinstance(which, str) and which in (RIGID, "rigid")):
                 return Compliances()

@@ -39,6 +39,7 @@ from dataclasses import dataclass, field, fields
 import numpy as np
 
 from ..core.choices import RIGID, Combine, Method, check
+from ..mass.materials import frame_label
 from ..core.errors import InputError, short, wrong_type
 from ..core.frozen import FrozenMap, readonly, short_repr
 from ..models.family import build as build_member, dynamic_derivatives, generated, held_coordinates, linear_model, \
@@ -187,7 +188,7 @@ class Scenario:
 
     bicycle: object
     rider: object = None
-    stiffness: object = RIGID
+    stiffness: object = None
     combine: str = Combine.EXACT.value
     method: str = Method.MESH.value
     model: "ModelChoice | str | None" = None
@@ -195,7 +196,7 @@ class Scenario:
     allow_off_contact: bool = False
     origin: str = field(default="changes", compare=False)
 
-    def __init__(self, bicycle: object, rider: object = None, stiffness: object = RIGID,
+    def __init__(self, bicycle: object, rider: object = None, stiffness: object = None,
                  combine: str = Combine.EXACT.value, method: str = Method.MESH.value,
                  model: "ModelChoice | str | None" = None, member_inputs: "Mapping | None" = None,
                  allow_off_contact: bool = False, origin: str = "changes", **keywords: object):
@@ -249,6 +250,28 @@ class Scenario:
             self.inputs.compliances(choice)
         elif not self.model.members:
             self.inputs.frame_stiffness(choice)
+
+    def frame_label(self):
+        """What this scenario's frame is, in words for a title: as
+        :func:`~bikemass.mass.materials.frame_label` names its stiffness choice, or, with none given, the
+        frame stiffness its parameter file carries (taken then: ``params --stiffness`` wrote it), else
+        ``rigid frame``.
+
+        Examples
+        --------
+        >>> import bikemass as bm
+        >>> bm.Scenario("benchmark").frame_label()
+        'rigid frame'
+        """
+        if self.stiffness is None:
+            try:
+                own = self.inputs.file_members
+            except InputError:
+                own = {}
+            if "frame_stiffness" in own and not self.model.members or \
+                    any(spec.takes_stiffness and spec.name in own for spec in self.model.specs):
+                return "the frame stiffness the parameter file carries"
+        return frame_label(self.stiffness)
 
     def __getstate__(self):
         """The scenario's fields only: its caches stay in the process that made them."""
@@ -396,6 +419,7 @@ def own_model(bicycle, scenario=None):
 
     Examples
     --------
+    >>> from bikemass.scenario.scenario import own_model
     >>> own_model("benchmark").name
     'whipple'
     """

@@ -40,7 +40,7 @@ from ..core.paths import near_spec, near_spec_file
 from ..core.units import DIMENSIONS, UnitError, dimension_of, split_quantity
 from ..models.parameters import NAMES, dimension
 from ..models.registry import BASE, KEYWORDS, spec_members, spec_model
-from ..scenario.scenario import Scenario
+from ..scenario.scenario import Scenario, own_model
 
 SAMPLE_METHODS = ("grid", "lhs", "sobol")
 TOP_KEYS = ("bike", "rider", "stiffness", "combine", "model", *KEYWORDS, "max_speed", "vary", "sample",
@@ -98,7 +98,7 @@ class SweepSpec:
     source: str
     bike: str
     rider: str
-    stiffness: str
+    stiffness: "str | None"                # None: the bicycle's own (a parameter file's block, else rigid)
     combine: str
     max_speed: float
     variables: tuple
@@ -334,14 +334,16 @@ def read_spec(path: "str | os.PathLike") -> "SweepSpec":
         chunk = node["chunk"].number("dimensionless", positive=True)
         if chunk != int(chunk):
             node.fail("a whole number of configurations per task", "chunk")
+    bike = near_spec(path, node["bike"].string())
     spec = SweepSpec(
-        source=str(path), bike=near_spec(path, node["bike"].string()),
+        source=str(path), bike=bike,
         rider=near_spec(path, node["rider"].string()) if node.has("rider") else "none",
-        stiffness=near_spec_file(path, node["stiffness"].string()) if node.has("stiffness") else "infinite",
+        stiffness=near_spec_file(path, node["stiffness"].string()) if node.has("stiffness") else None,
         combine=node["combine"].string(("exact", "thesis")) if node.has("combine") else "exact",
         max_speed=float(max_speed), variables=variables, method=method, n=n, seed=seed,
         global_sensitivity=gsa, chunk=None if chunk is None else int(chunk),
-        model=spec_model(node), members=spec_members(node, lambda text: near_spec(path, text)))
+        model=spec_model(node) if node.has("model") else own_model(bike).name,   # none: the bicycle's own
+        members=spec_members(node, lambda text: near_spec(path, text)))
     grid = method == "grid" and not gsa
     limit = MAX_CONFIGURATIONS if grid else MAX_SAMPLES
     if count_of(spec) > limit:
