@@ -168,3 +168,17 @@ def test_a_members_matrices_spread_as_a_high_precision_difference_says():
             np.testing.assert_allclose(u.matrices[name]["std"], reference, rtol=0, atol=1e-7 * scale)
             np.testing.assert_allclose(u.matrices[name]["nominal"], coefficients_of(scenario.build().model)[name],
                                        rtol=0, atol=0)
+
+
+def test_the_keywords_given_beside_a_scenario_change_it():
+    """``bm.uncertainty(scenario, model=...)``, like ``bm.stability``, applies the keywords to the scenario
+    (they were dropped without a word): the nominal weave speed is that of the changed scenario."""
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", bm.BikemassWarning)       # the Browser's IByy, as measured
+        scenario = bm.Scenario("browser-measured")
+        tyre = bm.uncertainty(scenario, model="tyre").speeds["weave_speed"].nominal
+        reference = bm.stability(scenario.replace(model="tyre")).weave_speeds[0]
+        plain = bm.uncertainty(scenario).speeds["weave_speed"].nominal
+    assert tyre == pytest.approx(reference, abs=1e-9)
+    assert abs(tyre - plain) > 0.1

@@ -563,7 +563,7 @@ def _check_options(spreads, method, samples, seed):
 @renamed_keywords(bike="bicycle")
 def uncertainty(bicycle: "str | os.PathLike | RiderLeanParameters | Scenario",
                 spreads: "Mapping[str, float | Spread] | None" = None,
-                rider: "str | None" = None, stiffness: str = "infinite", combine: str = "exact",
+                rider: "str | None" = None, stiffness: "str | None" = None, combine: "str | None" = None,
                 method: str = "linear", samples: int = 1000, seed: int = 0, speeds: "ArrayLike | None" = None,
                 max_speeds: int = MAX_SPEEDS, model: "str | None" = None, **members: object) -> Propagation:
     """The spread of the canonical matrices, eigenvalues and critical speeds from spreads of the inputs.
@@ -578,7 +578,8 @@ def uncertainty(bicycle: "str | os.PathLike | RiderLeanParameters | Scenario",
     bicycle : str, os.PathLike or Scenario
         Anything ``bm.load_bicycle`` takes (a BicycleParameters file's ``+/-`` values are available
         as spreads), or a :class:`~bikemass.scenario.scenario.Scenario`, whose own rider, stiffness,
-        model and tyres are used. (``bike=`` is the deprecated old name.)
+        model and tyres are used, each replaced by a keyword given here (``model=``, ``rider=``,
+        ``stiffness=``, ``combine=``, a member's such as ``tyres=``). (``bike=`` is the deprecated old name.)
     spreads : Mapping, optional
         Default: the bicycle's own standard deviations (a bicycle computed from measurements: its
         measurements ``measured.<name>``, in its file's units; a parameter file with ``+/-`` values
@@ -588,11 +589,12 @@ def uncertainty(bicycle: "str | os.PathLike | RiderLeanParameters | Scenario",
         SI (m, kg, rad, ...) when bare, or a ``"<number> <unit>"`` string (``"0.1 mm"``). Keys: the 26 benchmark names or
         geometry-level paths (:mod:`bikemass.scenario.inputs`).
     rider : str, optional
-        A pose name or file; ``None``: no rider.
-    stiffness : str
-        ``"infinite"`` (rigid) or a material name, as for :func:`bikemass.stiffness`.
-    combine : {"exact", "thesis"}
-        How the rider joins the rear frame.
+        A pose name or file; ``None``: no rider (a Scenario's own).
+    stiffness : str, optional
+        ``"infinite"`` (rigid) or a material name, as for :func:`bikemass.stiffness`; ``None``: the
+        bicycle's own (a parameter file's frame stiffness, else rigid; a Scenario's own).
+    combine : {"exact", "thesis"}, optional
+        How the rider joins the rear frame; ``None``: ``"exact"`` (a Scenario's own).
     method : {"linear", "montecarlo"}
         First-order propagation, or sampling (``samples`` draws from ``seed``).
     samples : int
@@ -650,8 +652,12 @@ def uncertainty(bicycle: "str | os.PathLike | RiderLeanParameters | Scenario",
     """
     if spreads is not None and not isinstance(spreads, dict):
         raise InputError("spreads", "(argument)", f"a mapping of input key -> std or Spread, got {type(spreads).__name__}")
-    scenario = bicycle if isinstance(bicycle, Scenario) else Scenario(bicycle, rider, stiffness, combine, model=model,
-                                                                 member_inputs=members)
+    if isinstance(bicycle, Scenario):       # the keywords given change the scenario, as bm.stability's do
+        given = {"rider": rider, "stiffness": stiffness, "combine": combine, "model": model}
+        changes = {k: v for k, v in given.items() if v is not None}
+        scenario = bicycle.replace(**changes, **members) if changes or members else bicycle
+    else:
+        scenario = Scenario(bicycle, rider, stiffness, combine or "exact", model=model, member_inputs=members)
     if spreads is None:
         spreads = scenario.measurement_std or scenario.file_std
         if not spreads:
