@@ -61,3 +61,22 @@ def test_a_flexible_models_file_and_infinite(tmp_path, capsys):
     assert own["weave_speeds"] == pytest.approx(steel["weave_speeds"], abs=1e-9)
     assert rigid["weave_speeds"] == pytest.approx(chart_rigid["weave_speeds"], abs=1e-9)
     assert rigid["frame"] == "rigid frame"
+
+
+@pytest.mark.parametrize("model", ["tyre", "rider-lean+tyre", "flexible"])
+def test_a_parameter_file_selects_the_model_it_was_written_for(tmp_path, capsys, model):
+    """``params --model M`` writes ``model: M`` and the members' blocks: read back without --model the file
+    is that model (before, the Whipple model of its 26 names, without a word), with --model whipple the
+    Whipple model."""
+    path = str(tmp_path / "written.yaml")
+    stiffness = ["--stiffness", "steel"] if model == "flexible" else []
+    assert main(["params", "jamis", "--rider", "relaxed", "--model", model, *stiffness, "--format", "yaml",
+                 "-o", path]) == 0
+    capsys.readouterr()
+    own = stability_json(capsys, path)
+    direct = stability_json(capsys, "jamis", "--rider", "relaxed", "--model", model, *stiffness)
+    assert own["weave_speeds"] == pytest.approx(direct["weave_speeds"], abs=1e-9)
+    assert bm.Scenario(path).model.name == model
+    if model != "rider-lean+tyre":          # (the rider-lean set holds its rider: no Whipple reading)
+        whipple = stability_json(capsys, path, "--model", "whipple")
+        assert whipple["weave_speeds"] != pytest.approx(own["weave_speeds"], abs=1e-6)

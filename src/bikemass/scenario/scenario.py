@@ -413,7 +413,8 @@ def own_model(bicycle, scenario=None):
     """The :class:`~bikemass.models.registry.ModelChoice` a bicycle input selects by its own type when no
     model is named: the member its parameter set declares (``rider-lean`` for
     :class:`~bikemass.models.members.rider_lean.parameters.RiderLeanParameters`, and for a file or mapping
-    holding BicycleParameters' ``MooreRiderLean2012`` set), else the Whipple bicycle.  A bicycle input that
+    holding BicycleParameters' ``MooreRiderLean2012`` set), the ``model:`` a parameter file written by
+    ``bikemass params --model M`` declares, else the Whipple bicycle.  A bicycle input that
     cannot be read selects the Whipple bicycle here; building the scenario reports what is wrong with it.
     ``scenario``: the :class:`Scenario` whose inputs read the file (read once, kept), else a fresh one's.
 
@@ -429,6 +430,9 @@ def own_model(bicycle, scenario=None):
     inputs = scenario.inputs if scenario is not None else Inputs(bicycle, None, Combine.EXACT.value,
                                                                  Method.MESH.value, "changes", False)
     try:
+        declared = inputs.file_members.get("model")
+        if declared:                         # a parameter file written by ``params --model M``: its model
+            return parse_model(declared, "model")
         lean = inputs.lean_set
     except InputError:
         return choice
