@@ -80,3 +80,20 @@ def test_a_parameter_file_selects_the_model_it_was_written_for(tmp_path, capsys,
     if model != "rider-lean+tyre":          # (the rider-lean set holds its rider: no Whipple reading)
         whipple = stability_json(capsys, path, "--model", "whipple")
         assert whipple["weave_speeds"] != pytest.approx(own["weave_speeds"], abs=1e-6)
+
+
+@pytest.mark.parametrize("argv", [
+    ["--model", "tyre", "--format", "table"],
+    ["--model", "rider-lean", "--format", "bicycleparameters"],
+    ["--stiffness", "steel", "--format", "csv"],
+    ["--model", "tyre", "--compare", "jamis"],
+])
+def test_params_in_a_form_of_the_26_names_says_what_it_leaves_out(capsys, argv):
+    assert main(["params", "jamis", "--rider", "relaxed", *argv]) == 0
+    err = capsys.readouterr().err
+    assert "26 benchmark parameters" in err and "leaves out" in err
+
+
+def test_params_of_the_whipple_bicycle_in_a_table_says_nothing(capsys):
+    assert main(["params", "jamis", "--rider", "relaxed", "--format", "table"]) == 0
+    assert "warning" not in capsys.readouterr().err

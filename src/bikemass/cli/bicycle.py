@@ -4,10 +4,11 @@ benchmark parameters, a side-view drawing, or a 3D model."""
 import argparse
 import re
 import textwrap
+import warnings
 from pathlib import Path
 
 from ..core.choices import PARAMETER_FORMATS
-from ..core.errors import InputError
+from ..core.errors import BikemassWarning, InputError
 from ..core.paths import available, frames_dir
 from . import dialect
 from .sizes import add_size_option, every_size
@@ -136,7 +137,12 @@ def run_params(args):
         raise InputError("--format", fmt, f"--model {bicycleparameters_models()}: BicycleParameters has no "
                          f"parameter set for --model {args.model}")
     params = scenario.parameters()
+    carried = args.stiffness is None and scenario.frame_label() != dialect.stiffness_label(None)
+    richer = args.model != "whipple" or args.stiffness not in (None, "infinite", "rigid") or carried
     if args.compare:
+        if richer:
+            _only_the_26(f"--compare compares the 26 benchmark parameters and leaves out "
+                         f"{_richer(args, scenario)}")
         reference = scenario.replace(bicycle=args.compare).parameters()
         dialect.emit(args, lambda f: comparison(params, reference, args.bike, args.compare, f))
     elif fmt == "bicycleparameters-yaml" and writer is not None:
@@ -149,9 +155,7 @@ def run_params(args):
                     or scenario.inputs.bicycle().rider_included)
         # a measured bicycle's standard deviations belong to its own parameters: not with a rider added
         std = scenario.file_std if args.rider in (None, "none") and args.model == "whipple" else None
-        carried = args.stiffness is None and scenario.frame_label() != dialect.stiffness_label(None)
-        if fmt in ("yaml", "json") and (args.model != "whipple" or args.stiffness not in (None, "infinite", "rigid")
-                                        or carried):
+        if fmt in ("yaml", "json") and richer:
             # every parameter the model uses, members included: a file every command reads back as it
             # lazy: the library loads numpy; bikemass --help must not
             from ..models.parameter_export import member_document, member_units
@@ -159,8 +163,24 @@ def run_params(args):
             data = member_document(built.choice, params, built.members, built.stiffness, included, args.stiffness)
             dialect.emit(args, lambda f: dialect.document(data, f, member_units(built.choice)))
         else:
+            if richer:
+                _only_the_26(f"--format {fmt} holds the 26 benchmark parameters and leaves out "
+                             f"{_richer(args, scenario)} (--format yaml or json writes them)")
             dialect.emit(args, lambda f: format_parameters(params, f, title, included, std))
     return 0
+
+
+def _richer(args, scenario):
+    """What a command's scenario has beyond the 26 parameters of the rigid Whipple bicycle, in words."""
+    parts = [f"the {args.model} model's own parameters"] if args.model != "whipple" else []
+    if scenario.model.name == "whipple" and dialect.frame_name(args) != dialect.stiffness_label(None):
+        parts.append("the frame stiffness")
+    return " and ".join(parts) or "the model"
+
+
+def _only_the_26(message):
+    """A warning that an output leaves out what the scenario has beyond the 26 parameters."""
+    warnings.warn(message, BikemassWarning, stacklevel=2)
 
 
 def comparison(params, reference, name, reference_name, fmt):
