@@ -256,3 +256,25 @@ def test_contract_held_forearms_read_back(capsys, tmp_path):
 
     direct, back = eigenvalues(*scenario), eigenvalues(str(out), "--model", "arms")
     assert back == pytest.approx(direct, rel=1e-9, abs=1e-9 * np.abs(direct).max())
+
+
+def _arms_warnings(scenario):
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        scenario.build()
+    return [str(w.message) for w in caught if issubclass(w.category, BikemassWarning) and "hand" in str(w.message)
+            or "forearms: handlebars with no rider" in str(w.message)]
+
+
+def test_arms_through_no_hands_on_the_bars_are_warned_not_silent():
+    """The arms act through the hands: a stiffness or damping with a no-hands rider (hands 663 mm from the
+    Jamis's grips), and forearms: handlebars with no rider seated (nothing moves), each say so in one
+    warning; a rider holding the bars says nothing."""
+    stiff = Arms(stiffness=50.0, damping=1.0)
+    held = Arms(stiffness=0.0, damping=0.0, forearms="handlebars")
+    no_hands = _arms_warnings(bm.Scenario("jamis", "no-hands", model="arms", arms=stiff))
+    assert len(no_hands) == 1 and "663 mm" in no_hands[0]
+    assert _arms_warnings(bm.Scenario("jamis", "relaxed", model="arms", arms=stiff)) == []
+    nobody = _arms_warnings(bm.Scenario("benchmark", model="arms", arms=held))
+    assert len(nobody) == 1 and "no rider seated" in nobody[0]
+    assert _arms_warnings(bm.Scenario("jamis", "relaxed", model="arms", arms=held)) == []

@@ -50,6 +50,7 @@ from ..models.parameters import NAMES, BenchmarkParameters
 from ..models.plausibility import check_parameters
 from ..models.registry import BY_KEYWORD, BY_NAME, SPECS, ModelChoice, by_keyword, model_of, parse_model
 from ..models import whipple
+from ..rider.hands import hand_gaps
 from .loading import BicycleLike, RiderLike
 from .inputs import Inputs, _lru, file_unit, get_path, split_changes
 
@@ -390,7 +391,22 @@ class Scenario:
                 typed[spec.name] = self.inputs.compliances(choice, bike)
             else:
                 typed[spec.name] = self._option(spec)
+        hands = None
+        for spec in self.model.specs:            # a member that acts through the rider's hands checks them
+            check_hands = spec.hook("check_hands")
+            if check_hands is not None:
+                hands = self._hands(bike, rider) if hands is None else hands
+                check_hands(typed[spec.name], hands[0])
         return Built(p, None, build_member(self.model, p, members=typed), self.model, FrozenMap(typed))
+
+    def _hands(self, bike, rider):
+        """``(gap,)``: how far the seated rider's hand furthest from a grip is from one (m; ``inf`` where not
+        known), or ``(None,)`` without a seated rider (a member's ``check_hands`` protocol)."""
+        seated = None if self.inputs.lean_set is not None else self.inputs.seated(bike, rider)
+        if seated is None:
+            return (None,)
+        gaps = hand_gaps(seated, dict(self.inputs.bicycle(bike).contacts.grips))
+        return (max((gap for gap, _ in gaps.values()), default=float("inf")),)
 
     def replace(self, **changes):
         """A copy with some fields changed (a new scenario: its own caches); a member's keyword (``tyres=``)

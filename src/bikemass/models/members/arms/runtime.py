@@ -1,6 +1,9 @@
 """The arms member's run-time protocol (:mod:`bikemass.models.members.spec`): how the family takes
 its typed parameters."""
 
+import warnings
+
+from ....core.errors import BikemassWarning
 from .parameters import Arms, as_arms, arms_from_node
 
 
@@ -27,6 +30,28 @@ def write_block(typed):
 def units():
     """Units of the ``arms:`` block's plain values."""
     return Arms.units()
+
+
+HANDS_ON = 0.05
+"""A hand this far (m) from a grip is on it, for the arms' stiffness and damping (the seating puts the
+hands of a pose that holds the bars on the grips, 0 mm; a no-hands pose leaves them 0.66 m (the Jamis)
+to 0.76 m (the Cargo) away)."""
+
+
+def check_hands(typed, gap):
+    """Warn where the arms act through no hands on the bars: ``forearms: handlebars`` with no rider
+    seated (``gap`` ``None``: nothing to move), or a stiffness or damping while the seated rider's hand
+    furthest from a grip is ``gap`` m away (a no-hands pose)."""
+    if gap is None:
+        if typed.forearms == "handlebars":
+            warnings.warn("arms: forearms: handlebars with no rider seated: there are no forearms to move (the "
+                          "bicycle's parameter set is taken as it is; give a rider, --rider POSE)", BikemassWarning,
+                          stacklevel=4)
+        return
+    if (typed.stiffness or typed.damping) and gap > HANDS_ON:
+        where = "not known to be on a grip" if gap == float("inf") else f"{gap * 1000:.0f} mm from the nearest grip"
+        warnings.warn(f"arms: a stiffness or damping between the rider and the bars, but a hand is {where} (a "
+                      "no-hands pose): applied as given", BikemassWarning, stacklevel=4)
 
 
 def forearms_held(typed):
