@@ -42,3 +42,14 @@ def test_member_speed_derivatives_equal_a_difference_of_stability(model, bike, r
         weave, capsize = richardson(scenario, name, scenario.value(name))
         assert result.d_weave_speed[name] == pytest.approx(weave, rel=1e-7, abs=1e-9), (name, "weave")
         assert result.d_capsize_speed[name] == pytest.approx(capsize, rel=1e-7, abs=1e-9), (name, "capsize")
+
+
+def test_contract_a_model_keyword_is_the_scenario_of_that_model():
+    """``bm.sensitivity(p, model="tyre")`` takes the model as ``bm.stability`` does (it was a TypeError):
+    the same as the Scenario of that model, and not the Whipple bicycle's."""
+    p = bm.parameters("benchmark")
+    keyword = bm.sensitivity(p, model="tyre", names=("c",), max_speed=15.0)
+    scenario = bm.sensitivity(bm.Scenario(p, model="tyre"), names=("c",), max_speed=15.0)
+    whipple = bm.sensitivity(p, names=("c",), max_speed=15.0)
+    assert keyword.d_weave_speed["c"] == scenario.d_weave_speed["c"]
+    assert abs(keyword.d_weave_speed["c"] - whipple.d_weave_speed["c"]) > 0.1

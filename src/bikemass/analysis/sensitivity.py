@@ -163,7 +163,8 @@ class Sensitivity(Result):
 
 @renamed_keywords(S="stiffness", params="system", vmax="max_speed")
 def sensitivity(system: "BenchmarkParameters | RiderLeanParameters | Scenario | Built", stiffness: "ArrayLike | None" = None,
-                max_speed: float = 30.0, names: "Sequence[str]" = NAMES) -> Sensitivity:
+                max_speed: float = 30.0, names: "Sequence[str]" = NAMES, model: "str | None" = None,
+                **members: object) -> Sensitivity:
     """Exact derivatives of the weave and capsize speeds with respect to each benchmark parameter.
 
     The first crossing of each kind on ``(0, max_speed]`` and its derivative by the implicit function
@@ -185,6 +186,11 @@ def sensitivity(system: "BenchmarkParameters | RiderLeanParameters | Scenario | 
         Highest speed searched (m/s), positive and finite.
     names : sequence of str
         The parameters to differentiate by (default all 26, :data:`~bikemass.PARAMETER_NAMES`).
+    model : str, optional
+        A member of the model family (``"tyre"``, ``"rider-lean+tyre"``, ...), as for
+        :func:`~bikemass.stability`: the parameter set's own by default, a Scenario's own replaced.
+    **members
+        A member's parameters by its keyword (``tyres=``, ``arms=``), as for :func:`~bikemass.stability`.
 
     Returns
     -------
@@ -223,8 +229,14 @@ def sensitivity(system: "BenchmarkParameters | RiderLeanParameters | Scenario | 
     >>> print(f"{(weave(p.c + h) - weave(p.c - h)) / (2 * h):+.4f} (m/s)/m")
     +11.4800 (m/s)/m
     """
-    if isinstance(system, RiderLeanParameters):
-        system = Scenario(system)                 # its own member: the leaning rider
+    if isinstance(system, RiderLeanParameters) or (model is not None or members) and \
+            isinstance(system, BenchmarkParameters):
+        system = Scenario(system, model=model, member_inputs=members)    # a member (a set's own: the leaning rider)
+    elif isinstance(system, Scenario) and (model is not None or members):
+        system = system.replace(**({"model": model} if model is not None else {}), **members)
+    elif isinstance(system, Built) and (model is not None or members):
+        raise InputError("model", model or ", ".join(members), "nothing beside a built scenario (its model and "
+                         "members are built in): give the Scenario")
     if isinstance(system, (Scenario, Built)):
         if stiffness is not None:
             raise InputError("stiffness", "(matrix)", "none with a scenario (its stiffness choice is built in)")

@@ -84,8 +84,19 @@ def add_bike(p, what="shipped bicycle name, bicycle YAML or parameter file"):
     p.add_argument("bike", metavar="BIKE", help=f"{what} (a misspelt name suggests the closest)")
 
 
+class Once(argparse.Action):
+    """Stores an option's value; the option given twice with another value first is an error (the last
+    would silently win: ``--tyres a.yaml --tyres b.yaml``)."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        before = getattr(namespace, self.dest, self.default)
+        if before != self.default and before != values:
+            raise argparse.ArgumentError(self, f"given twice ({before} and {values}): give it once")
+        setattr(namespace, self.dest, values)
+
+
 def add_rider(p):
-    p.add_argument("--rider", metavar="POSE", default="none",
+    p.add_argument("--rider", metavar="POSE", default="none", action=Once,
                    help="rider pose name or pose YAML file, or 'none' (default none)")
 
 
@@ -106,7 +117,7 @@ def add_stiffness(p, many=False):
                        help="comma-separated stiffnesses as for stability --stiffness "
                             "(e.g. infinite,steel,aluminum; default: the bicycle's own)")
         return
-    action = p.add_argument("--stiffness", metavar="S", default=None,
+    action = p.add_argument("--stiffness", metavar="S", default=None, action=Once,
                             help="rear-frame stiffness: infinite (rigid; the default, unless BIKE is a parameter "
                                  "file carrying its own frame stiffness), a material (steel, titanium, "
                                  "aluminum, carbon, ...: the bicycle's published S if it carries one, else the "
@@ -179,12 +190,12 @@ def model_choice(text):
 
 def add_model(p):
     """``--model`` and each member's parameter file option (``--tyres``, ``--arms``: the members declare them)."""
-    p.add_argument("--model", type=model_choice, default=None, metavar="MODEL",
+    p.add_argument("--model", type=model_choice, default=None, metavar="MODEL", action=Once,
                    help=MODEL_HELP + "; default: the bicycle's own (rider-lean for a MooreRiderLean2012 "
                                      "parameter set), else whipple")
     for spec in SPECS:
         if spec.option:
-            p.add_argument(spec.option, dest=spec.keyword, metavar="FILE", help=spec.option_help)
+            p.add_argument(spec.option, dest=spec.keyword, metavar="FILE", help=spec.option_help, action=Once)
 
 
 def add_control(p):
@@ -202,6 +213,7 @@ def resolve_model(args):
     (:func:`~bikemass.scenario.scenario.own_model`: ``rider-lean`` for a MooreRiderLean2012 set), else
     the Whipple bicycle's."""
     if getattr(args, "model", "") is None:
+        args.model_given = False                       # (compare --models replaces it: no conflict)
         bike = getattr(args, "bike", None)
         if bike is None:
             args.model = BASE

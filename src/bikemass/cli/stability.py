@@ -205,6 +205,9 @@ def _models(args):
     """The models of ``--models`` (canonical names, in order, each once), or ``()`` without it."""
     if args.models is None:
         return ()
+    if getattr(args, "model_given", True):
+        raise InputError("--models", short(args.models, 40), f"--models or --model, not both (--models replaces "
+                         f"--model {args.model})")
     names = []
     for text in args.models.split(","):
         try:
