@@ -161,6 +161,37 @@ def test_the_command_writes_json_and_a_design_that_reads_back(tmp_path, capsys):
     assert max(b - a for a, b in ranges) == pytest.approx(doc["objective"], abs=1e-9)
 
 
+def test_a_member_model_design_reads_back_as_its_model(tmp_path, capsys):
+    """A design of the tyre model over the 26 parameters is written with its model and the tyres' block:
+    ``bikemass stability`` of the file, no option given, gives the reported weave speed of the tyre model
+    (1e-9 m/s), not the Whipple bicycle's (it was the Whipple bicycle, without a word)."""
+    spec = write_spec(tmp_path, {"bike": "benchmark", "model": "tyre",
+                                 "variables": {"c": {"min": 0.05, "max": 0.12}}, "maximise": "weave-speed"})
+    design = tmp_path / "best.yaml"
+    assert main(["optimise", str(spec), "--format", "json", "-o", str(design)]) == 0
+    objective = json.loads(capsys.readouterr().out)["objective"]
+    assert yaml.safe_load(design.read_text())["model"] == "tyre"
+    assert main(["stability", str(design), "--format", "json"]) == 0
+    read_back = json.loads(capsys.readouterr().out)
+    assert read_back["model"] == "tyre"
+    assert read_back["weave_speeds"][0] == pytest.approx(objective, abs=1e-9)
+    whipple = bm.stability(bm.parameters("benchmark").replace(c=bm.parameters(str(design)).c))
+    assert abs(whipple.weave_speeds[0] - objective) > 0.01
+
+
+def test_a_bicycle_file_design_of_a_member_model_names_the_options_to_read_it_back(tmp_path, capsys):
+    """A design whose variables are all in the bicycle file is the bicycle file: its model and members'
+    files are not in it, and one warning names the options that analyse it as the spec did."""
+    spec = write_spec(tmp_path, {"bike": "bmc-roadmachine@54", "model": "tyre",
+                                 "variables": {"chart.head_tube_angle": {"min": "72 deg", "max": "73 deg"}},
+                                 "minimise": "trail"})
+    design = tmp_path / "best.yaml"
+    assert main(["optimise", str(spec), "-o", str(design), "--quiet"]) == 0
+    warned = capsys.readouterr().err.strip().splitlines()
+    assert len(warned) == 1 and "warning" in warned[0] and "--model tyre" in warned[0]
+    assert "chart" in yaml.safe_load(design.read_text())
+
+
 @pytest.mark.parametrize("doc, key", [
     ({"bike": "benchmark", "variables": {"c": {"min": 0.1, "max": 0.05}}, "maximise": "stable-range"}, "variables.c"),
     ({"bike": "benchmark", "variables": {"c": {"min": 0.05, "max": 0.1}}, "maximise": "speed"}, "maximise"),

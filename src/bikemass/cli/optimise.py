@@ -2,8 +2,9 @@
 
 import argparse
 import sys
+import warnings
 
-from ..core.errors import InputError
+from ..core.errors import BikemassWarning, InputError
 from ..core.progress import Progress
 from . import dialect
 from .figure_options import add_figure_options, figure_options, write_figure
@@ -100,18 +101,23 @@ def render(result, fmt):
 
 def write_design(spec, result, path):
     """Write ``result``'s design to ``path``: the bicycle YAML with the design's values where every
-    variable is a dotted path into the bicycle (the rider stays apart: ``--rider``), else the benchmark
-    parameter set of the design, its rider included."""
+    variable is a dotted path into the bicycle (the rider stays apart: ``--rider``, and so do the model,
+    its members' files and the stiffness, which a warning names), else the parameter file of the design
+    with its rider included: for a model beyond the rigid Whipple bicycle, every parameter it uses
+    (``bikemass params --model M --format yaml``'s form, read back as the same model)."""
     # lazy: the library loads numpy; bikemass --help must not
     import yaml
     from ..core.output import write_atomic
     from ..design.problem import Problem
-    from ..models.parameter_export import format_parameters
+    from ..models.parameter_export import format_parameters, member_document, member_units
     from ..scenario.inputs import split_changes
 
     problem = Problem(spec)
-    changes = problem.changes([result.variables[v.key] for v in spec.variables])
-    bike, rider, params, _ = split_changes(changes)
+    x = [result.variables[v.key] for v in spec.variables]
+    bike, rider, params, _ = split_changes(problem.changes(x))
+    built = problem.design(x).built
+    richer = bool(built.choice.members) or built.stiffness is not None
+    included = spec.rider not in (None, "none")
     if bike and not rider and not params:
         try:
             doc = problem.scenario.inputs.bicycle_document(bike)
@@ -121,6 +127,28 @@ def write_design(spec, result, path):
             header = (f"# optimal design of {spec.source} (bikemass optimise): {result.sense} {result.metric} = "
                       f"{result.objective:.6g} {result.metric_units[result.metric]}\n")
             write_atomic(path, header + yaml.safe_dump(doc, sort_keys=False, allow_unicode=True))
+            if richer or included:
+                warnings.warn(f"{path} holds the bicycle alone: read it back with {_spec_options(spec)} as the "
+                              f"spec analyses it", BikemassWarning, stacklevel=2)
             return
-    built = problem.design([result.variables[v.key] for v in spec.variables]).built
-    write_atomic(path, format_parameters(built.parameters, "yaml", rider_included=spec.rider not in (None, "none")))
+    if richer:
+        data = member_document(built.choice, built.parameters, built.members, built.stiffness, included,
+                               spec.stiffness or "")
+        write_atomic(path, dialect.document(data, "yaml", member_units(built.choice)))
+        return
+    write_atomic(path, format_parameters(built.parameters, "yaml", rider_included=included))
+
+
+def _spec_options(spec):
+    """The command-line options that analyse a bicycle file as ``spec`` does (its rider, model, members'
+    files and stiffness)."""
+    # lazy: the registry loads numpy; bikemass --help must not
+    from ..models.registry import BASE
+
+    options = [f"--rider {spec.rider}"] if spec.rider not in (None, "none") else []
+    if spec.model != BASE:
+        options.append(f"--model {spec.model}")
+    options += [f"--{keyword} {value}" for keyword, value in spec.members]
+    if spec.stiffness is not None:
+        options.append(f"--stiffness {spec.stiffness}")
+    return " ".join(options)
