@@ -203,3 +203,31 @@ def test_stability_sensitivity_and_a_sweep_row_give_the_same_critical_speeds(c, 
             assert ours is None and row[name] == ""
             continue
         assert ours == pytest.approx(speeds[0], abs=1e-9) and float(row[name]) == pytest.approx(speeds[0], abs=1e-9)
+
+
+def test_a_segment_change_of_a_pose_re_seated_by_its_posture_is_refused_not_dropped():
+    """The shipped Relaxed pose misses the Jamis's contacts, so it is re-seated by its ``posture:``, which
+    places every segment afresh: a changed torso angle was dropped without a word (a sweep of it flat, its
+    derivative 0). It is refused in one line naming the key and the keys that act; the posture's elbow
+    acts (the weave speed moves), and with the pose kept as written (``allow_off_contact``) the torso angle
+    moves the rear body's mass centre as a rotation of the torso about its top plane does."""
+    scenario = Scenario("jamis", "relaxed")
+    with pytest.raises(bm.InputError, match=r"rider\.segments\.torso\.angle: .*rider\.posture"):
+        scenario.build({"rider.segments.torso.angle": "20 deg"})
+    weaves = [bm.stability(scenario.build({"rider.posture.elbow": f"{a} deg"})).weave_speeds[0] for a in (20, 30)]
+    assert abs(weaves[1] - weaves[0]) > 1e-3
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", bm.BikemassWarning)
+        written = Scenario("jamis", "relaxed", allow_off_contact=True)
+        base = written.build().parameters
+        turned = written.build({"rider.segments.torso.angle": "25.362 deg"}).parameters
+    torso = next(part for part in bm.load_rider("relaxed").parts if part.name == "torso")
+    top, com = torso.placement.translation, torso.mass_properties().com
+
+    def turn(a):            # the pose file's angle: clockwise about y seen from +y (axis (-sin a, 0, cos a))
+        return np.array([[math.cos(a), 0.0, -math.sin(a)], [0.0, 1.0, 0.0], [math.sin(a), 0.0, math.cos(a)]])
+    moved = top + turn(math.radians(10.0)) @ (com - top)
+    assert turned.mB == pytest.approx(base.mB, abs=1e-12)
+    # the rear body's mass centre moves by the torso's mass times its mass centre's move, over mB
+    assert turned.xB - base.xB == pytest.approx(torso.mass * (moved[0] - com[0]) / base.mB, abs=1e-9)
+    assert turned.zB - base.zB == pytest.approx(torso.mass * (moved[2] - com[2]) / base.mB, abs=1e-9)

@@ -419,7 +419,7 @@ def geometry_sensitivity(scenario: Scenario, keys: "str | Sequence[str]", result
         A bicycle, rider, stiffness and model: ``bm.Scenario("jamis", "relaxed", "steel")``.
     keys : str or sequence of str
         Dotted paths into the bicycle or pose YAML (``"geometry.trail"``,
-        ``"sections.seat_stay.wall"``, ``"chart.stack"``, ``"rider.segments.torso.angle"``) or
+        ``"sections.seat_stay.wall"``, ``"chart.stack"``, ``"rider.posture.elbow"``) or
         benchmark names; see :mod:`bikemass.scenario.inputs`.
     result : Sensitivity, optional
         The scenario's :func:`sensitivity` if already computed.

@@ -92,7 +92,17 @@ class InputError(ValueError):
 
 class InputTypeError(InputError, TypeError):
     """Bad input of the wrong Python type (``bm.load_bicycle(None)``): an :class:`InputError`
-    that is also a ``TypeError``."""
+    that is also a ``TypeError``.
+
+    Examples
+    --------
+    >>> import bikemass as bm
+    >>> try:
+    ...     bm.load_bicycle(None)
+    ... except bm.InputTypeError as error:
+    ...     print(error.key, "|", isinstance(error, TypeError), isinstance(error, bm.InputError))
+    (argument) | True True
+    """
 
 
 def wrong_type(what, value, expected):

@@ -51,7 +51,7 @@ class SeatedRider:
     (``as written``, ``solved``, ``unchecked``), measured ``contacts`` ``{name: (residual m,
     bicycle key)}``, the chain ``solution`` if solved, and ``warnings`` (lines)."""
 
-    rider: object
+    rider: Rider
     bicycle: object
     how: str
     contacts: dict

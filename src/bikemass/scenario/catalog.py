@@ -22,7 +22,7 @@ from ..core.paths import closest_name
 from ..mass.materials import Material, load_materials
 from ..models.plausibility import check_stiffness, warn_stiffness
 from ..rider import Rider
-from ..rider.seating import seat_rider
+from ..rider.seating import SeatedRider, seat_rider
 from .frame import frame_stiffness
 from .loading import BicycleLike, RiderLike, load_bicycle, load_rider  # noqa: F401 (re-exported)
 
@@ -79,12 +79,20 @@ def seated_rider(bicycle: BicycleLike, rider: RiderLike, allow_off_contact: bool
     """
     if rider is None or (isinstance(rider, str) and rider == "none"):
         return None
+    return seating(bicycle, rider, allow_off_contact, as_printed).rider
+
+
+def seating(bicycle: BicycleLike, rider: RiderLike, allow_off_contact: bool = False,
+            as_printed: bool = False) -> SeatedRider:
+    """:func:`seated_rider` with how the rider was seated: the
+    :class:`~bikemass.rider.seating.SeatedRider` (its ``how``: ``"as written"``, ``"solved"`` or
+    ``"unchecked"``, and its contacts); its warning lines are warned here."""
     model = load_bicycle(bicycle)
     refuse_second_rider(model, rider)
     seated = seat_rider(rider, model, as_printed, allow_off_contact)
     for line in seated.warnings:
-        warnings.warn(line, BikemassWarning, stacklevel=2)
-    return seated.rider
+        warnings.warn(line, BikemassWarning, stacklevel=3)
+    return seated
 
 
 def stiffness(bicycle: BicycleLike, which: "str | os.PathLike | Material | ArrayLike | None",

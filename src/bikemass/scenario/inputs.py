@@ -5,7 +5,8 @@ Inputs are named by keys:
 * one of the 26 benchmark names (``c``, ``lam``, ...): replaces that value in the final set;
 * ``stiffness``: a stiffness choice (``infinite``, ``steel``, ... or a file), as ``--stiffness``;
 * ``rider.<path>``: a dotted path into the pose YAML (``rider.chain.torso_lean``,
-  ``rider.segments.torso.angle``);
+  ``rider.posture.elbow``; ``rider.segments.torso.angle`` of a placement pose that meets the
+  bicycle's contacts as written: one re-seated by its ``posture:`` refuses it);
 * any other dotted path: into the bicycle YAML (``sections.seat_stay.wall``,
   ``geometry.trail``, ``chart.head_tube_angle``).  In a list, a step is an element's
   ``name`` or its index (``tubes.down_tube.section``, ``components.0.mass``).
@@ -50,7 +51,7 @@ from ..rider.hands import forearms_on_handlebars
 from ..rider.lean_split import rider_lean_parameters
 from ..rider.seating import SeatedRider
 from . import catalog
-from .catalog import seated_rider
+from .catalog import seated_rider, seating
 from .loading import load_bicycle, load_rider
 
 RIDER_PREFIX = "rider."
@@ -522,8 +523,24 @@ class Inputs:
                     return self.rider.rider
                 return seated_rider(bicycle, self.rider, self.allow_off_contact)
             rider = self.posed_rider(rider_changes)
-            return None if rider is None else seated_rider(bicycle, rider, self.allow_off_contact)
+            if rider is None:
+                return None
+            seated = seating(bicycle, rider, self.allow_off_contact)
+            self._refuse_lost_segments(seated, rider_changes)
+            return seated.rider
         return _lru(self._cache("seated"), (bike_changes, rider_changes), build)
+
+    def _refuse_lost_segments(self, seated, rider_changes):
+        """A placement pose re-seated by its ``posture:`` (its contacts off this bicycle's) is solved
+        afresh, every segment placed by the chain: a change of its ``segments:`` would be dropped without
+        a word (a sweep of it flat, its derivative 0), so it is refused, naming the keys that do act."""
+        edited = [path for path, _ in rider_changes if path.split(".")[0] == "segments"]
+        if edited and seated.how == "solved":
+            raise InputError(self.origin, f"rider.{edited[0]}",
+                             "a change the seated rider keeps (this placement pose is re-seated on the bicycle by its "
+                             "posture:, its contacts being off the bicycle's, which places every segment afresh); "
+                             "change rider.posture.* (e.g. rider.posture.elbow), or give a pose that meets the "
+                             "bicycle's contacts")
 
     def held(self, bike_changes=(), rider_changes=()):
         """The seated rider (:meth:`seated`) with the forearms on the handlebars (the arms member's
