@@ -302,15 +302,21 @@ def _bracketed(f, a, b, fa, fb):
     return brentq(f, a, b, xtol=XTOL, rtol=4 * np.finfo(float).eps)
 
 
+def _near(v, lo):
+    """The lower end of :func:`_refine`'s first bracket around ``v``: the roots there (its first
+    evaluation, memoised) stand for the candidate's own, a relative 1e-9 away."""
+    return max(lo, v - BRACKETS[0] * (1 + v))
+
+
 def _real_crossing(at, v, lo, hi):
     """``(speed, 0.0)`` if a real root passes through zero at or near ``v`` (refined), else ``None``."""
-    roots = at(v)
+    roots = at(_near(v, lo))
     scale = np.abs(roots).max()
 
     def root(x):
         r = at(x)
         return r[np.argmin(np.abs(r))]
-    if abs(root(v).imag) > VERIFY_TOL:
+    if abs(root(_near(v, lo)).imag) > VERIFY_TOL:
         return None
     speed = _refine(lambda x: float(root(x).real), v, lo, hi)
     hit = root(speed)
@@ -320,7 +326,7 @@ def _real_crossing(at, v, lo, hi):
 def _oscillatory_crossing(at, v, lo, hi):
     """``(speed, w)`` if a complex pair crosses the imaginary axis at or near ``v`` (refined), else
     ``None``.  The pair is the upper-half-plane root nearest the axis relative to its modulus."""
-    roots = at(v)
+    roots = at(_near(v, lo))
     upper = roots[roots.imag > VERIFY_TOL * (1 + np.abs(roots))]
     if not len(upper):
         return None
