@@ -65,7 +65,9 @@ def polynomial(coefficients, speed):
     an array of speeds (n,) -> ``(n, *coefficients.shape[1:])``."""
     v = np.asarray(speed, dtype=float)
     powers = v[..., None] ** np.arange(len(coefficients))
-    return np.tensordot(powers, coefficients, axes=(-1, 0))
+    # tensordot's own reshape and dot, without its checks (a third of its cost on one speed)
+    flat = np.reshape(coefficients, (len(coefficients), -1))
+    return (powers @ flat).reshape(v.shape + np.shape(coefficients)[1:])
 
 
 @dataclass(frozen=True, eq=False)

@@ -315,7 +315,8 @@ def filled_values(model, v, A=None):
     size = np.abs(at_nodes)
     if not (np.all(np.isfinite(at_nodes)) and size.max() <= FILL_SPREAD * max(size.min(), 1e-300)):
         return _plain_values(A[:]), candidates, proven
-    steps, certain = nearest_steps(at_nodes)
+    sep = _nearest_other(at_nodes)          # each LAPACK speed's distances, for its steps and the bound
+    steps, certain = nearest_steps(at_nodes, sep=sep)
     for _ in range(FILL_HALVINGS):            # a cell where roots come close: LAPACK at its middle too
         wide = np.flatnonzero(~certain & (np.diff(nodes) > 2))
         if not len(wide):
@@ -325,7 +326,9 @@ def filled_values(model, v, A=None):
         place = np.empty(len(merged), dtype=int)
         place[merged] = np.arange(len(merged))
         nodes = np.r_[nodes, middle][merged]
-        at_nodes = np.concatenate([at_nodes, _plain_values(A[middle])])[merged]
+        at_middle = _plain_values(A[middle])
+        at_nodes = np.concatenate([at_nodes, at_middle])[merged]
+        sep = np.concatenate([sep, _nearest_other(at_middle)])[merged]
         # the cells not halved keep their steps; the halves' are found
         keep = np.ones(len(steps), dtype=bool)
         keep[wide] = False
@@ -333,7 +336,7 @@ def filled_values(model, v, A=None):
         halves = np.r_[place[wide], place[wide] + 1]
         new_steps, new_certain = np.empty((len(nodes) - 1, m), dtype=int), np.empty(len(nodes) - 1, dtype=bool)
         new_steps[place[kept]], new_certain[place[kept]] = steps[kept], certain[kept]
-        new_steps[halves], new_certain[halves] = nearest_steps(at_nodes, halves)
+        new_steps[halves], new_certain[halves] = nearest_steps(at_nodes, halves, sep)
         steps, certain = new_steps, new_certain
     values = np.empty((n, m), dtype=complex)
     values[nodes] = at_nodes
@@ -372,15 +375,16 @@ def filled_values(model, v, A=None):
         candidates[filled[1:] & (filled[:-1] | node[:-1])] = np.arange(m)      # inside a cell: same column
         last = np.flatnonzero(filled[:-1] & node[1:])                            # onto the cell's end
         candidates[last] = steps[np.searchsorted(nodes, last, side="right") - 1]
-        proven = _proven_cells(v, nodes, at_nodes, steps, rows, cell, t[:, 0], ok, np.abs(s - guess), proven)
+        proven = _proven_cells(v, nodes, at_nodes, sep, steps, rows, cell, t[:, 0], ok, np.abs(s - guess), proven)
     if len(rest):
         values[rest] = _plain_values(A[rest])
     return values, candidates, proven
 
 
-def _proven_cells(v, nodes, at_nodes, steps, rows, cell, t, ok, deviation, proven):
+def _proven_cells(v, nodes, at_nodes, sep, steps, rows, cell, t, ok, deviation, proven):
     """``proven`` with every step of each cell of LAPACK speeds set whose continued roots are certain
-    steps of :func:`checked_steps` by a bound, without their distances.
+    steps of :func:`checked_steps` by a bound, without their distances (``sep``: the squared distances
+    to the nearest other root at the LAPACK speeds, :func:`_nearest_other` of ``at_nodes``).
 
     In a cell whose ends are a certain step (every root moves by ``move_i < R_i / 4``, ``R_i`` its
     distance to the nearest other root at either end), the straight lines between the roots' ends
@@ -399,7 +403,6 @@ def _proven_cells(v, nodes, at_nodes, steps, rows, cell, t, ok, deviation, prove
     dt = np.maximum(np.maximum.reduceat(t - before, starts), 1.0 - t[ends])
     delta = np.maximum.reduceat(deviation.max(axis=1), starts)
     settled = np.logical_and.reduceat(ok, starts)
-    sep = _nearest_other(at_nodes)
     end = np.take_along_axis(at_nodes[which + 1], steps[which], axis=1)
     move = np.abs(end - at_nodes[which])
     room = np.sqrt(np.minimum(sep[which], np.take_along_axis(sep[which + 1], steps[which], axis=1)))
