@@ -3,6 +3,7 @@ that is also a TypeError), never a bare TypeError/ValueError/ZeroDivisionError f
 parameter sets the model is not defined for are refused instead of analysed."""
 
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -200,3 +201,31 @@ def test_web_api_refuses_typed_over_parameters_off_the_model():
 def test_member_inputs_that_are_no_mapping_are_an_input_type_error(given):
     with pytest.raises(InputTypeError, match="member_inputs"):
         bm.Scenario("benchmark", model="tyre", member_inputs=given)
+
+
+@pytest.mark.parametrize("changes, error, match", [
+    (["c"], bm.InputTypeError, "a mapping"), (42, bm.InputTypeError, "a mapping"),
+    ({42: 1.0}, bm.InputTypeError, "dotted path"), ({"c": [1.0]}, bm.InputError, "c: a number"),
+    ({"rider.posture.elbow": None}, bm.InputTypeError, "rider.posture.elbow"),
+    ({"rider.posture.elbow": [1.0, 2.0]}, bm.InputError, "posture.elbow: a number in SI"),
+])
+def test_bad_changes_to_a_scenario_are_input_errors(changes, error, match):
+    """``Scenario.build`` of changes that are not a mapping of dotted keys to values is one InputError
+    (an InputTypeError for the wrong Python type), not Python's AttributeError or a cache's TypeError."""
+    with pytest.raises(error, match=match):
+        bm.Scenario("jamis", "relaxed").build(changes)
+
+
+def test_a_location_changed_from_python_as_a_list_a_tuple_or_an_array_is_the_same():
+    """A segment's location given as a list, a tuple or an array is one change (a tuple was refused as
+    not a list; a list failed as a cache key); the head moved 8 mm forward moves the rear body's mass
+    centre by the head's mass times 8 mm over mB."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", bm.BikemassWarning)
+        scenario = bm.Scenario("jamis", "relaxed", allow_off_contact=True)
+        base = scenario.build().parameters
+        moved = [scenario.build({"rider.segments.head.location": value}).parameters
+                 for value in ([0.410, 0.0, -1.895], (0.410, 0.0, -1.895), np.array([0.410, 0.0, -1.895]))]
+    head = next(part for part in bm.load_rider("relaxed").parts if part.name == "head")
+    for p in moved:
+        assert p.xB - base.xB == pytest.approx(head.mass * 0.008 / base.mB, abs=1e-9)

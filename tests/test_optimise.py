@@ -192,6 +192,47 @@ def test_a_bicycle_file_design_of_a_member_model_names_the_options_to_read_it_ba
     assert "chart" in yaml.safe_load(design.read_text())
 
 
+def test_a_bicycle_file_design_names_every_option_and_strict_writes_nothing(tmp_path, capsys):
+    """A bicycle-file design of a spec with a rider and ``combine: thesis``: the header and the one warning
+    name ``--rider relaxed --combine thesis``, and those options give the reported objective (1e-9 m/s;
+    without ``--combine thesis`` it differs). Under ``--strict`` the warning is an error before anything is
+    written."""
+    spec = write_spec(tmp_path, {"bike": "jamis", "rider": "relaxed", "combine": "thesis",
+                                 "variables": {"sections.seat_stay.wall": {"min": "0.035 in", "max": "0.045 in"}},
+                                 "maximise": "weave-speed"})
+    design = tmp_path / "best.yaml"
+    assert main(["optimise", str(spec), "-o", str(design), "--format", "json"]) == 0
+    out = capsys.readouterr()
+    objective = json.loads(out.out)["objective"]
+    assert "--rider relaxed --combine thesis" in out.err
+    assert "# analysed as the spec did with: --rider relaxed --combine thesis" in design.read_text()
+    weave = {}
+    for combine in ("thesis", "exact"):
+        assert main(["stability", str(design), "--rider", "relaxed", "--combine", combine, "--format", "json"]) == 0
+        weave[combine] = json.loads(capsys.readouterr().out)["weave_speeds"][0]
+    assert weave["thesis"] == pytest.approx(objective, abs=1e-9)
+    assert abs(weave["exact"] - objective) > 1e-3
+    strict = tmp_path / "strict.yaml"
+    assert main(["optimise", str(spec), "-o", str(strict), "--strict", "--quiet"]) == 2
+    assert not strict.exists()
+
+
+def test_a_changed_trail_is_written_as_the_parameter_set_that_reads_back(tmp_path, capsys):
+    """A design over ``geometry.trail`` of a keypoint bicycle: the changed bicycle file would contradict
+    its head-tube keypoints when read as a file (a search leaves them in place), so the parameter set is
+    written; ``bikemass stability`` of it (with the spec's speeds, which the warning names) hits the
+    target to 1e-6 m/s."""
+    spec = write_spec(tmp_path, {"bike": "jamis", "rider": "relaxed", "max_speed": 20,
+                                 "variables": {"geometry.trail": {"min": "50 mm", "max": "70 mm"}},
+                                 "target": {"weave-speed": 5.5}})
+    design = tmp_path / "best.yaml"
+    assert main(["optimise", str(spec), "-o", str(design), "--quiet"]) == 0
+    assert "--speeds 0:20:0.05" in capsys.readouterr().err
+    assert "c" in yaml.safe_load(design.read_text())
+    assert main(["stability", str(design), "--speeds", "0:20:0.05", "--format", "json"]) == 0
+    assert json.loads(capsys.readouterr().out)["weave_speeds"][0] == pytest.approx(5.5, abs=1e-6)
+
+
 @pytest.mark.parametrize("doc, key", [
     ({"bike": "benchmark", "variables": {"c": {"min": 0.1, "max": 0.05}}, "maximise": "stable-range"}, "variables.c"),
     ({"bike": "benchmark", "variables": {"c": {"min": 0.05, "max": 0.1}}, "maximise": "speed"}, "maximise"),

@@ -19,6 +19,7 @@ import bikemass as bm
 from bikemass.bicycle.chart import CHECKED_KEYS
 from bikemass.cli.main import main
 from bikemass.core.paths import frames_dir
+from bikemass.rider import poses_dir
 from bikemass.scenario.scenario import Scenario
 
 BIKE, SIZE = "bmc-roadmachine", 56
@@ -231,3 +232,51 @@ def test_a_segment_change_of_a_pose_re_seated_by_its_posture_is_refused_not_drop
     # the rear body's mass centre moves by the torso's mass times its mass centre's move, over mB
     assert turned.xB - base.xB == pytest.approx(torso.mass * (moved[0] - com[0]) / base.mB, abs=1e-9)
     assert turned.zB - base.zB == pytest.approx(torso.mass * (moved[2] - com[2]) / base.mB, abs=1e-9)
+
+
+def _relaxed_with(tmp_path, name, edit):
+    """The shipped Relaxed pose file with ``edit(doc)`` applied, written as ``name`` (its body resolved)."""
+    doc = yaml.safe_load((poses_dir() / "relaxed.yaml").read_text())
+    edit(doc)
+    path = tmp_path / name
+    path.write_text(yaml.safe_dump(doc, sort_keys=False))
+    return str(path)
+
+
+def test_a_posture_change_of_a_pose_used_as_written_is_refused_not_dropped():
+    """A placement pose used as written (here allowed off the contacts) does not use its ``posture:``: a
+    changed elbow gave the base result to the bit. It is refused in one line naming ``rider.segments``."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", bm.BikemassWarning)
+        scenario = Scenario("jamis", "relaxed", allow_off_contact=True)
+        with pytest.raises(bm.InputError, match=r"rider\.posture\.elbow: .*rider\.segments"):
+            scenario.build({"rider.posture.elbow": "40 deg"})
+
+
+def test_what_re_seating_keeps_of_a_placement_pose_still_acts(tmp_path):
+    """Re-seating by the posture places the body's segments afresh but keeps a segment's ``frame:`` (the
+    posture names no ``front:``) and a lumped body where the file puts it: those changes act. The
+    forearms moved to the rear frame take their mass off the front assembly (mH falls by the forearms'
+    mass); a lumped 5 kg load is kept, warned of, and its mass changed adds to mB."""
+    front = _relaxed_with(tmp_path, "front.yaml", lambda d: d["segments"]["lower_arm"].update(frame="front"))
+    forearms = sum(p.mass for p in bm.load_rider("relaxed").parts if p.name.startswith("lower_arm"))
+    scenario = Scenario("jamis", front)
+    held, free = scenario.build().parameters, scenario.build({"rider.segments.lower_arm.frame": "rear"}).parameters
+    assert held.mH - free.mH == pytest.approx(forearms, abs=1e-9)
+
+    load = {"mass": "5 kg", "com": [0.2, 0.0, -1.2], "inertia": [[0.1, 0, 0], [0, 0.1, 0], [0, 0, 0.1]]}
+    packed = _relaxed_with(tmp_path, "pack.yaml", lambda d: d["segments"].update(backpack=load))
+    with pytest.warns(bm.BikemassWarning, match=r"backpack \(5 kg\) kept"):
+        with_pack = Scenario("jamis", packed).build().parameters
+    without = Scenario("jamis", "relaxed").build().parameters
+    assert with_pack.mB - without.mB == pytest.approx(5.0, abs=1e-9)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", bm.BikemassWarning)
+        heavier = Scenario("jamis", packed).build({"rider.segments.backpack.mass": "8 kg"}).parameters
+    assert heavier.mB - with_pack.mB == pytest.approx(3.0, abs=1e-9)
+
+
+def test_the_refusal_names_the_posture_keys_the_pose_has():
+    """The refusal of a lost segment change lists the posture keys the file has (Relaxed: hands, elbow)."""
+    with pytest.raises(bm.InputError, match=r"change rider\.posture\.hands, rider\.posture\.elbow"):
+        Scenario("jamis", "relaxed").build({"rider.segments.head.angle": "20 deg"})

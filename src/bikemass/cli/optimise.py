@@ -49,8 +49,9 @@ def register(sub):
                    help="table (default), json or yaml (with a units block) of the result on stdout")
     p.add_argument("-o", "--output", metavar="FILE",
                    help="write the optimal design as a file every command reads: the bicycle YAML with the "
-                        "values applied (dotted paths into the bicycle only), else the benchmark parameter "
-                        "set (.yaml) of the design with its rider included")
+                        "values applied (dotted paths into the bicycle only; its header and a warning name the "
+                        "options, such as --rider and --model, that analyse it as the spec did), else the "
+                        "parameter set (.yaml) of the design with its rider included and the spec's model")
     p.add_argument("--plot", metavar="FILE", help="draw the convergence and the objective around the design "
                                                   "into FILE (.png, .pdf, .svg, ...)")
     add_figure_options(p)
@@ -101,10 +102,12 @@ def render(result, fmt):
 
 def write_design(spec, result, path):
     """Write ``result``'s design to ``path``: the bicycle YAML with the design's values where every
-    variable is a dotted path into the bicycle (the rider stays apart: ``--rider``, and so do the model,
-    its members' files and the stiffness, which a warning names), else the parameter file of the design
-    with its rider included: for a model beyond the rigid Whipple bicycle, every parameter it uses
-    (``bikemass params --model M --format yaml``'s form, read back as the same model)."""
+    variable is a dotted path into the bicycle and the file reads back as that bicycle (the rider, the
+    model, its members' files, the stiffness and the combination stay apart: the file's header and one
+    warning, given before anything is written, name the options that analyse it as the spec did), else
+    the parameter file of the design with its rider included: for a model beyond the rigid Whipple
+    bicycle, every parameter it uses (``bikemass params --model M --format yaml``'s form, read back as
+    the same model)."""
     # lazy: the library loads numpy; bikemass --help must not
     import yaml
     from ..core.output import write_atomic
@@ -116,22 +119,23 @@ def write_design(spec, result, path):
     x = [result.variables[v.key] for v in spec.variables]
     bike, rider, params, _ = split_changes(problem.changes(x))
     built = problem.design(x).built
-    richer = bool(built.choice.members) or built.stiffness is not None
     included = spec.rider not in (None, "none")
-    if bike and not rider and not params:
-        try:
-            doc = problem.scenario.inputs.bicycle_document(bike)
-        except InputError:
-            doc = None
-        if doc is not None:
-            header = (f"# optimal design of {spec.source} (bikemass optimise): {result.sense} {result.metric} = "
-                      f"{result.objective:.6g} {result.metric_units[result.metric]}\n")
-            write_atomic(path, header + yaml.safe_dump(doc, sort_keys=False, allow_unicode=True))
-            if richer or included:
-                warnings.warn(f"{path} holds the bicycle alone: read it back with {_spec_options(spec)} as the "
-                              f"spec analyses it", BikemassWarning, stacklevel=2)
-            return
-    if richer:
+    doc = _bicycle_design(problem, bike) if bike and not rider and not params else None
+    if doc is not None:
+        options = _spec_options(spec)
+        header = (f"# optimal design of {spec.source} (bikemass optimise): {result.sense} {result.metric} = "
+                  f"{result.objective:.6g} {result.metric_units[result.metric]}\n"
+                  + (f"# analysed as the spec did with: {options}\n" if options else ""))
+        if options:
+            warnings.warn(f"{path} holds the bicycle alone: read it back with {options} as the spec analyses it",
+                          BikemassWarning, stacklevel=2)
+        write_atomic(path, header + yaml.safe_dump(doc, sort_keys=False, allow_unicode=True))
+        return
+    speeds = _speed_option(spec)
+    if speeds:
+        warnings.warn(f"{path} holds no speed range: read it back with {speeds} as the spec analyses it",
+                      BikemassWarning, stacklevel=2)
+    if built.choice.members or built.stiffness is not None:
         data = member_document(built.choice, built.parameters, built.members, built.stiffness, included,
                                spec.stiffness or "")
         write_atomic(path, dialect.document(data, "yaml", member_units(built.choice)))
@@ -139,16 +143,44 @@ def write_design(spec, result, path):
     write_atomic(path, format_parameters(built.parameters, "yaml", rider_included=included))
 
 
+def _bicycle_design(problem, changes):
+    """The bicycle YAML document of the design's bicycle ``changes``, or ``None`` where the bicycle is
+    not a YAML document or the changed document would not read back as the changed bicycle (a file is
+    checked as written: a changed ``geometry.trail`` contradicts the head-tube keypoints the analysis
+    leaves in place; the parameter file is written instead)."""
+    # lazy: the library loads numpy; bikemass --help must not
+    from ..scenario.loading import load_bicycle
+
+    try:
+        doc = problem.scenario.inputs.bicycle_document(changes)
+        load_bicycle(doc)
+    except InputError:
+        return None
+    return doc
+
+
 def _spec_options(spec):
-    """The command-line options that analyse a bicycle file as ``spec`` does (its rider, model, members'
-    files and stiffness)."""
+    """The command-line options (quoted for a shell) that analyse a bicycle file as ``spec`` does: its
+    rider, combination, model, members' files and stiffness."""
     # lazy: the registry loads numpy; bikemass --help must not
+    import shlex
     from ..models.registry import BASE
 
-    options = [f"--rider {spec.rider}"] if spec.rider not in (None, "none") else []
+    options = [("--rider", spec.rider)] if spec.rider not in (None, "none") else []
+    if spec.combine != "exact":
+        options.append(("--combine", spec.combine))
     if spec.model != BASE:
-        options.append(f"--model {spec.model}")
-    options += [f"--{keyword} {value}" for keyword, value in spec.members]
+        options.append(("--model", spec.model))
+    options += [(f"--{keyword}", value) for keyword, value in spec.members]
     if spec.stiffness is not None:
-        options.append(f"--stiffness {spec.stiffness}")
-    return " ".join(options)
+        options.append(("--stiffness", spec.stiffness))
+    return " ".join([*(f"{option} {shlex.quote(str(value))}" for option, value in options), _speed_option(spec)]).strip()
+
+
+def _speed_option(spec):
+    """``--speeds 0:MAX:0.05`` where the spec's ``max_speed`` is not the default grid's end, else ``""``."""
+    # lazy: the grid's module loads numpy; bikemass --help must not
+    from ..analysis.engine.speeds import DEFAULT_SPEEDS
+
+    end = DEFAULT_SPEEDS[1]
+    return "" if spec.max_speed == end else f"--speeds 0:{spec.max_speed:g}:{DEFAULT_SPEEDS[2]:g}"

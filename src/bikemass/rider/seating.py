@@ -27,7 +27,7 @@ the pedal circle, whichever is nearer.
 
 import os
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -179,10 +179,24 @@ def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, toleran
         front = front or tuple(s for s, seg in node["segments"].items()
                                if isinstance(seg.value, dict) and seg.value.get("frame") == "front")
         name = node.get("name", str(source)).string()
-        rider = Rider(str(pose), name, pose_parts(solution.pose, body.anthropometry, front, source))
-        return _checked(pose, rider, bicycle, chain, hands, "solved", solution, False, tolerance, posture)
+        # a lumped body (mass, com, inertia: a load given in the bicycle's frame) is no segment of the chain:
+        # kept where the file puts it, and said so (re-seating moves the body's segments alone)
+        lumped = [p for p in rider.parts if p.name in _lumped_keys(node)]
+        rider = Rider(str(pose), name, pose_parts(solution.pose, body.anthropometry, front, source) + tuple(lumped))
+        seated = _checked(pose, rider, bicycle, chain, hands, "solved", solution, False, tolerance, posture)
+        if lumped:
+            kept = ", ".join(f"{p.name} ({p.mass:g} kg)" for p in lumped)
+            seated = replace(seated, warnings=seated.warnings + (
+                f"{pose}: re-seated on {bicycle.name} by its posture: the lumped {kept} kept where the file "
+                f"puts {'it' if len(lumped) == 1 else 'them'} (only the body's segments move)",))
+        return seated
     return _checked(pose, rider, bicycle, chain, hands, "as written", None, allow_off_contact, tolerance,
                     node)
+
+
+def _lumped_keys(node):
+    """The keys of a placement pose's lumped bodies (a segment with ``mass:``, :mod:`~bikemass.rider.pose`)."""
+    return {key for key, seg in node["segments"].items() if isinstance(seg.value, dict) and "mass" in seg.value}
 
 
 def _load(pose, node, as_printed):

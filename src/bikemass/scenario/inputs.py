@@ -115,8 +115,17 @@ def set_path(document, path, value, source, origin="spec", size_index=None):
         container, slot = container[slot], size_index
     unit = _file_unit(document, path, container[slot])
     if unit and not isinstance(value, (str, Quantity)):
-        value = Quantity(float(value), DIMENSIONS[dimension_of(unit)][0])
-    container[slot] = value
+        try:
+            value = Quantity(float(value), DIMENSIONS[dimension_of(unit)][0])
+        except (TypeError, ValueError):
+            raise InputError(origin, path, f"a number in SI or a value with its unit (the file writes {unit} "
+                             f"there), got {short(value)}") from None
+    container[slot] = _as_list(value)
+
+
+def _as_list(value):
+    """A change's tuple (a cache key) as the list the YAML document holds, recursively."""
+    return [_as_list(v) for v in value] if isinstance(value, tuple) else value
 
 
 def _unit(value):
@@ -531,16 +540,34 @@ class Inputs:
         return _lru(self._cache("seated"), (bike_changes, rider_changes), build)
 
     def _refuse_lost_segments(self, seated, rider_changes):
-        """A placement pose re-seated by its ``posture:`` (its contacts off this bicycle's) is solved
-        afresh, every segment placed by the chain: a change of its ``segments:`` would be dropped without
-        a word (a sweep of it flat, its derivative 0), so it is refused, naming the keys that do act."""
-        edited = [path for path, _ in rider_changes if path.split(".")[0] == "segments"]
-        if edited and seated.how == "solved":
-            raise InputError(self.origin, f"rider.{edited[0]}",
-                             "a change the seated rider keeps (this placement pose is re-seated on the bicycle by its "
-                             "posture:, its contacts being off the bicycle's, which places every segment afresh); "
-                             "change rider.posture.* (e.g. rider.posture.elbow), or give a pose that meets the "
-                             "bicycle's contacts")
+        """A change of a placement pose that the seated rider would drop without a word (a sweep of it
+        flat, its derivative 0) is refused, naming the keys that do act:
+
+        * re-seated by its ``posture:`` (its contacts, as changed, off the bicycle's), every segment of
+          the body is placed afresh: a change of ``segments.<segment>`` is lost (a lumped body's is
+          kept, and a segment's ``frame:`` where the posture names no ``front:``);
+        * used as written (its contacts on the bicycle's, or allowed off them), its ``posture:`` is not
+          used: a change of ``posture.*`` is lost."""
+        source, doc = self._read_rider()
+        if not (isinstance(doc, dict) and "segments" in doc and "chain" not in doc):
+            return
+        segments = doc["segments"] if isinstance(doc["segments"], dict) else {}
+        posture = doc.get("posture") if isinstance(doc.get("posture"), dict) else {}
+        lumped = {k for k, v in segments.items() if isinstance(v, dict) and "mass" in v}
+        parts = [path.split(".") for path, _ in rider_changes]
+        if seated.how == "solved":
+            lost = [p for p in parts if p[0] == "segments" and len(p) > 1 and p[1] not in lumped
+                    and not (p[-1] == "frame" and "front" not in posture)]
+            keys = ", ".join(f"rider.posture.{k}" for k in posture) or "rider.posture.*"
+            why = (f"this placement pose, as changed, is off the bicycle's contacts, so it is re-seated by its "
+                   f"posture:, which places every segment afresh; change {keys}, or give a pose that meets "
+                   f"the bicycle's contacts")
+        else:
+            lost = [p for p in parts if p[0] == "posture"]
+            why = ("this placement pose is used as written (its contacts on the bicycle's, or allowed off "
+                   "them), so its posture: is not used; change rider.segments.*")
+        if lost:
+            raise InputError(self.origin, "rider." + ".".join(lost[0]), f"a change the seated rider keeps ({why})")
 
     def held(self, bike_changes=(), rider_changes=()):
         """The seated rider (:meth:`seated`) with the forearms on the handlebars (the arms member's

@@ -52,7 +52,7 @@ from ..models.registry import BY_KEYWORD, BY_NAME, SPECS, ModelChoice, by_keywor
 from ..models import whipple
 from ..rider.hands import hand_gaps
 from .loading import BicycleLike, RiderLike
-from .inputs import Inputs, _lru, file_unit, get_path, split_changes
+from .inputs import STIFFNESS_KEY, Inputs, _lru, file_unit, get_path, split_changes
 
 
 @dataclass(frozen=True, eq=False)
@@ -371,9 +371,10 @@ class Scenario:
     def build(self, changes=None):
         """:class:`Built` of the scenario with ``changes`` (``{key: value}``, keys as in
         :mod:`bikemass.scenario.inputs`; cached by their values)."""
-        key = split_changes(changes or {})
+        changes = _checked_changes(changes)
+        key = split_changes(changes)
         key = (key[0], key[1], key[2], _hashable(key[3]))
-        return _lru(self.inputs._cache("built"), key, lambda: self._build(changes or {}))
+        return _lru(self.inputs._cache("built"), key, lambda: self._build(changes))
 
     def _build(self, changes):
         bike, rider, params, stiffness = split_changes(changes)
@@ -458,6 +459,34 @@ def own_model(bicycle, scenario=None):
 def _split_member(choice):
     """The member of ``choice`` whose parameters are the rider split at the hips, or None."""
     return next((spec for spec in choice.specs if spec.source is Source.RIDER_SPLIT), None)
+
+
+def _checked_changes(changes):
+    """``changes`` (a mapping of dotted keys to values, or ``None``) with every list, tuple and array
+    value a tuple (a cache key; :func:`~bikemass.scenario.inputs.set_path` writes it as a list), the
+    stiffness choice as given; :class:`~bikemass.core.errors.InputTypeError` for anything else than a
+    mapping of string keys to numbers, strings, Quantities or sequences of them."""
+    if changes is None:
+        return {}
+    if not isinstance(changes, Mapping):
+        raise wrong_type("changes", changes, "changes are a mapping {dotted key: value}")
+    out = {}
+    for key, value in changes.items():
+        if not isinstance(key, str):
+            raise wrong_type("changes", key, "a change's key is a dotted path (str)")
+        out[key] = value if key == STIFFNESS_KEY else _frozen_value(key, value)
+    return out
+
+
+def _frozen_value(key, value):
+    """A change's value as a cache key: sequences (lists, tuples, arrays) as tuples, recursively."""
+    if isinstance(value, np.ndarray):
+        value = value.tolist()
+    if isinstance(value, (list, tuple)):
+        return tuple(_frozen_value(key, v) for v in value)
+    if isinstance(value, Mapping) or value is None:
+        raise wrong_type(key, value, "a number (SI), a string with its unit, or a list of them")
+    return value
 
 
 def _hashable(choice):
