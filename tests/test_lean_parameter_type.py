@@ -174,3 +174,12 @@ def test_a_sweep_and_an_optimisation_of_a_moore_rider_lean_file_take_its_member(
     found = bm.optimise(str(tmp_path / "opt.yaml"))
     weave = bm.stability(scenario.build({"c": found.variables["c"]})).weave_speeds[0]
     assert weave == pytest.approx(5.0, abs=1e-6)
+
+
+def test_an_input_of_a_moore_rider_lean_set_other_than_the_26_names_is_named_as_such(tmp_path):
+    """A set has no YAML inputs beside its parameters: a spec's ``values.mc`` was refused as "no 'values'
+    under (top) (has: )" (the file has ``values:``); the line now says what the set takes."""
+    (tmp_path / "opt.yaml").write_text(f"bike: {BROWSER_JASON}\nvariables:\n  values.mc: {{min: 2, max: 4}}\n"
+                                       "maximise: weave-speed\n")
+    with pytest.raises(InputError, match="values.mc: .*26 parameter names .*MooreRiderLean2012"):
+        bm.optimise(str(tmp_path / "opt.yaml"))

@@ -173,6 +173,9 @@ def _located(model, key):
         path = key[len(RIDER_PREFIX):]
         return doc, path, _walk(doc, path, source, model.origin)
     model._read()
+    if model.lean_set is not None:
+        raise InputError(model.origin, key, "one of the 26 parameter names (the bicycle is a MooreRiderLean2012 "
+                         "parameter set, which has no other inputs)")
     value = _walk(model._bike_doc, key, model._bike_source, model.origin)
     if model._size_index is not None and isinstance(value, list):
         value = value[model._size_index]
