@@ -117,8 +117,11 @@ def _pose_text(args, posed, fmt):
         return text
     header = "".join(f"# {line}\n" for line in (
         f"Chain pose written by: bikemass pose {args.bike} --hands {hands}"
+        + (f" --body {args.body}" if args.body != "thesis_rider" else "")
+        + (f" --torso-lean {args.torso_lean:g}" if args.torso_lean is not None else "")
         + (f" --crank {args.crank:g}" if args.crank is not None else "")
-        + (f" --feet {args.feet}" if args.feet != "ball" else ""),
+        + (f" --feet {args.feet}" if args.feet != "ball" else "")
+        + "".join(f" --fix {fixed}" for fixed in args.fix),
         "joint angles (deg): " + ", ".join(f"{k} {v:.3f}" for k, v in sorted(solution.pose.angles.items())),
         "placement form (docs/riders.md): location = top-plane centre (m), angle (deg)"))
     return header + text
