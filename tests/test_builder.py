@@ -255,7 +255,7 @@ def test_contract_the_api_takes_the_model_choice():
     (["eig", "benchmark", "--model", "tyre+tyre"], "'tyre' given twice"),
     (["stability", "benchmark", "--tyres", "tyres.yaml"], "--tyres: tyres.yaml: a --model with the tyre member"),
     (["stability", "jamis", "--rider", "relaxed", "--model", "rider-lean", "--stiffness", "steel"],
-     "infinite with the model rider-lean"),
+     "infinite (rigid) with the model rider-lean"),
     (["stability", "jamis", "--model", "rider-lean"], "a rider for the rider-lean model"),
     (["params", "benchmark", "--model", "tyre", "--format", "bicycleparameters-yaml"],
      "BicycleParameters has no parameter set for --model tyre"),

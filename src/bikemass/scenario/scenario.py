@@ -239,9 +239,10 @@ class Scenario:
         the flexible member (whose beam models take a material)."""
         if self.model.members and _stiffness_member(self.model) is None and not _rigid(choice):
             member = next(spec.name for spec in SPECS if spec.takes_stiffness)
-            raise InputError("stiffness", short(choice), f"infinite with the model {self.model.name} (a flexible "
-                             f"frame: the {member} member, e.g. {self.model.with_member(member).name}, whose beam "
-                             "models take a material; or --model whipple for the thesis's quasi-static spring)")
+            raise InputError("stiffness", short(choice), f"infinite (rigid) with the model {self.model.name}, whose "
+                             f"frame is rigid; a flexible frame is the {member} member's "
+                             f"(--model {self.model.with_member(member).name}: beam models of a material), or "
+                             "the Whipple model's quasi-static spring (--model whipple)")
 
     def check_stiffness(self, choice):
         """InputError unless this scenario's model takes stiffness choice ``choice`` on its bicycle
