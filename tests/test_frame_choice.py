@@ -97,3 +97,56 @@ def test_params_in_a_form_of_the_26_names_says_what_it_leaves_out(capsys, argv):
 def test_params_of_the_whipple_bicycle_in_a_table_says_nothing(capsys):
     assert main(["params", "jamis", "--rider", "relaxed", "--format", "table"]) == 0
     assert "warning" not in capsys.readouterr().err
+
+
+def _params_file(tmp_path, name, *argv):
+    path = tmp_path / name
+    assert main(["params", "jamis", "--rider", "relaxed", *argv, "-o", str(path)]) == 0
+    return path
+
+
+def test_a_misspelt_model_or_a_bad_member_block_of_a_parameter_file_is_named(tmp_path, capsys):
+    """A file written by ``params --model tyre+flexible`` with its ``model:`` misspelt was analysed as the rigid
+    Whipple bicycle without a word (its blocks dropped), and a bad block of a ``MooreRiderLean2012`` file was
+    refused as "a Whipple parameter set ... for the model whipple": each is one line naming the file's key."""
+    import yaml
+    written = _params_file(tmp_path, "f.yaml", "--model", "tyre+flexible", "--stiffness", "steel", "--format", "yaml")
+    capsys.readouterr()
+    doc = yaml.safe_load(written.read_text())
+    cases = {"model": ({"model": "tyre+flexibel"}, "model: unknown model 'flexibel'"),
+             "stiffness": ({"flexible": {**doc["flexible"], "frame": {**doc["flexible"]["frame"], "stiffness": -100}}},
+                           "flexible.frame.stiffness: a positive number")}
+    for name, (edit, words) in cases.items():
+        bad = tmp_path / f"bad_{name}.yaml"
+        bad.write_text(yaml.safe_dump({**doc, **edit}, sort_keys=False))
+        assert main(["stability", str(bad)]) == 2
+        err = capsys.readouterr().err.strip().splitlines()
+        assert len(err) == 1 and f"bad_{name}.yaml: {words}" in err[0]
+    lean = _params_file(tmp_path, "lean.yaml", "--model", "rider-lean+tyre", "--format", "yaml")
+    capsys.readouterr()
+    doc = yaml.safe_load(lean.read_text())
+    doc["tyre"]["front"]["relaxation_length"] = -0.1
+    bad = tmp_path / "bad_lean.yaml"
+    bad.write_text(yaml.safe_dump(doc, sort_keys=False))
+    assert main(["stability", str(bad)]) == 2
+    assert "bad_lean.yaml: tyre.front.relaxation_length: a positive number" in capsys.readouterr().err
+
+
+def test_what_params_writes_reads_back_without_a_warning(tmp_path, capsys):
+    """The leaning rider's set as JSON with the warnings params gave (the Cargo's front load) read back
+    as the same model (it was refused: "warnings: no such key"); an arms block with ``forearms:
+    handlebars`` over the file's own rider reads back under ``--strict`` (it warned of no rider seated)."""
+    path = tmp_path / "cargo.json"
+    assert main(["params", "cargo", "--rider", "relaxed", "--model", "rider-lean", "--format", "json",
+                 "-o", str(path)]) == 0
+    assert json.loads(path.read_text())["warnings"]
+    capsys.readouterr()
+    direct = stability_json(capsys, "cargo", "--rider", "relaxed", "--model", "rider-lean")
+    assert stability_json(capsys, str(path))["weave_speeds"] == pytest.approx(direct["weave_speeds"], abs=1e-9)
+    arms = tmp_path / "arms.yaml"
+    arms.write_text("stiffness: 0 N m/rad\ndamping: 0.5 N m s/rad\nforearms: handlebars\n")
+    held = _params_file(tmp_path, "held.yaml", "--model", "tyre+arms", "--arms", str(arms), "--format", "yaml")
+    capsys.readouterr()
+    direct = stability_json(capsys, "jamis", "--rider", "relaxed", "--model", "tyre+arms", "--arms", str(arms))
+    assert stability_json(capsys, str(held), "--strict")["weave_speeds"] == pytest.approx(direct["weave_speeds"],
+                                                                                            abs=1e-9)

@@ -58,8 +58,8 @@ writes so that every command reads back the same model (the model it was written
 parameters under its name, the Whipple model's quasi-static S in N m/rad); read by
 :mod:`bikemass.scenario.inputs`."""
 SET_KEYS = ("parameterization", "values", "parameters", "rider", "description", "name", "source", "units",
-            "uncertainty", *MEMBER_KEYS)
-"""Top-level keys of the ``parameterization:`` / ``values:`` form."""
+            "warnings", "uncertainty", *MEMBER_KEYS)
+"""Top-level keys of the ``parameterization:`` / ``values:`` form (``warnings``: as in :data:`FILE_KEYS`)."""
 FILE_KEYS = ("name", "description", "source", "rider_included", "units", "warnings", "uncertainty", *MEMBER_KEYS)
 """Metadata keys of bikemass's own (flat) benchmark parameter files (``warnings``: what bikemass
 warned about when it wrote the file as JSON; read back, the set is checked again)."""

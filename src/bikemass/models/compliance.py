@@ -116,7 +116,10 @@ def compliance_from_node(node):
     stiffness = node["stiffness"]
     if isinstance(stiffness.value, dict):
         values["stiffness"] = measured_stiffness(stiffness, values["point"], values["direction"])
-    return Compliance(**values)
+    try:
+        return Compliance(**values)
+    except InputError as exc:                              # the file and the key, not the axis's name alone
+        node.fail(exc.expected, None if exc.key == "(values)" else exc.key)
 
 
 def _distance(at, point, direction):

@@ -313,20 +313,29 @@ class Inputs:
         return self._lean_set
 
     @property
-    def file_members(self):
-        """What a parameter file written by ``bikemass params --model M`` carries beside its set
-        (:data:`~bikemass.bicycle.parameter_sets.MEMBER_KEYS`): ``{"model": str, <member name>: its typed
-        parameters (its ``read_block``), "frame_stiffness": 2x2 S (N m/rad)}``, each key only when
-        present; ``{}`` for any other bicycle."""
-        if "_file_members" not in self.__dict__:
+    def parameter_node(self):
+        """The :class:`~bikemass.core.config.Node` of a parameter file (or mapping) the bicycle is, read
+        once; ``None`` for any other bicycle (a bicycle YAML, a chart, a name of one, a parameter text)."""
+        if "_parameter_node" not in self.__dict__:
             node, bike = None, self.bike
             if isinstance(bike, Mapping):
                 node = Node(plain_input(bike, MAPPING), MAPPING, "")
             elif isinstance(bike, (str, os.PathLike)):
                 path = resolve(split_size(os.fspath(bike))[0], frames_dir(), "bicycle")
                 node = None if _is_parameter_text(path) else load_yaml(path)
+            self._parameter_node = node if node is not None and kind_of(node) is not None else None
+        return self._parameter_node
+
+    @property
+    def file_members(self):
+        """What a parameter file written by ``bikemass params --model M`` carries beside its set
+        (:data:`~bikemass.bicycle.parameter_sets.MEMBER_KEYS`): ``{"model": str, <member name>: its typed
+        parameters (its ``read_block``), "frame_stiffness": 2x2 S (N m/rad)}``, each key only when
+        present; ``{}`` for any other bicycle."""
+        if "_file_members" not in self.__dict__:
+            node = self.parameter_node
             found = {}
-            if node is not None and kind_of(node) is not None:
+            if node is not None:
                 if node.has("model"):
                     found["model"] = node["model"].string()
                 for spec in SPECS:                       # each member's block, under its name

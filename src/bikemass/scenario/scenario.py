@@ -398,15 +398,23 @@ class Scenario:
             check_hands = spec.hook("check_hands")
             if check_hands is not None:
                 hands = self._hands(bike, rider) if hands is None else hands
-                check_hands(typed[spec.name], hands[0])
+                # a parameter file's own block over its own rider (params wrote both): nothing to check
+                own = self.member_inputs.get(spec.name) is None and spec.name in self.inputs.file_members
+                if not (hands is _IN_THE_SET and own):
+                    check_hands(typed[spec.name], None if hands is _IN_THE_SET else hands[0])
         return Built(p, None, build_member(self.model, p, members=typed), self.model, FrozenMap(typed))
 
     def _hands(self, bike, rider):
         """``(gap,)``: how far the seated rider's hand furthest from a grip is from one (m; ``inf`` where not
-        known), or ``(None,)`` without a seated rider (a member's ``check_hands`` protocol)."""
-        seated = None if self.inputs.lean_set is not None else self.inputs.seated(bike, rider)
+        known), or ``(None,)`` without a seated rider (a member's ``check_hands`` protocol); ``_IN_THE_SET``
+        where the rider is in the parameter set (a ``MooreRiderLean2012`` set, a file with
+        ``rider_included: true``, as ``params`` writes it): no pose to check; a member block of that file
+        (``params --model M`` wrote it with the rider) is taken as it is."""
+        if self.inputs.lean_set is not None:
+            return _IN_THE_SET
+        seated = self.inputs.seated(bike, rider)
         if seated is None:
-            return (None,)
+            return _IN_THE_SET if self.inputs.bicycle(bike).rider_included else (None,)
         gaps = hand_gaps(seated, dict(self.inputs.bicycle(bike).contacts.grips))
         return (max((gap for gap, _ in gaps.values()), default=float("inf")),)
 
@@ -425,6 +433,10 @@ class Scenario:
 def _stiffness_member(choice):
     """The member of ``choice`` that takes the stiffness choice (a material), or None."""
     return next((spec for spec in choice.specs if spec.takes_stiffness), None)
+
+
+_IN_THE_SET = ("in the set",)
+""":meth:`Scenario._hands` of a rider that is in the parameter set: no hands to check."""
 
 
 def own_model(bicycle, scenario=None):
@@ -448,9 +460,17 @@ def own_model(bicycle, scenario=None):
     inputs = scenario.inputs if scenario is not None else Inputs(bicycle, None, Combine.EXACT.value,
                                                                  Method.MESH.value, "changes", False)
     try:
-        declared = inputs.file_members.get("model")
-        if declared:                         # a parameter file written by ``params --model M``: its model
-            return parse_model(declared, "model")
+        node = inputs.parameter_node
+    except InputError:
+        return choice                        # what is wrong with the file: reported where it is built
+    if node is not None and node.has("model"):
+        # a parameter file written by ``params --model M``: its model, named by its own key alone (a bad
+        # member block is reported where the model reads it); a model that is not one is refused here
+        try:
+            return parse_model(node["model"].string(), "model")
+        except InputError as exc:
+            node["model"].fail(exc.expected)
+    try:
         lean = inputs.lean_set
     except InputError:
         return choice
