@@ -151,3 +151,24 @@ def test_compare_data_in_every_format(capsys, tmp_path):
     target = tmp_path / "speeds.csv"                      # the format follows the suffix
     assert run(capsys, "compare", BENCHMARK, "-o", str(target))[:2] == (0, "")
     assert target.read_text().splitlines()[0].startswith("rider,stiffness,weave speeds (m/s)")
+
+
+def test_compare_applies_a_members_file_to_the_models_that_have_the_member(capsys, tmp_path):
+    """``compare --models whipple,tyre --tyres FILE`` was refused (the Whipple model has no tyre member); the
+    file applies to the tyre model, whose row equals ``stability --model tyre --tyres FILE`` (1e-9 m/s), and
+    the Whipple row equals ``stability`` without it. A file no model of the list takes is one line."""
+    tyres = tmp_path / "tyres.yaml"
+    tyres.write_text("front: {cornering_coefficient: 11.46 1/rad, camber_coefficient: 0.573 1/rad, "
+                     "relaxation_length: 0.1 m}\nrear: {cornering_coefficient: 0.2 1/deg, camber_coefficient: "
+                     "0.01 1/deg, relaxation_length: 100 mm}\n")
+    args = ["jamis", "--rider", "relaxed", "--speeds", "0:10:0.1", "--format", "json"]
+    assert main(["compare", "jamis", "--riders", "relaxed", "--models", "whipple,tyre", "--tyres", str(tyres),
+                 *args[3:]]) == 0
+    runs = {run["model"]: run for run in json.loads(capsys.readouterr().out)["runs"]}
+    for model, extra in (("whipple", []), ("tyre", ["--model", "tyre", "--tyres", str(tyres)])):
+        assert main(["stability", *args, *extra]) == 0
+        alone = json.loads(capsys.readouterr().out)
+        assert runs[model]["weave_speeds"] == pytest.approx(alone["weave_speeds"], abs=1e-9)
+    assert main(["compare", "jamis", "--riders", "relaxed", "--models", "whipple,rider-lean", "--tyres",
+                 str(tyres)]) == 2
+    assert "none of whipple, rider-lean has one" in capsys.readouterr().err

@@ -351,6 +351,10 @@ def test_a_poses_own_bicycle_is_read_once(tmp_path, monkeypatch):
     ("bike: benchmark\nvary: {c: [0.1]}\nextra: 1\n", "extra"),
     ("bike: jamis\nvary: {sections.nope.wall: [0.001]}\n", "sections.nope.wall"),
     ("bike: benchmark\nvary: {rider.chain.torso_lean: [10]}\n", "rider.chain.torso_lean"),
+    # a member's file and the model's rider, named in the spec (they were blamed on vary, or named no spec)
+    ("bike: benchmark\nmodel: tyre\ntyres: nosuch.yaml\nvary: {c: [0.1]}\n", "spec.yaml: tyres: the path of"),
+    ("bike: benchmark\ntyres: spec.yaml\nvary: {c: [0.1]}\n", "spec.yaml: tyres: a model with the tyre member"),
+    ("bike: benchmark\nmodel: rider-lean\nvary: {c: [0.1]}\n", "spec.yaml: rider: a rider for the rider-lean"),
 ])
 def test_bad_specs_one_line(tmp_path, capsys, text, key):
     spec = _spec(tmp_path, text)

@@ -179,7 +179,7 @@ def run_compare(args):
     results, runs = {}, []
     for rider in riders:
         for model in models or (args.model,):
-            each = argparse.Namespace(**{**vars(args), "model": model})
+            each = argparse.Namespace(**{**vars(args), "model": model, **_files_of(args, models, model)})
             row = _rider_name(rider) if not models else f"{_rider_name(rider)}, {model}"
             for stiffness in stiffnesses:
                 result = stability(_built(each, rider, stiffness), speeds=speeds, max_speeds=args.max_speeds)
@@ -199,6 +199,26 @@ def run_compare(args):
                                    options.size, options.xlim)
         dialect.save_plot(args, fig, options)
     return 0
+
+
+def _files_of(args, models, model):
+    """``{keyword: None}`` for each member's file option (``--tyres``, ``--arms``) that ``model``, one of
+    ``--models``, has no member for: the file applies to the models that have it.  A file no model of
+    ``--models`` takes is an InputError."""
+    if not models:
+        return {}
+    dropped = {}
+    for spec in dialect.SPECS:
+        given = getattr(args, spec.keyword, None) if spec.option else None
+        if given is None:
+            continue
+        if not any(dialect.parse_model(m).has(spec.name) for m in models):
+            raise InputError(spec.option, given, f"a model of --models with the {spec.name} member (e.g. "
+                             f"{dialect.parse_model(models[0]).with_member(spec.name).name}); none of "
+                             f"{', '.join(models)} has one")
+        if not dialect.parse_model(model).has(spec.name):
+            dropped[spec.keyword] = None
+    return dropped
 
 
 def _models(args):

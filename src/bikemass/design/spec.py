@@ -33,7 +33,7 @@ from ..core.paths import near_spec, near_spec_file
 from ..core.units import DIMENSIONS, Quantity, UnitError, dimension_of, split_quantity
 from ..models.parameters import NAMES, dimension
 from ..models.registry import BASE, KEYWORDS, spec_members, spec_model
-from ..scenario.scenario import Scenario, own_model
+from ..scenario.scenario import Scenario, own_model, refuse_riderless
 from ..core.choices import Tuning
 from .metrics import HANDLING, STABILITY_MARGIN, catalogue
 
@@ -184,6 +184,8 @@ def read_spec(path):
         objective = _metric_name(node, node[sense].string(), sense)
     # no model: the bicycle's own (rider-lean for a MooreRiderLean2012 set)
     model = spec_model(node) if node.has("model") else own_model(near_spec(path, node["bike"].string())).name
+    refuse_riderless(node, model, near_spec(path, node["bike"].string()),
+                     node["rider"].string() if node.has("rider") else "none")
     max_speed = node["max_speed"].number("speed", positive=True) if node.has("max_speed") else 30.0
     if max_speed > MAX_SPEED:
         node.fail(f"a speed of at most {MAX_SPEED:g} m/s, got {max_speed:g}", "max_speed")
@@ -196,7 +198,7 @@ def read_spec(path):
         rider=near_spec(path, node["rider"].string()) if node.has("rider") else "none",
         stiffness=near_spec_file(path, node["stiffness"].string()) if node.has("stiffness") else None,
         combine=node["combine"].string(("exact", "thesis")) if node.has("combine") else "exact",
-        model=model, members=spec_members(node, lambda text: near_spec(path, text)),
+        model=model, members=spec_members(node, lambda text: near_spec(path, text), model),
         max_speed=float(max_speed), variables=(), sense=sense, objective=objective, target=target)
     scenario = spec.scenario()
     variables = node["variables"]

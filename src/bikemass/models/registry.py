@@ -1,5 +1,6 @@
 """The model family's names: ``--model`` strings to member combinations and back."""
 
+import os
 from dataclasses import dataclass
 
 from ..core.errors import InputError, short
@@ -105,11 +106,25 @@ def module_name(members):
     return "_".join(m.replace("-", "_") for m in members if BY_NAME[m].derived) or BASE
 
 
-def spec_members(node, near):
+def spec_members(node, near, model=None):
     """``((keyword, path), ...)``: the members' files a spec's top-level config
     :class:`~bikemass.core.config.Node` names under their keywords (``tyres: tyres.yaml``), each path made
-    relative to the spec by ``near(text)``."""
-    return tuple((key, near(node[key].string())) for key in KEYWORDS if node.has(key))
+    relative to the spec by ``near(text)``, read once here (a bad file is its own error, naming its key)
+    and, where ``model`` (the spec's, a name) is given, refused under a model without the member (the
+    spec's key named, before any configuration is built)."""
+    out = []
+    for key in KEYWORDS:
+        if not node.has(key):
+            continue
+        spec, path = BY_KEYWORD[key], near(node[key].string())
+        if model is not None and not parse_model(model).has(spec.name):
+            node[key].fail(f"a model with the {spec.name} member (model: "
+                           f"{parse_model(model).with_member(spec.name).name}); model: {model} has none")
+        if not os.path.isfile(path):
+            node[key].fail(f"the path of an existing {spec.name} file (no file {path})")
+        spec.runtime().coerce(path, key)              # a bad file: its own error, naming its key
+        out.append((key, path))
+    return tuple(out)
 
 
 def spec_model(node):

@@ -40,7 +40,7 @@ from ..core.paths import near_spec, near_spec_file
 from ..core.units import DIMENSIONS, UnitError, dimension_of, split_quantity
 from ..models.parameters import NAMES, dimension
 from ..models.registry import BASE, KEYWORDS, spec_members, spec_model
-from ..scenario.scenario import Scenario, own_model
+from ..scenario.scenario import Scenario, own_model, refuse_riderless
 
 SAMPLE_METHODS = ("grid", "lhs", "sobol")
 TOP_KEYS = ("bike", "rider", "stiffness", "combine", "model", *KEYWORDS, "max_speed", "vary", "sample",
@@ -335,6 +335,8 @@ def read_spec(path: "str | os.PathLike") -> "SweepSpec":
         if chunk != int(chunk):
             node.fail("a whole number of configurations per task", "chunk")
     bike = near_spec(path, node["bike"].string())
+    model = spec_model(node) if node.has("model") else own_model(bike).name    # none: the bicycle's own
+    refuse_riderless(node, model, bike, node["rider"].string() if node.has("rider") else "none")
     spec = SweepSpec(
         source=str(path), bike=bike,
         rider=near_spec(path, node["rider"].string()) if node.has("rider") else "none",
@@ -342,8 +344,7 @@ def read_spec(path: "str | os.PathLike") -> "SweepSpec":
         combine=node["combine"].string(("exact", "thesis")) if node.has("combine") else "exact",
         max_speed=float(max_speed), variables=variables, method=method, n=n, seed=seed,
         global_sensitivity=gsa, chunk=None if chunk is None else int(chunk),
-        model=spec_model(node) if node.has("model") else own_model(bike).name,   # none: the bicycle's own
-        members=spec_members(node, lambda text: near_spec(path, text)))
+        model=model, members=spec_members(node, lambda text: near_spec(path, text), model))
     grid = method == "grid" and not gsa
     limit = MAX_CONFIGURATIONS if grid else MAX_SAMPLES
     if count_of(spec) > limit:
