@@ -115,7 +115,9 @@ def test_a_misspelt_model_or_a_bad_member_block_of_a_parameter_file_is_named(tmp
     doc = yaml.safe_load(written.read_text())
     cases = {"model": ({"model": "tyre+flexibel"}, "model: unknown model 'flexibel'"),
              "stiffness": ({"flexible": {**doc["flexible"], "frame": {**doc["flexible"]["frame"], "stiffness": -100}}},
-                           "flexible.frame.stiffness: a positive number")}
+                           "flexible.frame.stiffness: a positive number"),
+             # an empty block was both parts rigid and no steering damping, titled as the file's frame
+             "empty": ({"flexible": {}}, "flexible: frame: and fork:")}
     for name, (edit, words) in cases.items():
         bad = tmp_path / f"bad_{name}.yaml"
         bad.write_text(yaml.safe_dump({**doc, **edit}, sort_keys=False))

@@ -159,7 +159,7 @@ def sensitivity_csv(result, geometry=None):
     if result.d_stiffness:
         rows += [[k, "stiffness", None, "N m/rad", result.d_stiffness["weave_speed"][k], None,
                   result.d_stiffness["capsize_speed"][k], None] for k in result.d_stiffness["weave_speed"]]
-    rows += [[k, "geometry", g["value"], "as in the YAML file", g["weave_speed"], None, g["capsize_speed"], None]
+    rows += [[k, "geometry", g["value"], "SI", g["weave_speed"], None, g["capsize_speed"], None]
              for k, g in (geometry or {}).items()]
     return dialect.csv_text(["input", "kind", "value", "unit", "d_weave_speed (m/s per unit)", "elasticity_weave_speed",
                              "d_capsize_speed (m/s per unit)", "elasticity_capsize_speed"], rows)

@@ -142,6 +142,8 @@ def compliances_from_node(node):
     (:class:`~bikemass.models.compliance.Compliance`, SI or with units) or ``rigid``, and the steering
     bearing's ``steer_damping`` (N m s/rad; 0 without it)."""
     node.check_keys(optional=(*COORDINATES, "steer_damping", "source", "note"))
+    if not any(node.has(which) for which in COORDINATES):      # an empty block: nothing flexible, said nowhere
+        node.fail(f"{' and '.join(f'{c}:' for c in COORDINATES)}, each a compliance or rigid (at least one given)")
     out = {}
     for which in COORDINATES:
         child = node.get(which, "rigid")
