@@ -117,7 +117,9 @@ def test_a_misspelt_model_or_a_bad_member_block_of_a_parameter_file_is_named(tmp
              "stiffness": ({"flexible": {**doc["flexible"], "frame": {**doc["flexible"]["frame"], "stiffness": -100}}},
                            "flexible.frame.stiffness: a positive number"),
              # an empty block was both parts rigid and no steering damping, titled as the file's frame
-             "empty": ({"flexible": {}}, "flexible: frame: and fork:")}
+             "empty": ({"flexible": {}}, "flexible: frame: and fork:"),
+             # a unit edited in the units block changed no value without a word
+             "unit": ({"units": {**doc["units"], "stiffness": "N m/deg"}}, "units.stiffness: N m/rad")}
     for name, (edit, words) in cases.items():
         bad = tmp_path / f"bad_{name}.yaml"
         bad.write_text(yaml.safe_dump({**doc, **edit}, sort_keys=False))
