@@ -119,3 +119,10 @@ def test_shipped_parameters_unchanged_by_the_unit_migration():
     for rider, expected in reference["jamis_with_rider"].items():
         got = scenario_parameters("jamis", rider).to_dict()
         assert got == pytest.approx(expected, rel=1e-12, abs=1e-12), rider
+
+
+def test_a_damping_per_degree_is_per_radian_times_180_over_pi():
+    """``N m s/deg`` is taken as a stiffness's ``N m/deg`` is (it was refused): 1 N m s/deg = 180/pi N m s/rad."""
+    from bikemass.core.units import to_si
+    assert to_si("1 N m s/deg", "damping") == pytest.approx(180 / math.pi, rel=1e-15)
+    assert to_si("0.5 N m s/rad", "damping") == 0.5

@@ -49,7 +49,7 @@ DIMENSIONS = {
     "inverse angle": ("1/rad", {"1/rad": 1.0, "1/deg": 180 / math.pi}),
     "length per angle": ("m/rad", {"m/rad": 1.0, "m/deg": 180 / math.pi, "mm/rad": 1e-3, "mm/deg": 0.18 / math.pi}),
     "speed": ("m/s", {"m/s": 1.0, "km/h": 1 / 3.6}),
-    "damping": ("N m s/rad", {"N m s/rad": 1.0, "N*m*s/rad": 1.0}),
+    "damping": ("N m s/rad", {"N m s/rad": 1.0, "N*m*s/rad": 1.0, "N m s/deg": 180 / math.pi}),
     "dimensionless": ("", {"": 1.0}),
 }
 """dimension -> (SI unit, {unit: factor to SI}).  ``pressure`` also covers elastic moduli,
