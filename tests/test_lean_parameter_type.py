@@ -183,3 +183,16 @@ def test_an_input_of_a_moore_rider_lean_set_other_than_the_26_names_is_named_as_
                                        "maximise: weave-speed\n")
     with pytest.raises(InputError, match="values.mc: .*26 parameter names .*MooreRiderLean2012"):
         bm.optimise(str(tmp_path / "opt.yaml"))
+
+
+def test_a_changed_mb_of_the_leaning_rider_is_the_lower_sets():
+    """For the leaning rider the 26 names change the set without the upper body (docs/analysis.md): ``mB``
+    40 kg there is a rigid ``mB`` of 40 kg plus the seated rider's head, torso and arms (56.35 kg for
+    Relaxed), as ``Built.parameters`` reports it."""
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", bm.BikemassWarning)
+        scenario = bm.Scenario("jamis", "relaxed", model="rider-lean")
+        upper = sum(p.mass for p in bm.seated_rider("jamis", "relaxed").parts
+                    if p.name.split("_")[0] in ("head", "torso", "upper") or p.name.startswith("lower_arm"))
+        assert scenario.build({"mB": 40.0}).parameters.mB == pytest.approx(40.0 + upper, abs=1e-9)

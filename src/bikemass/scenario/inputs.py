@@ -2,7 +2,9 @@
 
 Inputs are named by keys:
 
-* one of the 26 benchmark names (``c``, ``lam``, ...): replaces that value in the final set;
+* one of the 26 benchmark names (``c``, ``lam``, ...): replaces that value in the final set (for a
+  model that splits the rider at the hips, the leaning rider's, the set without the upper body;
+  :attr:`~bikemass.scenario.scenario.Built.parameters` is the rigid set, upper body included);
 * ``stiffness``: a stiffness choice (``infinite``, ``steel``, ... or a file), as ``--stiffness``;
 * ``rider.<path>``: a dotted path into the pose YAML (``rider.chain.torso_lean``,
   ``rider.posture.elbow``; ``rider.segments.torso.angle`` of a placement pose that meets the
