@@ -173,3 +173,11 @@ def test_a_whole_number_may_be_written_with_an_exponent(capsys):
     assert "--samples: a number of samples, got '2.5'" in err
     err = _error(capsys, ["eig", "benchmark", "--max-speeds", "12.5"])
     assert "a whole number" in err and "12.5" in err
+
+
+def test_max_speed_has_the_limit_of_every_speed_grid(capsys):
+    """``--max-speed`` of sensitivity and uncertainty took up to 1e4 m/s where ``--speeds`` and a spec's
+    ``max_speed`` stop at 1000 m/s: one limit, one line."""
+    assert main(["sensitivity", "benchmark", "--max-speed", "5000"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--max-speed" in err[0] and "at most 1000" in err[0]

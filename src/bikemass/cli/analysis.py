@@ -4,6 +4,7 @@ import sys
 from pathlib import Path
 
 from ..core.errors import InputError
+from ..core.limits import MAX_SPEED
 from ..core.progress import Progress
 from . import dialect
 from .figure_options import add_figure_options, figure_options, write_figure
@@ -102,8 +103,8 @@ def _bike_options(p, data, figure):
 def _options(args):
     """Checked figure options (or None) of ``--plot``, and ``--max-speed`` checked."""
     options = dialect.figure_checked(args)
-    if not 0 < args.max_speed < 1e4:
-        raise InputError("--max-speed", args.max_speed, "a speed in m/s between 0 and 1e4")
+    if not 0 < args.max_speed <= MAX_SPEED:                # the limit of every speed grid and spec
+        raise InputError("--max-speed", args.max_speed, f"a speed in m/s above 0 and at most {MAX_SPEED:g}")
     return options
 
 
