@@ -126,3 +126,12 @@ def test_a_damping_per_degree_is_per_radian_times_180_over_pi():
     from bikemass.core.units import to_si
     assert to_si("1 N m s/deg", "damping") == pytest.approx(180 / math.pi, rel=1e-15)
     assert to_si("0.5 N m s/rad", "damping") == 0.5
+
+
+@pytest.mark.parametrize("text", ["inf 1/rad", "-inf 1/rad", "nan 1/rad", ".inf m"])
+def test_a_value_that_is_not_finite_is_named_as_such(text):
+    """``inf 1/rad`` was refused as a unit problem ("a bare number could be either"); the number is what is
+    wrong."""
+    from bikemass.core.units import UnitError, to_si
+    with pytest.raises(UnitError, match="a finite number"):
+        to_si(text, "inverse angle" if "rad" in text else "length")

@@ -180,6 +180,9 @@ def _split(value, dimension):
             raise UnitError(f"{describe(dimension)}, got a number too large for a float") from None
     match = _QUANTITY.fullmatch(value)
     if match is None:
+        head = value.split()[0].lower().lstrip("+-.") if value.split() else ""
+        if head in ("inf", "infinity", "nan"):                # what is wrong is the number, not its unit
+            raise UnitError(f"a finite number: {describe(dimension)}, got {_short(value)}")
         raise UnitError(f"{describe(dimension)}, got {_short(value)}")
     return float(match.group(1)), match.group(2)
 
