@@ -182,7 +182,7 @@ def _split(value, dimension):
     if match is None:
         head = value.split()[0].lower().lstrip("+-.") if value.split() else ""
         if head in ("inf", "infinity", "nan"):                # what is wrong is the number, not its unit
-            raise UnitError(f"a finite number: {describe(dimension)}, got {_short(value)}")
+            raise UnitError(f"{describe(dimension)}, got {_short(value)} (not a finite number)")
         raise UnitError(f"{describe(dimension)}, got {_short(value)}")
     return float(match.group(1)), match.group(2)
 
