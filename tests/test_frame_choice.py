@@ -154,3 +154,14 @@ def test_what_params_writes_reads_back_without_a_warning(tmp_path, capsys):
     direct = stability_json(capsys, "jamis", "--rider", "relaxed", "--model", "tyre+arms", "--arms", str(arms))
     assert stability_json(capsys, str(held), "--strict")["weave_speeds"] == pytest.approx(direct["weave_speeds"],
                                                                                             abs=1e-9)
+
+
+def test_a_set_that_holds_its_rider_is_not_titled_no_rider(tmp_path, capsys):
+    """A parameter file with ``rider_included: true`` (the benchmark; what ``params`` writes with a rider) was
+    titled "no rider" without ``--rider``; a bicycle YAML without a rider still is."""
+    written = _params_file(tmp_path, "with.yaml", "--format", "yaml")
+    capsys.readouterr()
+    for bike, words in ((str(written), "rider in the parameter set"), ("benchmark", "rider in the parameter set"),
+                        ("jamis", "no rider")):
+        assert main(["stability", bike, "--speeds", "0:5:0.5"]) == 0
+        assert capsys.readouterr().out.splitlines()[0].split(", ")[1] == words

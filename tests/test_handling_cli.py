@@ -61,7 +61,7 @@ def test_tf_of_every_output_names_its_gain_unit(capsys, output, unit, poles):
 
 def test_tf_text_and_csv(capsys):
     code, out, _ = run(capsys, "tf", "benchmark", "--speed", 5, "--input", "roll-torque", "--output", "roll-angle")
-    assert code == 0 and "(s^2 + 1.55068 s + 20.5362)" in out and out.startswith("Benchmark (Meijaard et al. 2007), no rider, rigid frame")
+    assert code == 0 and "(s^2 + 1.55068 s + 20.5362)" in out and out.startswith("Benchmark (Meijaard et al. 2007), rider in the parameter set, rigid frame")
     code, out, _ = run(capsys, "tf", "benchmark", "--speed", 5, "--input", "roll-torque", "--output", "roll-angle",
                        "--format", "csv")
     rows = [line.split(",") for line in out.splitlines()]

@@ -110,7 +110,8 @@ def _options(args):
 
 def _title(args):
     model = "" if args.model == "whipple" else f", model {args.model}"
-    return f"{dialect.bike_name(args.bike)}, rider {args.rider}, {dialect.frame_name(args)}{model}"
+    rider = dialect.riderless_label(args) if args.rider == "none" else f"rider {args.rider}"
+    return f"{dialect.bike_name(args.bike)}, {rider}, {dialect.frame_name(args)}{model}"
 
 
 def run_sensitivity(args):

@@ -194,7 +194,7 @@ def bicycle_model(args):
 
 
 def _title(args):
-    rider = "no rider" if args.rider == "none" else args.rider
+    rider = dialect.riderless_label(args) if args.rider == "none" else args.rider
     frame = dialect.frame_name(args)
     model = "" if args.model == "whipple" else f", model {args.model}"
     control = f", control {args.control}" if getattr(args, "control", None) else ""

@@ -90,8 +90,8 @@ def _built(args, rider=None, stiffness=None):
     return dialect.scenario(args, rider, stiffness).build()
 
 
-def _rider_name(rider):
-    return "no rider" if rider == "none" else rider
+def _rider_name(rider, args=None):
+    return (dialect.riderless_label(args) if args is not None else "no rider") if rider == "none" else rider
 
 
 def _combine(combine):
@@ -102,7 +102,7 @@ def _title(args):
     thesis = " (rider added as the thesis did)" if args.rider != "none" and args.combine == "thesis" else ""
     model = "" if getattr(args, "model", "whipple") == "whipple" else f", model {args.model}"
     control = f", control {args.control}" if getattr(args, "control", None) else ""
-    return f"{dialect.bike_name(args.bike)}, {_rider_name(args.rider)}, {dialect.frame_name(args)}{model}{control}{thesis}"
+    return f"{dialect.bike_name(args.bike)}, {_rider_name(args.rider, args)}, {dialect.frame_name(args)}{model}{control}{thesis}"
 
 
 def run_eig(args):
