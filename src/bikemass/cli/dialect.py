@@ -178,17 +178,13 @@ def frame_name(args, stiffness=None, rider=None):
 
 
 def riderless_label(args):
-    """A title's words for a command run without ``--rider``: ``"no rider"``, or ``"rider in the parameter
-    set"`` for a parameter file whose set holds its rider (``rider_included: true``, as ``params`` writes it
-    with a rider, or a ``MooreRiderLean2012`` set).  Only a parameter file is read for it (cheaply)."""
+    """A title's words for a command run without ``--rider``
+    (:meth:`~bikemass.scenario.scenario.Scenario.rider_label`: ``"no rider"``, or ``"rider in the
+    parameter set"`` for a parameter file whose set holds its rider)."""
     try:
-        inputs = scenario(args, rider="none").inputs
-        node = inputs.parameter_node
-        included = node is not None and (inputs.lean_set is not None or
-                                         node.get("rider_included", False).value is True)
+        return scenario(args, rider="none").rider_label()
     except InputError:
-        included = False
-    return "rider in the parameter set" if included else "no rider"
+        return "no rider"
 
 
 MODEL_HELP = f"the linear model: {model_help()}; see docs/models.md"

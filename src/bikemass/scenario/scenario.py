@@ -253,6 +253,28 @@ class Scenario:
         elif not self.model.members:
             self.inputs.frame_stiffness(choice)
 
+    def rider_label(self):
+        """Who rides, in words for a title: ``rider <name>`` for a rider given, else ``"rider in the parameter
+        set"`` for a parameter file whose set holds its rider (``rider_included: true``, the benchmark, what
+        ``params`` writes with a rider; a ``MooreRiderLean2012`` set), else ``"no rider"``.  Only a
+        parameter file is read for it.
+
+        Examples
+        --------
+        >>> import bikemass as bm
+        >>> bm.Scenario("benchmark").rider_label(), bm.Scenario("jamis").rider_label()
+        ('rider in the parameter set', 'no rider')
+        """
+        if self.rider not in (None, "none"):
+            return f"rider {self.rider}" if isinstance(self.rider, (str, os.PathLike)) else "rider"
+        try:
+            node = self.inputs.parameter_node
+            included = node is not None and (self.inputs.lean_set is not None or
+                                             node.get("rider_included", False).value is True)
+        except InputError:
+            included = False
+        return "rider in the parameter set" if included else "no rider"
+
     def frame_label(self):
         """What this scenario's frame is, in words for a title: as
         :func:`~bikemass.mass.materials.frame_label` names its stiffness choice, or, with none given, the
