@@ -39,7 +39,8 @@ from ..core.errors import InputError, short
 from ..mass.inertia import MassProperties, combine
 from .parameter_text import (AXISYMMETRIC, LATERAL, SPLIT_BODIES, ParameterFileWarning, ParameterText,
                              _parse_value, printed_resolution, body_names, measured_parameters)
-from ..models.registry import MEMBERS, SPECS
+from ..models.parameter_export import member_units
+from ..models.registry import MEMBERS, ModelChoice
 from ..models.parameters import NAMES, SPEED_KEY, BenchmarkParameters, check_units, dimension, sign_rule
 from ..models.moore2012 import NAMES as MOORE_NAMES, PARAMETERIZATION as MOORE_PARAMETERIZATION, from_moore_values
 from ..models.plausibility import check_parameter_file
@@ -219,8 +220,8 @@ def read_parameter_set(node):
         rider = kind == BENCHMARK and node.get("rider_included", False).boolean()
         label = _text(node.get("name"))
     values.mapping()
-    if node.has("units"):
-        _check_member_units(node["units"])
+    if node.has("units"):            # the member blocks' units (the 26 names': _benchmark)
+        check_units(node["units"], member_units(ModelChoice(MEMBERS)))
     speed = values[SPEED_KEY].number("speed", nonnegative=True) if values.has(SPEED_KEY) else None
     description = _text(node.get("description"))
     measured = None
@@ -335,22 +336,6 @@ def _numbers(values, required, optional, rule, exclude=()):
             out[name] = values[name].number(dim, positive=positive, nonnegative=nonnegative,
                                             bare_unit="rad" if dim == "angle" else None)
     return out
-
-
-def _check_member_units(node):
-    """A ``units`` block may state only the units the member blocks and ``frame_stiffness`` are read in
-    (:func:`~bikemass.models.parameters.check_units` holds the 26 names to SI): a block bikemass wrote
-    passes; a unit edited there (``stiffness: N m/deg``) would change no value, so it is refused."""
-    node.mapping()
-    known = {"frame_stiffness": "N m/rad"}
-    for spec in SPECS:
-        units = spec.hook("units")
-        if units is not None:
-            known.update(units())
-    for key, unit in node.items():
-        if key in known and unit.value != known[key]:
-            unit.fail(f"{known[key]} (a member's values are read in SI; give another unit per value, e.g. "
-                      f"'{key}: \"<number> <unit>\"')")
 
 
 def _benchmark(values, exclude=(), uncertainty=None):

@@ -118,7 +118,6 @@ def write_design(spec, result, path):
     problem = Problem(spec)
     x = [result.variables[v.key] for v in spec.variables]
     bike, rider, params, _ = split_changes(problem.changes(x))
-    built = problem.design(x).built
     included = spec.rider not in (None, "none")
     doc = _bicycle_design(problem, bike) if bike and not rider and not params else None
     if doc is not None:
@@ -135,6 +134,7 @@ def write_design(spec, result, path):
     if speeds:
         warnings.warn(f"{path} holds no speed range: read it back with {speeds} as the spec analyses it",
                       BikemassWarning, stacklevel=2)
+    built = problem.design(x).built
     if built.choice.members or built.stiffness is not None:
         data = member_document(built.choice, built.parameters, built.members, built.stiffness, included,
                                spec.stiffness or "")

@@ -183,9 +183,9 @@ def read_spec(path):
     else:
         objective = _metric_name(node, node[sense].string(), sense)
     # no model: the bicycle's own (rider-lean for a MooreRiderLean2012 set)
-    model = spec_model(node) if node.has("model") else own_model(near_spec(path, node["bike"].string())).name
-    refuse_riderless(node, model, near_spec(path, node["bike"].string()),
-                     node["rider"].string() if node.has("rider") else "none")
+    bike = near_spec(path, node["bike"].string())
+    model = spec_model(node) if node.has("model") else own_model(bike).name
+    refuse_riderless(node, model, bike)
     max_speed = node["max_speed"].number("speed", positive=True) if node.has("max_speed") else 30.0
     if max_speed > MAX_SPEED:
         node.fail(f"a speed of at most {MAX_SPEED:g} m/s, got {max_speed:g}", "max_speed")
@@ -194,7 +194,7 @@ def read_spec(path):
         node.fail(f"a speed of at most {MAX_SPEED:g} m/s", "speed")
     tuning = node["tuning"].string(Tuning.values()) if node.has("tuning") else Tuning.HMH2012.value
     spec = OptimiseSpec(
-        source=str(path), speed=speed, tuning=tuning, bike=near_spec(path, node["bike"].string()),
+        source=str(path), speed=speed, tuning=tuning, bike=bike,
         rider=near_spec(path, node["rider"].string()) if node.has("rider") else "none",
         stiffness=near_spec_file(path, node["stiffness"].string()) if node.has("stiffness") else None,
         combine=node["combine"].string(("exact", "thesis")) if node.has("combine") else "exact",

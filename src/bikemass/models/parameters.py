@@ -179,9 +179,10 @@ def from_node(node):
     return BenchmarkParameters(**values)
 
 
-def check_units(node):
-    """A ``units`` block (as bikemass writes) may only state the SI units the values are read in."""
-    si = parameter_units()
+def check_units(node, units=None):
+    """A ``units`` block (as bikemass writes) may only state the SI units the values are read in: those of
+    ``units`` (``{key: unit}``; default the 26 names', :func:`parameter_units`); other keys are not checked."""
+    si = parameter_units() if units is None else units
     for key, unit in node.items():
         if key in si and unit.value != si[key]:
             unit.fail(f"{si[key]} (values are read in SI; give another unit per value, e.g. "

@@ -42,6 +42,12 @@ UNPAIRED = ("head", "torso")
 """Segments of a chain pose that are single (every other one is a mirrored pair)."""
 
 
+def is_lumped(segment):
+    """Whether a pose's segment (its plain value) is a lumped body: ``mass``, ``com``, ``inertia``, given
+    in the bicycle's frame, not placed by an anthropometry."""
+    return isinstance(segment, dict) and "mass" in segment
+
+
 def read_pose(node, as_printed=False):
     """(name, parts) of the pose in the YAML ``node`` (see the module docstring)."""
     node.check_keys(required=("segments",), optional=("name", "body", "source", "posture", "units"))
@@ -50,7 +56,7 @@ def read_pose(node, as_printed=False):
     segments = node["segments"]
     if not segments.mapping():
         segments.fail("at least one segment")
-    placed = [(k, s) for k, s in segments.items() if not (isinstance(s.value, dict) and "mass" in s.value)]
+    placed = [(k, s) for k, s in segments.items() if not is_lumped(s.value)]
     body = None
     if placed:
         if not node.has("body"):
@@ -61,7 +67,7 @@ def read_pose(node, as_printed=False):
     for key, seg in segments.items():
         if body is not None and key in body.segments:
             parts += _placed_parts(seg, body.segments[key], as_printed)
-        elif isinstance(seg.value, dict) and "mass" in seg.value:
+        elif is_lumped(seg.value):
             parts.append(_lumped_part(key, seg))
         else:
             known = ", ".join(body.segments) if body else "none"

@@ -38,7 +38,7 @@ from ..core.paths import resolve
 from . import Rider, poses_dir
 from .body import load_body
 from .chain_file import bicycle_contacts, chain_settings, feet_body, read_chain_pose, solve_chain
-from .pose import pose_parts, read_pose
+from .pose import is_lumped, pose_parts, read_pose
 from .fit import fit_warnings
 
 CONTACT_TOLERANCE = 1e-3
@@ -181,7 +181,8 @@ def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, toleran
         name = node.get("name", str(source)).string()
         # a lumped body (mass, com, inertia: a load given in the bicycle's frame) is no segment of the chain:
         # kept where the file puts it, and said so (re-seating moves the body's segments alone)
-        lumped = [p for p in rider.parts if p.name in _lumped_keys(node)]
+        lumped_keys = {key for key, seg in node["segments"].items() if is_lumped(seg.value)}
+        lumped = [p for p in rider.parts if p.name in lumped_keys]
         rider = Rider(str(pose), name, pose_parts(solution.pose, body.anthropometry, front, source) + tuple(lumped))
         seated = _checked(pose, rider, bicycle, chain, hands, "solved", solution, False, tolerance, posture)
         if lumped:
@@ -192,11 +193,6 @@ def seat_rider(pose, bicycle, as_printed=False, allow_off_contact=False, toleran
         return seated
     return _checked(pose, rider, bicycle, chain, hands, "as written", None, allow_off_contact, tolerance,
                     node)
-
-
-def _lumped_keys(node):
-    """The keys of a placement pose's lumped bodies (a segment with ``mass:``, :mod:`~bikemass.rider.pose`)."""
-    return {key for key, seg in node["segments"].items() if isinstance(seg.value, dict) and "mass" in seg.value}
 
 
 def _load(pose, node, as_printed):

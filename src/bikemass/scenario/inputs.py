@@ -51,6 +51,7 @@ from ..rider import Rider, _read_document, poses_dir
 from ..rider.chain_file import bicycle_contacts
 from ..rider.hands import forearms_on_handlebars
 from ..rider.lean_split import rider_lean_parameters
+from ..rider.pose import is_lumped
 from ..rider.seating import SeatedRider
 from . import catalog
 from .catalog import seated_rider, seating
@@ -562,12 +563,12 @@ class Inputs:
           kept, and a segment's ``frame:`` where the posture names no ``front:``);
         * used as written (its contacts on the bicycle's, or allowed off them), its ``posture:`` is not
           used: a change of ``posture.*`` is lost."""
-        source, doc = self._read_rider()
+        _, doc = self._read_rider()
         if not (isinstance(doc, dict) and "segments" in doc and "chain" not in doc):
             return
         segments = doc["segments"] if isinstance(doc["segments"], dict) else {}
         posture = doc.get("posture") if isinstance(doc.get("posture"), dict) else {}
-        lumped = {k for k, v in segments.items() if isinstance(v, dict) and "mass" in v}
+        lumped = {k for k, v in segments.items() if is_lumped(v)}
         parts = [path.split(".") for path, _ in rider_changes]
         if seated.how == "solved":
             lost = [p for p in parts if p[0] == "segments" and len(p) > 1 and p[1] not in lumped

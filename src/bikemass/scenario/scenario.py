@@ -499,13 +499,14 @@ def own_model(bicycle, scenario=None):
     return choice if lean is None else model_of(lean, None)
 
 
-def refuse_riderless(node, model, bike, rider):
+def refuse_riderless(node, model, bike):
     """A spec's (a sweep's, an optimisation's; its top-level config :class:`~bikemass.core.config.Node`)
-    ``model`` (a name) that splits a rider at the hips, with no ``rider`` on a ``bike`` that is no
-    ``MooreRiderLean2012`` set: InputError naming the spec's ``rider`` key (before any configuration is
-    built; each would be refused alike)."""
+    ``model`` (a name) that splits a rider at the hips, with no ``rider:`` (or ``rider: none``) on a
+    ``bike`` that is no ``MooreRiderLean2012`` set: InputError naming the spec's ``rider`` key (before any
+    configuration is built; each would be refused alike)."""
     member = _split_member(parse_model(model))
-    if member is not None and rider in (None, "none") and not own_model(bike).has(member.name):
+    riderless = not node.has("rider") or node["rider"].string() == "none"
+    if member is not None and riderless and not own_model(bike).has(member.name):
         node.fail(f"a rider for the {member.name} model to split at the hips (rider: POSE), or a "
                   "MooreRiderLean2012 parameter set as the bike", "rider")
 

@@ -336,7 +336,7 @@ def read_spec(path: "str | os.PathLike") -> "SweepSpec":
             node.fail("a whole number of configurations per task", "chunk")
     bike = near_spec(path, node["bike"].string())
     model = spec_model(node) if node.has("model") else own_model(bike).name    # none: the bicycle's own
-    refuse_riderless(node, model, bike, node["rider"].string() if node.has("rider") else "none")
+    refuse_riderless(node, model, bike)
     spec = SweepSpec(
         source=str(path), bike=bike,
         rider=near_spec(path, node["rider"].string()) if node.has("rider") else "none",
