@@ -125,9 +125,9 @@ def test_thesis_gaps_and_the_no_hands_fit():
     assert upright["rms"] < 0.003 and np.linalg.norm(upright["fitted"].com - upright["thesis"].com) < 0.001
 
 
-def test_the_written_pose_file_names_the_command_that_writes_it_again(tmp_path):
-    """The header of ``pose -o`` names every option given (``--torso-lean`` was left out): the command it
-    names, run again, writes the same placement to the bit."""
+def test_contract_the_written_pose_file_names_the_command_that_writes_it_again(tmp_path):
+    """Contract test of the shell with itself: the header of ``pose -o`` names every option given
+    (``--torso-lean`` was left out), so the command it names, run again, writes the same placement to the bit."""
     first = tmp_path / "first.yaml"
     assert main(["pose", "jamis", "--torso-lean", "30", "--hands", "hoods", "--fix", "neck=10", "-o", str(first)]) == 0
     command = first.read_text().splitlines()[0].split("written by: bikemass ")[1].split()

@@ -153,9 +153,9 @@ def test_compare_data_in_every_format(capsys, tmp_path):
     assert target.read_text().splitlines()[0].startswith("rider,stiffness,weave speeds (m/s)")
 
 
-def test_compare_applies_a_members_file_to_the_models_that_have_the_member(capsys, tmp_path):
-    """``compare --models whipple,tyre --tyres FILE`` was refused (the Whipple model has no tyre member); the
-    file applies to the tyre model, whose row equals ``stability --model tyre --tyres FILE`` (1e-9 m/s), and
+def test_contract_compare_applies_a_members_file_to_the_models_that_have_the_member(capsys, tmp_path):
+    """Contract test of ``compare`` against ``stability`` (both the library's): ``compare --models whipple,tyre
+    --tyres FILE`` was refused (the Whipple model has no tyre member); the file applies to the tyre model, whose row equals ``stability --model tyre --tyres FILE`` (1e-9 m/s), and
     the Whipple row equals ``stability`` without it. A file no model of the list takes is one line."""
     tyres = tmp_path / "tyres.yaml"
     tyres.write_text("front: {cornering_coefficient: 11.46 1/rad, camber_coefficient: 0.573 1/rad, "
