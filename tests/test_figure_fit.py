@@ -238,7 +238,7 @@ def test_web_figures_name_an_upload_by_its_name():
     state = PageState(bike=upload, rider="none")
     assert upload.startswith("upload-") and engine.bike_name(state) == LONG_NAME
     result = engine.evaluate(state).stability
-    fig = _eigenvalue_figure(result, state, engine.bike_name(state))
+    fig = _eigenvalue_figure(result, state, engine.bike_name(state), engine.rider_label(state))
     fit_titles(fig)
     title = fig.axes[0].get_title()
     assert " ".join(title.split()).startswith(LONG_NAME) and "upload-" not in title and _titles_inside(fig)

@@ -18,7 +18,7 @@ from bikemass.core.paths import frames_dir  # noqa: E402
 from bikemass.web import create_app  # noqa: E402
 from bikemass.web.engine import MAX_UPLOADS  # noqa: E402
 from bikemass.web.page import CHART_KEYS  # noqa: E402
-from bikemass.web.state import PageState  # noqa: E402
+from bikemass.web.state import HANDS, PageState  # noqa: E402
 
 SECRET = "hunter2-do-not-echo"
 
@@ -272,6 +272,18 @@ def test_states_name_no_paths():
         PageState.from_query({"stiffness": "/etc/passwd"})
 
 
+def test_figure_titles_name_the_rider_as_the_command_lines_do(app):
+    """The web page's titles say who rides as ``Scenario.rider_label`` (the command line's titles) does: a
+    bicycle file with no rider has ``no rider``, the benchmark's set ``rider in the parameter set`` (its
+    rider is in its parameters), a pose ``rider <pose>`` and a body its sex, height and mass."""
+    engine = app.engine
+    assert engine.rider_label(PageState(bike="jamis", rider="none")) == "no rider"
+    assert engine.rider_label(PageState(bike="benchmark", rider="none")) == "rider in the parameter set"
+    assert engine.rider_label(PageState(bike="jamis", rider="relaxed")) == "rider relaxed"
+    body = PageState(bike="jamis", rider="body").with_body(1.65, 60.0, "female", HANDS[0])
+    assert engine.rider_label(body) == "a female rider of 1.65 m and 60 kg"
+
+
 def test_figures_name_an_upload_by_its_name_not_its_secret_name(app):
     """An upload's figures carry the bicycle's ``name:`` (issue 35: not a file name, never ``upload-<secret>``),
     and the file name it was uploaded as where the file has no ``name:``."""
@@ -279,9 +291,12 @@ def test_figures_name_an_upload_by_its_name_not_its_secret_name(app):
     name = app.engine.add_upload("my bike.yaml", (frames_dir() / "benchmark.yaml").read_bytes())
     state = PageState(bike=name, rider="none")
     assert _bike_shown(app.engine, state) == "Benchmark (Meijaard et al. 2007)"
-    figure = _eigenvalue_figure(app.engine.evaluate(state).stability, state, _bike_shown(app.engine, state))
+    figure = _eigenvalue_figure(app.engine.evaluate(state).stability, state, _bike_shown(app.engine, state),
+                                app.engine.rider_label(state))
     titles = [figure._suptitle.get_text() if figure._suptitle else ""] + [a.get_title() for a in figure.axes]
-    assert any(" ".join(t.split()).startswith("Benchmark (Meijaard et al. 2007), no rider") for t in titles)
+    # the benchmark's set holds its rider: the title says so, as the command line's does
+    assert any(" ".join(t.split()).startswith("Benchmark (Meijaard et al. 2007), rider in the parameter set")
+               for t in titles)
     assert not any("upload-" in t for t in titles)
     text = "\n".join(line for line in (frames_dir() / "benchmark.yaml").read_text().splitlines()
                      if not line.startswith("name:"))

@@ -36,7 +36,7 @@ from ..core.errors import BikemassWarning, InputError, one_line
 from ..models.parameters import BenchmarkParameters
 from ..core.paths import confined
 from ..core import data_folder
-from .state import SOURCE, PageState
+from .state import BODY_RIDER, SOURCE, PageState
 from ..bicycle.loader import bicycle_sizes
 from ..bicycle.loader import _is_parameter_text
 from ..core.config import load_yaml
@@ -163,6 +163,7 @@ class Engine:
         self.base_parameters = self._guarded(_recorded(self._base_parameters, 64))
         self.built = self._guarded(_recorded(self._built, 64))
         self.handling = self._guarded(_recorded(self._handling, 16))
+        self.own_rider_label = self._guarded(_recorded(self._own_rider_label, 32))
 
     # -- the one way in ---------------------------------------------------------
     def _guarded(self, function):
@@ -299,6 +300,21 @@ class Engine:
         if upload and (not name or name == Path(self._uploads.get(state.bike, "upload")).stem):
             return self.upload_label(state.bike)            # no name: of its own (the stored file's stem)
         return name or state.bike
+
+    def rider_label(self, state):
+        """Who rides ``state``'s bicycle, in words for a figure title, as the command line's titles say it:
+        the body's sex, height and mass, ``rider <pose>``, or with no rider added ``rider in the parameter
+        set`` for a parameter file whose set holds its rider (the benchmark) and ``no rider`` otherwise
+        (:meth:`~bikemass.scenario.scenario.Scenario.rider_label`)."""
+        if state.rider == BODY_RIDER:
+            return f"a {state.sex} rider of {state.height:g} m and {state.mass:g} kg"
+        if state.rider != "none":
+            return f"rider {state.rider}"
+        return self.own_rider_label(state.bike)
+
+    def _own_rider_label(self, bike):
+        with self._reaching(bike):
+            return Scenario(self.source(bike)).rider_label()
 
     def sizes(self, bike):
         """The size names of ``bike``'s size run, ``()`` if it has none."""

@@ -321,7 +321,7 @@ def _results(engine, state):
     evaluation = engine.evaluate(state)
     base = engine.base_parameters(state.bicycle_key, state.rider_key, state.combine).to_dict()
     bicycle = engine.bicycle(state.bicycle_key)
-    figure = _svg_uri(_eigenvalue_figure(evaluation.stability, state, _bike_shown(engine, state)))
+    figure = _svg_uri(_eigenvalue_figure(evaluation.stability, state, _bike_shown(engine, state), engine.rider_label(state)))
     return evaluation, base, derived_chart(bicycle), engine.is_chart(state.bike), figure
 
 
@@ -504,7 +504,7 @@ def _handling_uri(engine, state):
     """The HQM figure of ``state`` (an SVG data URL) and the summary line."""
     result = engine.handling(state)
     stable = engine.evaluate(state).stability.ranges["strict"]["exact"]
-    return _svg_uri(_handling_figure(result, stable, state, _bike_shown(engine, state))), _handling_summary(result)
+    return _svg_uri(_handling_figure(result, stable, _bike_shown(engine, state), engine.rider_label(state))), _handling_summary(result)
 
 
 def _placeholder(key, value):
@@ -520,9 +520,7 @@ def _bike_shown(engine, state):
     return engine.bike_name(state)
 
 
-def _eigenvalue_figure(result, state, bike):
-    rider = (f"a {state.sex} rider of {state.height:g} m and {state.mass:g} kg" if state.rider == BODY_RIDER
-             else "no rider" if state.rider == "none" else f"rider {state.rider}")
+def _eigenvalue_figure(result, state, bike, rider):
     model = "" if state.model == BASE else f", model {state.model}"
     return plot_eigenvalues(result, title=f"{bike}, {rider}, stiffness {state.stiffness}{model}")
 
@@ -531,8 +529,8 @@ def _bode_figure(fr, bike):
     return plot_bode(fr, f"{bike}: {fr.output} / {fr.input} at {fr.speed:g} m/s", size=(6.4, 4.6))
 
 
-def _handling_figure(result, stable, state, bike):
-    return plot_handling(result, f"{bike}, rider {state.rider}: handling quality metric", size=(8.0, 3.4),
+def _handling_figure(result, stable, bike, rider):
+    return plot_handling(result, f"{bike}, {rider}: handling quality metric", size=(8.0, 3.4),
                          stable_speeds=stable)
 
 
