@@ -14,7 +14,12 @@ whole):
 * the exact crossings (``axis_crossings``: the polynomial eigenvalue problems and each candidate verified);
 * the whole ``bm.stability``;
 
-and the number of Python-level calls (functions, numpy's included) one ``bm.stability`` makes.
+and the number of Python-level calls (functions, numpy's included) one ``bm.stability`` makes.  Then the
+least any continuation of this kind spends in numpy, each piece timed alone: LAPACK at every
+``FILL_EVERY``-th speed, ``FILL_ITERATIONS`` Newton steps by Horner's rule for every root at every other
+speed (one (q, m) array operation per term), the distances to the nearest other root and each step's
+nearest successor over the whole grid; their sum beside the floor is what is left of the floor for
+everything else (the steps where roots meet, the naming, the exact crossings, the ranges).
 """
 
 import sys
@@ -68,6 +73,38 @@ def python_calls(fn):
     return count[0]
 
 
+def continuation_pieces(model, v):
+    """``[(name, function)]``: the pieces every continuation of the grid between LAPACK speeds needs
+    (see the module docstring), each on the grid's own eigenvalues."""
+    n = len(v)
+    nodes = np.unique(np.r_[np.arange(0, n, eigen.FILL_EVERY), n - 1])
+    between = np.setdiff1d(np.arange(n), nodes)
+    values = eigen._plain_values(model.dynamic_matrix(v))
+    width = model.n_dynamic * (len(model.speed_pieces[0][2].dynamic_coefficients) - 1) + 1
+    c = eigen.interpolation_matrix(v[nodes], v[between], width) @ eigen._poly_from_roots(values[nodes])
+    columns = [c[:, j:j + 1].astype(complex) for j in range(c.shape[1])]
+    start = values[between] * (1 + 1e-3)
+
+    def newton():
+        s = start.copy()
+        p, dp = np.empty(s.shape, dtype=complex), np.empty(s.shape, dtype=complex)
+        for _ in range(eigen.FILL_ITERATIONS):
+            p[...], dp[...] = columns[0], 0.0
+            for column in columns[1:]:
+                dp *= s
+                dp += p
+                p *= s
+                p += column
+            s -= p / dp
+        return s
+    sep = eigen._nearest_other(values)
+    return [(f"LAPACK at every {eigen.FILL_EVERY}th speed ({len(nodes)})",
+             lambda: eigen._plain_values(model.dynamic_matrix(v[nodes]))),
+            (f"{eigen.FILL_ITERATIONS} Newton steps at the other {len(between)}", newton),
+            ("nearest other root at every speed", lambda: eigen._nearest_other(values)),
+            ("nearest successor of every step", lambda: eigen.nearest_steps(values, sep=sep))]
+
+
 def main(member="rider-lean", rounds=300):
     warnings.simplefilter("ignore", bm.BikemassWarning)
     built = bm.Scenario("jamis", "relaxed", "steel" if member == "flexible" else None, model=member).build()
@@ -88,6 +125,15 @@ def main(member="rider-lean", rounds=300):
     for name, fn in stages:
         print(f"{name:50s} {cpu(fn, rounds) * 1e3:8.3f} ms")
     print(f"{'Python-level calls of one bm.stability':50s} {python_calls(lambda: bm.stability(built)):8d}")
+    floor = cpu(stages[0][1], rounds)
+    print("the least a continuation spends in numpy, piece by piece:")
+    least = 0.0
+    for name, fn in continuation_pieces(model, v):
+        t = cpu(fn, rounds)
+        least += t
+        print(f"  {name:48s} {t * 1e3:8.3f} ms")
+    print(f"  {'their sum':48s} {least * 1e3:8.3f} ms ({least / floor:.2f} of the floor; "
+          f"{(floor - least) * 1e3:.3f} ms left for the rest)")
 
 
 if __name__ == "__main__":
