@@ -31,6 +31,7 @@ from types import SimpleNamespace
 
 from ..core.tables import Table
 from ..models.whipple_generated import second_order_entries
+from ..models.family import parameters_of
 from ..models.parameters import NAMES, parameter_units
 from .engine import closed_form, scalar
 from .engine.crossings import OSCILLATORY, REAL
@@ -82,7 +83,9 @@ PER_PARAMETER = "m/s per unit of each parameter (SI, angles rad)"
 @dataclass(frozen=True, repr=False)
 class Sensitivity(Result):
     """Critical speeds (m/s, ``None`` if none) and their derivatives ``{name: (m/s) per unit}``
-    (read-only mappings); ``params`` the values differentiated by (SI, each in its own unit).
+    (read-only mappings); ``params`` the values differentiated by (SI, each in its own unit);
+    ``param_units`` the units of a member's own parameters (``{"CaF": "1/rad", ...}``, as its
+    generated code declares them; ``None`` for the benchmark names alone), read by :meth:`unit_of`.
 
     Examples
     --------
@@ -99,9 +102,15 @@ class Sensitivity(Result):
     d_capsize_speed: Mapping = quantity(PER_PARAMETER, "{name: derivative of the capsize speed}")
     d_stiffness: Mapping | None = quantity("m/s per N m/rad", "{speed key: {S entry: derivative}}; rigid: None",
                                            default=None)
+    param_units: Mapping | None = None
 
     def __post_init__(self):
-        frozen_fields(self, "params", "d_weave_speed", "d_capsize_speed", "d_stiffness")
+        frozen_fields(self, "params", "d_weave_speed", "d_capsize_speed", "d_stiffness", "param_units")
+
+    def unit_of(self, name):
+        """The SI unit of parameter ``name`` (``"m"``, ``"1/rad"``, ...): a benchmark name's, or what the
+        model's code declares for a member's own parameter (``param_units``)."""
+        return (self.param_units or {}).get(name) or parameter_units().get(name, "SI")
 
     def units(self):
         """The ``units`` block of :meth:`to_dict`: the fields' declared units and the elasticities'."""
@@ -123,7 +132,7 @@ class Sensitivity(Result):
     def elasticities(self, which):
         """``{name: (p / v) dv/dp}`` for ``which`` in ``weave_speed`` | ``capsize_speed``."""
         v, d = getattr(self, which), getattr(self, "d_" + which)
-        return {k: (self.params[k] * x / v if v else None) for k, x in d.items()}
+        return {k: (self.params[k] * x / v + 0.0 if v and x is not None else None) for k, x in d.items()}
 
     def tables(self):
         """``{"parameters": Table}``: one row per parameter differentiated by (its value and unit, the
@@ -132,11 +141,10 @@ class Sensitivity(Result):
         row per critical speed and entry of S ((m/s) per N m/rad). The critical speeds are the
         frames' ``attrs``."""
         names = list(dict.fromkeys((*self.d_weave_speed, *self.d_capsize_speed)))
-        known = parameter_units()
         e_weave, e_capsize = self.elasticities("weave_speed"), self.elasticities("capsize_speed")
         per = "m/s per unit of the parameter"
         columns = {"parameter": names, "value": [self.params.get(n) for n in names],
-                   "unit": [known.get(n, "SI") for n in names],
+                   "unit": [self.unit_of(n) for n in names],
                    "d_weave_speed": [self.d_weave_speed.get(n) for n in names],
                    "d_capsize_speed": [self.d_capsize_speed.get(n) for n in names],
                    "elasticity_weave_speed": [e_weave.get(n) for n in names],
@@ -163,9 +171,9 @@ class Sensitivity(Result):
 
 @renamed_keywords(S="stiffness", params="system", vmax="max_speed")
 def sensitivity(system: "BenchmarkParameters | RiderLeanParameters | Scenario | Built", stiffness: "ArrayLike | None" = None,
-                max_speed: float = 30.0, names: "Sequence[str]" = NAMES, model: "str | None" = None,
+                max_speed: float = 30.0, names: "Sequence[str] | None" = None, model: "str | None" = None,
                 **members: object) -> Sensitivity:
-    """Exact derivatives of the weave and capsize speeds with respect to each benchmark parameter.
+    """Exact derivatives of the weave and capsize speeds with respect to each parameter of the model.
 
     The first crossing of each kind on ``(0, max_speed]`` and its derivative by the implicit function
     theorem on the crossing eigenvalue (left and right eigenvectors), with the matrices'
@@ -184,8 +192,13 @@ def sensitivity(system: "BenchmarkParameters | RiderLeanParameters | Scenario | 
         too. (``S=`` is the deprecated old name.)
     max_speed : float
         Highest speed searched (m/s), positive and finite.
-    names : sequence of str
-        The parameters to differentiate by (default all 26, :data:`~bikemass.PARAMETER_NAMES`).
+    names : sequence of str, optional
+        The parameters to differentiate by.  Default: of the Whipple bicycle all 26
+        (:data:`~bikemass.PARAMETER_NAMES`); of any other member of the family every parameter its
+        code takes: the 26 and the member's own (the tyres' ``CaF``, ``CgF``, ``sigmaF``, ..., the
+        upper body's ``mU``, ``klean``, ``clean``, the arms' ``k_arms``, ``c_arms``, the flexible
+        frame's compliances and modal masses), each in the SI unit the code declares
+        (:meth:`Sensitivity.unit_of`).
     model : str, optional
         A member of the model family (``"tyre"``, ``"rider-lean+tyre"``, ...), as for
         :func:`~bikemass.stability`: the parameter set's own by default, a Scenario's own replaced.
@@ -204,7 +217,8 @@ def sensitivity(system: "BenchmarkParameters | RiderLeanParameters | Scenario | 
     ------
     InputError
         Parameters the model is not defined for, an S that is not symmetric positive definite, a
-        ``max_speed`` that is not a positive finite speed, or ``names`` not among the 26.
+        ``max_speed`` that is not a positive finite speed, or ``names`` not among the model's
+        parameters.
 
     See Also
     --------
@@ -242,11 +256,23 @@ def sensitivity(system: "BenchmarkParameters | RiderLeanParameters | Scenario | 
             raise InputError("stiffness", "(matrix)", "none with a scenario (its stiffness choice is built in)")
         built = system.build() if isinstance(system, Scenario) else system
         if built.choice.members:
-            _checked(built.parameters, None, max_speed, names)
-            return _member_sensitivity(built, max_speed, tuple(names))
+            own = tuple(built.values())
+            _checked(built.parameters, None, max_speed, NAMES)
+            return _member_sensitivity(built, max_speed, _member_names(names, own, built.choice))
         system, stiffness = built.parameters, built.stiffness
-    system, S, names = _checked(system, stiffness, max_speed, names)
+    system, S, names = _checked(system, stiffness, max_speed, NAMES if names is None else names)
     return _whipple_sensitivity(system, S, max_speed, names)
+
+
+def _member_names(names, own, choice):
+    """``names`` (default: every one of ``own``, the parameters of the code of the member ``choice``) checked
+    to be among ``own`` (InputError otherwise)."""
+    if names is None:
+        return own
+    if isinstance(names, str) or not all(isinstance(n, str) and n in own for n in names):
+        raise InputError("names", short(names), f"a sequence of the {choice.name} model's parameter names "
+                                                f"({', '.join(own)})")
+    return tuple(names)
 
 
 def _whipple_sensitivity(params, S, vmax, names):
@@ -356,7 +382,13 @@ def _member_sensitivity(built, vmax, names):
     base = built.values()
     return Sensitivity(params={n: float(base[n]) for n in names}, weave_speed=speeds["weave_speed"],
                        capsize_speed=speeds["capsize_speed"], d_weave_speed=derivs["weave_speed"],
-                       d_capsize_speed=derivs["capsize_speed"])
+                       d_capsize_speed=derivs["capsize_speed"], param_units=_own_units(built, names))
+
+
+def _own_units(built, names):
+    """``{name: SI unit}`` of those of ``names`` that are a member's own parameters (not one of the 26), as the
+    code of ``built``'s model declares them."""
+    return {name: unit for name, unit, _ in parameters_of(built.choice) if name in names and name not in NAMES}
 
 
 def _checked(params, S, vmax, names):
@@ -461,10 +493,14 @@ def geometry_sensitivity(scenario: Scenario, keys: "str | Sequence[str]", result
     built = scenario.build()
     member = bool(built.choice.members)
     result = result or sensitivity(built)
-    if member:
+    if member and not set(built.values()) <= set(result.d_weave_speed):    # a result of some names only
         result = _all_member_derivatives(built, result)
     out = {}
     for key in keys:
+        if member and key in result.params and key not in NAMES:
+            raise InputError(scenario.origin, key, f"a dotted path into the bicycle or pose file or a benchmark "
+                                                   f"name ({key} is the {built.choice.name} model's own parameter: "
+                                                   "its derivatives are rows of the sensitivity itself)")
         x = scenario.value(key)
         h = step * abs(x) if x else step
         estimates = []
@@ -497,7 +533,8 @@ def _all_member_derivatives(built, result):
         derivs[key] = speed_derivatives(built.model, member_state_derivatives(built, v, names), v, kind,
                                         crossing.frequency)
     return Sensitivity(params=built.values(), weave_speed=result.weave_speed, capsize_speed=result.capsize_speed,
-                       d_weave_speed=derivs["weave_speed"], d_capsize_speed=derivs["capsize_speed"])
+                       d_weave_speed=derivs["weave_speed"], d_capsize_speed=derivs["capsize_speed"],
+                       param_units=_own_units(built, names))
 
 
 def _chain(result, key, dp, dS):

@@ -21,10 +21,12 @@ quantities of their own units there)."""
 
 def register(sub):
     sens = sub.add_parser(
-        "sensitivity", help="exact derivatives of the weave and capsize speeds w.r.t. the 26 parameters",
+        "sensitivity", help="exact derivatives of the weave and capsize speeds w.r.t. the model's parameters",
         description="Derivatives of the weave speed (first oscillatory crossing of Re = 0) and the "
-                    "capsize speed (first real-root crossing) with respect to each benchmark parameter, "
-                    "from eigenvalue derivatives (left/right eigenvectors) and the implicit function "
+                    "capsize speed (first real-root crossing) with respect to each parameter of the model "
+                    "(the 26 benchmark parameters; with --model, the member's own too: the tyres' CaF, "
+                    "sigmaF, ..., the upper body's mU, klean, ..., the arms' k_arms, c_arms), from "
+                    "eigenvalue derivatives (left/right eigenvectors) and the implicit function "
                     "theorem, exact to rounding; elasticities (p/v) dv/dp; a bar chart with --plot.")
     _bike_options(sens, "the derivatives and elasticities", "a bar chart of the elasticities")
     sens.add_argument("--inputs", metavar="KEYS", default=None,
@@ -147,16 +149,12 @@ def run_sensitivity(args):
 
 
 def sensitivity_csv(result, geometry=None):
-    """One row per input: the two critical speeds first (kind ``speed``), then the 26
-    parameters, the rear-frame S entries and any geometry-level inputs, each with its value,
-    unit and the derivatives (and, for parameters, elasticities) of both speeds."""
-    # lazy: the library loads numpy; bikemass --help must not
-    from ..models.parameters import parameter_units
-
-    units = parameter_units()
+    """One row per input: the two critical speeds first (kind ``speed``), then the model's
+    parameters (the 26 and a member's own), the rear-frame S entries and any geometry-level inputs,
+    each with its value, unit and the derivatives (and, for parameters, elasticities) of both speeds."""
     ew, ec = result.elasticities("weave_speed"), result.elasticities("capsize_speed")
     rows = [[k, "speed", getattr(result, k), "m/s", None, None, None, None] for k in ("weave_speed", "capsize_speed")]
-    rows += [[n, "parameter", result.params[n], units.get(n, "1"), result.d_weave_speed[n], ew[n],
+    rows += [[n, "parameter", result.params[n], result.unit_of(n), result.d_weave_speed[n], ew[n],
               result.d_capsize_speed[n], ec[n]] for n in result.d_weave_speed]
     if result.d_stiffness:
         rows += [[k, "stiffness", None, "N m/rad", result.d_stiffness["weave_speed"][k], None,
