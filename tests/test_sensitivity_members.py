@@ -5,6 +5,8 @@ the member); the reference is a Richardson-extrapolated central difference of th
 that ``bm.stability`` finds (truncation error of order h**4; the crossings are solved to about
 1e-12 m/s, so with a relative step of 1e-3 the reference is good to about 1e-8 relative)."""
 
+import json
+
 import pytest
 
 import bikemass as bm
@@ -112,8 +114,8 @@ def test_a_members_own_parameters_carry_their_units_and_are_checked():
 def test_the_command_line_gives_a_members_own_parameters_as_rows(capsys):
     """`bikemass sensitivity benchmark --model tyre`: after the 26 names, a row for each of the tyres'
     parameters with the unit its code declares, the same numbers as ``bm.sensitivity`` (contract: the
-    command line is a shell over it); such a name under --inputs is refused in one line pointing to the
-    rows."""
+    command line is a shell over it); such a name under --inputs (an input of the scenario) chains to
+    its own row."""
     import csv
     import io
     from bikemass.cli.main import main
@@ -124,6 +126,6 @@ def test_the_command_line_gives_a_members_own_parameters_as_rows(capsys):
     assert rows["CaF"]["unit"] == "1/rad" and rows["sigmaF"]["unit"] == "m" and rows["CmgF"]["unit"] == "m/rad"
     assert float(rows["CaF"]["d_weave_speed (m/s per unit)"]) == pytest.approx(library.d_weave_speed["CaF"],
                                                                                rel=1e-15)
-    assert main(["sensitivity", "benchmark", "--model", "tyre", "--inputs", "CaF"]) == 2
-    err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and "--inputs: CaF" in err[0] and "rows of the sensitivity" in err[0]
+    assert main(["sensitivity", "benchmark", "--model", "tyre", "--inputs", "CaF", "--format", "json"]) == 0
+    chained = json.loads(capsys.readouterr().out)["inputs"]["CaF"]       # an input of the scenario: its own row
+    assert chained["weave_speed"] == pytest.approx(library.d_weave_speed["CaF"], rel=1e-9)

@@ -497,10 +497,6 @@ def geometry_sensitivity(scenario: Scenario, keys: "str | Sequence[str]", result
         result = _all_member_derivatives(built, result)
     out = {}
     for key in keys:
-        if member and key in result.params and key not in NAMES:
-            raise InputError(scenario.origin, key, f"a dotted path into the bicycle or pose file or a benchmark "
-                                                   f"name ({key} is the {built.choice.name} model's own parameter: "
-                                                   "its derivatives are rows of the sensitivity itself)")
         x = scenario.value(key)
         h = step * abs(x) if x else step
         estimates = []

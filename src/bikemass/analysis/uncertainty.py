@@ -507,12 +507,6 @@ def propagate(scenario, spreads, method="linear", samples=1000, seed=0, speeds=N
         raise InputError("samples", samples, f"at most {MAX_BAND_VALUES} samples x speeds (the Monte Carlo bands "
                          f"keep 4 real parts each), got {samples} x {len(speeds)}")
     built = scenario.build()
-    if method == "montecarlo" and built.choice.members:
-        own = [k for k in spreads if k in built.values() and k not in NAMES]
-        if own:                      # a draw is built from the files; the code's own values are not among them
-            raise InputError(scenario.origin, own[0], f"an input of the bicycle, pose or member files for the Monte "
-                             f"Carlo method ({own[0]} is the {built.choice.name} model's own parameter: the linear "
-                             "method propagates its spread)")
     sigma = {k: s.std for k, s in spreads.items()}
     if built.choice.members:
         derivs, modes, crossings = member_derivatives(scenario, built, spreads, speeds, step)

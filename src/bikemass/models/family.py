@@ -40,6 +40,17 @@ def parameters_of(model):
     return (*generated(model).PARAMETERS, *extra)
 
 
+def member_inputs(model):
+    """``{name: (member spec, SI unit)}``: the parameters of ``model``'s code that are inputs of a scenario (each
+    member's ``INPUTS``, :mod:`bikemass.models.members.spec`), in the order of its members; ``{}`` for the
+    Whipple bicycle."""
+    choice = parse_model(model)
+    if not choice.members:
+        return {}
+    units = {name: unit for name, unit, _ in parameters_of(choice)}
+    return {name: (spec, units[name]) for spec in choice.specs for name in (spec.hook("INPUTS") or {})}
+
+
 def coefficients(model, values):
     """``(E, A, B)`` of ``model`` in descriptor form (see :mod:`bikemass.models.derive.build`) at
     ``values`` (``{name: float or array}``, every name of :func:`parameter_names`; arrays broadcast,

@@ -38,14 +38,16 @@ from dataclasses import dataclass, field, fields
 
 import numpy as np
 
+from ..core.units import UnitError, convert, dimension_of
+
 from ..core.choices import RIGID, Combine, Method, check
 from ..mass.materials import frame_label
 from ..core.errors import InputError, short, wrong_type
 from ..core.frozen import FrozenMap, readonly, short_repr
 from ..models.family import build as build_member, dynamic_derivatives, generated, held_coordinates, linear_model, \
-    values as member_values
+    member_inputs, parameter_names, values as member_values
 from ..models.linear import LinearModel
-from ..models.members.spec import Source
+from ..models.members.spec import Source, with_inputs
 from ..models.parameters import NAMES, BenchmarkParameters
 from ..models.plausibility import check_parameters
 from ..models.registry import BY_KEYWORD, BY_NAME, SPECS, ModelChoice, by_keyword, model_of, parse_model
@@ -320,10 +322,15 @@ class Scenario:
         benchmark name's in the set the model takes (for ``rider-lean``, without the upper body)."""
         if key in NAMES and _split_member(self.model) is not None:
             return float(getattr(self.inputs.lean(forearms_held=self._held()).bicycle, key))
+        if self.model.members and key in member_inputs(self.model):
+            return float(self.build().values()[key])
         return get_path(self.inputs, key)
 
     def file_unit(self, key):
-        """The unit a bare value of ``key`` is read in (the file's unit there), or None for SI."""
+        """The unit a bare value of ``key`` is read in (the file's unit there), or None for SI (a member's
+        input, a parameter of the model's code, is read in its code's SI unit)."""
+        if self.model.members and key in member_inputs(self.model):
+            return None
         return file_unit(self.inputs, key)
 
     @property
@@ -394,12 +401,32 @@ class Scenario:
     def build(self, changes=None):
         """:class:`Built` of the scenario with ``changes`` (``{key: value}``, keys as in
         :mod:`bikemass.scenario.inputs`; cached by their values)."""
-        changes = _checked_changes(changes)
+        changes, own = self._own_changes(_checked_changes(changes))
         key = split_changes(changes)
-        key = (key[0], key[1], key[2], _hashable(key[3]))
-        return _lru(self.inputs._cache("built"), key, lambda: self._build(changes))
+        key = (key[0], key[1], key[2], _hashable(key[3]), own)
+        return _lru(self.inputs._cache("built"), key, lambda: self._build(changes, dict(own)))
 
-    def _build(self, changes):
+    def _own_changes(self, changes):
+        """``(changes, own)``: ``changes`` without those of the model's member inputs (its code's own parameters,
+        :func:`~bikemass.models.family.member_inputs`), and those as sorted ``(name, SI value)`` pairs; a
+        value with a unit is converted to the code's unit, a bare number is taken in it.  A parameter of the
+        model's code that is no input is refused in one line naming the inputs."""
+        inputs = member_inputs(self.model) if self.model.members else {}
+        code = set(parameter_names(self.model)) - set(NAMES) if self.model.members else set()
+        if not any(key in code for key in changes):
+            return changes, ()
+        rest, own = {}, []
+        for key, value in changes.items():
+            if key in inputs:
+                own.append((key, _in_unit(value, inputs[key][1], self.origin, key)))
+            elif key in code:
+                raise InputError(self.origin, key, f"one of the {self.model.name} model's inputs ("
+                                 f"{', '.join(inputs) or 'none'}): {key} follows from the member's own data")
+            else:
+                rest[key] = value
+        return rest, tuple(sorted(own))
+
+    def _build(self, changes, own=None):
         bike, rider, params, stiffness = split_changes(changes)
         choice = self.stiffness if stiffness is None else stiffness
         self._refuse_stiffness(choice)
@@ -415,6 +442,10 @@ class Scenario:
                 typed[spec.name] = self.inputs.compliances(choice, bike)
             else:
                 typed[spec.name] = self._option(spec)
+            inputs = spec.hook("INPUTS") or {}
+            mine = {k: v for k, v in (own or {}).items() if k in inputs}
+            if mine:                             # the member's own parameters changed by name (its checks run)
+                typed[spec.name] = with_inputs(typed[spec.name], mine, inputs, self.origin)
         hands = None
         for spec in self.model.specs:            # a member that acts through the rider's hands checks them
             check_hands = spec.hook("check_hands")
@@ -542,6 +573,20 @@ def _frozen_value(key, value):
     if isinstance(value, Mapping) or value is None:
         raise wrong_type(key, value, "a number (SI), a string with its unit, or a list of them")
     return value
+
+
+def _in_unit(value, unit, source, key):
+    """``value`` (a number in ``unit``, a Quantity or ``"<number> <unit>"``) of the dimension of ``unit`` as a
+    float in ``unit``; InputError naming ``source`` and ``key`` otherwise."""
+    dimension = dimension_of(unit)
+    try:
+        number = convert(value, dimension, unit, bare_unit=unit)
+    except UnitError:
+        raise InputError(source, key, f"a number in {unit} (the model's code's unit) or '<number> <unit>' in "
+                                      f"another unit of {dimension}, got {short(value)}") from None
+    if not np.isfinite(number):
+        raise InputError(source, key, f"a finite number ({unit}), got {short(value)}")
+    return number
 
 
 def _hashable(choice):

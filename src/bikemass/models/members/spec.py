@@ -22,6 +22,12 @@ A member is one package under ``bikemass/models/members/<name>/``:
       :class:`~bikemass.core.config.Node`, written as plain data.
   ``forearms_held(typed)``
       Whether the rider's forearms move with the front frame (the seated rider is posed again).
+  ``INPUTS``
+      ``{name: dotted path}``: the generated code's parameters that are inputs of a scenario (changed by
+      ``Scenario.build({name: value})``, and so swept, drawn, differentiated through the builder and
+      optimised), each the path of the field of the typed value that holds it (``"front.cornering_coefficient"``
+      for ``CaF``); the typed value checks a changed one as it checks its own (:func:`with_inputs`).
+      Default none.
   ``PARAMETERS`` and ``transform(values, code, E, A, B)``
       Only for a member without a derivation (``derived=False``): the parameters it adds
       ((name, unit, description)) and how it changes the descriptor form ``E x' = sum_k v**k A[k] x + B u``
@@ -33,9 +39,12 @@ A member is one package under ``bikemass/models/members/<name>/``:
 The members are registered, in their canonical order, in :data:`bikemass.models.members.PACKAGES`.
 """
 
+import dataclasses
 import importlib
 from dataclasses import dataclass
 from enum import Enum
+
+from ...core.errors import InputError
 
 
 class Source(str, Enum):
@@ -105,3 +114,24 @@ class Member:
         """Its derivation's :class:`~bikemass.models.derive.bicycle.Member` class (imports sympy)."""
         module = importlib.import_module(f"{self.package}.derivation")
         return module.DERIVATION
+
+
+def with_inputs(typed, changes, inputs, source="changes"):
+    """``typed`` (a member's frozen typed value) with each of ``changes`` (``{name: float}``, SI) put in the field
+    ``inputs[name]`` names (a dotted path through nested frozen dataclasses), the typed value's own checks
+    run on the result; :class:`~bikemass.core.errors.InputError` naming ``source`` and the change's name for
+    a value the member refuses or a field it does not have (a held compliance)."""
+    for name, value in changes.items():
+        try:
+            typed = _replaced(typed, inputs[name].split("."), value)
+        except InputError as exc:
+            raise InputError(source, name, exc.expected) from None
+    return typed
+
+
+def _replaced(obj, path, value):
+    if obj is None:
+        raise InputError("member", path[0], "a part the model has (this one is held: infinitely stiff)")
+    if len(path) == 1:
+        return dataclasses.replace(obj, **{path[0]: value})
+    return dataclasses.replace(obj, **{path[0]: _replaced(getattr(obj, path[0]), path[1:], value)})

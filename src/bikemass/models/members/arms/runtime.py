@@ -57,3 +57,7 @@ def check_hands(typed, gap):
 def forearms_held(typed):
     """Whether the rider's forearms move with the front frame (``forearms: handlebars``)."""
     return typed.forearms == "handlebars"
+
+
+INPUTS = {"k_arms": "stiffness", "c_arms": "damping"}
+"""The arms' stiffness (N m/rad) and damping (N m s/rad) as inputs of a scenario."""

@@ -38,3 +38,8 @@ def write_block(typed):
 def units():
     """Units of the ``flexible:`` block's plain values."""
     return {k: u for k, u in Compliance.units().items() if u}
+
+
+INPUTS = {"cs": "steer_damping", "kr": "frame.stiffness", "kf": "fork.stiffness"}
+"""The steering bearing's damping (N m s/rad) and the frame's and the fork's torsional stiffnesses (N m/rad)
+as inputs of a scenario (the axes, the modal inertias and the damping ratios follow the beam models)."""

@@ -31,3 +31,10 @@ def write_set(typed):
 def bicycleparameters_yaml(typed):
     """The split set as BicycleParameters' ``MooreRiderLean2012`` YAML text."""
     return moore_yaml(typed)
+
+
+INPUTS = {"mU": "upper.mass", "xU": "upper.x", "zU": "upper.z", "IUxx": "upper.Ixx", "IUyy": "upper.Iyy",
+          "IUzz": "upper.Izz", "IUxz": "upper.Ixz", "zhip": "upper.hip_z", "klean": "joint.stiffness",
+          "clean": "joint.damping"}
+"""The upper body's mass, mass centre, inertia and hip height and the lean joint's stiffness and damping as
+inputs of a scenario (the 26 benchmark names are the bicycle's without the upper body)."""

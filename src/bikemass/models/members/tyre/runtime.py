@@ -36,3 +36,10 @@ def write_block(typed):
 def units():
     """Units of the ``tyre:`` block's plain values."""
     return {"relaxation_length": "m"}
+
+
+INPUTS = {f"{code}{wheel[0].upper()}": f"{wheel}.{field}" for wheel in ("front", "rear")
+          for code, field in (("Ca", "cornering_coefficient"), ("Cg", "camber_coefficient"),
+                              ("sigma", "relaxation_length"), ("tp", "pneumatic_trail"), ("Cmg", "twisting_coefficient"))}
+"""Each tyre parameter of the generated code as an input of a scenario (``CaF`` the front tyre's cornering
+coefficient, 1/rad; ``sigmaR`` the rear's relaxation length, m; ...)."""

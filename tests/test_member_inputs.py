@@ -1,0 +1,58 @@
+"""A member's own parameters as inputs of a scenario (each member's ``INPUTS``): changed by name through
+``Scenario.build``, checked by the member's typed value, read back by ``Scenario.value``."""
+
+import importlib
+import math
+
+import numpy as np
+import pytest
+
+import bikemass as bm
+from bikemass.models.members import PACKAGES
+
+CASES = [("tyre", "benchmark", None, None), ("arms", "jamis", "relaxed", None),
+         ("rider-lean", "jamis", "relaxed", None), ("flexible", "jamis", "relaxed", "steel")]
+
+
+def inputs_of(model):
+    package = PACKAGES[[m.replace("_", "-") for m in PACKAGES].index(model)]
+    return importlib.import_module(f"bikemass.models.members.{package}.runtime").INPUTS
+
+
+@pytest.mark.parametrize("model, bike, rider, stiffness", CASES)
+def test_each_input_is_the_code_value_the_model_is_built_from(model, bike, rider, stiffness):
+    """Each input changed by 10 % (or set to 1 where it is 0) is that parameter of the model's code and
+    nothing else, and the model equals the base model evaluated at those values (the generated code
+    called with them: an independent route to the same matrices, to rounding)."""
+    scenario = bm.Scenario(bike, rider, stiffness, model=model)
+    base = scenario.build()
+    values = base.values()
+    for name in inputs_of(model):
+        x = 1.1 * values[name] if values[name] else 1.0
+        changed = scenario.build({name: x})
+        assert scenario.value(name) == pytest.approx(values[name], rel=1e-15)
+        got = changed.values()
+        assert got[name] == pytest.approx(x, rel=1e-15), name
+        others = [k for k in values if k != name and not (model == "flexible" and k.startswith("c"))]
+        assert all(got[k] == values[k] for k in others), name        # (a frame's damping follows its stiffness)
+        direct = base.with_values({**values, **{k: got[k] for k in got}})
+        np.testing.assert_allclose(changed.model.dynamic_coefficients, direct.dynamic_coefficients,
+                                   rtol=1e-13, atol=1e-9)
+
+
+def test_an_input_takes_a_unit_and_is_checked_by_its_member():
+    """A value with a unit is converted to the code's (0.2 1/deg is 11.459 1/rad); a value the member refuses
+    (a negative relaxation length, a negative mass), a value of the wrong dimension, and a parameter of the
+    code that follows from other data (the flexible frame's modal mass) are refused in one line each."""
+    tyre = bm.Scenario("benchmark", model="tyre")
+    assert tyre.build({"CaF": "0.2 1/deg"}).values()["CaF"] == pytest.approx(0.2 * 180 / math.pi, rel=1e-15)
+    assert tyre.build({"sigmaR": "200 mm"}).values()["sigmaR"] == pytest.approx(0.2, rel=1e-15)
+    for change, words in [({"sigmaF": -0.1}, "sigmaF: a positive number"),
+                          ({"CaF": "3 kg"}, "CaF: a number in 1/rad"),
+                          ({"CaF": float("nan")}, "CaF: a finite number")]:
+        with pytest.raises(bm.InputError, match=words):
+            tyre.build(change)
+    with pytest.raises(bm.InputError, match="mU: a positive number"):
+        bm.Scenario("jamis", "relaxed", model="rider-lean").build({"mU": -1.0})
+    with pytest.raises(bm.InputError, match="mtr: one of the flexible model's inputs"):
+        bm.Scenario("jamis", "relaxed", "steel", model="flexible").build({"mtr": 1.0})
