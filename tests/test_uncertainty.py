@@ -202,3 +202,34 @@ def test_a_members_own_parameter_spreads_by_both_methods(tmp_path, capsys):
     assert main(["uncertainty", "benchmark", "--model", "tyre", "--std", str(std), "--method", "montecarlo",
                  "--samples", "20", "--format", "json"]) == 0
     assert set(json.loads(capsys.readouterr().out)["inputs"]) == {"CaF", "c"}
+
+
+@pytest.mark.parametrize("bike, options, entry, words", [
+    ("benchmark", [], "lam: 0.2 m", "uncertainty.lam: a spread of an angle"),
+    ("benchmark", [], "w: 3 deg", "uncertainty.w: a spread of a length"),
+    ("benchmark", [], "mB: 0.2 m", "uncertainty.mB: a spread of a mass"),
+    ("jamis", [], "geometry.head_angle: 5 kg", "uncertainty.geometry.head_angle: a spread of an angle"),
+    ("jamis", ["--rider", "relaxed", "--model", "tyre"], "sigmaF: 5 deg", "uncertainty.sigmaF: a spread of a length"),
+    ("jamis", ["--rider", "relaxed", "--model", "tyre"], "CaF: 1.0 m", "uncertainty.CaF: a spread of an inverse angle"),
+])
+def test_a_std_files_spread_in_another_dimension_is_refused(tmp_path, capsys, bike, options, entry, words):
+    """A spread written in a unit of another dimension than its input's (a length for the steer-axis tilt) was
+    taken as its number alone (0.2 m as 0.2 rad); it is refused in one line naming the file, the key, the
+    input's dimension and the unit's."""
+    from bikemass.cli.main import main
+    std = tmp_path / "u.yaml"
+    std.write_text(f"uncertainty:\n  {entry}\n")
+    assert main(["uncertainty", bike, *options, "--std", str(std), "--quiet"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and str(std) in err[0] and words in err[0]
+
+
+def test_a_std_files_spread_in_another_unit_of_the_same_dimension_is_converted(tmp_path, capsys):
+    """``w: 3 mm`` is 0.003 m, ``lam: 0.5 deg`` 0.0087 rad: the spreads the JSON reports (SI)."""
+    from bikemass.cli.main import main
+    std = tmp_path / "u.yaml"
+    std.write_text("uncertainty:\n  w: 3 mm\n  lam: 0.5 deg\n")
+    assert main(["uncertainty", "benchmark", "--std", str(std), "--format", "json"]) == 0
+    inputs = json.loads(capsys.readouterr().out)["inputs"]
+    assert inputs["w"]["std"] == pytest.approx(0.003, rel=1e-12)
+    assert inputs["lam"]["std"] == pytest.approx(0.5 * np.pi / 180, rel=1e-12)

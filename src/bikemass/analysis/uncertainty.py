@@ -44,7 +44,7 @@ from ..core.real import finite_real
 from ..core.errors import InputError
 from ..core.keywords import renamed_keywords
 from ..core.limits import MAX_SPEEDS
-from ..core.units import UnitError, dimension_of, split_quantity, to_si
+from ..core.units import ARTICLES, UnitError, dimension_of, split_quantity, to_si
 from ..models.canonical import CanonicalMatrices
 from ..models.members.rider_lean.parameters import RiderLeanParameters
 from ..models.parameters import NAMES
@@ -141,9 +141,10 @@ class Spread:
         return rng.normal(0.0, self.std, n)
 
 
-def _spread_value(node):
+def _spread_value(node, dimension=None):
     """A std or half width in SI: a bare number is SI (m, kg, rad, ... as the input's value is,
-    :func:`~bikemass.scenario.inputs.get_path`), ``"0.1 mm"`` or ``"3 deg"`` is converted."""
+    :func:`~bikemass.scenario.inputs.get_path`), ``"0.1 mm"`` or ``"3 deg"`` is converted; a unit of another
+    dimension than the input's (``dimension``, where known) is refused naming both."""
     if isinstance(node.value, str):
         try:
             number, unit = split_quantity(node.value)
@@ -151,27 +152,33 @@ def _spread_value(node):
             node.fail(f"a spread: a number in SI or '<number> <unit>' ({exc})")
         if number < 0:
             node.fail(f"a spread >= 0, got {node.value!r}")
+        if unit and dimension is not None and dimension_of(unit) != dimension:
+            node.fail(f"a spread of {ARTICLES.get(dimension, 'a')} {dimension} (a number in SI or '<number> <unit>' "
+                      f"of {dimension}), got {node.value!r} ({ARTICLES.get(dimension_of(unit), 'a')} "
+                      f"{dimension_of(unit)})")
         return to_si(node.value, dimension_of(unit)) if unit else number
     return node.number("dimensionless", nonnegative=True)
 
 
-def read_spreads(node):
+def read_spreads(node, dimension=None):
     """``{key: Spread}`` from a config Node mapping ``key: std`` or ``key: {std: s}`` or
     ``key: {distribution: normal|uniform, std: s | half_width: h}``; each a number in SI or
-    ``"<number> <unit>"`` (``"0.1 mm"``, ``"3 deg"``)."""
+    ``"<number> <unit>"`` (``"0.1 mm"``, ``"3 deg"``).  ``dimension(key)``, where given, is the physical
+    dimension of input ``key`` (``None`` where unknown): a spread written in a unit of another is refused."""
     out = {}
     for key, item in node.items():
+        dim = dimension(str(key)) if dimension is not None else None
         if isinstance(item.value, dict):
             item.check_keys(optional=("distribution", "std", "half_width"))
             kind = item["distribution"].string(DISTRIBUTIONS) if item.has("distribution") else "normal"
             if item.has("half_width") == item.has("std"):
                 item.fail("exactly one of std or half_width")
-            std = (_spread_value(item["std"]) if item.has("std")
-                   else _spread_value(item["half_width"]) / np.sqrt(3.0))
+            std = (_spread_value(item["std"], dim) if item.has("std")
+                   else _spread_value(item["half_width"], dim) / np.sqrt(3.0))
             if kind == "normal" and item.has("half_width"):
                 item.fail("std for a normal distribution (half_width is for uniform)")
         else:
-            kind, std = "normal", _spread_value(item)
+            kind, std = "normal", _spread_value(item, dim)
         out[str(key)] = Spread(kind, float(std))
     return out
 

@@ -194,14 +194,16 @@ def _speed(v):
     return "none" if v is None else f"{v:.9f} m/s"
 
 
-def read_std_file(path):
-    """``{key: Spread}`` from the ``uncertainty:`` mapping of a YAML file."""
+def read_std_file(path, scenario=None):
+    """``{key: Spread}`` from the ``uncertainty:`` mapping of a YAML file; with ``scenario``, a spread in a
+    unit of another dimension than its input's (:meth:`~bikemass.scenario.scenario.Scenario.input_dimension`)
+    is refused."""
     # lazy: the library loads numpy; bikemass --help must not
     from ..analysis.uncertainty import read_spreads
     from ..core.config import load_yaml
     node = load_yaml(path)
     node.check_keys(required=("uncertainty",), optional=("name", "description", "source"))
-    return read_spreads(node["uncertainty"])
+    return read_spreads(node["uncertainty"], None if scenario is None else scenario.input_dimension)
 
 
 def run_uncertainty(args):
@@ -217,7 +219,7 @@ def run_uncertainty(args):
     # parameters share them); a parameter file: its parameters' standard deviations
     spreads = {k: Spread("normal", s) for k, s in (scenario.measurement_std or scenario.file_std).items()}
     if args.std:
-        spreads.update(read_std_file(args.std))
+        spreads.update(read_std_file(args.std, scenario))
     if not spreads:
         raise InputError(args.bike, "(uncertainties)", "standard deviations: a BicycleParameters file with "
                          "+/- values (<Name>Benchmark.txt or <Name>Measured.txt), a parameter file with an "

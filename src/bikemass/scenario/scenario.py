@@ -48,7 +48,7 @@ from ..models.family import build as build_member, dynamic_derivatives, generate
     member_inputs, parameter_names, values as member_values
 from ..models.linear import LinearModel
 from ..models.members.spec import Source, with_inputs
-from ..models.parameters import NAMES, BenchmarkParameters
+from ..models.parameters import NAMES, BenchmarkParameters, dimension
 from ..models.plausibility import check_parameters
 from ..models.registry import BY_KEYWORD, BY_NAME, SPECS, ModelChoice, by_keyword, model_of, parse_model
 from ..models import whipple
@@ -332,6 +332,20 @@ class Scenario:
         if self.model.members and key in member_inputs(self.model):
             return None
         return file_unit(self.inputs, key)
+
+    def input_dimension(self, key):
+        """The physical dimension (:mod:`bikemass.core.units`: ``"length"``, ``"angle"``, ...) of input ``key``:
+        a benchmark name's, a member input's (its code's unit), or that of the unit its file writes it in;
+        ``None`` where the file gives it as a bare number or the key is no input (nothing to check against)."""
+        if key in NAMES:
+            return dimension(key)
+        if self.model.members and key in member_inputs(self.model):
+            return dimension_of(member_inputs(self.model)[key][1])
+        try:
+            unit = self.file_unit(key)
+        except InputError:
+            return None
+        return dimension_of(unit) if unit else None
 
     @property
     def file_std(self):
