@@ -87,8 +87,10 @@ def test_bad_input_is_refused(meijaard):
         bm.steady_turn(meijaard, 5.0)
     with pytest.raises(InputError, match="exactly one"):
         bm.steady_turn(meijaard, 5.0, radius=10.0, steer=0.1)
-    with pytest.raises(InputError, match="wheelbase"):
-        bm.steady_turn(meijaard, 5.0, radius=0.5)
+    with pytest.raises(InputError, match="not 0"):
+        bm.steady_turn(meijaard, 5.0, radius=0.0)
+    with pytest.raises(InputError, match="a radius with a steady turn at 5 m/s"):    # tighter than any upright turn
+        bm.steady_turn(meijaard, 5.0, radius=0.3)
     with pytest.raises(InputError):
         bm.steady_turn(meijaard, 0.0, radius=10.0)
     with pytest.raises(InputError, match="nonzero"):
@@ -153,3 +155,23 @@ def test_a_parameter_file_with_a_frame_stiffness_block_is_refused_too(tmp_path, 
     assert main(["turn", str(written), "--speed", "5", "--radius", "20"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "steel.yaml" in err[0]
+
+
+def test_a_sharp_steer_finds_the_upright_turn_or_is_refused(meijaard):
+    """At 5 m/s and 0.8 rad of steer the lean that balances the turn is the upright one (0.72 rad, a right
+    turn for a right steer; the point mass on the kinematic circle leans atan(v^2 tan(d) cos(lam) / (g w))
+    = 1.16 rad, the same side): the linear model's lean as a start had found 1.88 rad, past lying flat, on
+    a circle turning left, and said nothing.  The radius of that turn gives the steer back (the same
+    equations from the other end); a steer with no upright turn (1.5 rad) is refused; the linear columns,
+    outside any angle the linear model describes on so tight a circle, are warned about."""
+    with pytest.warns(bm.BikemassWarning, match="linear model's lean and steer for this circle"):
+        sharp = bm.steady_turn(meijaard, 5.0, steer=0.8)
+    assert 0 < sharp.roll < math.pi / 2 and sharp.radius > 0 and sharp.yaw_rate > 0
+    point_mass = math.atan(25.0 * math.tan(0.8) * math.cos(meijaard.lam) / (meijaard.g * meijaard.w))
+    assert abs(sharp.roll - point_mass) < 0.5
+    with pytest.warns(bm.BikemassWarning):                  # a circle tighter than the wheelbase, as a real one can be
+        back = bm.steady_turn(meijaard, 5.0, radius=sharp.radius)
+    assert sharp.radius < meijaard.w
+    assert back.steer == pytest.approx(0.8, abs=1e-8) and back.roll == pytest.approx(sharp.roll, abs=1e-8)
+    with pytest.raises(InputError, match="steer: 1.5: a steer angle with a steady turn at 5 m/s"):
+        bm.steady_turn(meijaard, 5.0, steer=1.5)

@@ -191,6 +191,17 @@ def _linear(parameters, speed, steer):
     return roll, K[1, 0] * roll + K[1, 1] * steer
 
 
+def _roll_guess(parameters, speed, steer):
+    """A start for the lean of the steady turn at ``steer`` (rad) and ``speed``: the linear model's, or for a
+    turn too sharp for it (a lean of a radian or more) the point mass's on the kinematic circle,
+    ``atan(v^2 tan(steer) cos(lam) / (g w))``, which stays on the upright side."""
+    roll = _linear(parameters, speed, steer)[0]
+    if abs(roll) < 1.0:
+        return roll
+    p = parameters
+    return math.atan(speed * speed * math.tan(steer) * math.cos(p.lam) / (p.g * p.w))
+
+
 def _root(function, guess, what):
     # lazy: scipy's root finder only for a steady turn
     from scipy.optimize import root
@@ -258,15 +269,19 @@ def steady_turn(system: "BenchmarkParameters | Scenario | Built", speed: float, 
         if isinstance(steer, bool) or not isinstance(steer, numbers.Real) or not abs(steer) < math.pi / 2:
             raise InputError("steer", short(steer), "a steer angle in rad, below pi/2 in size")
         delta = float(steer)
-        guess = _linear(p, v, delta)[0]
         try:
-            roll = float(_root(lambda x: [roll_force(x[0], delta)], [guess], "no lean balances it")[0])
+            roll = float(_root(lambda x: [roll_force(x[0], delta)], [_roll_guess(p, v, delta)], "no lean balances it")[0])
         except ArithmeticError as exc:
             raise InputError("steer", short(steer), f"a steer angle with a steady turn at {v:g} m/s ({exc})") from None
+        yaw_rate, _ = _yaw_rate(bike, roll, delta, v)
+        if not abs(roll) < math.pi / 2 or (delta and yaw_rate * delta <= 0):
+            raise InputError("steer", short(steer), f"a steer angle with a steady turn at {v:g} m/s (the lean that "
+                             f"balances it, {roll:.3g} rad, is past lying flat or turns the bicycle against its "
+                             "steer: no upright turn)")
     else:
         if isinstance(radius, bool) or not isinstance(radius, numbers.Real) or not finite_real(radius) \
-                or abs(radius) <= p.w:
-            raise InputError("radius", short(radius), f"a radius in m, larger in size than the wheelbase {p.w:g} m")
+                or radius == 0:
+            raise InputError("radius", short(radius), "a radius in m, finite and not 0 (negative turns left)")
         R = float(radius)
         delta0 = math.atan(p.w / (R * math.cos(p.lam)))
 
@@ -275,13 +290,21 @@ def steady_turn(system: "BenchmarkParameters | Scenario | Built", speed: float, 
             return [roll_force(x[0], x[1]), (yaw_rate * R - v) / v]
 
         try:
-            roll, delta = (float(z) for z in _root(residual, [_linear(p, v, delta0)[0], delta0], "no steady turn"))
+            roll, delta = (float(z) for z in _root(residual, [_roll_guess(p, v, delta0), delta0], "no steady turn"))
         except ArithmeticError as exc:
             raise InputError("radius", short(radius), f"a radius with a steady turn at {v:g} m/s ({exc})") from None
+        if not (abs(roll) < math.pi / 2 and abs(delta) < math.pi / 2):
+            raise InputError("radius", short(radius), f"a radius with a steady turn at {v:g} m/s (the lean and "
+                             f"steer that balance it, {roll:.3g} rad and {delta:.3g} rad, are past lying flat or "
+                             "turning the bars round: no upright turn)")
     forces = bike.steady_forces(_state(roll, delta, v))
     yaw_rate, pitch = _yaw_rate(bike, roll, delta, v)
     linear_steer = p.w * yaw_rate / (v * math.cos(p.lam))          # the linear model's circle: same radius
     linear_roll, linear_torque = _linear(p, v, linear_steer)
+    if not (abs(linear_roll) < math.pi / 2 and abs(linear_steer) < math.pi / 2):
+        warnings.warn(f"steady turn at {v:g} m/s: the linear model's lean and steer for this circle ({linear_roll:.3g} "
+                      f"rad, {linear_steer:.3g} rad) are outside any angle it describes; its columns are no "
+                      "comparison here", BikemassWarning, stacklevel=3)
     return SteadyTurn(v, v / yaw_rate if yaw_rate else math.inf, roll, delta, pitch, -float(forces[2]), yaw_rate,
                       float(linear_roll), float(linear_steer), float(linear_torque))
 
