@@ -324,3 +324,32 @@ def test_the_optimal_handling_bicycle_at_4_m_s_beats_the_published_one(tmp_path,
     assert main(["handling", str(design), "--speeds", "4", "--tuning", "bmd2016", "--format", "json"]) == 0
     doc = json.loads(capsys.readouterr().out)
     assert doc["hqm_peak"][0] == pytest.approx(result.objective, rel=1e-9)
+
+
+def test_an_objective_the_model_has_nowhere_in_the_box_is_refused(tmp_path, capsys):
+    """Maximising the wobble speed of the Whipple bicycle (it has no wobble anywhere) reported "converged yes" at
+    the span's limit; it is refused in one line naming the spec, the key and what the metric needs."""
+    spec = tmp_path / "o.yaml"
+    spec.write_text("bike: benchmark\nvariables:\n  c: {min: 0.05, max: 0.12}\nmaximise: wobble-speed\n")
+    assert main(["optimise", str(spec), "--quiet"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and str(spec) in err[0] and "maximise: a metric that exists somewhere in the box" in err[0]
+    assert "flexible member" in err[0]
+
+
+def test_a_target_the_box_cannot_reach_is_not_converged(tmp_path):
+    """A weave speed of 5 km/h (1.39 m/s) lies below every trail of the box (the nearest, c = 0.05 m, gives 3.9 m/s
+    by a brentq of bm.stability's weave speed over c: none reaches it): not converged, and a note says so; a
+    target inside the box is reached and converged."""
+    def weave(c):
+        return bm.stability(bm.parameters("benchmark").replace(c=c)).weave_speeds[0]
+    assert min(weave(0.05), weave(0.12)) > 5 / 3.6
+    spec = tmp_path / "o.yaml"
+    spec.write_text("bike: benchmark\nvariables:\n  c: {min: 0.05, max: 0.12}\ntarget: {weave-speed: 5 km/h}\n")
+    result = bm.optimise(str(spec))
+    assert not result.converged and any("not reached in the box" in note for note in result.notes)
+    assert result.objective == pytest.approx(weave(0.05), rel=1e-6)
+    spec.write_text("bike: benchmark\nvariables:\n  c: {min: 0.05, max: 0.12}\ntarget: {weave-speed: 4.5}\n")
+    reached = bm.optimise(str(spec))
+    c = brentq(lambda c: weave(c) - 4.5, 0.05, 0.12, xtol=1e-14)
+    assert reached.converged and reached.variables["c"] == pytest.approx(c, rel=1e-6)

@@ -36,6 +36,8 @@ KINK_STEP = 1e-4
 """Step of the one-sided slopes, as a share of the variable's range."""
 SLSQP_TOLERANCE = {"target": 1e-16, "maximise": 1e-10, "minimise": 1e-10}
 """SLSQP's ``ftol`` on the scaled objective (a target's is the square of a relative miss)."""
+TARGET_TOLERANCE = 1e-6
+"""A target is reached where the metric is within this share of the target's size (1 where it is 0)."""
 MAX_ITERATIONS = 100
 ROUGH_SIMPLEX = 0.05
 """Size of Nelder-Mead's first simplex (:func:`_rough`), a share of the unit box."""
@@ -316,6 +318,10 @@ def _search(spec, problem, progress, start_time):
     if not screened:
         raise InputError(spec.source, "variables", "a box where some design can be built (none of the "
                          f"{len(points)} screened designs could)")
+    if target_metric.name in problem.undefined and target_metric.name not in problem.defined:
+        raise InputError(spec.source, spec.sense, f"a metric that exists somewhere in the box: {target_metric.name} "
+                         f"exists at none of the {len(screened)} designs screened (the "
+                         f"{problem.scenario.model.name} model; {target_metric.name}: {target_metric.description})")
     screened.sort()
     runs = []
     cons = ([{"type": "ineq", "fun": tracked(inequalities), "jac": inequality_jacobian}] if constraints else [])
@@ -369,12 +375,16 @@ def _search(spec, problem, progress, start_time):
     active = [v.key for v, u in zip(spec.variables, u_best) if u <= 1e-9 or u >= 1 - 1e-9]
     if active:
         notes.append("at a bound of the box: " + ", ".join(active))
+    missed = spec.sense == "target" and not abs(raw(u_best) - spec.target) <= TARGET_TOLERANCE * scale
+    if missed:
+        notes.append(f"the target {spec.target:g} is not reached in the box: the nearest design found gives "
+                     f"{raw(u_best):.6g} ({target_metric.unit})")
     metrics = {name: problem.value(metric(name), x_best) for name in spec.metrics}
     gradient = _gradient_description(spec, problem.design(x_best).built.choice.members)
     return OptimiseResult(
         variables={v.key: float(x) for v, x in zip(spec.variables, x_best)},
         objective=float(problem.value(target_metric, x_best)), metric=spec.objective, sense=spec.sense,
-        target=spec.target, metrics=metrics, converged=bool(success and not infeasible and not kinks),
+        target=spec.target, metrics=metrics, converged=bool(success and not infeasible and not kinks and not missed),
         evaluations=problem.builds, history=tuple(history), message=message, notes=tuple(notes),
         gradient=gradient, variable_units={v.key: _unit_of(v) for v in spec.variables},
         metric_units={name: metric(name).unit for name in spec.metrics},

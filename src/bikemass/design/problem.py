@@ -84,6 +84,7 @@ class Problem:
         self._jacobians = {}
         self.builds = 0
         self.undefined = set()
+        self.defined = set()
 
     # -- designs ---------------------------------------------------------------------------
     def changes(self, x):
@@ -120,6 +121,7 @@ class Problem:
         if value is None:
             self.undefined.add(metric.name)
             return UNDEFINED.get(metric.name, self.max_speed)
+        self.defined.add(metric.name)
         return float(value)
 
     def gradient(self, metric, x):
