@@ -468,7 +468,8 @@ class Scenario:
                 # a parameter file's own block over its own rider (params wrote both): nothing to check
                 own = self.member_inputs.get(spec.name) is None and spec.name in self.inputs.file_members
                 if not (hands is _IN_THE_SET and own):
-                    check_hands(typed[spec.name], None if hands is _IN_THE_SET else hands[0])
+                    check_hands(typed[spec.name], None if hands is _IN_THE_SET else hands[0],
+                                rider_in_set=hands is _IN_THE_SET)
         return Built(p, None, build_member(self.model, p, members=typed), self.model, FrozenMap(typed))
 
     def _hands(self, bike, rider):

@@ -22,6 +22,10 @@ A member is one package under ``bikemass/models/members/<name>/``:
       :class:`~bikemass.core.config.Node`, written as plain data.
   ``forearms_held(typed)``
       Whether the rider's forearms move with the front frame (the seated rider is posed again).
+  ``check_hands(typed, gap, rider_in_set=False)``
+      Warnings for a member that acts through the rider's hands: ``gap`` is how far (m) the seated
+      rider's hand furthest from a grip is (``inf`` where not known), ``None`` without a seated rider;
+      ``rider_in_set`` whether the parameter set holds the rider (the benchmark's).
   ``INPUTS``
       ``{name: dotted path}``: the generated code's parameters that are inputs of a scenario (changed by
       ``Scenario.build({name: value})``, and so swept, drawn, differentiated through the builder and

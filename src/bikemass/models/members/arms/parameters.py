@@ -60,6 +60,14 @@ class Arms:
             if isinstance(x, bool) or not isinstance(x, (int, float)) or not math.isfinite(x) or x < 0:
                 raise InputError("arms", f.name, f"a finite number >= 0 ({f.metadata['unit']}), got {x!r}")
             object.__setattr__(self, f.name, float(x))
+        if self.stiffness > MAX_STIFFNESS:
+            warn(f"arms: stiffness = {self.stiffness:.6g} N m/rad is above {MAX_STIFFNESS:g} N m/rad (a degree of steer "
+                 f"against it takes {MAX_STIFFNESS * math.pi / 180:.0f} N m, more than a rider's arms give; the "
+                 "steer nearly locked to the rider puts roots far apart, and the critical speeds may be lost); "
+                 "computed as given")
+        if self.damping > MAX_DAMPING:
+            warn(f"arms: damping = {self.damping:.6g} N m s/rad is above {MAX_DAMPING:g} N m s/rad (a steer rate of "
+                 f"1 rad/s against it takes {MAX_DAMPING:.0f} N m, more than a rider's arms give); computed as given")
 
     def values(self):
         """``{name: float}`` of the generated code's parameters (``k_arms``, ``c_arms``)."""
@@ -75,6 +83,12 @@ class Arms:
         """``{field: SI unit}``."""
         return {f.name: f.metadata["unit"] for f in fields(Arms) if "unit" in f.metadata}
 
+
+MAX_STIFFNESS = 1e4
+"""Arm stiffnesses (N m/rad) above this are warned about: 175 N m for one degree of steer, past a rider's
+strength (no published value could be read: docs/models.md, The rider's arms)."""
+MAX_DAMPING = 1e3
+"""Arm damping (N m s/rad) above this is warned about: 1000 N m at a steer rate of 1 rad/s."""
 
 NO_ARMS = Arms()
 """Zero stiffness and damping: the default, for want of a published measurement (module docstring)."""

@@ -38,15 +38,20 @@ hands of a pose that holds the bars on the grips, 0 mm; a no-hands pose leaves t
 to 0.76 m (the Cargo) away)."""
 
 
-def check_hands(typed, gap):
+def check_hands(typed, gap, rider_in_set=False):
     """Warn where the arms act through no hands on the bars: ``forearms: handlebars`` with no rider
-    seated (``gap`` ``None``: nothing to move), or a stiffness or damping while the seated rider's hand
-    furthest from a grip is ``gap`` m away (a no-hands pose)."""
+    seated (``gap`` ``None``: nothing to move), a stiffness or damping with no rider at all (``gap``
+    ``None`` and no rider in the parameter set either: no arms to hold the bars), or a stiffness or
+    damping while the seated rider's hand furthest from a grip is ``gap`` m away (a no-hands pose)."""
     if gap is None:
         if typed.forearms == "handlebars":
             warnings.warn("arms: forearms: handlebars with no rider seated: there are no forearms to move (the "
                           "bicycle's parameter set is taken as it is; give a rider, --rider POSE)", BikemassWarning,
                           stacklevel=4)
+        if not rider_in_set and (typed.stiffness or typed.damping):
+            warnings.warn("arms: a stiffness or damping between the bars and the rider, but no rider rides (neither "
+                          "seated nor in the parameter set): it acts between the bars and the rear frame; applied as "
+                          "given (give a rider, --rider POSE)", BikemassWarning, stacklevel=4)
         return
     if (typed.stiffness or typed.damping) and gap > HANDS_ON:
         where = "not known to be on a grip" if gap == float("inf") else f"{gap * 1000:.0f} mm from the nearest grip"
