@@ -222,3 +222,13 @@ def test_resource_warnings_are_not_the_commands(monkeypatch, capsys):
     captured = capsys.readouterr()
     assert json.loads(captured.out)["warnings"] == ["a warning about the input"]
     assert "TemporaryDirectory" not in captured.err and "a warning about the input" in captured.err
+
+
+@pytest.mark.parametrize("step", ["1e-300", "nan", "0", "0.5"])
+def test_a_step_that_leaves_only_rounding_is_refused(capsys, step):
+    """``--step 1e-300`` gave derivatives of 0 (x + h rounds to x) and ``--step nan`` without --inputs passed
+    unseen: a relative step outside 1e-10..0.1 is refused in one line, with or without --inputs."""
+    assert main(["sensitivity", "jamis", "--inputs", "geometry.trail", "--step", step]) == 2
+    assert main(["sensitivity", "benchmark", "--step", step]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 2 and all("--step" in line and "1e-10 to 0.1" in line for line in err)

@@ -431,6 +431,8 @@ def sensitivity_figure(result, title="", size=None):
 
 GEOMETRY_STEP = 1e-4
 """Default relative step of the geometry -> parameters central difference."""
+MIN_STEP = 1e-10
+"""Smallest relative step taken: a smaller one leaves a difference of rounding errors (0 at 1e-17)."""
 
 
 def geometry_sensitivity(scenario: Scenario, keys: "str | Sequence[str]", result: Sensitivity | None = None,
@@ -456,7 +458,7 @@ def geometry_sensitivity(scenario: Scenario, keys: "str | Sequence[str]", result
     result : Sensitivity, optional
         The scenario's :func:`sensitivity` if already computed.
     step : float
-        Relative step of the central differences, in (0, 0.1].
+        Relative step of the central differences, from 1e-10 to 0.1.
 
     Returns
     -------
@@ -488,8 +490,9 @@ def geometry_sensitivity(scenario: Scenario, keys: "str | Sequence[str]", result
         raise wrong_type("scenario", scenario, "a bikemass.Scenario")
     if isinstance(keys, str):
         keys = [keys]
-    if isinstance(step, bool) or not isinstance(step, (int, float)) or not 0 < step <= 0.1:
-        raise InputError("step", short(step), "a relative step between 0 and 0.1")
+    if isinstance(step, bool) or not isinstance(step, (int, float)) or not MIN_STEP <= step <= 0.1:
+        raise InputError("step", short(step), f"a relative step from {MIN_STEP:g} to 0.1 (below it the difference "
+                                              "is rounding: x + h rounds to x)")
     built = scenario.build()
     member = bool(built.choice.members)
     result = result or sensitivity(built)

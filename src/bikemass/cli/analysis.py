@@ -35,7 +35,7 @@ def register(sub):
                            "or, after 'rider.', the pose YAML (rider.chain.torso_lean); chained through "
                            "the model with a central difference for the geometry -> parameters step only")
     sens.add_argument("--step", type=float, default=1e-4, metavar="REL",
-                      help="relative step of that central difference (default 1e-4)")
+                      help="relative step of that central difference, 1e-10 to 0.1 (default 1e-4)")
     sens.set_defaults(run=run_sensitivity)
 
 
@@ -118,14 +118,15 @@ def _title(args):
 
 def run_sensitivity(args):
     # lazy: the library loads numpy; bikemass --help must not
-    from ..analysis.sensitivity import geometry_sensitivity, sensitivity, sensitivity_figure
+    from ..analysis.sensitivity import MIN_STEP, geometry_sensitivity, sensitivity, sensitivity_figure
 
     options = _options(args)
     keys = [k.strip() for k in (args.inputs or "").split(",") if k.strip()]
     if args.inputs is not None and not keys:
         raise InputError("--inputs", repr(args.inputs), "a comma-separated list of at least one dotted path")
-    if keys and not 0 < args.step < 0.1:
-        raise InputError("--step", args.step, "a relative step between 0 and 0.1")
+    if not MIN_STEP <= args.step <= 0.1:             # given without --inputs too: no option is ignored
+        raise InputError("--step", args.step, f"a relative step from {MIN_STEP:g} to 0.1 (below it the difference is "
+                         "rounding)")
     scenario = dialect.scenario(args, origin="--inputs")
     result = sensitivity(scenario, max_speed=args.max_speed)
     geometry = geometry_sensitivity(scenario, keys, result, args.step) if keys else {}
