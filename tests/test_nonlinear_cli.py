@@ -97,3 +97,20 @@ def test_turn_bad_input_is_one_line(capsys):
                  ["--hands-free", "--steers", "a:b"], ["--speed", 5, "--radius", 10, "--plot", "x.png"]):
         code, _, err = run(capsys, "turn", "benchmark", *argv)
         assert code == 2 and err.count("\n") == 1 and err.startswith("bikemass: error:"), argv
+
+
+def test_an_option_the_command_would_ignore_is_refused(capsys, tmp_path):
+    """``turn --hands-free --speed 5`` ignored the speed (each circle's speed is the family's result), and
+    ``uncertainty --samples 5`` / ``--seed`` with the linear method drew nothing: each is refused in one line
+    naming the option and what it goes with."""
+    assert main(["turn", "benchmark", "--hands-free", "--speed", "5"]) == 2
+    assert main(["uncertainty", "benchmark", "--samples", "5"]) == 2
+    assert main(["uncertainty", "benchmark", "--seed", "3"]) == 2
+    std = tmp_path / "u.yaml"
+    std.write_text("uncertainty:\n  w: 0.01\n")
+    assert main(["uncertainty", "benchmark", "--std", str(std), "--method", "montecarlo", "--samples", "20",
+                 "--seed", "3", "--quiet"]) == 0
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 3
+    assert err[0].startswith("bikemass: error: --speed: 5") and "--hands-free" in err[0]
+    assert "--samples: 5" in err[1] and "--method montecarlo" in err[1] and "--seed: 3" in err[2]

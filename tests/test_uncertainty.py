@@ -233,3 +233,16 @@ def test_a_std_files_spread_in_another_unit_of_the_same_dimension_is_converted(t
     inputs = json.loads(capsys.readouterr().out)["inputs"]
     assert inputs["w"]["std"] == pytest.approx(0.003, rel=1e-12)
     assert inputs["lam"]["std"] == pytest.approx(0.5 * np.pi / 180, rel=1e-12)
+
+
+def test_a_grid_over_the_limit_names_a_way_out_only_where_the_command_has_one(tmp_path, capsys):
+    """``uncertainty --speeds 0:1000:0.001`` said "(raise with --max-speeds)", an option it does not have; it
+    names no such option now, and ``stability``, which has it, still does."""
+    from bikemass.cli.main import main
+    std = tmp_path / "u.yaml"
+    std.write_text("uncertainty:\n  w: 0.01\n")
+    assert main(["uncertainty", "benchmark", "--std", str(std), "--speeds", "0:1000:0.001"]) == 2
+    assert main(["stability", "benchmark", "--speeds", "0:1000:0.001"]) == 2
+    unc, stab = capsys.readouterr().err.strip().splitlines()
+    assert "at most" in unc and "--max-speeds" not in unc
+    assert "raise with --max-speeds" in stab

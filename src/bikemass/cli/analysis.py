@@ -53,8 +53,10 @@ def register(sub):
                           "{distribution: uniform, half_width: h} (each in SI: m, kg, rad; or with a unit: '0.1 mm', '3 deg')")
     unc.add_argument("--method", choices=("linear", "montecarlo"), default="linear",
                      help="linear (default) or montecarlo")
-    unc.add_argument("--samples", type=whole("a number of samples"), default=1000, metavar="N", help="Monte Carlo samples (default 1000)")
-    unc.add_argument("--seed", type=whole("a whole-number seed"), default=0, help="random seed of the Monte Carlo draws (default 0)")
+    unc.add_argument("--samples", type=whole("a number of samples"), default=None, metavar="N",
+                     help="Monte Carlo samples (default 1000; with --method montecarlo)")
+    unc.add_argument("--seed", type=whole("a whole-number seed"), default=None,
+                     help="random seed of the Monte Carlo draws (default 0; with --method montecarlo)")
     unc.add_argument("--speeds", metavar="START:STOP:STEP", default="0:10:0.1",
                      help="speeds of the eigenvalue bands in m/s (default 0:10:0.1)")
     unc.set_defaults(run=run_uncertainty)
@@ -212,8 +214,13 @@ def run_uncertainty(args):
     from ..analysis.uncertainty import Spread, propagate, uncertainty_figure
 
     options = _options(args)
-    if not 2 <= args.samples <= 10 ** 6:
-        raise InputError("--samples", args.samples, "a number of samples from 2 to 1000000")
+    for option, value in (("--samples", args.samples), ("--seed", args.seed)):
+        if value is not None and args.method != "montecarlo":     # an option given is never ignored silently
+            raise InputError(option, value, "--method montecarlo with it (the linear method draws no samples)")
+    samples = 1000 if args.samples is None else args.samples
+    seed = 0 if args.seed is None else args.seed
+    if not 2 <= samples <= 10 ** 6:
+        raise InputError("--samples", samples, "a number of samples from 2 to 1000000")
     speeds = dialect.parse_speeds(args.speeds)
     scenario = dialect.scenario(args, origin=args.std or args.bike)
     # a bicycle computed from measurements: its measurements are the independent inputs (the 26
@@ -225,7 +232,7 @@ def run_uncertainty(args):
         raise InputError(args.bike, "(uncertainties)", "standard deviations: a BicycleParameters file with "
                          "+/- values (<Name>Benchmark.txt or <Name>Measured.txt), a parameter file with an "
                          "uncertainty: block, or --std FILE")
-    result = propagate(scenario, spreads, args.method, args.samples, args.seed, speeds)
+    result = propagate(scenario, spreads, args.method, samples, seed, speeds)
 
     def render(fmt):
         if fmt == "table":

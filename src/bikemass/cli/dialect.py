@@ -276,9 +276,10 @@ def add_speeds(p):
                    help=f"speed grid in m/s (default {DEFAULT_SPEEDS}, the thesis's)")
 
 
-def parse_speeds(text, max_speeds=None):
+def parse_speeds(text, max_speeds=None, raise_option=None):
     """``"start:stop:step"`` -> speed grid (m/s); InputError if malformed, out of the limits or over
-    ``max_speeds`` (:func:`bikemass.analysis.engine.speeds.speed_range`)."""
+    ``max_speeds`` (:func:`bikemass.analysis.engine.speeds.speed_range`), naming ``raise_option`` (the
+    command's ``--max-speeds``) where the command has one."""
     # lazy: the library loads numpy; bikemass --help must not
     from ..analysis.engine.speeds import speed_range
 
@@ -286,7 +287,7 @@ def parse_speeds(text, max_speeds=None):
         start, stop, step = (float(x) for x in text.split(":"))
     except ValueError:
         start = stop = step = None                          # speed_range names what is expected
-    return speed_range(start, stop, step, max_speeds or MAX_SPEEDS, "--speeds", text, "--max-speeds")
+    return speed_range(start, stop, step, max_speeds or MAX_SPEEDS, "--speeds", text, raise_option)
 
 
 def check_output(args):

@@ -68,6 +68,9 @@ def run_turn(args):
                          "bicycle's (--stiffness infinite, and no frame_stiffness block in the file)")
     parameters = built.parameters
     if args.hands_free:
+        if args.speed is not None:                 # the family's speeds are what it finds: nothing to ignore silently
+            raise InputError("--speed", args.speed, "no speed with --hands-free (each circle's speed is its result; "
+                             "--speed goes with --radius or --steer)")
         result = hands_free_turns(parameters, _steers(args.steers))
         headers = ["steer (rad)", "speed (m/s)", "roll (rad)", "radius (m)", "pitch (rad)"]
         rows = [list(r) for r in zip(result.steer.tolist(), result.speed.tolist(), result.roll.tolist(),

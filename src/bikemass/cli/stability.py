@@ -111,7 +111,7 @@ def run_eig(args):
     from ..analysis.results import eigenvalues
 
     options = dialect.figure_checked(args)
-    speeds = dialect.parse_speeds(args.speeds, args.max_speeds)
+    speeds = dialect.parse_speeds(args.speeds, args.max_speeds, "--max-speeds")
     built = _built(args)
     modes = eigenvalues(built, speeds=speeds, max_speeds=args.max_speeds, control=args.control)
 
@@ -136,7 +136,7 @@ def run_stability(args):
     options = dialect.figure_checked(args)
     if not args.marginal > 0:
         raise InputError("--marginal", args.marginal, "a positive modulus in rad/s")
-    speeds = dialect.parse_speeds(args.speeds, args.max_speeds)
+    speeds = dialect.parse_speeds(args.speeds, args.max_speeds, "--max-speeds")
     result = stability(_built(args), speeds=speeds, marginal=args.marginal, max_speeds=args.max_speeds,
                        control=args.control)
 
@@ -169,7 +169,7 @@ def run_compare(args):
     from ..analysis.results import stability
 
     options = dialect.figure_checked(args)
-    speeds = dialect.parse_speeds(args.speeds, args.max_speeds)
+    speeds = dialect.parse_speeds(args.speeds, args.max_speeds, "--max-speeds")
     riders = [r.strip() for r in args.riders.split(",") if r.strip()]
     stiffnesses = [None] if args.stiffnesses is None else [k.strip() for k in args.stiffnesses.split(",") if k.strip()]
     for option, items in (("--riders", riders), ("--stiffnesses", stiffnesses)):

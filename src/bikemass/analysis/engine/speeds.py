@@ -54,7 +54,7 @@ def speed_range(start, stop, step, max_speeds=MAX_SPEEDS, source="speeds", given
         Most speeds on the grid.
     source, given, limit_name : str
         What an InputError names: the argument (``speeds``, ``--speeds``), the value as given
-        (default ``start:stop:step``) and how to raise ``max_speeds``.
+        (default ``start:stop:step``) and how to raise ``max_speeds`` (``None``: it cannot be raised there).
 
     Returns
     -------
@@ -78,7 +78,8 @@ def speed_range(start, stop, step, max_speeds=MAX_SPEEDS, source="speeds", given
                          f"{MIN_SPEED_STEP:g} <= STEP <= STOP - START")
     count = speed_count(start, stop, step)
     if count > limit:
-        raise InputError(source, given, f"at most {limit} speeds, got {count} (raise with {limit_name})")
+        raise InputError(source, given, f"at most {limit} speeds, got {count}"
+                         + (f" (raise with {limit_name})" if limit_name else ""))
     return speed_grid(start, stop, step)
 
 
