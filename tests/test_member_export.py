@@ -145,3 +145,28 @@ def test_contract_tyre_moments_read_back(capsys, tmp_path):
     doc = yaml.safe_load(out.read_text())["tyre"]
     assert doc["front"]["pneumatic_trail"] == "0.0166 m" and doc["rear"]["pneumatic_trail"] == "0.012 m"
     assert "twisting_coefficient" in doc["front"] and "twisting_coefficient" not in doc["rear"]
+
+
+def test_a_flexible_blocks_bad_field_names_the_file_and_key_and_an_absurd_stiffness_is_warned(capsys, tmp_path):
+    """A ``flexible:`` block's modal mass set to 0 beside a nonzero modal momentum said "compliance frame twist:
+    modal_momentum: ..." with no file or key: it names both now. A stiffness of 1e-3 N m/rad was computed without
+    a word, though the same stiffness as a frame S is warned about: it is warned about too (an error under
+    --strict)."""
+    path = tmp_path / "flex.yaml"
+    assert main(["params", "jamis", "--rider", "relaxed", "--model", "flexible", "--stiffness", "steel",
+                 "--format", "yaml", "-o", str(path)]) == 0
+    document = yaml.safe_load(path.read_text())
+    capsys.readouterr()
+    document["flexible"]["frame"]["modal_mass"] = 0
+    bad = tmp_path / "bad.yaml"
+    bad.write_text(yaml.safe_dump(document))
+    assert main(["stability", str(bad)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and f"{bad}: flexible.frame.modal_momentum: a nonzero lateral momentum" in err[0]
+    document = yaml.safe_load(path.read_text())
+    document["flexible"]["frame"]["stiffness"] = 1e-3
+    soft = tmp_path / "soft.yaml"
+    soft.write_text(yaml.safe_dump(document))
+    assert main(["stability", str(soft), "--strict"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and f"{soft}: flexible.frame.stiffness: 0.001 N m/rad is outside 10..1e+10" in err[0]

@@ -10,6 +10,7 @@ from dataclasses import dataclass, field, fields, replace
 import numpy as np
 
 from ..core.errors import InputError
+from .plausibility import STIFFNESS_RANGE, warn
 
 DAMPING_RATIO = 0.0
 """Default structural damping ratio of a frame or fork compliance: none, since no published measurement
@@ -64,6 +65,10 @@ class Compliance:
                              f"a number in [0, 1) (an underdamped structure), got {self.damping_ratio}")
         if self.modal_mass < 0:
             raise InputError(f"compliance {self.name}", "modal_mass", f"a number >= 0 (kg m^2/rad^2), got {self.modal_mass}")
+        L, (Jx, Jz), m = self.modal_momentum, self.modal_moment, self.modal_mass
+        if (L == 0) != (m == 0) or (L == 0 and (Jx != 0 or Jz != 0)):
+            raise InputError(f"compliance {self.name}", "modal_momentum", "a nonzero lateral momentum and modal "
+                             "mass together, or none of L, J and m (a field is carried by one particle)")
 
     @classmethod
     def units(cls):
@@ -117,9 +122,14 @@ def compliance_from_node(node):
     if isinstance(stiffness.value, dict):
         values["stiffness"] = measured_stiffness(stiffness, values["point"], values["direction"])
     try:
-        return Compliance(**values)
+        found = Compliance(**values)
     except InputError as exc:                              # the file and the key, not the axis's name alone
         node.fail(exc.expected, None if exc.key == "(values)" else exc.key)
+    if not STIFFNESS_RANGE[0] <= found.stiffness <= STIFFNESS_RANGE[1]:
+        warn(f"{node.source}: {node.key + '.' if node.key else ''}stiffness: {found.stiffness:.6g} N m/rad is outside "
+             f"{STIFFNESS_RANGE[0]:g}..{STIFFNESS_RANGE[1]:g} N m/rad (measured frames and forks: 1e3..1e5); computed "
+             "as given")
+    return found
 
 
 def _distance(at, point, direction):

@@ -74,10 +74,7 @@ class Compliances:
             out[f"x{key}"], out[f"z{key}"] = c.point
             out[f"n{key}x"], out[f"n{key}z"] = c.direction
             out[f"k{key}"] = c.stiffness
-            L, (Jx, Jz), m = c.modal_momentum, c.modal_moment, c.modal_mass
-            if (L == 0) != (m == 0) or (L == 0 and (Jx != 0 or Jz != 0)):
-                raise InputError(f"compliance {c.name}", "modal_momentum", "a nonzero lateral momentum and modal "
-                                 "mass together, or none of L, J and m (a field is carried by one particle)")
+            L, (Jx, Jz), m = c.modal_momentum, c.modal_moment, c.modal_mass     # (checked by the Compliance)
             out[f"mt{key}"], out[f"xt{key}"], out[f"zt{key}"], out[f"dt{key}"] = (
                 (L ** 2 / m, Jz / L, -Jx / L, m / L) if L != 0 else (0.0, 0.0, 0.0, 0.0))
         return out
