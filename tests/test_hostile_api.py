@@ -229,3 +229,19 @@ def test_a_location_changed_from_python_as_a_list_a_tuple_or_an_array_is_the_sam
     head = next(part for part in bm.load_rider("relaxed").parts if part.name == "head")
     for p in moved:
         assert p.xB - base.xB == pytest.approx(head.mass * 0.008 / base.mB, abs=1e-9)
+
+
+def test_a_crank_length_no_bicycle_has_is_warned(tmp_path):
+    """``crank_length: 170`` (a bare number: 170 m, meant as mm) ran through every command without a word: a crank
+    length outside 0.05..0.3 m is warned about, naming the file and the key; the Jamis's 170 mm says nothing."""
+    from bikemass.core.errors import BikemassWarning
+    from bikemass.core.paths import frames_dir
+    text = (frames_dir() / "jamis.yaml").read_text()
+    assert "  crank_length: 170 mm" in text
+    bad = tmp_path / "jamis.yaml"
+    bad.write_text(text.replace("  crank_length: 170 mm", "  crank_length: 170"))
+    with pytest.warns(BikemassWarning, match=r"jamis.yaml: contacts.crank_length: 170 m is outside 0.05..0.3 m"):
+        bm.load_bicycle(str(bad))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", BikemassWarning)
+        bm.load_bicycle(str(frames_dir() / "jamis.yaml"))

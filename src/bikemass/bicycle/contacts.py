@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.frozen import frozen_fields
+from ..models.plausibility import warn
 
 HAND_POSITIONS = ("tops", "hoods", "drops", "aero")
 """The usual grip names (``bikemass pose --hands``); a bicycle may name others."""
@@ -76,6 +77,10 @@ def _point(node, keypoints):
     return node.vector("length", 3)
 
 
+CRANK_RANGE = (0.05, 0.3)
+"""Crank lengths (m) outside this range are warned about (children's to tall riders' cranks: 0.09..0.2 m)."""
+
+
 def read_contacts(node, keypoints):
     """:class:`Contacts` from the ``contacts`` node (points as keypoint names or vectors)."""
     node.check_keys(required=("saddle", "bottom_bracket", "crank_length"), optional=("grips", "note"))
@@ -91,8 +96,12 @@ def read_contacts(node, keypoints):
         fit = _saddle_fit(node["saddle"], keypoints, bottom_bracket)
     else:
         saddle = _point(node["saddle"], keypoints)
-    return Contacts(saddle, bottom_bracket, node["crank_length"].number("length", positive=True), grips,
-                    str(node.source), node.key, fit)
+    crank = node["crank_length"].number("length", positive=True)
+    if not CRANK_RANGE[0] <= crank <= CRANK_RANGE[1]:
+        warn(f"{node.source}: {node.key + '.' if node.key else ''}crank_length: {crank:.6g} m is outside "
+             f"{CRANK_RANGE[0]:g}..{CRANK_RANGE[1]:g} m (bicycle cranks: 0.09..0.2 m; a bare number is in m, 170 mm "
+             "is '170 mm'); computed as given")
+    return Contacts(saddle, bottom_bracket, crank, grips, str(node.source), node.key, fit)
 
 
 def _saddle_fit(node, keypoints, bottom_bracket):
