@@ -56,3 +56,35 @@ def test_an_input_takes_a_unit_and_is_checked_by_its_member():
         bm.Scenario("jamis", "relaxed", model="rider-lean").build({"mU": -1.0})
     with pytest.raises(bm.InputError, match="mtr: one of the flexible model's inputs"):
         bm.Scenario("jamis", "relaxed", "steel", model="flexible").build({"mtr": 1.0})
+
+
+def test_a_sweep_and_an_optimisation_over_a_members_input(tmp_path):
+    """A sweep spec varies the front tyre's cornering coefficient in 1/deg and its relaxation length: each row's
+    weave speed is ``bm.stability`` of the scenario built with those values (1e-9 m/s), a negative relaxation
+    length is a refused row naming the key; an optimisation over ``CaF`` (bounds in 1/deg) hits a weave-speed
+    target at the coefficient a brentq on ``bm.stability`` finds (1e-6 relative)."""
+    from scipy.optimize import brentq
+    scenario = bm.Scenario("benchmark", model="tyre")
+    spec = tmp_path / "sweep.yaml"
+    spec.write_text("bike: benchmark\nmodel: tyre\nvary:\n  CaF: {from: 0.15 1/deg, to: 0.25 1/deg, num: 3}\n"
+                    "  sigmaF: [-0.1, 0.2]\n")
+    with pytest.warns(bm.BikemassWarning, match="3 of 6 configurations were refused"):
+        rows = list(bm.sweep(str(spec), tmp_path / "out"))
+    assert len(rows) == 6
+    for row in rows:
+        if row["sigmaF"] < 0:
+            assert "sigmaF: a positive number" in row["error"]
+            continue
+        built = scenario.build({"CaF": f"{row['CaF']} 1/deg", "sigmaF": row["sigmaF"]})
+        assert row["error"] is None
+        assert row["weave_speed"] == pytest.approx(bm.stability(built).weave_speeds[0], abs=1e-9)
+    target = tmp_path / "opt.yaml"
+    target.write_text("bike: benchmark\nmodel: tyre\nvariables:\n  CaF: {min: 0.1 1/deg, max: 0.35 1/deg}\n"
+                      "target: {weave-speed: 4.31}\n")
+    result = bm.optimise(str(target))
+
+    def weave(caf):
+        return bm.stability(scenario.build({"CaF": caf})).weave_speeds[0]
+    root = brentq(lambda caf: weave(caf) - 4.31, 0.1 * 180 / math.pi, 0.35 * 180 / math.pi, xtol=1e-12)
+    assert result.converged and result.variables["CaF"] == pytest.approx(root, rel=1e-6)
+    assert result.variable_units["CaF"] == "1/rad"

@@ -124,8 +124,8 @@ def _variable(scenario, key, node):
             unit = scenario.file_unit(key)
         except InputError as exc:
             node.fail(f"an input of the bicycle or rider ({exc.expected})")
-        dim = dimension_of(unit) if unit else None
-        bare = unit
+        dim = scenario.input_dimension(key)        # a file's unit there, or a member input's (its code's unit)
+        bare = unit or (DIMENSIONS[dim][0] if dim else None)
     low, high = (_bound_value(node[b], dim, bare) for b in ("min", "max"))
     if not low < high:
         node.fail(f"min < max, got {low!r} and {high!r} (SI)")
