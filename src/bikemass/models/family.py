@@ -8,6 +8,7 @@ configurations at once (arrays for parameters) for sweeps.
 
 import importlib
 from functools import lru_cache
+from types import MappingProxyType
 
 import numpy as np
 
@@ -41,14 +42,25 @@ def parameters_of(model):
 
 
 def member_inputs(model):
-    """``{name: (member spec, SI unit)}``: the parameters of ``model``'s code that are inputs of a scenario (each
-    member's ``INPUTS``, :mod:`bikemass.models.members.spec`), in the order of its members; ``{}`` for the
-    Whipple bicycle."""
-    choice = parse_model(model)
+    """``{name: (member spec, SI unit)}`` (read-only): the parameters of ``model``'s code that are inputs of a
+    scenario (each member's ``INPUTS``, :mod:`bikemass.models.members.spec`), in the order of its members;
+    empty for the Whipple bicycle."""
+    return _member_inputs(parse_model(model))
+
+
+@lru_cache(maxsize=None)
+def _member_inputs(choice):
     if not choice.members:
-        return {}
+        return MappingProxyType({})
     units = {name: unit for name, unit, _ in parameters_of(choice)}
-    return {name: (spec, units[name]) for spec in choice.specs for name in (spec.hook("INPUTS") or {})}
+    return MappingProxyType({name: (spec, units[name]) for spec in choice.specs for name in (spec.hook("INPUTS") or {})})
+
+
+@lru_cache(maxsize=None)
+def member_code_names(choice):
+    """The parameters of the code of the model ``choice`` (a :class:`~bikemass.models.registry.ModelChoice`)
+    beyond the 26 benchmark names (frozenset): its members' own, inputs or not."""
+    return frozenset(parameter_names(choice)) - frozenset(NAMES)
 
 
 def coefficients(model, values):

@@ -45,7 +45,7 @@ from ..mass.materials import frame_label
 from ..core.errors import InputError, short, wrong_type
 from ..core.frozen import FrozenMap, readonly, short_repr
 from ..models.family import build as build_member, dynamic_derivatives, generated, held_coordinates, linear_model, \
-    member_inputs, parameter_names, values as member_values
+    member_code_names, member_inputs, values as member_values
 from ..models.linear import LinearModel
 from ..models.members.spec import Source, with_inputs
 from ..models.parameters import NAMES, BenchmarkParameters, dimension
@@ -425,10 +425,12 @@ class Scenario:
         :func:`~bikemass.models.family.member_inputs`), and those as sorted ``(name, SI value)`` pairs; a
         value with a unit is converted to the code's unit, a bare number is taken in it.  A parameter of the
         model's code that is no input is refused in one line naming the inputs."""
-        inputs = member_inputs(self.model) if self.model.members else {}
-        code = set(parameter_names(self.model)) - set(NAMES) if self.model.members else set()
+        if not self.model.members:
+            return changes, ()
+        code = member_code_names(self.model)
         if not any(key in code for key in changes):
             return changes, ()
+        inputs = member_inputs(self.model)
         rest, own = {}, []
         for key, value in changes.items():
             if key in inputs:
