@@ -207,3 +207,34 @@ def test_refused_and_non_numeric_rows_get_the_references_outcome():
     assert out.errors[0] is None and out.errors[1] and out.errors[2]
     assert np.isnan(out.values["weave_speed"][1]) and np.isnan(out.values["weave_speed"][2])
     assert set(out.values) == set(NUMBERS)
+
+
+@pytest.mark.parametrize("bike, rider, model, keys, seed", [
+    ("benchmark", None, "tyre", ("CaF", "CaR", "c"), 4),
+    ("jamis", "relaxed", "rider-lean", ("klean", "clean", "zU", "mB"), 5),
+    ("jamis", "relaxed", "rider-lean", ("mU", "klean"), 6),
+])
+def test_a_members_inputs_in_the_batch_equal_the_engine(bike, rider, model, keys, seed):
+    """A member's own inputs (the tyres' cornering coefficients, the lean joint's stiffness and damping, the upper
+    body's height) varied by +-30 % (seeded) with or without benchmark names: the batch's rows equal the
+    engine's to 1e-9 m/s and its total mass to 1e-12 relative, and the batch decides most rows. Varying the
+    upper body's mass changes the total mass, which the batch does not make from the 26 names: its probe
+    sends every row to the engine (then the rows are the engine's own)."""
+    scenario = bm.Scenario(bike, rider, model=model)
+    base = scenario.build().values()
+    rng = np.random.default_rng(seed)
+    count = 60
+    changes = {k: base[k] * (1 + 0.3 * rng.uniform(-1, 1, count)) for k in keys}
+    engine_rows = []
+
+    def reference(config):
+        engine_rows.append(config)
+        return evaluate(scenario, config, 30.0)
+    out = evaluate_member_batch(scenario, changes, count, 30.0, reference)
+    assert len(engine_rows) == count if "mU" in keys else len(engine_rows) <= count // 4
+    for i in range(count):
+        want = evaluate(scenario, {k: float(v[i]) for k, v in changes.items()}, 30.0)
+        for k in SPEEDS:
+            assert _same(out.values[k][i], want[k]), (i, k, out.values[k][i], want[k])
+        assert abs(out.values["total_mass"][i] - want["total_mass"]) <= 1e-12 * want["total_mass"]
+        assert out.errors[i] == want["error"]

@@ -462,6 +462,8 @@ class Scenario:
             mine = {k: v for k, v in (own or {}).items() if k in inputs}
             if mine:                             # the member's own parameters changed by name (its checks run)
                 typed[spec.name] = with_inputs(typed[spec.name], mine, inputs, self.origin)
+                if spec.source is Source.RIDER_SPLIT:     # the set with the rider held rigid holds the change too
+                    p = typed[spec.name].rigid()
         hands = None
         for spec in self.model.specs:            # a member that acts through the rider's hands checks them
             check_hands = spec.hook("check_hands")

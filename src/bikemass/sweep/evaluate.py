@@ -24,7 +24,8 @@ import numpy as np
 from ..analysis.engine.critical import critical_speeds
 from ..core.errors import InputError
 from ..core.threads import one_blas_thread
-from ..core.units import Quantity
+from ..core.units import Quantity, convert, dimension_of
+from ..models.family import member_inputs
 from ..models.parameters import NAMES
 from .members import evaluate_member_columns
 from .table import NUMBERS, OUTPUTS, Outcomes, chunk_text
@@ -67,6 +68,11 @@ def _scenario(scenario, inputs=None):
     return _SCENARIOS[key]
 
 
+def _factor(unit, code_unit):
+    """What a value in ``unit`` is multiplied by to be in ``code_unit`` (of the same dimension)."""
+    return convert(Quantity(1.0, unit), dimension_of(code_unit), code_unit)
+
+
 def _bare_unit(scenario, key):
     """The unit of a bare value of ``key`` (:func:`~bikemass.scenario.inputs.file_unit`); None for a
     key the scenario does not have (its rows carry the error)."""
@@ -101,8 +107,11 @@ def evaluate_outcomes(scenario, spec, columns, count):
     if takes(spec.keys) and not scenario.model.members:     # parameters and stiffness: SI, no unit
         return evaluate_columns(scenario, columns, count, spec.max_speed,
                                 lambda c: evaluate(scenario, c, spec.max_speed))
-    if all(k in NAMES for k in spec.keys):                   # benchmark parameters of a model with members
-        return evaluate_member_columns(scenario, columns, count, spec.max_speed,
+    inputs = member_inputs(scenario.model) if scenario.model.members else {}
+    if all(k in NAMES or k in inputs for k in spec.keys):    # benchmark parameters and member inputs, in SI
+        si = {k: np.asarray(columns[k], dtype=float) * _factor(spec.units[k], inputs[k][1])
+              if k in inputs and spec.units.get(k) else columns[k] for k in spec.keys}
+        return evaluate_member_columns(scenario, si, count, spec.max_speed,
                                        lambda c: evaluate(scenario, c, spec.max_speed))
     # a bare value takes the unit the file writes there (docs/analysis.md), a value with a unit keeps it
     units = {k: u for k in spec.keys if (u := spec.units.get(k) or _bare_unit(scenario, k))}

@@ -22,7 +22,8 @@ import numpy as np
 
 from ..analysis.engine.batch import batch_critical_speeds
 from ..core.errors import InputError
-from ..models.family import state_coefficients
+from ..models.family import member_inputs, state_coefficients
+from ..models.members.spec import with_inputs
 from ..models.parameters import NAMES
 from ..models.plausibility import refused_parameters
 from .table import NUMBERS, Outcomes
@@ -53,7 +54,16 @@ def _close(a, b):
     return a.shape == b.shape and bool(np.all(np.abs(a - b) <= PROBE_TOL * (1 + np.abs(b))))
 
 
-def _substitutes(scenario, base, model, changes, row):
+def _total_mass(p, base, columns):
+    """The rows' total mass (kg) from the base configuration's parameter set ``p``, its code values ``base``
+    and the varied ``columns``: a varied mass that is the set's own replaces it, one of a split set (the
+    leaning rider's bicycle without the upper body) moves it by as much (the reference's order of sums)."""
+    masses = [columns[m] if m in columns and getattr(p, m) == base[m] else
+              getattr(p, m) + (columns[m] - base[m]) if m in columns else getattr(p, m) for m in MASSES]
+    return masses[0] + masses[1] + masses[2] + masses[3]
+
+
+def _substitutes(scenario, base, base_parameters, model, changes, row):
     """Whether configuration ``row`` of ``changes`` built the reference way has the values and dynamic
     coefficients of the base ``values`` with the varied parameters substituted."""
     config = {k: v[row] for k, v in changes.items()}
@@ -65,15 +75,32 @@ def _substitutes(scenario, base, model, changes, row):
     got = built.values()
     if set(got) != set(values) or not all(_close(got[k], values[k]) for k in values):
         return False
+    p = built.parameters                          # the total mass as the batch makes it (from the 26 names alone)
+    if not _close(p.mR + p.mB + p.mH + p.mF, _total_mass(base_parameters, base, {k: np.float64(v) for k, v in config.items()})):
+        return False
     n = built.model.n_dynamic
     A, _ = state_coefficients(built.choice, values)
     return n == model.n_dynamic and A.shape[-1] == built.model.A.shape[-1] and \
         _close(A[:, :n, :n], built.model.dynamic_coefficients)
 
 
+def _accepted(built, spec, key, column, usable):
+    """Which rows' value of the member input ``key`` (``column``, SI) the member ``spec`` takes: each distinct
+    value of the usable rows put into the built member's typed value once (its checks; a refused value's row
+    goes to the reference, which gives its reason)."""
+    ok = np.ones(len(column), dtype=bool)
+    typed, inputs = built.members[spec.name], spec.hook("INPUTS")
+    for value in np.unique(column[usable]):
+        try:
+            with_inputs(typed, {key: float(value)}, inputs)
+        except InputError:
+            ok &= column != value
+    return ok
+
+
 def evaluate_member_batch(scenario, changes, count, max_speed, reference):
     """:class:`~bikemass.sweep.table.Outcomes` of ``count`` configurations of ``scenario`` (a model with
-    members), each one row of ``changes`` (``{benchmark name: sequence of count values}``, SI).
+    members), each one row of ``changes`` (``{benchmark name or member input: sequence of count values}``, SI).
 
     ``reference(configuration)`` -> the result row of one configuration ``{key: value}`` (the
     per-configuration path) takes every row the arrays do not decide.
@@ -88,17 +115,21 @@ def evaluate_member_batch(scenario, changes, count, max_speed, reference):
         base = None
     if base is not None:
         model = built.model
-        columns, varied = {}, [k for k in changes if k in NAMES]
+        inputs = member_inputs(scenario.model)
+        columns, varied = {}, [k for k in changes if k in NAMES or k in inputs]
         for key in changes:
-            if key not in NAMES:
+            if key not in NAMES and key not in inputs:
                 usable[:] = False
                 break
             columns[key], ok = _real_column(changes[key], count)
             usable &= ok
         if usable.any():
-            usable &= ~refused_parameters({**{k: base[k] for k in NAMES}, **columns}, count)
+            usable &= ~refused_parameters({**{k: base[k] for k in NAMES},
+                                           **{k: c for k, c in columns.items() if k in NAMES}}, count)
+        for key in [k for k in columns if k in inputs]:   # each value of a member input checked by its member
+            usable &= _accepted(built, inputs[key][0], key, columns[key], usable)
         rows = np.flatnonzero(usable)
-        if len(rows) and not _substitutes(scenario, base, model, changes, int(rows[0])):
+        if len(rows) and not _substitutes(scenario, base, built.parameters, model, changes, int(rows[0])):
             usable[:] = False
             rows = rows[:0]
         if len(rows):
@@ -112,9 +143,6 @@ def evaluate_member_batch(scenario, changes, count, max_speed, reference):
             usable[rows[~done]] = False
             for k in SPEEDS:
                 values[k][rows[done]] = found[k][done]
-            p = built.parameters
-            masses = [columns[m] if m in columns and getattr(p, m) == base[m] else
-                      getattr(p, m) + (columns[m] - base[m]) if m in columns else getattr(p, m) for m in MASSES]
-            total = masses[0] + masses[1] + masses[2] + masses[3]          # the reference's order
+            total = _total_mass(built.parameters, base, columns)
             values["total_mass"][usable] = np.broadcast_to(total, (count,))[usable]
     return completed(values, usable, changes, reference)
