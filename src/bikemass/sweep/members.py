@@ -1,6 +1,7 @@
 """A chunk of parameter-level configurations of a model with members, evaluated as arrays.
 
-A sweep of the benchmark parameters of a model beyond the Whipple bicycle (``model: tyre``,
+A sweep of the benchmark parameters (and the members' own inputs: ``CaF``, ``klean``, ...,
+:func:`~bikemass.models.family.member_inputs`) of a model beyond the Whipple bicycle (``model: tyre``,
 ``rider-lean``, ...) took every configuration through the engine (:func:`bikemass.sweep.evaluate.evaluate`:
 a scenario built, the compound matrices' polynomial eigenvalue problems, the modes followed from
 standstill to name the crossings: about 17 ms a configuration for the tyre model).
