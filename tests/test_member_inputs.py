@@ -88,3 +88,22 @@ def test_a_sweep_and_an_optimisation_over_a_members_input(tmp_path):
     root = brentq(lambda caf: weave(caf) - 4.31, 0.1 * 180 / math.pi, 0.35 * 180 / math.pi, xtol=1e-12)
     assert result.converged and result.variables["CaF"] == pytest.approx(root, rel=1e-6)
     assert result.variable_units["CaF"] == "1/rad"
+
+
+def test_a_member_input_set_by_name_is_refused_where_the_model_lacks_it_and_quiets_the_default():
+    """``CaF`` on the Whipple bicycle names the model that has it; the flexible frame's ``mtr`` (no input) names the
+    inputs, through ``build`` and ``value`` alike; the arms' stiffness set by name does not warn that none was
+    given (the default's warning)."""
+    import warnings
+    for scenario, key, words in [(bm.Scenario("benchmark"), "CaF", "CaF is the tyre member.s \\(model: tyre"),
+                                 (bm.Scenario("jamis", "relaxed", "steel", model="flexible"), "mtr",
+                                  "one of the flexible model.s inputs \\(cs, kr, kf\\)")]:
+        with pytest.raises(bm.InputError, match=words):
+            scenario.build({key: 1.0})
+        with pytest.raises(bm.InputError, match=words):
+            scenario.value(key)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        built = bm.Scenario("jamis", "relaxed", model="arms").build({"k_arms": 20.0})
+    assert built.arms.stiffness == 20.0
+    assert not [w for w in caught if "no stiffness or damping given" in str(w.message)]

@@ -211,11 +211,14 @@ def test_a_members_own_parameter_spreads_by_both_methods(tmp_path, capsys):
     ("jamis", [], "geometry.head_angle: 5 kg", "uncertainty.geometry.head_angle: a spread of an angle"),
     ("jamis", ["--rider", "relaxed", "--model", "tyre"], "sigmaF: 5 deg", "uncertainty.sigmaF: a spread of a length"),
     ("jamis", ["--rider", "relaxed", "--model", "tyre"], "CaF: 1.0 m", "uncertainty.CaF: a spread of an inverse angle"),
+    ("jamis", ["--rider", "relaxed"], "geometry.trail: 2 deg", "uncertainty.geometry.trail: a spread of a length"),
+    ("jamis", ["--rider", "relaxed"], "geometry.rear_wheel_radius: 3 kg",
+     "uncertainty.geometry.rear_wheel_radius: a spread of a length"),
 ])
 def test_a_std_files_spread_in_another_dimension_is_refused(tmp_path, capsys, bike, options, entry, words):
     """A spread written in a unit of another dimension than its input's (a length for the steer-axis tilt) was
-    taken as its number alone (0.2 m as 0.2 rad); it is refused in one line naming the file, the key, the
-    input's dimension and the unit's."""
+    taken as its number alone (0.2 m as 0.2 rad; 2 deg of trail, which the file writes bare, as 0.035 m); it is
+    refused in one line naming the file, the key, the input's dimension and the unit's."""
     from bikemass.cli.main import main
     std = tmp_path / "u.yaml"
     std.write_text(f"uncertainty:\n  {entry}\n")
@@ -246,3 +249,16 @@ def test_a_grid_over_the_limit_names_a_way_out_only_where_the_command_has_one(tm
     unc, stab = capsys.readouterr().err.strip().splitlines()
     assert "at most" in unc and "--max-speeds" not in unc
     assert "raise with --max-speeds" in stab
+
+
+def test_a_spread_on_a_code_parameter_that_is_no_input_is_refused_by_both_methods(tmp_path, capsys):
+    """The flexible frame's modal mass ``mtr`` follows from the beam models: the linear method took a spread on it
+    (with any unit) and Monte Carlo said "no 'mtr' under (top)"; both refuse it in one line naming the inputs."""
+    from bikemass.cli.main import main
+    std = tmp_path / "u.yaml"
+    std.write_text("uncertainty:\n  mtr: 0.01\n")
+    scenario = ["jamis", "--rider", "relaxed", "--stiffness", "steel", "--model", "flexible", "--std", str(std)]
+    assert main(["uncertainty", *scenario]) == 2
+    assert main(["uncertainty", *scenario, "--method", "montecarlo", "--samples", "20"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 2 and all("mtr: one of the flexible model's inputs (cs, kr, kf)" in line for line in err)

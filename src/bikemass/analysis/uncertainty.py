@@ -48,6 +48,7 @@ from ..core.units import ARTICLES, UnitError, dimension_of, split_quantity, to_s
 from ..models.canonical import CanonicalMatrices
 from ..models.members.rider_lean.parameters import RiderLeanParameters
 from ..models.parameters import NAMES
+from ..models.family import member_inputs
 from ..plots.stability import mode_colours
 from ..scenario.scenario import Scenario
 from .engine.critical import critical_speeds
@@ -141,10 +142,10 @@ class Spread:
         return rng.normal(0.0, self.std, n)
 
 
-def _spread_value(node, dimension=None):
+def _spread_value(node, problem=None):
     """A std or half width in SI: a bare number is SI (m, kg, rad, ... as the input's value is,
-    :func:`~bikemass.scenario.inputs.get_path`), ``"0.1 mm"`` or ``"3 deg"`` is converted; a unit of another
-    dimension than the input's (``dimension``, where known) is refused naming both."""
+    :func:`~bikemass.scenario.inputs.get_path`), ``"0.1 mm"`` or ``"3 deg"`` is converted; a unit the input
+    cannot carry (``problem(unit)``: what the input is, or ``None`` where the unit fits) is refused naming both."""
     if isinstance(node.value, str):
         try:
             number, unit = split_quantity(node.value)
@@ -152,33 +153,34 @@ def _spread_value(node, dimension=None):
             node.fail(f"a spread: a number in SI or '<number> <unit>' ({exc})")
         if number < 0:
             node.fail(f"a spread >= 0, got {node.value!r}")
-        if unit and dimension is not None and dimension_of(unit) != dimension:
-            node.fail(f"a spread of {ARTICLES.get(dimension, 'a')} {dimension} (a number in SI or '<number> <unit>' "
-                      f"of {dimension}), got {node.value!r} ({ARTICLES.get(dimension_of(unit), 'a')} "
-                      f"{dimension_of(unit)})")
+        expected = problem(unit) if unit and problem is not None else None
+        if expected is not None:
+            given = dimension_of(unit)
+            node.fail(f"a spread of {expected} (a number in SI or '<number> <unit>' of its dimension), got "
+                      f"{node.value!r} ({ARTICLES.get(given, 'a')} {given})")
         return to_si(node.value, dimension_of(unit)) if unit else number
     return node.number("dimensionless", nonnegative=True)
 
 
-def read_spreads(node, dimension=None):
+def read_spreads(node, unit_problem=None):
     """``{key: Spread}`` from a config Node mapping ``key: std`` or ``key: {std: s}`` or
     ``key: {distribution: normal|uniform, std: s | half_width: h}``; each a number in SI or
-    ``"<number> <unit>"`` (``"0.1 mm"``, ``"3 deg"``).  ``dimension(key)``, where given, is the physical
-    dimension of input ``key`` (``None`` where unknown): a spread written in a unit of another is refused."""
+    ``"<number> <unit>"`` (``"0.1 mm"``, ``"3 deg"``).  ``unit_problem(key, unit)``, where given, says what
+    input ``key`` is where it cannot carry ``unit`` (``None`` where it can): such a spread is refused."""
     out = {}
     for key, item in node.items():
-        dim = dimension(str(key)) if dimension is not None else None
+        problem = None if unit_problem is None else (lambda unit, key=str(key): unit_problem(key, unit))
         if isinstance(item.value, dict):
             item.check_keys(optional=("distribution", "std", "half_width"))
             kind = item["distribution"].string(DISTRIBUTIONS) if item.has("distribution") else "normal"
             if item.has("half_width") == item.has("std"):
                 item.fail("exactly one of std or half_width")
-            std = (_spread_value(item["std"], dim) if item.has("std")
-                   else _spread_value(item["half_width"], dim) / np.sqrt(3.0))
+            std = (_spread_value(item["std"], problem) if item.has("std")
+                   else _spread_value(item["half_width"], problem) / np.sqrt(3.0))
             if kind == "normal" and item.has("half_width"):
                 item.fail("std for a normal distribution (half_width is for uniform)")
         else:
-            kind, std = "normal", _spread_value(item, dim)
+            kind, std = "normal", _spread_value(item, problem)
         out[str(key)] = Spread(kind, float(std))
     return out
 
@@ -208,7 +210,8 @@ def member_directions(scenario, spreads, speeds, step=1e-4):
     parameter of the model's code, by a central difference through the builder (relative step
     ``step``, absolute for an input at zero) for a design input (geometry, pose, material)."""
     built = scenario.build()
-    own = tuple(key for key in spreads if key in built.values())
+    taken = set(NAMES) | set(member_inputs(built.choice))       # a code parameter that is no input: value() says
+    own = tuple(key for key in spreads if key in taken)
     out = dict(built.derivatives(speeds, own, STEP)) if own else {}
     for key in spreads:
         if key in out:

@@ -199,14 +199,13 @@ def _speed(v):
 
 def read_std_file(path, scenario=None):
     """``{key: Spread}`` from the ``uncertainty:`` mapping of a YAML file; with ``scenario``, a spread in a
-    unit of another dimension than its input's (:meth:`~bikemass.scenario.scenario.Scenario.input_dimension`)
-    is refused."""
+    unit its input cannot carry (:meth:`~bikemass.scenario.scenario.Scenario.unit_problem`) is refused."""
     # lazy: the library loads numpy; bikemass --help must not
     from ..analysis.uncertainty import read_spreads
     from ..core.config import load_yaml
     node = load_yaml(path)
     node.check_keys(required=("uncertainty",), optional=("name", "description", "source"))
-    return read_spreads(node["uncertainty"], None if scenario is None else scenario.input_dimension)
+    return read_spreads(node["uncertainty"], None if scenario is None else scenario.unit_problem)
 
 
 def run_uncertainty(args):

@@ -16,7 +16,7 @@ from ..core.errors import InputError
 from ..core.frozen import readonly
 from .linear import LinearModel, SecondOrder, polynomial, state_form
 from .parameters import NAMES, BenchmarkParameters
-from .registry import BASE, by_keyword, module_name, parse_model
+from .registry import BASE, SPECS, by_keyword, module_name, parse_model
 from .signals import signal
 
 
@@ -54,6 +54,16 @@ def _member_inputs(choice):
         return MappingProxyType({})
     units = {name: unit for name, unit, _ in parameters_of(choice)}
     return MappingProxyType({name: (spec, units[name]) for spec in choice.specs for name in (spec.hook("INPUTS") or {})})
+
+
+def input_owner(name):
+    """The member (:class:`~bikemass.models.members.spec.Member`) whose ``INPUTS`` hold ``name``, or ``None``."""
+    return _owners().get(name)
+
+
+@lru_cache(maxsize=1)
+def _owners():
+    return MappingProxyType({name: spec for spec in SPECS for name in (spec.hook("INPUTS") or {})})
 
 
 @lru_cache(maxsize=None)

@@ -33,19 +33,20 @@ for ``rider-lean`` the bicycle with the rider's legs but without the upper body.
 
 import dataclasses
 import os
+import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
 
 import numpy as np
 
-from ..core.units import UnitError, convert, dimension_of
+from ..core.units import ARTICLES, DIMENSIONS, Quantity, UnitError, convert, dimension_of
 
 from ..core.choices import RIGID, Combine, Method, check
 from ..mass.materials import frame_label
-from ..core.errors import InputError, short, wrong_type
+from ..core.errors import BikemassWarning, InputError, short, wrong_type
 from ..core.frozen import FrozenMap, readonly, short_repr
 from ..models.family import build as build_member, dynamic_derivatives, generated, held_coordinates, linear_model, \
-    member_code_names, member_inputs, values as member_values
+    input_owner, member_code_names, member_inputs, values as member_values
 from ..models.linear import LinearModel
 from ..models.members.spec import Source, with_inputs
 from ..models.parameters import NAMES, BenchmarkParameters, dimension
@@ -324,7 +325,21 @@ class Scenario:
             return float(getattr(self.inputs.lean(forearms_held=self._held()).bicycle, key))
         if self.model.members and key in member_inputs(self.model):
             return float(self.build().values()[key])
+        self._refuse_code_name(key)
         return get_path(self.inputs, key)
+
+    def _refuse_code_name(self, key):
+        """InputError for ``key`` where it is a member's parameter that is no input here: a parameter of this
+        model's code that follows from the member's data (naming the inputs), or a member input of a member
+        this model does not have (naming the model that has it)."""
+        if self.model.members and key in member_code_names(self.model):
+            inputs = member_inputs(self.model)
+            raise InputError(self.origin, key, f"one of the {self.model.name} model's inputs ("
+                             f"{', '.join(inputs) or 'none'}): {key} follows from the member's own data")
+        owner = input_owner(key)
+        if owner is not None:
+            raise InputError(self.origin, key, f"an input of the bicycle, the rider or the model: {key} is the "
+                             f"{owner.name} member's (model: {owner.name}, --model {owner.name})")
 
     def file_unit(self, key):
         """The unit a bare value of ``key`` is read in (the file's unit there), or None for SI (a member's
@@ -346,6 +361,27 @@ class Scenario:
         except InputError:
             return None
         return dimension_of(unit) if unit else None
+
+    def unit_problem(self, key, unit):
+        """What input ``key`` is (``"a length"``) where a value of it cannot carry ``unit``, else ``None``: its
+        known dimension (:meth:`input_dimension`) compared, or where the file writes it bare, the nominal
+        value written in ``unit`` built (the bicycle's reader names what it takes there).  ``None`` also for a
+        key that is no input (its own error comes where it is used)."""
+        given = dimension_of(unit)
+        known = self.input_dimension(key)
+        if known is not None:
+            return None if given == known else f"{ARTICLES.get(known, 'a')} {known}"
+        try:
+            x = self.value(key)
+        except InputError:
+            return None
+        if given is None or isinstance(x, bool) or not isinstance(x, (int, float)):
+            return None
+        try:
+            self.build({key: Quantity(x / convert(Quantity(1.0, unit), given, DIMENSIONS[given][0]), unit)})
+        except InputError as exc:
+            return exc.expected.split(",")[0].split(" (")[0]
+        return None
 
     @property
     def file_std(self):
@@ -390,12 +426,17 @@ class Scenario:
             lean = lean.replace(bicycle=check_parameters(dataclasses.replace(lean.bicycle, **dict(params)), self.origin))
         return lean
 
-    def _option(self, spec):
+    def _option(self, spec, quiet=False):
         """The typed parameters of member ``spec`` whose source is its keyword: the scenario's, else a
-        parameter file's block, else its default."""
+        parameter file's block, else its default (``quiet``: without the default's own warning, where the
+        member's inputs are set by name)."""
         given = self.member_inputs.get(spec.name)
         if given is None and spec.name in self.inputs.file_members:
             return self.inputs.file_members[spec.name]        # a parameter file's block (params --model)
+        if given is None and quiet:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", BikemassWarning)
+                return spec.runtime().coerce(given, spec.keyword or spec.name)
         return spec.runtime().coerce(given, spec.keyword or spec.name)
 
     def _held(self):
@@ -425,24 +466,20 @@ class Scenario:
         :func:`~bikemass.models.family.member_inputs`), and those as sorted ``(name, SI value)`` pairs; a
         value with a unit is converted to the code's unit, a bare number is taken in it.  A parameter of the
         model's code that is no input is refused in one line naming the inputs."""
-        if not self.model.members:
-            return changes, ()
-        code = member_code_names(self.model)
-        if not any(key in code for key in changes):
+        code = member_code_names(self.model) if self.model.members else frozenset()
+        if not any(key in code or input_owner(key) is not None for key in changes):
             return changes, ()
         inputs = member_inputs(self.model)
         rest, own = {}, []
         for key, value in changes.items():
             if key in inputs:
                 own.append((key, _in_unit(value, inputs[key][1], self.origin, key)))
-            elif key in code:
-                raise InputError(self.origin, key, f"one of the {self.model.name} model's inputs ("
-                                 f"{', '.join(inputs) or 'none'}): {key} follows from the member's own data")
             else:
+                self._refuse_code_name(key)
                 rest[key] = value
         return rest, tuple(sorted(own))
 
-    def _build(self, changes, own=None):
+    def _build(self, changes, named=None):
         bike, rider, params, stiffness = split_changes(changes)
         choice = self.stiffness if stiffness is None else stiffness
         self._refuse_stiffness(choice)
@@ -456,10 +493,10 @@ class Scenario:
                 typed[spec.name] = self._lean(bike, rider, params)
             elif spec.source is Source.BEAM_MODELS:
                 typed[spec.name] = self.inputs.compliances(choice, bike)
-            else:
-                typed[spec.name] = self._option(spec)
             inputs = spec.hook("INPUTS") or {}
-            mine = {k: v for k, v in (own or {}).items() if k in inputs}
+            mine = {k: v for k, v in (named or {}).items() if k in inputs}
+            if spec.source not in (Source.RIDER_SPLIT, Source.BEAM_MODELS):
+                typed[spec.name] = self._option(spec, quiet=bool(mine))
             if mine:                             # the member's own parameters changed by name (its checks run)
                 typed[spec.name] = with_inputs(typed[spec.name], mine, inputs, self.origin)
                 if spec.source is Source.RIDER_SPLIT:     # the set with the rider held rigid holds the change too
