@@ -353,3 +353,21 @@ def test_a_target_the_box_cannot_reach_is_not_converged(tmp_path):
     reached = bm.optimise(str(spec))
     c = brentq(lambda c: weave(c) - 4.5, 0.05, 0.12, xtol=1e-14)
     assert reached.converged and reached.variables["c"] == pytest.approx(c, rel=1e-6)
+
+
+def test_a_design_where_the_objective_does_not_exist_is_not_converged_and_a_constraint_that_never_exists_is_refused(
+        tmp_path, capsys):
+    """A capsize-speed target of 30 m/s (the span's end, the stand-in for no crossing) reached at a negative
+    trail, where the benchmark has no capsize crossing at all (checked by bm.stability there), said "converged
+    yes"; it is not converged, and a note says the value is the stand-in. A constraint on the wobble speed of
+    the Whipple bicycle (none anywhere) is refused in one line, as such an objective is."""
+    spec = tmp_path / "o.yaml"
+    spec.write_text("bike: benchmark\nvariables:\n  c: {min: -0.1, max: 0.1}\ntarget: {capsize-speed: 30}\n")
+    result = bm.optimise(str(spec))
+    assert not bm.stability(bm.parameters("benchmark").replace(c=result.variables["c"])).capsize_speeds
+    assert not result.converged and any("does not exist at the design found" in n for n in result.notes)
+    spec.write_text("bike: benchmark\nvariables:\n  c: {min: 0.05, max: 0.1}\nmaximise: stable-range\n"
+                    "constraints:\n  wobble-speed: {min: 10}\n")
+    assert main(["optimise", str(spec), "--quiet"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "constraints.wobble-speed: a metric that exists somewhere in the box" in err[0]

@@ -318,10 +318,11 @@ def _search(spec, problem, progress, start_time):
     if not screened:
         raise InputError(spec.source, "variables", "a box where some design can be built (none of the "
                          f"{len(points)} screened designs could)")
-    if target_metric.name in problem.undefined and target_metric.name not in problem.defined:
-        raise InputError(spec.source, spec.sense, f"a metric that exists somewhere in the box: {target_metric.name} "
-                         f"exists at none of the {len(screened)} designs screened (the "
-                         f"{problem.scenario.model.name} model; {target_metric.name}: {target_metric.description})")
+    for used, key in ((target_metric, spec.sense), *((m, f"constraints.{c.metric}") for m, c in constraints)):
+        if used.name in problem.undefined and used.name not in problem.defined:
+            raise InputError(spec.source, key, f"a metric that exists somewhere in the box: {used.name} exists at "
+                             f"none of the {len(screened)} designs screened (the {problem.scenario.model.name} model; "
+                             f"{used.name}: {used.description})")
     screened.sort()
     runs = []
     cons = ([{"type": "ineq", "fun": tracked(inequalities), "jac": inequality_jacobian}] if constraints else [])
@@ -376,7 +377,11 @@ def _search(spec, problem, progress, start_time):
     if active:
         notes.append("at a bound of the box: " + ", ".join(active))
     missed = spec.sense == "target" and not abs(raw(u_best) - spec.target) <= TARGET_TOLERANCE * scale
-    if missed:
+    absent = not problem.exists(target_metric, x_best)
+    if absent:
+        notes.append(f"{target_metric.name} does not exist at the design found: its value is the stand-in for none "
+                     "(see above), not a result")
+    elif missed:
         notes.append(f"the target {spec.target:g} is not reached in the box: the nearest design found gives "
                      f"{raw(u_best):.6g} ({target_metric.unit})")
     metrics = {name: problem.value(metric(name), x_best) for name in spec.metrics}
@@ -384,7 +389,7 @@ def _search(spec, problem, progress, start_time):
     return OptimiseResult(
         variables={v.key: float(x) for v, x in zip(spec.variables, x_best)},
         objective=float(problem.value(target_metric, x_best)), metric=spec.objective, sense=spec.sense,
-        target=spec.target, metrics=metrics, converged=bool(success and not infeasible and not kinks and not missed),
+        target=spec.target, metrics=metrics, converged=bool(success and not infeasible and not kinks and not missed and not absent),
         evaluations=problem.builds, history=tuple(history), message=message, notes=tuple(notes),
         gradient=gradient, variable_units={v.key: _unit_of(v) for v in spec.variables},
         metric_units={name: metric(name).unit for name in spec.metrics},

@@ -124,6 +124,13 @@ class Problem:
         self.defined.add(metric.name)
         return float(value)
 
+    def exists(self, metric, x):
+        """Whether ``metric`` has a value at design ``x`` (a critical speed or range on the span; every other
+        metric always has one), not the stand-in :meth:`value` gives where it does not."""
+        if metric.kind in (PARAMETERS, GEOMETRY, HANDLING):
+            return True
+        return speed_crossings(metric.name, self.design(x).critical)[0] is not None
+
     def gradient(self, metric, x):
         """``d metric / d x`` (SI per SI unit of each variable) at design ``x``."""
         design = self.design(x)
