@@ -107,3 +107,20 @@ def test_a_member_input_set_by_name_is_refused_where_the_model_lacks_it_and_quie
         built = bm.Scenario("jamis", "relaxed", model="arms").build({"k_arms": 20.0})
     assert built.arms.stiffness == 20.0
     assert not [w for w in caught if "no stiffness or damping given" in str(w.message)]
+
+
+def test_a_member_input_at_its_bound_is_differenced_on_its_one_side(tmp_path):
+    """The front tyre's pneumatic trail and the arms' stiffness are 0 by default, the least they take: the central
+    difference stepped to -1e-4 and was refused ("tpF: a number >= 0, got -0.0001", a value never given). Where
+    one side cannot be built the difference is one-sided: ``--inputs tpF`` then equals its exact sensitivity row
+    to 1e-3 relative (a forward difference of step 1e-4 m; the capsize speed's curvature in the trail makes the
+    rest), and an optimisation whose box starts at that bound converges there."""
+    scenario = bm.Scenario("benchmark", model="tyre")
+    exact = bm.sensitivity(scenario, names=("tpF",))
+    chained = bm.geometry_sensitivity(scenario, ["tpF"])["tpF"]
+    assert chained["weave_speed"] == pytest.approx(exact.d_weave_speed["tpF"], rel=1e-3)
+    assert chained["capsize_speed"] == pytest.approx(exact.d_capsize_speed["tpF"], rel=1e-3)
+    spec = tmp_path / "o.yaml"
+    spec.write_text("bike: benchmark\nmodel: tyre\nvariables:\n  tpF: {min: 0, max: 30 mm}\nmaximise: capsize-speed\n")
+    result = bm.optimise(str(spec))
+    assert exact.d_capsize_speed["tpF"] < 0 and result.converged and result.variables["tpF"] == 0.0

@@ -504,18 +504,36 @@ def geometry_sensitivity(scenario: Scenario, keys: "str | Sequence[str]", result
         h = step * abs(x) if x else step
         estimates = []
         for hh in (h, 2 * h):
-            a, b = scenario.build({key: x + hh}), scenario.build({key: x - hh})
+            a, b, width = _sides(scenario, key, x, hh)
             if member:
                 va, vb = a.values(), b.values()
-                dp = {n: (va[n] - vb[n]) / (2 * hh) for n in result.params}
+                dp = {n: (va[n] - vb[n]) / width for n in result.params}
             else:
-                dp = {n: (getattr(a.parameters, n) - getattr(b.parameters, n)) / (2 * hh) for n in result.params}
-            dS = None if built.stiffness is None else (np.asarray(a.stiffness) - np.asarray(b.stiffness)) / (2 * hh)
+                dp = {n: (getattr(a.parameters, n) - getattr(b.parameters, n)) / width for n in result.params}
+            dS = None if built.stiffness is None else (np.asarray(a.stiffness) - np.asarray(b.stiffness)) / width
             estimates.append({k: _chain(result, k, dp, dS) for k in SPEEDS})
         out[key] = {"value": x, "step": h, **estimates[0],
                     "difference_check": max((abs(estimates[0][k] - estimates[1][k])
                                              for k in SPEEDS if estimates[0][k] is not None), default=None)}
     return freeze(out)
+
+
+def _sides(scenario, key, x, h):
+    """``(plus, minus, width)``: ``scenario`` built with input ``key`` at ``x + h`` and ``x - h`` and their
+    distance ``2 h``; where one side is outside what the input takes (a relaxation length or an arms'
+    stiffness at its bound 0), that side is ``x`` itself and the width ``h`` (a one-sided difference)."""
+    sides = []
+    for value in (x + h, x - h):
+        try:
+            sides.append(scenario.build({key: value}))
+        except InputError:
+            sides.append(None)
+    if sides[0] is None and sides[1] is None:
+        scenario.build({key: x - h})                            # neither side can be built: its reason
+    if None in sides:
+        base = scenario.build({key: x})
+        return (sides[0] or base), (sides[1] or base), h
+    return sides[0], sides[1], 2 * h
 
 
 def _all_member_derivatives(built, result):

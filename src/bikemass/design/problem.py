@@ -185,19 +185,37 @@ class Problem:
                 params[variable.key][k] = 1.0
                 continue
             h = _step_size(x[k])
-            plus, minus = (self.design(np.where(np.arange(n) == k, x[k] + s, x)).built for s in (h, -h))
+            plus, minus, width = self._sides(x, k, h)
             for name in NAMES:
-                params[name][k] = (getattr(plus.parameters, name) - getattr(minus.parameters, name)) / (2 * h)
+                params[name][k] = (getattr(plus.parameters, name) - getattr(minus.parameters, name)) / width
             vp, vm = plus.values(), minus.values()
             for name in values:
-                values[name][k] = (vp[name] - vm[name]) / (2 * h)
+                values[name][k] = (vp[name] - vm[name]) / width
             if plus.stiffness is not None:
                 for entry, ((i, j),) in STIFFNESS_CELLS.items():
-                    stiffness[entry][k] = (plus.stiffness[i, j] - minus.stiffness[i, j]) / (2 * h)
+                    stiffness[entry][k] = (plus.stiffness[i, j] - minus.stiffness[i, j]) / width
         nonzero = lambda columns: {k: c for k, c in columns.items() if np.any(c != 0)}   # noqa: E731
         found = self._jacobians[key] = {"parameters": nonzero(params), "values": nonzero(values),
                                         "stiffness": nonzero(stiffness)}
         return found
+
+    def _sides(self, x, k, h):
+        """``(plus, minus, width)``: the designs with variable ``k`` moved by ``+h`` and ``-h`` (built) and their
+        distance ``2 h``; where one side is outside what the input takes (a member input at its bound 0), that
+        side is ``x`` itself and the width ``h`` (one-sided)."""
+        n = len(x)
+        sides = []
+        for s in (h, -h):
+            try:
+                sides.append(self.design(np.where(np.arange(n) == k, x[k] + s, x)).built)
+            except InputError:
+                sides.append(None)
+        if None not in sides:
+            return sides[0], sides[1], 2 * h
+        if sides[0] is None and sides[1] is None:
+            self.design(np.where(np.arange(n) == k, x[k] - h, x))     # neither side: its reason
+        base = self.design(x).built
+        return (sides[0] or base), (sides[1] or base), h
 
     def hqm_curve(self, x):
         """The HQM curve of design ``x`` (:attr:`Design.hqm_curve`)."""
