@@ -179,8 +179,16 @@ def _state(roll, steer, speed):
 
 
 def _yaw_rate(bike, roll, steer, speed):
-    pitch = bike.pitch(roll, steer)
+    pitch = bike.pitch(roll, steer, guess=0.0)          # the upright configuration's branch, whatever came before
     return float(bike.speeds(roll, pitch, steer, (speed, 0.0, 0.0))[2]), pitch
+
+
+def _roll_force(bike, roll, steer, speed):
+    """The roll equation's residual (N m) of a steady turn, with the pitch of the upright configuration's branch
+    (the solver's pitch starts from its last solution otherwise: a scan over sharp turns could leave it on
+    the branch where the frame has pitched over, and the same turn gave another residual)."""
+    bike.pitch(roll, steer, guess=0.0)
+    return bike.steady_forces(_state(roll, steer, speed))[1]
 
 
 def _linear(parameters, speed, steer):
@@ -200,6 +208,81 @@ def _roll_guess(parameters, speed, steer):
         return roll
     p = parameters
     return math.atan(speed * speed * math.tan(steer) * math.cos(p.lam) / (p.g * p.w))
+
+
+def _upright_roll(bike, p, v, delta):
+    """The lean (rad) of the upright steady turn at steer ``delta`` (rad) and speed ``v``: the roll equation solved
+    from :func:`_roll_guess`; ArithmeticError where none is found, or where the lean found is past lying flat or
+    turns the bicycle against its steer (no upright turn)."""
+    roll = float(_root(lambda x: [_roll_force(bike, x[0], delta, v)], [_roll_guess(p, v, delta)],
+                       "no lean balances it")[0])
+    yaw_rate, _ = _yaw_rate(bike, roll, delta, v)
+    if not abs(roll) < math.pi / 2 or (delta and yaw_rate * delta <= 0):
+        raise ArithmeticError(f"the lean that balances it, {roll:.3g} rad, is past lying flat or turns the bicycle "
+                              "against its steer: no upright turn")
+    return roll
+
+
+def _radius_turn(bike, p, v, R):
+    """``(roll, steer)`` (rad) of the upright steady turn on the rear contact's circle of radius ``R`` (m) at speed
+    ``v``: Newton's method on both equations from the kinematic steer, and where that finds no upright turn (a
+    sharp turn, far from its start), the steer whose upright turn has that radius, bracketed over steer angles
+    and refined by Brent's method (each steer's lean by :func:`_upright_roll`)."""
+    delta0 = math.atan(p.w / (R * math.cos(p.lam)))
+
+    def residual(x):
+        yaw_rate, _ = _yaw_rate(bike, x[0], x[1], v)
+        return [_roll_force(bike, x[0], x[1], v), (yaw_rate * R - v) / v]
+    try:
+        roll, delta = (float(z) for z in _root(residual, [_roll_guess(p, v, delta0), delta0], "no steady turn"))
+        if abs(roll) < math.pi / 2 and abs(delta) < math.pi / 2 and delta * R > 0:
+            return roll, delta
+    except ArithmeticError:
+        pass
+    # lazy: scipy's bracketed root finder only for a sharp turn
+    from scipy.optimize import brentq
+
+    def miss(delta):                      # the upright turn's curvature at this steer minus the circle's
+        yaw_rate, _ = _yaw_rate(bike, _upright_roll(bike, p, v, delta), delta, v)
+        return yaw_rate / v - 1 / R
+    steers = math.copysign(1.0, R) * np.linspace(1e-3, math.pi / 2 - 1e-3, STEER_SCAN)
+    found = {}
+    for k, delta in enumerate(steers.tolist()):
+        try:
+            found[k] = miss(delta)
+        except ArithmeticError:
+            continue
+    for k, f in found.items():                  # a sign change between neighbouring steers that both have a turn
+        if f == 0:
+            return _upright_roll(bike, p, v, steers[k]), float(steers[k])
+        if k + 1 in found and f * found[k + 1] < 0:
+            delta = brentq(miss, steers[k], steers[k + 1], xtol=1e-14, rtol=4 * np.finfo(float).eps)
+            return _upright_roll(bike, p, v, delta), float(delta)
+    for k, f in found.items():                  # or between a steer with a turn and the edge of the steers that have one
+        for step in (1, -1):
+            if 0 <= k + step < len(steers) and k + step not in found:
+                edge, f_edge = _edge(miss, float(steers[k]), float(steers[k + step]))
+                if f * f_edge < 0:
+                    delta = brentq(miss, float(steers[k]), edge, xtol=1e-14, rtol=4 * np.finfo(float).eps)
+                    return _upright_roll(bike, p, v, delta), float(delta)
+    raise ArithmeticError("no steady turn")
+
+
+def _edge(f, inside, outside, halvings=40):
+    """``(x, f(x))``: the point nearest ``outside`` where ``f`` is still defined (no ArithmeticError), found by
+    halving the interval from ``inside`` (defined) towards ``outside`` (not)."""
+    f_inside = f(inside)
+    for _ in range(halvings):
+        middle = 0.5 * (inside + outside)
+        try:
+            f_inside, inside = f(middle), middle
+        except ArithmeticError:
+            outside = middle
+    return inside, f_inside
+
+
+STEER_SCAN = 64
+"""Steer angles (from 0 to pi/2) on which a sharp circle's steer is bracketed (:func:`_radius_turn`)."""
 
 
 def _root(function, guess, what):
@@ -262,43 +345,24 @@ def steady_turn(system: "BenchmarkParameters | Scenario | Built", speed: float, 
     bike = NonlinearWhipple(params)
     p = params
 
-    def roll_force(roll, delta):
-        return bike.steady_forces(_state(roll, delta, v))[1]
-
     if steer is not None:
         if isinstance(steer, bool) or not isinstance(steer, numbers.Real) or not abs(steer) < math.pi / 2:
             raise InputError("steer", short(steer), "a steer angle in rad, below pi/2 in size")
         delta = float(steer)
         try:
-            roll = float(_root(lambda x: [roll_force(x[0], delta)], [_roll_guess(p, v, delta)], "no lean balances it")[0])
+            roll = _upright_roll(bike, p, v, delta)
         except ArithmeticError as exc:
             raise InputError("steer", short(steer), f"a steer angle with a steady turn at {v:g} m/s ({exc})") from None
-        yaw_rate, _ = _yaw_rate(bike, roll, delta, v)
-        if not abs(roll) < math.pi / 2 or (delta and yaw_rate * delta <= 0):
-            raise InputError("steer", short(steer), f"a steer angle with a steady turn at {v:g} m/s (the lean that "
-                             f"balances it, {roll:.3g} rad, is past lying flat or turns the bicycle against its "
-                             "steer: no upright turn)")
     else:
         if isinstance(radius, bool) or not isinstance(radius, numbers.Real) or not finite_real(radius) \
                 or radius == 0:
             raise InputError("radius", short(radius), "a radius in m, finite and not 0 (negative turns left)")
-        R = float(radius)
-        delta0 = math.atan(p.w / (R * math.cos(p.lam)))
-
-        def residual(x):
-            yaw_rate, _ = _yaw_rate(bike, x[0], x[1], v)
-            return [roll_force(x[0], x[1]), (yaw_rate * R - v) / v]
-
         try:
-            roll, delta = (float(z) for z in _root(residual, [_roll_guess(p, v, delta0), delta0], "no steady turn"))
+            roll, delta = _radius_turn(bike, p, v, float(radius))
         except ArithmeticError as exc:
             raise InputError("radius", short(radius), f"a radius with a steady turn at {v:g} m/s ({exc})") from None
-        if not (abs(roll) < math.pi / 2 and abs(delta) < math.pi / 2):
-            raise InputError("radius", short(radius), f"a radius with a steady turn at {v:g} m/s (the lean and "
-                             f"steer that balance it, {roll:.3g} rad and {delta:.3g} rad, are past lying flat or "
-                             "turning the bars round: no upright turn)")
-    forces = bike.steady_forces(_state(roll, delta, v))
     yaw_rate, pitch = _yaw_rate(bike, roll, delta, v)
+    forces = bike.steady_forces(_state(roll, delta, v))         # at that pitch (the solver's last)
     linear_steer = p.w * yaw_rate / (v * math.cos(p.lam))          # the linear model's circle: same radius
     linear_roll, linear_torque = _linear(p, v, linear_steer)
     if not (abs(linear_roll) < math.pi / 2 and abs(linear_steer) < math.pi / 2):
