@@ -124,3 +124,27 @@ def test_a_member_input_at_its_bound_is_differenced_on_its_one_side(tmp_path):
     spec.write_text("bike: benchmark\nmodel: tyre\nvariables:\n  tpF: {min: 0, max: 30 mm}\nmaximise: capsize-speed\n")
     result = bm.optimise(str(spec))
     assert exact.d_capsize_speed["tpF"] < 0 and result.converged and result.variables["tpF"] == 0.0
+
+
+@pytest.mark.parametrize("model, bike, rider, stiffness, change, words", [
+    ("rider-lean", "jamis", "relaxed", None, {"zU": 1.0}, "upper body: z = 1 m is below the ground"),
+    ("rider-lean", "jamis", "relaxed", None, {"zhip": -5.0}, "hip_z = -5 m is more than 3 m above the ground"),
+    ("rider-lean", "jamis", "relaxed", None, {"xU": 100.0}, "x = 100 m is more than 3 m from the rear contact"),
+    ("rider-lean", "jamis", "relaxed", None, {"mU": 1e6}, "mass = 1e\\+06 kg is outside 5..300 kg"),
+    ("flexible", "jamis", "relaxed", "steel", {"kf": 1e20}, "fork bending: stiffness = 1e\\+20 N m/rad is outside"),
+    ("flexible", "jamis", "relaxed", "steel", {"cs": 1e9}, "steer_damping = 1e\\+09 N m s/rad is above 1000"),
+    ("tyre", "benchmark", None, None, {"tpF": 5.0}, "pneumatic_trail = 5 m is above 0.1 m"),
+])
+def test_a_member_input_no_rider_or_bicycle_has_is_warned(model, bike, rider, stiffness, change, words):
+    """Values no rider, frame or tyre has, given by name (as a sweep or an optimisation gives them), are warned about
+    as the bicycle's are: an upper body below the ground or far from the bicycle, a fork stiffer than any, a
+    pneumatic trail of metres."""
+    with pytest.warns(bm.BikemassWarning, match=words):
+        bm.Scenario(bike, rider, stiffness, model=model).build(change)
+
+
+def test_an_upper_body_inertia_that_is_no_inertia_is_refused():
+    """``IUxz = 100`` makes the upper body's inertia tensor indefinite (a principal moment of -97.8 kg m^2): refused
+    in one line, as the bicycle's bodies' are."""
+    with pytest.raises(bm.InputError, match="IUxz: an inertia tensor with principal moments >= 0"):
+        bm.Scenario("jamis", "relaxed", model="rider-lean").build({"IUxz": 100.0})

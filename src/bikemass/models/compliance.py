@@ -5,11 +5,12 @@ The value only (numpy, no scipy: the model family imports it); the beam models t
 :mod:`bikemass.fe.twist` (the rear frame) and :mod:`bikemass.fe.fork`.
 """
 
+import warnings
 from dataclasses import dataclass, field, fields, replace
 
 import numpy as np
 
-from ..core.errors import InputError
+from ..core.errors import BikemassWarning, InputError
 from .plausibility import STIFFNESS_RANGE, warn
 
 DAMPING_RATIO = 0.0
@@ -65,6 +66,9 @@ class Compliance:
                              f"a number in [0, 1) (an underdamped structure), got {self.damping_ratio}")
         if self.modal_mass < 0:
             raise InputError(f"compliance {self.name}", "modal_mass", f"a number >= 0 (kg m^2/rad^2), got {self.modal_mass}")
+        if not STIFFNESS_RANGE[0] <= self.stiffness <= STIFFNESS_RANGE[1]:
+            warn(f"compliance {self.name}: stiffness = {self.stiffness:.6g} N m/rad is outside {STIFFNESS_RANGE[0]:g}.."
+                 f"{STIFFNESS_RANGE[1]:g} N m/rad (measured frames and forks: 1e3..1e5); computed as given")
         L, (Jx, Jz), m = self.modal_momentum, self.modal_moment, self.modal_mass
         if (L == 0) != (m == 0) or (L == 0 and (Jx != 0 or Jz != 0)):
             raise InputError(f"compliance {self.name}", "modal_momentum", "a nonzero lateral momentum and modal "
@@ -122,7 +126,9 @@ def compliance_from_node(node):
     if isinstance(stiffness.value, dict):
         values["stiffness"] = measured_stiffness(stiffness, values["point"], values["direction"])
     try:
-        found = Compliance(**values)
+        with warnings.catch_warnings():                     # its range said below, naming the file and the key
+            warnings.simplefilter("ignore", BikemassWarning)
+            found = Compliance(**values)
     except InputError as exc:                              # the file and the key, not the axis's name alone
         node.fail(exc.expected, None if exc.key == "(values)" else exc.key)
     if not STIFFNESS_RANGE[0] <= found.stiffness <= STIFFNESS_RANGE[1]:

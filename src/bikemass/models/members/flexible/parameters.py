@@ -18,12 +18,13 @@ from dataclasses import dataclass, fields, replace
 
 
 from ....core.errors import InputError
+from ...plausibility import warn
 from ...compliance import Compliance, compliance_from_node
 
 COORDINATES = {"frame": "frame-twist", "fork": "fork-bending"}
 """Each compliance's coordinate (the state's name in the linear model)."""
 _KEYS = {"frame": "r", "fork": "f"}
-_PLACEHOLDER = Compliance("held", (0.0, 0.0), (1.0, 0.0), 1.0, 0.0, (0.0, 0.0), 0.0)
+_PLACEHOLDER = Compliance("held", (0.0, 0.0), (1.0, 0.0), 1e4, 0.0, (0.0, 0.0), 0.0)
 """Values for a compliance held rigid (its coordinate is removed, so they enter nothing)."""
 
 
@@ -32,6 +33,10 @@ STEER_DAMPING = 0.34
 steer oscillations of the Davis instrumented bicycle (front wheel off the ground, springs on the bars;
 Moore 2012, PhD dissertation "Human Control of a Bicycle", UC Davis, ch. "Davis Instrumented
 Bicycle", "Bearing Friction"; docs/models-flexible.md, "Damping")."""
+
+
+MAX_STEER_DAMPING = 1e3
+"""Steering-bearing dampings (N m s/rad) above this are warned about."""
 
 
 @dataclass(frozen=True)
@@ -54,6 +59,9 @@ class Compliances:
                         value == float("inf")):
                     raise InputError("compliances", f.name, f"a finite number >= 0 (N m s/rad), got {value!r}")
                 object.__setattr__(self, f.name, float(value))
+                if value > MAX_STEER_DAMPING:
+                    warn(f"compliances: steer_damping = {value:.6g} N m s/rad is above {MAX_STEER_DAMPING:g} N m s/rad "
+                         "(a steering damper's: 0..10 N m s/rad); computed as given")
             elif value is not None and not isinstance(value, Compliance):
                 raise InputError("compliances", f.name, f"a Compliance or None, got {type(value).__name__}")
 

@@ -24,6 +24,7 @@ import numpy as np
 from ....core.errors import InputError
 from ....mass.inertia import MassProperties, combine
 from ...parameters import NAMES, BenchmarkParameters
+from ...plausibility import inertia_problem, warn
 
 
 def unit(symbol, description):
@@ -54,6 +55,13 @@ LEAN_DAMPING = 50.0
 """De Lorenzo & Hubbard (1996) via Moore (2012): passive lean damping, N m s/rad."""
 
 
+UPPER_MASS = (5.0, 300.0)
+"""Upper-body masses (kg) outside this range are warned about."""
+UPPER_REACH = 3.0
+"""An upper body's centre of mass or hip axis more than this (m) above the ground or from the rear contact, or
+below the ground, is warned about."""
+
+
 @dataclass(frozen=True)
 class UpperBody:
     """The leaning part of the rider, upright, in the benchmark frame (x forward, z down, origin at
@@ -70,6 +78,22 @@ class UpperBody:
 
     def __post_init__(self):
         _checked(self, "upper body", positive=("mass", "Ixx", "Iyy", "Izz"))
+        I = np.array([[self.Ixx, 0.0, self.Ixz], [0.0, self.Iyy, 0.0], [self.Ixz, 0.0, self.Izz]])
+        problem = inertia_problem(I)
+        if problem is not None and "principal moments" in problem:
+            raise InputError("upper body", "Ixz", problem)
+        if problem is not None:
+            warn(f"upper body: {problem}; computed as given")
+        if not UPPER_MASS[0] <= self.mass <= UPPER_MASS[1]:
+            warn(f"upper body: mass = {self.mass:.6g} kg is outside {UPPER_MASS[0]:g}..{UPPER_MASS[1]:g} kg (a rider's "
+                 "upper body: 20..80 kg); computed as given")
+        for name, value in (("z", self.z), ("hip_z", self.hip_z)):
+            if not -UPPER_REACH <= value <= 0:
+                warn(f"upper body: {name} = {value:.6g} m is {'below the ground' if value > 0 else 'more than '}"
+                     f"{'' if value > 0 else f'{UPPER_REACH:g} m above the ground'}; computed as given")
+        if abs(self.x) > UPPER_REACH:
+            warn(f"upper body: x = {self.x:.6g} m is more than {UPPER_REACH:g} m from the rear contact; computed as "
+                 "given")
 
     def properties(self):
         """The upper body as :class:`~bikemass.mass.inertia.MassProperties`."""

@@ -35,6 +35,10 @@ RELAXATION_RANGE = (1e-3, 10.0)
 0.3 m)."""
 CORNERING_RANGE = (1.0, 1e3)
 """Cornering coefficients (1/rad) outside this range are warned about (bicycle tyres: 8 to 17)."""
+MAX_TRAIL = 0.1
+"""Pneumatic trails (m) above this are warned about (a measured bicycle tyre's: 0.017 m, :data:`MEASURED_TRAIL`)."""
+MAX_TWISTING = 0.1
+"""Twisting torque coefficients (m/rad) above this are warned about (measured: -0.007..0.006 m/rad)."""
 MOMENT_KEYS = ("pneumatic_trail", "twisting_coefficient")
 """Optional keys: the tyre's moments about the ground normal (default 0, no moment)."""
 _DIMENSIONS = {"cornering_coefficient": "inverse angle", "camber_coefficient": "inverse angle",
@@ -82,6 +86,11 @@ class Tyre:
             warn(f"tyre: cornering_coefficient = {c_alpha:.6g} 1/rad is outside {CORNERING_RANGE[0]:g}.."
                  f"{CORNERING_RANGE[1]:g} 1/rad (bicycle tyres: 8..17 1/rad; the critical speeds of a much stiffer "
                  "one may be lost); computed as given")
+        for name, value, unit, limit in (("pneumatic_trail", self.pneumatic_trail, "m", MAX_TRAIL),
+                                         ("twisting_coefficient", self.twisting_coefficient, "m/rad", MAX_TWISTING)):
+            if value > limit:
+                warn(f"tyre: {name} = {value:.6g} {unit} is above {limit:g} {unit} (bicycle tyres: about 0.017 m and "
+                     "-0.007..0.006 m/rad); computed as given")
         if c_gamma > c_alpha:
             warn(f"tyre: camber_coefficient = {c_gamma:.6g} 1/rad is more than the cornering_coefficient "
                  f"{c_alpha:.6g} 1/rad (bicycle tyres: about 0.05 of it); computed as given")
