@@ -162,7 +162,7 @@ def test_a_flexible_blocks_bad_field_names_the_file_and_key_and_an_absurd_stiffn
     bad.write_text(yaml.safe_dump(document))
     assert main(["stability", str(bad)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and f"{bad}: flexible.frame.modal_momentum: a nonzero lateral momentum" in err[0]
+    assert len(err) == 1 and f"{bad}: flexible.frame.modal_mass: a nonzero lateral momentum" in err[0]
     document = yaml.safe_load(path.read_text())
     document["flexible"]["frame"]["stiffness"] = 1e-3
     soft = tmp_path / "soft.yaml"

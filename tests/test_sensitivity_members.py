@@ -129,3 +129,12 @@ def test_the_command_line_gives_a_members_own_parameters_as_rows(capsys):
     assert main(["sensitivity", "benchmark", "--model", "tyre", "--inputs", "CaF", "--format", "json"]) == 0
     chained = json.loads(capsys.readouterr().out)["inputs"]["CaF"]       # an input of the scenario: its own row
     assert chained["weave_speed"] == pytest.approx(library.d_weave_speed["CaF"], rel=1e-9)
+
+
+def test_names_are_taken_from_any_iterable_and_an_empty_one_is_refused():
+    """``names=iter(["c"])`` gave no rows (the check used the iterator up) and ``names=()`` passed: an iterable is
+    read once, and an empty one is refused, for the Whipple bicycle and a member alike."""
+    for system in (bm.parameters("benchmark"), bm.Scenario("benchmark", model="tyre")):
+        assert list(bm.sensitivity(system, names=iter(["c"]), max_speed=15.0).d_weave_speed) == ["c"]
+        with pytest.raises(bm.InputError, match="names"):
+            bm.sensitivity(system, names=())

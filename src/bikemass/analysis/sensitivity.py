@@ -266,10 +266,11 @@ def sensitivity(system: "BenchmarkParameters | RiderLeanParameters | Scenario | 
 
 def _member_names(names, own, choice):
     """``names`` (default: every one of ``own``, the parameters of the code of the member ``choice``) checked
-    to be among ``own`` (InputError otherwise)."""
+    to be among ``own`` and at least one (InputError otherwise)."""
     if names is None:
         return own
-    if isinstance(names, str) or not all(isinstance(n, str) and n in own for n in names):
+    names = names if isinstance(names, str) else tuple(names)
+    if isinstance(names, str) or not names or not all(isinstance(n, str) and n in own for n in names):
         raise InputError("names", short(names), f"a sequence of the {choice.name} model's parameter names "
                                                 f"({', '.join(own)})")
     return tuple(names)
@@ -399,9 +400,10 @@ def _checked(params, S, vmax, names):
     S = _stiffness(S)
     if not finite_real(vmax) or not 0 < vmax <= MAX_SPEED:
         raise InputError("vmax", short(vmax), f"a speed in m/s above 0 and at most {MAX_SPEED:g}")
-    if isinstance(names, str) or not all(n in NAMES for n in names):
+    names = names if isinstance(names, str) else tuple(names)
+    if isinstance(names, str) or not names or not all(n in NAMES for n in names):
         raise InputError("names", short(names), f"a sequence of benchmark parameter names ({', '.join(NAMES)})")
-    return params, S, tuple(names)
+    return params, S, names
 
 
 def sensitivity_figure(result, title="", size=None):

@@ -71,7 +71,8 @@ class Compliance:
                  f"{STIFFNESS_RANGE[1]:g} N m/rad (measured frames and forks: 1e3..1e5); computed as given")
         L, (Jx, Jz), m = self.modal_momentum, self.modal_moment, self.modal_mass
         if (L == 0) != (m == 0) or (L == 0 and (Jx != 0 or Jz != 0)):
-            raise InputError(f"compliance {self.name}", "modal_momentum", "a nonzero lateral momentum and modal "
+            key = "modal_mass" if L != 0 and m == 0 else "modal_momentum"     # the field that is missing
+            raise InputError(f"compliance {self.name}", key, "a nonzero lateral momentum and modal "
                              "mass together, or none of L, J and m (a field is carried by one particle)")
 
     @classmethod
