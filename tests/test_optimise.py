@@ -371,3 +371,15 @@ def test_a_design_where_the_objective_does_not_exist_is_not_converged_and_a_cons
     assert main(["optimise", str(spec), "--quiet"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "constraints.wobble-speed: a metric that exists somewhere in the box" in err[0]
+
+
+def test_a_design_of_a_set_that_holds_its_rider_says_so(tmp_path):
+    """The benchmark's set holds its rider: the design's parameter file (``optimise -o``) was written without
+    ``rider_included``, so it read back as a bicycle with no rider (and the arms member warned no rider rides).
+    It carries ``rider_included: true`` now and reads back with the rider in the set."""
+    spec = tmp_path / "o.yaml"
+    spec.write_text("bike: benchmark\nmodel: tyre\nvariables:\n  c: {min: 0.05, max: 0.1}\ntarget: {weave-speed: 4.4}\n")
+    design = tmp_path / "d.yaml"
+    assert main(["optimise", str(spec), "-o", str(design), "--quiet"]) == 0
+    assert yaml.safe_load(design.read_text())["rider_included"] is True
+    assert bm.Scenario(str(design)).rider_label() == "rider in the parameter set"

@@ -118,7 +118,7 @@ def write_design(spec, result, path):
     problem = Problem(spec)
     x = [result.variables[v.key] for v in spec.variables]
     bike, rider, params, _ = split_changes(problem.changes(x))
-    included = spec.rider not in (None, "none")
+    included = spec.rider not in (None, "none") or problem.scenario.rider_in_set()
     doc = _bicycle_design(problem, bike) if bike and not rider and not params else None
     if doc is not None:
         options = _spec_options(spec)

@@ -270,13 +270,18 @@ class Scenario:
         """
         if self.rider not in (None, "none"):
             return f"rider {self.rider}" if isinstance(self.rider, (str, os.PathLike)) else "rider"
+        return "rider in the parameter set" if self.rider_in_set() else "no rider"
+
+    def rider_in_set(self):
+        """Whether the bicycle is a parameter file whose set holds its rider (``rider_included: true``, the
+        benchmark, what ``params`` writes with a rider; a ``MooreRiderLean2012`` set); only a parameter file is
+        read for it."""
         try:
             node = self.inputs.parameter_node
-            included = node is not None and (self.inputs.lean_set is not None or
-                                             node.get("rider_included", False).value is True)
+            return node is not None and (self.inputs.lean_set is not None or
+                                         node.get("rider_included", False).value is True)
         except InputError:
-            included = False
-        return "rider in the parameter set" if included else "no rider"
+            return False
 
     def frame_label(self):
         """What this scenario's frame is, in words for a title: as
