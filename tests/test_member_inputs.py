@@ -148,3 +148,19 @@ def test_an_upper_body_inertia_that_is_no_inertia_is_refused():
     in one line, as the bicycle's bodies' are."""
     with pytest.raises(bm.InputError, match="IUxz: an inertia tensor with principal moments >= 0"):
         bm.Scenario("jamis", "relaxed", model="rider-lean").build({"IUxz": 100.0})
+
+
+def test_changes_to_one_part_are_made_together():
+    """``IUzz = 10`` and ``IUxz = 3`` make a positive definite upper-body inertia, but set one at a time the part
+    passed through ``IUxz = 3`` with the old ``IUzz`` (indefinite) and was refused: a part's changes are made at
+    once, so its checks see it as asked for."""
+    built = bm.Scenario("jamis", "relaxed", model="rider-lean").build({"IUzz": 10.0, "IUxz": 3.0})
+    assert (built.values()["IUzz"], built.values()["IUxz"]) == (10.0, 3.0)
+
+
+def test_arms_on_a_parameter_set_with_a_seated_rider_have_no_grips_to_check():
+    """A parameter set (no contacts: section) with a rider seated and the arms member crashed looking for its
+    grips ("internal error AttributeError"); where the hands are is not known there, and a stiffness says so."""
+    with pytest.warns(bm.BikemassWarning, match="not known to be on a grip"):
+        built = bm.Scenario("kooijman2008", "relaxed", model="arms", arms={"stiffness": 10.0}).build()
+    assert built.arms.stiffness == 10.0

@@ -196,3 +196,14 @@ def test_the_radius_of_every_upright_turn_gives_its_steer_back(meijaard):
             assert back.steer == pytest.approx(steer, abs=1e-7) and back.roll == pytest.approx(turn.roll, abs=1e-7)
             found += 1
     assert found >= 25
+
+
+def test_a_fast_sharp_turn_is_found_from_its_radius_too(meijaard):
+    """At 20 m/s, 0.0336 rad of steer leans the benchmark 1.44 rad on a 4.1 m circle: the radius route's bracket
+    held steers where no lean balances and the search stopped there ("no lean balances it", a word about a lean
+    for a radius given); such points inside a bracket are stepped round now, and the turn comes back."""
+    turn = bm.steady_turn(meijaard, 20.0, steer=0.03363)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", bm.BikemassWarning)
+        back = bm.steady_turn(meijaard, 20.0, radius=turn.radius)
+    assert back.steer == pytest.approx(0.03363, abs=1e-8) and back.roll == pytest.approx(turn.roll, abs=1e-8)

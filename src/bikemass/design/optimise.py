@@ -377,6 +377,10 @@ def _search(spec, problem, progress, start_time):
     if active:
         notes.append("at a bound of the box: " + ", ".join(active))
     missed = spec.sense == "target" and not abs(raw(u_best) - spec.target) <= TARGET_TOLERANCE * scale
+    for used in dict.fromkeys(m for m, _ in constraints):
+        if used.name != target_metric.name and not problem.exists(used, x_best):
+            notes.append(f"{used.name} does not exist at the design found: its constraint was checked on the stand-in "
+                         "for none (see above), not on a value")
     absent = not problem.exists(target_metric, x_best)
     if absent:
         notes.append(f"{target_metric.name} does not exist at the design found: its value is the stand-in for none "

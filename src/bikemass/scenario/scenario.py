@@ -529,7 +529,10 @@ class Scenario:
         seated = self.inputs.seated(bike, rider)
         if seated is None:
             return _IN_THE_SET if self.inputs.bicycle(bike).rider_included else (None,)
-        gaps = hand_gaps(seated, dict(self.inputs.bicycle(bike).contacts.grips))
+        contacts = self.inputs.bicycle(bike).contacts
+        if contacts is None:                      # a parameter set seated by its placement: no grips to reach
+            return (float("inf"),)
+        gaps = hand_gaps(seated, dict(contacts.grips))
         return (max((gap for gap, _ in gaps.values()), default=float("inf")),)
 
     def replace(self, **changes):

@@ -239,9 +239,6 @@ def _radius_turn(bike, p, v, R):
             return roll, delta
     except ArithmeticError:
         pass
-    # lazy: scipy's bracketed root finder only for a sharp turn
-    from scipy.optimize import brentq
-
     def miss(delta):                      # the upright turn's curvature at this steer minus the circle's
         yaw_rate, _ = _yaw_rate(bike, _upright_roll(bike, p, v, delta), delta, v)
         return yaw_rate / v - 1 / R
@@ -252,20 +249,45 @@ def _radius_turn(bike, p, v, R):
             found[k] = miss(delta)
         except ArithmeticError:
             continue
-    for k, f in found.items():                  # a sign change between neighbouring steers that both have a turn
-        if f == 0:
-            return _upright_roll(bike, p, v, steers[k]), float(steers[k])
-        if k + 1 in found and f * found[k + 1] < 0:
-            delta = brentq(miss, steers[k], steers[k + 1], xtol=1e-14, rtol=4 * np.finfo(float).eps)
-            return _upright_roll(bike, p, v, delta), float(delta)
-    for k, f in found.items():                  # or between a steer with a turn and the edge of the steers that have one
+    brackets = [(float(steers[k]), float(steers[k + 1])) for k, f in found.items()   # neighbours that both have a
+                if k + 1 in found and f * found[k + 1] <= 0]                           # turn, the sign changing
+    for k, f in found.items():                  # or a steer with a turn and the edge of the steers that have one
         for step in (1, -1):
             if 0 <= k + step < len(steers) and k + step not in found:
                 edge, f_edge = _edge(miss, float(steers[k]), float(steers[k + step]))
-                if f * f_edge < 0:
-                    delta = brentq(miss, float(steers[k]), edge, xtol=1e-14, rtol=4 * np.finfo(float).eps)
-                    return _upright_roll(bike, p, v, delta), float(delta)
+                if f * f_edge <= 0:
+                    brackets.append((float(steers[k]), edge))
+    for a, b in brackets:
+        delta = _bracketed_root(miss, a, b)
+        if delta is not None:
+            return _upright_roll(bike, p, v, delta), delta
     raise ArithmeticError("no steady turn")
+
+
+def _bracketed_root(f, a, b, depth=2):
+    """The root of ``f`` in ``[a, b]`` (a sign change of ``f`` there) by Brent's method, or ``None``; where ``f`` is
+    not defined somewhere inside (ArithmeticError), the interval is searched on a finer scan of its own for a
+    bracket without such points (``depth`` times)."""
+    # lazy: scipy's bracketed root finder only for a sharp turn
+    from scipy.optimize import brentq
+    try:
+        return float(brentq(f, a, b, xtol=1e-14, rtol=4 * np.finfo(float).eps))
+    except ArithmeticError:
+        if depth == 0:
+            return None
+    points = np.linspace(a, b, 17).tolist()
+    values = {}
+    for x in points:
+        try:
+            values[x] = f(x)
+        except ArithmeticError:
+            continue
+    for x, y in zip(points, points[1:]):
+        if x in values and y in values and values[x] * values[y] <= 0:
+            root = _bracketed_root(f, x, y, depth - 1)
+            if root is not None:
+                return root
+    return None
 
 
 def _edge(f, inside, outside, halvings=40):

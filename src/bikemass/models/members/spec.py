@@ -122,20 +122,27 @@ class Member:
 
 def with_inputs(typed, changes, inputs, source="changes"):
     """``typed`` (a member's frozen typed value) with each of ``changes`` (``{name: float}``, SI) put in the field
-    ``inputs[name]`` names (a dotted path through nested frozen dataclasses), the typed value's own checks
-    run on the result; :class:`~bikemass.core.errors.InputError` naming ``source`` and the change's name for
-    a value the member refuses or a field it does not have (a held compliance)."""
+    ``inputs[name]`` names (a dotted path through nested frozen dataclasses), all the changes of one part at once
+    (so that its checks see the part as asked for, not a half-changed one); the typed value's own checks run
+    on the result; :class:`~bikemass.core.errors.InputError` naming ``source`` and a change's name for a value
+    the member refuses or a field it does not have (a held compliance)."""
+    tree = {}
     for name, value in changes.items():
-        try:
-            typed = _replaced(typed, inputs[name].split("."), value)
-        except InputError as exc:
-            raise InputError(source, name, exc.expected) from None
-    return typed
+        *parents, leaf = inputs[name].split(".")
+        node = tree
+        for part in parents:
+            node = node.setdefault(part, {})
+        node[leaf] = (name, value)
+    try:
+        return _replaced(typed, tree)
+    except InputError as exc:
+        named = [n for n, path in ((n, inputs[n]) for n in changes) if path.split(".")[-1] == exc.key]
+        raise InputError(source, named[0] if named else ", ".join(changes), exc.expected) from None
 
 
-def _replaced(obj, path, value):
+def _replaced(obj, tree):
+    """``obj`` with the fields of ``tree`` (``{field: (name, value)}`` or ``{field: subtree}``) replaced at once."""
     if obj is None:
-        raise InputError("member", path[0], "a part the model has (this one is held: infinitely stiff)")
-    if len(path) == 1:
-        return dataclasses.replace(obj, **{path[0]: value})
-    return dataclasses.replace(obj, **{path[0]: _replaced(getattr(obj, path[0]), path[1:], value)})
+        raise InputError("member", next(iter(tree)), "a part the model has (this one is held: infinitely stiff)")
+    return dataclasses.replace(obj, **{field: _replaced(getattr(obj, field), sub) if isinstance(sub, dict) else sub[1]
+                                       for field, sub in tree.items()})

@@ -54,9 +54,10 @@ def check_hands(typed, gap, rider_in_set=False):
                           "given (give a rider, --rider POSE)", BikemassWarning, stacklevel=4)
         return
     if (typed.stiffness or typed.damping) and gap > HANDS_ON:
-        where = "not known to be on a grip" if gap == float("inf") else f"{gap * 1000:.0f} mm from the nearest grip"
-        warnings.warn(f"arms: a stiffness or damping between the rider and the bars, but a hand is {where} (a "
-                      "no-hands pose): applied as given", BikemassWarning, stacklevel=4)
+        where = ("not known to be on a grip (the bicycle has no grips to reach)" if gap == float("inf")
+                 else f"{gap * 1000:.0f} mm from the nearest grip (a no-hands pose)")
+        warnings.warn(f"arms: a stiffness or damping between the rider and the bars, but a hand is {where}: applied "
+                      "as given", BikemassWarning, stacklevel=4)
 
 
 def forearms_held(typed):

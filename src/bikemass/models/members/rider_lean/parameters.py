@@ -83,7 +83,9 @@ class UpperBody:
         if problem is not None and "principal moments" in problem:
             raise InputError("upper body", "Ixz", problem)
         if problem is not None:
-            warn(f"upper body: {problem}; computed as given")
+            small, middle, large = np.linalg.eigvalsh(I)
+            warn(f"upper body: the inertia breaks the triangle inequality (largest principal moment {large:.6g} > "
+                 f"{small:.6g} + {middle:.6g} kg m^2); computed as given")
         if not UPPER_MASS[0] <= self.mass <= UPPER_MASS[1]:
             warn(f"upper body: mass = {self.mass:.6g} kg is outside {UPPER_MASS[0]:g}..{UPPER_MASS[1]:g} kg (a rider's "
                  "upper body: 20..80 kg); computed as given")

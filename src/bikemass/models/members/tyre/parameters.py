@@ -38,7 +38,7 @@ CORNERING_RANGE = (1.0, 1e3)
 MAX_TRAIL = 0.1
 """Pneumatic trails (m) above this are warned about (a measured bicycle tyre's: 0.017 m, :data:`MEASURED_TRAIL`)."""
 MAX_TWISTING = 0.1
-"""Twisting torque coefficients (m/rad) above this are warned about (measured: -0.007..0.006 m/rad)."""
+"""Twisting torque coefficients (m/rad) above this are warned about (a measured tyre's camber moment: a few mm/rad)."""
 MOMENT_KEYS = ("pneumatic_trail", "twisting_coefficient")
 """Optional keys: the tyre's moments about the ground normal (default 0, no moment)."""
 _DIMENSIONS = {"cornering_coefficient": "inverse angle", "camber_coefficient": "inverse angle",
@@ -89,8 +89,8 @@ class Tyre:
         for name, value, unit, limit in (("pneumatic_trail", self.pneumatic_trail, "m", MAX_TRAIL),
                                          ("twisting_coefficient", self.twisting_coefficient, "m/rad", MAX_TWISTING)):
             if value > limit:
-                warn(f"tyre: {name} = {value:.6g} {unit} is above {limit:g} {unit} (bicycle tyres: about 0.017 m and "
-                     "-0.007..0.006 m/rad); computed as given")
+                warn(f"tyre: {name} = {value:.6g} {unit} is above {limit:g} {unit} (a measured bicycle tyre's pneumatic "
+                     "trail: 0.017 m; its camber moment: a few mm/rad); computed as given")
         if c_gamma > c_alpha:
             warn(f"tyre: camber_coefficient = {c_gamma:.6g} 1/rad is more than the cornering_coefficient "
                  f"{c_alpha:.6g} 1/rad (bicycle tyres: about 0.05 of it); computed as given")
