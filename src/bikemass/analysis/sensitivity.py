@@ -506,7 +506,7 @@ def geometry_sensitivity(scenario: Scenario, keys: "str | Sequence[str]", result
         h = step * abs(x) if x else step
         estimates = []
         for hh in (h, 2 * h):
-            a, b, width = _sides(scenario, key, x, hh)
+            a, b, width = difference_sides(lambda value, key=key: scenario.build({key: value}), x, hh)
             if member:
                 va, vb = a.values(), b.values()
                 dp = {n: (va[n] - vb[n]) / width for n in result.params}
@@ -520,20 +520,21 @@ def geometry_sensitivity(scenario: Scenario, keys: "str | Sequence[str]", result
     return freeze(out)
 
 
-def _sides(scenario, key, x, h):
-    """``(plus, minus, width)``: ``scenario`` built with input ``key`` at ``x + h`` and ``x - h`` and their
-    distance ``2 h``; where one side is outside what the input takes (a relaxation length or an arms'
-    stiffness at its bound 0), that side is ``x`` itself and the width ``h`` (a one-sided difference)."""
+def difference_sides(build, x, h):
+    """``(plus, minus, width)`` of a central difference of step ``h`` at ``x``: ``build(x + h)``, ``build(x - h)``
+    and their distance ``2 h``; where one side is outside what the input takes (``build`` raises InputError:
+    a relaxation length or an arms' stiffness at its bound 0), that side is ``build(x)`` itself and the width
+    ``h`` (a one-sided difference); where neither side can be built, the InputError of ``x - h``."""
     sides = []
     for value in (x + h, x - h):
         try:
-            sides.append(scenario.build({key: value}))
+            sides.append(build(value))
         except InputError:
             sides.append(None)
     if sides[0] is None and sides[1] is None:
-        scenario.build({key: x - h})                            # neither side can be built: its reason
+        build(x - h)                                             # neither side can be built: its reason
     if None in sides:
-        base = scenario.build({key: x})
+        base = build(x)
         return (sides[0] or base), (sides[1] or base), h
     return sides[0], sides[1], 2 * h
 

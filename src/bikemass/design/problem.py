@@ -16,7 +16,7 @@ import numpy as np
 
 from ..analysis.engine.critical import critical_speeds
 from ..analysis.model import state_matrix_derivatives, stiffness_state_derivatives
-from ..analysis.sensitivity import GEOMETRY_STEP, member_state_derivatives, speed_derivatives
+from ..analysis.sensitivity import GEOMETRY_STEP, difference_sides, member_state_derivatives, speed_derivatives
 from ..core.config import Node
 from ..core.errors import InputError
 from ..models.parameters import NAMES
@@ -185,7 +185,8 @@ class Problem:
                 params[variable.key][k] = 1.0
                 continue
             h = _step_size(x[k])
-            plus, minus, width = self._sides(x, k, h)
+            plus, minus, width = difference_sides(
+                lambda value, k=k: self.design(np.where(np.arange(n) == k, value, x)).built, x[k], h)
             for name in NAMES:
                 params[name][k] = (getattr(plus.parameters, name) - getattr(minus.parameters, name)) / width
             vp, vm = plus.values(), minus.values()
@@ -198,24 +199,6 @@ class Problem:
         found = self._jacobians[key] = {"parameters": nonzero(params), "values": nonzero(values),
                                         "stiffness": nonzero(stiffness)}
         return found
-
-    def _sides(self, x, k, h):
-        """``(plus, minus, width)``: the designs with variable ``k`` moved by ``+h`` and ``-h`` (built) and their
-        distance ``2 h``; where one side is outside what the input takes (a member input at its bound 0), that
-        side is ``x`` itself and the width ``h`` (one-sided)."""
-        n = len(x)
-        sides = []
-        for s in (h, -h):
-            try:
-                sides.append(self.design(np.where(np.arange(n) == k, x[k] + s, x)).built)
-            except InputError:
-                sides.append(None)
-        if None not in sides:
-            return sides[0], sides[1], 2 * h
-        if sides[0] is None and sides[1] is None:
-            self.design(np.where(np.arange(n) == k, x[k] - h, x))     # neither side: its reason
-        base = self.design(x).built
-        return (sides[0] or base), (sides[1] or base), h
 
     def hqm_curve(self, x):
         """The HQM curve of design ``x`` (:attr:`Design.hqm_curve`)."""
