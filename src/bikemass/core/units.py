@@ -167,6 +167,15 @@ def convert(value, dimension, unit, *, bare_unit=None):
     return number * table[given] / table[unit]
 
 
+def factor(unit, to):
+    """What a value in ``unit`` is multiplied by to be in ``to`` (a unit of the same dimension).
+
+    >>> round(factor("1/deg", "1/rad"), 6)
+    57.29578
+    """
+    return convert(Quantity(1.0, unit), dimension_of(to), to)
+
+
 def _split(value, dimension):
     """(number, unit string) of a YAML value or a :class:`Quantity`."""
     if isinstance(value, Quantity):

@@ -39,9 +39,8 @@ from dataclasses import dataclass, field, fields
 
 import numpy as np
 
-from ..core.units import ARTICLES, DIMENSIONS, Quantity, UnitError, convert, dimension_of
-
 from ..core.choices import RIGID, Combine, Method, check
+from ..core.units import ARTICLES, DIMENSIONS, Quantity, UnitError, convert, dimension_of, factor
 from ..mass.materials import frame_label
 from ..core.errors import BikemassWarning, InputError, short, wrong_type
 from ..core.frozen import FrozenMap, readonly, short_repr
@@ -383,7 +382,7 @@ class Scenario:
         if given is None or isinstance(x, bool) or not isinstance(x, (int, float)):
             return None
         try:
-            self.build({key: Quantity(x / convert(Quantity(1.0, unit), given, DIMENSIONS[given][0]), unit)})
+            self.build({key: Quantity(x / factor(unit, DIMENSIONS[given][0]), unit)})
         except InputError as exc:
             return exc.expected.split(",")[0].split(" (")[0]
         return None

@@ -24,7 +24,7 @@ import numpy as np
 from ..analysis.engine.critical import critical_speeds
 from ..core.errors import InputError
 from ..core.threads import one_blas_thread
-from ..core.units import Quantity, convert, dimension_of
+from ..core.units import Quantity, factor
 from ..models.family import member_inputs
 from ..models.parameters import NAMES
 from .members import evaluate_member_columns
@@ -68,11 +68,6 @@ def _scenario(scenario, inputs=None):
     return _SCENARIOS[key]
 
 
-def _factor(unit, code_unit):
-    """What a value in ``unit`` is multiplied by to be in ``code_unit`` (of the same dimension)."""
-    return convert(Quantity(1.0, unit), dimension_of(code_unit), code_unit)
-
-
 def _bare_unit(scenario, key):
     """The unit of a bare value of ``key`` (:func:`~bikemass.scenario.inputs.file_unit`); None for a
     key the scenario does not have (its rows carry the error)."""
@@ -109,7 +104,7 @@ def evaluate_outcomes(scenario, spec, columns, count):
                                 lambda c: evaluate(scenario, c, spec.max_speed))
     inputs = member_inputs(scenario.model) if scenario.model.members else {}
     if all(k in NAMES or k in inputs for k in spec.keys):    # benchmark parameters and member inputs, in SI
-        si = {k: np.asarray(columns[k], dtype=float) * _factor(spec.units[k], inputs[k][1])
+        si = {k: np.asarray(columns[k], dtype=float) * factor(spec.units[k], inputs[k][1])
               if k in inputs and spec.units.get(k) else columns[k] for k in spec.keys}
         return evaluate_member_columns(scenario, si, count, spec.max_speed,
                                        lambda c: evaluate(scenario, c, spec.max_speed))
