@@ -66,9 +66,7 @@ class Compliance:
                              f"a number in [0, 1) (an underdamped structure), got {self.damping_ratio}")
         if self.modal_mass < 0:
             raise InputError(f"compliance {self.name}", "modal_mass", f"a number >= 0 (kg m^2/rad^2), got {self.modal_mass}")
-        if not STIFFNESS_RANGE[0] <= self.stiffness <= STIFFNESS_RANGE[1]:
-            warn(f"compliance {self.name}: stiffness = {self.stiffness:.6g} N m/rad is outside {STIFFNESS_RANGE[0]:g}.."
-                 f"{STIFFNESS_RANGE[1]:g} N m/rad (measured frames and forks: 1e3..1e5); computed as given")
+        _warn_stiffness(self.stiffness, f"compliance {self.name}: stiffness =")
         L, (Jx, Jz), m = self.modal_momentum, self.modal_moment, self.modal_mass
         if (L == 0) != (m == 0) or (L == 0 and (Jx != 0 or Jz != 0)):
             key = "modal_mass" if L != 0 and m == 0 else "modal_momentum"     # the field that is missing
@@ -132,11 +130,15 @@ def compliance_from_node(node):
             found = Compliance(**values)
     except InputError as exc:                              # the file and the key, not the axis's name alone
         node.fail(exc.expected, None if exc.key == "(values)" else exc.key)
-    if not STIFFNESS_RANGE[0] <= found.stiffness <= STIFFNESS_RANGE[1]:
-        warn(f"{node.source}: {node.key + '.' if node.key else ''}stiffness: {found.stiffness:.6g} N m/rad is outside "
-             f"{STIFFNESS_RANGE[0]:g}..{STIFFNESS_RANGE[1]:g} N m/rad (measured frames and forks: 1e3..1e5); computed "
-             "as given")
+    _warn_stiffness(found.stiffness, f"{node.source}: {node.key + '.' if node.key else ''}stiffness:")
     return found
+
+
+def _warn_stiffness(stiffness, what):
+    """Warn, as ``what`` says where, of a compliance ``stiffness`` (N m/rad) outside :data:`STIFFNESS_RANGE`."""
+    if not STIFFNESS_RANGE[0] <= stiffness <= STIFFNESS_RANGE[1]:
+        warn(f"{what} {stiffness:.6g} N m/rad is outside {STIFFNESS_RANGE[0]:g}..{STIFFNESS_RANGE[1]:g} N m/rad "
+             "(measured frames and forks: 1e3..1e5); computed as given")
 
 
 def _distance(at, point, direction):

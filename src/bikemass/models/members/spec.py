@@ -136,7 +136,7 @@ def with_inputs(typed, changes, inputs, source="changes"):
     try:
         return _replaced(typed, tree)
     except InputError as exc:
-        named = [n for n, path in ((n, inputs[n]) for n in changes) if path.split(".")[-1] == exc.key]
+        named = [n for n in changes if inputs[n].rsplit(".", 1)[-1] == exc.key]
         raise InputError(source, named[0] if named else ", ".join(changes), exc.expected) from None
 
 
