@@ -20,10 +20,11 @@ def inputs_of(model):
 
 
 @pytest.mark.parametrize("model, bike, rider, stiffness", CASES)
-def test_each_input_is_the_code_value_the_model_is_built_from(model, bike, rider, stiffness):
+def test_contract_each_input_is_the_code_value_the_model_is_built_from(model, bike, rider, stiffness):
     """Each input changed by 10 % (or set to 1 where it is 0) is that parameter of the model's code and
     nothing else, and the model equals the base model evaluated at those values (the generated code
-    called with them: an independent route to the same matrices, to rounding)."""
+    called with them directly, without the member's typed value: a contract test of the ``INPUTS``
+    mapping against the code's own, to rounding)."""
     scenario = bm.Scenario(bike, rider, stiffness, model=model)
     base = scenario.build()
     values = base.values()

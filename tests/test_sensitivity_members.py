@@ -111,7 +111,7 @@ def test_a_members_own_parameters_carry_their_units_and_are_checked():
         bm.sensitivity(bm.parameters("benchmark"), names=("CaF",))
 
 
-def test_the_command_line_gives_a_members_own_parameters_as_rows(capsys):
+def test_contract_the_command_line_gives_a_members_own_parameters_as_rows(capsys):
     """`bikemass sensitivity benchmark --model tyre`: after the 26 names, a row for each of the tyres'
     parameters with the unit its code declares, the same numbers as ``bm.sensitivity`` (contract: the
     command line is a shell over it); such a name under --inputs (an input of the scenario) chains to
